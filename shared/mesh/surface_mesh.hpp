@@ -1,0 +1,25 @@
+#pragma once
+// A closed, manifold, outward-oriented triangle surface, and its reader.
+#include <Eigen/Core>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace altfem {
+
+struct SurfaceMesh {
+  Eigen::MatrixXd vertices;   ///< #vertices × 3
+  Eigen::MatrixXi triangles;  ///< #triangles × 3, counter-clockwise seen from outside
+};
+
+/// Reads OFF, OBJ, STL or PLY through CGAL and checks, in this order: finite
+/// coordinates, polygon mesh (else orientable? orientation fixed with a warning :
+/// non-manifold error), closed, no degenerate faces, no self-intersections, outward
+/// orientation (an inward surface is flipped with a warning). Polygons are
+/// triangulated. Warnings are appended to `warnings` if given. Throws InputError.
+SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+
+/// Enclosed volume by the divergence theorem (positive for outward orientation).
+double surface_volume(const SurfaceMesh& surface);
+
+}  // namespace altfem
