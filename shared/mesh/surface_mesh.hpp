@@ -12,11 +12,13 @@ struct SurfaceMesh {
   Eigen::MatrixXi triangles;  ///< #triangles × 3, counter-clockwise seen from outside
 };
 
-/// Reads OFF, OBJ, STL or PLY through CGAL and checks, in this order: finite
-/// coordinates, polygon mesh (else orientable? orientation fixed with a warning :
-/// non-manifold error), closed, no degenerate faces, no self-intersections, outward
-/// orientation (an inward surface is flipped with a warning). Polygons are
-/// triangulated. Warnings are appended to `warnings` if given. Throws InputError.
+/// Reads OFF, OBJ, STL or PLY through CGAL and checks, in this order: the file exists
+/// and is not empty; (OFF) header counts, finite coordinates and indices, with line
+/// numbers; finite coordinates; a polygon mesh — else an orientable one (orientation
+/// fixed with a warning) or a non-manifold error; closed; polygons triangulated; no
+/// degenerate faces; no self-intersections; outward orientation (an inward surface is
+/// flipped with a warning). Warnings ("path: what", one line each) are appended to
+/// `warnings` if given. Throws InputError "path: what".
 SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
 
 /// Enclosed volume by the divergence theorem (positive for outward orientation).

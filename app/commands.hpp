@@ -1,0 +1,15 @@
+#pragma once
+// The `altfem` subcommands (DESIGN.md, "Command line and outputs"). Each returns the
+// process exit code; errors are thrown as InputError / NumericalError and turned into
+// exit codes 2 / 3 by main.
+#include <filesystem>
+#include <string>
+
+namespace altfem::cli {
+
+int info_command();
+int check_command(const std::filesystem::path& scene_file, bool json);
+int run_command(const std::filesystem::path& scene_file, const std::string& method,
+                const std::filesystem::path& output_directory);
+
+}  // namespace altfem::cli

@@ -1,0 +1,245 @@
+#include "shared/assembly/elastic_assembler.hpp"
+
+#include <omp.h>
+
+#include <Eigen/Eigenvalues>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "shared/assembly/element_coloring.hpp"
+#include "shared/assembly/elastic_kernel.hpp"
+#include "shared/common/error.hpp"
+#include "shared/material/project_spd.hpp"
+
+namespace altfem {
+
+// Per-thread storage for elements whose size has no fixed-size kernel.
+struct ElasticAssembler::Scratch {
+  kernel::NodeMatrix<Eigen::Dynamic> u, forces;
+  kernel::LocalMatrix<Eigen::Dynamic> stiffness;
+  kernel::TangentRows<Eigen::Dynamic> tangent_rows;
+};
+
+namespace {
+
+// Calls body.template operator()<N>() with the fixed size for common elements, else Dynamic.
+template <typename Body>
+void dispatch(int basis_count, Body&& body) {
+  switch (basis_count) {
+    case 4: body.template operator()<4>(); break;
+    case 8: body.template operator()<8>(); break;
+    case 10: body.template operator()<10>(); break;
+    case 20: body.template operator()<20>(); break;
+    case 27: body.template operator()<27>(); break;
+    default: body.template operator()<Eigen::Dynamic>(); break;
+  }
+}
+
+// The first element, in element order, that failed in a parallel loop (exceptions
+// must not leave an OpenMP region).
+class FirstFailure {
+public:
+  void record(int element) {
+    int current = element_.load();
+    while ((current < 0 || element < current) && !element_.compare_exchange_weak(current, element)) {}
+  }
+  int element() const { return element_.load(); }
+
+private:
+  std::atomic<int> element_{-1};
+};
+
+[[noreturn]] void throw_non_finite(int element, const char* what) {
+  throw NumericalError("element " + std::to_string(element) + ": non-finite " + what +
+                       " (inverted or degenerate element: det F <= 0 for this material)");
+}
+
+}  // namespace
+
+ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials)
+    : elements_(elements), materials_(std::move(materials)), sparsity_(elements), colors_(color_elements(elements)) {
+  check_materials();
+  threads_ = omp_get_max_threads();
+  scratch_ = std::make_unique<Scratch[]>(threads_);
+  const int n = elements.max_element_basis();
+  for (int t = 0; t < threads_; ++t) {
+    scratch_[t].u.resize(n, 3);
+    scratch_[t].forces.resize(n, 3);
+    scratch_[t].stiffness.resize(3 * n, 3 * n);
+    scratch_[t].tangent_rows.resize(3 * n, 9);
+  }
+}
+
+ElasticAssembler::~ElasticAssembler() = default;
+
+void ElasticAssembler::check_materials() const {
+  for (int e = 0; e < elements_.size(); ++e) {
+    const int id = elements_[e].material;
+    if (id < 0 || id >= static_cast<int>(materials_.size()) || materials_[id] == nullptr)
+      throw std::invalid_argument("ElasticAssembler: element " + std::to_string(e) + " has material id " +
+                                  std::to_string(id) + " but only " + std::to_string(materials_.size()) +
+                                  " materials were given");
+  }
+}
+
+bool ElasticAssembler::is_linear() const {
+  for (const Material* material : materials_)
+    if (!material->is_linear()) return false;
+  return true;
+}
+
+double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
+  // Sum per element first, then in element order: the total does not depend on the
+  // thread count.
+  std::vector<double> per_element(elements_.size());
+#pragma omp parallel for schedule(static)
+  for (int e = 0; e < elements_.size(); ++e) {
+    const ElementView element = elements_[e];
+    Scratch& scratch = scratch_[omp_get_thread_num()];
+    dispatch(element.basis_count(), [&]<int N>() {
+      if constexpr (N == Eigen::Dynamic) {
+        scratch.u.conservativeResize(element.basis_count(), 3);
+        kernel::gather<N>(element, displacement, scratch.u);
+        per_element[e] = kernel::energy<N>(element, *materials_[element.material], scratch.u);
+      } else {
+        kernel::NodeMatrix<N> u;
+        kernel::gather<N>(element, displacement, u);
+        per_element[e] = kernel::energy<N>(element, *materials_[element.material], u);
+      }
+    });
+  }
+  double total = 0;
+  for (double value : per_element) {
+    if (std::isnan(value)) return std::numeric_limits<double>::infinity();
+    total += value;
+  }
+  return total;
+}
+
+void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const {
+  gradient.setZero(dof_count());
+  FirstFailure failure;
+  for (const auto& color : colors_) {
+#pragma omp parallel for schedule(dynamic, 64)
+    for (size_t index = 0; index < color.size(); ++index) {
+      const int e = color[index];
+      const ElementView element = elements_[e];
+      Scratch& scratch = scratch_[omp_get_thread_num()];
+      dispatch(element.basis_count(), [&]<int N>() {
+        const int n = element.basis_count();
+        auto run = [&](kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) {
+          kernel::gather<N>(element, displacement, u);
+          kernel::forces<N>(element, *materials_[element.material], u, forces);
+          if (!forces.allFinite()) {
+            failure.record(e);
+            return;
+          }
+          for (int a = 0; a < n; ++a) gradient.segment<3>(3 * element.basis[a]) += forces.row(a).transpose();
+        };
+        if constexpr (N == Eigen::Dynamic) {
+          scratch.u.conservativeResize(n, 3);
+          scratch.forces.conservativeResize(n, 3);
+          run(scratch.u, scratch.forces);
+        } else {
+          kernel::NodeMatrix<N> u, forces;
+          run(u, forces);
+        }
+      });
+    }
+  }
+  if (failure.element() >= 0) throw_non_finite(failure.element(), "stress");
+}
+
+void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd) const {
+  double* values = hessian.valuePtr();
+  const int* outer = hessian.outerIndexPtr();
+  std::fill_n(values, hessian.nonZeros(), 0.0);
+  FirstFailure failure;
+  for (const auto& color : colors_) {
+#pragma omp parallel for schedule(dynamic, 16)
+    for (size_t index = 0; index < color.size(); ++index) {
+      const int e = color[index];
+      const ElementView element = elements_[e];
+      Scratch& scratch = scratch_[omp_get_thread_num()];
+      dispatch(element.basis_count(), [&]<int N>() {
+        const int n = element.basis_count();
+        auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
+          kernel::gather<N>(element, displacement, u);
+          kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows);
+          if (!stiffness.allFinite()) {
+            failure.record(e);
+            return;
+          }
+          if (project_spd) project_to_spd(stiffness);
+          const int* offsets = sparsity_.pair_offsets(e);
+          for (int b = 0; b < n; ++b)
+            for (int k = 0; k < 3; ++k) {
+              double* column = values + outer[3 * element.basis[b] + k];
+              for (int a = 0; a < n; ++a) {
+                double* block = column + offsets[b * n + a];
+                for (int i = 0; i < 3; ++i) block[i] += stiffness(3 * a + i, 3 * b + k);
+              }
+            }
+        };
+        if constexpr (N == Eigen::Dynamic) {
+          scratch.u.conservativeResize(n, 3);
+          scratch.stiffness.conservativeResize(3 * n, 3 * n);
+          scratch.tangent_rows.conservativeResize(3 * n, 9);
+          run(scratch.u, scratch.stiffness, scratch.tangent_rows);
+        } else {
+          kernel::NodeMatrix<N> u;
+          kernel::LocalMatrix<N> stiffness;
+          kernel::TangentRows<N> rows;
+          run(u, stiffness, rows);
+        }
+      });
+    }
+  }
+  if (failure.element() >= 0) throw_non_finite(failure.element(), "tangent stiffness");
+}
+
+void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
+  mass = pattern();
+  double* values = mass.valuePtr();
+  const int* outer = mass.outerIndexPtr();
+  for (const auto& color : colors_) {
+#pragma omp parallel for schedule(dynamic, 64)
+    for (size_t index = 0; index < color.size(); ++index) {
+      const int e = color[index];
+      const ElementView element = elements_[e];
+      const double density = materials_[element.material]->density();
+      const int n = element.basis_count();
+      const int* offsets = sparsity_.pair_offsets(e);
+      for (int b = 0; b < n; ++b)
+        for (int a = 0; a < n; ++a) {
+          double m = 0;
+          for (int q = 0; q < element.point_count(); ++q)
+            m += element.weights[q] * element.values(q, a) * element.values(q, b);
+          m *= density;
+          for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
+        }
+    }
+  }
+}
+
+Eigen::VectorXd ElasticAssembler::lumped_mass() const {
+  Eigen::VectorXd lumped = Eigen::VectorXd::Zero(dof_count());
+  for (int e = 0; e < elements_.size(); ++e) {
+    const ElementView element = elements_[e];
+    const int n = element.basis_count();
+    double element_mass = 0, diagonal_sum = 0;
+    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
+    for (int q = 0; q < element.point_count(); ++q) {
+      element_mass += element.weights[q];
+      for (int a = 0; a < n; ++a) diagonal[a] += element.weights[q] * element.values(q, a) * element.values(q, a);
+    }
+    diagonal_sum = diagonal.sum();
+    const double scale = materials_[element.material]->density() * element_mass / diagonal_sum;
+    for (int a = 0; a < n; ++a) lumped.segment<3>(3 * element.basis[a]).array() += scale * diagonal[a];
+  }
+  return lumped;
+}
+
+}  // namespace altfem

@@ -1,0 +1,64 @@
+#pragma once
+// Hyperelastic energy, internal forces and tangent stiffness of any list of tabulated
+// elements (DESIGN.md: "one assembler turns any list of them plus a Material into
+// energy, gradient and (optionally SPD-projected) Hessian, and mass matrices").
+//
+// With the displacement u, at each quadrature point F = I + Σ_a u_a ⊗ ∇N_a and
+//   Ψ(u)        = Σ_q w_q ψ(F_q)
+//   ∂Ψ/∂u_ai    = Σ_q w_q Σ_j P_ij(F_q) ∂_j N_a
+//   ∂²Ψ/∂u_ai∂u_bk = Σ_q w_q Σ_jl (∂P_ij/∂F_kl) ∂_j N_a ∂_l N_b.
+#include <Eigen/Core>
+#include <memory>
+#include <vector>
+
+#include "shared/assembly/block_sparsity.hpp"
+#include "shared/assembly/tabulated_elements.hpp"
+#include "shared/material/material.hpp"
+
+namespace altfem {
+
+class ElasticAssembler {
+public:
+  /// materials[m] is the material of the elements whose material id is m; the
+  /// assembler keeps references to both arguments.
+  ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials);
+  ~ElasticAssembler();
+
+  int dof_count() const { return 3 * elements_.basis_count(); }
+  const TabulatedElements& elements() const { return elements_; }
+  /// The pattern of hessian() and mass_matrix(), all values zero.
+  const SparseMatrix& pattern() const { return sparsity_.pattern(); }
+
+  /// Ψ(u); +∞ when a material rejects a deformation (e.g. Neo-Hookean at J ≤ 0).
+  double energy(const Eigen::VectorXd& displacement) const;
+  /// ∂Ψ/∂u (#dofs). Throws NumericalError naming the element on a non-finite stress.
+  void gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const;
+  /// ∂²Ψ/∂u² into `hessian`, which must have pattern() (its values are overwritten).
+  /// With project_spd, each element matrix is projected to the nearest positive
+  /// semi-definite one (eigenvalue clamping; Smith et al. 2018 §4.4, Teran et al. 2005).
+  void hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd = false) const;
+  /// Consistent mass ∫ ρ N_a N_b (times the 3×3 identity), with pattern().
+  void mass_matrix(SparseMatrix& mass) const;
+  /// Lumped mass (#dofs) by HRZ: the diagonal of the consistent mass scaled so
+  /// each element keeps its mass (Hinton, Rock & Zienkiewicz 1976). Plain row sums give
+  /// zero or negative corner masses for quadratic tets; HRZ stays positive.
+  Eigen::VectorXd lumped_mass() const;
+  /// Whether every material's tangent is independent of F (linear elasticity): then
+  /// the Hessian needs assembling and factorising only once.
+  bool is_linear() const;
+
+private:
+  struct Scratch;
+  void check_materials() const;
+
+  const TabulatedElements& elements_;
+  std::vector<const Material*> materials_;
+  BlockSparsity sparsity_;
+  std::vector<std::vector<int>> colors_;
+  // One per thread. Fixed-size elements never touch it; elements of other sizes
+  // resize it, which allocates only when consecutive elements differ in size.
+  std::unique_ptr<Scratch[]> scratch_;
+  int threads_ = 1;
+};
+
+}  // namespace altfem

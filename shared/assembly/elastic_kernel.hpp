@@ -1,0 +1,83 @@
+#pragma once
+// The per-element kernels of ElasticAssembler (internal header). Templated on the
+// number of basis functions so the common elements (Tet4/10/20, Hex8/20/27) run on
+// fixed-size, stack-allocated Eigen matrices; N = Eigen::Dynamic serves the rest
+// (DG monomials, harmonic bases) with scratch allocated once per thread.
+#include <Eigen/Core>
+#include <cmath>
+
+#include "shared/assembly/tabulated_elements.hpp"
+#include "shared/material/material.hpp"
+
+namespace altfem::kernel {
+
+constexpr int dofs_of(int n) { return n == Eigen::Dynamic ? Eigen::Dynamic : 3 * n; }
+
+template <int N>
+using NodeMatrix = Eigen::Matrix<double, N, 3>;  // #basis × 3 (nodal displacements / forces)
+template <int N>
+using LocalMatrix = Eigen::Matrix<double, dofs_of(N), dofs_of(N)>;  // 3#basis × 3#basis
+template <int N>
+using TangentRows = Eigen::Matrix<double, dofs_of(N), 9>;  // 3#basis × 9
+
+/// u_a for the element's basis functions (#basis × 3).
+template <int N>
+void gather(const ElementView& element, const Eigen::VectorXd& u, NodeMatrix<N>& local) {
+  for (int a = 0; a < element.basis_count(); ++a) local.row(a) = u.segment<3>(3 * element.basis[a]).transpose();
+}
+
+template <int N>
+Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u,
+                                     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>& g) {
+  // F_ij = δ_ij + Σ_a u_ai ∂_j N_a
+  Eigen::Matrix3d F = u.transpose() * g;
+  F.diagonal().array() += 1.0;
+  return F;
+}
+
+template <int N>
+double energy(const ElementView& element, const Material& material, const NodeMatrix<N>& u) {
+  double total = 0;
+  for (int q = 0; q < element.point_count(); ++q)
+    total += element.weights[q] * material.energy(deformation_gradient<N>(u, element.gradients_at(q)));
+  return total;
+}
+
+/// Element forces f_ai = Σ_q w_q Σ_j P_ij ∂_j N_a into `forces` (#basis × 3).
+template <int N>
+void forces(const ElementView& element, const Material& material, const NodeMatrix<N>& u, NodeMatrix<N>& forces) {
+  forces.setZero();
+  for (int q = 0; q < element.point_count(); ++q) {
+    const auto g = element.gradients_at(q);
+    const Eigen::Matrix3d P = material.pk1(deformation_gradient<N>(u, g));
+    forces.noalias() += element.weights[q] * g * P.transpose();
+  }
+}
+
+/// Element stiffness into `stiffness` (3#basis × 3#basis, local DOF 3a+i).
+/// Per point, with C = w ∂P/∂F (9 × 9, index i+3j): first T(3b+k, i+3j) =
+/// Σ_l ∂_l N_b C(k+3l, i+3j) (81·#basis flops), then
+/// K(3b+k, 3a+i) = Σ_j ∂_j N_a T(3b+k, i+3j) (27·#basis² flops): the sparsity of
+/// ∂F/∂u is used instead of a dense Bᵀ C B (which costs three times more).
+template <int N>
+void stiffness(const ElementView& element, const Material& material, const NodeMatrix<N>& u,
+               LocalMatrix<N>& stiffness, TangentRows<N>& t) {
+  const int n = element.basis_count();
+  stiffness.setZero();
+  Eigen::Matrix3d P;
+  Matrix9d C;
+  for (int q = 0; q < element.point_count(); ++q) {
+    const auto g = element.gradients_at(q);
+    material.pk1_and_tangent(deformation_gradient<N>(u, g), P, C);
+    C *= element.weights[q];
+    for (int b = 0; b < n; ++b)
+      for (int k = 0; k < 3; ++k)
+        t.row(3 * b + k) = g(b, 0) * C.row(k) + g(b, 1) * C.row(k + 3) + g(b, 2) * C.row(k + 6);
+    for (int a = 0; a < n; ++a)
+      stiffness.template middleCols<3>(3 * a).noalias() += g(a, 0) * t.template middleCols<3>(0) +
+                                                           g(a, 1) * t.template middleCols<3>(3) +
+                                                           g(a, 2) * t.template middleCols<3>(6);
+  }
+}
+
+}  // namespace altfem::kernel

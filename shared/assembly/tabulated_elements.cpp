@@ -1,0 +1,56 @@
+#include "shared/assembly/tabulated_elements.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace altfem {
+
+void TabulatedElements::add(std::span<const int> basis, std::span<const double> weights,
+                            const Eigen::Ref<const Eigen::MatrixXd>& values,
+                            const Eigen::Ref<const Eigen::MatrixXd>& gradients, int material) {
+  const auto basis_size = static_cast<Eigen::Index>(basis.size());
+  const auto points = static_cast<Eigen::Index>(weights.size());
+  if (values.rows() != points || values.cols() != basis_size || gradients.rows() != points * basis_size ||
+      gradients.cols() != 3)
+    throw std::invalid_argument("TabulatedElements::add: values must be #points × #basis and gradients (#points·#basis) × 3");
+  basis_.insert(basis_.end(), basis.begin(), basis.end());
+  basis_offsets_.push_back(static_cast<long long>(basis_.size()));
+  weights_.insert(weights_.end(), weights.begin(), weights.end());
+  point_offsets_.push_back(static_cast<long long>(weights_.size()));
+  for (Eigen::Index q = 0; q < points; ++q)
+    for (Eigen::Index a = 0; a < basis_size; ++a) values_.push_back(values(q, a));
+  for (Eigen::Index row = 0; row < gradients.rows(); ++row)
+    for (int d = 0; d < 3; ++d) gradients_.push_back(gradients(row, d));
+  value_offsets_.push_back(static_cast<long long>(values_.size()));
+  material_.push_back(material);
+  for (int index : basis) basis_count_ = std::max(basis_count_, index + 1);
+  max_element_basis_ = std::max(max_element_basis_, static_cast<int>(basis_size));
+}
+
+void TabulatedElements::reserve(int elements, long long basis_entries, long long point_entries,
+                                long long value_entries) {
+  basis_offsets_.reserve(elements + 1);
+  point_offsets_.reserve(elements + 1);
+  value_offsets_.reserve(elements + 1);
+  material_.reserve(elements);
+  basis_.reserve(basis_entries);
+  weights_.reserve(point_entries);
+  values_.reserve(value_entries);
+  gradients_.reserve(3 * value_entries);
+}
+
+ElementView TabulatedElements::operator[](int element) const {
+  const long long basis_begin = basis_offsets_[element];
+  const long long basis_size = basis_offsets_[element + 1] - basis_begin;
+  const long long point_begin = point_offsets_[element];
+  const long long points = point_offsets_[element + 1] - point_begin;
+  const long long value_begin = value_offsets_[element];
+  return ElementView{
+      std::span<const int>(basis_.data() + basis_begin, basis_size),
+      std::span<const double>(weights_.data() + point_begin, points),
+      {values_.data() + value_begin, static_cast<Eigen::Index>(points), static_cast<Eigen::Index>(basis_size)},
+      gradients_.data() + 3 * value_begin,
+      material_[element]};
+}
+
+}  // namespace altfem

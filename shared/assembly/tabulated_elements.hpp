@@ -1,0 +1,66 @@
+#pragma once
+// The meeting point of every discretization (DESIGN.md, "Core abstractions"): for each
+// element, the global indices of its basis functions, the quadrature weights already
+// multiplied by |det J|, and the basis values and physical gradients at the quadrature
+// points. Lagrange tets/hexes, FCM cut cells, DG monomials on polyhedra and harmonic
+// bases all become this, and one assembler turns it into energy, forces, Hessians and
+// mass matrices. The displacement is vector valued with the same scalar basis for each
+// component: basis function a carries the DOFs 3a, 3a+1, 3a+2.
+//
+// Storage is packed for all elements (no per-element heap blocks), so assembly streams
+// through memory.
+#include <Eigen/Core>
+#include <span>
+#include <vector>
+
+namespace altfem {
+
+/// A read-only view of one tabulated element.
+struct ElementView {
+  std::span<const int> basis;  ///< #basis global basis-function indices
+  std::span<const double> weights;  ///< #points, w_q |det J(ξ_q)|
+  /// #points × #basis, row q holds N_a(x_q)
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> values;
+  /// point q's gradients ∇N_a(x_q) (#basis × 3, row-major) start at gradients + q·#basis·3
+  const double* gradients;
+  int material;
+
+  int basis_count() const { return static_cast<int>(basis.size()); }
+  int point_count() const { return static_cast<int>(weights.size()); }
+  /// #basis × 3 physical gradients at point q.
+  Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients_at(int q) const {
+    return {gradients + static_cast<std::ptrdiff_t>(q) * basis_count() * 3, basis_count(), 3};
+  }
+};
+
+class TabulatedElements {
+public:
+  /// Appends one element. values: #points × #basis; gradients: (#points·#basis) × 3,
+  /// point-major (rows q·#basis .. q·#basis + #basis − 1 belong to point q).
+  void add(std::span<const int> basis, std::span<const double> weights,
+           const Eigen::Ref<const Eigen::MatrixXd>& values, const Eigen::Ref<const Eigen::MatrixXd>& gradients,
+           int material = 0);
+  void reserve(int elements, long long basis_entries, long long point_entries, long long value_entries);
+
+  int size() const { return static_cast<int>(material_.size()); }
+  /// One more than the largest basis index used.
+  int basis_count() const { return basis_count_; }
+  long long point_count() const { return static_cast<long long>(weights_.size()); }
+  ElementView operator[](int element) const;
+  /// The largest #basis of any element (sizes the per-thread scratch).
+  int max_element_basis() const { return max_element_basis_; }
+
+private:
+  std::vector<long long> basis_offsets_{0};  // #elements + 1
+  std::vector<int> basis_;
+  std::vector<long long> point_offsets_{0};  // #elements + 1
+  std::vector<double> weights_;
+  std::vector<long long> value_offsets_{0};  // #elements + 1; gradients start at 3× this
+  std::vector<double> values_;
+  std::vector<double> gradients_;
+  std::vector<int> material_;
+  int basis_count_ = 0;
+  int max_element_basis_ = 0;
+};
+
+}  // namespace altfem

@@ -1,0 +1,106 @@
+#include "shared/element/reference_element.hpp"
+
+#include <Eigen/LU>
+#include <array>
+#include <stdexcept>
+#include <string>
+
+#include "shared/element/polynomial_space.hpp"
+#include "shared/element/reference_nodes.hpp"
+
+namespace altfem {
+
+namespace {
+// Stack storage for the monomials and their derivatives (no heap allocation on
+// the evaluation path, which runs at every quadrature point).
+using MonomialValues = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ReferenceElement::max_node_count, 1>;
+using MonomialGradients =
+    Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
+
+constexpr int max_exponent = 3;  // Tet20's cubics
+using Powers = std::array<std::array<double, max_exponent + 1>, 3>;
+
+/// powers[d][k] = ξ_d^k.
+Powers powers_of(const Eigen::Vector3d& xi) {
+  Powers powers{};
+  for (int d = 0; d < 3; ++d) {
+    powers[d][0] = 1.0;
+    for (int k = 1; k <= max_exponent; ++k) powers[d][k] = powers[d][k - 1] * xi[d];
+  }
+  return powers;
+}
+
+double monomial(const Powers& powers, const Eigen::Vector3i& exponent) {
+  return powers[0][exponent[0]] * powers[1][exponent[1]] * powers[2][exponent[2]];
+}
+}  // namespace
+
+ReferenceElement::ReferenceElement(ElementType type)
+    : type_(type), nodes_(reference_nodes(type)), exponents_(polynomial_space_exponents(type)) {
+  const int count = node_count();
+  if (static_cast<int>(exponents_.size()) != count)
+    throw std::logic_error("ReferenceElement: " + std::string(element_name(type)) + " has " +
+                           std::to_string(count) + " nodes but " +
+                           std::to_string(exponents_.size()) + " monomials");
+  Eigen::MatrixXd vandermonde(count, count);
+  for (int i = 0; i < count; ++i) {
+    const Powers powers = powers_of(nodes_.row(i).transpose());
+    for (int j = 0; j < count; ++j) vandermonde(i, j) = monomial(powers, exponents_[j]);
+  }
+  // Li's eq. (4.23): Vᵀ N = m(ξ), hence N = V^{-T} m(ξ).
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(vandermonde.transpose());
+  if (!lu.isInvertible())
+    throw std::logic_error("ReferenceElement: the nodes of " + std::string(element_name(type)) +
+                           " are not unisolvent for its polynomial space");
+  coefficients_ = lu.inverse();
+}
+
+Eigen::Vector3d ReferenceElement::centroid() const {
+  return shape() == ElementShape::tetrahedron ? Eigen::Vector3d::Constant(0.25)
+                                              : Eigen::Vector3d::Zero();
+}
+
+void ReferenceElement::evaluate(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::VectorXd> values) const {
+  const int count = node_count();
+  const Powers powers = powers_of(xi);
+  MonomialValues monomials(count);
+  for (int j = 0; j < count; ++j) monomials[j] = monomial(powers, exponents_[j]);
+  values.noalias() = coefficients_.lazyProduct(monomials);
+}
+
+void ReferenceElement::evaluate_gradients(const Eigen::Vector3d& xi,
+                                          Eigen::Ref<Eigen::MatrixXd> gradients) const {
+  const int count = node_count();
+  const Powers powers = powers_of(xi);
+  MonomialGradients derivatives(count, 3);
+  for (int j = 0; j < count; ++j) {
+    const Eigen::Vector3i& exponent = exponents_[j];
+    for (int d = 0; d < 3; ++d) {
+      if (exponent[d] == 0) {
+        derivatives(j, d) = 0.0;
+        continue;
+      }
+      Eigen::Vector3i lowered = exponent;
+      --lowered[d];
+      derivatives(j, d) = exponent[d] * monomial(powers, lowered);
+    }
+  }
+  gradients.noalias() = coefficients_.lazyProduct(derivatives);
+}
+
+bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {
+  if (shape() == ElementShape::tetrahedron)
+    return xi.minCoeff() >= -tolerance && xi.sum() <= 1.0 + tolerance;
+  return xi.cwiseAbs().maxCoeff() <= 1.0 + tolerance;
+}
+
+const ReferenceElement& reference_element(ElementType type) {
+  // A function-local static is initialised once, thread-safely (C++11 [stmt.dcl]/4).
+  static const std::array<ReferenceElement, 6> elements{
+      ReferenceElement(ElementType::tet4),  ReferenceElement(ElementType::tet10),
+      ReferenceElement(ElementType::tet20), ReferenceElement(ElementType::hex8),
+      ReferenceElement(ElementType::hex20), ReferenceElement(ElementType::hex27)};
+  return elements[static_cast<int>(type)];
+}
+
+}  // namespace altfem

@@ -1,0 +1,53 @@
+#pragma once
+// Lagrange shape functions of one element type on its reference domain (tets: the
+// UNIT tet; hexes: [-1,1]^3), nodes in VTK order (reference_nodes.hpp).
+#include <Eigen/Core>
+#include <vector>
+
+#include "shared/element/element_type.hpp"
+
+namespace altfem {
+
+/// One Lagrange element type. The basis is built as in Li, "High-order FEM"
+/// (thesis, §4.1.2, eqs. 4.17–4.28): with V the Vandermonde matrix of the element's
+/// monomials at its nodes (V_ij = m_j(node_i)), N(ξ) = V^{-T} m(ξ), so N_i(node_k) =
+/// δ_ik and every polynomial of the space is reproduced exactly. The same code
+/// serves all six types (only the node and monomial tables differ); V is at most
+/// 27 × 27 and well conditioned on these nodes.
+class ReferenceElement {
+public:
+  /// Upper bound of node_count() over all types (Hex27), for stack buffers.
+  static constexpr int max_node_count = 27;
+
+  /// Builds the tables; prefer the shared instances of reference_element(type).
+  explicit ReferenceElement(ElementType type);
+
+  ElementType type() const { return type_; }
+  ElementShape shape() const { return element_shape(type_); }
+  int node_count() const { return static_cast<int>(nodes_.rows()); }
+  int degree() const { return element_degree(type_); }
+  /// #nodes × 3 reference coordinates, VTK order.
+  const Eigen::MatrixXd& nodes() const { return nodes_; }
+  /// The reference centroid: (1/4, 1/4, 1/4) for tets, the origin for hexes.
+  Eigen::Vector3d centroid() const;
+
+  /// values (#nodes) = N_i(ξ). Writes into the caller's storage; no allocation.
+  void evaluate(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::VectorXd> values) const;
+  /// gradients (#nodes × 3) = ∂N_i/∂ξ_j. Writes into the caller's storage; no allocation.
+  void evaluate_gradients(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> gradients) const;
+
+  /// Whether ξ lies in the reference domain enlarged by `tolerance` (in reference
+  /// coordinates): tets ξ_j ≥ −tol and Σξ_j ≤ 1 + tol; hexes |ξ_j| ≤ 1 + tol.
+  bool contains(const Eigen::Vector3d& xi, double tolerance) const;
+
+private:
+  ElementType type_;
+  Eigen::MatrixXd nodes_;                  ///< #nodes × 3
+  std::vector<Eigen::Vector3i> exponents_; ///< #nodes monomial exponents (a, b, c)
+  Eigen::MatrixXd coefficients_;           ///< #nodes × #nodes: N(ξ) = coefficients_ · m(ξ)
+};
+
+/// The shared, immutable instance of each type (built on first use, thread-safe).
+const ReferenceElement& reference_element(ElementType type);
+
+}  // namespace altfem

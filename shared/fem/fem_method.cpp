@@ -1,0 +1,74 @@
+#include "shared/fem/fem_method.hpp"
+
+#include <chrono>
+
+#include "shared/fem/fem_discretization.hpp"
+#include "shared/fem/fem_mesh.hpp"
+#include "shared/fem/point_embedding.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+
+namespace altfem {
+
+namespace {
+
+class FemMethod final : public MethodInstance {
+public:
+  FemMethod(const Scene& scene, const SceneGeometry& geometry)
+      : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
+                                scene.material.poisson_ratio, scene.material.density)) {
+    VolumeMesh mesh = build_fem_mesh(scene, geometry);
+    const auto start = std::chrono::steady_clock::now();
+    discretization_ = std::make_unique<FemDiscretization>(std::move(mesh), *material_, scene.dirichlet,
+                                                          scene.fem.quadrature_order, scene.file.string());
+    quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // The surface every method deforms: the scene's own surface when it has one,
+    // else the boundary of the mesh.
+    surface_ = geometry.surface ? *geometry.surface : boundary_surface(discretization_->mesh()).surface;
+    embedding_ = std::make_unique<PointEmbedding>(discretization_->mesh(), surface_.vertices);
+  }
+
+  const Discretization& discretization() const override { return *discretization_; }
+  nlohmann::json element_counts() const override {
+    return {{std::string(element_name(discretization_->mesh().element_type)), discretization_->mesh().cells.rows()}};
+  }
+  long long quadrature_points() const override { return discretization_->elements().point_count(); }
+  double quadrature_seconds() const override { return quadrature_seconds_; }
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
+    UnstructuredGrid grid = grid_from_volume_mesh(discretization_->mesh());
+    grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+                                                     displacement.data(), displacement.size() / 3, 3));
+    return grid;
+  }
+  const SurfaceMesh& embedded_surface() const override { return surface_; }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
+    return embedding_->displacement(displacement);
+  }
+  Eigen::VectorXd initial_velocity(const InitialConditions& initial) const override {
+    const VolumeMesh& mesh = discretization_->mesh();
+    const Eigen::Vector3d centre = discretization_->centre_of_mass();
+    Eigen::VectorXd velocity(3 * mesh.nodes.rows());
+    for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
+      velocity.segment<3>(3 * node) = initial.velocity_at(mesh.nodes.row(node).transpose(), centre);
+    return velocity;
+  }
+  nlohmann::json facts() const override {
+    return {{"surface_vertices", surface_.vertices.rows()},
+            {"surface_vertices_outside_mesh", embedding_->outside_count()},
+            {"max_outside_distance", embedding_->max_outside_distance()}};
+  }
+
+private:
+  std::unique_ptr<Material> material_;
+  std::unique_ptr<FemDiscretization> discretization_;
+  SurfaceMesh surface_;
+  std::unique_ptr<PointEmbedding> embedding_;
+  double quadrature_seconds_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneGeometry& geometry) {
+  return std::make_unique<FemMethod>(scene, geometry);
+}
+
+}  // namespace altfem

@@ -1,0 +1,36 @@
+#include "shared/material/linear_elastic.hpp"
+
+namespace altfem {
+
+LinearElastic::LinearElastic(LameParameters lame, double density)
+    : Material(MaterialModel::linear, lame, density) {
+  tangent_.setZero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      tangent_(i + 3 * j, i + 3 * j) += lame.mu;
+      tangent_(i + 3 * j, j + 3 * i) += lame.mu;
+      tangent_(i + 3 * i, j + 3 * j) += lame.lambda;
+    }
+  }
+}
+
+double LinearElastic::energy(const Eigen::Matrix3d& F) const {
+  const Eigen::Matrix3d strain = 0.5 * (F + F.transpose()) - Eigen::Matrix3d::Identity();
+  const double trace = strain.trace();
+  return infinite_unless_finite(lame().mu * strain.squaredNorm() + 0.5 * lame().lambda * trace * trace);
+}
+
+Eigen::Matrix3d LinearElastic::pk1(const Eigen::Matrix3d& F) const {
+  const Eigen::Matrix3d strain = 0.5 * (F + F.transpose()) - Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d P = 2.0 * lame().mu * strain + lame().lambda * strain.trace() * Eigen::Matrix3d::Identity();
+  infinite_unless_finite(P);
+  return P;
+}
+
+void LinearElastic::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+  P = pk1(F);
+  dPdF = tangent_;
+  infinite_unless_finite(P, dPdF);
+}
+
+}  // namespace altfem

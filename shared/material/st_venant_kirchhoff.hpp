@@ -1,0 +1,18 @@
+#pragma once
+// St. Venant–Kirchhoff: ψ = μ E:E + λ/2 tr(E)², E = (FᵀF − I)/2 (Green strain).
+// Rotation invariant but softens and collapses under strong compression
+// (the volumetric stress vanishes again as J → 0), so inversion is not resisted.
+#include "shared/material/material.hpp"
+
+namespace altfem {
+
+class StVenantKirchhoff final : public Material {
+public:
+  StVenantKirchhoff(LameParameters lame, double density);
+
+  double energy(const Eigen::Matrix3d& F) const override;
+  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
+  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
+};
+
+}  // namespace altfem

@@ -1,0 +1,214 @@
+// Scene text → validated, resolved JSON (scene_schema) → the plain structs of scene.hpp.
+#include "shared/scene/scene.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "shared/common/error.hpp"
+#include "shared/scene/scene_schema.hpp"
+#include "shared/scene/scene_shape.hpp"
+
+namespace altfem {
+
+namespace {
+
+using nlohmann::json;
+
+template <typename Kind, std::size_t n>
+Kind kind_from_name(const std::array<std::string_view, n>& names, const json& value) {
+  const auto found = std::find(names.begin(), names.end(), value.get<std::string>());
+  return static_cast<Kind>(found - names.begin());  // validated: always found
+}
+
+// "line L, column C" of the character at `offset`.
+std::string line_and_column(std::string_view text, std::size_t offset) {
+  const std::string_view before = text.substr(0, std::min(offset, text.size()));
+  const std::size_t line = 1 + std::count(before.begin(), before.end(), '\n');
+  const std::size_t line_start = before.rfind('\n');
+  const std::size_t column = 1 + before.size() - (line_start == std::string_view::npos ? 0 : line_start + 1);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+// nlohmann reports a byte offset (1-based: the characters read so far, so the
+// position is that of the last character read); people want a line and a column.
+std::string syntax_message(std::string_view text, const std::string& file, const json::parse_error& error) {
+  // Keep nlohmann's explanation, without its own prefix and position.
+  std::string detail = error.what();
+  if (const auto at = detail.find("column "); at != std::string::npos)
+    if (const auto colon = detail.find(": ", at); colon != std::string::npos) detail = detail.substr(colon + 2);
+  std::replace_if(detail.begin(), detail.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return input_message(file, line_and_column(text, error.byte > 0 ? error.byte - 1 : 0), "JSON syntax error: " + detail);
+}
+
+// nlohmann refuses numbers beyond double range ("number overflow parsing '1e999'")
+// without a position: find the literal in the text to give one.
+std::string overflow_message(std::string_view text, const std::string& file, const json::out_of_range& error) {
+  const std::string what = error.what();
+  const auto start = what.find('\'');
+  const auto end = what.rfind('\'');
+  if (start == std::string::npos || end <= start + 1) return input_message(file, "", "JSON error: " + what);
+  const std::string literal = what.substr(start + 1, end - start - 1);
+  const auto offset = text.find(literal);
+  return input_message(file, offset == std::string_view::npos ? "" : line_and_column(text, offset),
+                       "expected a finite number, got " + literal);
+}
+
+RegionSelector region_from_json(const json& region, const std::string& pointer) {
+  RegionSelector selector;
+  selector.pointer = pointer;
+  if (region.contains("box")) {
+    selector.kind = RegionKind::box;
+    selector.box = Eigen::AlignedBox3d(vector3_from_json(region["box"]["min"]), vector3_from_json(region["box"]["max"]));
+  } else if (region.contains("half_space")) {
+    selector.kind = RegionKind::half_space;
+    selector.point = vector3_from_json(region["half_space"]["point"]);
+    selector.normal = vector3_from_json(region["half_space"]["normal"]).normalized();
+  } else {
+    selector.kind = RegionKind::sphere;
+    selector.centre = vector3_from_json(region["sphere"]["centre"]);
+    selector.radius = region["sphere"]["radius"].get<double>();
+  }
+  return selector;
+}
+
+Motion motion_from_json(const json& value) {
+  Motion motion;
+  motion.kind = kind_from_name<MotionKind>(motion_kind_names, value["kind"]);
+  if (value.contains("velocity")) motion.velocity = vector3_from_json(value["velocity"]);
+  if (value.contains("displacement")) {
+    motion.total_displacement = vector3_from_json(value["displacement"]);
+    motion.duration = value["duration"].get<double>();
+  }
+  if (motion.kind == MotionKind::rotate) {
+    motion.axis = vector3_from_json(value["axis"]).normalized();
+    motion.centre = vector3_from_json(value["centre"]);
+    motion.angular_velocity = value["angular_velocity"].get<double>();
+  }
+  return motion;
+}
+
+GeometrySpec geometry_from_json(const json& value) {
+  GeometrySpec geometry;
+  if (value.contains("surface")) {
+    geometry.kind = GeometryKind::surface;
+    geometry.file = value["surface"].get<std::string>();
+  } else if (value.contains("mesh")) {
+    geometry.kind = GeometryKind::mesh;
+    geometry.file = value["mesh"].get<std::string>();
+  } else {
+    geometry.kind = GeometryKind::shape;
+    geometry.shape = shape_from_json(value["shape"]);
+  }
+  geometry.scale = value["scale"].get<double>();
+  geometry.translate = vector3_from_json(value["translate"]);
+  return geometry;
+}
+
+Scene scene_from_json(json resolved, const std::filesystem::path& file) {
+  Scene scene;
+  scene.file = file;
+  scene.name = resolved["name"].get<std::string>();
+  scene.geometry = geometry_from_json(resolved["geometry"]);
+
+  const json& material = resolved["material"];
+  scene.material = {material["model"].get<std::string>(), material["youngs_modulus"].get<double>(),
+                    material["poisson_ratio"].get<double>(), material["density"].get<double>()};
+
+  const json& conditions = resolved["boundary_conditions"];
+  for (std::size_t i = 0; i < conditions.size(); ++i) {
+    const std::string pointer = "/boundary_conditions/" + std::to_string(i);
+    DirichletCondition condition;
+    condition.pointer = pointer;
+    condition.region = region_from_json(conditions[i]["region"], pointer + "/region");
+    condition.motion = motion_from_json(conditions[i]["motion"]);
+    condition.components = {false, false, false};
+    for (const auto& component : conditions[i]["components"])
+      condition.components[component.get<std::string>()[0] - 'x'] = true;
+    scene.dirichlet.push_back(condition);
+  }
+
+  scene.gravity = vector3_from_json(resolved["loads"]["gravity"]);
+
+  const json& initial = resolved["initial_conditions"];
+  scene.initial.velocity = vector3_from_json(initial["velocity"]);
+  scene.initial.angular_velocity = vector3_from_json(initial["angular_velocity"]);
+  if (initial["centre"].is_array()) scene.initial.centre = vector3_from_json(initial["centre"]);
+
+  const json& time = resolved["time"];
+  scene.time.is_static = time["static"].get<bool>();
+  if (!scene.time.is_static) {
+    scene.time.dt = time["dt"].get<double>();
+    scene.time.steps = time["steps"].get<int>();
+    scene.time.integrator = kind_from_name<IntegratorKind>(integrator_names, time["integrator"]);
+    scene.time.rayleigh_mass = time["rayleigh_damping"]["mass"].get<double>();
+    scene.time.rayleigh_stiffness = time["rayleigh_damping"]["stiffness"].get<double>();
+  }
+
+  const json& solver = resolved["solver"];
+  scene.solver = {kind_from_name<NonlinearSolverKind>(nonlinear_solver_names, solver["nonlinear"]),
+                  solver["tolerance"].get<double>(),
+                  solver["max_iterations"].get<int>(),
+                  solver["line_search"].get<bool>(),
+                  solver["project_spd"].get<bool>(),
+                  kind_from_name<LinearSolverKind>(linear_solver_kind_names, solver["linear"]),
+                  solver["preconditioner"].get<std::string>(),
+                  solver["linear_tolerance"].get<double>(),
+                  solver["linear_max_iterations"].get<int>()};
+
+  const json& output = resolved["output"];
+  scene.output = {output["every"].get<int>(), output["surface"].get<bool>(), output["volume"].get<bool>()};
+
+  const json& fem = resolved["discretization"]["fem"];
+  scene.fem.element = *element_type_from_name(fem["element"].get<std::string>());
+  scene.fem.mesh = kind_from_name<FemMeshKind>(fem_mesh_names, fem["mesh"]);
+  if (fem.contains("resolution"))
+    scene.fem.resolution = {fem["resolution"][0].get<int>(), fem["resolution"][1].get<int>(),
+                            fem["resolution"][2].get<int>()};
+  if (fem.contains("max_cell_size") && !fem["max_cell_size"].is_null())
+    scene.fem.max_cell_size = fem["max_cell_size"].get<double>();
+  scene.fem.quadrature_order = fem["quadrature_order"].get<int>();
+  scene.fem.curved = fem["curved"].get<bool>();
+
+  scene.resolved = std::move(resolved);
+  return scene;
+}
+
+}  // namespace
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
+  const std::string name = file.string();
+  if (std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); }))
+    throw InputError(input_message(name, "line 1, column 1", "expected a JSON object, got an empty file"));
+  json document;
+  try {
+    document = json::parse(text.begin(), text.end());
+  } catch (const json::parse_error& error) {
+    throw InputError(syntax_message(text, name, error));
+  } catch (const json::out_of_range& error) {
+    throw InputError(overflow_message(text, name, error));
+  } catch (const json::exception& error) {
+    throw InputError(input_message(name, "", std::string("JSON error: ") + error.what()));
+  }
+  const std::filesystem::path folder =
+      file.has_parent_path() ? std::filesystem::absolute(file).parent_path() : std::filesystem::current_path();
+  const scene_schema::Validator validator(name, folder);
+  return scene_from_json(validator.resolve(document, scene_schema::scene_rule(), ""), file);
+}
+
+Scene load_scene(const std::filesystem::path& path) {
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream || std::filesystem::is_directory(path))
+    throw InputError(input_message(path.string(), "", "expected a readable scene file, got no such file"));
+  std::ostringstream text;
+  text << stream.rdbuf();
+  Scene scene = parse_scene(text.str(), path);
+  if (scene.geometry.kind != GeometryKind::shape && !std::filesystem::is_regular_file(scene.geometry.file)) {
+    const char* key = scene.geometry.kind == GeometryKind::surface ? "surface" : "mesh";
+    throw InputError(input_message(path.string(), std::string("/geometry/") + key,
+                                   "expected an existing file, got " + json(scene.geometry.file.string()).dump()));
+  }
+  return scene;
+}
+
+}  // namespace altfem

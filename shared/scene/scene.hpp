@@ -1,0 +1,164 @@
+#pragma once
+// The scene model: the physical problem of one JSON scene file, validated against
+// docs/scene-schema.md (the table of every key lives in scene_schema.cpp) and with
+// every default resolved.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "shared/element/element_type.hpp"
+#include "shared/geometry/analytic_shape.hpp"
+#include "shared/solve/linear_solver.hpp"
+
+namespace altfem {
+
+// Each enum's values are in the order of its names array; the arrays are the
+// allowed strings of the schema.
+enum class GeometryKind { surface, mesh, shape };
+enum class RegionKind { box, half_space, sphere };
+enum class MotionKind { fixed, translate, rotate };
+enum class IntegratorKind { backward_euler, symplectic_euler, semi_implicit };
+enum class NonlinearSolverKind { newton, lbfgs };
+enum class FemMeshKind { grid, tetrahedralize, file };
+
+inline constexpr std::array<std::string_view, 5> material_model_names{
+    "linear", "corotated_linear", "st_venant_kirchhoff", "neo_hookean", "stable_neo_hookean"};
+inline constexpr std::array<std::string_view, 3> motion_kind_names{"fixed", "translate", "rotate"};
+inline constexpr std::array<std::string_view, 3> integrator_names{"backward_euler", "symplectic_euler",
+                                                                  "semi_implicit"};
+inline constexpr std::array<std::string_view, 2> nonlinear_solver_names{"newton", "lbfgs"};
+inline constexpr std::array<std::string_view, 3> fem_mesh_names{"grid", "tetrahedralize", "file"};
+
+struct GeometrySpec {
+  GeometryKind kind = GeometryKind::shape;
+  std::filesystem::path file;  ///< absolute; surface or mesh kinds
+  ShapePointer shape;          ///< shape kind, before scale/translate
+  double scale = 1.0;          ///< applied on load: x ↦ scale·x + translate
+  Eigen::Vector3d translate = Eigen::Vector3d::Zero();
+};
+
+struct MaterialSpec {
+  std::string model;  ///< one of material_model_names
+  double youngs_modulus = 0.0;
+  double poisson_ratio = 0.0;
+  double density = 0.0;
+};
+
+/// Which material points a boundary condition acts on (world coordinates).
+struct RegionSelector {
+  RegionKind kind = RegionKind::box;
+  Eigen::AlignedBox3d box;                          ///< box kind
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< half_space: a point on the plane
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();///< half_space: unit; selects (x − point)·normal ≤ 0
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< sphere kind
+  double radius = 0.0;                              ///< sphere kind
+  std::string pointer;                              ///< JSON pointer, for error messages
+
+  bool contains(const Eigen::Vector3d& x, double tolerance) const;
+  /// The region's bounding box; unbounded (±infinity) for a half-space.
+  Eigen::AlignedBox3d bounds() const;
+};
+
+/// The regions' tolerance of docs/scene-schema.md: 1e-6 × the geometry's bounding-box diagonal.
+double region_tolerance(const Eigen::AlignedBox3d& geometry_bounds);
+
+/// A prescribed displacement u(X, t) of the material point X at time t.
+struct Motion {
+  MotionKind kind = MotionKind::fixed;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();            ///< translate: u = v t
+  Eigen::Vector3d total_displacement = Eigen::Vector3d::Zero();  ///< translate: u = d min(t/T, 1)
+  double duration = 0.0;                                         ///< T; 0 means the velocity form
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();               ///< rotate: unit
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();              ///< rotate: a point on the axis
+  double angular_velocity = 0.0;                                 ///< rotate: rad/s
+
+  Eigen::Vector3d displacement(const Eigen::Vector3d& rest_position, double time) const;
+};
+
+struct DirichletCondition {
+  RegionSelector region;
+  Motion motion;
+  std::array<bool, 3> components{true, true, true};  ///< which of x, y, z are prescribed
+  std::string pointer;                               ///< e.g. "/boundary_conditions/0"
+};
+
+struct InitialConditions {
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
+  std::optional<Eigen::Vector3d> centre;  ///< nullopt: the centre of mass
+
+  /// v + ω × (x − c), with c = centre or else `centre_of_mass`.
+  Eigen::Vector3d velocity_at(const Eigen::Vector3d& x, const Eigen::Vector3d& centre_of_mass) const;
+};
+
+struct TimeSpec {
+  bool is_static = true;
+  double dt = 0.0;
+  int steps = 0;
+  IntegratorKind integrator = IntegratorKind::backward_euler;
+  double rayleigh_mass = 0.0;       ///< α of C = α M + β K
+  double rayleigh_stiffness = 0.0;  ///< β
+};
+
+struct SolverSpec {
+  NonlinearSolverKind nonlinear = NonlinearSolverKind::newton;
+  double tolerance = 1e-5;  ///< Longva et al. 2020 §6 stopping rule
+  int max_iterations = 50;
+  bool line_search = true;
+  bool project_spd = false;
+  LinearSolverKind linear = LinearSolverKind::cholmod;
+  std::string preconditioner = "jacobi";  ///< one of preconditioner_names (shared/solve)
+  double linear_tolerance = 1e-10;
+  int linear_max_iterations = 10000;
+};
+
+struct OutputSpec {
+  int every = 1;
+  bool surface = true;
+  bool volume = true;
+};
+
+struct FemSpec {
+  ElementType element = ElementType::tet10;
+  FemMeshKind mesh = FemMeshKind::tetrahedralize;
+  Eigen::Vector3i resolution = Eigen::Vector3i::Constant(4);  ///< grid only
+  /// tetrahedralize only; nullopt (a surface geometry) means the loaded surface's
+  /// bounding-box diagonal / 15 — see fem_max_cell_size.
+  std::optional<double> max_cell_size;
+  int quadrature_order = 4;
+  bool curved = false;
+};
+
+/// max_cell_size, or the default diagonal / 15 of the loaded geometry's bounds.
+double fem_max_cell_size(const FemSpec& fem, const Eigen::AlignedBox3d& geometry_bounds);
+
+struct Scene {
+  std::filesystem::path file;
+  std::string name;
+  GeometrySpec geometry;
+  MaterialSpec material;
+  std::vector<DirichletCondition> dirichlet;
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  InitialConditions initial;
+  TimeSpec time;
+  SolverSpec solver;
+  OutputSpec output;
+  FemSpec fem;
+  nlohmann::json resolved;  ///< the whole scene with defaults filled and paths absolute
+};
+
+/// Reads, validates and resolves a scene file, and checks that the files it names
+/// exist. Throws InputError with a one-line message naming the file and the JSON
+/// pointer or line/column.
+Scene load_scene(const std::filesystem::path& path);
+/// Validates and resolves scene text; `file` names it in messages and anchors
+/// relative paths. Reads no other file.
+Scene parse_scene(std::string_view text, const std::filesystem::path& file);
+
+}  // namespace altfem

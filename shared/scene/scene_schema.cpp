@@ -1,0 +1,265 @@
+// Every key of docs/scene-schema.md, as data. Keep this file and the document in
+// step: a row there is a KeyRule here.
+#include "shared/scene/scene_schema.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "shared/element/element_type.hpp"
+#include "shared/scene/scene.hpp"
+#include "shared/scene/scene_shape.hpp"
+
+namespace altfem::scene_schema {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr Bound positive{0.0, false};
+constexpr Bound non_negative{0.0, true};
+constexpr Bound at_least_one{1.0, true};
+
+template <std::size_t n>
+std::vector<std::string_view> names(const std::array<std::string_view, n>& array) {
+  return {array.begin(), array.end()};
+}
+
+std::vector<std::string_view> element_names() {
+  std::vector<std::string_view> result;
+  for (auto type : {ElementType::tet4, ElementType::tet10, ElementType::tet20, ElementType::hex8, ElementType::hex20,
+                    ElementType::hex27})
+    result.push_back(element_name(type));
+  return result;
+}
+
+KeyRule required_vector(std::string_view key) { return {.key = key, .type = ValueType::vector3, .required = true}; }
+KeyRule required_positive(std::string_view key) {
+  return {.key = key, .type = ValueType::number, .required = true, .lower = positive};
+}
+KeyRule flag(std::string_view key, bool value) { return {.key = key, .type = ValueType::boolean, .default_value = value}; }
+
+void check_shape_box(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  for (int i = 0; i < 3; ++i)
+    if (!(resolved["min"][i].get<double>() < resolved["max"][i].get<double>()))
+      validator.fail(pointer + "/max/" + std::to_string(i),
+                     "must be > min (" + describe(resolved["min"][i]) + "), got " + describe(resolved["max"][i]));
+}
+
+void check_region_box(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  for (int i = 0; i < 3; ++i)
+    if (resolved["min"][i].get<double>() > resolved["max"][i].get<double>())
+      validator.fail(pointer + "/max/" + std::to_string(i),
+                     "must be >= min (" + describe(resolved["min"][i]) + "), got " + describe(resolved["max"][i]));
+}
+
+void check_cylinder(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (!(resolved["inner_radius"].get<double>() < resolved["radius"].get<double>()))
+    validator.fail(pointer + "/inner_radius",
+                   "must be < radius (" + describe(resolved["radius"]) + "), got " + describe(resolved["inner_radius"]));
+}
+
+void check_translate(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (resolved.contains("displacement") != resolved.contains("duration"))
+    validator.fail(pointer + (resolved.contains("duration") ? "/duration" : "/displacement"),
+                   "expected 'displacement' and 'duration' together, got only one of them");
+}
+
+// `time` is either {"static": true} alone or a dynamic run with dt and steps.
+void check_time(const Validator& validator, const json& input, json& resolved, const std::string& pointer) {
+  if (resolved["static"].get<bool>()) {
+    for (const auto& [key, value] : input.items())
+      if (key != "static")
+        validator.fail(pointer + "/" + pointer_token(key), "not allowed with \"static\": true, got " + describe(value));
+    resolved = json{{"static", true}};
+    return;
+  }
+  for (const char* key : {"dt", "steps"})
+    if (!resolved.contains(key))
+      validator.fail(pointer + "/" + key, std::string("missing required key '") + key + "' (or set \"static\": true)");
+}
+
+std::string geometry_kind(const json& geometry) {
+  if (geometry.contains("surface")) return "a surface file";
+  if (geometry.contains("mesh")) return "a volume mesh file";
+  return "a '" + geometry["shape"].begin().key() + "' shape";
+}
+
+// The fem defaults that depend on the geometry (docs/scene-schema.md, "fem").
+void resolve_fem(const Validator& validator, json& scene) {
+  const json& geometry = scene["geometry"];
+  json& fem = scene["discretization"]["fem"];
+  const std::string pointer = "/discretization/fem";
+  const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
+  const ElementType element = *element_type_from_name(fem["element"].get<std::string>());
+  const bool hex = element_shape(element) == ElementShape::hexahedron;
+  if (!fem.contains("mesh"))
+    fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box && hex ? "grid" : "tetrahedralize");
+  const std::string mesh = fem["mesh"];
+  if (mesh == "grid" && !is_box)
+    validator.fail(pointer + "/mesh", "'grid' needs an analytic box geometry, got " + geometry_kind(geometry));
+  if (mesh == "grid" && !hex)
+    validator.fail(pointer + "/element", "the 'grid' mesh needs a hex element, got " + describe(fem["element"]));
+  if (mesh == "tetrahedralize" && geometry.contains("mesh"))
+    validator.fail(pointer + "/mesh", "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
+  if (mesh == "tetrahedralize" && hex)
+    validator.fail(pointer + "/element", "'tetrahedralize' needs a tet element, got " + describe(fem["element"]));
+  if (mesh == "file" && !geometry.contains("mesh"))
+    validator.fail(pointer + "/mesh", "'file' needs a volume mesh geometry, got " + geometry_kind(geometry));
+  if (mesh != "grid" && fem.contains("resolution"))
+    validator.fail(pointer + "/resolution", "applies only to mesh 'grid', got mesh '" + mesh + "'");
+  if (mesh != "tetrahedralize" && fem.contains("max_cell_size"))
+    validator.fail(pointer + "/max_cell_size", "applies only to mesh 'tetrahedralize', got mesh '" + mesh + "'");
+
+  const double scale = geometry["scale"].get<double>();
+  if (mesh == "grid" && !fem.contains("resolution")) {
+    const Eigen::Vector3d extent =
+        scale * (vector3_from_json(geometry["shape"]["box"]["max"]) - vector3_from_json(geometry["shape"]["box"]["min"]));
+    const double cell = std::min(extent.minCoeff() / 2.0, extent.maxCoeff() / 4.0);
+    fem["resolution"] = json::array();
+    for (int i = 0; i < 3; ++i) fem["resolution"].push_back(std::clamp(std::lround(extent[i] / cell), 1L, 32L));
+  }
+  if (mesh == "tetrahedralize" && !fem.contains("max_cell_size")) {
+    if (geometry.contains("shape"))
+      fem["max_cell_size"] = scale * shape_from_json(geometry["shape"])->bounding_box().diagonal().norm() / 15.0;
+    else
+      fem["max_cell_size"] = nullptr;  // the surface's bounds are known only once it is read
+  }
+  if (!fem.contains("quadrature_order")) fem["quadrature_order"] = 2 * element_degree(element);
+}
+
+void check_scene(const Validator& validator, const json&, json& resolved, const std::string&) {
+  if (!resolved.contains("name")) {
+    std::string stem = std::filesystem::path(validator.file()).stem().string();
+    resolved["name"] = stem.empty() ? "scene" : stem;
+  }
+  resolve_fem(validator, resolved);
+}
+
+extern const ObjectRule shape;
+
+const ObjectRule shape_box{{required_vector("min"), required_vector("max")}, {}, {}, {}, {}, check_shape_box};
+const ObjectRule shape_sphere{{required_vector("centre"), required_positive("radius")}};
+const ObjectRule shape_cylinder{
+    {required_vector("base"),
+     {.key = "axis", .type = ValueType::vector3, .required = true, .nonzero = true},
+     required_positive("height"),
+     required_positive("radius"),
+     {.key = "inner_radius", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}},
+    {}, {}, {}, {}, check_cylinder};
+KeyRule shape_list(std::string_view key) {
+  return {.key = key, .type = ValueType::object_array, .object = &shape, .minimum_count = 2};
+}
+const ObjectRule shape{{{.key = "box", .type = ValueType::object, .object = &shape_box},
+                        {.key = "sphere", .type = ValueType::object, .object = &shape_sphere},
+                        {.key = "cylinder", .type = ValueType::object, .object = &shape_cylinder},
+                        shape_list("union"), shape_list("intersection"), shape_list("difference")},
+                       {{"box", "sphere", "cylinder", "union", "intersection", "difference"}}};
+
+const ObjectRule geometry{
+    {{.key = "surface", .type = ValueType::path, .choices = {".off", ".obj", ".stl", ".ply"}},
+     {.key = "mesh", .type = ValueType::path, .choices = {".msh", ".mesh"}},
+     {.key = "shape", .type = ValueType::object, .object = &shape},
+     {.key = "scale", .type = ValueType::number, .default_value = 1.0, .lower = positive},
+     {.key = "translate", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})}},
+    {{"surface", "mesh", "shape"}}};
+
+const ObjectRule material{
+    {{.key = "model", .type = ValueType::string, .default_value = "stable_neo_hookean",
+      .choices = names(material_model_names)},
+     required_positive("youngs_modulus"),
+     {.key = "poisson_ratio", .type = ValueType::number, .required = true, .lower = Bound{-1.0, false},
+      .upper = Bound{0.5, false}},
+     {.key = "density", .type = ValueType::number, .default_value = 1000.0, .lower = positive}}};
+
+const ObjectRule region_box{{required_vector("min"), required_vector("max")}, {}, {}, {}, {}, check_region_box};
+const ObjectRule region_half_space{
+    {required_vector("point"), {.key = "normal", .type = ValueType::vector3, .required = true, .nonzero = true}}};
+const ObjectRule region{{{.key = "box", .type = ValueType::object, .object = &region_box},
+                         {.key = "half_space", .type = ValueType::object, .object = &region_half_space},
+                         {.key = "sphere", .type = ValueType::object, .object = &shape_sphere}},
+                        {{"box", "half_space", "sphere"}}};
+
+const ObjectRule motion_fixed{{}};
+const ObjectRule motion_translate{{{.key = "velocity", .type = ValueType::vector3},
+                                   {.key = "displacement", .type = ValueType::vector3},
+                                   {.key = "duration", .type = ValueType::number, .lower = positive}},
+                                  {{"velocity", "displacement"}}, {}, {}, {}, check_translate};
+const ObjectRule motion_rotate{{{.key = "axis", .type = ValueType::vector3, .required = true, .nonzero = true},
+                                required_vector("centre"),
+                                {.key = "angular_velocity", .type = ValueType::number, .required = true}}};
+const ObjectRule motion{{}, {}, "kind",
+                        {{"fixed", &motion_fixed}, {"translate", &motion_translate}, {"rotate", &motion_rotate}}};
+
+const ObjectRule dirichlet{
+    {{.key = "type", .type = ValueType::string, .required = true, .choices = {"dirichlet"}},
+     {.key = "region", .type = ValueType::object, .required = true, .object = &region},
+     {.key = "motion", .type = ValueType::object, .default_value = json{{"kind", "fixed"}}, .object = &motion},
+     {.key = "components", .type = ValueType::components, .default_value = json::array({"x", "y", "z"})}}};
+
+const ObjectRule loads{{{.key = "gravity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})}}};
+
+const ObjectRule initial_conditions{
+    {{.key = "velocity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
+     {.key = "angular_velocity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
+     {.key = "centre", .type = ValueType::vector3_or_string, .default_value = "centre_of_mass",
+      .choices = {"centre_of_mass"}}}};
+
+const ObjectRule rayleigh_damping{
+    {{.key = "mass", .type = ValueType::number, .default_value = 0.0, .lower = non_negative},
+     {.key = "stiffness", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}}};
+
+const ObjectRule time{{flag("static", false),
+                       {.key = "dt", .type = ValueType::number, .lower = positive},
+                       {.key = "steps", .type = ValueType::integer, .lower = at_least_one},
+                       {.key = "integrator", .type = ValueType::string, .default_value = "backward_euler",
+                        .choices = names(integrator_names)},
+                       {.key = "rayleigh_damping", .type = ValueType::object, .default_value = json::object(),
+                        .object = &rayleigh_damping}},
+                      {}, {}, {}, {}, check_time};
+
+const ObjectRule solver{
+    {{.key = "nonlinear", .type = ValueType::string, .default_value = "newton", .choices = names(nonlinear_solver_names)},
+     {.key = "tolerance", .type = ValueType::number, .default_value = 1e-5, .lower = positive},
+     {.key = "max_iterations", .type = ValueType::integer, .default_value = 50, .lower = at_least_one},
+     flag("line_search", true),
+     flag("project_spd", false),
+     {.key = "linear", .type = ValueType::string, .default_value = "cholmod", .choices = names(linear_solver_kind_names)},
+     {.key = "preconditioner", .type = ValueType::string, .default_value = "jacobi",
+      .choices = names(preconditioner_names)},
+     {.key = "linear_tolerance", .type = ValueType::number, .default_value = 1e-10, .lower = positive},
+     {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one}}};
+
+const ObjectRule output{{{.key = "every", .type = ValueType::integer, .default_value = 1, .lower = at_least_one},
+                         flag("surface", true),
+                         flag("volume", true)}};
+
+const ObjectRule fem{
+    {{.key = "element", .type = ValueType::string, .default_value = "tet10",
+      .choices = element_names()},
+     {.key = "mesh", .type = ValueType::string, .choices = names(fem_mesh_names)},
+     {.key = "resolution", .type = ValueType::integer3, .lower = at_least_one},
+     {.key = "max_cell_size", .type = ValueType::number, .lower = positive},
+     {.key = "quadrature_order", .type = ValueType::integer, .lower = at_least_one},
+     flag("curved", false)}};
+
+const ObjectRule discretization{{{.key = "fem", .type = ValueType::object, .default_value = json::object(), .object = &fem}},
+                                {}, {}, {}, {"fcm", "dg", "harmonic"}};
+
+const ObjectRule scene{
+    {{.key = "name", .type = ValueType::string},
+     {.key = "geometry", .type = ValueType::object, .required = true, .object = &geometry},
+     {.key = "material", .type = ValueType::object, .required = true, .object = &material},
+     {.key = "boundary_conditions", .type = ValueType::object_array, .default_value = json::array(), .object = &dirichlet},
+     {.key = "loads", .type = ValueType::object, .default_value = json::object(), .object = &loads},
+     {.key = "initial_conditions", .type = ValueType::object, .default_value = json::object(), .object = &initial_conditions},
+     {.key = "time", .type = ValueType::object, .default_value = json{{"static", true}}, .object = &time},
+     {.key = "solver", .type = ValueType::object, .default_value = json::object(), .object = &solver},
+     {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
+     {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &discretization}},
+    {}, {}, {}, {}, check_scene};
+
+}  // namespace
+
+const ObjectRule& scene_rule() { return scene; }
+
+}  // namespace altfem::scene_schema

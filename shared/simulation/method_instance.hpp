@@ -1,0 +1,42 @@
+#pragma once
+// What a method builds for one scene, and what the run driver needs from it: the
+// discretization, output of its mesh, and the embedded surface every method deforms
+// (DESIGN.md, "Metrics": methods are compared on the same surface vertices).
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "shared/io/unstructured_grid.hpp"
+#include "shared/mesh/surface_mesh.hpp"
+#include "shared/scene/scene.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/solve/discretization.hpp"
+
+namespace altfem {
+
+class MethodInstance {
+public:
+  virtual ~MethodInstance() = default;
+
+  virtual const Discretization& discretization() const = 0;
+  /// Element counts by kind, e.g. {"tet10": 1234}.
+  virtual nlohmann::json element_counts() const = 0;
+  virtual long long quadrature_points() const = 0;
+  /// Seconds spent generating quadrature (tabulation), part of set-up.
+  virtual double quadrature_seconds() const = 0;
+  /// The method's mesh at rest with the displacement u as point data "displacement".
+  virtual UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const = 0;
+  /// The embedded surface at rest (the scene's surface, or the mesh boundary).
+  virtual const SurfaceMesh& embedded_surface() const = 0;
+  /// Displacement of every embedded surface vertex (#vertices × 3).
+  virtual Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const = 0;
+  /// The initial velocity field (#dofs) of the scene's initial conditions.
+  virtual Eigen::VectorXd initial_velocity(const InitialConditions& initial) const = 0;
+  /// Method-specific facts for summary.json (e.g. embedding distances).
+  virtual nlohmann::json facts() const { return nlohmann::json::object(); }
+};
+
+using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&)>;
+
+}  // namespace altfem

@@ -1,0 +1,113 @@
+#include "shared/solve/cholmod_solver.hpp"
+
+#include "shared/common/error.hpp"
+
+#include <cholmod.h>
+
+#include <algorithm>
+#include <string>
+
+namespace altfem {
+namespace {
+
+// A non-owning CHOLMOD view of an Eigen matrix; stype −1 makes CHOLMOD read the
+// lower triangle only and ignore the (identical) upper one.
+cholmod_sparse lower_triangle_view(const Eigen::SparseMatrix<double>& matrix) {
+  cholmod_sparse view{};
+  view.nrow = static_cast<std::size_t>(matrix.rows());
+  view.ncol = static_cast<std::size_t>(matrix.cols());
+  view.nzmax = static_cast<std::size_t>(matrix.nonZeros());
+  view.p = const_cast<int*>(matrix.outerIndexPtr());
+  view.i = const_cast<int*>(matrix.innerIndexPtr());
+  view.nz = const_cast<int*>(matrix.innerNonZeroPtr());  // null when compressed
+  view.x = const_cast<double*>(matrix.valuePtr());
+  view.stype = -1;
+  view.itype = CHOLMOD_INT;
+  view.xtype = CHOLMOD_REAL;
+  view.dtype = CHOLMOD_DOUBLE;
+  view.sorted = 1;  // Eigen keeps row indices sorted within each column
+  view.packed = matrix.isCompressed() ? 1 : 0;
+  return view;
+}
+
+class CholmodSolver final : public LinearSolver {
+public:
+  explicit CholmodSolver(CholmodFactorisation factorisation) : factorisation_(factorisation) {
+    cholmod_start(&common_);
+    common_.print = 0;  // failures are reported as NumericalError, not printed
+    if (factorisation_ == CholmodFactorisation::simplicial_ldlt) {
+      common_.supernodal = CHOLMOD_SIMPLICIAL;
+      common_.final_ll = 0;
+    } else {
+      common_.supernodal = CHOLMOD_SUPERNODAL;
+    }
+  }
+  CholmodSolver(const CholmodSolver&) = delete;
+  CholmodSolver& operator=(const CholmodSolver&) = delete;
+  ~CholmodSolver() override {
+    cholmod_free_factor(&factor_, &common_);
+    cholmod_free_dense(&solution_, &common_);
+    cholmod_free_dense(&workspace_y_, &common_);
+    cholmod_free_dense(&workspace_e_, &common_);
+    cholmod_finish(&common_);
+  }
+
+  std::string_view name() const override {
+    return factorisation_ == CholmodFactorisation::simplicial_ldlt ? "ldlt" : "cholmod";
+  }
+
+protected:
+  void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
+    cholmod_free_factor(&factor_, &common_);
+    cholmod_sparse view = lower_triangle_view(matrix);
+    factor_ = cholmod_analyze(&view, &common_);
+    if (factor_ == nullptr) throw NumericalError("CHOLMOD analysis failed (CHOLMOD status " + status() + ")");
+  }
+
+  void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
+    cholmod_sparse view = lower_triangle_view(matrix);
+    cholmod_factorize(&view, factor_, &common_);
+    if (common_.status == CHOLMOD_NOT_POSDEF) {
+      const std::string where = "CHOLMOD status " + status() + ", column " + std::to_string(factor_->minor) + ")";
+      if (factorisation_ == CholmodFactorisation::simplicial_ldlt)
+        throw NumericalError("matrix has a zero pivot, it is not quasi-definite (" + where);
+      throw NumericalError("matrix is not positive definite (" + where);
+    }
+    if (common_.status < CHOLMOD_OK) throw NumericalError("CHOLMOD factorisation failed (CHOLMOD status " + status() + ")");
+  }
+
+  long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) override {
+    cholmod_dense right_hand_side{};
+    right_hand_side.nrow = right_hand_side.d = right_hand_side.nzmax = static_cast<std::size_t>(rhs.size());
+    right_hand_side.ncol = 1;
+    right_hand_side.x = const_cast<double*>(rhs.data());
+    right_hand_side.xtype = CHOLMOD_REAL;
+    right_hand_side.dtype = CHOLMOD_DOUBLE;
+    // cholmod_solve2 reuses its output and workspaces across calls (no allocation per solve).
+    if (!cholmod_solve2(CHOLMOD_A, factor_, &right_hand_side, nullptr, &solution_, nullptr, &workspace_y_,
+                        &workspace_e_, &common_))
+      throw NumericalError("CHOLMOD solve failed (CHOLMOD status " + status() + ")");
+    solution.resize(rhs.size());
+    const double* values = static_cast<const double*>(solution_->x);
+    std::copy(values, values + rhs.size(), solution.data());
+    return 0;
+  }
+
+private:
+  std::string status() const { return std::to_string(common_.status); }
+
+  CholmodFactorisation factorisation_;
+  cholmod_common common_{};
+  cholmod_factor* factor_ = nullptr;
+  cholmod_dense* solution_ = nullptr;
+  cholmod_dense* workspace_y_ = nullptr;
+  cholmod_dense* workspace_e_ = nullptr;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_cholmod_solver(CholmodFactorisation factorisation) {
+  return std::make_unique<CholmodSolver>(factorisation);
+}
+
+}  // namespace altfem

@@ -1,0 +1,104 @@
+#include "shared/solve/linear_solver.hpp"
+
+#include "shared/solve/cholmod_solver.hpp"
+#include "shared/solve/iterative_solver.hpp"
+#include "shared/solve/lu_solver.hpp"
+
+#include <chrono>
+#include <stdexcept>
+
+namespace altfem {
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void require_square(const Eigen::SparseMatrix<double>& matrix) {
+  if (matrix.rows() != matrix.cols())
+    throw std::logic_error("linear solver: matrix is " + std::to_string(matrix.rows()) + " × " +
+                           std::to_string(matrix.cols()) + ", expected a square matrix");
+}
+
+}  // namespace
+
+std::string_view linear_solver_kind_name(LinearSolverKind kind) {
+  return linear_solver_kind_names[static_cast<std::size_t>(kind)];
+}
+
+std::optional<LinearSolverKind> linear_solver_kind_from_name(std::string_view name) {
+  for (std::size_t index = 0; index < linear_solver_kind_names.size(); ++index)
+    if (linear_solver_kind_names[index] == name) return static_cast<LinearSolverKind>(index);
+  return std::nullopt;
+}
+
+bool LinearSolver::has_analysed_pattern(const Eigen::SparseMatrix<double>& matrix) const {
+  if (!analysed_ || pattern_column_starts_.size() != static_cast<std::size_t>(matrix.cols() + 1)) return false;
+  for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
+    int position = pattern_column_starts_[column];
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry, ++position)
+      if (position >= pattern_column_starts_[column + 1] || pattern_rows_[position] != entry.row()) return false;
+    if (position != pattern_column_starts_[column + 1]) return false;
+  }
+  return true;
+}
+
+void LinearSolver::analyze(const Eigen::SparseMatrix<double>& matrix) {
+  require_square(matrix);
+  const auto start = std::chrono::steady_clock::now();
+  analysed_ = false;
+  factorised_ = false;
+  analyze_pattern(matrix);
+  pattern_column_starts_.assign(1, 0);
+  pattern_rows_.clear();
+  for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry)
+      pattern_rows_.push_back(static_cast<int>(entry.row()));
+    pattern_column_starts_.push_back(static_cast<int>(pattern_rows_.size()));
+  }
+  analysed_ = true;
+  ++statistics_.analyses;
+  statistics_.analysis_seconds += seconds_since(start);
+}
+
+void LinearSolver::factorize(const Eigen::SparseMatrix<double>& matrix) {
+  if (!has_analysed_pattern(matrix)) analyze(matrix);
+  const auto start = std::chrono::steady_clock::now();
+  factorised_ = false;
+  factorize_values(matrix);
+  factorised_ = true;
+  ++statistics_.factorisations;
+  statistics_.factorisation_seconds += seconds_since(start);
+}
+
+void LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) {
+  if (!factorised_) throw std::logic_error("linear solver: solve() called before a successful factorize()");
+  if (rhs.size() + 1 != static_cast<Eigen::Index>(pattern_column_starts_.size()))
+    throw std::logic_error("linear solver: right-hand side has " + std::to_string(rhs.size()) +
+                           " entries, the matrix " + std::to_string(pattern_column_starts_.size() - 1) + " columns");
+  const auto start = std::chrono::steady_clock::now();
+  const long iterations = solve_system(rhs, solution);
+  ++statistics_.solves;
+  statistics_.iterations += iterations;
+  statistics_.solve_seconds += seconds_since(start);
+}
+
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options) {
+  switch (options.kind) {
+    case LinearSolverKind::cholmod: return make_cholmod_solver(CholmodFactorisation::supernodal_llt);
+    case LinearSolverKind::ldlt: return make_cholmod_solver(CholmodFactorisation::simplicial_ldlt);
+    case LinearSolverKind::lu: return make_lu_solver();
+    case LinearSolverKind::pcg:
+    case LinearSolverKind::minres:
+    case LinearSolverKind::conjugate_residual: {
+      std::unique_ptr<Preconditioner> preconditioner = options.custom_preconditioner
+                                                           ? options.custom_preconditioner()
+                                                           : make_preconditioner(options.preconditioner);
+      return make_iterative_solver(options.kind, std::move(preconditioner),
+                                   KrylovSettings{options.tolerance, options.max_iterations});
+    }
+  }
+  throw std::logic_error("make_linear_solver: unknown LinearSolverKind");
+}
+
+}  // namespace altfem

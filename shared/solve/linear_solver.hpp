@@ -1,0 +1,98 @@
+#pragma once
+// Sparse linear solvers behind one interface. Direct: CHOLMOD supernodal LLᵀ
+// (the default, SPD), CHOLMOD simplicial LDLᵀ (quasi-definite indefinite) and
+// UMFPACK LU (general). Iterative: PCG, MINRES and conjugate residual with a
+// run-time preconditioner. Symbolic analysis happens once per sparsity pattern
+// and is reused across Newton iterations and time steps; the statistics feed
+// summary.json (timings_s.analysis, timings_s.factorisation, counts.*).
+#include "shared/solve/preconditioner.hpp"
+
+#include <Eigen/Sparse>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace altfem {
+
+/// What a solver has done so far. Times are wall seconds (monotonic clock).
+struct LinearSolverStatistics {
+  int analyses = 0;        ///< symbolic analyses (one per distinct sparsity pattern)
+  int factorisations = 0;  ///< numeric factorisations (direct) / preconditioner set-ups (iterative)
+  int solves = 0;
+  long iterations = 0;  ///< Krylov iterations summed over all solves (0 for direct solvers)
+  double analysis_seconds = 0;
+  double factorisation_seconds = 0;
+  double solve_seconds = 0;
+};
+
+enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual };
+
+/// Scene names of the kinds, indexed by the enum value.
+inline constexpr std::array<std::string_view, 6> linear_solver_kind_names{"cholmod", "ldlt", "lu", "pcg", "minres",
+                                                                         "conjugate_residual"};
+
+std::string_view linear_solver_kind_name(LinearSolverKind kind);
+/// The kind called `name` (one of linear_solver_kind_names), or nothing.
+std::optional<LinearSolverKind> linear_solver_kind_from_name(std::string_view name);
+
+struct LinearSolverOptions {
+  LinearSolverKind kind = LinearSolverKind::cholmod;
+  /// Iterative solvers only: one of preconditioner_names.
+  std::string preconditioner = "jacobi";
+  /// Iterative solvers only: when set, replaces `preconditioner` (e.g. FCM's Additive Schwarz).
+  PreconditionerFactory custom_preconditioner;
+  /// Iterative solvers: stop when ‖b − A x‖₂ ≤ tolerance · ‖b‖₂.
+  double tolerance = 1e-10;
+  int max_iterations = 10000;
+};
+
+/// Solves A x = b for a sparse square A (#dofs × #dofs, column-major; symmetric
+/// matrices are stored with both triangles). Usage: analyze(A) once per
+/// sparsity pattern, factorize(A) whenever the values change, then solve(b, x)
+/// as often as needed.
+class LinearSolver {
+public:
+  virtual ~LinearSolver() = default;
+
+  /// Symbolic analysis of the sparsity pattern of `matrix` (fill-reducing ordering, elimination tree).
+  void analyze(const Eigen::SparseMatrix<double>& matrix);
+  /// Numeric factorisation of `matrix` (direct) or preconditioner set-up
+  /// (iterative). Analyses first when `matrix`'s pattern differs from the
+  /// analysed one (or none was analysed), so a changed pattern costs one more
+  /// analysis and never a wrong answer. Throws NumericalError when `matrix`
+  /// does not suit the solver (e.g. not positive definite for CHOLMOD LLᵀ).
+  void factorize(const Eigen::SparseMatrix<double>& matrix);
+  /// solution = A⁻¹ rhs for the last factorised A; rhs and solution are #dofs
+  /// and must be different vectors.
+  /// Throws NumericalError when an iterative solver does not converge.
+  void solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution);
+
+  const LinearSolverStatistics& statistics() const { return statistics_; }
+  virtual std::string_view name() const = 0;
+
+protected:
+  virtual void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) = 0;
+  virtual void factorize_values(const Eigen::SparseMatrix<double>& matrix) = 0;
+  /// Returns the number of iterations the solve took (0 for a direct solve).
+  virtual long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) = 0;
+
+private:
+  bool has_analysed_pattern(const Eigen::SparseMatrix<double>& matrix) const;
+
+  LinearSolverStatistics statistics_;
+  // The analysed pattern in compressed-column form: column starts (#dofs + 1) and row indices (#nonzeros).
+  std::vector<int> pattern_column_starts_;
+  std::vector<int> pattern_rows_;
+  bool analysed_ = false;
+  bool factorised_ = false;
+};
+
+/// The solver `options` describe; the preconditioner of an iterative solver is
+/// made here. Throws InputError for an unknown preconditioner name.
+std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& options);
+
+}  // namespace altfem

@@ -1,0 +1,109 @@
+#include "shared/solve/newton.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "shared/common/error.hpp"
+
+namespace altfem {
+
+namespace {
+std::string where(int step, int iteration) {
+  return "step " + std::to_string(step) + ", Newton iteration " + std::to_string(iteration);
+}
+}  // namespace
+
+NewtonSolver::NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
+                           const DirichletElimination& elimination)
+    : linear_solver_(linear_solver), elimination_(elimination), matrix_(pattern) {}
+
+void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd& u, const Eigen::VectorXd& gradient,
+                              const Eigen::VectorXd& increment, bool project_spd, int step, int iteration) {
+  rhs_ = -gradient;
+  const bool reuse = objective.hessian_is_constant() && constant_factorised_;
+  if (reuse) {
+    elimination_.lift(constant_hessian_, rhs_, increment);
+  } else {
+    objective.hessian(u, matrix_, project_spd);
+    if (objective.hessian_is_constant()) constant_hessian_ = matrix_;
+    elimination_.apply(matrix_, rhs_, increment);
+    if (!analysed_) {
+      linear_solver_.analyze(matrix_);
+      analysed_ = true;
+    }
+    try {
+      linear_solver_.factorize(matrix_);
+    } catch (const NumericalError& error) {
+      if (project_spd) throw NumericalError(where(step, iteration) + ": " + error.what());
+      rhs_ = -gradient;
+      objective.hessian(u, matrix_, true);
+      elimination_.apply(matrix_, rhs_, increment);
+      try {
+        linear_solver_.factorize(matrix_);
+      } catch (const NumericalError& again) {
+        throw NumericalError(where(step, iteration) + ": " + again.what());
+      }
+    }
+    constant_factorised_ = objective.hessian_is_constant();
+  }
+  try {
+    linear_solver_.solve(rhs_, direction_);
+  } catch (const NumericalError& error) {
+    throw NumericalError(where(step, iteration) + ": " + error.what());
+  }
+  if (!direction_.allFinite()) throw NumericalError(where(step, iteration) + ": the linear solve produced non-finite values");
+}
+
+NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
+                                    const NewtonOptions& options, int step) {
+  NewtonReport report;
+  for (int iteration = 0;; ++iteration) {
+    objective.gradient(u, gradient_);
+    const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
+    const double residual = elimination_.free_norm(gradient_);
+    report.residual = residual;
+    const bool constraints_met = increment.lpNorm<Eigen::Infinity>() == 0.0;
+    if (constraints_met && residual <= options.tolerance) return report;
+    if (!std::isfinite(residual)) throw NumericalError(where(step, iteration) + ": non-finite residual");
+    if (iteration >= options.max_iterations)
+      throw NumericalError(where(step, iteration) + ": not converged, residual " + std::to_string(residual) +
+                           " > tolerance " + std::to_string(options.tolerance));
+
+    solve_step(objective, u, gradient_, increment, options.project_spd, step, iteration);
+    ++report.iterations;
+
+    // Backtracking: Armijo's sufficient decrease when the constraints are met (the
+    // direction is then a descent direction of the free problem); while constraints
+    // still move, only finiteness is asked (the prescribed step need not descend).
+    const double value = objective.value(u);
+    const double slope = gradient_.dot(direction_);
+    double alpha = 1.0;
+    for (int backtrack = 0;; ++backtrack) {
+      trial_ = u + alpha * direction_;
+      const double trial_value = objective.value(trial_);
+      const bool accepted = !options.line_search ||
+                            (constraints_met ? trial_value <= value + 1e-4 * alpha * slope : std::isfinite(trial_value));
+      if (accepted) break;
+      // Near the minimum, round-off makes the objective flat: accept a full step that
+      // does not increase the energy beyond round-off.
+      if (constraints_met && backtrack == 0 && std::abs(trial_value - value) <= 1e-12 * std::abs(value) + 1e-300) break;
+      if (backtrack >= options.max_backtracks)
+        throw NumericalError(where(step, iteration) + ": line search failed (no decrease after " +
+                             std::to_string(backtrack) + " halvings; an element may be inverted)");
+      alpha *= 0.5;
+    }
+    u = trial_;
+  }
+}
+
+NewtonReport NewtonSolver::single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
+                                       const NewtonOptions& options, int step) {
+  objective.gradient(u, gradient_);
+  const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
+  solve_step(objective, u, gradient_, increment, options.project_spd, step, 0);
+  u += direction_;
+  objective.gradient(u, gradient_);
+  return NewtonReport{1, elimination_.free_norm(gradient_)};
+}
+
+}  // namespace altfem

@@ -1,0 +1,68 @@
+#pragma once
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include "shared/solve/dirichlet_elimination.hpp"
+#include "shared/solve/linear_solver.hpp"
+
+namespace altfem {
+
+/// A smooth function of the displacement that Newton minimises: the static potential
+/// Ψ(u) − f·u, or backward Euler's incremental potential.
+class Objective {
+public:
+  virtual ~Objective() = default;
+  virtual double value(const Eigen::VectorXd& u) const = 0;
+  virtual void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const = 0;
+  /// Into a matrix with the pattern given to NewtonSolver.
+  virtual void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const = 0;
+  virtual bool hessian_is_constant() const = 0;
+};
+
+struct NewtonOptions {
+  double tolerance = 1e-8;  ///< on the free part of the gradient (absolute)
+  int max_iterations = 50;
+  bool line_search = true;      ///< Armijo backtracking on the objective
+  bool project_spd = false;     ///< project element Hessians to SPD from the start
+  int max_backtracks = 40;
+};
+
+struct NewtonReport {
+  int iterations = 0;         ///< linear solves
+  double residual = 0;        ///< final free gradient norm
+};
+
+/// Damped Newton with Armijo backtracking (Nocedal & Wright, Alg. 3.1) and strong
+/// Dirichlet conditions by elimination. The sparsity pattern is analysed once and
+/// reused for every iteration and time step; with a constant Hessian (linear
+/// material) the factorisation is reused too. A failed Cholesky factorisation (an
+/// indefinite tangent) is retried once with SPD-projected element Hessians (Smith et
+/// al. 2018 §4.4; Longva et al. 2020 §6 needed it for fine Tet4 meshes).
+class NewtonSolver {
+public:
+  NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
+               const DirichletElimination& elimination);
+
+  /// Minimises `objective` from `u` with the constrained DOFs driven to `prescribed`
+  /// (constrained_dofs() order). Throws NumericalError naming `step` and the iteration.
+  NewtonReport minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
+                        const NewtonOptions& options, int step);
+  /// One Newton step without line search or convergence test (semi-implicit Euler).
+  NewtonReport single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
+                           const NewtonOptions& options, int step);
+
+private:
+  // Assembles, eliminates, factorises (unless reusable) and solves for the step.
+  void solve_step(const Objective& objective, const Eigen::VectorXd& u, const Eigen::VectorXd& gradient,
+                  const Eigen::VectorXd& increment, bool project_spd, int step, int iteration);
+
+  LinearSolver& linear_solver_;
+  const DirichletElimination& elimination_;
+  Eigen::SparseMatrix<double> matrix_;
+  Eigen::SparseMatrix<double> constant_hessian_;  // before elimination, for the lifting
+  Eigen::VectorXd rhs_, direction_, gradient_, trial_;
+  bool analysed_ = false;
+  bool constant_factorised_ = false;
+};
+
+}  // namespace altfem

@@ -1,0 +1,47 @@
+#pragma once
+// The preconditioner interface of the Krylov solvers. Eigen's iterative solvers
+// take their preconditioner as a compile-time template parameter; altfem chooses
+// it at run time (from the scene, or a method-specific one such as FCM's Additive
+// Schwarz), hence this small virtual interface and our own Krylov loops.
+#include <Eigen/Sparse>
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string_view>
+
+namespace altfem {
+
+/// An approximation M ≈ A whose inverse is cheap to apply. Krylov methods for
+/// symmetric systems (PCG, MINRES, conjugate residual) need M symmetric positive
+/// definite.
+class Preconditioner {
+public:
+  virtual ~Preconditioner() = default;
+  /// Sets up from `matrix` (#dofs × #dofs, symmetric, both triangles stored);
+  /// called after every change of the matrix values.
+  virtual void compute(const Eigen::SparseMatrix<double>& matrix) = 0;
+  /// result = M⁻¹ · residual (both #dofs). Called every Krylov iteration, so it
+  /// must not allocate; `result` never aliases `residual`.
+  virtual void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const = 0;
+};
+
+/// Makes a fresh preconditioner for each solver that needs one (method-specific
+/// preconditioners are plugged in this way).
+using PreconditionerFactory = std::function<std::unique_ptr<Preconditioner>()>;
+
+/// M = I: the unpreconditioned method.
+class IdentityPreconditioner final : public Preconditioner {
+public:
+  void compute(const Eigen::SparseMatrix<double>&) override {}
+  void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override { result = residual; }
+};
+
+/// The names accepted by make_preconditioner (scene key solver.preconditioner).
+inline constexpr std::array<std::string_view, 3> preconditioner_names{"none", "jacobi", "incomplete_cholesky"};
+
+/// The preconditioner called `name` (one of preconditioner_names); throws
+/// InputError for any other name.
+std::unique_ptr<Preconditioner> make_preconditioner(std::string_view name);
+
+}  // namespace altfem

@@ -1,0 +1,248 @@
+#include "shared/solve/time_integrator.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "shared/common/error.hpp"
+#include "shared/solve/lbfgs.hpp"
+
+namespace altfem {
+
+namespace {
+
+Eigen::VectorXd repeat_per_node(const Eigen::Vector3d& vector, int dofs) {
+  Eigen::VectorXd repeated(dofs);
+  for (int i = 0; i < dofs; ++i) repeated[i] = vector[i % 3];
+  return repeated;
+}
+
+// Static equilibrium: minimise Ψ(u) − f·u.
+class StaticPotential final : public Objective {
+public:
+  StaticPotential(const Discretization& discretization, const Eigen::VectorXd& force)
+      : discretization_(discretization), force_(force) {}
+  double value(const Eigen::VectorXd& u) const override { return discretization_.energy(u) - force_.dot(u); }
+  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override {
+    discretization_.gradient(u, gradient);
+    gradient -= force_;
+  }
+  void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override {
+    discretization_.hessian(u, hessian, project_spd);
+  }
+  bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
+
+private:
+  const Discretization& discretization_;
+  const Eigen::VectorXd& force_;
+};
+
+// Backward Euler as minimisation of the incremental potential (e.g. Gast et al. 2015;
+// Longva et al. 2020 §6):
+//   E(u) = 1/(2h²) (u − ũ)ᵀ M (u − ũ) + 1/(2h) (u − uₙ)ᵀ D (u − uₙ) + Ψ(u) − f·u,
+// ũ = uₙ + h vₙ. Its gradient is M v̇ + D v + ∇Ψ − f, so the stopping rule of
+// Longva et al. is a bound on this gradient. All matrices share one pattern, so the
+// Hessian M/h² + D/h + K is a sum of value arrays.
+class IncrementalPotential final : public Objective {
+public:
+  IncrementalPotential(const Discretization& discretization, double h, const Eigen::VectorXd& inertial_target,
+                       const Eigen::VectorXd& previous, const Eigen::SparseMatrix<double>* damping,
+                       const Eigen::VectorXd& force)
+      : discretization_(discretization), h_(h), target_(inertial_target), previous_(previous),
+        damping_(damping), force_(force) {}
+
+  double value(const Eigen::VectorXd& u) const override {
+    const double elastic = discretization_.energy(u);
+    if (!std::isfinite(elastic)) return elastic;
+    const Eigen::VectorXd inertial = u - target_;
+    double value = 0.5 / (h_ * h_) * inertial.dot(discretization_.mass_matrix() * inertial) + elastic - force_.dot(u);
+    if (damping_) {
+      const Eigen::VectorXd moved = u - previous_;
+      value += 0.5 / h_ * moved.dot(*damping_ * moved);
+    }
+    return value;
+  }
+  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override {
+    discretization_.gradient(u, gradient);
+    gradient.noalias() += discretization_.mass_matrix() * ((u - target_) / (h_ * h_));
+    if (damping_) gradient.noalias() += *damping_ * ((u - previous_) / h_);
+    gradient -= force_;
+  }
+  void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override {
+    discretization_.hessian(u, hessian, project_spd);
+    auto values = Eigen::Map<Eigen::VectorXd>(hessian.valuePtr(), hessian.nonZeros());
+    values += Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(), hessian.nonZeros()) / (h_ * h_);
+    if (damping_) values += Eigen::Map<const Eigen::VectorXd>(damping_->valuePtr(), hessian.nonZeros()) / h_;
+  }
+  bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
+
+private:
+  const Discretization& discretization_;
+  double h_;
+  const Eigen::VectorXd& target_;
+  const Eigen::VectorXd& previous_;
+  const Eigen::SparseMatrix<double>* damping_;
+  const Eigen::VectorXd& force_;
+};
+
+}  // namespace
+
+std::string_view integration_scheme_name(IntegrationScheme kind) {
+  switch (kind) {
+    case IntegrationScheme::static_equilibrium: return "static";
+    case IntegrationScheme::backward_euler: return "backward_euler";
+    case IntegrationScheme::semi_implicit: return "semi_implicit";
+    case IntegrationScheme::symplectic_euler: return "symplectic_euler";
+  }
+  return "unknown";
+}
+
+TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolver& linear_solver,
+                               IntegratorOptions options)
+    : discretization_(discretization), linear_solver_(linear_solver), options_(options),
+      elimination_(discretization.hessian_pattern(), discretization.constrained_dofs()),
+      newton_(linear_solver, discretization.hessian_pattern(), elimination_) {
+  const int dofs = discretization.dof_count();
+  gravity_force_ = discretization.mass_matrix() * repeat_per_node(options.gravity, dofs);
+  const Eigen::Vector3d representative =
+      options.gravity.norm() > 0 ? options.gravity : Eigen::Vector3d::Ones().eval();
+  absolute_tolerance_ =
+      options.tolerance * elimination_.free_norm(discretization.mass_matrix() * repeat_per_node(representative, dofs));
+  if (!(absolute_tolerance_ > 0))
+    throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
+}
+
+void TimeIntegrator::apply_constraints(State& state) const {
+  elimination_.set_constrained(state.displacement, discretization_.prescribed_displacement(state.time));
+}
+
+double TimeIntegrator::total_energy(const State& state) const {
+  const double kinetic = options_.kind == IntegrationScheme::symplectic_euler
+                             ? 0.5 * state.velocity.dot(discretization_.lumped_mass().cwiseProduct(state.velocity))
+                             : 0.5 * state.velocity.dot(discretization_.mass_matrix() * state.velocity);
+  return kinetic + discretization_.energy(state.displacement) - gravity_force_.dot(state.displacement);
+}
+
+StepReport TimeIntegrator::step(State& state) {
+  if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
+      options_.kind != IntegrationScheme::semi_implicit)
+    return step_lbfgs(state);
+  switch (options_.kind) {
+    case IntegrationScheme::symplectic_euler: return step_symplectic(state);
+    case IntegrationScheme::semi_implicit: return step_implicit(state, true);
+    default: return step_implicit(state, false);
+  }
+}
+
+StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
+  const long long linear_before = linear_solver_.statistics().iterations;
+  NewtonOptions newton{absolute_tolerance_, options_.max_iterations, options_.line_search, options_.project_spd};
+  NewtonReport report;
+  if (options_.kind == IntegrationScheme::static_equilibrium) {
+    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(state.time);
+    StaticPotential potential(discretization_, force);
+    report = newton_.minimize(potential, state.displacement, discretization_.prescribed_displacement(state.time),
+                              newton, state.step);
+  } else {
+    const double h = options_.time_step;
+    const double next_time = state.time + h;
+    const Eigen::VectorXd previous = state.displacement;
+    const Eigen::VectorXd target = previous + h * state.velocity;
+    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(next_time);
+    Eigen::SparseMatrix<double> damping;
+    const bool damped = options_.rayleigh_mass > 0 || options_.rayleigh_stiffness > 0;
+    if (damped) {
+      damping = discretization_.hessian_pattern();
+      if (options_.rayleigh_stiffness > 0) discretization_.hessian(previous, damping, true);
+      auto values = Eigen::Map<Eigen::VectorXd>(damping.valuePtr(), damping.nonZeros());
+      values = options_.rayleigh_stiffness * values +
+               options_.rayleigh_mass * Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(),
+                                                                          damping.nonZeros());
+    }
+    IncrementalPotential potential(discretization_, h, target, previous, damped ? &damping : nullptr, force);
+    const Eigen::VectorXd prescribed = discretization_.prescribed_displacement(next_time);
+    report = single_step ? newton_.single_step(potential, state.displacement, prescribed, newton, state.step + 1)
+                         : newton_.minimize(potential, state.displacement, prescribed, newton, state.step + 1);
+    state.velocity = (state.displacement - previous) / h;
+    state.time = next_time;
+    ++state.step;
+  }
+  return StepReport{report.iterations, linear_solver_.statistics().iterations - linear_before, report.residual};
+}
+
+StepReport TimeIntegrator::step_symplectic(State& state) {
+  // Symplectic (semi-implicit) Euler with lumped mass: v⁺ = v + h M_L⁻¹ (f − ∇Ψ(u) − αM_L v),
+  // u⁺ = u + h v⁺; constrained DOFs follow their prescribed motion.
+  const double h = options_.time_step;
+  Eigen::VectorXd internal;
+  discretization_.gradient(state.displacement, internal);
+  const Eigen::VectorXd& mass = discretization_.lumped_mass();
+  const Eigen::VectorXd gravity = mass.cwiseProduct(repeat_per_node(options_.gravity, discretization_.dof_count()));
+  Eigen::VectorXd force = gravity + discretization_.external_force(state.time) - internal;
+  if (options_.rayleigh_mass > 0) force -= options_.rayleigh_mass * mass.cwiseProduct(state.velocity);
+  const Eigen::VectorXd previous = state.displacement;
+  state.velocity += h * force.cwiseQuotient(mass);
+  state.displacement += h * state.velocity;
+  state.time += h;
+  ++state.step;
+  apply_constraints(state);
+  for (int dof : discretization_.constrained_dofs())
+    state.velocity[dof] = (state.displacement[dof] - previous[dof]) / h;
+  if (!state.displacement.allFinite())
+    throw NumericalError("step " + std::to_string(state.step) +
+                         ": symplectic Euler diverged (non-finite displacement; the time step may exceed the "
+                         "stability limit)");
+  return StepReport{0, 0, 0};
+}
+
+StepReport TimeIntegrator::step_lbfgs(State& state) {
+  // The same potentials as Newton, minimised over the free DOFs by L-BFGS with the
+  // constrained DOFs set to their prescribed values first.
+  const bool is_static = options_.kind == IntegrationScheme::static_equilibrium;
+  const double h = options_.time_step;
+  const double time = is_static ? state.time : state.time + h;
+  const Eigen::VectorXd previous = state.displacement;
+  const Eigen::VectorXd target = previous + h * state.velocity;
+  const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(time);
+  StaticPotential static_potential(discretization_, force);
+  IncrementalPotential incremental(discretization_, h, target, previous, nullptr, force);
+  const Objective& objective = is_static ? static_cast<const Objective&>(static_potential) : incremental;
+
+  Eigen::VectorXd u = state.displacement;
+  elimination_.set_constrained(u, discretization_.prescribed_displacement(time));
+  std::vector<int> free;
+  for (int dof = 0; dof < discretization_.dof_count(); ++dof)
+    if (!elimination_.is_constrained(dof)) free.push_back(dof);
+  Eigen::VectorXd x(static_cast<Eigen::Index>(free.size()));
+  for (size_t i = 0; i < free.size(); ++i) x[static_cast<Eigen::Index>(i)] = u[free[i]];
+  Eigen::VectorXd full_gradient;
+  auto evaluate = [&](const Eigen::VectorXd& free_values, Eigen::VectorXd& free_gradient) {
+    for (size_t i = 0; i < free.size(); ++i) u[free[i]] = free_values[static_cast<Eigen::Index>(i)];
+    const double value = objective.value(u);
+    free_gradient.resize(free_values.size());
+    if (!std::isfinite(value)) {
+      free_gradient.setZero();
+      return value;
+    }
+    objective.gradient(u, full_gradient);
+    for (size_t i = 0; i < free.size(); ++i) free_gradient[static_cast<Eigen::Index>(i)] = full_gradient[free[i]];
+    return value;
+  };
+  LbfgsOptions lbfgs;
+  lbfgs.gradient_tolerance = absolute_tolerance_;
+  lbfgs.max_evaluations = 100 * options_.max_iterations;
+  const LbfgsResult result = minimize_lbfgs(evaluate, x, lbfgs);
+  if (result.status != LbfgsStatus::converged)
+    throw NumericalError("step " + std::to_string(is_static ? state.step : state.step + 1) + ", L-BFGS evaluation " +
+                         std::to_string(result.evaluations) + ": not converged (" + result.detail + "), gradient norm " +
+                         std::to_string(result.gradient_norm) + " > tolerance " + std::to_string(absolute_tolerance_));
+  for (size_t i = 0; i < free.size(); ++i) u[free[i]] = x[static_cast<Eigen::Index>(i)];
+  state.displacement = u;
+  if (!is_static) {
+    state.velocity = (state.displacement - previous) / h;
+    state.time = time;
+    ++state.step;
+  }
+  return StepReport{result.evaluations, 0, result.gradient_norm};
+}
+
+}  // namespace altfem

@@ -1,0 +1,77 @@
+#pragma once
+// Static equilibrium and the time integrators of DESIGN.md, over any Discretization.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <memory>
+#include <string_view>
+
+#include "shared/solve/dirichlet_elimination.hpp"
+#include "shared/solve/discretization.hpp"
+#include "shared/solve/linear_solver.hpp"
+#include "shared/solve/newton.hpp"
+
+namespace altfem {
+
+enum class IntegrationScheme { static_equilibrium, backward_euler, semi_implicit, symplectic_euler };
+enum class Minimizer { newton, lbfgs };
+
+struct IntegratorOptions {
+  IntegrationScheme kind = IntegrationScheme::static_equilibrium;
+  Minimizer nonlinear = Minimizer::newton;
+  double time_step = 1.0;  ///< h [s]; unused by static equilibrium
+  /// Longva et al. 2020 §6: stop when ‖M v̇ − f‖ ≤ tolerance · ‖M a_rep‖ (free DOFs),
+  /// with gravity as the representative acceleration a_rep (1 m/s² along each axis
+  /// when the scene has no gravity). For statics the residual is ‖∇Ψ − f‖.
+  double tolerance = 1e-5;
+  int max_iterations = 50;
+  bool line_search = true;
+  bool project_spd = false;
+  double rayleigh_mass = 0;       ///< α of D = αM + βK
+  double rayleigh_stiffness = 0;  ///< β of D = αM + βK, K frozen at the start of each step
+  Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+};
+
+struct State {
+  Eigen::VectorXd displacement, velocity;  ///< #dofs each
+  double time = 0;
+  int step = 0;
+};
+
+struct StepReport {
+  int newton_iterations = 0;
+  long long linear_iterations = 0;
+  double residual = 0;
+};
+
+std::string_view integration_scheme_name(IntegrationScheme kind);
+
+class TimeIntegrator {
+public:
+  TimeIntegrator(const Discretization& discretization, LinearSolver& linear_solver, IntegratorOptions options);
+
+  /// Prescribed displacements and velocities at the state's time.
+  void apply_constraints(State& state) const;
+  /// Advances the state by one time step (static equilibrium: solves once, at the
+  /// state's time). Throws NumericalError naming the step.
+  StepReport step(State& state);
+  /// Kinetic (½ vᵀ M v, lumped mass for symplectic Euler) plus elastic energy, minus
+  /// the potential of gravity.
+  double total_energy(const State& state) const;
+  /// The absolute Newton tolerance: tolerance · ‖M a_rep‖ over the free DOFs.
+  double absolute_tolerance() const { return absolute_tolerance_; }
+
+private:
+  StepReport step_implicit(State& state, bool single_step);
+  StepReport step_symplectic(State& state);
+  StepReport step_lbfgs(State& state);
+
+  const Discretization& discretization_;
+  LinearSolver& linear_solver_;
+  IntegratorOptions options_;
+  DirichletElimination elimination_;
+  NewtonSolver newton_;
+  Eigen::VectorXd gravity_force_;  // M g
+  double absolute_tolerance_ = 0;
+};
+
+}  // namespace altfem

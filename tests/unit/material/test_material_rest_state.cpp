@@ -1,0 +1,68 @@
+// Rest and rigid motions are stress free, and every model is linear elasticity
+// at small strain.
+#include <gtest/gtest.h>
+
+#include "shared/material/material.hpp"
+#include "tests/unit/material/deformation_samples.hpp"
+
+namespace altfem {
+namespace {
+
+constexpr double youngs_modulus = 1e9;
+
+class MaterialRestState : public ::testing::TestWithParam<MaterialModel> {
+protected:
+  std::unique_ptr<Material> material = make_material(GetParam(), youngs_modulus, 0.3, 1000.0);
+  std::unique_ptr<Material> linear = make_material(MaterialModel::linear, youngs_modulus, 0.3, 1000.0);
+};
+
+TEST_P(MaterialRestState, StressFreeAtRest) {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  EXPECT_NEAR(material->energy(I), 0.0, 1e-15 * youngs_modulus);
+  EXPECT_LE(material->pk1(I).norm(), 1e-15 * youngs_modulus);
+}
+
+TEST_P(MaterialRestState, StressFreeUnderRigidRotation) {
+  if (GetParam() == MaterialModel::linear) {
+    // Linear elasticity is not rotation invariant: a quarter turn stresses it.
+    const Eigen::Matrix3d quarter_turn = Eigen::AngleAxisd(EIGEN_PI / 2, Eigen::Vector3d::UnitZ()).matrix();
+    EXPECT_GT(material->pk1(quarter_turn).norm(), 0.1 * youngs_modulus);
+    return;
+  }
+  std::mt19937 random(7);
+  for (int sample = 0; sample < 20; ++sample) {
+    const Eigen::Matrix3d R = test::random_rotation(random);
+    EXPECT_NEAR(material->energy(R), 0.0, 1e-13 * youngs_modulus) << "R =\n" << R;
+    EXPECT_LE(material->pk1(R).norm(), 1e-13 * youngs_modulus) << "R =\n" << R;
+  }
+}
+
+// F = I + H, H = 1e-6 G: P agrees with linear elasticity's up to second-order
+// terms, C·E·‖H‖² = O(1e-12 E) (measured C ≤ 2.6, for stable Neo-Hookean); a
+// wrong small-strain modulus would show at O(1e-6 E).
+TEST_P(MaterialRestState, MatchesLinearElasticityAtSmallStrain) {
+  std::mt19937 random(11);
+  for (int sample = 0; sample < 20; ++sample) {
+    const Eigen::Matrix3d H = 1e-6 * test::random_matrix(random);
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + H;
+    const Eigen::Matrix3d expected = linear->pk1(F);
+    EXPECT_GT(expected.norm(), 1e-8 * youngs_modulus);
+    EXPECT_LE((material->pk1(F) - expected).norm(), 4.0 * youngs_modulus * H.squaredNorm()) << "F =\n" << F;
+  }
+}
+
+// At F = I every tangent equals linear elasticity's μ(δik δjl + δil δjk) + λ δij δkl.
+TEST_P(MaterialRestState, TangentAtRestIsLinearElasticity) {
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
+  Eigen::Matrix3d P, P_linear;
+  Matrix9d dPdF, expected;
+  material->pk1_and_tangent(I, P, dPdF);
+  linear->pk1_and_tangent(I, P_linear, expected);
+  EXPECT_LE((dPdF - expected).norm(), 1e-12 * expected.norm()) << "dPdF =\n" << dPdF;
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryModel, MaterialRestState, ::testing::ValuesIn(all_material_models),
+                         [](const auto& info) { return std::string(material_model_name(info.param)); });
+
+}  // namespace
+}  // namespace altfem

@@ -1,0 +1,94 @@
+// Defaults of docs/scene-schema.md are filled into Scene::resolved and the structs.
+#include <gtest/gtest.h>
+
+#include "shared/scene/scene.hpp"
+
+namespace altfem {
+namespace {
+
+const char* minimal = R"({
+  "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 2, 2] } } },
+  "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.25 }
+})";
+
+TEST(SceneDefaults, MinimalSceneIsResolvedCompletely) {
+  const Scene scene = parse_scene(minimal, "some/folder/minimal.json");
+  const nlohmann::json& resolved = scene.resolved;
+  EXPECT_EQ(resolved["name"], "minimal");
+  EXPECT_EQ(resolved["material"]["model"], "stable_neo_hookean");
+  EXPECT_EQ(resolved["material"]["density"], 1000.0);
+  EXPECT_EQ(resolved["geometry"]["scale"], 1.0);
+  EXPECT_EQ(resolved["geometry"]["translate"], nlohmann::json::array({0.0, 0.0, 0.0}));
+  EXPECT_EQ(resolved["boundary_conditions"], nlohmann::json::array());
+  EXPECT_EQ(resolved["loads"]["gravity"], nlohmann::json::array({0.0, 0.0, 0.0}));
+  EXPECT_EQ(resolved["initial_conditions"]["centre"], "centre_of_mass");
+  EXPECT_EQ(resolved["time"], nlohmann::json({{"static", true}}));
+  EXPECT_EQ(resolved["solver"]["nonlinear"], "newton");
+  EXPECT_EQ(resolved["solver"]["tolerance"], 1e-5);
+  EXPECT_EQ(resolved["solver"]["max_iterations"], 50);
+  EXPECT_EQ(resolved["solver"]["line_search"], true);
+  EXPECT_EQ(resolved["solver"]["project_spd"], false);
+  EXPECT_EQ(resolved["solver"]["linear"], "cholmod");
+  EXPECT_EQ(resolved["solver"]["preconditioner"], "jacobi");
+  EXPECT_EQ(resolved["solver"]["linear_tolerance"], 1e-10);
+  EXPECT_EQ(resolved["solver"]["linear_max_iterations"], 10000);
+  EXPECT_EQ(resolved["output"], nlohmann::json({{"every", 1}, {"surface", true}, {"volume", true}}));
+  // A box with the default tet10 is tetrahedralized; cell size = diagonal / 15.
+  const nlohmann::json& fem = resolved["discretization"]["fem"];
+  EXPECT_EQ(fem["element"], "tet10");
+  EXPECT_EQ(fem["mesh"], "tetrahedralize");
+  EXPECT_DOUBLE_EQ(fem["max_cell_size"].get<double>(), std::sqrt(12.0) / 15.0);
+  EXPECT_EQ(fem["quadrature_order"], 4);
+  EXPECT_EQ(fem["curved"], false);
+  EXPECT_FALSE(fem.contains("resolution"));
+
+  EXPECT_EQ(scene.name, "minimal");
+  EXPECT_EQ(scene.material.density, 1000.0);
+  EXPECT_TRUE(scene.time.is_static);
+  EXPECT_FALSE(scene.initial.centre.has_value());
+  EXPECT_DOUBLE_EQ(*scene.fem.max_cell_size, std::sqrt(12.0) / 15.0);
+}
+
+TEST(SceneDefaults, GridResolutionFollowsTheAspect) {
+  const auto resolution = [](const std::string& max, const std::string& element) {
+    const std::string text = R"({"geometry": {"shape": {"box": {"min": [0, 0, 0], "max": )" + max +
+                             R"(}}}, "material": {"youngs_modulus": 1, "poisson_ratio": 0},
+                                "discretization": {"fem": {"element": ")" + element + R"("}}})";
+    const Scene scene = parse_scene(text, "grid.json");
+    EXPECT_EQ(scene.fem.mesh, FemMeshKind::grid);
+    return scene.fem.resolution;
+  };
+  EXPECT_EQ(resolution("[1, 1, 1]", "hex8"), Eigen::Vector3i(4, 4, 4));
+  EXPECT_EQ(resolution("[1, 0.1, 0.1]", "hex20"), Eigen::Vector3i(20, 2, 2));
+  EXPECT_EQ(resolution("[1, 1, 0.01]", "hex27"), Eigen::Vector3i(32, 32, 2));
+}
+
+TEST(SceneDefaults, DynamicTimeAndRelativePaths) {
+  const Scene scene = parse_scene(R"({
+    "geometry": { "surface": "../models/thing.OBJ", "scale": 2, "translate": [1, 2, 3] },
+    "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.25 },
+    "initial_conditions": { "centre": [1, 0, 0], "angular_velocity": [0, 0, 2] },
+    "time": { "dt": 0.5, "steps": 4 }
+  })", "/tmp/scenes/dynamic.json");
+  EXPECT_EQ(scene.geometry.file, std::filesystem::path("/tmp/models/thing.OBJ"));
+  EXPECT_EQ(scene.resolved["geometry"]["surface"], "/tmp/models/thing.OBJ");
+  EXPECT_EQ(scene.geometry.scale, 2.0);
+  EXPECT_EQ(scene.geometry.translate, Eigen::Vector3d(1, 2, 3));
+  EXPECT_FALSE(scene.time.is_static);
+  EXPECT_EQ(scene.time.dt, 0.5);
+  EXPECT_EQ(scene.time.steps, 4);
+  EXPECT_EQ(scene.time.integrator, IntegratorKind::backward_euler);
+  EXPECT_EQ(scene.resolved["time"]["rayleigh_damping"], nlohmann::json({{"mass", 0.0}, {"stiffness", 0.0}}));
+  EXPECT_EQ(scene.resolved["discretization"]["fem"]["max_cell_size"], nullptr);
+  // v + ω × (x − c): ω = 2 ẑ, x − c = ŷ ⇒ −2 x̂.
+  EXPECT_EQ(scene.initial.velocity_at({1, 1, 0}, {9, 9, 9}), Eigen::Vector3d(-2, 0, 0));
+}
+
+TEST(SceneDefaults, ResolvedSceneParsesToTheSameScene) {
+  const Scene scene = parse_scene(minimal, "minimal.json");
+  const Scene again = parse_scene(scene.resolved.dump(), "minimal.json");
+  EXPECT_EQ(again.resolved, scene.resolved);
+}
+
+}  // namespace
+}  // namespace altfem
