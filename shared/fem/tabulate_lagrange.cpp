@@ -1,5 +1,6 @@
 #include "shared/fem/tabulate_lagrange.hpp"
 
+#include <Eigen/LU>
 #include <atomic>
 #include <string>
 #include <vector>

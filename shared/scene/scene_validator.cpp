@@ -91,7 +91,7 @@ std::string describe(const json& value) {
     case json::value_t::number_float: return format_number(value.get<double>());
     case json::value_t::string: {
       const auto& text = value.get_ref<const std::string&>();
-      if (text.size() > 40) return "a string of " + std::to_string(text.size()) + " characters";
+      if (text.size() > 120) return json(text.substr(0, 117)).dump() + "...";
       return json(text).dump();  // quoted and escaped, so always one line
     }
     case json::value_t::array: return "an array of " + std::to_string(value.size()) + " elements";

@@ -140,8 +140,9 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
   if (options_.kind == IntegrationScheme::static_equilibrium) {
     const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(state.time);
     StaticPotential potential(discretization_, force);
+    // Static equilibrium is one load step: messages call it step 1.
     report = newton_.minimize(potential, state.displacement, discretization_.prescribed_displacement(state.time),
-                              newton, state.step);
+                              newton, state.step + 1);
   } else {
     const double h = options_.time_step;
     const double next_time = state.time + h;
@@ -232,7 +233,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   lbfgs.max_evaluations = 100 * options_.max_iterations;
   const LbfgsResult result = minimize_lbfgs(evaluate, x, lbfgs);
   if (result.status != LbfgsStatus::converged)
-    throw NumericalError("step " + std::to_string(is_static ? state.step : state.step + 1) + ", L-BFGS evaluation " +
+    throw NumericalError("step " + std::to_string(state.step + 1) + ", L-BFGS evaluation " +
                          std::to_string(result.evaluations) + ": not converged (" + result.detail + "), gradient norm " +
                          std::to_string(result.gradient_norm) + " > tolerance " + std::to_string(absolute_tolerance_));
   for (size_t i = 0; i < free.size(); ++i) u[free[i]] = x[static_cast<Eigen::Index>(i)];

@@ -1,0 +1,117 @@
+// Assembly throughput of ElasticAssembler (issue #9): Hessian, gradient and energy of a
+// Stable Neo-Hookean cube, for Hex20 and Tet10 at the quadrature strength fem uses by
+// default (2·degree = 4) and at Longva et al.'s (2020) Tet10 strength 3, with 1 and 2
+// OpenMP threads. items_per_second is quadrature points per second (wall clock).
+//
+//   bench_assembly --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// `bench_assembly --callgrind-hessian ELEMENT STRENGTH ASSEMBLIES` skips the benchmarks
+// and runs a fixed number of Hessian assemblies of a small mesh, for counting
+// instructions per quadrature point under `valgrind --tool=callgrind` (scripts/bench).
+#include <benchmark/benchmark.h>
+#include <omp.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <string>
+#include <tuple>
+
+#include "bench/bench_problem.hpp"
+
+namespace {
+
+using altfem::ElementType;
+using altfem::bench::CubeProblem;
+
+struct Case {
+  const char* name;
+  ElementType type;
+  int resolution;
+  int strength;
+};
+
+// Hex20 12³ = 1728 cells; Tet10 8³·6 = 3072 cells: a few thousand elements each,
+// large enough that the pattern (~10-50 MB) does not fit in cache, as in real runs.
+constexpr Case cases[] = {
+    {"hex20_12^3_strength4", ElementType::hex20, 12, 4},
+    {"tet10_8^3_strength4", ElementType::tet10, 8, 4},
+    {"tet10_8^3_strength3_longva", ElementType::tet10, 8, 3},
+};
+
+// Built once, in main before any benchmark runs: the assembler's per-thread scratch is
+// sized by omp_get_max_threads() at construction, so it must exist before a benchmark
+// lowers the thread count.
+const CubeProblem& problem(const Case& c) {
+  static std::map<std::tuple<ElementType, int, int>, std::unique_ptr<CubeProblem>> problems;
+  auto& slot = problems[{c.type, c.resolution, c.strength}];
+  if (!slot) slot = std::make_unique<CubeProblem>(c.type, c.resolution, c.strength,
+                                                  altfem::MaterialModel::stable_neo_hookean);
+  return *slot;
+}
+
+enum class Kind { hessian, gradient, energy };
+
+void run(benchmark::State& state, const Case& c, Kind kind, int threads) {
+  const CubeProblem& p = problem(c);
+  omp_set_num_threads(threads);
+  const Eigen::VectorXd u = p.smooth_displacement();
+  Eigen::SparseMatrix<double> hessian = p.assembler().pattern();
+  Eigen::VectorXd gradient(p.dof_count());
+  for (auto _ : state) {
+    switch (kind) {
+      case Kind::hessian: p.assembler().hessian(u, hessian); break;
+      case Kind::gradient: p.assembler().gradient(u, gradient); break;
+      case Kind::energy: benchmark::DoNotOptimize(p.assembler().energy(u)); break;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * p.elements().point_count());
+  state.counters["points"] = static_cast<double>(p.elements().point_count());
+  state.counters["dofs"] = p.dof_count();
+  state.SetLabel(p.description());
+}
+
+int callgrind_hessian(const char* element, int strength, int assemblies) {
+  const auto type = altfem::element_type_from_name(element);
+  if (!type) {
+    std::fprintf(stderr, "bench_assembly: unknown element '%s'\n", element);
+    return 2;
+  }
+  // Small meshes: callgrind runs ~50x slower than native.
+  const int resolution = altfem::element_shape(*type) == altfem::ElementShape::hexahedron ? 4 : 3;
+  const CubeProblem p(*type, resolution, strength, altfem::MaterialModel::stable_neo_hookean);
+  const Eigen::VectorXd u = p.smooth_displacement();
+  Eigen::SparseMatrix<double> hessian = p.assembler().pattern();
+  for (int i = 0; i < assemblies; ++i) p.assembler().hessian(u, hessian);
+  std::printf("%s: %d assemblies, quadrature_points_processed %lld\n", p.description().c_str(), assemblies,
+              assemblies * p.elements().point_count());
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 5 && std::strcmp(argv[1], "--callgrind-hessian") == 0)
+    return callgrind_hessian(argv[2], std::atoi(argv[3]), std::atoi(argv[4]));
+
+  const int max_threads = omp_get_max_threads();
+  for (const Case& c : cases) problem(c);
+  for (const Case& c : cases)
+    for (auto [kind, kind_name] : {std::pair{Kind::hessian, "hessian"}, std::pair{Kind::gradient, "gradient"},
+                                   std::pair{Kind::energy, "energy"}})
+      for (int threads : {1, 2}) {
+        if (threads > max_threads) continue;
+        const std::string name = std::string(kind_name) + "/" + c.name + "/threads:" + std::to_string(threads);
+        benchmark::RegisterBenchmark(name.c_str(), [c, kind, threads](benchmark::State& state) {
+          run(state, c, kind, threads);
+        })->UseRealTime()->Unit(benchmark::kMillisecond);
+      }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,57 @@
+#include "tests/cli/cli_support.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+namespace altfem::test {
+
+namespace {
+std::string quote(const std::string& text) {
+  std::string quoted = "'";
+  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return quoted + "'";
+}
+std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+}  // namespace
+
+std::filesystem::path fresh_directory(const std::string& name) {
+  static std::mt19937 random{std::random_device{}()};
+  const auto path = std::filesystem::temp_directory_path() / ("altfem-cli-" + name + "-" + std::to_string(random()));
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
+CommandResult run_altfem(const std::vector<std::string>& arguments, const std::string& environment) {
+  const auto capture = fresh_directory("capture");
+  std::string command = environment + " " + quote(ALTFEM_EXECUTABLE);
+  for (const auto& argument : arguments) command += " " + quote(argument);
+  command += " > " + quote((capture / "out").string()) + " 2> " + quote((capture / "err").string()) + " < /dev/null";
+  const int status = std::system(command.c_str());
+  CommandResult result;
+  result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.out = read_all(capture / "out");
+  result.err = read_all(capture / "err");
+  std::filesystem::remove_all(capture);
+  return result;
+}
+
+std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(ALTFEM_SOURCE_DIR) / relative; }
+
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace altfem::test

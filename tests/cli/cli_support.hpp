@@ -1,0 +1,23 @@
+#pragma once
+// Runs the altfem executable as a user would and captures what it prints.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace altfem::test {
+
+struct CommandResult {
+  int exit_code = -1;
+  std::string out;  ///< standard output
+  std::string err;  ///< standard error
+};
+
+/// Runs `altfem <arguments>` with optional extra environment ("NAME=value ...").
+CommandResult run_altfem(const std::vector<std::string>& arguments, const std::string& environment = "");
+/// A fresh empty folder under the system temporary folder.
+std::filesystem::path fresh_directory(const std::string& name);
+std::filesystem::path source_path(const std::string& relative);
+/// Lines of a text, without the trailing empty one.
+std::vector<std::string> lines_of(const std::string& text);
+
+}  // namespace altfem::test

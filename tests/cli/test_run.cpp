@@ -1,0 +1,82 @@
+// `altfem run` end to end on shipped scenes: the summary.json contract of DESIGN.md,
+// files read back by meshio, solver counts, and numerical failure (exit 3).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace altfem::test {
+namespace {
+
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+TEST(Run, CantileverWritesTheSummaryContractAndReadableFiles) {
+  const auto out = fresh_directory("cantilever") / "run";
+  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto summary = read_summary(out);
+  for (const char* key : {"scene", "method", "options", "dofs", "elements", "quadrature_points", "timings_s", "counts",
+                          "steps", "newton_iterations", "linear_iterations", "status", "surface"})
+    EXPECT_TRUE(summary.contains(key)) << key;
+  for (const char* key : {"setup", "quadrature", "assembly", "analysis", "factorisation", "solve", "total"})
+    EXPECT_GE(summary["timings_s"][key].get<double>(), 0.0) << key;
+  EXPECT_EQ(summary["status"], "ok");
+  EXPECT_EQ(summary["method"], "fem");
+  EXPECT_EQ(summary["options"]["discretization"]["fem"]["element"], "hex20");
+  // A linear material: assembled and factorised once.
+  EXPECT_EQ(summary["counts"]["analyses"], 1);
+  EXPECT_EQ(summary["counts"]["factorisations"], 1);
+  EXPECT_TRUE(std::filesystem::exists(out / "log.txt"));
+  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
+  EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
+}
+
+TEST(Run, NewtonReportsOneAnalysisAndOneFactorisationPerIteration) {
+  const auto out = fresh_directory("cube") / "run";
+  const auto result = run_altfem({"run", source_path("scenes/cube_msh.json").string(), "--method", "fem", "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto summary = read_summary(out);
+  const int iterations = summary["newton_iterations"];
+  EXPECT_GT(iterations, 1) << "the scene should need several Newton iterations";
+  EXPECT_EQ(summary["counts"]["analyses"], 1);
+  EXPECT_EQ(summary["counts"]["factorisations"], iterations);
+}
+
+TEST(Run, NewtonFailureExitsThreeNamingStepAndIteration) {
+  const auto out = fresh_directory("newton-fails") / "run";
+  const auto result =
+      run_altfem({"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem", "--out", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  const auto lines = lines_of(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("step 1, Newton iteration"), std::string::npos) << lines[0];
+  const auto summary = read_summary(out);
+  EXPECT_EQ(summary["status"].get<std::string>().rfind("error: step 1", 0), 0u) << summary["status"];
+}
+
+TEST(Check, JsonOutputIsTheResolvedSceneAndGeometryFacts) {
+  const auto result = run_altfem({"check", source_path("scenes/bunny.json").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const auto json = nlohmann::json::parse(result.out);
+  EXPECT_EQ(json["geometry"]["kind"], "surface");
+  EXPECT_EQ(json["geometry"]["vertices"], 1839);
+  EXPECT_TRUE(json["geometry"]["closed"].get<bool>());
+  EXPECT_GT(json["geometry"]["volume"].get<double>(), 0.0);
+  EXPECT_TRUE(json["scene"].contains("solver")) << "defaults are resolved";
+}
+
+TEST(Check, EveryShippedSceneIsValid) {
+  for (const auto& entry : std::filesystem::directory_iterator(source_path("scenes"))) {
+    if (entry.path().extension() != ".json") continue;
+    const auto result = run_altfem({"check", entry.path().string()});
+    EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.err;
+  }
+}
+
+}  // namespace
+}  // namespace altfem::test

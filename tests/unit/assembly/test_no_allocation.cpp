@@ -1,0 +1,146 @@
+// Issue #9: a second Hessian or gradient assembly of the same mesh must not touch the
+// heap. This executable replaces every global operator new/delete (plain, array,
+// aligned, nothrow) with counting versions and, because Eigen allocates through
+// malloc rather than operator new, glibc's malloc family too (forwarding to glibc's
+// __libc_* entry points). Counting is switched on only around the calls under test.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstddef>
+#include <cstdlib>
+#include <new>
+
+#include "tests/unit/assembly/assembly_fixture.hpp"
+
+extern "C" {
+void* __libc_malloc(size_t size);
+void* __libc_calloc(size_t count, size_t size);
+void* __libc_realloc(void* pointer, size_t size);
+void* __libc_memalign(size_t alignment, size_t size);
+void __libc_free(void* pointer);
+}
+
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> operator_news{0};
+std::atomic<long> mallocs{0};
+
+void count_malloc() {
+  if (counting.load(std::memory_order_relaxed)) mallocs.fetch_add(1, std::memory_order_relaxed);
+}
+void* counted_new(size_t size, size_t alignment) {
+  if (counting.load(std::memory_order_relaxed)) operator_news.fetch_add(1, std::memory_order_relaxed);
+  if (size == 0) size = 1;
+  return alignment <= alignof(std::max_align_t) ? std::malloc(size) : __libc_memalign(alignment, size);
+}
+void* throwing_new(size_t size, size_t alignment) {
+  void* pointer = counted_new(size, alignment);
+  if (!pointer) throw std::bad_alloc();
+  return pointer;
+}
+}  // namespace
+
+extern "C" {
+void* malloc(size_t size) {
+  count_malloc();
+  return __libc_malloc(size);
+}
+void* calloc(size_t count, size_t size) {
+  count_malloc();
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, size_t size) {
+  count_malloc();
+  return __libc_realloc(pointer, size);
+}
+void* memalign(size_t alignment, size_t size) {
+  count_malloc();
+  return __libc_memalign(alignment, size);
+}
+void* aligned_alloc(size_t alignment, size_t size) {
+  count_malloc();
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** result, size_t alignment, size_t size) {
+  count_malloc();
+  void* pointer = __libc_memalign(alignment, size);
+  if (!pointer) return ENOMEM;
+  *result = pointer;
+  return 0;
+}
+void free(void* pointer) { __libc_free(pointer); }
+}
+
+void* operator new(size_t size) { return throwing_new(size, 0); }
+void* operator new[](size_t size) { return throwing_new(size, 0); }
+void* operator new(size_t size, std::align_val_t alignment) { return throwing_new(size, size_t(alignment)); }
+void* operator new[](size_t size, std::align_val_t alignment) { return throwing_new(size, size_t(alignment)); }
+void* operator new(size_t size, const std::nothrow_t&) noexcept { return counted_new(size, 0); }
+void* operator new[](size_t size, const std::nothrow_t&) noexcept { return counted_new(size, 0); }
+void* operator new(size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+  return counted_new(size, size_t(alignment));
+}
+void* operator new[](size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+  return counted_new(size, size_t(alignment));
+}
+void operator delete(void* pointer) noexcept { std::free(pointer); }
+void operator delete[](void* pointer) noexcept { std::free(pointer); }
+void operator delete(void* pointer, size_t) noexcept { std::free(pointer); }
+void operator delete[](void* pointer, size_t) noexcept { std::free(pointer); }
+void operator delete(void* pointer, std::align_val_t) noexcept { std::free(pointer); }
+void operator delete[](void* pointer, std::align_val_t) noexcept { std::free(pointer); }
+void operator delete(void* pointer, size_t, std::align_val_t) noexcept { std::free(pointer); }
+void operator delete[](void* pointer, size_t, std::align_val_t) noexcept { std::free(pointer); }
+void operator delete(void* pointer, const std::nothrow_t&) noexcept { std::free(pointer); }
+void operator delete[](void* pointer, const std::nothrow_t&) noexcept { std::free(pointer); }
+void operator delete(void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { std::free(pointer); }
+void operator delete[](void* pointer, std::align_val_t, const std::nothrow_t&) noexcept { std::free(pointer); }
+
+namespace altfem {
+namespace {
+
+TEST(CountingAllocator, SeesOperatorNewAndEigenMalloc) {
+  // The counters must work, or a zero below would prove nothing.
+  counting = true;
+  auto* boxed = new int(3);
+  Eigen::VectorXd vector(100);
+  // Escape both, so that the compiler may not elide the allocations.
+  asm volatile("" : : "g"(boxed), "g"(vector.data()) : "memory");
+  counting = false;
+  delete boxed;
+  EXPECT_EQ(operator_news.exchange(0), 1);
+  EXPECT_GE(mallocs.exchange(0), 2);
+  EXPECT_EQ(vector.size(), 100);
+}
+
+class SecondAssembly : public ::testing::TestWithParam<ElementType> {};
+
+TEST_P(SecondAssembly, AllocatesNothing) {
+  const test::AssemblyProblem problem(GetParam(), {3, 3, 3}, MaterialModel::stable_neo_hookean);
+  const ElasticAssembler& assembler = *problem.assembler;
+  const Eigen::VectorXd u = problem.displacement(test::moderate_deformation(), 0.05, 4);
+  SparseMatrix hessian = assembler.pattern();
+  Eigen::VectorXd gradient;
+  assembler.hessian(u, hessian);  // warm-up: sizes the gradient, starts the OpenMP pool
+  assembler.gradient(u, gradient);
+
+  operator_news = 0;
+  mallocs = 0;
+  counting = true;
+  assembler.hessian(u, hessian);
+  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
+  assembler.gradient(u, gradient);
+  counting = false;
+  EXPECT_EQ(hessian_news, 0);
+  EXPECT_EQ(hessian_mallocs, 0);
+  EXPECT_EQ(operator_news.load(), 0);
+  EXPECT_EQ(mallocs.load(), 0);
+  EXPECT_GT(gradient.norm(), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(ElasticAssembler, SecondAssembly, ::testing::Values(ElementType::tet10, ElementType::hex20),
+                         [](const auto& info) { return std::string(element_name(info.param)); });
+
+}  // namespace
+}  // namespace altfem

@@ -1,0 +1,66 @@
+// PointEmbedding reproduces an affine displacement at random interior points of
+// distorted meshes (the basis reproduces affine fields; the inverse map must find
+// the right cell and reference point).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "shared/element/geometry_map.hpp"
+#include "shared/fem/point_embedding.hpp"
+#include "tests/unit/fem/test_meshes.hpp"
+
+namespace altfem {
+namespace {
+
+// `count` points x_p = x_cell(ξ_p) at random reference points of random cells (#points × 3).
+Eigen::MatrixXd random_interior_points(const VolumeMesh& mesh, int count, unsigned seed) {
+  const ReferenceElement& element = reference_element(mesh.element_type);
+  const bool tet = element.shape() == ElementShape::tetrahedron;
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> pick_cell(0, static_cast<int>(mesh.cells.rows()) - 1);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  Eigen::MatrixXd points(count, 3);
+  Eigen::MatrixXd cell_nodes(element.node_count(), 3);
+  for (int p = 0; p < count; ++p) {
+    const int cell = pick_cell(random);
+    for (int a = 0; a < element.node_count(); ++a) cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+    Eigen::Vector3d xi;
+    if (tet) {
+      // Uniform barycentric coordinates, kept 1% away from the faces.
+      Eigen::Vector4d b;
+      for (int i = 0; i < 4; ++i) b[i] = 0.01 - std::log(1.0 - uniform(random));
+      xi = b.head<3>() / b.sum();
+    } else {
+      for (int i = 0; i < 3; ++i) xi[i] = 1.98 * uniform(random) - 0.99;
+    }
+    points.row(p) = map_to_physical(element, cell_nodes, xi).transpose();
+  }
+  return points;
+}
+
+class EmbeddingOfType : public ::testing::TestWithParam<ElementType> {};
+
+TEST_P(EmbeddingOfType, ReproducesAnAffineDisplacement) {
+  const VolumeMesh mesh = test::distorted_grid(test::unit_cube(), {3, 3, 3}, GetParam(), 0.15, 5);
+  const Eigen::MatrixXd points = random_interior_points(mesh, 300, 9);
+  Eigen::Matrix3d A;
+  A << 0.1, -0.3, 0.2, 0.05, 0.4, -0.1, -0.2, 0.15, 0.3;
+  const Eigen::Vector3d b(0.3, -0.2, 0.1);
+  const Eigen::VectorXd u = test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; });
+
+  const PointEmbedding embedding(mesh, points);
+  EXPECT_EQ(embedding.outside_count(), 0);
+  EXPECT_EQ(embedding.max_outside_distance(), 0.0);
+  const Eigen::MatrixXd displacement = embedding.displacement(u);
+  ASSERT_EQ(displacement.rows(), points.rows());
+  ASSERT_EQ(displacement.cols(), 3);
+  const Eigen::MatrixXd expected = (points * A.transpose()).rowwise() + b.transpose();
+  EXPECT_LT((displacement - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+INSTANTIATE_TEST_SUITE_P(PointEmbedding, EmbeddingOfType, ::testing::ValuesIn(test::all_element_types),
+                         [](const auto& info) { return std::string(element_name(info.param)); });
+
+}  // namespace
+}  // namespace altfem
