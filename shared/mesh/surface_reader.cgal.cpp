@@ -2,10 +2,6 @@
 // in the order that gives one clear message per defect (ENVIRONMENT.md, "CGAL 5.5"):
 // CGAL's read_polygon_mesh would only return false, or silently repair.
 
-// GCC 12 warns -Wmaybe-uninitialized inside Boost.Graph, which PMP includes; the
-// warning is in Boost's code, not ours, so it is silenced for this file only.
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>

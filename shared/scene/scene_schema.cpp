@@ -93,12 +93,10 @@ void resolve_fem(const Validator& validator, json& scene) {
   const ElementType element = *element_type_from_name(fem["element"].get<std::string>());
   const bool hex = element_shape(element) == ElementShape::hexahedron;
   if (!fem.contains("mesh"))
-    fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box && hex ? "grid" : "tetrahedralize");
+    fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
   const std::string mesh = fem["mesh"];
   if (mesh == "grid" && !is_box)
     validator.fail(pointer + "/mesh", "'grid' needs an analytic box geometry, got " + geometry_kind(geometry));
-  if (mesh == "grid" && !hex)
-    validator.fail(pointer + "/element", "the 'grid' mesh needs a hex element, got " + describe(fem["element"]));
   if (mesh == "tetrahedralize" && geometry.contains("mesh"))
     validator.fail(pointer + "/mesh", "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
   if (mesh == "tetrahedralize" && hex)
@@ -116,7 +114,10 @@ void resolve_fem(const Validator& validator, json& scene) {
         scale * (vector3_from_json(geometry["shape"]["box"]["max"]) - vector3_from_json(geometry["shape"]["box"]["min"]));
     const double cell = std::min(extent.minCoeff() / 2.0, extent.maxCoeff() / 4.0);
     fem["resolution"] = json::array();
-    for (int i = 0; i < 3; ++i) fem["resolution"].push_back(std::clamp(std::lround(extent[i] / cell), 1L, 32L));
+    for (int i = 0; i < 3; ++i) {
+      const double cells = extent[i] / cell;  // NaN or inf only for absurd (overflowing) boxes
+      fem["resolution"].push_back(!(cells >= 1.0) ? 1L : cells > 32.0 ? 32L : std::lround(cells));
+    }
   }
   if (mesh == "tetrahedralize" && !fem.contains("max_cell_size")) {
     if (geometry.contains("shape"))

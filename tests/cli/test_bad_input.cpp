@@ -63,11 +63,18 @@ class BadGeometry : public testing::TestWithParam<BadInput> {};
 
 TEST_P(BadGeometry, CheckAndRunRejectWithOneLineAndNoOutput) {
   const auto folder = fresh_directory("bad-geometry");
-  const auto scene = scene_for_geometry(source_path("tests/data/bad/mesh/" + GetParam().file), folder);
-  expect_bad_input(run_altfem({"check", scene.string()}), GetParam().file, GetParam().expected);
+  const std::filesystem::path geometry = source_path("tests/data/bad/mesh/" + GetParam().file);
+  const auto scene = scene_for_geometry(geometry, folder);
+  // A file type no reader knows is refused by the scene validator before any
+  // reader runs; its message names the scene key and the file.
+  const std::string extension = geometry.extension().string();
+  const bool known = extension == ".msh" || extension == ".mesh" || extension == ".off" || extension == ".obj" ||
+                     extension == ".stl" || extension == ".ply";
+  const std::string expected = known ? GetParam().expected : "/geometry/surface: expected a file ending in one of";
+  expect_bad_input(run_altfem({"check", scene.string()}), GetParam().file, expected);
   const auto out = folder / "run";
   expect_bad_input(run_altfem({"run", scene.string(), "--method", "fem", "--out", out.string()}), GetParam().file,
-                   GetParam().expected);
+                   expected);
   EXPECT_FALSE(std::filesystem::exists(out)) << "a rejected run left " << out;
 }
 

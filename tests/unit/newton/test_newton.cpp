@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "shared/common/error.hpp"
+
 #include "shared/assembly/elastic_assembler.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/solve/newton.hpp"
@@ -51,7 +53,10 @@ TEST(Newton, ConvergesQuadraticallyWithOneAnalysisAndOneFactorisationPerIteratio
   EXPECT_LE(report.residual, options.tolerance);
   EXPECT_GT(u.segment<3>(3 * 1).x(), 0.2);  // node 1 is at x = 1: a large, nonlinear stretch
   std::string history;
-  for (double value : r) history += " " + std::to_string(value);
+  for (double value : r) {
+    history += ' ';
+    history += std::to_string(value);
+  }
   // Convergence order log(r_{k+1}/r_k) / log(r_k/r_{k−1}) over the iterations in the
   // asymptotic regime (r_k ≤ 1e-2 r_0) and above round-off (r_{k+1} ≥ 1e-13 r_0).
   int measured = 0;
@@ -75,6 +80,38 @@ TEST(Newton, ConvergesQuadraticallyWithOneAnalysisAndOneFactorisationPerIteratio
   EXPECT_GT(second.iterations, 0);
   EXPECT_EQ(solver->statistics().analyses, 1);
   EXPECT_EQ(solver->statistics().factorisations, report.iterations + second.iterations);
+}
+
+// Known bug (see the report to the lead): the Armijo test compares objective values
+// whose round-off is set by the energy's terms (Stable Neo-Hookean's ψ is a sum of
+// O(μ) terms minus its rest energy: ~1e-16 μ V), not by |objective|. Near the
+// solution of a small-load problem the predicted decrease falls below that noise,
+// the full Newton step is rejected and Newton stalls far above a tolerance that the
+// gradient itself reaches easily (here: one step from converged).
+TEST(Newton, ConvergesWhenTheDecreaseIsBelowTheEnergyRoundOff) {
+  Block block;
+  const auto material = make_material(MaterialModel::stable_neo_hookean, 1e4, 0.3, 1000);
+  const ElasticAssembler assembler(block.elements, {material.get()});
+  const DirichletElimination elimination(assembler.pattern(), block.clamped);
+  const Eigen::VectorXd force = 1e-4 * block.force;  // ~1e-5 strain
+  LoadedPotential objective(assembler, force, elimination);
+  const auto solver = make_linear_solver({});
+  NewtonSolver newton(*solver, assembler.pattern(), elimination);
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(assembler.dof_count());
+  NewtonOptions options;
+  options.tolerance = 1e-9 * force.norm();
+  options.max_iterations = 10;
+  const Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(block.clamped.size()));
+  std::string history;
+  try {
+    newton.minimize(objective, u, prescribed, options, 0);
+  } catch (const NumericalError& error) {
+    for (double value : objective.residuals) {
+      history += ' ';
+      history += std::to_string(value / force.norm());
+    }
+    ADD_FAILURE() << error.what() << "; relative residuals" << history;
+  }
 }
 
 TEST(Newton, PrescribedDisplacementIsReachedExactly) {

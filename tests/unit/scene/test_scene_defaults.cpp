@@ -33,20 +33,20 @@ TEST(SceneDefaults, MinimalSceneIsResolvedCompletely) {
   EXPECT_EQ(resolved["solver"]["linear_tolerance"], 1e-10);
   EXPECT_EQ(resolved["solver"]["linear_max_iterations"], 10000);
   EXPECT_EQ(resolved["output"], nlohmann::json({{"every", 1}, {"surface", true}, {"volume", true}}));
-  // A box with the default tet10 is tetrahedralized; cell size = diagonal / 15.
+  // A box with the default tet10 gets a structured (Kuhn) grid from its aspect.
   const nlohmann::json& fem = resolved["discretization"]["fem"];
   EXPECT_EQ(fem["element"], "tet10");
-  EXPECT_EQ(fem["mesh"], "tetrahedralize");
-  EXPECT_DOUBLE_EQ(fem["max_cell_size"].get<double>(), std::sqrt(12.0) / 15.0);
+  EXPECT_EQ(fem["mesh"], "grid");
+  EXPECT_EQ(fem["resolution"], nlohmann::json({4, 4, 4}));
   EXPECT_EQ(fem["quadrature_order"], 4);
   EXPECT_EQ(fem["curved"], false);
-  EXPECT_FALSE(fem.contains("resolution"));
+  EXPECT_FALSE(fem.contains("max_cell_size"));
 
   EXPECT_EQ(scene.name, "minimal");
   EXPECT_EQ(scene.material.density, 1000.0);
   EXPECT_TRUE(scene.time.is_static);
   EXPECT_FALSE(scene.initial.centre.has_value());
-  EXPECT_DOUBLE_EQ(*scene.fem.max_cell_size, std::sqrt(12.0) / 15.0);
+  EXPECT_FALSE(scene.fem.max_cell_size.has_value());
 }
 
 TEST(SceneDefaults, GridResolutionFollowsTheAspect) {

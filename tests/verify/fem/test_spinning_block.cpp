@@ -82,8 +82,7 @@ TEST(SpinningBlock, BackwardEulerDissipatesMonotonically) {
   const auto solver = make_linear_solver({});
   IntegratorOptions options;
   options.kind = IntegrationScheme::backward_euler;
-  options.time_step = 0.01;
-  options.tolerance = 1e-9;
+  options.time_step = 0.01;  // the default stopping rule (see test_newton.cpp for why not tighter)
   TimeIntegrator integrator(spinning.discretization, *solver, options);
   State state = spinning.initial_state();
   const double initial = integrator.total_energy(state);
