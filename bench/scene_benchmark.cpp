@@ -37,12 +37,31 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// Forwards to the fem method and keeps the last displacement run_simulation hands to
-// embedded_displacement (it does so for every frame it writes, the final state last),
-// so the benchmark reads the solution without parsing the VTU files.
+// The mean u_z over the nodes on the end face x = max x of a fem discretization: a
+// node average, not an area-weighted one, but the same estimator for every element type.
+double end_face_displacement(const altfem::Discretization& discretization, const Eigen::VectorXd& u) {
+  const auto& fem = dynamic_cast<const altfem::FemDiscretization&>(discretization);
+  const Eigen::MatrixXd& nodes = fem.mesh().nodes;
+  const double end = nodes.col(0).maxCoeff();
+  double sum = 0;
+  int count = 0;
+  for (Eigen::Index node = 0; node < nodes.rows(); ++node)
+    if (nodes(node, 0) > end - 1e-9) {
+      sum += u[3 * node + 2];
+      ++count;
+    }
+  return sum / count;
+}
+
+// Forwards to the fem method and measures the end face of every displacement
+// run_simulation hands to embedded_displacement (it does so for every frame it writes,
+// the final state last), so the benchmark reads the solution without parsing VTU
+// files. run_simulation destroys the method before returning: the figure goes to
+// `end_face` which outlives it.
 class RecordingMethod final : public altfem::MethodInstance {
 public:
-  explicit RecordingMethod(std::unique_ptr<altfem::MethodInstance> inner) : inner_(std::move(inner)) {}
+  RecordingMethod(std::unique_ptr<altfem::MethodInstance> inner, double& end_face)
+      : inner_(std::move(inner)), end_face_(end_face) {}
 
   const altfem::Discretization& discretization() const override { return inner_->discretization(); }
   json element_counts() const override { return inner_->element_counts(); }
@@ -51,23 +70,21 @@ public:
   altfem::UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override { return inner_->volume_grid(u); }
   const altfem::SurfaceMesh& embedded_surface() const override { return inner_->embedded_surface(); }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
-    last_displacement_ = u;
+    end_face_ = end_face_displacement(inner_->discretization(), u);
     return inner_->embedded_displacement(u);
   }
   Eigen::VectorXd initial_velocity(const altfem::InitialConditions& initial) const override {
     return inner_->initial_velocity(initial);
   }
 
-  const Eigen::VectorXd& last_displacement() const { return last_displacement_; }
-
 private:
   std::unique_ptr<altfem::MethodInstance> inner_;
-  mutable Eigen::VectorXd last_displacement_;
+  double& end_face_;
 };
 
 struct RunResult {
   json summary;
-  double end_face_displacement = 0;  // mean u_z over the nodes on x = max x
+  double end_face_displacement = 0;
 };
 
 // One run of `scene` with fem, writing only the (small) surface frames into a
@@ -80,30 +97,13 @@ RunResult run_once(altfem::Scene scene) {
   const altfem::SceneGeometry geometry = altfem::load_scene_geometry(scene);
   const double loading = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const RecordingMethod* recorded = nullptr;
+  RunResult result;
   const altfem::MethodFactory factory = [&](const altfem::Scene& s, const altfem::SceneGeometry& g) {
-    auto method = std::make_unique<RecordingMethod>(altfem::make_fem_method(s, g));
-    recorded = method.get();
-    return method;
+    return std::make_unique<RecordingMethod>(altfem::make_fem_method(s, g), result.end_face_displacement);
   };
   const fs::path directory = fs::temp_directory_path() / ("altfem-bench-scene-" + std::to_string(getpid()));
-  RunResult result;
   result.summary = altfem::run_simulation(scene, geometry, "fem", factory, directory, loading);
   fs::remove_all(directory);
-
-  // The end face is the geometry's largest x; its nodes' mean u_z (a node average, not
-  // an area-weighted one: the same estimator for every element type).
-  const auto& fem = dynamic_cast<const altfem::FemDiscretization&>(recorded->discretization());
-  const Eigen::MatrixXd& nodes = fem.mesh().nodes;
-  const double end = nodes.col(0).maxCoeff();
-  double sum = 0;
-  int count = 0;
-  for (Eigen::Index node = 0; node < nodes.rows(); ++node)
-    if (nodes(node, 0) > end - 1e-9) {
-      sum += recorded->last_displacement()[3 * node + 2];
-      ++count;
-    }
-  result.end_face_displacement = sum / count;
   return result;
 }
 

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -51,6 +52,20 @@ private:
   std::atomic<int> element_{-1};
 };
 
+// body(i) for i < count, in parallel when there is enough work. Below 64 items a
+// parallel region costs more than it saves (one region per colour; on a busy machine
+// each can wait a whole time slice), and even a one-thread region allocates its team
+// in libgomp, so small loops do not enter one at all.
+template <typename Body>
+void for_each_index(size_t count, int threads, int chunk, Body&& body) {
+  if (count < 64 || threads == 1) {
+    for (size_t i = 0; i < count; ++i) body(i);
+    return;
+  }
+#pragma omp parallel for schedule(dynamic, chunk) num_threads(threads)
+  for (size_t i = 0; i < count; ++i) body(i);
+}
+
 [[noreturn]] void throw_non_finite(int element, const char* what) {
   throw NumericalError("element " + std::to_string(element) + ": non-finite " + what +
                        " (inverted or degenerate element: det F <= 0 for this material)");
@@ -84,6 +99,8 @@ void ElasticAssembler::check_materials() const {
   }
 }
 
+int ElasticAssembler::active_threads() const { return std::min(threads_, omp_get_max_threads()); }
+
 bool ElasticAssembler::is_linear() const {
   for (const Material* material : materials_)
     if (!material->is_linear()) return false;
@@ -94,8 +111,8 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
   // Sum per element first, then in element order: the total does not depend on the
   // thread count.
   std::vector<double> per_element(elements_.size());
-#pragma omp parallel for schedule(static)
-  for (int e = 0; e < elements_.size(); ++e) {
+  for_each_index(elements_.size(), active_threads(), 64, [&](size_t index) {
+    const int e = static_cast<int>(index);
     const ElementView element = elements_[e];
     Scratch& scratch = scratch_[omp_get_thread_num()];
     dispatch(element.basis_count(), [&]<int N>() {
@@ -109,7 +126,7 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
         per_element[e] = kernel::energy<N>(element, *materials_[element.material], u);
       }
     });
-  }
+  });
   double total = 0;
   for (double value : per_element) {
     if (std::isnan(value)) return std::numeric_limits<double>::infinity();
@@ -122,8 +139,7 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
   gradient.setZero(dof_count());
   FirstFailure failure;
   for (const auto& color : colors_) {
-#pragma omp parallel for schedule(dynamic, 64)
-    for (size_t index = 0; index < color.size(); ++index) {
+    for_each_index(color.size(), active_threads(), 64, [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -147,7 +163,7 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
           run(u, forces);
         }
       });
-    }
+    });
   }
   if (failure.element() >= 0) throw_non_finite(failure.element(), "stress");
 }
@@ -158,8 +174,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure;
   for (const auto& color : colors_) {
-#pragma omp parallel for schedule(dynamic, 16)
-    for (size_t index = 0; index < color.size(); ++index) {
+    for_each_index(color.size(), active_threads(), 16, [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -195,7 +210,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
           run(u, stiffness, rows);
         }
       });
-    }
+    });
   }
   if (failure.element() >= 0) throw_non_finite(failure.element(), "tangent stiffness");
 }
@@ -205,8 +220,7 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
   double* values = mass.valuePtr();
   const int* outer = mass.outerIndexPtr();
   for (const auto& color : colors_) {
-#pragma omp parallel for schedule(dynamic, 64)
-    for (size_t index = 0; index < color.size(); ++index) {
+    for_each_index(color.size(), active_threads(), 64, [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       const double density = materials_[element.material]->density();
@@ -220,7 +234,7 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
           m *= density;
           for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
         }
-    }
+    });
   }
 }
 

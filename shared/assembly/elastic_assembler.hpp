@@ -50,6 +50,8 @@ public:
 private:
   struct Scratch;
   void check_materials() const;
+  /// OpenMP's current thread count, at most the number of scratch blocks.
+  int active_threads() const;
 
   const TabulatedElements& elements_;
   std::vector<const Material*> materials_;

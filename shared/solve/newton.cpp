@@ -1,6 +1,7 @@
 #include "shared/solve/newton.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "shared/common/error.hpp"
@@ -8,6 +9,12 @@
 namespace altfem {
 
 namespace {
+std::string scientific(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3e", value);
+  return text;
+}
+
 std::string where(int step, int iteration) {
   return "step " + std::to_string(step) + ", Newton iteration " + std::to_string(iteration);
 }
@@ -66,8 +73,8 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
     if (constraints_met && residual <= options.tolerance) return report;
     if (!std::isfinite(residual)) throw NumericalError(where(step, iteration) + ": non-finite residual");
     if (iteration >= options.max_iterations)
-      throw NumericalError(where(step, iteration) + ": not converged, residual " + std::to_string(residual) +
-                           " > tolerance " + std::to_string(options.tolerance));
+      throw NumericalError(where(step, iteration) + ": not converged, residual " + scientific(residual) +
+                           " > tolerance " + scientific(options.tolerance));
 
     solve_step(objective, u, gradient_, increment, options.project_spd, step, iteration);
     ++report.iterations;
@@ -84,9 +91,13 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
       const bool accepted = !options.line_search ||
                             (constraints_met ? trial_value <= value + 1e-4 * alpha * slope : std::isfinite(trial_value));
       if (accepted) break;
-      // Near the minimum, round-off makes the objective flat: accept a full step that
-      // does not increase the energy beyond round-off.
-      if (constraints_met && backtrack == 0 && std::abs(trial_value - value) <= 1e-12 * std::abs(value) + 1e-300) break;
+      // Near the minimum the decrease Armijo asks for falls below the round-off of the
+      // energy (a sum of terms of order μ·V): judge the full step by the gradient
+      // instead, and accept it when it halves the residual.
+      if (constraints_met && backtrack == 0 && std::isfinite(trial_value)) {
+        objective.gradient(trial_, trial_gradient_);
+        if (elimination_.free_norm(trial_gradient_) <= 0.5 * residual) break;
+      }
       if (backtrack >= options.max_backtracks)
         throw NumericalError(where(step, iteration) + ": line search failed (no decrease after " +
                              std::to_string(backtrack) + " halvings; an element may be inverted)");

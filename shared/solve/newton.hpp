@@ -60,7 +60,7 @@ private:
   const DirichletElimination& elimination_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::SparseMatrix<double> constant_hessian_;  // before elimination, for the lifting
-  Eigen::VectorXd rhs_, direction_, gradient_, trial_;
+  Eigen::VectorXd rhs_, direction_, gradient_, trial_, trial_gradient_;
   bool analysed_ = false;
   bool constant_factorised_ = false;
 };

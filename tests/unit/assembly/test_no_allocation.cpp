@@ -117,7 +117,8 @@ TEST(CountingAllocator, SeesOperatorNewAndEigenMalloc) {
 class SecondAssembly : public ::testing::TestWithParam<ElementType> {};
 
 TEST_P(SecondAssembly, AllocatesNothing) {
-  const test::AssemblyProblem problem(GetParam(), {3, 3, 3}, MaterialModel::stable_neo_hookean);
+  // Large enough that the colours are assembled in parallel regions.
+  const test::AssemblyProblem problem(GetParam(), {10, 10, 10}, MaterialModel::stable_neo_hookean);
   const ElasticAssembler& assembler = *problem.assembler;
   const Eigen::VectorXd u = problem.displacement(test::moderate_deformation(), 0.05, 4);
   SparseMatrix hessian = assembler.pattern();

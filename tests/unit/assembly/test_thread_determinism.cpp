@@ -32,7 +32,8 @@ class ThreadsOfType : public ::testing::TestWithParam<ElementType> {};
 TEST_P(ThreadsOfType, OneAndTwoThreadsBitIdentical) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(2);  // the assembler sizes its per-thread scratch for this
-  const test::AssemblyProblem problem(GetParam(), {4, 4, 4}, MaterialModel::stable_neo_hookean);
+  // Large enough that every colour holds more than the 64 elements that open a parallel region.
+  const test::AssemblyProblem problem(GetParam(), {10, 10, 10}, MaterialModel::stable_neo_hookean);
   const Eigen::VectorXd u = problem.displacement(test::moderate_deformation(), 0.05, 3);
   ASSERT_EQ(omp_get_max_threads(), 2);
   const Results two = assemble(*problem.assembler, u);

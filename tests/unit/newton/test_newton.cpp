@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "shared/common/error.hpp"
 
@@ -16,6 +18,12 @@ namespace altfem {
 namespace {
 
 using test::LoadedPotential;
+
+std::string format_residual(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, " %.3e", value);
+  return text;
+}
 
 struct Block {
   VolumeMesh mesh = structured_grid(test::unit_cube(), {1, 1, 1}, ElementType::hex8);
@@ -53,10 +61,8 @@ TEST(Newton, ConvergesQuadraticallyWithOneAnalysisAndOneFactorisationPerIteratio
   EXPECT_LE(report.residual, options.tolerance);
   EXPECT_GT(u.segment<3>(3 * 1).x(), 0.2);  // node 1 is at x = 1: a large, nonlinear stretch
   std::string history;
-  for (double value : r) {
-    history += ' ';
-    history += std::to_string(value);
-  }
+  for (double value : r) history += format_residual(value);
+  std::printf("[ newton   ] free residuals:%s\n", history.c_str());
   // Convergence order log(r_{k+1}/r_k) / log(r_k/r_{k−1}) over the iterations in the
   // asymptotic regime (r_k ≤ 1e-2 r_0) and above round-off (r_{k+1} ≥ 1e-13 r_0).
   int measured = 0;
@@ -106,10 +112,7 @@ TEST(Newton, ConvergesWhenTheDecreaseIsBelowTheEnergyRoundOff) {
   try {
     newton.minimize(objective, u, prescribed, options, 0);
   } catch (const NumericalError& error) {
-    for (double value : objective.residuals) {
-      history += ' ';
-      history += std::to_string(value / force.norm());
-    }
+    for (double value : objective.residuals) history += format_residual(value / force.norm());
     ADD_FAILURE() << error.what() << "; relative residuals" << history;
   }
 }
