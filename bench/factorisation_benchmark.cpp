@@ -113,6 +113,7 @@ void pcg_case(const CubeProblem& problem) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // the large case takes minutes: show progress when piped
   int repetitions = 5;
   const char* large_env = std::getenv("ALTFEM_BENCH_LARGE");
   bool large = large_env != nullptr && std::strcmp(large_env, "1") == 0;

@@ -3,7 +3,9 @@
 #include <string>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/curve_boundary.hpp"
 #include "shared/mesh/elevate_order.hpp"
+#include "shared/mesh/surface_projection.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
 
@@ -31,7 +33,18 @@ VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
       const double size = fem_max_cell_size(fem, geometry.bounds);
       VolumeMesh linear = geometry.surface ? tetrahedralize_surface(*geometry.surface, size)
                                            : tetrahedralize_shape(*geometry.shape, size);
-      return elevate_order(linear, fem.element);
+      VolumeMesh mesh = elevate_order(linear, fem.element);
+      if (fem.curved && fem.element != ElementType::tet4) {
+        if (geometry.surface) {
+          const SurfaceProjection projection(*geometry.surface);
+          curve_boundary(mesh, [&](const Eigen::Vector3d& x) { return projection.closest_point(x); });
+        } else {
+          const double step = 1e-7 * geometry.bounds.diagonal().norm();
+          const auto level_set = [&](const Eigen::Vector3d& x) { return geometry.shape->level_set(x); };
+          curve_boundary(mesh, [&](const Eigen::Vector3d& x) { return project_to_level_set(level_set, x, step); });
+        }
+      }
+      return mesh;
     }
     case FemMeshKind::file: {
       const VolumeMesh& mesh = *geometry.mesh;

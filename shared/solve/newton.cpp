@@ -20,6 +20,24 @@ std::string where(int step, int iteration) {
 }
 }  // namespace
 
+void NewtonSolver::assemble_hessian(const Objective& objective, const Eigen::VectorXd& u, bool project_spd, int step,
+                                    int iteration) {
+  try {
+    objective.hessian(u, matrix_, project_spd);
+  } catch (const NumericalError& error) {
+    throw NumericalError(where(step, iteration) + ": " + error.what());
+  }
+}
+
+void NewtonSolver::evaluate_gradient(const Objective& objective, const Eigen::VectorXd& u, int step, int iteration) {
+  // An inverted element throws from the assembler naming the element; say where.
+  try {
+    objective.gradient(u, gradient_);
+  } catch (const NumericalError& error) {
+    throw NumericalError(where(step, iteration) + ": " + error.what());
+  }
+}
+
 NewtonSolver::NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
                            const DirichletElimination& elimination)
     : linear_solver_(linear_solver), elimination_(elimination), matrix_(pattern) {}
@@ -31,7 +49,7 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
   if (reuse) {
     elimination_.lift(constant_hessian_, rhs_, increment);
   } else {
-    objective.hessian(u, matrix_, project_spd);
+    assemble_hessian(objective, u, project_spd, step, iteration);
     if (objective.hessian_is_constant()) constant_hessian_ = matrix_;
     elimination_.apply(matrix_, rhs_, increment);
     if (!analysed_) {
@@ -43,7 +61,7 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
     } catch (const NumericalError& error) {
       if (project_spd) throw NumericalError(where(step, iteration) + ": " + error.what());
       rhs_ = -gradient;
-      objective.hessian(u, matrix_, true);
+      assemble_hessian(objective, u, true, step, iteration);
       elimination_.apply(matrix_, rhs_, increment);
       try {
         linear_solver_.factorize(matrix_);
@@ -65,7 +83,7 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
                                     const NewtonOptions& options, int step) {
   NewtonReport report;
   for (int iteration = 0;; ++iteration) {
-    objective.gradient(u, gradient_);
+    evaluate_gradient(objective, u, step, iteration);
     const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
     const double residual = elimination_.free_norm(gradient_);
     report.residual = residual;
@@ -109,7 +127,7 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
 
 NewtonReport NewtonSolver::single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                                        const NewtonOptions& options, int step) {
-  objective.gradient(u, gradient_);
+  evaluate_gradient(objective, u, step, 0);
   const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
   solve_step(objective, u, gradient_, increment, options.project_spd, step, 0);
   u += direction_;

@@ -56,6 +56,11 @@ private:
   void solve_step(const Objective& objective, const Eigen::VectorXd& u, const Eigen::VectorXd& gradient,
                   const Eigen::VectorXd& increment, bool project_spd, int step, int iteration);
 
+  // The objective's gradient into gradient_ / Hessian into matrix_, with a failure
+  // (an inverted element) rethrown naming the step and iteration.
+  void evaluate_gradient(const Objective& objective, const Eigen::VectorXd& u, int step, int iteration);
+  void assemble_hessian(const Objective& objective, const Eigen::VectorXd& u, bool project_spd, int step, int iteration);
+
   LinearSolver& linear_solver_;
   const DirichletElimination& elimination_;
   Eigen::SparseMatrix<double> matrix_;

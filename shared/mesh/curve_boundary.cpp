@@ -1,0 +1,72 @@
+#include "shared/mesh/curve_boundary.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "shared/element/reference_element.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+
+namespace altfem {
+
+int curve_boundary(VolumeMesh& mesh, const ClosestPoint& closest_point) {
+  if (element_shape(mesh.element_type) != ElementShape::tetrahedron)
+    throw std::invalid_argument("curve_boundary: tetrahedral meshes only");
+  const ReferenceElement& element = reference_element(mesh.element_type);
+  const ReferenceElement& linear = reference_element(ElementType::tet4);
+  const int nodes = element.node_count();
+
+  // Which corners each higher-order node interpolates (non-zero linear weight).
+  std::vector<std::vector<int>> corners_of(nodes);
+  Eigen::VectorXd weights(4);
+  for (int j = 4; j < nodes; ++j) {
+    linear.evaluate(element.nodes().row(j).transpose(), weights);
+    for (int k = 0; k < 4; ++k)
+      if (std::abs(weights[k]) > 1e-12) corners_of[j].push_back(k);
+  }
+
+  // A node is on a boundary face when all its corners are corners of that face.
+  const BoundarySurface boundary = boundary_surface(mesh);
+  std::vector<char> on_boundary(mesh.nodes.rows(), 0);
+  for (Eigen::Index t = 0; t < boundary.surface.triangles.rows(); ++t) {
+    const int cell = boundary.cells[t];
+    int face[3];
+    for (int c = 0; c < 3; ++c) face[c] = boundary.mesh_nodes[boundary.surface.triangles(t, c)];
+    for (int j = 4; j < nodes; ++j) {
+      const bool on_face = std::all_of(corners_of[j].begin(), corners_of[j].end(), [&](int k) {
+        return std::find(face, face + 3, mesh.cells(cell, k)) != face + 3;
+      });
+      if (on_face) on_boundary[mesh.cells(cell, j)] = 1;
+    }
+  }
+  int moved = 0;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
+    if (on_boundary[node]) {
+      mesh.nodes.row(node) = closest_point(mesh.nodes.row(node).transpose()).transpose();
+      ++moved;
+    }
+  return moved;
+}
+
+Eigen::Vector3d project_to_level_set(const std::function<double(const Eigen::Vector3d&)>& level_set,
+                                     const Eigen::Vector3d& x, double step) {
+  Eigen::Vector3d point = x;
+  for (int iteration = 0; iteration < 20; ++iteration) {
+    const double value = level_set(point);
+    Eigen::Vector3d gradient;
+    for (int d = 0; d < 3; ++d) {
+      Eigen::Vector3d forward = point, backward = point;
+      forward[d] += step;
+      backward[d] -= step;
+      gradient[d] = (level_set(forward) - level_set(backward)) / (2 * step);
+    }
+    const double norm = gradient.squaredNorm();
+    if (!(norm > 0)) break;
+    const Eigen::Vector3d correction = value / norm * gradient;
+    point -= correction;
+    if (correction.norm() <= 1e-3 * step) break;
+  }
+  return point;
+}
+
+}  // namespace altfem
