@@ -15,6 +15,9 @@ struct BadInput {
   std::string expected;  // a substring of the message
 };
 
+// Names a parameter by its file in test output (instead of its bytes).
+void PrintTo(const BadInput& input, std::ostream* out) { *out << input.file; }
+
 std::vector<BadInput> read_expected(const std::string& kind) {
   std::vector<BadInput> inputs;
   std::ifstream in(source_path("tests/data/bad/" + kind + "/EXPECTED.txt"));
