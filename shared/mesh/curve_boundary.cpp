@@ -1,10 +1,13 @@
 #include "shared/mesh/curve_boundary.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <stdexcept>
 #include <vector>
 
+#include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
+#include "shared/quadrature/reference_rules.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 
 namespace altfem {
@@ -39,13 +42,45 @@ int curve_boundary(VolumeMesh& mesh, const ClosestPoint& closest_point) {
       if (on_face) on_boundary[mesh.cells(cell, j)] = 1;
     }
   }
-  int moved = 0;
+  const Eigen::MatrixXd straight = mesh.nodes;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
-    if (on_boundary[node]) {
-      mesh.nodes.row(node) = closest_point(mesh.nodes.row(node).transpose()).transpose();
-      ++moved;
+    if (on_boundary[node]) mesh.nodes.row(node) = closest_point(mesh.nodes.row(node).transpose()).transpose();
+
+  // Where the true surface bends more than a cell can follow (a coarse cell on a
+  // thin feature), the moved nodes fold the cell: such cells keep straight edges.
+  // A cell is kept curved while det J at its nodes stays above a fifth of its
+  // straight (constant) value.
+  const QuadratureRule rule = tet_rule(4);
+  Eigen::MatrixXd cell_nodes(nodes, 3), straight_nodes(nodes, 3);
+  for (int pass = 0; pass < 10; ++pass) {
+    bool restored = false;
+    for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell) {
+      bool curved = false;
+      for (int a = 0; a < nodes; ++a) {
+        cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+        straight_nodes.row(a) = straight.row(mesh.cells(cell, a));
+        curved = curved || on_boundary[mesh.cells(cell, a)];
+      }
+      if (!curved) continue;
+      const double reference = map_jacobian(element, straight_nodes, element.centroid()).determinant();
+      bool folded = false;
+      for (int q = 0; q < rule.points.rows() && !folded; ++q)
+        folded = map_jacobian(element, cell_nodes, rule.points.row(q).transpose()).determinant() < 0.2 * reference;
+      for (int a = 0; a < nodes && !folded; ++a)
+        folded = map_jacobian(element, cell_nodes, element.nodes().row(a).transpose()).determinant() < 0.2 * reference;
+      if (!folded) continue;
+      for (int a = 0; a < nodes; ++a) {
+        const int node = mesh.cells(cell, a);
+        if (on_boundary[node]) {
+          mesh.nodes.row(node) = straight.row(node);
+          on_boundary[node] = 0;
+          restored = true;
+        }
+      }
     }
-  return moved;
+    if (!restored) break;
+  }
+  return static_cast<int>(std::count(on_boundary.begin(), on_boundary.end(), 1));
 }
 
 Eigen::Vector3d project_to_level_set(const std::function<double(const Eigen::Vector3d&)>& level_set,

@@ -13,7 +13,8 @@ using ClosestPoint = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 /// higher-order node that lies on a boundary face onto the true surface, so a Tet10
 /// or Tet20 mesh of a curved body approximates its boundary to the element's order
 /// rather than linearly. Corner nodes stay (Mesh_3 already put them on the surface).
-/// Tetrahedral meshes only; returns how many nodes moved.
+/// Cells that the move would fold (det J anywhere below a fifth of its straight value)
+/// keep straight edges. Tetrahedral meshes only; returns how many nodes stay moved.
 int curve_boundary(VolumeMesh& mesh, const ClosestPoint& closest_point);
 
 /// Nearest point on the zero level set of `level_set` by Newton steps along the
