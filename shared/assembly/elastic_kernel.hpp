@@ -26,9 +26,19 @@ void gather(const ElementView& element, const Eigen::VectorXd& u, NodeMatrix<N>&
   for (int a = 0; a < element.basis_count(); ++a) local.row(a) = u.segment<3>(3 * element.basis[a]).transpose();
 }
 
+/// Point q's gradients (#basis × 3) with a compile-time row count where N is fixed,
+/// so the small products below are unrolled instead of going to Eigen's general
+/// matrix-product code.
 template <int N>
-Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u,
-                                     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>& g) {
+auto gradients_at(const ElementView& element, int q) {
+  if constexpr (N == Eigen::Dynamic)
+    return element.gradients_at(q);
+  else
+    return Eigen::Map<const Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(element.gradients + q * N * 3);
+}
+
+template <int N, typename Gradients>
+Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u, const Gradients& g) {
   // F_ij = δ_ij + Σ_a u_ai ∂_j N_a
   Eigen::Matrix3d F = u.transpose() * g;
   F.diagonal().array() += 1.0;
@@ -39,7 +49,7 @@ template <int N>
 double energy(const ElementView& element, const Material& material, const NodeMatrix<N>& u) {
   double total = 0;
   for (int q = 0; q < element.point_count(); ++q)
-    total += element.weights[q] * material.energy(deformation_gradient<N>(u, element.gradients_at(q)));
+    total += element.weights[q] * material.energy(deformation_gradient<N>(u, gradients_at<N>(element, q)));
   return total;
 }
 
@@ -48,7 +58,7 @@ template <int N>
 void forces(const ElementView& element, const Material& material, const NodeMatrix<N>& u, NodeMatrix<N>& forces) {
   forces.setZero();
   for (int q = 0; q < element.point_count(); ++q) {
-    const auto g = element.gradients_at(q);
+    const auto g = gradients_at<N>(element, q);
     const Eigen::Matrix3d P = material.pk1(deformation_gradient<N>(u, g));
     forces.noalias() += element.weights[q] * g * P.transpose();
   }
@@ -67,7 +77,7 @@ void stiffness(const ElementView& element, const Material& material, const NodeM
   Eigen::Matrix3d P;
   Matrix9d C;
   for (int q = 0; q < element.point_count(); ++q) {
-    const auto g = element.gradients_at(q);
+    const auto g = gradients_at<N>(element, q);
     material.pk1_and_tangent(deformation_gradient<N>(u, g), P, C);
     C *= element.weights[q];
     for (int b = 0; b < n; ++b)

@@ -11,14 +11,6 @@
 
 namespace altfem {
 
-namespace {
-
-ElementType linear_type_of(ElementType type) {
-  return element_shape(type) == ElementShape::tetrahedron ? ElementType::tet4 : ElementType::hex8;
-}
-
-}  // namespace
-
 VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
   const FemSpec& fem = scene.fem;
   const std::string file = scene.file.string();
@@ -26,10 +18,7 @@ VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
     case FemMeshKind::grid:
       return structured_grid(geometry.bounds, fem.resolution, fem.element);
     case FemMeshKind::tetrahedralize: {
-      if (element_shape(fem.element) != ElementShape::tetrahedron)
-        throw InputError(input_message(file, "/discretization/fem/element",
-                                       "mesh \"tetrahedralize\" makes tetrahedra; use tet4, tet10 or tet20, got " +
-                                           std::string(element_name(fem.element))));
+      // The scene validator has checked that fem.element is a tetrahedron.
       const double size = fem_max_cell_size(fem, geometry.bounds);
       VolumeMesh linear = geometry.surface ? tetrahedralize_surface(*geometry.surface, size)
                                            : tetrahedralize_shape(*geometry.shape, size);
@@ -46,15 +35,9 @@ VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
       }
       return mesh;
     }
-    case FemMeshKind::file: {
-      const VolumeMesh& mesh = *geometry.mesh;
-      if (mesh.element_type == fem.element) return mesh;
-      if (mesh.element_type == linear_type_of(fem.element)) return elevate_order(mesh, fem.element);
-      throw InputError(input_message(file, "/discretization/fem/element",
-                                     "the mesh file has " + std::string(element_name(mesh.element_type)) +
-                                         " cells, which cannot be turned into " +
-                                         std::string(element_name(fem.element))));
-    }
+    case FemMeshKind::file:
+      // The scene validator has checked that the file's cells are fem.element.
+      return *geometry.mesh;
   }
   throw InputError(input_message(file, "/discretization/fem/mesh", "unknown mesh kind"));
 }

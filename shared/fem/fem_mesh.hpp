@@ -7,9 +7,9 @@ namespace altfem {
 
 /// The conforming mesh the fem method runs on, as discretization.fem asks
 /// (docs/scene-schema.md): a structured grid of the geometry's bounding box, CGAL
-/// Mesh_3 of the surface or analytic shape, or the scene's own volume mesh (a Tet4
-/// mesh is elevated when a higher-order tet is asked for). Throws InputError for a
-/// combination that cannot work, naming the key.
+/// Mesh_3 of the surface or analytic shape (with curved boundary nodes if asked), or
+/// the scene's own volume mesh. Throws InputError for a combination that cannot
+/// work, naming the key.
 VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry);
 
 }  // namespace altfem
