@@ -55,14 +55,16 @@ private:
 // body(i) for i < count, in parallel when there is enough work. Below 64 items a
 // parallel region costs more than it saves (one region per colour; on a busy machine
 // each can wait a whole time slice), and even a one-thread region allocates its team
-// in libgomp, so small loops do not enter one at all.
+// in libgomp, so small loops do not enter one at all. Elements of one colour cost the
+// same, so a static split balances best (a colour often has only ~100 elements, and
+// dynamic chunks left one thread idle).
 template <typename Body>
-void for_each_index(size_t count, int threads, int chunk, Body&& body) {
+void for_each_index(size_t count, int threads, Body&& body) {
   if (count < 64 || threads == 1) {
     for (size_t i = 0; i < count; ++i) body(i);
     return;
   }
-#pragma omp parallel for schedule(dynamic, chunk) num_threads(threads)
+#pragma omp parallel for schedule(static) num_threads(threads)
   for (size_t i = 0; i < count; ++i) body(i);
 }
 
@@ -111,7 +113,7 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
   // Sum per element first, then in element order: the total does not depend on the
   // thread count.
   std::vector<double> per_element(elements_.size());
-  for_each_index(elements_.size(), active_threads(), 64, [&](size_t index) {
+  for_each_index(elements_.size(), active_threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
     const ElementView element = elements_[e];
     Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -139,7 +141,7 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
   gradient.setZero(dof_count());
   FirstFailure failure;
   for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), 64, [&](size_t index) {
+    for_each_index(color.size(), active_threads(), [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -174,7 +176,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure;
   for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), 16, [&](size_t index) {
+    for_each_index(color.size(), active_threads(), [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -220,7 +222,7 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
   double* values = mass.valuePtr();
   const int* outer = mass.outerIndexPtr();
   for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), 64, [&](size_t index) {
+    for_each_index(color.size(), active_threads(), [&](size_t index) {
       const int e = color[index];
       const ElementView element = elements_[e];
       const double density = materials_[element.material]->density();
