@@ -103,6 +103,14 @@ void ElasticAssembler::check_materials() const {
 
 int ElasticAssembler::active_threads() const { return std::min(threads_, omp_get_max_threads()); }
 
+template <typename Body>
+void ElasticAssembler::for_each_colored_element(Body&& body) const {
+  // Colour by colour: within a colour no two elements share a basis function, so
+  // they scatter without locks and every entry sums in the same order.
+  for (const auto& color : colors_)
+    for_each_index(color.size(), active_threads(), [&](size_t index) { body(color[index]); });
+}
+
 bool ElasticAssembler::is_linear() const {
   for (const Material* material : materials_)
     if (!material->is_linear()) return false;
@@ -140,9 +148,7 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
 void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const {
   gradient.setZero(dof_count());
   FirstFailure failure;
-  for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), [&](size_t index) {
-      const int e = color[index];
+  for_each_colored_element([&](int e) {
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
       dispatch(element.basis_count(), [&]<int N>() {
@@ -165,8 +171,7 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
           run(u, forces);
         }
       });
-    });
-  }
+  });
   if (failure.element() >= 0) throw_non_finite(failure.element(), "stress");
 }
 
@@ -175,9 +180,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   const int* outer = hessian.outerIndexPtr();
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure;
-  for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), [&](size_t index) {
-      const int e = color[index];
+  for_each_colored_element([&](int e) {
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
       dispatch(element.basis_count(), [&]<int N>() {
@@ -212,8 +215,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
           run(u, stiffness, rows);
         }
       });
-    });
-  }
+  });
   if (failure.element() >= 0) throw_non_finite(failure.element(), "tangent stiffness");
 }
 
@@ -221,9 +223,7 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
   mass = pattern();
   double* values = mass.valuePtr();
   const int* outer = mass.outerIndexPtr();
-  for (const auto& color : colors_) {
-    for_each_index(color.size(), active_threads(), [&](size_t index) {
-      const int e = color[index];
+  for_each_colored_element([&](int e) {
       const ElementView element = elements_[e];
       const double density = materials_[element.material]->density();
       const int n = element.basis_count();
@@ -236,8 +236,7 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
           m *= density;
           for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
         }
-    });
-  }
+  });
 }
 
 Eigen::VectorXd ElasticAssembler::lumped_mass() const {

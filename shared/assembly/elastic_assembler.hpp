@@ -52,6 +52,9 @@ private:
   void check_materials() const;
   /// OpenMP's current thread count, at most the number of scratch blocks.
   int active_threads() const;
+  /// body(element index) for every element, colour by colour, in parallel within a colour.
+  template <typename Body>
+  void for_each_colored_element(Body&& body) const;
 
   const TabulatedElements& elements_;
   std::vector<const Material*> materials_;
