@@ -1,11 +1,15 @@
 #include "shared/solve/cholmod_solver.hpp"
 
 #include "shared/common/error.hpp"
+#include "shared/solve/block_fill_reducing_ordering.hpp"
+#include "shared/solve/huge_page_allocation.hpp"
 
 #include <cholmod.h>
 
 #include <algorithm>
+#include <mutex>
 #include <string>
+#include <vector>
 
 namespace altfem {
 namespace {
@@ -30,9 +34,20 @@ cholmod_sparse lower_triangle_view(const Eigen::SparseMatrix<double>& matrix) {
   return view;
 }
 
+// SuiteSparse allocates through one process-wide table of functions; the factor
+// is the one large block, see huge_page_allocation.hpp for why it gets huge pages.
+void allocate_suitesparse_memory_with_huge_pages() {
+  static std::once_flag installed;
+  std::call_once(installed, [] {
+    SuiteSparse_config.malloc_func = allocate_with_huge_pages;
+    SuiteSparse_config.calloc_func = allocate_zeroed_with_huge_pages;
+  });
+}
+
 class CholmodSolver final : public LinearSolver {
 public:
   explicit CholmodSolver(CholmodFactorisation factorisation) : factorisation_(factorisation) {
+    allocate_suitesparse_memory_with_huge_pages();
     cholmod_start(&common_);
     common_.print = 0;  // failures are reported as NumericalError, not printed
     if (factorisation_ == CholmodFactorisation::simplicial_ldlt) {
@@ -40,6 +55,16 @@ public:
       common_.final_ll = 0;
     } else {
       common_.supernodal = CHOLMOD_SUPERNODAL;
+      // Relaxed amalgamation four times CHOLMOD's default (nrelax 4/16/48, zrelax
+      // 0.8/0.1/0.05): merging supernodes that differ by a few explicit zeros makes
+      // fewer, larger BLAS-3 calls. On the 27,783-DOF Tet10 cube of bench_factorisation
+      // it stores 19 % more entries in L and factorises in 0.41 s instead of 0.62 s.
+      common_.nrelax[0] = 16;
+      common_.nrelax[1] = 64;
+      common_.nrelax[2] = 192;
+      common_.zrelax[0] = 0.9;
+      common_.zrelax[1] = 0.2;
+      common_.zrelax[2] = 0.1;
     }
   }
   CholmodSolver(const CholmodSolver&) = delete;
@@ -60,8 +85,14 @@ protected:
   void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
     cholmod_free_factor(&factor_, &common_);
     cholmod_sparse view = lower_triangle_view(matrix);
-    factor_ = cholmod_analyze(&view, &common_);
+    // Ordered on the graph of 3 × 3 node blocks (block_fill_reducing_ordering.hpp);
+    // CHOLMOD then only postorders and computes the symbolic factor.
+    std::vector<int> order = block_fill_reducing_ordering(matrix, sparsity_block_size(matrix));
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_GIVEN;
+    factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
     if (factor_ == nullptr) throw NumericalError("CHOLMOD analysis failed (CHOLMOD status " + status() + ")");
+    record_factor_size(common_.lnz, common_.fl);
   }
 
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {

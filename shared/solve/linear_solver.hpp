@@ -27,6 +27,11 @@ struct LinearSolverStatistics {
   double analysis_seconds = 0;
   double factorisation_seconds = 0;
   double solve_seconds = 0;
+  /// Direct solvers, from the last analysis: entries of the factor L (without the
+  /// zeros supernodal amalgamation adds) and floating-point operations of one
+  /// factorisation (0 when unknown, and for iterative solvers).
+  double factor_entries = 0;
+  double factorisation_flops = 0;
 };
 
 enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual };
@@ -79,6 +84,11 @@ protected:
   virtual void factorize_values(const Eigen::SparseMatrix<double>& matrix) = 0;
   /// Returns the number of iterations the solve took (0 for a direct solve).
   virtual long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) = 0;
+  /// For analyze_pattern of direct solvers: the size of the factor it predicts.
+  void record_factor_size(double entries, double flops) {
+    statistics_.factor_entries = entries;
+    statistics_.factorisation_flops = flops;
+  }
 
 private:
   bool has_analysed_pattern(const Eigen::SparseMatrix<double>& matrix) const;
