@@ -68,6 +68,26 @@ void for_each_index(size_t count, int threads, Body&& body) {
   for (size_t i = 0; i < count; ++i) body(i);
 }
 
+// first(i) for every i < first_count, then, once all of them are done, second(j)
+// for every j < second_count: one parallel region with a barrier between the two
+// loops costs less than two regions.
+template <typename First, typename Second>
+void for_each_index_in_two_passes(size_t first_count, First&& first, size_t second_count, Second&& second,
+                                  int threads) {
+  if (first_count < 64 || threads == 1) {
+    for (size_t i = 0; i < first_count; ++i) first(i);
+    for (size_t j = 0; j < second_count; ++j) second(j);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  {
+#pragma omp for schedule(static)
+    for (size_t i = 0; i < first_count; ++i) first(i);
+#pragma omp for schedule(static)
+    for (size_t j = 0; j < second_count; ++j) second(j);
+  }
+}
+
 [[noreturn]] void throw_non_finite(int element, const char* what) {
   throw NumericalError("element " + std::to_string(element) + ": non-finite " + what +
                        " (inverted or degenerate element: det F <= 0 for this material)");
@@ -76,7 +96,12 @@ void for_each_index(size_t count, int threads, Body&& body) {
 }  // namespace
 
 ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials)
-    : elements_(elements), materials_(std::move(materials)), sparsity_(elements), colors_(color_elements(elements)) {
+    : elements_(elements),
+      materials_(std::move(materials)),
+      sparsity_(elements),
+      colors_(color_elements(elements)),
+      incidence_(elements),
+      element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())) {
   check_materials();
   threads_ = omp_get_max_threads();
   scratch_ = std::make_unique<Scratch[]>(threads_);
@@ -106,9 +131,19 @@ int ElasticAssembler::active_threads() const { return std::min(threads_, omp_get
 template <typename Body>
 void ElasticAssembler::for_each_colored_element(Body&& body) const {
   // Colour by colour: within a colour no two elements share a basis function, so
-  // they scatter without locks and every entry sums in the same order.
-  for (const auto& color : colors_)
-    for_each_index(color.size(), active_threads(), [&](size_t index) { body(color[index]); });
+  // they scatter without locks and every entry sums in the same order. One parallel
+  // region for all colours: a barrier between colours costs less than a new region.
+  const int threads = active_threads();
+  if (threads == 1 || elements_.size() < 64) {
+    for (const auto& color : colors_)
+      for (int e : color) body(e);
+    return;
+  }
+#pragma omp parallel num_threads(threads)
+  for (const auto& color : colors_) {
+#pragma omp for schedule(static)
+    for (size_t index = 0; index < color.size(); ++index) body(color[index]);
+  }
 }
 
 bool ElasticAssembler::is_linear() const {
@@ -146,32 +181,46 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
 }
 
 void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const {
-  gradient.setZero(dof_count());
+  // Two passes instead of colours: the forces of a cheap element cost about as much
+  // as a barrier, and tets need ~30 colours of ~100 elements, so colour-by-colour
+  // assembly stopped at 1.5-1.7x on 2 threads (issue #9). Here all elements write
+  // their forces to their own slots, then each basis function sums its slots in
+  // element order (same bits for any thread count), visiting the basis functions in
+  // BasisIncidence::gather_order so that each thread mostly reads its own slots.
   FirstFailure failure;
-  for_each_colored_element([&](int e) {
-      const ElementView element = elements_[e];
-      Scratch& scratch = scratch_[omp_get_thread_num()];
-      dispatch(element.basis_count(), [&]<int N>() {
-        const int n = element.basis_count();
-        auto run = [&](kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) {
-          kernel::gather<N>(element, displacement, u);
-          kernel::forces<N>(element, *materials_[element.material], u, forces);
-          if (!forces.allFinite()) {
-            failure.record(e);
-            return;
-          }
-          for (int a = 0; a < n; ++a) gradient.segment<3>(3 * element.basis[a]) += forces.row(a).transpose();
-        };
-        if constexpr (N == Eigen::Dynamic) {
-          scratch.u.conservativeResize(n, 3);
-          scratch.forces.conservativeResize(n, 3);
-          run(scratch.u, scratch.forces);
-        } else {
-          kernel::NodeMatrix<N> u, forces;
-          run(u, forces);
-        }
-      });
-  });
+  gradient.resize(dof_count());
+  const auto element_forces = [&](size_t index) {
+    const int e = static_cast<int>(index);
+    const ElementView element = elements_[e];
+    double* slots = element_forces_.data() + 3 * elements_.basis_offset(e);
+    dispatch(element.basis_count(), [&]<int N>() {
+      const int n = element.basis_count();
+      auto run = [&](kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) {
+        kernel::gather<N>(element, displacement, u);
+        kernel::forces<N>(element, *materials_[element.material], u, forces);
+        if (!forces.allFinite()) failure.record(e);
+        Eigen::Map<Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(slots, n, 3) = forces;
+      };
+      if constexpr (N == Eigen::Dynamic) {
+        Scratch& scratch = scratch_[omp_get_thread_num()];
+        scratch.u.conservativeResize(n, 3);
+        scratch.forces.conservativeResize(n, 3);
+        run(scratch.u, scratch.forces);
+      } else {
+        kernel::NodeMatrix<N> u, forces;
+        run(u, forces);
+      }
+    });
+  };
+  const auto sum_slots = [&](size_t position) {
+    const int basis = incidence_.gather_order()[position];
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (long long slot : incidence_.slots(basis))
+      sum += Eigen::Map<const Eigen::Vector3d>(element_forces_.data() + 3 * slot);
+    gradient.segment<3>(3 * static_cast<Eigen::Index>(basis)) = sum;
+  };
+  for_each_index_in_two_passes(elements_.size(), element_forces, static_cast<size_t>(elements_.basis_count()),
+                               sum_slots, active_threads());
   if (failure.element() >= 0) throw_non_finite(failure.element(), "stress");
 }
 

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "shared/assembly/basis_incidence.hpp"
 #include "shared/assembly/block_sparsity.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/material/material.hpp"
@@ -60,6 +61,9 @@ private:
   std::vector<const Material*> materials_;
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
+  BasisIncidence incidence_;
+  // The gradient's per-element forces, 3 per incidence slot (see gradient()).
+  mutable std::vector<double> element_forces_;
   // One per thread. Fixed-size elements never touch it; elements of other sizes
   // resize it, which allocates only when consecutive elements differ in size.
   std::unique_ptr<Scratch[]> scratch_;

@@ -47,6 +47,8 @@ public:
   int basis_count() const { return basis_count_; }
   long long point_count() const { return static_cast<long long>(weights_.size()); }
   ElementView operator[](int element) const;
+  /// Where element e's basis list starts in the packed lists of all elements.
+  long long basis_offset(int element) const { return basis_offsets_[element]; }
   /// The largest #basis of any element (sizes the per-thread scratch).
   int max_element_basis() const { return max_element_basis_; }
 

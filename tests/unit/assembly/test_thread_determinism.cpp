@@ -32,7 +32,7 @@ class ThreadsOfType : public ::testing::TestWithParam<ElementType> {};
 TEST_P(ThreadsOfType, OneAndTwoThreadsBitIdentical) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(2);  // the assembler sizes its per-thread scratch for this
-  // Large enough that every colour holds more than the 64 elements that open a parallel region.
+  // Large enough (more than 64 elements) that the assembly loops run in parallel regions.
   const test::AssemblyProblem problem(GetParam(), {10, 10, 10}, MaterialModel::stable_neo_hookean);
   const Eigen::VectorXd u = problem.displacement(test::moderate_deformation(), 0.05, 3);
   ASSERT_EQ(omp_get_max_threads(), 2);
