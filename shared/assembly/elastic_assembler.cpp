@@ -101,7 +101,8 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
       sparsity_(elements),
       colors_(color_elements(elements)),
       incidence_(elements),
-      element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())) {
+      element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
+      element_energies_(static_cast<std::size_t>(elements.size())) {
   check_materials();
   threads_ = omp_get_max_threads();
   scratch_ = std::make_unique<Scratch[]>(threads_);
@@ -155,7 +156,7 @@ bool ElasticAssembler::is_linear() const {
 double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
   // Sum per element first, then in element order: the total does not depend on the
   // thread count.
-  std::vector<double> per_element(elements_.size());
+  std::vector<double>& per_element = element_energies_;
   for_each_index(elements_.size(), active_threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
     const ElementView element = elements_[e];

@@ -62,8 +62,11 @@ private:
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
   BasisIncidence incidence_;
-  // The gradient's per-element forces, 3 per incidence slot (see gradient()).
+  // Per-element results kept between calls, so that assembly does not allocate: the
+  // gradient's forces (3 per incidence slot) and the energy's element energies.
+  // Like the scratch, they make concurrent calls on one assembler unsafe.
   mutable std::vector<double> element_forces_;
+  mutable std::vector<double> element_energies_;
   // One per thread. Fixed-size elements never touch it; elements of other sizes
   // resize it, which allocates only when consecutive elements differ in size.
   std::unique_ptr<Scratch[]> scratch_;

@@ -1,5 +1,5 @@
-// Issue #9: a second Hessian or gradient assembly of the same mesh must not touch the
-// heap. This executable replaces every global operator new/delete (plain, array,
+// Issue #9: a second Hessian, gradient or energy assembly of the same mesh must not
+// touch the heap. This executable replaces every global operator new/delete (plain, array,
 // aligned, nothrow) with counting versions and, because Eigen allocates through
 // malloc rather than operator new, glibc's malloc family too (forwarding to glibc's
 // __libc_* entry points). Counting is switched on only around the calls under test.
@@ -132,12 +132,14 @@ TEST_P(SecondAssembly, AllocatesNothing) {
   assembler.hessian(u, hessian);
   const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
   assembler.gradient(u, gradient);
+  const double energy = assembler.energy(u);
   counting = false;
   EXPECT_EQ(hessian_news, 0);
   EXPECT_EQ(hessian_mallocs, 0);
   EXPECT_EQ(operator_news.load(), 0);
   EXPECT_EQ(mallocs.load(), 0);
   EXPECT_GT(gradient.norm(), 0.0);
+  EXPECT_GT(energy, 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(ElasticAssembler, SecondAssembly, ::testing::Values(ElementType::tet10, ElementType::hex20),
