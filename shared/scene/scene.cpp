@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <fstream>
+#include <functional>
+#include <set>
 #include <sstream>
+#include <vector>
 
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_schema.hpp"
@@ -53,6 +56,67 @@ std::string overflow_message(std::string_view text, const std::string& file, con
   return input_message(file, offset == std::string_view::npos ? "" : line_and_column(text, offset),
                        "expected a finite number, got " + literal);
 }
+
+// JSON allows repeated keys and nlohmann silently keeps the last one, so a scene
+// that sets "dt" twice would run with whichever came second. This parser callback
+// tracks the keys of every open object and the JSON pointer to it, and remembers the
+// first repeated key.
+class DuplicateKeyFinder {
+public:
+  bool operator()(int /*depth*/, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start: open(false); break;
+      case json::parse_event_t::array_start: open(true); break;
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end: frames_.pop_back(); break;
+      case json::parse_event_t::key: {
+        Frame& object = frames_.back();
+        object.key = parsed.get<std::string>();
+        if (!object.keys.insert(object.key).second && duplicate_.empty()) duplicate_ = pointer();
+        break;
+      }
+      case json::parse_event_t::value:
+        if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
+        break;
+    }
+    return true;
+  }
+  /// The JSON pointer of the first repeated key, or "" when there is none.
+  const std::string& duplicate() const { return duplicate_; }
+
+private:
+  struct Frame {
+    bool is_array;
+    std::set<std::string> keys;
+    std::string key;
+    int index = -1;
+  };
+  void open(bool is_array) {
+    if (!frames_.empty() && frames_.back().is_array) ++frames_.back().index;
+    frames_.push_back({is_array, {}, {}, -1});
+  }
+  // RFC 6901: '~' and '/' inside a key are written "~0" and "~1".
+  static std::string escaped(const std::string& key) {
+    std::string out;
+    for (char c : key) {
+      if (c == '~') out += "~0";
+      else if (c == '/') out += "~1";
+      else out += c;
+    }
+    return out;
+  }
+  std::string pointer() const {
+    std::string out;
+    for (const Frame& frame : frames_) {
+      out += '/';
+      out += frame.is_array ? std::to_string(frame.index) : escaped(frame.key);
+    }
+    return out;
+  }
+
+  std::vector<Frame> frames_;
+  std::string duplicate_;
+};
 
 RegionSelector region_from_json(const json& region, const std::string& pointer) {
   RegionSelector selector;
@@ -181,8 +245,9 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
   if (std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); }))
     throw InputError(input_message(name, "line 1, column 1", "expected a JSON object, got an empty file"));
   json document;
+  DuplicateKeyFinder duplicates;
   try {
-    document = json::parse(text.begin(), text.end());
+    document = json::parse(text.begin(), text.end(), std::ref(duplicates));
   } catch (const json::parse_error& error) {
     throw InputError(syntax_message(text, name, error));
   } catch (const json::out_of_range& error) {
@@ -190,6 +255,9 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
   } catch (const json::exception& error) {
     throw InputError(input_message(name, "", std::string("JSON error: ") + error.what()));
   }
+  if (!duplicates.duplicate().empty())
+    throw InputError(input_message(name, duplicates.duplicate(), "key repeated in its object (JSON keeps only one; "
+                                                                "write each key once)"));
   const std::filesystem::path folder =
       file.has_parent_path() ? std::filesystem::absolute(file).parent_path() : std::filesystem::current_path();
   const scene_schema::Validator validator(name, folder);
