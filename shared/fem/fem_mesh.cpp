@@ -5,6 +5,7 @@
 #include "shared/common/error.hpp"
 #include "shared/mesh/curve_boundary.hpp"
 #include "shared/mesh/elevate_order.hpp"
+#include "shared/mesh/spatial_order.hpp"
 #include "shared/mesh/surface_projection.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
@@ -33,7 +34,8 @@ VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
           curve_boundary(mesh, [&](const Eigen::Vector3d& x) { return project_to_level_set(level_set, x, step); });
         }
       }
-      return mesh;
+      // Mesh_3's cell and vertex order is nearly random in space (spatial_order.hpp).
+      return spatially_ordered(mesh);
     }
     case FemMeshKind::file:
       // The scene validator has checked that the file's cells are fem.element.

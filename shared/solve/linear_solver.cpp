@@ -1,5 +1,6 @@
 #include "shared/solve/linear_solver.hpp"
 
+#include "shared/solve/blas_threads.hpp"
 #include "shared/solve/cholmod_solver.hpp"
 #include "shared/solve/iterative_solver.hpp"
 #include "shared/solve/lu_solver.hpp"
@@ -19,6 +20,14 @@ void require_square(const Eigen::SparseMatrix<double>& matrix) {
     throw std::logic_error("linear solver: matrix is " + std::to_string(matrix.rows()) + " × " +
                            std::to_string(matrix.cols()) + ", expected a square matrix");
 }
+
+// Assembly follows whatever a solver did with BLAS: see blas_threads.hpp.
+struct ParkBlasThreadsOnExit {
+  ParkBlasThreadsOnExit() = default;
+  ParkBlasThreadsOnExit(const ParkBlasThreadsOnExit&) = delete;
+  ParkBlasThreadsOnExit& operator=(const ParkBlasThreadsOnExit&) = delete;
+  ~ParkBlasThreadsOnExit() { park_blas_threads(); }
+};
 
 }  // namespace
 
@@ -63,6 +72,7 @@ void LinearSolver::analyze(const Eigen::SparseMatrix<double>& matrix) {
 
 void LinearSolver::factorize(const Eigen::SparseMatrix<double>& matrix) {
   if (!has_analysed_pattern(matrix)) analyze(matrix);
+  const ParkBlasThreadsOnExit parking;
   const auto start = std::chrono::steady_clock::now();
   factorised_ = false;
   factorize_values(matrix);
@@ -76,6 +86,7 @@ void LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) 
   if (rhs.size() + 1 != static_cast<Eigen::Index>(pattern_column_starts_.size()))
     throw std::logic_error("linear solver: right-hand side has " + std::to_string(rhs.size()) +
                            " entries, the matrix " + std::to_string(pattern_column_starts_.size() - 1) + " columns");
+  const ParkBlasThreadsOnExit parking;
   const auto start = std::chrono::steady_clock::now();
   const long iterations = solve_system(rhs, solution);
   ++statistics_.solves;
