@@ -229,7 +229,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   double* values = hessian.valuePtr();
   const int* outer = hessian.outerIndexPtr();
   std::fill_n(values, hessian.nonZeros(), 0.0);
-  FirstFailure failure;
+  FirstFailure failure, projection_failure;
   for_each_colored_element([&](int e) {
       const ElementView element = elements_[e];
       Scratch& scratch = scratch_[omp_get_thread_num()];
@@ -242,7 +242,15 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
             failure.record(e);
             return;
           }
-          if (project_spd) project_to_spd(stiffness);
+          if (project_spd) {
+            // An exception must not leave the OpenMP region (it would terminate the program).
+            try {
+              project_to_spd(stiffness);
+            } catch (const NumericalError&) {
+              projection_failure.record(e);
+              return;
+            }
+          }
           const int* offsets = sparsity_.pair_offsets(e);
           for (int b = 0; b < n; ++b)
             for (int k = 0; k < 3; ++k) {
@@ -267,6 +275,9 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
       });
   });
   if (failure.element() >= 0) throw_non_finite(failure.element(), "tangent stiffness");
+  if (projection_failure.element() >= 0)
+    throw NumericalError("element " + std::to_string(projection_failure.element()) +
+                         ": the eigen-solver of the SPD projection did not converge");
 }
 
 void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
