@@ -52,15 +52,16 @@ private:
   std::atomic<int> element_{-1};
 };
 
-// body(i) for i < count, in parallel when there is enough work. Below 64 items a
-// parallel region costs more than it saves (one region per colour; on a busy machine
-// each can wait a whole time slice), and even a one-thread region allocates its team
-// in libgomp, so small loops do not enter one at all. Elements of one colour cost the
-// same, so a static split balances best (a colour often has only ~100 elements, and
-// dynamic chunks left one thread idle).
+// Below this many items a parallel region costs more than it saves (on a busy
+// machine each can wait a whole time slice), and even a one-thread region allocates
+// its team in libgomp, so small loops do not enter one at all.
+constexpr size_t minimum_parallel_items = 64;
+
+// body(i) for i < count, in parallel when there is enough work. Elements cost the
+// same, so a static split balances best (dynamic chunks left one thread idle).
 template <typename Body>
 void for_each_index(size_t count, int threads, Body&& body) {
-  if (count < 64 || threads == 1) {
+  if (count < minimum_parallel_items || threads == 1) {
     for (size_t i = 0; i < count; ++i) body(i);
     return;
   }
@@ -74,7 +75,7 @@ void for_each_index(size_t count, int threads, Body&& body) {
 template <typename First, typename Second>
 void for_each_index_in_two_passes(size_t first_count, First&& first, size_t second_count, Second&& second,
                                   int threads) {
-  if (first_count < 64 || threads == 1) {
+  if (first_count < minimum_parallel_items || threads == 1) {
     for (size_t i = 0; i < first_count; ++i) first(i);
     for (size_t j = 0; j < second_count; ++j) second(j);
     return;
@@ -135,7 +136,7 @@ void ElasticAssembler::for_each_colored_element(Body&& body) const {
   // they scatter without locks and every entry sums in the same order. One parallel
   // region for all colours: a barrier between colours costs less than a new region.
   const int threads = active_threads();
-  if (threads == 1 || elements_.size() < 64) {
+  if (threads == 1 || static_cast<size_t>(elements_.size()) < minimum_parallel_items) {
     for (const auto& color : colors_)
       for (int e : color) body(e);
     return;

@@ -6,10 +6,10 @@
 // matrix rows far from the previous element's, and the two threads of a colour
 // write all over the matrix. Sorting cells along a Hilbert curve and numbering
 // nodes in the order the sorted cells first use them restores the locality a
-// structured grid has. On the 30,675-DOF twisting beam (bench_scene --case
-// twisting_beam 0.035 1, three runs each) assembly per Newton iteration took
-// 0.079-0.088 s on one thread and 0.049-0.053 s on two when sorted, against
-// 0.085-0.094 s and 0.059-0.073 s in Mesh_3's order.
+// structured grid has. Measured once, with a temporary switch, on the 30,675-DOF
+// twisting beam (bench_scene --case twisting_beam 0.035 1, three runs each):
+// assembly per Newton iteration took 0.079-0.088 s on one thread and 0.049-0.053 s
+// on two when sorted, against 0.085-0.094 s and 0.059-0.073 s in Mesh_3's order.
 #include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem {

@@ -5,7 +5,8 @@
 // (sched_yield in a loop) for about 2^28 cycles, ~0.1 s, in case another call
 // follows. A Newton iteration assembles right after it factorises, so for that
 // time one of our two cores runs a spinning BLAS thread instead of an assembly
-// thread. Measured on the 30,675-DOF twisting beam (bench_scene, 2 threads):
+// thread. Measured once, with a temporary switch, on the 30,675-DOF twisting beam
+// (bench_scene --case twisting_beam 0.035 1, 2 threads):
 // assembly took 0.076-0.087 s per Newton iteration, 0.046-0.048 s with the BLAS
 // threads parked after every factorisation and solve; the factorisation itself
 // was unchanged within noise (0.32-0.39 s either way), since re-creating one

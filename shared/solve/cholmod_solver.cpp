@@ -50,6 +50,11 @@ public:
     allocate_suitesparse_memory_with_huge_pages();
     cholmod_start(&common_);
     common_.print = 0;  // failures are reported as NumericalError, not printed
+    // The ordering is computed on the graph of 3 × 3 node blocks
+    // (block_fill_reducing_ordering.hpp); CHOLMOD only postorders it and computes
+    // the symbolic factor.
+    common_.nmethods = 1;
+    common_.method[0].ordering = CHOLMOD_GIVEN;
     if (factorisation_ == CholmodFactorisation::simplicial_ldlt) {
       common_.supernodal = CHOLMOD_SIMPLICIAL;
       common_.final_ll = 0;
@@ -58,7 +63,8 @@ public:
       // Relaxed amalgamation four times CHOLMOD's default (nrelax 4/16/48, zrelax
       // 0.8/0.1/0.05): merging supernodes that differ by a few explicit zeros makes
       // fewer, larger BLAS-3 calls. On the 27,783-DOF Tet10 cube of bench_factorisation
-      // it stores 19 % more entries in L and factorises in 0.41 s instead of 0.62 s.
+      // it stored 19 % more entries in L and factorised in 0.40-0.43 s instead of
+      // 0.62-0.90 s (a one-off comparison of relaxations ×1/×2/×4/×8, not in the repo).
       common_.nrelax[0] = 16;
       common_.nrelax[1] = 64;
       common_.nrelax[2] = 192;
@@ -85,11 +91,7 @@ protected:
   void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
     cholmod_free_factor(&factor_, &common_);
     cholmod_sparse view = lower_triangle_view(matrix);
-    // Ordered on the graph of 3 × 3 node blocks (block_fill_reducing_ordering.hpp);
-    // CHOLMOD then only postorders and computes the symbolic factor.
     std::vector<int> order = block_fill_reducing_ordering(matrix, sparsity_block_size(matrix));
-    common_.nmethods = 1;
-    common_.method[0].ordering = CHOLMOD_GIVEN;
     factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
     if (factor_ == nullptr) throw NumericalError("CHOLMOD analysis failed (CHOLMOD status " + status() + ")");
     record_factor_size(common_.lnz, common_.fl);

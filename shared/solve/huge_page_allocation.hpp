@@ -5,8 +5,8 @@
 // allocated memory. With 4 KiB pages every first touch is a page fault, and on
 // the virtual machines we measured (issue #9) those faults and the zeroing behind
 // them took half of CHOLMOD's factorisation time of a 27,783-DOF Tet10 cube
-// (1.0 s → 0.43 s with huge pages; `perf record` on bench_factorisation showed
-// page-fault handling and memset above the BLAS kernels). Huge pages cut the
+// (1.0 s → 0.43 s with huge pages in a one-off comparison; `perf record` of
+// bench_factorisation showed page-fault handling and memset above the BLAS kernels). Huge pages cut the
 // faults 512-fold. The kernel's policy must allow them on request
 // (/sys/kernel/mm/transparent_hugepage/enabled = madvise or always); otherwise
 // this is plain malloc.
