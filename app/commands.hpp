@@ -5,11 +5,22 @@
 #include <filesystem>
 #include <string>
 
+#include "shared/quadrature/simplify_quadrature.hpp"
+
 namespace altfem::cli {
 
 int info_command();
 int check_command(const std::filesystem::path& scene_file, bool json);
 int run_command(const std::filesystem::path& scene_file, const std::string& method,
                 const std::filesystem::path& output_directory);
+
+/// `quadrature monomials`: Longva et al. 2020, §4.6 for strengths 1..order.
+int quadrature_monomials_command(const std::string& cell, int order, const std::string& simplifier, bool json);
+/// `quadrature cell`: the rules of one background cell of a scene, as VTU points.
+int quadrature_cell_command(const std::filesystem::path& scene_file, const std::string& cell_index,
+                            const std::string& cell_type, const std::string& resolution, int order,
+                            const std::string& simplifier, const std::filesystem::path& output, bool json);
+/// "lp" or "nnls" (--simplifier); InputError otherwise.
+SimplificationMethod parse_simplification_method(const std::string& name);
 
 }  // namespace altfem::cli

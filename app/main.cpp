@@ -27,6 +27,27 @@ int main(int argc, char** argv) {
   run->add_option("--method", method, "Discretization: fem (fcm, dg, harmonic in later builds)")->required();
   run->add_option("--out", output, "Output folder (default out/<scene>-<method>)");
 
+  // `quadrature monomials` (Longva et al. 2020, §4.6) and `quadrature cell` (one cut cell's rules).
+  auto* quadrature = app.add_subcommand("quadrature", "Cut-cell quadrature tools (fcm)");
+  quadrature->require_subcommand(1);
+  auto* monomials = quadrature->add_subcommand("monomials", "Fig. 4 of Longva et al. 2020: monomial errors");
+  auto* quadrature_cell = quadrature->add_subcommand("cell", "The rules of one background cell as VTU points");
+  std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
+  std::string simplifier = "nnls", quadrature_output = "out/quadrature-cell";
+  int quadrature_order = 4;
+  bool quadrature_json = false;
+  monomials->add_option("--cell", quadrature_cell_type, "hex8|hex20|hex27|tet4|tet10")->required();
+  quadrature_cell->add_option("--scene", quadrature_scene, "Scene file (JSON)")->required();
+  quadrature_cell->add_option("--cell", quadrature_index, "Grid cube i,j,k")->required();
+  quadrature_cell->add_option("--cell-type", quadrature_cell_type, "Background cell type (default hex20)");
+  quadrature_cell->add_option("--resolution", quadrature_resolution, "Grid cells: n or nx,ny,nz (default 4)");
+  quadrature_cell->add_option("--out", quadrature_output, "Output folder (default out/quadrature-cell)");
+  for (auto* command : {monomials, quadrature_cell}) {
+    command->add_option("--order", quadrature_order, "Polynomial degree m (default 4)");
+    command->add_option("--simplifier", simplifier, "lp or nnls (default nnls)");
+    command->add_flag("--json", quadrature_json, "Print JSON");
+  }
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -38,6 +59,12 @@ int main(int argc, char** argv) {
     if (*info) return altfem::cli::info_command();
     if (*check) return altfem::cli::check_command(check_scene, check_json);
     if (*run) return altfem::cli::run_command(run_scene, method, output);
+    if (*monomials)
+      return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
+    if (*quadrature_cell)
+      return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
+                                                  quadrature_resolution, quadrature_order, simplifier,
+                                                  quadrature_output, quadrature_json);
   } catch (const altfem::InputError& error) {
     std::fprintf(stderr, "altfem: error: %s\n", error.what());
     return altfem::exit_bad_input;

@@ -25,6 +25,12 @@ altfem_require(CLI11_FOUND libcli11-dev "CLI11")
 find_package(NLopt QUIET)
 altfem_require(NLopt_FOUND libnlopt-cxx-dev "NLopt")
 
+# COIN-OR Clp (the simplex LP of quadrature simplification) has only a pkg-config file.
+find_package(PkgConfig QUIET)
+altfem_require(PKG_CONFIG_FOUND pkg-config "pkg-config")
+pkg_check_modules(CLP QUIET IMPORTED_TARGET clp)
+altfem_require(CLP_FOUND coinor-libclp-dev "COIN-OR Clp")
+
 # SuiteSparse 5 on Debian ships neither a CMake config nor a .pc file.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
 find_library(CHOLMOD_LIBRARY cholmod)

@@ -1,0 +1,87 @@
+#include "fcm/cell_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "fcm/cut_cell_rule.hpp"
+#include "fcm/tetrahedron_buckets.hpp"
+#include "shared/quadrature/reference_rules.hpp"
+
+namespace altfem::fcm {
+namespace {
+
+/// Relative volume difference under which a cut cell is taken as entirely inside.
+constexpr double inside_tolerance = 1e-12;
+
+}  // namespace
+
+CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options) {
+  const TetrahedronBuckets buckets(embedded);
+  const ElementType type = background.element_type;
+  const int corner_count = element_corner_count(type);
+  const QuadratureRule standard = reference_rule(
+      element_shape(type) == ElementShape::tetrahedron ? ReferenceDomain::tetrahedron : ReferenceDomain::hexahedron,
+      options.order);
+  const Eigen::Index cell_count = background.cells.rows();
+  CellRules result;
+  result.cells.resize(cell_count);
+
+  // A cell's work is independent of every other's; exceptions must not escape the
+  // parallel region, so the first one is kept and rethrown after it.
+  std::exception_ptr failure;
+#pragma omp parallel
+  {
+    std::vector<TetrahedronCorners> candidates;
+    Eigen::MatrixXd corners(corner_count, 3);
+#pragma omp for schedule(dynamic, 4)
+    for (Eigen::Index c = 0; c < cell_count; ++c) {
+      try {
+        for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
+        const Eigen::AlignedBox3d box(corners.colwise().minCoeff().transpose(),
+                                      corners.colwise().maxCoeff().transpose());
+        buckets.candidates(box, candidates);
+        CellRule& cell = result.cells[c];
+        if (candidates.empty()) continue;
+        const CellGeometry geometry(type, corners);
+        IntersectionRule intersection = intersection_rule(geometry, candidates, options.order);
+        cell.clipped_volume = intersection.clipped_volume;
+        cell.initial_points = intersection.rule.points.rows();
+        if (cell.initial_points == 0) continue;
+        const double volume = geometry.volume();
+        if (std::abs(intersection.clipped_volume - volume) <= inside_tolerance * volume) {
+          cell.kind = CellKind::inside;
+          cell.rule = standard;
+          cell.initial_points = standard.points.rows();
+          continue;
+        }
+        cell.kind = CellKind::cut;
+        if (!options.simplify) {
+          cell.rule = std::move(intersection.rule);
+          continue;
+        }
+        SimplificationResult simplified =
+            simplify_quadrature(intersection.rule, {options.order, options.method, options.tolerance});
+        cell.rule = std::move(simplified.rule);
+        cell.residual = simplified.residual;
+        cell.simplification_failed = simplified.failed;
+      } catch (...) {
+#pragma omp critical(altfem_fcm_cell_rules_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+
+  for (const CellRule& cell : result.cells) {
+    result.initial_points += cell.initial_points;
+    result.final_points += cell.rule.points.rows();
+    result.cut_cells += cell.kind == CellKind::cut;
+    result.inside_cells += cell.kind == CellKind::inside;
+    result.failed_simplifications += cell.simplification_failed;
+    result.max_residual = std::max(result.max_residual, cell.residual);
+  }
+  return result;
+}
+
+}  // namespace altfem::fcm

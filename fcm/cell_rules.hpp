@@ -1,0 +1,45 @@
+#pragma once
+// Quadrature rules for every cell of a background mesh with an embedded tetrahedral
+// mesh (Longva et al. 2020, §4.4–4.5): cells outside get no points, cells entirely
+// inside the standard reference rule, cut cells the intersection rule simplified to at
+// most M = C(m+3, 3) points. Cells are independent: computed in parallel (OpenMP),
+// each thread with its own scratch, writing only its own cell's entry.
+#include <vector>
+
+#include "shared/mesh/volume_mesh.hpp"
+#include "shared/quadrature/quadrature_rule.hpp"
+#include "shared/quadrature/simplify_quadrature.hpp"
+
+namespace altfem::fcm {
+
+enum class CellKind { outside, inside, cut };
+
+struct CellRuleOptions {
+  int order = 4;                       ///< m: polynomial degree integrated exactly
+  bool simplify = true;                ///< false keeps the intersection rules (§6.3's comparison)
+  SimplificationMethod method = SimplificationOptions{}.method;
+  double tolerance = SimplificationOptions{}.tolerance;  ///< accepted moment residual
+};
+
+struct CellRule {
+  CellKind kind = CellKind::outside;
+  QuadratureRule rule;                 ///< reference coordinates of the cell; ∫ f ≈ Σ w f(ξ)|J(ξ)|
+  Eigen::Index initial_points = 0;     ///< before simplification
+  double clipped_volume = 0.0;         ///< physical volume of cell ∩ geometry
+  double residual = 0.0;               ///< simplification residual (SimplificationResult)
+  bool simplification_failed = false;  ///< the original rule was kept
+};
+
+struct CellRules {
+  std::vector<CellRule> cells;  ///< one per background cell, in mesh order
+  Eigen::Index initial_points = 0, final_points = 0;
+  int cut_cells = 0, inside_cells = 0, failed_simplifications = 0;
+  double max_residual = 0.0;
+};
+
+/// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral
+/// mesh of the object (corner nodes used). A cell counts as inside when its clipped
+/// volume equals its own volume to 1e-12 relative.
+CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options);
+
+}  // namespace altfem::fcm

@@ -1,0 +1,15 @@
+#pragma once
+// The tetrahedral mesh of the embedded object that intersection quadrature clips
+// (Longva et al. 2020, §4.5): a scene's tetrahedral volume mesh as it is, or its
+// surface or analytic shape tetrahedralised by CGAL Mesh_3.
+#include "shared/mesh/volume_mesh.hpp"
+#include "shared/scene/scene_geometry.hpp"
+
+namespace altfem::fcm {
+
+/// A Tet4 mesh of the geometry: a Tet4/Tet10 volume mesh's corner tetrahedra; a surface
+/// or shape meshed with cells of at most `max_cell_size`. Throws InputError for a
+/// hexahedral volume mesh (its curved faces have no exact tetrahedralisation).
+VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file);
+
+}  // namespace altfem::fcm

@@ -1,0 +1,203 @@
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "shared/geometry/clip_convex.hpp"
+
+namespace altfem {
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+
+Point to_point(const Eigen::Vector3d& x) { return Point(x.x(), x.y(), x.z()); }
+
+/// A convex polytope as a boundary: faces list vertex indices counter-clockwise seen
+/// from outside. Vertices no face uses may remain (they are ignored).
+struct ConvexPolytope {
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::vector<int>> faces;
+};
+
+/// -1 kept side (inside), 0 on the plane, +1 outside: one exact predicate.
+int side_of(const ClipPlane& plane, const Eigen::Vector3d& x) {
+  const CGAL::Orientation orientation =
+      CGAL::orientation(to_point(plane.a), to_point(plane.b), to_point(plane.c), to_point(x));
+  return orientation == CGAL::NEGATIVE ? -1 : (orientation == CGAL::ZERO ? 0 : 1);
+}
+
+enum class ClipOutcome { unchanged, cut, empty };
+
+/// Cuts `polytope` by one plane in place.
+ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
+  const int vertex_count = static_cast<int>(polytope.vertices.size());
+  std::vector<int> side(vertex_count);
+  bool any_inside = false, any_outside = false;
+  for (const auto& face : polytope.faces) {
+    for (const int v : face) {
+      side[v] = side_of(plane, polytope.vertices[v]);
+      any_inside |= side[v] < 0;
+      any_outside |= side[v] > 0;
+    }
+  }
+  if (!any_outside) return ClipOutcome::unchanged;  // kept side (faces on the plane included)
+  if (!any_inside) return ClipOutcome::empty;       // outside, or flat on the plane
+
+  // Signed distances along the (unnormalised) normal only place the new vertices;
+  // which edges are cut was decided exactly above.
+  const Eigen::Vector3d normal = (plane.b - plane.a).cross(plane.c - plane.a);
+  std::map<std::pair<int, int>, int> edge_vertex;  // each cut edge's new vertex, shared by its two faces
+  const auto cut_edge = [&](int u, int v) {
+    const auto key = std::minmax(u, v);
+    const auto found = edge_vertex.find(key);
+    if (found != edge_vertex.end()) return found->second;
+    const Eigen::Vector3d& p = polytope.vertices[key.first];
+    const Eigen::Vector3d& q = polytope.vertices[key.second];
+    const double dp = (p - plane.a).dot(normal), dq = (q - plane.a).dot(normal);
+    const double t = dp / (dp - dq);  // dp and dq have strictly opposite signs
+    polytope.vertices.push_back(p + t * (q - p));
+    const int index = static_cast<int>(polytope.vertices.size()) - 1;
+    edge_vertex.emplace(key, index);
+    return index;
+  };
+
+  std::vector<std::vector<int>> kept_faces;
+  std::vector<int> cap;  // vertices on the plane: the new face
+  std::vector<char> in_cap(vertex_count, 0);
+  for (const auto& face : polytope.faces) {
+    std::vector<int> clipped;
+    const int n = static_cast<int>(face.size());
+    for (int i = 0; i < n; ++i) {
+      const int u = face[i], v = face[(i + 1) % n];
+      if (side[u] <= 0) clipped.push_back(u);
+      if (side[u] == 0 && !in_cap[u]) {
+        in_cap[u] = 1;
+        cap.push_back(u);
+      }
+      if (side[u] * side[v] < 0) {
+        const int w = cut_edge(u, v);
+        clipped.push_back(w);
+        if (static_cast<int>(in_cap.size()) <= w) in_cap.resize(w + 1, 0);
+        if (!in_cap[w]) {
+          in_cap[w] = 1;
+          cap.push_back(w);
+        }
+      }
+    }
+    if (clipped.size() >= 3) kept_faces.push_back(std::move(clipped));
+  }
+  if (cap.size() >= 3) {
+    // Order the cap counter-clockwise seen from outside (along +normal) around its centroid.
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (const int v : cap) centre += polytope.vertices[v];
+    centre /= static_cast<double>(cap.size());
+    const Eigen::Vector3d unit_normal = normal.normalized();
+    const Eigen::Vector3d first = (polytope.vertices[cap[0]] - centre).normalized();
+    const Eigen::Vector3d second = unit_normal.cross(first);
+    std::vector<std::pair<double, int>> angles;
+    for (const int v : cap) {
+      const Eigen::Vector3d d = polytope.vertices[v] - centre;
+      angles.emplace_back(std::atan2(d.dot(second), d.dot(first)), v);
+    }
+    std::sort(angles.begin(), angles.end());
+    std::vector<int> cap_face;
+    for (const auto& [angle, v] : angles) cap_face.push_back(v);
+    kept_faces.push_back(std::move(cap_face));
+  }
+  polytope.faces = std::move(kept_faces);
+  return polytope.faces.size() >= 4 ? ClipOutcome::cut : ClipOutcome::empty;
+}
+
+}  // namespace
+
+std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetrahedron,
+                                                 const std::vector<ClipPlane>& planes) {
+  ConvexPolytope polytope;
+  for (int i = 0; i < 4; ++i) polytope.vertices.push_back(tetrahedron.row(i).transpose());
+  // Outward counter-clockwise faces of a positively oriented tetrahedron (VTK order);
+  // a negatively oriented one is reordered first.
+  if (CGAL::orientation(to_point(polytope.vertices[0]), to_point(polytope.vertices[1]),
+                        to_point(polytope.vertices[2]), to_point(polytope.vertices[3])) != CGAL::POSITIVE) {
+    std::swap(polytope.vertices[1], polytope.vertices[2]);
+  }
+  polytope.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  bool cut = false;
+  for (const ClipPlane& plane : planes) {
+    const ClipOutcome outcome = clip_by_plane(polytope, plane);
+    if (outcome == ClipOutcome::empty) return {};
+    cut |= outcome == ClipOutcome::cut;
+  }
+  if (!cut) {
+    // Entirely inside: the tetrahedron itself, positively oriented.
+    TetrahedronCorners whole;
+    for (int i = 0; i < 4; ++i) whole.row(i) = polytope.vertices[i].transpose();
+    return {whole};
+  }
+
+  // Fan from the centroid of the used vertices: every (centroid, face triangle) is a
+  // positively oriented tetrahedron of the convex piece; flat ones add no volume.
+  std::vector<char> used(polytope.vertices.size(), 0);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  int used_count = 0;
+  for (const auto& face : polytope.faces) {
+    for (const int v : face) {
+      if (!used[v]) {
+        used[v] = 1;
+        centroid += polytope.vertices[v];
+        ++used_count;
+      }
+    }
+  }
+  centroid /= used_count;
+  std::vector<TetrahedronCorners> pieces;
+  for (const auto& face : polytope.faces) {
+    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+      TetrahedronCorners piece;
+      piece.row(0) = centroid.transpose();
+      piece.row(1) = polytope.vertices[face[0]].transpose();
+      piece.row(2) = polytope.vertices[face[i]].transpose();
+      piece.row(3) = polytope.vertices[face[i + 1]].transpose();
+      const Eigen::Matrix3d edges = (piece.bottomRows<3>().rowwise() - piece.row(0)).transpose();
+      if (edges.determinant() > 0.0) pieces.push_back(piece);
+    }
+  }
+  return pieces;
+}
+
+std::vector<ClipPlane> hexahedron_clip_planes(const Eigen::Ref<const Eigen::MatrixXd>& corners) {
+  // VTK hexahedron faces, counter-clockwise seen from outside.
+  static constexpr int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                      {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  std::vector<ClipPlane> planes;
+  for (const auto& face : faces) {
+    planes.push_back({corners.row(face[0]).transpose(), corners.row(face[1]).transpose(),
+                      corners.row(face[2]).transpose()});
+  }
+  return planes;
+}
+
+std::vector<ClipPlane> tetrahedron_clip_planes(const Eigen::Ref<const Eigen::MatrixXd>& corners) {
+  static constexpr int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  std::vector<ClipPlane> planes;
+  for (const auto& face : faces) {
+    planes.push_back({corners.row(face[0]).transpose(), corners.row(face[1]).transpose(),
+                      corners.row(face[2]).transpose()});
+  }
+  return planes;
+}
+
+bool hexahedron_faces_planar(const Eigen::Ref<const Eigen::MatrixXd>& corners) {
+  const std::vector<ClipPlane> planes = hexahedron_clip_planes(corners);
+  static constexpr int fourth[6] = {1, 7, 4, 5, 6, 7};
+  for (int f = 0; f < 6; ++f) {
+    if (side_of(planes[f], corners.row(fourth[f]).transpose()) != 0) return false;
+  }
+  return true;
+}
+
+}  // namespace altfem

@@ -1,0 +1,104 @@
+#include "shared/quadrature/simplify_quadrature.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "shared/quadrature/basic_feasible_point.hpp"
+#include "shared/quadrature/chebyshev_moment_matrix.hpp"
+#include "shared/quadrature/nonnegative_least_squares.hpp"
+
+namespace altfem {
+namespace {
+
+/// Rows whose pivot falls below this fraction of the largest are taken as dependent.
+constexpr double rank_threshold = 1e-12;
+/// Candidate weights below this fraction of the total are dropped before polishing.
+constexpr double negligible_weight = 1e-14;
+
+/// The candidate weights of `method` on the orthonormal system A w = b; empty on failure.
+Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
+  if (method == SimplificationMethod::linear_program) {
+    auto solution = basic_feasible_point(A, b);
+    return solution ? *solution : Eigen::VectorXd();
+  }
+  NonnegativeLeastSquaresResult result = nonnegative_least_squares(A, b);
+  return result.converged ? result.solution : Eigen::VectorXd();
+}
+
+}  // namespace
+
+std::string_view simplification_method_name(SimplificationMethod method) {
+  return method == SimplificationMethod::linear_program ? "lp" : "nnls";
+}
+
+SimplificationResult simplify_quadrature(const QuadratureRule& rule, const SimplificationOptions& options) {
+  if (options.degree < 0) throw std::invalid_argument("simplify_quadrature: degree must be >= 0");
+  if (rule.points.cols() != 3 || rule.points.rows() != rule.weights.size()) {
+    throw std::invalid_argument("simplify_quadrature: points must be #points x 3, one weight each");
+  }
+  if ((rule.weights.array() < 0.0).any()) throw std::invalid_argument("simplify_quadrature: negative weight");
+  SimplificationResult result;
+  result.rule = rule;
+  const Eigen::Index count = rule.points.rows();
+  const Eigen::Index basis_size = (options.degree + 1) * (options.degree + 2) * (options.degree + 3) / 6;
+  if (count <= basis_size) return result;
+
+  const Eigen::MatrixXd moments = chebyshev_moment_matrix(rule.points, options.degree);  // M × N
+  const Eigen::VectorXd target = moments * rule.weights;
+
+  // Longva et al. 2020, §4.4.4, eq. (10): P w = P w⁰ ⇔ Vᵣᵀ w = Vᵣᵀ w⁰ with Vᵣ an
+  // orthonormal basis of P's row space. Any orthonormal basis of that space gives the
+  // same feasible set; a pivoted QR of Pᵀ is cheaper than the SVD and reveals the rank.
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(moments.transpose());
+  qr.setThreshold(rank_threshold);
+  const Eigen::Index rank = qr.rank();
+  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(count, rank);  // N × r
+  const Eigen::MatrixXd A = basis.transpose();
+  const Eigen::VectorXd b = A * rule.weights;
+
+  const Eigen::VectorXd candidate = solve_weights(options.method, A, b);
+  // Weights at rounding level are zeros the solver did not land on exactly; keeping
+  // them would give points that carry nothing.
+  const double negligible = negligible_weight * rule.weights.sum();
+  std::vector<Eigen::Index> support;
+  for (Eigen::Index j = 0; j < candidate.size(); ++j) {
+    if (candidate(j) > negligible) support.push_back(j);
+  }
+  const Eigen::Index kept = static_cast<Eigen::Index>(support.size());
+  if (candidate.size() == 0 || kept == 0 || kept > basis_size) {
+    result.failed = true;
+    return result;
+  }
+
+  // Re-solve the weights on the chosen points: the solvers stop at their own
+  // tolerances; the square (or overdetermined) system on the support is exact.
+  Eigen::MatrixXd chosen(A.rows(), kept);
+  Eigen::VectorXd weights(kept);
+  for (Eigen::Index i = 0; i < kept; ++i) {
+    chosen.col(i) = A.col(support[i]);
+    weights(i) = candidate(support[i]);
+  }
+  const Eigen::VectorXd polished = chosen.colPivHouseholderQr().solve(b);
+  if ((polished.array() > 0.0).all()) weights = polished;
+
+  QuadratureRule simplified;
+  simplified.points.resize(kept, 3);
+  for (Eigen::Index i = 0; i < kept; ++i) simplified.points.row(i) = rule.points.row(support[i]);
+  simplified.weights = weights;
+  simplified.strength = std::min(rule.strength, options.degree);
+
+  Eigen::MatrixXd chosen_moments(moments.rows(), kept);
+  for (Eigen::Index i = 0; i < kept; ++i) chosen_moments.col(i) = moments.col(support[i]);
+  result.residual = (chosen_moments * weights - target).cwiseAbs().maxCoeff() / rule.weights.sum();
+  if (!(result.residual <= options.tolerance)) {
+    result.failed = true;
+    return result;
+  }
+  result.rule = std::move(simplified);
+  result.simplified = true;
+  return result;
+}
+
+}  // namespace altfem
