@@ -59,7 +59,11 @@ ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
     const Eigen::Vector3d& p = polytope.vertices[key.first];
     const Eigen::Vector3d& q = polytope.vertices[key.second];
     const double dp = (p - plane.a).dot(normal), dq = (q - plane.a).dot(normal);
-    const double t = dp / (dp - dq);  // dp and dq have strictly opposite signs
+    // The exact predicates put p and q strictly on opposite sides, but the rounded
+    // distances of nearly-on points may not agree in sign: |dp| / (|dp| + |dq|) is the
+    // same parameter when they do and stays in [0, 1] when they do not.
+    const double sum = std::abs(dp) + std::abs(dq);
+    const double t = sum > 0.0 ? std::abs(dp) / sum : 0.5;
     polytope.vertices.push_back(p + t * (q - p));
     const int index = static_cast<int>(polytope.vertices.size()) - 1;
     edge_vertex.emplace(key, index);
@@ -191,11 +195,16 @@ std::vector<ClipPlane> tetrahedron_clip_planes(const Eigen::Ref<const Eigen::Mat
   return planes;
 }
 
-bool hexahedron_faces_planar(const Eigen::Ref<const Eigen::MatrixXd>& corners) {
+bool hexahedron_faces_planar(const Eigen::Ref<const Eigen::MatrixXd>& corners, double relative_tolerance) {
   const std::vector<ClipPlane> planes = hexahedron_clip_planes(corners);
   static constexpr int fourth[6] = {1, 7, 4, 5, 6, 7};
   for (int f = 0; f < 6; ++f) {
-    if (side_of(planes[f], corners.row(fourth[f]).transpose()) != 0) return false;
+    const Eigen::Vector3d x = corners.row(fourth[f]).transpose();
+    if (side_of(planes[f], x) == 0) continue;
+    // Not exactly coplanar: accept the rounding of corners computed by a map.
+    const Eigen::Vector3d normal = (planes[f].b - planes[f].a).cross(planes[f].c - planes[f].a);
+    const double size = std::max((planes[f].b - planes[f].a).norm(), (planes[f].c - planes[f].a).norm());
+    if (!(std::abs((x - planes[f].a).dot(normal.normalized())) <= relative_tolerance * size)) return false;
   }
   return true;
 }

@@ -35,7 +35,9 @@ std::vector<ClipPlane> hexahedron_clip_planes(const Eigen::Ref<const Eigen::Matr
 std::vector<ClipPlane> tetrahedron_clip_planes(const Eigen::Ref<const Eigen::MatrixXd>& corners);
 
 /// Whether the four corners of every face of the hexahedron (8 × 3, VTK order) are
-/// exactly coplanar (an exact predicate): clipping needs planar faces.
-bool hexahedron_faces_planar(const Eigen::Ref<const Eigen::MatrixXd>& corners);
+/// coplanar: exactly (an exact predicate), or with the fourth corner within
+/// relative_tolerance × the face's size of the plane of the other three (corners
+/// computed by a map are rounded). Clipping needs planar faces.
+bool hexahedron_faces_planar(const Eigen::Ref<const Eigen::MatrixXd>& corners, double relative_tolerance = 1e-12);
 
 }  // namespace altfem
