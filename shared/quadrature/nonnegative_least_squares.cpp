@@ -34,8 +34,12 @@ NonnegativeLeastSquaresResult nonnegative_least_squares(const Eigen::Ref<const E
   Eigen::VectorXd& x = result.solution;
   const int max_iterations = static_cast<int>(3 * columns);
 
+  Eigen::VectorXd gradient(columns);
   while (result.iterations < max_iterations) {
-    const Eigen::VectorXd gradient = A.transpose() * (b - A * x);
+    // x is zero outside the passive set: its product with A costs rows × |passive|.
+    Eigen::VectorXd residual = b;
+    for (const Eigen::Index j : passive) residual -= x(j) * A.col(j);
+    gradient.noalias() = A.transpose() * residual;
     Eigen::Index best = -1;
     double best_value = threshold;
     for (Eigen::Index j = 0; j < columns; ++j) {

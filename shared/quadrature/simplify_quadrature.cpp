@@ -1,5 +1,6 @@
 #include "shared/quadrature/simplify_quadrature.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/QR>
 #include <algorithm>
 #include <stdexcept>
@@ -14,8 +15,32 @@ namespace {
 
 /// Rows whose pivot falls below this fraction of the largest are taken as dependent.
 constexpr double rank_threshold = 1e-12;
+/// Smallest reciprocal condition number of P Pᵀ for the Cholesky route: its rows are
+/// then orthonormal to about 1e-16 / 1e-7 = 1e-9, plenty for an equivalent system.
+constexpr double minimum_gram_rcond = 1e-7;
 /// Candidate weights below this fraction of the total are dropped before polishing.
 constexpr double negligible_weight = 1e-14;
+
+/// Rows spanning P's row space, orthonormal (r × N): Longva et al. 2020, §4.4.4, eq. (10):
+/// P w = P w⁰ ⇔ Vᵣᵀ w = Vᵣᵀ w⁰ for any orthonormal basis Vᵣ of that space, and the
+/// transformed system is perfectly conditioned. The fast route is a Cholesky factor of
+/// the small Gram matrix P Pᵀ = L Lᵀ, whose L⁻¹ P has orthonormal rows; it squares P's
+/// condition number, so when the factor fails or P Pᵀ is ill-conditioned (nearly
+/// dependent moments), a pivoted QR of Pᵀ, which also reveals the rank, is used instead.
+Eigen::MatrixXd orthonormal_row_basis(const Eigen::MatrixXd& moments) {
+  const Eigen::Index rows = moments.rows();
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(rows, rows);
+  gram.selfadjointView<Eigen::Lower>().rankUpdate(moments);
+  const Eigen::LLT<Eigen::MatrixXd> cholesky(gram.selfadjointView<Eigen::Lower>());
+  // The rows of L⁻¹ P are orthonormal up to about ε · cond(P Pᵀ).
+  if (cholesky.info() == Eigen::Success && cholesky.rcond() >= minimum_gram_rcond) {
+    return cholesky.matrixL().solve(moments);
+  }
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(moments.transpose());
+  qr.setThreshold(rank_threshold);
+  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(moments.cols(), qr.rank());
+  return basis.transpose();
+}
 
 /// The candidate weights of `method` on the orthonormal system A w = b; empty on failure.
 Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
@@ -48,14 +73,7 @@ SimplificationResult simplify_quadrature(const QuadratureRule& rule, const Simpl
   const Eigen::MatrixXd moments = chebyshev_moment_matrix(rule.points, options.degree);  // M × N
   const Eigen::VectorXd target = moments * rule.weights;
 
-  // Longva et al. 2020, §4.4.4, eq. (10): P w = P w⁰ ⇔ Vᵣᵀ w = Vᵣᵀ w⁰ with Vᵣ an
-  // orthonormal basis of P's row space. Any orthonormal basis of that space gives the
-  // same feasible set; a pivoted QR of Pᵀ is cheaper than the SVD and reveals the rank.
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(moments.transpose());
-  qr.setThreshold(rank_threshold);
-  const Eigen::Index rank = qr.rank();
-  const Eigen::MatrixXd basis = qr.householderQ() * Eigen::MatrixXd::Identity(count, rank);  // N × r
-  const Eigen::MatrixXd A = basis.transpose();
+  const Eigen::MatrixXd A = orthonormal_row_basis(moments);  // r × N
   const Eigen::VectorXd b = A * rule.weights;
 
   const Eigen::VectorXd candidate = solve_weights(options.method, A, b);

@@ -1,0 +1,110 @@
+// FCM quadrature (issue #16; Longva et al. 2020, §4.4–4.5, §6.3), medians printed:
+//
+//   bench_quadrature [--repetitions N]
+//
+// 1. Simplifying one Hex20 cut cell at m = 4 from about 3,000 intersection points, with
+//    the LP (Clp) and the LP-free NNLS (Lawson–Hanson) simplifier, on one thread
+//    (target: <= 2 ms median each), with the moment residuals.
+// 2. Whole-mesh generation + simplification for a hollow cylinder (length 16, radii
+//    1 and 0.5) in a 7 × 7 × 56 Hex20 grid of cubes, ~2,000 cells meeting the object as
+//    in §6.2–6.3, on all threads (target: <= 2 s on 2 cores), with point counts
+//    (the paper: 5,857,880 -> 70,560).
+#include <omp.h>
+
+#include <Eigen/Geometry>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "bench/median.hpp"
+#include "fcm/cell_rules.hpp"
+#include "fcm/cut_cell_rule.hpp"
+#include "shared/element/reference_element.hpp"
+#include "shared/geometry/analytic_shape.hpp"
+#include "shared/mesh/structured_grid.hpp"
+#include "shared/mesh/tetrahedralize.hpp"
+
+namespace {
+
+using namespace altfem;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// The intersection rule of the reference Hex20 cell with a tilted, finely gridded box
+/// that covers about half of it: ~3,000 points at m = 4.
+QuadratureRule hex20_cut_cell_rule() {
+  const VolumeMesh box = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d(0.2, -1.4, -1.4), Eigen::Vector3d(1.6, 1.4, 1.4)),
+                                         Eigen::Vector3i(1, 2, 2), ElementType::tet4);
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<TetrahedronCorners> tetrahedra(box.cells.rows());
+  for (Eigen::Index t = 0; t < box.cells.rows(); ++t)
+    for (int c = 0; c < 4; ++c) tetrahedra[t].row(c) = (rotation * box.nodes.row(box.cells(t, c)).transpose()).transpose();
+  const ReferenceElement& element = reference_element(ElementType::hex20);
+  const fcm::CellGeometry cell(ElementType::hex20, element.nodes().topRows(8));
+  return fcm::intersection_rule(cell, tetrahedra, 4).rule;
+}
+
+void simplify_one_cell(int repetitions) {
+  const QuadratureRule rule = hex20_cut_cell_rule();
+  std::printf("one Hex20 cut cell, m = 4: %lld initial points\n", static_cast<long long>(rule.points.rows()));
+  for (const SimplificationMethod method :
+       {SimplificationMethod::linear_program, SimplificationMethod::nonnegative_least_squares}) {
+    std::vector<double> times;
+    SimplificationResult result;
+    for (int r = 0; r < repetitions; ++r) {
+      const auto start = std::chrono::steady_clock::now();
+      result = simplify_quadrature(rule, {4, method, 1e-12});
+      times.push_back(seconds_since(start));
+    }
+    std::printf("  %-4s median %.3f ms, %lld points, residual %.2e%s\n",
+                std::string(simplification_method_name(method)).c_str(), 1e3 * bench::median(times),
+                static_cast<long long>(result.rule.points.rows()), result.residual, result.failed ? " FAILED" : "");
+  }
+}
+
+void hollow_cylinder(int repetitions) {
+  const auto shape = make_cylinder(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ(), 16.0, 1.0, 0.5);
+  const double cell_size = 2.0 / 7.0;
+  const Eigen::AlignedBox3d box(Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(1, 1, 16));
+  const VolumeMesh grid = structured_grid(box, Eigen::Vector3i(7, 7, 56), ElementType::hex20);
+  auto start = std::chrono::steady_clock::now();
+  const VolumeMesh embedded = tetrahedralize_shape(*shape, cell_size);
+  std::printf("hollow cylinder: %lld embedded tetrahedra (Mesh_3, %.2f s, not counted), %d threads\n",
+              static_cast<long long>(embedded.cells.rows()), seconds_since(start), omp_get_max_threads());
+  for (const SimplificationMethod method :
+       {SimplificationMethod::linear_program, SimplificationMethod::nonnegative_least_squares}) {
+    std::vector<double> generation, total;
+    fcm::CellRules rules;
+    for (int r = 0; r < repetitions; ++r) {
+      start = std::chrono::steady_clock::now();
+      rules = fcm::compute_cell_rules(grid, embedded, {4, false});
+      generation.push_back(seconds_since(start));
+      start = std::chrono::steady_clock::now();
+      rules = fcm::compute_cell_rules(grid, embedded, {4, true, method});
+      total.push_back(seconds_since(start));
+    }
+    std::printf("  %-4s %d cut + %d inside cells; %lld -> %lld points; %d kept unsimplified; max residual %.2e\n"
+                "       median generation only %.3f s, generation + simplification %.3f s\n",
+                std::string(simplification_method_name(method)).c_str(), rules.cut_cells, rules.inside_cells,
+                static_cast<long long>(rules.initial_points), static_cast<long long>(rules.final_points),
+                rules.failed_simplifications, rules.max_residual, bench::median(generation), bench::median(total));
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int repetitions = 5;
+  for (int i = 1; i + 1 < argc; ++i) {
+    if (std::strcmp(argv[i], "--repetitions") == 0) repetitions = std::max(1, std::atoi(argv[i + 1]));
+  }
+  omp_set_num_threads(1);
+  simplify_one_cell(10 * repetitions);
+  omp_set_num_threads(omp_get_num_procs());
+  hollow_cylinder(repetitions);
+  return 0;
+}
