@@ -73,15 +73,22 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   }
   if (failure) std::rethrow_exception(failure);
 
-  for (const CellRule& cell : result.cells) {
-    result.initial_points += cell.initial_points;
-    result.final_points += cell.rule.points.rows();
-    result.cut_cells += cell.kind == CellKind::cut;
-    result.inside_cells += cell.kind == CellKind::inside;
-    result.failed_simplifications += cell.simplification_failed;
-    result.max_residual = std::max(result.max_residual, cell.residual);
-  }
+  sum_cell_rule_totals(result);
   return result;
+}
+
+void sum_cell_rule_totals(CellRules& rules) {
+  rules.initial_points = rules.final_points = 0;
+  rules.cut_cells = rules.inside_cells = rules.failed_simplifications = 0;
+  rules.max_residual = 0.0;
+  for (const CellRule& cell : rules.cells) {
+    rules.initial_points += cell.initial_points;
+    rules.final_points += cell.rule.points.rows();
+    rules.cut_cells += cell.kind == CellKind::cut;
+    rules.inside_cells += cell.kind == CellKind::inside;
+    rules.failed_simplifications += cell.simplification_failed;
+    rules.max_residual = std::max(rules.max_residual, cell.residual);
+  }
 }
 
 }  // namespace altfem::fcm

@@ -42,4 +42,7 @@ struct CellRules {
 /// volume equals its own volume to 1e-12 relative.
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options);
 
+/// Recomputes the totals of `rules` (points, cell counts, failures, max residual) from its cells.
+void sum_cell_rule_totals(CellRules& rules);
+
 }  // namespace altfem::fcm

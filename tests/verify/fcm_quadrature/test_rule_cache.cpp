@@ -1,0 +1,57 @@
+// The on-disk rule cache (fcm/rule_cache.hpp): a second run reuses the file and gets
+// identical rules; other options miss; a truncated file (an interrupted writer without
+// the atomic rename) is recomputed, not trusted.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <fstream>
+
+#include "fcm/rule_cache.hpp"
+#include "shared/mesh/structured_grid.hpp"
+
+namespace altfem::fcm {
+namespace {
+
+TEST(RuleCache, SecondRunReusesIdenticalRulesAndTruncatedFilesAreRecomputed) {
+  const auto directory = std::filesystem::temp_directory_path() / "altfem_rule_cache_test";
+  std::filesystem::remove_all(directory);
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
+                                                Eigen::Vector3i(2, 2, 2), ElementType::hex20);
+  VolumeMesh embedded = structured_grid(
+      Eigen::AlignedBox3d(Eigen::Vector3d::Constant(0.1), Eigen::Vector3d(0.8, 0.7, 0.9)), Eigen::Vector3i(2, 2, 2),
+      ElementType::tet4);
+  const CellRuleOptions options{3};
+  bool reused = true;
+  const CellRules first = cached_cell_rules(background, embedded, options, directory, &reused);
+  EXPECT_FALSE(reused);
+  const CellRules second = cached_cell_rules(background, embedded, options, directory, &reused);
+  EXPECT_TRUE(reused);
+  ASSERT_EQ(first.cells.size(), second.cells.size());
+  EXPECT_EQ(first.final_points, second.final_points);
+  EXPECT_EQ(first.cut_cells, second.cut_cells);
+  for (std::size_t c = 0; c < first.cells.size(); ++c) {
+    EXPECT_EQ(first.cells[c].rule.points, second.cells[c].rule.points);
+    EXPECT_EQ(first.cells[c].rule.weights, second.cells[c].rule.weights);
+  }
+
+  cached_cell_rules(background, embedded, CellRuleOptions{4}, directory, &reused);
+  EXPECT_FALSE(reused);  // another order: another key
+  embedded.nodes(0, 0) += 1e-3;
+  cached_cell_rules(background, embedded, options, directory, &reused);
+  EXPECT_FALSE(reused);  // moved geometry: another key
+  embedded.nodes(0, 0) -= 1e-3;
+
+  char name[32];
+  std::snprintf(name, sizeof name, "%016llx.rules",
+                static_cast<unsigned long long>(cell_rules_key(background, embedded, options)));
+  const auto path = directory / name;
+  std::filesystem::resize_file(path, std::filesystem::file_size(path) / 2);
+  const CellRules recomputed = cached_cell_rules(background, embedded, options, directory, &reused);
+  EXPECT_FALSE(reused);
+  EXPECT_EQ(recomputed.final_points, first.final_points);
+  std::filesystem::remove_all(directory);
+}
+
+}  // namespace
+}  // namespace altfem::fcm
