@@ -54,7 +54,7 @@ public:
   /// Advances the state by one time step (static equilibrium: solves once, at the
   /// state's time). Throws NumericalError naming the step.
   StepReport step(State& state);
-  /// Kinetic (½ vᵀ M v, lumped mass for symplectic Euler) plus elastic energy, minus
+  /// Kinetic (½ vᵀ M v, the explicit mass for symplectic Euler) plus elastic energy, minus
   /// the potential of gravity.
   double total_energy(const State& state) const;
   /// The absolute Newton tolerance: tolerance · ‖M a_rep‖ over the free DOFs.
