@@ -73,8 +73,8 @@ public:
     end_face_ = end_face_displacement(*inner_, u);
     return inner_->embedded_displacement(u);
   }
-  Eigen::VectorXd initial_velocity(const altfem::InitialConditions& initial) const override {
-    return inner_->initial_velocity(initial);
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    return inner_->interpolate(field);
   }
 
 private:

@@ -80,14 +80,4 @@ Eigen::VectorXd TabulatedDiscretization::prescribed_displacement(double time) co
   return parts_.dirichlet.prescribed(time);
 }
 
-Eigen::Vector3d TabulatedDiscretization::centre_of_mass(const Eigen::MatrixXd& basis_positions) const {
-  Eigen::Vector3d moment = Eigen::Vector3d::Zero();
-  double mass = 0;
-  for (Eigen::Index basis = 0; basis < basis_positions.rows(); ++basis) {
-    moment += lumped_mass_[3 * basis] * basis_positions.row(basis).transpose();
-    mass += lumped_mass_[3 * basis];
-  }
-  return moment / mass;
-}
-
 }  // namespace altfem

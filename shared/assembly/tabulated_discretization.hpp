@@ -64,9 +64,6 @@ public:
 
   const TabulatedElements& elements() const { return parts_.elements; }
   const ElasticAssembler& assembler() const { return *assembler_; }
-  /// Mass-weighted mean of the basis functions' rest positions, given per basis
-  /// function (#basis × 3): the centre of mass of a Lagrange mesh from its nodes.
-  Eigen::Vector3d centre_of_mass(const Eigen::MatrixXd& basis_positions) const;
 
 private:
   DiscretizationParts parts_;

@@ -61,6 +61,7 @@ FaceView TabulatedFaces::operator[](int face) const {
                   {values_plus_.data() + value_begin, points, n},
                   gradients_minus_.data() + 3 * value_begin,
                   gradients_plus_.data() + 3 * value_begin,
+                  face,
                   minus_[face],
                   plus_[face]};
 }

@@ -30,6 +30,7 @@ struct FaceView {
   Values values_plus;               ///< #points × #basis: φ_a(x_q) from the plus side (0 on a boundary face)
   const double* gradients_minus;    ///< point q's ∇φ_a (#basis × 3) start at + q·#basis·3
   const double* gradients_plus;
+  int index;  ///< the face's position in its TabulatedFaces (per-face data of a kernel)
   int minus;  ///< the element on the minus side
   int plus;   ///< the element on the plus side; -1 on a boundary face
 

@@ -44,12 +44,11 @@ public:
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
-  Eigen::VectorXd initial_velocity(const InitialConditions& initial) const override {
-    const Eigen::Vector3d centre = discretization_->centre_of_mass(mesh_.nodes);
-    Eigen::VectorXd velocity(3 * mesh_.nodes.rows());
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    Eigen::VectorXd values(3 * mesh_.nodes.rows());
     for (Eigen::Index node = 0; node < mesh_.nodes.rows(); ++node)
-      velocity.segment<3>(3 * node) = initial.velocity_at(mesh_.nodes.row(node).transpose(), centre);
-    return velocity;
+      values.segment<3>(3 * node) = field(mesh_.nodes.row(node).transpose());
+    return values;
   }
   nlohmann::json facts() const override {
     return {{"surface_vertices", surface_.vertices.rows()},

@@ -13,6 +13,7 @@
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
 #include "shared/simulation/progress.hpp"
+#include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/timed_discretization.hpp"
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/time_integrator.hpp"
@@ -132,7 +133,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   State state;
   state.displacement = Eigen::VectorXd::Zero(discretization.dof_count());
   state.velocity = scene.time.is_static ? Eigen::VectorXd::Zero(discretization.dof_count()).eval()
-                                        : method->initial_velocity(scene.initial);
+                                        : initial_velocity(*method, scene.initial);
   state.time = scene.time.is_static ? 1.0 : 0.0;  // docs/scene-schema.md: statics evaluate motions at t = 1 s
   if (!scene.time.is_static) integrator.apply_constraints(state);
 

@@ -28,7 +28,7 @@ struct SpinningBlock {
     State state{Eigen::VectorXd::Zero(dofs), Eigen::VectorXd::Zero(dofs)};
     InitialConditions initial;
     initial.angular_velocity = Eigen::Vector3d(0, 0, angular_velocity);
-    const Eigen::Vector3d centre = discretization.centre_of_mass(mesh.nodes);
+    const Eigen::Vector3d centre = block.center();  // uniform density
     for (Eigen::Index node = 0; node < dofs / 3; ++node)
       state.velocity.segment<3>(3 * node) =
           initial.velocity_at(mesh.nodes.row(node).transpose(), centre);
