@@ -1,5 +1,5 @@
 // altfem: one scene, every method. This file only parses the command line and turns
-// exceptions into the exit codes of DESIGN.md (0 ok, 1 internal, 2 bad input,
+// exceptions into the exit codes of docs/conventions.md (0 ok, 1 internal, 2 bad input,
 // 3 numerical failure), each with a one-line message on stderr.
 #include <CLI/CLI.hpp>
 #include <cstdio>

@@ -1,5 +1,5 @@
 #pragma once
-// Static equilibrium and the time integrators of DESIGN.md, over any Discretization.
+// Static equilibrium and the time integrators (docs/architecture.md), over any Discretization.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
