@@ -15,10 +15,11 @@ namespace {
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // Luksan's L-BFGS (NLopt's LD_LBFGS) has a hard-coded stop ‖∇f‖∞ ≤ 1e-8
-// (luksan/plis.c, tolg). Handing NLopt s·f with s ≥ √n · 1e-8 / tolerance makes
-// that test imply ours, ‖∇f‖₂ ≤ √n ‖∇f‖∞ ≤ tolerance, so ours always decides.
-double objective_scale(Eigen::Index size, double gradient_tolerance) {
-  return std::max(1.0, 2 * std::sqrt(static_cast<double>(size)) * 1e-8 / gradient_tolerance);
+// (luksan/plis.c, tolg). Handing NLopt s·f with s ≥ √n · 1e-8 / (tolerance · c) makes
+// that test imply ours, ‖∇f‖₂ ≤ √n ‖∇f‖∞ ≤ tolerance, so ours always decides; c is the
+// smallest variable scale, since NLopt sees the gradient in y, scale ⊙ ∇f.
+double objective_scale(Eigen::Index size, double gradient_tolerance, double smallest_variable_scale) {
+  return std::max(1.0, 2 * std::sqrt(static_cast<double>(size)) * 1e-8 / (gradient_tolerance * smallest_variable_scale));
 }
 
 struct Run {
@@ -27,6 +28,7 @@ struct Run {
   double gradient_tolerance = 0;
   int max_evaluations = 0;
   double scale = 1;
+  const Eigen::VectorXd* variable_scale = nullptr;  // x = variable_scale ⊙ y, or null
   Eigen::VectorXd point{}, gradient{};  // workspaces, #unknowns
   Eigen::VectorXd best_point{};
   double best_value = infinity;
@@ -49,11 +51,16 @@ double evaluate(unsigned size, const double* x, double* gradient, void* data) {
   }
   try {
     run.point = Eigen::Map<const Eigen::VectorXd>(x, size);
+    if (run.variable_scale) run.point = run.point.cwiseProduct(*run.variable_scale);
     const double value = run.objective(run.point, run.gradient);
     ++run.evaluations;
     if (run.gradient.size() != static_cast<Eigen::Index>(size))
       throw std::logic_error("minimize_lbfgs: the objective wrote a gradient of the wrong size");
-    if (gradient != nullptr) Eigen::Map<Eigen::VectorXd>(gradient, size) = run.scale * run.gradient;
+    if (gradient != nullptr) {
+      Eigen::Map<Eigen::VectorXd> output(gradient, size);
+      output = run.scale * run.gradient;
+      if (run.variable_scale) output = output.cwiseProduct(*run.variable_scale);  // ∇_y f = scale ⊙ ∇_x f
+    }
     if (run.evaluations >= run.max_evaluations) run.out_of_evaluations = true;
     if (std::isfinite(value)) {
       const double gradient_norm = run.gradient.norm();
@@ -82,8 +89,12 @@ LbfgsResult minimize_lbfgs(const LbfgsObjective& objective, Eigen::VectorXd& x, 
           .optimizer = optimizer,
           .gradient_tolerance = options.gradient_tolerance,
           .max_evaluations = options.max_evaluations,
-          .scale = objective_scale(x.size(), options.gradient_tolerance),
+          .scale = objective_scale(x.size(), options.gradient_tolerance,
+                                   options.scale.size() > 0 ? options.scale.minCoeff() : 1.0),
+          .variable_scale = options.scale.size() > 0 ? &options.scale : nullptr,
           .best_point = x};
+  if (run.variable_scale && (run.variable_scale->size() != x.size() || !(run.variable_scale->array() > 0).all()))
+    throw std::invalid_argument("minimize_lbfgs: the variable scale must be positive, one entry per unknown");
   optimizer.set_min_objective(evaluate, &run);
   optimizer.set_vector_storage(static_cast<unsigned>(std::max(options.memory, 1)));
   // Luksan's code replaces tolerances ≤ 0 by its defaults (ftol 1e-14 relative,
@@ -93,6 +104,8 @@ LbfgsResult minimize_lbfgs(const LbfgsObjective& objective, Eigen::VectorXd& x, 
   optimizer.set_xtol_rel(std::numeric_limits<double>::min());
 
   std::vector<double> point(x.data(), x.data() + x.size());
+  if (run.variable_scale)
+    for (Eigen::Index i = 0; i < x.size(); ++i) point[i] /= (*run.variable_scale)[i];
   double value = 0;
   nlopt::result code = nlopt::FAILURE;
   try {

@@ -20,6 +20,12 @@ struct LbfgsOptions {
   /// default grows like 1/#unknowns and allocates and clears tens of megabytes
   /// for small problems (~0.1 s per call).
   int memory = 10;
+  /// Optional diagonal change of variables x = scale ⊙ y (#unknowns, positive; empty:
+  /// none). With scale = diag(H)^-1/2 of the Hessian at the start, L-BFGS sees a
+  /// Jacobi-preconditioned problem: finite element unknowns whose stiffness differs by
+  /// orders of magnitude (a clamped end against a free one, mass against stiffness)
+  /// otherwise stall Luksan's line search. The gradient tolerance still applies to ∇f(x).
+  Eigen::VectorXd scale;
 };
 
 enum class LbfgsStatus {
