@@ -106,7 +106,7 @@ inline TabulatedFaces grid_faces(int n, const std::vector<int>& cell_sizes, int 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        for (const Eigen::Vector3i step : {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, 0, 1)}) {
+        for (const Eigen::Vector3i& step : {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, 0, 1)}) {
           const Eigen::Vector3i other = Eigen::Vector3i(i, j, k) + step;
           if (other.maxCoeff() >= n) continue;
           const int minus = cell(i, j, k), plus = cell(other.x(), other.y(), other.z());
