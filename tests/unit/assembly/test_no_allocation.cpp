@@ -12,6 +12,8 @@
 #include <new>
 
 #include "tests/unit/assembly/assembly_fixture.hpp"
+#include "tests/unit/assembly/face_fixture.hpp"
+#include "tests/unit/assembly/face_term.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t size);
@@ -144,6 +146,39 @@ TEST_P(SecondAssembly, AllocatesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(ElasticAssembler, SecondAssembly, ::testing::Values(ElementType::tet10, ElementType::hex20),
                          [](const auto& info) { return std::string(element_name(info.param)); });
+
+
+TEST(FaceAssembler, SecondAssemblyAllocatesNothing) {
+  // Faces of 8 and 20 functions (fixed-size paths) and 14 (the dynamic path), enough
+  // per colour for parallel regions, with a non-quadratic kernel.
+  const TabulatedFaces faces = test::grid_faces(8, test::random_cell_sizes(512, {4, 10}, 3), 4, 5);
+  int sizes_seen[21] = {};
+  for (int f = 0; f < faces.size(); ++f) ++sizes_seen[faces[f].basis_count()];
+  ASSERT_GT(sizes_seen[8], 0);
+  ASSERT_GT(sizes_seen[14], 0);
+  ASSERT_GT(sizes_seen[20], 0);
+  const test::FaceTerm<test::QuarticJumpKernel> term(faces, test::QuarticJumpKernel());
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(term.dof_count(), -0.5, 0.5);
+  SparseMatrix hessian = term.sparsity.pattern();
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(term.dof_count());
+  term.assembler.add_hessian(u, hessian);  // warm-up: sizes the scratch, starts the OpenMP pool
+  term.assembler.add_gradient(u, gradient);
+
+  operator_news = 0;
+  mallocs = 0;
+  counting = true;
+  term.assembler.add_hessian(u, hessian);
+  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
+  term.assembler.add_gradient(u, gradient);
+  const double energy = term.assembler.energy(u);
+  counting = false;
+  EXPECT_EQ(hessian_news, 0);
+  EXPECT_EQ(hessian_mallocs, 0);
+  EXPECT_EQ(operator_news.load(), 0);
+  EXPECT_EQ(mallocs.load(), 0);
+  EXPECT_GT(gradient.norm(), 0.0);
+  EXPECT_GT(energy, 0.0);
+}
 
 }  // namespace
 }  // namespace altfem
