@@ -5,7 +5,9 @@
 // field continuous across the face.
 #include <gtest/gtest.h>
 
+#include "dg/exact_element_matrices.hpp"
 #include "dg/face_matrices.hpp"
+#include "shared/geometry/polygon_moments.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem::dg {
@@ -106,6 +108,44 @@ TEST_P(BabuskaZlamalOfDegree, AContinuousFieldPaysNoPenalty) {
     for (int d = 0; d < 3; ++d) u.segment<3>(3 * (offset + 1 + d)) = basis->scale() * A.col(d);
   }
   EXPECT_LT((matrix * u).cwiseAbs().maxCoeff(), 1e-12 * matrix.cwiseAbs().maxCoeff());
+}
+
+// Consistency of interior penalty (the reason for its face terms, Kaufmann et al. §3.3):
+// for an affine field u, the same on both elements, and a test function v on the minus
+// element only, the DG form a(u, v) = ∫_K⁻ σ:ε(v) − ∫_f v·σn equals the traction work
+// on the rest of ∂K⁻, ∫_{∂K⁻ \ f} v·σn — integrated here face by face.
+TEST(InteriorPenalty, IsConsistentForAffineFields) {
+  const int degree = 2;
+  Polyhedron box;  // K⁻ = [0,1] × [0,1] × [0,2]
+  box.vertices.resize(8, 3);
+  for (int v = 0; v < 8; ++v) box.vertices.row(v) << (v & 1), ((v >> 1) & 1), 2 * ((v >> 2) & 1);
+  box.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
+  const Eigen::MatrixXd volume = exact_element_matrices(box, minus, lambda, mu, 1.0).stiffness;
+  const Eigen::MatrixXd face = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,
+                                                 penalty, Flux::interior_penalty);
+  Eigen::Matrix3d A;
+  A << 0.1, 0.2, -0.1, 0.05, 0.3, 0.2, -0.2, 0.1, 0.4;
+  const Eigen::Matrix3d strain = (A + A.transpose()) / 2;
+  const Eigen::Matrix3d stress = 2 * mu * strain + lambda * strain.trace() * Eigen::Matrix3d::Identity();
+  const int n = minus.size();
+  Eigen::VectorXd u = Eigen::VectorXd::Zero(6 * n);
+  for (const auto& [basis, offset] : {std::pair{&minus, 0}, std::pair{&plus, n}}) {
+    u.segment<3>(3 * offset) = A * basis->centre();
+    for (int d = 0; d < 3; ++d) u.segment<3>(3 * (offset + 1 + d)) = basis->scale() * A.col(d);
+  }
+  const Eigen::VectorXd residual = volume * u.head(3 * n) + (face * u).head(3 * n);
+
+  Eigen::VectorXd expected = Eigen::VectorXd::Zero(3 * n);
+  for (size_t f = 0; f < box.faces.size(); ++f) {
+    if (f == 5) continue;  // {1, 3, 7, 5} is the shared face x = 1
+    Eigen::MatrixXd polygon(4, 3);
+    for (int k = 0; k < 4; ++k) polygon.row(k) = box.vertices.row(box.faces[f][k]);
+    const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
+    const Eigen::VectorXd integrals = planar_polygon_moments(polygon, degree, minus.centre(), minus.scale());
+    for (int a = 0; a < n; ++a) expected.segment<3>(3 * a) += integrals[a] * (stress * normal);
+  }
+  EXPECT_LT((residual - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
 }
 
 INSTANTIATE_TEST_SUITE_P(ExactFaceMatrices, BabuskaZlamalOfDegree, ::testing::Values(1, 2, 3));
