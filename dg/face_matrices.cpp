@@ -1,52 +1,8 @@
 #include "dg/face_matrices.hpp"
 
-#include "shared/geometry/monomial_shift.hpp"
-#include "shared/geometry/polygon_moments.hpp"
+#include "dg/face_polynomials.hpp"
 
 namespace altfem::dg {
-
-namespace {
-
-using Exponent = Eigen::Matrix<int, 1, 3>;
-
-// A polynomial in ξ = (x − c)/h of the minus element's frame, as coefficients over
-// monomial_index up to `degree`.
-using Polynomial = Eigen::VectorXd;
-
-// Each function of `basis` (and each of its partial derivatives ∂/∂x_d, d = 0..2) as a
-// polynomial in the frame (centre, scale). The change of frame is what shift_moments
-// computes for moments: (offset + ratio ξ)^α = Σ_β S(α, β) ξ^β, read off column by
-// column from unit "moments".
-struct FunctionsInFrame {
-  std::vector<Polynomial> values;                    // #functions
-  std::vector<std::array<Polynomial, 3>> gradients;  // #functions × 3
-};
-
-FunctionsInFrame in_frame(const MonomialBasis& basis, const Eigen::Vector3d& centre, double scale, int degree) {
-  const int count = monomial_count(degree);
-  const Eigen::Vector3d offset = (centre - basis.centre()) / basis.scale();
-  const double ratio = scale / basis.scale();
-  Eigen::MatrixXd S(count, count);  // S(α, β): row α = basis monomial, column β = frame monomial
-  for (int beta = 0; beta < count; ++beta)
-    S.col(beta) = shift_moments(Eigen::VectorXd::Unit(count, beta), degree, offset, ratio);
-  FunctionsInFrame functions;
-  const auto& exponents = basis.exponents();
-  for (int a = 0; a < basis.size(); ++a) {
-    functions.values.push_back(S.row(monomial_index(Exponent(exponents.row(a)))).transpose());
-    std::array<Polynomial, 3> gradient;
-    for (int d = 0; d < 3; ++d) {
-      gradient[d] = Polynomial::Zero(count);
-      if (exponents(a, d) == 0) continue;
-      Exponent lowered = exponents.row(a);
-      --lowered(d);
-      gradient[d] = exponents(a, d) / basis.scale() * S.row(monomial_index(lowered)).transpose();
-    }
-    functions.gradients.push_back(gradient);
-  }
-  return functions;
-}
-
-}  // namespace
 
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                   const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
@@ -54,18 +10,8 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
   const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
   const Eigen::Vector3d centre = minus.centre();
   const double scale = minus.scale();
-  // ∫_f ξ^γ dA for |γ| ≤ 2·degree in the minus frame.
-  const Eigen::VectorXd moments = planar_polygon_moments(polygon, 2 * degree, centre, scale);
-  const Eigen::Matrix<int, Eigen::Dynamic, 3> exponents = monomial_exponents(degree);
-  const auto integrate = [&](const Polynomial& p, const Polynomial& q) {  // ∫_f p q dA
-    double total = 0;
-    for (Eigen::Index i = 0; i < p.size(); ++i) {
-      if (p[i] == 0) continue;
-      for (Eigen::Index j = 0; j < q.size(); ++j)
-        if (q[j] != 0) total += p[i] * q[j] * moments[monomial_index(Exponent(exponents.row(i) + exponents.row(j)))];
-    }
-    return total;
-  };
+  const FaceIntegrals face(polygon, degree, centre, scale);  // in the minus element's frame
+  const auto integrate = [&](const Polynomial& p, const Polynomial& q) { return face.product(p, q); };
 
   // The face's functions: the minus element's, then the plus element's, with the sign
   // of their jump (+1 minus, −1 plus) and the weight of their stress in the average.
