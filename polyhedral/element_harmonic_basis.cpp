@@ -10,6 +10,7 @@
 
 #include "polyhedral/face_harmonic_coordinates.hpp"
 #include "shared/geometry/polygon_moments.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::harmonic {
 
@@ -144,6 +145,15 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   std::vector<FaceHarmonicCoordinates> faces;
   faces.reserve(element.faces.size());
   for (const auto& face : element.faces) faces.emplace_back(face_polygon(element, face), options);
+  boundary_integrals_ = Eigen::MatrixXd::Zero(nodes, 3);
+  for (size_t f = 0; f < element.faces.size(); ++f) {
+    const Eigen::MatrixXd polygon = face_polygon(element, element.faces[f]);
+    const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
+    const PolyhedronRule rule = polygon_rule(polygon, 6);
+    const Eigen::VectorXd integrals = faces[f].evaluate(rule.points).transpose() * rule.weights;  // #face nodes
+    for (size_t k = 0; k < element.faces[f].size(); ++k)
+      boundary_integrals_.row(element.faces[f][k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
+  }
 
   // Kernel centres (eq. (12)), dropped where they land inside the element or closer
   // than half the offset to its boundary (non-convex elements).

@@ -29,6 +29,11 @@ public:
   Eigen::MatrixXd centres() const;
   /// The collocation points' RMS misfit of the boundary data, over all nodes (a fit quality).
   double boundary_residual() const { return boundary_residual_; }
+  /// ∫_∂e b_i n dA per node (#nodes × 3) of the boundary data b_i — the faces' harmonic
+  /// coordinates, which neighbours share — by a strength-6 rule on each face: what
+  /// ∫_e ∇N_i dV must be (divergence theorem), and what the consistency correction of
+  /// harmonic_tabulation makes the quadrature of the gradients give.
+  const Eigen::MatrixXd& boundary_integrals() const { return boundary_integrals_; }
 
 private:
   Eigen::Vector3d origin_;
@@ -36,6 +41,7 @@ private:
   Eigen::MatrixX3d centres_;      // #centres × 3, local (x − origin) / scale
   Eigen::MatrixXd coefficients_;  // (#centres + 4) × #nodes
   double boundary_residual_ = 0;
+  Eigen::MatrixXd boundary_integrals_;  // #nodes × 3
 };
 
 /// Generalised winding number of a closed polyhedron about x (1 inside, 0 outside; by

@@ -62,6 +62,26 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
 
 }  // namespace
 
+PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength) {
+  const QuadratureRule triangle = triangle_rule(strength);
+  std::vector<int> face(static_cast<size_t>(polygon.rows()));
+  for (size_t k = 0; k < face.size(); ++k) face[k] = static_cast<int>(k);
+  const auto triangles = triangulate_face(polygon, face);
+  const auto per_triangle = triangle.weights.size();
+  PolyhedronRule rule{Eigen::MatrixXd(triangles.size() * per_triangle, 3), Eigen::VectorXd(triangles.size() * per_triangle), true};
+  for (size_t t = 0; t < triangles.size(); ++t) {
+    const Eigen::Vector3d a = polygon.row(triangles[t][0]).transpose(), b = polygon.row(triangles[t][1]).transpose(),
+                          c = polygon.row(triangles[t][2]).transpose();
+    const double area_ratio = (b - a).cross(c - a).norm();  // the unit triangle has area ½
+    for (Eigen::Index q = 0; q < per_triangle; ++q) {
+      const Eigen::Index row = static_cast<Eigen::Index>(t) * per_triangle + q;
+      rule.points.row(row) = (a + triangle.points(q, 0) * (b - a) + triangle.points(q, 1) * (c - a)).transpose();
+      rule.weights[row] = triangle.weights[q] * area_ratio;
+    }
+  }
+  return rule;
+}
+
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
   if (polyhedron.faces.empty()) throw std::invalid_argument("polyhedron_rule: the polyhedron has no face");
   const QuadratureRule tet = tet_rule(strength);

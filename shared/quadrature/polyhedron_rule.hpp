@@ -19,6 +19,11 @@ struct PolyhedronRule {
   bool positive = true;    ///< every weight > 0
 };
 
+/// A rule on a planar polygon in 3D (polygon: #vertices × 3, simple, convex or not):
+/// the triangle rule of `strength` on the triangles of its ear clipping. Exact to the
+/// strength; weights positive (they sum to the area).
+PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
+
 /// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid. Throws std::invalid_argument for a polyhedron without faces.
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
 
