@@ -6,17 +6,12 @@
 #include <stdexcept>
 
 #include "shared/solve/explicit_mass.hpp"
+#include "tests/unit/random_vectors.hpp"
 
 namespace altfem {
 namespace {
 
-Eigen::VectorXd random_vector(Eigen::Index size, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (auto& value : v) value = uniform(random);
-  return v;
-}
+using test::random_vector;
 
 TEST(DiagonalMass, MultiplySolveRoundTripAndKineticEnergy) {
   const Eigen::VectorXd diagonal = random_vector(12, 1).array().abs() + 0.1;
