@@ -1,5 +1,5 @@
 #pragma once
-// The `altfem` subcommands (DESIGN.md, "Command line and outputs"). Each returns the
+// The `altfem` subcommands (docs/conventions.md, "Command line and outputs"). Each returns the
 // process exit code; errors are thrown as InputError / NumericalError and turned into
 // exit codes 2 / 3 by main.
 #include <filesystem>

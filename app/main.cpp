@@ -1,5 +1,5 @@
 // altfem: one scene, every method. This file only parses the command line and turns
-// exceptions into the exit codes of DESIGN.md (0 ok, 1 internal, 2 bad input,
+// exceptions into the exit codes of docs/conventions.md (0 ok, 1 internal, 2 bad input,
 // 3 numerical failure), each with a one-line message on stderr.
 #include <CLI/CLI.hpp>
 #include <cstdio>
@@ -30,8 +30,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
-    return code == 0 ? 0 : altfem::exit_bad_input;
+    // --help and --version print and succeed; any other parse error is one line, like
+    // every other error (CLI11 would print its message and a usage hint on two lines).
+    if (error.get_exit_code() == 0) return app.exit(error);
+    std::fprintf(stderr, "altfem: error: %s (see altfem --help)\n", error.what());
+    return altfem::exit_bad_input;
   }
 
   try {

@@ -1,7 +1,6 @@
 #pragma once
 // Hyperelastic energy, internal forces and tangent stiffness of any list of tabulated
-// elements (DESIGN.md: "one assembler turns any list of them plus a Material into
-// energy, gradient and (optionally SPD-projected) Hessian, and mass matrices").
+// elements (docs/architecture.md, "The meeting point").
 //
 // With the displacement u, at each quadrature point F = I + Σ_a u_a ⊗ ∇N_a and
 //   Ψ(u)        = Σ_q w_q ψ(F_q)

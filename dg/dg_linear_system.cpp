@@ -1,0 +1,141 @@
+#include "dg/dg_linear_system.hpp"
+
+#include <Eigen/QR>
+
+#include "dg/exact_element_matrices.hpp"
+#include "dg/face_polynomials.hpp"
+#include "shared/geometry/polygon_moments.hpp"
+#include "shared/geometry/polyhedron_moments.hpp"
+
+namespace altfem::dg {
+
+namespace {
+
+// Centre and size of a cell: its centroid and diameter (Kaufmann et al. §5).
+MonomialBasis cell_basis(const Polyhedron& cell, int degree) {
+  const Eigen::VectorXd first = polyhedron_moments(cell, 1);
+  const Eigen::Vector3d centroid = first.segment<3>(1) / first[0];
+  double diameter = 0;
+  for (Eigen::Index i = 0; i < cell.vertices.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < cell.vertices.rows(); ++j)
+      diameter = std::max(diameter, (cell.vertices.row(i) - cell.vertices.row(j)).norm());
+  return MonomialBasis(degree, centroid, diameter);
+}
+
+void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
+               const std::vector<int>& dofs) {
+  for (Eigen::Index i = 0; i < block.rows(); ++i)
+    for (Eigen::Index j = 0; j < block.cols(); ++j)
+      if (block(i, j) != 0) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+}
+
+}  // namespace
+
+DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings)
+    : cells_(std::move(cells)), faces_(std::move(faces)), settings_(settings) {
+  offsets_.push_back(0);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const Polyhedron& cell : cells_) {
+    bases_.push_back(cell_basis(cell, settings.degree));
+    const ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, 1.0);
+    volumes_.push_back(matrices.integrals[0]);
+    integrals_.push_back(matrices.integrals);
+    std::vector<int> dofs;
+    for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
+    add_block(triplets, matrices.stiffness, dofs);
+    offsets_.push_back(offsets_.back() + bases_.back().size());
+  }
+  for (const DgFace& face : faces_) {
+    if (face.plus < 0 && !face.dirichlet) continue;  // a free boundary: no face term
+    const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
+    const Eigen::MatrixXd matrix = exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
+                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux);
+    std::vector<int> dofs;
+    for (int side : {face.minus, face.plus}) {
+      if (side < 0) continue;
+      for (int k = 0; k < 3 * bases_[side].size(); ++k) dofs.push_back(3 * offsets_[side] + k);
+    }
+    add_block(triplets, matrix, dofs);
+  }
+  stiffness_.resize(dof_count(), dof_count());
+  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+double DgLinearSystem::face_penalty(const DgFace& face) const {
+  const double area = (face.polygon.rows() >= 3) ? polygon_area_vector(face.polygon).norm() : 0.0;
+  double inverse_volumes = 1.0 / volumes_[face.minus];
+  if (face.plus >= 0) inverse_volumes += 1.0 / volumes_[face.plus];
+  return settings_.penalty * area * inverse_volumes;  // eq. (20)
+}
+
+Eigen::VectorXd DgLinearSystem::body_load(const Eigen::Vector3d& force_density) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+  for (size_t c = 0; c < cells_.size(); ++c)
+    for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) = integrals_[c][a] * force_density;
+  return load;
+}
+
+Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
+  Eigen::VectorXd coefficients(dof_count());
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const MonomialBasis& basis = bases_[c];
+    // Collocation on a (k+2)³ grid of the frame's [-¼, ¼]³: exact for fields in P_k.
+    const int per_axis = basis.degree() + 2;
+    const int points = per_axis * per_axis * per_axis;
+    Eigen::MatrixXd system(points, basis.size()), values(points, 3);
+    Eigen::VectorXd phi;
+    Eigen::MatrixXd unused;
+    int row = 0;
+    for (int i = 0; i < per_axis; ++i)
+      for (int j = 0; j < per_axis; ++j)
+        for (int k = 0; k < per_axis; ++k, ++row) {
+          const Eigen::Vector3d xi = (Eigen::Vector3d(i, j, k) / (per_axis - 1)).array() * 0.5 - 0.25;
+          const Eigen::Vector3d x = basis.centre() + basis.scale() * xi;
+          basis.evaluate(x, phi, unused);
+          system.row(row) = phi.transpose();
+          values.row(row) = field(x).transpose();
+        }
+    const Eigen::MatrixXd solution = system.colPivHouseholderQr().solve(values);  // #functions × 3
+    for (int a = 0; a < basis.size(); ++a) coefficients.segment<3>(3 * (offsets_[c] + a)) = solution.row(a).transpose();
+  }
+  return coefficients;
+}
+
+Eigen::VectorXd DgLinearSystem::dirichlet_load(const VectorField& data) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+  const Eigen::VectorXd coefficients = interpolate(data);
+  for (const DgFace& face : faces_) {
+    if (face.plus >= 0 || !face.dirichlet) continue;
+    const MonomialBasis& basis = bases_[face.minus];
+    const int degree = basis.degree();
+    const FaceIntegrals integrals(face.polygon, degree, basis.centre(), basis.scale());
+    const FunctionsInFrame functions = in_frame(basis, basis.centre(), basis.scale(), degree);
+    // g_k as a polynomial in the cell's frame: the cell's own coefficients of the data.
+    std::array<Polynomial, 3> data_polynomial;
+    for (int k = 0; k < 3; ++k) {
+      data_polynomial[k] = Polynomial::Zero(basis.size());
+      for (int a = 0; a < basis.size(); ++a) data_polynomial[k] += coefficients[3 * (offset(face.minus) + a) + k] * functions.values[a];
+    }
+    const double penalty = face_penalty(face);
+    const Eigen::Vector3d& n = face.normal;
+    for (int a = 0; a < basis.size(); ++a) {
+      Eigen::Matrix3d g_gradient;  // (k, d): ∫ g_k ∂_d φ_a
+      Eigen::Vector3d g_value;     // k: ∫ g_k φ_a
+      for (int k = 0; k < 3; ++k) {
+        g_value[k] = integrals.product(data_polynomial[k], functions.values[a]);
+        for (int d = 0; d < 3; ++d) g_gradient(k, d) = integrals.product(data_polynomial[k], functions.gradients[a][d]);
+      }
+      for (int i = 0; i < 3; ++i) {
+        double entry = penalty * g_value[i];
+        // −∫ g·σ(φ_a e_i)n with (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
+        if (settings_.flux == Flux::interior_penalty)
+          entry -= settings_.mu * g_gradient.row(i).dot(n) + settings_.mu * n[i] * g_gradient.trace() +
+                   settings_.lambda * n.dot(g_gradient.col(i));
+        load[3 * (offset(face.minus) + a) + i] += entry;
+      }
+    }
+  }
+  return load;
+}
+
+}  // namespace altfem::dg
