@@ -51,6 +51,24 @@ inline TabulatedFaces two_cube_face(int strength) {
   return faces;
 }
 
+/// Appends cube 0's boundary face x = 0 (minus: cube 0, no plus side, normal −e_x),
+/// basis 0..3: with a jump penalty, a weak clamp u = 0.
+inline void add_clamped_face(TabulatedFaces& faces, int strength) {
+  const QuadratureRule rule = quad_rule(strength);
+  const auto points = rule.weights.size();
+  std::vector<int> basis{0, 1, 2, 3};
+  std::vector<double> weights(points);
+  Eigen::MatrixXd normals(points, 3), minus(points, 4), plus = Eigen::MatrixXd::Zero(points, 4);
+  Eigen::MatrixXd gradients_minus(points * 4, 3), gradients_plus = Eigen::MatrixXd::Zero(points * 4, 3);
+  for (Eigen::Index q = 0; q < points; ++q) {
+    weights[q] = rule.weights[q] / 4;
+    normals.row(q) << -1, 0, 0;
+    minus.row(q) = monomials(0, Eigen::Vector3d(0.0, 0.5 + rule.points(q, 0) / 2, 0.5 + rule.points(q, 1) / 2)).transpose();
+    gradients_minus.block<4, 3>(4 * q, 0) = monomial_gradients();
+  }
+  faces.add(basis, weights, normals, minus, plus, gradients_minus, gradients_plus, 0, -1);
+}
+
 /// The two cubes as volume elements (hex_rule(strength) mapped onto each cube).
 inline TabulatedElements two_cube_elements(int strength) {
   const QuadratureRule rule = hex_rule(strength);

@@ -10,6 +10,7 @@
 
 #include "tests/unit/assembly/face_fixture.hpp"
 #include "tests/unit/assembly/face_term.hpp"
+#include "tests/unit/random_vectors.hpp"
 
 namespace altfem {
 namespace {
@@ -29,13 +30,7 @@ double jump_product_integral(int a, int b) {
   return traces[a].c * traces[b].c + (traces[a].d * traces[b].d + traces[a].e * traces[b].e) / 12;
 }
 
-Eigen::VectorXd random_vector(Eigen::Index size, unsigned seed) {
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-  Eigen::VectorXd v(size);
-  for (auto& value : v) value = uniform(random);
-  return v;
-}
+using test::random_vector;
 
 TEST(FaceAssembler, JumpPenaltyBetweenTwoCubesMatchesHandComputation) {
   const TabulatedFaces faces = test::two_cube_face(3);
