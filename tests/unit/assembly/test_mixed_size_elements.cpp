@@ -13,6 +13,7 @@
 
 #include "shared/assembly/elastic_assembler.hpp"
 #include "shared/material/material.hpp"
+#include "tests/unit/assembly/assembly_fixture.hpp"
 
 namespace altfem {
 namespace {
@@ -100,21 +101,9 @@ TEST(MixedSizeElements, EnergyGradientHessianAndLoadMatchDenseReferenceAndFinite
   EXPECT_LT((gradient - reference.gradient).norm(), 1e-12 * reference.gradient.norm());
   EXPECT_LT((dense - reference.hessian).norm(), 1e-12 * reference.hessian.norm());
 
-  const double step = 1e-6;
-  Eigen::VectorXd shifted = u, plus, minus;
-  Eigen::MatrixXd difference_hessian(u.size(), u.size());
-  Eigen::VectorXd difference_gradient(u.size());
-  for (Eigen::Index i = 0; i < u.size(); ++i) {
-    shifted[i] = u[i] + step;
-    const double energy_plus = assembler.energy(shifted);
-    assembler.gradient(shifted, plus);
-    shifted[i] = u[i] - step;
-    const double energy_minus = assembler.energy(shifted);
-    assembler.gradient(shifted, minus);
-    shifted[i] = u[i];
-    difference_gradient[i] = (energy_plus - energy_minus) / (2 * step);
-    difference_hessian.col(i) = (plus - minus) / (2 * step);
-  }
+  const test::FiniteDifferences differences = test::central_differences(assembler, u, 1e-6);
+  const Eigen::VectorXd& difference_gradient = differences.gradient;
+  const Eigen::MatrixXd& difference_hessian = differences.hessian;
   EXPECT_LT((difference_gradient - gradient).norm(), 1e-6 * gradient.norm());
   EXPECT_LT((difference_hessian - dense).norm(), 1e-6 * dense.norm());
 

@@ -116,6 +116,22 @@ TEST(CountingAllocator, SeesOperatorNewAndEigenMalloc) {
   EXPECT_EQ(vector.size(), 100);
 }
 
+// Counts the allocations of a Hessian assembly and then of the rest, and expects none.
+template <typename Hessian, typename Rest>
+void expect_no_allocation(Hessian&& hessian, Rest&& rest) {
+  operator_news = 0;
+  mallocs = 0;
+  counting = true;
+  hessian();
+  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
+  rest();
+  counting = false;
+  EXPECT_EQ(hessian_news, 0);
+  EXPECT_EQ(hessian_mallocs, 0);
+  EXPECT_EQ(operator_news.load(), 0);
+  EXPECT_EQ(mallocs.load(), 0);
+}
+
 class SecondAssembly : public ::testing::TestWithParam<ElementType> {};
 
 TEST_P(SecondAssembly, AllocatesNothing) {
@@ -128,18 +144,12 @@ TEST_P(SecondAssembly, AllocatesNothing) {
   assembler.hessian(u, hessian);  // warm-up: sizes the gradient, starts the OpenMP pool
   assembler.gradient(u, gradient);
 
-  operator_news = 0;
-  mallocs = 0;
-  counting = true;
-  assembler.hessian(u, hessian);
-  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
-  assembler.gradient(u, gradient);
-  const double energy = assembler.energy(u);
-  counting = false;
-  EXPECT_EQ(hessian_news, 0);
-  EXPECT_EQ(hessian_mallocs, 0);
-  EXPECT_EQ(operator_news.load(), 0);
-  EXPECT_EQ(mallocs.load(), 0);
+  double energy = 0;
+  expect_no_allocation([&] { assembler.hessian(u, hessian); },
+                       [&] {
+                         assembler.gradient(u, gradient);
+                         energy = assembler.energy(u);
+                       });
   EXPECT_GT(gradient.norm(), 0.0);
   EXPECT_GT(energy, 0.0);
 }
@@ -163,18 +173,12 @@ TEST(FaceAssembler, SecondAssemblyAllocatesNothing) {
   term.assembler.add_hessian(u, hessian);  // warm-up: sizes the scratch, starts the OpenMP pool
   term.assembler.add_gradient(u, gradient);
 
-  operator_news = 0;
-  mallocs = 0;
-  counting = true;
-  term.assembler.add_hessian(u, hessian);
-  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
-  term.assembler.add_gradient(u, gradient);
-  const double energy = term.assembler.energy(u);
-  counting = false;
-  EXPECT_EQ(hessian_news, 0);
-  EXPECT_EQ(hessian_mallocs, 0);
-  EXPECT_EQ(operator_news.load(), 0);
-  EXPECT_EQ(mallocs.load(), 0);
+  double energy = 0;
+  expect_no_allocation([&] { term.assembler.add_hessian(u, hessian); },
+                       [&] {
+                         term.assembler.add_gradient(u, gradient);
+                         energy = term.assembler.energy(u);
+                       });
   EXPECT_GT(gradient.norm(), 0.0);
   EXPECT_GT(energy, 0.0);
 }

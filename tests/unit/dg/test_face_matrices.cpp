@@ -8,6 +8,7 @@
 #include "dg/exact_element_matrices.hpp"
 #include "dg/face_matrices.hpp"
 #include "shared/geometry/polygon_moments.hpp"
+#include "tests/unit/polyhedra.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem::dg {
@@ -116,10 +117,7 @@ TEST_P(BabuskaZlamalOfDegree, AContinuousFieldPaysNoPenalty) {
 // on the rest of ∂K⁻, ∫_{∂K⁻ \ f} v·σn — integrated here face by face.
 TEST(InteriorPenalty, IsConsistentForAffineFields) {
   const int degree = 2;
-  Polyhedron box;  // K⁻ = [0,1] × [0,1] × [0,2]
-  box.vertices.resize(8, 3);
-  for (int v = 0; v < 8; ++v) box.vertices.row(v) << (v & 1), ((v >> 1) & 1), 2 * ((v >> 2) & 1);
-  box.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
+  const Polyhedron box = test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 2));  // K⁻
   const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
   const Eigen::MatrixXd volume = exact_element_matrices(box, minus, lambda, mu, 1.0).stiffness;
   const Eigen::MatrixXd face = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,

@@ -12,17 +12,15 @@
 
 #include "polyhedral/element_harmonic_basis.hpp"
 #include "polyhedral/face_harmonic_coordinates.hpp"
+#include "tests/unit/polyhedra.hpp"
 
 namespace altfem::harmonic {
 namespace {
 
-Polyhedron unit_cube() {
-  Polyhedron cube;
-  cube.vertices.resize(8, 3);
-  for (int v = 0; v < 8; ++v) cube.vertices.row(v) << (v & 1), ((v >> 1) & 1), ((v >> 2) & 1);
-  cube.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
-  return cube;
-}
+using test::l_prism;
+
+Polyhedron unit_cube() { return test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()); }
+
 
 Polyhedron tetrahedron() {
   Polyhedron tet;
@@ -32,19 +30,6 @@ Polyhedron tetrahedron() {
   return tet;
 }
 
-// An L-shaped prism: non-convex, with a non-convex hexagonal top and bottom.
-Polyhedron l_prism() {
-  const double corners[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-  Polyhedron prism;
-  prism.vertices.resize(12, 3);
-  for (int k = 0; k < 6; ++k) {
-    prism.vertices.row(k) << corners[k][0], corners[k][1], 0;
-    prism.vertices.row(k + 6) << corners[k][0], corners[k][1], 0.7;
-  }
-  prism.faces = {{5, 4, 3, 2, 1, 0}, {6, 7, 8, 9, 10, 11}};
-  for (int k = 0; k < 6; ++k) prism.faces.push_back({k, (k + 1) % 6, (k + 1) % 6 + 6, k + 6});
-  return prism;
-}
 
 // Random points with winding number ≈ 1 (#points × 3).
 Eigen::MatrixXd interior_points(const Polyhedron& polyhedron, int count, unsigned seed) {

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "polyhedral/harmonic_tabulation.hpp"
+#include "tests/unit/polyhedra.hpp"
 
 namespace altfem::harmonic {
 namespace {
@@ -20,15 +21,12 @@ double centre_ghost_force(bool consistent, int strength) {
   std::map<int, Eigen::Vector3d> forces;  // global node (i + 3j + 9k) → force
   for (int cell = 0; cell < 8; ++cell) {
     const Eigen::Vector3i origin(cell & 1, (cell >> 1) & 1, (cell >> 2) & 1);
-    Polyhedron cube;
-    cube.vertices.resize(8, 3);
+    const Polyhedron cube = test::box(origin.cast<double>(), (origin + Eigen::Vector3i::Ones()).cast<double>());
     std::vector<int> global(8);
     for (int v = 0; v < 8; ++v) {
       const Eigen::Vector3i corner = origin + Eigen::Vector3i(v & 1, (v >> 1) & 1, (v >> 2) & 1);
-      cube.vertices.row(v) = corner.cast<double>().transpose();
       global[v] = corner.x() + 3 * corner.y() + 9 * corner.z();
     }
-    cube.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
     const ElementHarmonicBasis basis(cube, {});
     const HarmonicTabulation tabulation = tabulate_harmonic_element(basis, polyhedron_rule(cube, strength), consistent);
     for (Eigen::Index q = 0; q < tabulation.weights.size(); ++q)
@@ -56,15 +54,7 @@ TEST(HarmonicPatchTest, ConsistencyCorrectionRemovesGhostForces) {
 
 TEST(HarmonicPatchTest, CorrectedGradientsStillReproduceLinearFields) {
   // Σ_i x_i ⊗ (∇N_i + c_i) = I at every point of a non-convex L-prism.
-  const double corners[6][2] = {{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}};
-  Polyhedron prism;
-  prism.vertices.resize(12, 3);
-  for (int k = 0; k < 6; ++k) {
-    prism.vertices.row(k) << corners[k][0], corners[k][1], 0;
-    prism.vertices.row(k + 6) << corners[k][0], corners[k][1], 0.7;
-  }
-  prism.faces = {{5, 4, 3, 2, 1, 0}, {6, 7, 8, 9, 10, 11}};
-  for (int k = 0; k < 6; ++k) prism.faces.push_back({k, (k + 1) % 6, (k + 1) % 6 + 6, k + 6});
+  const Polyhedron prism = test::l_prism();
   const ElementHarmonicBasis basis(prism, {});
   const HarmonicTabulation tabulation = tabulate_harmonic_element(basis, polyhedron_rule(prism, 3), true);
   for (Eigen::Index q = 0; q < tabulation.weights.size(); ++q) {

@@ -7,26 +7,11 @@
 #include "shared/geometry/monomial_index.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
+#include "tests/unit/polyhedra.hpp"
 
 namespace altfem {
 namespace {
 
-// A prism of height 0.7 over a counter-clockwise polygon in the plane z = 0.
-Polyhedron prism(const std::vector<Eigen::Vector2d>& outline) {
-  const int n = static_cast<int>(outline.size());
-  Polyhedron result;
-  result.vertices.resize(2 * n, 3);
-  std::vector<int> bottom, top;
-  for (int k = 0; k < n; ++k) {
-    result.vertices.row(k) << outline[k].x(), outline[k].y(), 0;
-    result.vertices.row(k + n) << outline[k].x(), outline[k].y(), 0.7;
-    bottom.insert(bottom.begin(), k);
-    top.push_back(k + n);
-  }
-  result.faces = {bottom, top};
-  for (int k = 0; k < n; ++k) result.faces.push_back({k, (k + 1) % n, (k + 1) % n + n, k + n});
-  return result;
-}
 
 void expect_exact(const Polyhedron& polyhedron, int strength) {
   const PolyhedronRule rule = polyhedron_rule(polyhedron, strength);
@@ -45,20 +30,20 @@ void expect_exact(const Polyhedron& polyhedron, int strength) {
 }
 
 TEST(PolyhedronRule, ConvexCellIsExactWithPositiveWeights) {
-  const Polyhedron cube = prism({{0, 0}, {1.3, 0}, {1.3, 1}, {0, 1}});
+  const Polyhedron cube = test::prism({{0, 0}, {1.3, 0}, {1.3, 1}, {0, 1}}, 0.7);
   for (int strength : {1, 3, 6}) expect_exact(cube, strength);
   EXPECT_TRUE(polyhedron_rule(cube, 3).positive);
 }
 
 TEST(PolyhedronRule, StarShapedNonConvexCellIsExactWithPositiveWeights) {
-  const Polyhedron l_prism = prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
+  const Polyhedron l_prism = test::l_prism();
   for (int strength : {1, 4}) expect_exact(l_prism, strength);
   EXPECT_TRUE(polyhedron_rule(l_prism, 4).positive);
 }
 
 TEST(PolyhedronRule, CellThatIsNotStarShapedIsStillExact) {
   // A thin U: its vertex mean lies in the gap, outside the cell.
-  const Polyhedron u_prism = prism({{0, 0}, {3, 0}, {3, 3}, {2.8, 3}, {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}});
+  const Polyhedron u_prism = test::prism({{0, 0}, {3, 0}, {3, 3}, {2.8, 3}, {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}}, 0.7);
   for (int strength : {2, 5}) expect_exact(u_prism, strength);
   EXPECT_FALSE(polyhedron_rule(u_prism, 2).positive);
 }
