@@ -1,11 +1,12 @@
 #include "dg/dg_linear_system.hpp"
 
 #include <Eigen/QR>
+#include <cmath>
 
 #include "dg/exact_element_matrices.hpp"
-#include "dg/face_polynomials.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
 
@@ -39,7 +40,6 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     bases_.push_back(cell_basis(cell, settings.degree));
     const ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, 1.0);
     volumes_.push_back(matrices.integrals[0]);
-    integrals_.push_back(matrices.integrals);
     std::vector<int> dofs;
     for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
     add_block(triplets, matrices.stiffness, dofs);
@@ -68,11 +68,37 @@ double DgLinearSystem::face_penalty(const DgFace& face) const {
   return settings_.penalty * area * inverse_volumes;  // eq. (20)
 }
 
-Eigen::VectorXd DgLinearSystem::body_load(const Eigen::Vector3d& force_density) const {
+Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
-  for (size_t c = 0; c < cells_.size(); ++c)
-    for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) = integrals_[c][a] * force_density;
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd unused;
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 2);
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      bases_[c].evaluate(x, phi, unused);
+      const Eigen::Vector3d f = rule.weights[q] * force_density(x);
+      for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
+    }
+  }
   return load;
+}
+
+double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const {
+  double squared = 0;
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd unused;
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 4);
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      bases_[c].evaluate(x, phi, unused);
+      Eigen::Vector3d value = Eigen::Vector3d::Zero();
+      for (int a = 0; a < bases_[c].size(); ++a) value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
+      squared += rule.weights[q] * (value - field(x)).squaredNorm();
+    }
+  }
+  return std::sqrt(squared);
 }
 
 Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
@@ -103,35 +129,26 @@ Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
 
 Eigen::VectorXd DgLinearSystem::dirichlet_load(const VectorField& data) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
-  const Eigen::VectorXd coefficients = interpolate(data);
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd gradients;
   for (const DgFace& face : faces_) {
     if (face.plus >= 0 || !face.dirichlet) continue;
     const MonomialBasis& basis = bases_[face.minus];
-    const int degree = basis.degree();
-    const FaceIntegrals integrals(face.polygon, degree, basis.centre(), basis.scale());
-    const FunctionsInFrame functions = in_frame(basis, basis.centre(), basis.scale(), degree);
-    // g_k as a polynomial in the cell's frame: the cell's own coefficients of the data.
-    std::array<Polynomial, 3> data_polynomial;
-    for (int k = 0; k < 3; ++k) {
-      data_polynomial[k] = Polynomial::Zero(basis.size());
-      for (int a = 0; a < basis.size(); ++a) data_polynomial[k] += coefficients[3 * (offset(face.minus) + a) + k] * functions.values[a];
-    }
+    const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
     const double penalty = face_penalty(face);
     const Eigen::Vector3d& n = face.normal;
-    for (int a = 0; a < basis.size(); ++a) {
-      Eigen::Matrix3d g_gradient;  // (k, d): ∫ g_k ∂_d φ_a
-      Eigen::Vector3d g_value;     // k: ∫ g_k φ_a
-      for (int k = 0; k < 3; ++k) {
-        g_value[k] = integrals.product(data_polynomial[k], functions.values[a]);
-        for (int d = 0; d < 3; ++d) g_gradient(k, d) = integrals.product(data_polynomial[k], functions.gradients[a][d]);
-      }
-      for (int i = 0; i < 3; ++i) {
-        double entry = penalty * g_value[i];
-        // −∫ g·σ(φ_a e_i)n with (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      const Eigen::Vector3d g = data(x);
+      basis.evaluate(x, phi, gradients);
+      for (int a = 0; a < basis.size(); ++a) {
+        // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
+        // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
+        const Eigen::Vector3d grad = gradients.row(a).transpose();
+        Eigen::Vector3d entry = penalty * phi[a] * g;
         if (settings_.flux == Flux::interior_penalty)
-          entry -= settings_.mu * g_gradient.row(i).dot(n) + settings_.mu * n[i] * g_gradient.trace() +
-                   settings_.lambda * n.dot(g_gradient.col(i));
-        load[3 * (offset(face.minus) + a) + i] += entry;
+          entry -= settings_.mu * (grad.dot(n) * g + g.dot(grad) * n) + settings_.lambda * g.dot(n) * grad;
+        load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
       }
     }
   }

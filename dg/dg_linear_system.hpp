@@ -41,11 +41,14 @@ public:
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
 
-  /// ∫ f·v for a constant force density f.
-  Eigen::VectorXd body_load(const Eigen::Vector3d& force_density) const;
-  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, for data g
-  /// that is a polynomial of degree ≤ the basis degree (exact then).
+  /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
+  /// polynomial f of degree ≤ k + 2).
+  Eigen::VectorXd body_load(const VectorField& force_density) const;
+  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, by a rule of
+  /// strength 2k + 2 on each face (exact for polynomial data of degree ≤ k + 3).
   Eigen::VectorXd dirichlet_load(const VectorField& data) const;
+  /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
+  double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
   /// collocation at points of each cell's frame.
   Eigen::VectorXd interpolate(const VectorField& field) const;
@@ -58,7 +61,6 @@ private:
   DgSettings settings_;
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
-  std::vector<Eigen::VectorXd> integrals_;  // per cell: ∫ φ_a
   std::vector<int> offsets_;                // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
 };
