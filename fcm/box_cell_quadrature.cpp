@@ -33,7 +33,8 @@ CellQuadratureSource box_cell_quadrature(const VolumeMesh& grid, const Eigen::Al
     throw std::invalid_argument("box_cell_quadrature: needs a hexahedral grid");
   std::vector<Eigen::AlignedBox3d> boxes;
   for (Eigen::Index cell = 0; cell < grid.cells.rows(); ++cell) boxes.push_back(cell_box(grid, cell));
-  return [boxes, body](int strength) {
+  // A box's tensor rule is already as small as exactness allows: nothing to simplify.
+  return [boxes, body](int strength, RulePurpose) {
     const QuadratureRule tensor = tensor_hex_rule(strength);
     std::vector<CellQuadrature> cells(boxes.size());
     for (size_t c = 0; c < boxes.size(); ++c) {

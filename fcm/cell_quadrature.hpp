@@ -16,8 +16,11 @@ struct CellQuadrature {
   std::optional<QuadratureRule> rule;  ///< cut cells only: the rule of K ∩ Ω (reference coordinates)
 };
 
-/// The cells' quadrature for a polynomial strength, one entry per background cell: the
-/// FCM asks for the stiffness strength and, separately, for the higher mass strength.
-using CellQuadratureSource = std::function<std::vector<CellQuadrature>(int strength)>;
+/// What a set of rules is for: stiffness rules may be simplified to at most
+/// C(m+3, 3) points (§4.4); mass rules are of a higher strength and never simplified (§6).
+enum class RulePurpose { stiffness, mass };
+
+/// The cells' quadrature for a polynomial strength, one entry per background cell.
+using CellQuadratureSource = std::function<std::vector<CellQuadrature>(int strength, RulePurpose purpose)>;
 
 }  // namespace altfem::fcm

@@ -46,8 +46,8 @@ LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            const Material& material, const std::vector<DirichletCondition>& dirichlet,
                                            const FcmOptions& options, const std::string& scene_file) {
-  const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength);
-  const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength);
+  const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
+  const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
   // Classify the cells and keep those with enough material.
   FcmDiscretization fcm;
