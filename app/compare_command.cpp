@@ -102,11 +102,10 @@ void measure_errors(std::vector<RunRecord>& records, const std::filesystem::path
   };
   try {
     const SurfaceFrame reference_frame = surface_of(*reference);
-    const Eigen::MatrixX3d rest = reference_frame.deformed - reference_frame.displacement;
     for (RunRecord& record : records) {
       if (!record.ok()) continue;
       try {
-        const SurfaceError error = surface_error(surface_of(record).deformed, reference_frame.deformed, rest);
+        const SurfaceError error = surface_error(surface_of(record), reference_frame);
         record.rms_error = error.rms;
         record.max_error = error.max;
       } catch (const std::exception& error) {

@@ -10,6 +10,7 @@ namespace altfem {
 struct SurfaceFrame {
   Eigen::MatrixX3d deformed;      ///< [vertices × 3] deformed positions (the VTU points)
   Eigen::MatrixX3d displacement;  ///< [vertices × 3] the "displacement" point data
+  Eigen::MatrixXi triangles;      ///< [triangles × 3] vertex rows
 };
 
 struct SurfaceError {
@@ -22,10 +23,24 @@ struct SurfaceError {
 /// file if it is not such a file.
 SurfaceFrame read_surface_frame(const std::filesystem::path& file);
 
-/// Error of `deformed` [n × 3] against `reference_deformed` [n × 3], relative to the
-/// bounding-box diagonal of the reference's rest positions `reference_rest` [n × 3].
-/// Throws InputError when the vertex counts differ (not the same embedded surface).
+/// The reference's deformed positions at the rest points `rest_points` [m × 3] of another
+/// run whose embedded surface differs (a shape geometry meshed per run): each point's
+/// closest point on the reference's rest surface, deformed by the reference displacement
+/// interpolated linearly on that triangle. Exact for a point on the reference surface when
+/// the reference displacement is linear on its triangles.
+Eigen::MatrixX3d reference_at(const SurfaceFrame& reference, const Eigen::MatrixX3d& rest_points);
+
+/// The bounding-box diagonal of a frame's rest positions (deformed − displacement).
+double rest_diagonal(const SurfaceFrame& frame);
+
+/// Error of `deformed` [n × 3] against `reference_deformed` [n × 3], relative to `diagonal`.
+/// Throws InputError when the vertex counts differ.
 SurfaceError surface_error(const Eigen::MatrixX3d& deformed, const Eigen::MatrixX3d& reference_deformed,
-                           const Eigen::MatrixX3d& reference_rest);
+                           double diagonal);
+
+/// A run's error against the reference: vertex by vertex on the same embedded surface,
+/// else (a different surface) against reference_at its rest vertices. Relative to the
+/// reference's rest_diagonal.
+SurfaceError surface_error(const SurfaceFrame& run, const SurfaceFrame& reference);
 
 }  // namespace altfem
