@@ -58,6 +58,18 @@ def series_of(rows):
     return groups
 
 
+def finish_error_plot(fig, ax, path, xlabel, title, legend_title):
+    """Labels, grid and legend (outside, so it hides no point) of a log-log error plot; saves it."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("RMS surface error / bounding-box diagonal [-]")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(title=legend_title, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
 def plot_error_vs_time(rows, path):
     fig, ax = plt.subplots(figsize=(9, 5))
     for name, group in sorted(series_of(rows).items()):
@@ -68,14 +80,8 @@ def plot_error_vs_time(rows, path):
               drawstyle="steps-post", label="Pareto front (circled runs:\nnone other is both faster\nand more accurate)")
     ax.scatter([r["total_s"] for r in front], [r["rms_error"] for r in front], s=140, facecolors="none",
                edgecolors="k", zorder=3)
-    ax.set_xlabel("wall time of the run, total [s]")
-    ax.set_ylabel("RMS surface error / bounding-box diagonal [-]")
-    ax.set_title("Accuracy against cost (lower left is better)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(title="method, element", loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    finish_error_plot(fig, ax, path, "wall time of the run, total [s]", "Accuracy against cost (lower left is better)",
+                      "method, element")
 
 
 def fitted_rate(group):
@@ -96,14 +102,8 @@ def plot_error_vs_dofs(rows, path):
         rates[name] = rate
         label = name + (f" (rate {rate:.2f} in h)" if rate is not None else "")
         ax.loglog([r["dofs"] for r in group], [r["rms_error"] for r in group], "o-", label=label)
-    ax.set_xlabel("degrees of freedom [-]")
-    ax.set_ylabel("RMS surface error / bounding-box diagonal [-]")
-    ax.set_title("Convergence: error against DOFs (h ~ DOFs^(-1/3))")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(title="method, element (fitted rate)", loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    finish_error_plot(fig, ax, path, "degrees of freedom [-]", "Convergence: error against DOFs (h ~ DOFs^(-1/3))",
+                      "method, element (fitted rate)")
     return rates
 
 

@@ -3,7 +3,8 @@
 #include <charconv>
 #include <cstdio>
 #include <fstream>
-#include <map>
+#include <algorithm>
+#include <variant>
 #include <sstream>
 
 #include "shared/common/error.hpp"
@@ -12,8 +13,6 @@
 namespace altfem {
 
 namespace {
-
-using Row = std::map<std::string, std::string>;
 
 std::string number_text(double value) {
   if (std::isnan(value)) return "";
@@ -29,21 +28,64 @@ std::string quoted(const std::string& field) {
   return text + "\"";
 }
 
-Row row_of(const RunRecord& r) {
-  const PhaseTimings& t = r.timings;
-  return {{"hash", r.hash}, {"method", r.method}, {"element", r.element}, {"label", r.label},
-          {"overrides", r.overrides}, {"is_reference", r.is_reference ? "1" : "0"}, {"status", r.status},
-          {"exit_code", std::to_string(r.exit_code)}, {"message", r.message}, {"dofs", std::to_string(r.dofs)},
-          {"elements", std::to_string(r.elements)}, {"quadrature_points", std::to_string(r.quadrature_points)},
-          {"steps", std::to_string(r.steps)}, {"newton_iterations", std::to_string(r.newton_iterations)},
-          {"linear_iterations", std::to_string(r.linear_iterations)}, {"setup_s", number_text(t.setup)},
-          {"quadrature_s", number_text(t.quadrature)}, {"assembly_s", number_text(t.assembly)},
-          {"analysis_s", number_text(t.analysis)}, {"factorisation_s", number_text(t.factorisation)},
-          {"solve_s", number_text(t.solve)}, {"total_s", number_text(t.total)},
-          {"wall_s", number_text(r.wall_seconds)}, {"peak_memory_mib", number_text(r.peak_memory_mib)},
-          {"rms_error", number_text(r.rms_error)}, {"max_error", number_text(r.max_error)}, {"scene", r.scene},
-          {"date", r.date}, {"cpu", r.cpu}, {"cores", std::to_string(r.cores)},
-          {"threads", std::to_string(r.threads)}, {"blas", r.blas}};
+// Each column of results.csv and the RunRecord member it holds.
+using Member = std::variant<std::string RunRecord::*, bool RunRecord::*, int RunRecord::*, long long RunRecord::*,
+                            double RunRecord::*, double PhaseTimings::*>;
+
+const std::vector<std::pair<std::string, Member>>& columns() {
+  static const std::vector<std::pair<std::string, Member>> table{
+      {"hash", &RunRecord::hash}, {"method", &RunRecord::method}, {"element", &RunRecord::element},
+      {"label", &RunRecord::label}, {"overrides", &RunRecord::overrides}, {"is_reference", &RunRecord::is_reference},
+      {"status", &RunRecord::status}, {"exit_code", &RunRecord::exit_code}, {"message", &RunRecord::message},
+      {"dofs", &RunRecord::dofs}, {"elements", &RunRecord::elements},
+      {"quadrature_points", &RunRecord::quadrature_points}, {"steps", &RunRecord::steps},
+      {"newton_iterations", &RunRecord::newton_iterations}, {"linear_iterations", &RunRecord::linear_iterations},
+      {"setup_s", &PhaseTimings::setup}, {"quadrature_s", &PhaseTimings::quadrature},
+      {"assembly_s", &PhaseTimings::assembly}, {"analysis_s", &PhaseTimings::analysis},
+      {"factorisation_s", &PhaseTimings::factorisation}, {"solve_s", &PhaseTimings::solve},
+      {"total_s", &PhaseTimings::total}, {"wall_s", &RunRecord::wall_seconds},
+      {"peak_memory_mib", &RunRecord::peak_memory_mib}, {"rms_error", &RunRecord::rms_error},
+      {"max_error", &RunRecord::max_error}, {"scene", &RunRecord::scene}, {"date", &RunRecord::date},
+      {"cpu", &RunRecord::cpu}, {"cores", &RunRecord::cores}, {"threads", &RunRecord::threads},
+      {"blas", &RunRecord::blas}};
+  return table;
+}
+
+template <class... Functions>
+struct Overloaded : Functions... {
+  using Functions::operator()...;
+};
+
+std::string field_text(const RunRecord& record, const Member& member) {
+  return std::visit(Overloaded{[&](std::string RunRecord::*m) { return record.*m; },
+                               [&](bool RunRecord::*m) { return std::string(record.*m ? "1" : "0"); },
+                               [&](int RunRecord::*m) { return std::to_string(record.*m); },
+                               [&](long long RunRecord::*m) { return std::to_string(record.*m); },
+                               [&](double RunRecord::*m) { return number_text(record.*m); },
+                               [&](double PhaseTimings::*m) { return number_text(record.timings.*m); }},
+                    member);
+}
+
+// An empty number field is NaN (an unknown error); anything else must parse whole.
+double parse_number(const std::string& field, const std::string& where, const std::string& column) {
+  if (field.empty()) return std::numeric_limits<double>::quiet_NaN();
+  double value = 0;
+  const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
+  if (error != std::errc() || end != field.data() + field.size())
+    throw InputError(input_message(where, column, "expected a number, got '" + field + "'"));
+  return value;
+}
+
+void set_field(RunRecord& record, const Member& member, const std::string& field, const std::string& where,
+               const std::string& column) {
+  const auto number = [&] { return parse_number(field, where, column); };
+  std::visit(Overloaded{[&](std::string RunRecord::*m) { record.*m = field; },
+                        [&](bool RunRecord::*m) { record.*m = field == "1"; },
+                        [&](int RunRecord::*m) { record.*m = static_cast<int>(number()); },
+                        [&](long long RunRecord::*m) { record.*m = static_cast<long long>(number()); },
+                        [&](double RunRecord::*m) { record.*m = number(); },
+                        [&](double PhaseTimings::*m) { record.timings.*m = number(); }},
+             member);
 }
 
 // The fields of one CSV record starting at `at`; advances `at` past its line end.
@@ -70,50 +112,30 @@ std::vector<std::string> parse_record(const std::string& text, std::size_t& at) 
   return fields;
 }
 
-class RowReader {
-public:
-  RowReader(const Row& row, std::string where) : row_(row), where_(std::move(where)) {}
-  const std::string& text(const std::string& column) const {
-    const auto found = row_.find(column);
-    if (found == row_.end()) throw InputError(input_message(where_, "", "missing column '" + column + "'"));
-    return found->second;
-  }
-  double number(const std::string& column) const {
-    const std::string& field = text(column);
-    if (field.empty()) return std::numeric_limits<double>::quiet_NaN();
-    double value = 0;
-    const auto [end, error] = std::from_chars(field.data(), field.data() + field.size(), value);
-    if (error != std::errc() || end != field.data() + field.size())
-      throw InputError(input_message(where_, column, "expected a number, got '" + field + "'"));
-    return value;
-  }
-  long long integer(const std::string& column) const { return static_cast<long long>(number(column)); }
-
-private:
-  const Row& row_;
-  std::string where_;
-};
-
 }  // namespace
 
 const std::vector<std::string>& result_columns() {
-  static const std::vector<std::string> columns{
-      "hash", "method", "element", "label", "overrides", "is_reference", "status", "exit_code", "message", "dofs",
-      "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations", "setup_s", "quadrature_s",
-      "assembly_s", "analysis_s", "factorisation_s", "solve_s", "total_s", "wall_s", "peak_memory_mib", "rms_error",
-      "max_error", "scene", "date", "cpu", "cores", "threads", "blas"};
-  return columns;
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const auto& [name, member] : columns()) list.push_back(name);
+    return list;
+  }();
+  return names;
 }
 
 void write_results_csv(const std::filesystem::path& file, const std::vector<RunRecord>& records) {
   std::string text;
-  for (const auto& column : result_columns()) text += (text.empty() ? "" : ",") + column;
+  for (const auto& [name, member] : columns()) {
+    if (!text.empty()) text += ',';
+    text += name;
+  }
   text += '\n';
   for (const RunRecord& record : records) {
-    const Row row = row_of(record);
-    std::string line;
-    for (const auto& column : result_columns()) line += (line.empty() ? "" : ",") + quoted(row.at(column));
-    text += line + '\n';
+    for (std::size_t k = 0; k < columns().size(); ++k) {
+      if (k > 0) text += ',';
+      text += quoted(field_text(record, columns()[k].second));
+    }
+    text += '\n';
   }
   write_file_atomically(file, text);
 }
@@ -133,37 +155,12 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
     if (fields.size() != header.size())
       throw InputError(input_message(where, "", "expected " + std::to_string(header.size()) + " fields, got " +
                                                     std::to_string(fields.size())));
-    Row row;
-    for (std::size_t i = 0; i < header.size(); ++i) row[header[i]] = fields[i];
-    const RowReader r(row, where);
     RunRecord record;
-    record.hash = r.text("hash");
-    record.method = r.text("method");
-    record.element = r.text("element");
-    record.label = r.text("label");
-    record.overrides = r.text("overrides");
-    record.is_reference = r.text("is_reference") == "1";
-    record.status = r.text("status");
-    record.exit_code = static_cast<int>(r.integer("exit_code"));
-    record.message = r.text("message");
-    record.dofs = r.integer("dofs");
-    record.elements = r.integer("elements");
-    record.quadrature_points = r.integer("quadrature_points");
-    record.steps = r.integer("steps");
-    record.newton_iterations = r.integer("newton_iterations");
-    record.linear_iterations = r.integer("linear_iterations");
-    record.timings = {r.number("setup_s"), r.number("quadrature_s"), r.number("assembly_s"), r.number("analysis_s"),
-                      r.number("factorisation_s"), r.number("solve_s"), r.number("total_s")};
-    record.wall_seconds = r.number("wall_s");
-    record.peak_memory_mib = r.number("peak_memory_mib");
-    record.rms_error = r.number("rms_error");
-    record.max_error = r.number("max_error");
-    record.scene = r.text("scene");
-    record.date = r.text("date");
-    record.cpu = r.text("cpu");
-    record.cores = static_cast<int>(r.integer("cores"));
-    record.threads = static_cast<int>(r.integer("threads"));
-    record.blas = r.text("blas");
+    for (const auto& [name, member] : columns()) {
+      const auto found = std::find(header.begin(), header.end(), name);
+      if (found == header.end()) throw InputError(input_message(where, "", "missing column '" + name + "'"));
+      set_field(record, member, fields[found - header.begin()], where, name);
+    }
     records.push_back(std::move(record));
   }
   return records;
