@@ -46,8 +46,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
-    return code == 0 ? 0 : altfem::exit_bad_input;
+    // --help and --version print and succeed; any other parse error is one line, like
+    // every other error (CLI11 would print its message and a usage hint on two lines).
+    if (error.get_exit_code() == 0) return app.exit(error);
+    std::fprintf(stderr, "altfem: error: %s (see altfem --help)\n", error.what());
+    return altfem::exit_bad_input;
   }
 
   try {

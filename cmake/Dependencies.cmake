@@ -22,9 +22,6 @@ altfem_require(nlohmann_json_FOUND nlohmann-json3-dev "nlohmann-json 3.11")
 find_package(CLI11 QUIET)
 altfem_require(CLI11_FOUND libcli11-dev "CLI11")
 
-find_package(NLopt QUIET)
-altfem_require(NLopt_FOUND libnlopt-cxx-dev "NLopt")
-
 # SuiteSparse 5 on Debian ships neither a CMake config nor a .pc file.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
 find_library(CHOLMOD_LIBRARY cholmod)

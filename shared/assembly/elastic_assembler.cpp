@@ -42,9 +42,18 @@ using parallel::FirstFailure;
 using parallel::for_each_index;
 using parallel::for_each_index_in_two_passes;
 
-[[noreturn]] void throw_non_finite(int element, const char* what) {
-  throw NumericalError("element " + std::to_string(element) + ": non-finite " + what +
-                       " (inverted or degenerate element: det F <= 0 for this material)");
+// Says why an element's stress or tangent is not finite: a non-finite displacement
+// (a diverged run), or else a deformation the material rejects (det F <= 0), which only
+// materials with a volume term can do.
+[[noreturn]] void throw_non_finite(const ElementView& element, int index, const Eigen::VectorXd& displacement,
+                                   const Material& material, const char* what) {
+  bool finite = true;
+  for (int basis : element.basis) finite = finite && displacement.segment<3>(3 * basis).allFinite();
+  const std::string reason = !finite ? "its displacement is not finite (the run diverged)"
+                             : material.is_linear()
+                                 ? "the displacement is too large for floating point"
+                                 : "inverted or degenerate element: det F <= 0, which this material rejects";
+  throw NumericalError("element " + std::to_string(index) + ": non-finite " + what + " (" + reason + ")");
 }
 
 }  // namespace
@@ -166,7 +175,9 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
   };
   for_each_index_in_two_passes(elements_.size(), element_forces, static_cast<size_t>(elements_.basis_count()),
                                sum_slots, active_threads());
-  if (failure.item() >= 0) throw_non_finite(failure.item(), "stress");
+  if (failure.item() >= 0)
+    throw_non_finite(elements_[failure.item()], failure.item(), displacement,
+                     *materials_[elements_[failure.item()].material], "stress");
 }
 
 void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd) const {
@@ -210,7 +221,9 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
         }
       });
   });
-  if (failure.item() >= 0) throw_non_finite(failure.item(), "tangent stiffness");
+  if (failure.item() >= 0)
+    throw_non_finite(elements_[failure.item()], failure.item(), displacement,
+                     *materials_[elements_[failure.item()].material], "tangent stiffness");
   if (projection_failure.item() >= 0)
     throw NumericalError("element " + std::to_string(projection_failure.item()) +
                          ": the eigen-solver of the SPD projection did not converge");

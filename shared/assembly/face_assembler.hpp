@@ -3,8 +3,9 @@
 // weak boundary conditions) over TabulatedFaces, the way ElasticAssembler assembles
 // volume elements: fixed-size local matrices for the common face sizes (8 and 20 basis
 // functions: two DG elements of degree 1 or 2), a dynamic path for the rest with
-// per-thread scratch allocated once, faces coloured so that OpenMP threads scatter
-// without locks, and sums in face order so results do not depend on the thread count.
+// per-thread scratch allocated once per face size (in the first assembly), faces
+// coloured so that OpenMP threads scatter without locks, and sums in face order so
+// results do not depend on the thread count.
 //
 // A Kernel provides, for N fixed or Eigen::Dynamic (u: #basis × 3 face-local
 // displacements, in the order of FaceView::basis):
@@ -40,13 +41,8 @@ public:
   FaceAssembler(const TabulatedFaces& faces, Kernel kernel)
       : faces_(faces), kernel_(std::move(kernel)), colors_(color_groups(faces.basis_groups())),
         face_energies_(static_cast<size_t>(faces.size())), threads_(omp_get_max_threads()),
-        scratch_(std::make_unique<Scratch[]>(threads_)) {
-    const int n = faces.max_face_basis();
-    for (int t = 0; t < threads_; ++t) {
-      scratch_[t].u.resize(n, 3);
-      scratch_[t].forces.resize(n, 3);
-      scratch_[t].stiffness.resize(3 * n, 3 * n);
-    }
+        scratch_(std::make_unique<std::vector<Scratch>[]>(threads_)) {
+    for (int t = 0; t < threads_; ++t) scratch_[t].resize(static_cast<size_t>(faces.max_face_basis()) + 1);
   }
 
   const BasisGroups& couplings() const override { return faces_.basis_groups(); }
@@ -128,13 +124,14 @@ private:
   // body<N>(u, scratch). With `needs_matrix`, dynamic scratch gets its 3n × 3n size.
   template <bool needs_matrix, typename Body>
   void with_local(const FaceView& face, const Eigen::VectorXd& displacement, Body&& body) const {
-    Scratch& scratch = scratch_[omp_get_thread_num()];
     const int n = face.basis_count();
+    Scratch& scratch = scratch_[omp_get_thread_num()][n];
     const auto run = [&]<int N>() {
       if constexpr (N == Eigen::Dynamic) {
-        scratch.u.conservativeResize(n, 3);
-        scratch.forces.conservativeResize(n, 3);
-        if constexpr (needs_matrix) scratch.stiffness.conservativeResize(3 * n, 3 * n);
+        // No-ops once this thread has met a face of n functions.
+        scratch.u.resize(n, 3);
+        scratch.forces.resize(n, 3);
+        if constexpr (needs_matrix) scratch.stiffness.resize(3 * n, 3 * n);
         kernel::gather<N>(face.basis, displacement, scratch.u);
         body.template operator()<N>(scratch.u, scratch);
       } else {
@@ -157,7 +154,10 @@ private:
   int first_group_ = 0;
   mutable std::vector<double> face_energies_;
   int threads_ = 1;
-  std::unique_ptr<Scratch[]> scratch_;
+  // Per thread, one scratch per face size n (indexed by n), sized when the thread first
+  // meets a dynamic face of that size: resizing one scratch between faces of different
+  // sizes would reallocate at every change, i.e. in every assembly.
+  std::unique_ptr<std::vector<Scratch>[]> scratch_;
 };
 
 }  // namespace altfem

@@ -272,8 +272,13 @@ Scene load_scene(const std::filesystem::path& path) { return load_scene(path, {}
 
 Scene load_scene(const std::filesystem::path& path, const std::vector<SceneOverride>& overrides) {
   std::ifstream stream(path, std::ios::binary);
-  if (!stream || std::filesystem::is_directory(path))
-    throw InputError(input_message(path.string(), "", "expected a readable scene file, got no such file"));
+  if (!stream || std::filesystem::is_directory(path)) {
+    std::error_code error;
+    const std::string what = std::filesystem::is_directory(path, error) ? "a folder"
+                             : std::filesystem::exists(path, error)     ? "a file that cannot be read"
+                                                                        : "no such file";
+    throw InputError(input_message(path.string(), "", "expected a readable scene file, got " + what));
+  }
   std::ostringstream text;
   text << stream.rdbuf();
   Scene scene = parse_scene(text.str(), path, overrides);

@@ -48,28 +48,25 @@ BlockDiagonalMass::BlockDiagonalMass(const Eigen::SparseMatrix<double>& mass,
   }
 }
 
-Eigen::VectorXd BlockDiagonalMass::multiply(const Eigen::VectorXd& v) const {
+template <typename BlockOperation>
+Eigen::VectorXd BlockDiagonalMass::per_block(const Eigen::VectorXd& v, BlockOperation&& operation) const {
   Eigen::VectorXd result(v.size());
   for (size_t g = 0; g < groups_.size(); ++g) {
     const auto& group = groups_[g];
     Eigen::VectorXd local(static_cast<Eigen::Index>(group.size()));
     for (size_t i = 0; i < group.size(); ++i) local[static_cast<Eigen::Index>(i)] = v[group[i]];
-    local = blocks_[g] * local;
+    local = operation(g, local);
     for (size_t i = 0; i < group.size(); ++i) result[group[i]] = local[static_cast<Eigen::Index>(i)];
   }
   return result;
 }
 
+Eigen::VectorXd BlockDiagonalMass::multiply(const Eigen::VectorXd& v) const {
+  return per_block(v, [&](size_t g, const Eigen::VectorXd& local) -> Eigen::VectorXd { return blocks_[g] * local; });
+}
+
 Eigen::VectorXd BlockDiagonalMass::solve(const Eigen::VectorXd& f) const {
-  Eigen::VectorXd result(f.size());
-  for (size_t g = 0; g < groups_.size(); ++g) {
-    const auto& group = groups_[g];
-    Eigen::VectorXd local(static_cast<Eigen::Index>(group.size()));
-    for (size_t i = 0; i < group.size(); ++i) local[static_cast<Eigen::Index>(i)] = f[group[i]];
-    local = factors_[g].solve(local);
-    for (size_t i = 0; i < group.size(); ++i) result[group[i]] = local[static_cast<Eigen::Index>(i)];
-  }
-  return result;
+  return per_block(f, [&](size_t g, const Eigen::VectorXd& local) -> Eigen::VectorXd { return factors_[g].solve(local); });
 }
 
 }  // namespace altfem

@@ -46,6 +46,10 @@ public:
   Eigen::VectorXd solve(const Eigen::VectorXd& f) const override;
 
 private:
+  // result restricted to group g = operation(g, v restricted to group g), for every group.
+  template <typename BlockOperation>
+  Eigen::VectorXd per_block(const Eigen::VectorXd& v, BlockOperation&& operation) const;
+
   std::vector<std::vector<int>> groups_;
   std::vector<Eigen::MatrixXd> blocks_;
   std::vector<Eigen::LLT<Eigen::MatrixXd>> factors_;

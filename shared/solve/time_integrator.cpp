@@ -131,13 +131,21 @@ double TimeIntegrator::total_energy(const State& state) const {
 }
 
 StepReport TimeIntegrator::step(State& state) {
-  if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
-      options_.kind != IntegrationScheme::semi_implicit)
-    return step_lbfgs(state);
-  switch (options_.kind) {
-    case IntegrationScheme::symplectic_euler: return step_symplectic(state);
-    case IntegrationScheme::semi_implicit: return step_implicit(state, true);
-    default: return step_implicit(state, false);
+  const long long linear_before = linear_solver_.statistics().iterations;
+  failed_step_ = StepReport{};
+  try {
+    if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
+        options_.kind != IntegrationScheme::semi_implicit)
+      return step_lbfgs(state);
+    switch (options_.kind) {
+      case IntegrationScheme::symplectic_euler: return step_symplectic(state);
+      case IntegrationScheme::semi_implicit: return step_implicit(state, true);
+      default: return step_implicit(state, false);
+    }
+  } catch (const NumericalError&) {
+    if (failed_step_.lbfgs_evaluations == 0) failed_step_.newton_iterations = newton_.iterations_of_last_call();
+    failed_step_.linear_iterations = linear_solver_.statistics().iterations - linear_before;
+    throw;
   }
 }
 
@@ -175,7 +183,7 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     state.time = next_time;
     ++state.step;
   }
-  return StepReport{report.iterations, linear_solver_.statistics().iterations - linear_before, report.residual};
+  return StepReport{report.iterations, 0, linear_solver_.statistics().iterations - linear_before, report.residual};
 }
 
 StepReport TimeIntegrator::step_symplectic(State& state) {
@@ -202,7 +210,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
     throw NumericalError("step " + std::to_string(state.step) +
                          ": symplectic Euler diverged (non-finite displacement; the time step may exceed the "
                          "stability limit)");
-  return StepReport{0, 0, 0};
+  return StepReport{};
 }
 
 StepReport TimeIntegrator::step_lbfgs(State& state) {
@@ -240,8 +248,19 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   };
   LbfgsOptions lbfgs;
   lbfgs.gradient_tolerance = absolute_tolerance_;
+  // Jacobi scaling from the Hessian at the start (lbfgs.hpp: without it Luksan's line
+  // search stalls on the twisting beam, issue #22).
+  Eigen::SparseMatrix<double> hessian = discretization_.hessian_pattern();
+  objective.hessian(u, hessian, true);
+  const Eigen::VectorXd diagonal = hessian.diagonal();
+  lbfgs.scale.resize(x.size());
+  for (size_t i = 0; i < free.size(); ++i) {
+    const double d = std::abs(diagonal[free[i]]);
+    lbfgs.scale[static_cast<Eigen::Index>(i)] = d > 0 ? 1.0 / std::sqrt(d) : 1.0;
+  }
   lbfgs.max_evaluations = 100 * options_.max_iterations;
   const LbfgsResult result = minimize_lbfgs(evaluate, x, lbfgs);
+  failed_step_.lbfgs_evaluations = result.evaluations;
   if (result.status != LbfgsStatus::converged)
     throw NumericalError("step " + std::to_string(state.step + 1) + ", L-BFGS evaluation " +
                          std::to_string(result.evaluations) + ": not converged (" + result.detail + "), gradient norm " +
@@ -253,7 +272,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
     state.time = time;
     ++state.step;
   }
-  return StepReport{result.evaluations, 0, result.gradient_norm};
+  return StepReport{0, result.evaluations, 0, result.gradient_norm};
 }
 
 }  // namespace altfem

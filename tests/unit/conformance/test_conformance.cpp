@@ -14,8 +14,10 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
-#include "shared/fem/fem_method.hpp"
+#include "app/method_registry.hpp"
+#include "shared/common/error.hpp"
 #include "shared/material/material.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/run_simulation.hpp"
@@ -30,8 +32,12 @@ struct MethodCase {
 };
 void PrintTo(const MethodCase& method, std::ostream* out) { *out << method.name; }
 
+// Every method registered in the executable, and the test-only one.
 std::vector<MethodCase> methods_under_test() {
-  return {{"fem", make_fem_method}, {"two_hex_monomial", test::make_two_hex_monomial_method}};
+  std::vector<MethodCase> methods;
+  for (const std::string& name : cli::available_methods()) methods.push_back({name, cli::method_factory(name)});
+  methods.push_back({"two_hex_monomial", test::make_two_hex_monomial_method});
+  return methods;
 }
 
 std::filesystem::path scene_path(const std::string& name) {
@@ -151,6 +157,24 @@ TEST_P(Conformance, RunWritesACompleteSummaryAndReadableOutput) {
   const std::string check = "/usr/bin/python3 " + std::string(ALTFEM_SOURCE_DIR) + "/tests/cli/check_run_output.py " +
                             out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
+}
+
+TEST_P(Conformance, BadDiscretizationBlockIsOneLineOfBadInput) {
+  if (GetParam().name == "two_hex_monomial") GTEST_SKIP() << "the test-only method has no scene block";
+  const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "conformance";
+  std::filesystem::create_directories(folder);
+  const auto file = folder / ("bad_block_" + GetParam().name + ".json");
+  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [1, 1, 1] } } },
+    "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+    "discretization": { ")" << GetParam().name << R"(": { "no_such_key": 1 } } })";
+  try {
+    load_scene(file);
+    FAIL() << "accepted an unknown key";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("/discretization/" + GetParam().name + "/no_such_key"), std::string::npos) << message;
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, Conformance, ::testing::ValuesIn(methods_under_test()),
