@@ -6,15 +6,18 @@
 #include "shared/io/output_folder.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
 
 namespace altfem::cli {
 
 int run_command(const std::filesystem::path& scene_file, const std::string& method,
-                const std::filesystem::path& output_directory) {
+                const std::filesystem::path& output_directory, const std::vector<std::string>& overrides) {
   const auto start = std::chrono::steady_clock::now();
   const MethodFactory factory = method_factory(method);
-  const Scene scene = load_scene(scene_file);
+  std::vector<SceneOverride> assignments;
+  for (const auto& assignment : overrides) assignments.push_back(parse_scene_override(assignment));
+  const Scene scene = load_scene(scene_file, assignments);
   const SceneGeometry geometry = load_scene_geometry(scene);
   for (const auto& warning : geometry.warnings) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
   const std::filesystem::path out =
