@@ -1,9 +1,10 @@
 #pragma once
-// The `altfem` subcommands (DESIGN.md, "Command line and outputs"). Each returns the
+// The `altfem` subcommands (docs/conventions.md, "Command line and outputs"). Each returns the
 // process exit code; errors are thrown as InputError / NumericalError and turned into
 // exit codes 2 / 3 by main.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "shared/quadrature/simplify_quadrature.hpp"
 
@@ -11,8 +12,9 @@ namespace altfem::cli {
 
 int info_command();
 int check_command(const std::filesystem::path& scene_file, bool json);
+/// `overrides` are the --set KEY=VALUE assignments (docs/scene-schema.md, "Overrides").
 int run_command(const std::filesystem::path& scene_file, const std::string& method,
-                const std::filesystem::path& output_directory);
+                const std::filesystem::path& output_directory, const std::vector<std::string>& overrides);
 
 /// `quadrature monomials`: Longva et al. 2020, §4.6 for strengths 1..order.
 int quadrature_monomials_command(const std::string& cell, int order, const std::string& simplifier, bool json);

@@ -4,7 +4,6 @@
 
 #include <Eigen/Core>
 #include <cstdio>
-#include <nlopt.h>
 
 #include "app/commands.hpp"
 #include "app/method_registry.hpp"
@@ -28,9 +27,6 @@ int info_command() {
   cholmod_version(cholmod);
   std::printf("SuiteSparse: %d.%d.%d (CHOLMOD %d.%d.%d)\n", SUITESPARSE_MAIN_VERSION, SUITESPARSE_SUB_VERSION,
               SUITESPARSE_SUBSUB_VERSION, cholmod[0], cholmod[1], cholmod[2]);
-  int major = 0, minor = 0, bugfix = 0;
-  nlopt_version(&major, &minor, &bugfix);
-  std::printf("NLopt: %d.%d.%d\n", major, minor, bugfix);
   const BlasInfo blas = loaded_blas();
   std::printf("BLAS: %s (%s), %d thread%s\n", blas.implementation.c_str(), blas.library.c_str(), blas.threads,
               blas.threads == 1 ? "" : "s");

@@ -1,11 +1,12 @@
 // altfem: one scene, every method. This file only parses the command line and turns
-// exceptions into the exit codes of DESIGN.md (0 ok, 1 internal, 2 bad input,
+// exceptions into the exit codes of docs/conventions.md (0 ok, 1 internal, 2 bad input,
 // 3 numerical failure), each with a one-line message on stderr.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 
 #include "app/commands.hpp"
+#include "app/compare_command.hpp"
 #include "shared/common/error.hpp"
 
 int main(int argc, char** argv) {
@@ -26,6 +27,21 @@ int main(int argc, char** argv) {
   run->add_option("scene", run_scene, "Scene file (JSON)")->required();
   run->add_option("--method", method, "Discretization: fem (fcm, dg, harmonic in later builds)")->required();
   run->add_option("--out", output, "Output folder (default out/<scene>-<method>)");
+  std::vector<std::string> overrides;
+  run->add_option("--set", overrides, "KEY=VALUE: set the scene's JSON pointer KEY to VALUE (JSON, else a string)")
+      ->allow_extra_args(false);
+
+  auto* compare = app.add_subcommand("compare", "Run methods x sweeps on one scene; report accuracy against cost");
+  altfem::cli::CompareArguments comparison;
+  compare->add_option("scene", comparison.scene, "Scene file (JSON)")->required();
+  compare->add_option("--methods", comparison.methods, "Comma-separated methods (default: the scene's compare block)")
+      ->delimiter(',')->allow_extra_args(false);
+  compare->add_option("--sweep", comparison.sweeps, "KEY=V1,V2,...: values of a scene JSON pointer (repeatable)")
+      ->allow_extra_args(false);
+  compare->add_option("--reference", comparison.reference, "METHOD[:KEY=VALUE,...] (default: the finest run)");
+  compare->add_option("--jobs", comparison.jobs, "Runs at a time (threads are shared among them)");
+  compare->add_flag("--force", comparison.force, "Rerun configurations already in DIR/runs");
+  compare->add_option("--out", comparison.output, "Output folder: results.csv, report.md, plots, runs/")->required();
 
   // `quadrature monomials` (Longva et al. 2020, §4.6) and `quadrature cell` (one cut cell's rules).
   auto* quadrature = app.add_subcommand("quadrature", "Cut-cell quadrature tools (fcm)");
@@ -51,14 +67,18 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    const int code = app.exit(error);
-    return code == 0 ? 0 : altfem::exit_bad_input;
+    // --help and --version print and succeed; any other parse error is one line, like
+    // every other error (CLI11 would print its message and a usage hint on two lines).
+    if (error.get_exit_code() == 0) return app.exit(error);
+    std::fprintf(stderr, "altfem: error: %s (see altfem --help)\n", error.what());
+    return altfem::exit_bad_input;
   }
 
   try {
     if (*info) return altfem::cli::info_command();
     if (*check) return altfem::cli::check_command(check_scene, check_json);
-    if (*run) return altfem::cli::run_command(run_scene, method, output);
+    if (*run) return altfem::cli::run_command(run_scene, method, output, overrides);
+    if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
       return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
     if (*quadrature_cell)

@@ -9,6 +9,11 @@
 //
 //   bench_assembly --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //
+// The face lines assemble FaceAssembler<JumpPenaltyKernel> (issue #14) over the faces of
+// a 10³ grid of DG-like cells with their own basis functions (random traces): 2700 faces
+// of 8 functions (two degree-1 monomial elements, 2×2 points per face) or of 20 (two
+// degree-2 elements, 3×3 points); items_per_second is face quadrature points per second.
+//
 // `bench_assembly --callgrind-hessian ELEMENT STRENGTH ASSEMBLIES` skips the benchmarks
 // and runs a fixed number of Hessian assemblies of a small mesh, for counting
 // instructions per quadrature point under `valgrind --tool=callgrind` (scripts/bench).
@@ -25,6 +30,10 @@
 
 #include "bench/bench_problem.hpp"
 #include "bench/process_usage.hpp"
+#include "shared/assembly/face_assembler.hpp"
+#include "shared/assembly/jump_penalty_kernel.hpp"
+// The DG-like face grid of the face-assembler tests (random traces).
+#include "tests/unit/assembly/face_fixture.hpp"
 
 namespace {
 
@@ -84,6 +93,56 @@ void run(benchmark::State& state, const Case& c, Kind kind, int threads) {
   state.SetLabel(p.description());
 }
 
+struct FaceCase {
+  const char* name;
+  int cell_basis;
+  int face_points;
+};
+constexpr FaceCase face_cases[] = {{"faces8_10^3_2x2points", 4, 4}, {"faces20_10^3_3x3points", 10, 9}};
+
+struct FaceProblem {
+  altfem::TabulatedFaces faces;
+  altfem::TabulatedElements no_elements;
+  altfem::BlockSparsity sparsity;
+  altfem::FaceAssembler<altfem::JumpPenaltyKernel> assembler;
+
+  explicit FaceProblem(const FaceCase& c)
+      : faces(altfem::test::grid_faces(10, std::vector<int>(1000, c.cell_basis), c.face_points, 1)),
+        sparsity(no_elements, faces.basis_groups()),
+        assembler(faces, altfem::JumpPenaltyKernel(std::vector<double>(static_cast<size_t>(faces.size()), 10.0))) {
+    assembler.bind(sparsity, 0);
+  }
+};
+
+// Built in main before any benchmark runs, like problem().
+const FaceProblem& face_problem(const FaceCase& c) {
+  static std::map<std::string, std::unique_ptr<FaceProblem>> problems;
+  auto& slot = problems[c.name];
+  if (!slot) slot = std::make_unique<FaceProblem>(c);
+  return *slot;
+}
+
+void run_faces(benchmark::State& state, const FaceCase& c, Kind kind, int threads) {
+  const FaceProblem& p = face_problem(c);
+  omp_set_num_threads(threads);
+  const auto dofs = p.sparsity.pattern().rows();
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(dofs, -0.1, 0.1);
+  Eigen::SparseMatrix<double> hessian = p.sparsity.pattern();
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(dofs);
+  for (auto _ : state) {
+    // add_*: the sums grow across iterations, which costs the same as refilling.
+    switch (kind) {
+      case Kind::hessian: p.assembler.add_hessian(u, hessian); break;
+      case Kind::gradient: p.assembler.add_gradient(u, gradient); break;
+      case Kind::energy: benchmark::DoNotOptimize(p.assembler.energy(u)); break;
+    }
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * p.faces.point_count());
+  state.counters["points"] = static_cast<double>(p.faces.point_count());
+  state.counters["dofs"] = static_cast<double>(dofs);
+}
+
 int callgrind_hessian(const char* element, int strength, int assemblies) {
   const auto type = altfem::element_type_from_name(element);
   if (!type) {
@@ -117,6 +176,16 @@ int main(int argc, char** argv) {
         const std::string name = std::string(kind_name) + "/" + c.name + "/threads:" + std::to_string(threads);
         benchmark::RegisterBenchmark(name.c_str(), [c, kind, threads](benchmark::State& state) {
           run(state, c, kind, threads);
+        })->UseRealTime()->Unit(benchmark::kMillisecond);
+      }
+  for (const FaceCase& c : face_cases) face_problem(c);
+  for (const FaceCase& c : face_cases)
+    for (auto [kind, kind_name] : {std::pair{Kind::hessian, "face_hessian"}, std::pair{Kind::gradient, "face_gradient"}})
+      for (int threads : {1, 2}) {
+        if (threads > max_threads) continue;
+        const std::string name = std::string(kind_name) + "/" + c.name + "/threads:" + std::to_string(threads);
+        benchmark::RegisterBenchmark(name.c_str(), [c, kind, threads](benchmark::State& state) {
+          run_faces(state, c, kind, threads);
         })->UseRealTime()->Unit(benchmark::kMillisecond);
       }
   benchmark::Initialize(&argc, argv);

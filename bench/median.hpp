@@ -5,7 +5,7 @@
 namespace altfem::bench {
 
 /// The median of repeated measurements (the mean of the middle two for an even count);
-/// DESIGN.md, "Metrics": benchmarks report medians. 0 for none.
+/// docs/conventions.md, "Metrics": benchmarks report medians. 0 for none.
 inline double median(std::vector<double> values) {
   if (values.empty()) return 0;
   const auto middle = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);

@@ -26,7 +26,6 @@
 
 #include "bench/median.hpp"
 #include "bench/process_usage.hpp"
-#include "shared/fem/fem_discretization.hpp"
 #include "shared/fem/fem_method.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -37,11 +36,12 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-// The mean u_z over the nodes on the end face x = max x of a fem discretization: a
-// node average, not an area-weighted one, but the same estimator for every element type.
-double end_face_displacement(const altfem::Discretization& discretization, const Eigen::VectorXd& u) {
-  const auto& fem = dynamic_cast<const altfem::FemDiscretization&>(discretization);
-  const Eigen::MatrixXd& nodes = fem.mesh().nodes;
+// The mean u_z over the nodes on the end face x = max x of the fem mesh (its volume
+// grid: points are the nodes): a node average, not an area-weighted one, but the same
+// estimator for every element type.
+double end_face_displacement(const altfem::MethodInstance& method, const Eigen::VectorXd& u) {
+  const altfem::UnstructuredGrid grid = method.volume_grid(u);
+  const Eigen::MatrixXd& nodes = grid.points;
   const double end = nodes.col(0).maxCoeff();
   double sum = 0;
   int count = 0;
@@ -70,11 +70,11 @@ public:
   altfem::UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override { return inner_->volume_grid(u); }
   const altfem::SurfaceMesh& embedded_surface() const override { return inner_->embedded_surface(); }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
-    end_face_ = end_face_displacement(inner_->discretization(), u);
+    end_face_ = end_face_displacement(*inner_, u);
     return inner_->embedded_displacement(u);
   }
-  Eigen::VectorXd initial_velocity(const altfem::InitialConditions& initial) const override {
-    return inner_->initial_velocity(initial);
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    return inner_->interpolate(field);
   }
 
 private:

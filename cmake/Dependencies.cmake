@@ -22,9 +22,6 @@ altfem_require(nlohmann_json_FOUND nlohmann-json3-dev "nlohmann-json 3.11")
 find_package(CLI11 QUIET)
 altfem_require(CLI11_FOUND libcli11-dev "CLI11")
 
-find_package(NLopt QUIET)
-altfem_require(NLopt_FOUND libnlopt-cxx-dev "NLopt")
-
 # COIN-OR Clp (the simplex LP of quadrature simplification) has only a pkg-config file.
 find_package(PkgConfig QUIET)
 altfem_require(PKG_CONFIG_FOUND pkg-config "pkg-config")

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "shared/fem/fem_discretization.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/material/material.hpp"
 #include "shared/scene/scene.hpp"
@@ -36,10 +36,12 @@ int main(int argc, char** argv) {
 
   // 4. The discretization: every cell tabulated at its quadrature points (weights
   //    w_q |det J|, ∇N_a), the nodes of the clamped region constrained.
-  const FemDiscretization fem(std::move(mesh), *material, scene.dirichlet, scene.fem.quadrature_order, file);
+  const auto discretization =
+      make_lagrange_discretization(mesh, *material, scene.dirichlet, scene.fem.quadrature_order, file);
+  const Discretization& fem = *discretization;
 
-  // 5. Static equilibrium: minimise Ψ(u) − f·u with f = M g (consistent mass times
-  //    gravity). Linear elasticity makes this one Newton step: K u = f.
+  // 5. Static equilibrium: minimise Ψ(u) − f·u with the load f_a = ∫ ρ g N_a dV (equal
+  //    to M g, the consistent mass times gravity, for this partition-of-unity basis). Linear elasticity makes this one Newton step: K u = f.
   IntegratorOptions options;
   options.kind = IntegrationScheme::static_equilibrium;
   options.gravity = scene.gravity;
@@ -55,7 +57,7 @@ int main(int argc, char** argv) {
               report.residual);
 
   // 6. The tip deflection: mean vertical displacement of the nodes on the free end.
-  const auto& nodes = fem.mesh().nodes;
+  const auto& nodes = mesh.nodes;
   const double length = nodes.col(0).maxCoeff();
   double sum = 0;
   int count = 0;

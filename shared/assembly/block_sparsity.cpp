@@ -4,13 +4,21 @@
 
 namespace altfem {
 
-BlockSparsity::BlockSparsity(const TabulatedElements& elements) {
-  const int basis_count = elements.basis_count();
+BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroups& extra)
+    : element_count_(elements.size()) {
+  int basis_count = elements.basis_count();
+  for (int g = 0; g < extra.size(); ++g)
+    for (int index : extra[g]) basis_count = std::max(basis_count, index + 1);
+  // Every coupling group, elements first.
+  const auto for_each_group = [&](auto&& body) {
+    for (int e = 0; e < elements.size(); ++e) body(elements[e].basis);
+    for (int g = 0; g < extra.size(); ++g) body(extra[g]);
+  };
+
   std::vector<std::vector<int>> neighbours(basis_count);
-  for (int e = 0; e < elements.size(); ++e) {
-    const auto basis = elements[e].basis;
+  for_each_group([&](std::span<const int> basis) {
     for (int column : basis) neighbours[column].insert(neighbours[column].end(), basis.begin(), basis.end());
-  }
+  });
   long long nonzeros = 0;
   for (auto& list : neighbours) {
     std::sort(list.begin(), list.end());
@@ -33,17 +41,16 @@ BlockSparsity::BlockSparsity(const TabulatedElements& elements) {
     }
   outer[dofs] = static_cast<int>(position);
 
-  element_offsets_.reserve(elements.size() + 1);
-  element_offsets_.push_back(0);
-  for (int e = 0; e < elements.size(); ++e) {
-    const auto basis = elements[e].basis;
+  group_offsets_.reserve(elements.size() + extra.size() + 1);
+  group_offsets_.push_back(0);
+  for_each_group([&](std::span<const int> basis) {
     for (int column : basis) {
       const auto& list = neighbours[column];
       for (int row : basis)
         offsets_.push_back(3 * static_cast<int>(std::lower_bound(list.begin(), list.end(), row) - list.begin()));
     }
-    element_offsets_.push_back(static_cast<long long>(offsets_.size()));
-  }
+    group_offsets_.push_back(static_cast<long long>(offsets_.size()));
+  });
 }
 
 }  // namespace altfem

@@ -4,13 +4,13 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
 
 #include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/elastic_kernel.hpp"
+#include "shared/assembly/parallel_loops.hpp"
 #include "shared/common/error.hpp"
 #include "shared/material/project_spd.hpp"
 
@@ -38,68 +38,31 @@ void dispatch(int basis_count, Body&& body) {
   }
 }
 
-// The first element, in element order, that failed in a parallel loop (exceptions
-// must not leave an OpenMP region).
-class FirstFailure {
-public:
-  void record(int element) {
-    int current = element_.load();
-    while ((current < 0 || element < current) && !element_.compare_exchange_weak(current, element)) {}
-  }
-  int element() const { return element_.load(); }
+using parallel::FirstFailure;
+using parallel::for_each_index;
+using parallel::for_each_index_in_two_passes;
 
-private:
-  std::atomic<int> element_{-1};
-};
-
-// Below this many items a parallel region costs more than it saves (on a busy
-// machine each can wait a whole time slice), and even a one-thread region allocates
-// its team in libgomp, so small loops do not enter one at all.
-constexpr size_t minimum_parallel_items = 64;
-
-// body(i) for i < count, in parallel when there is enough work. Elements cost the
-// same, so a static split balances best (dynamic chunks left one thread idle).
-template <typename Body>
-void for_each_index(size_t count, int threads, Body&& body) {
-  if (count < minimum_parallel_items || threads == 1) {
-    for (size_t i = 0; i < count; ++i) body(i);
-    return;
-  }
-#pragma omp parallel for schedule(static) num_threads(threads)
-  for (size_t i = 0; i < count; ++i) body(i);
-}
-
-// first(i) for every i < first_count, then, once all of them are done, second(j)
-// for every j < second_count: one parallel region with a barrier between the two
-// loops costs less than two regions.
-template <typename First, typename Second>
-void for_each_index_in_two_passes(size_t first_count, First&& first, size_t second_count, Second&& second,
-                                  int threads) {
-  if (first_count < minimum_parallel_items || threads == 1) {
-    for (size_t i = 0; i < first_count; ++i) first(i);
-    for (size_t j = 0; j < second_count; ++j) second(j);
-    return;
-  }
-#pragma omp parallel num_threads(threads)
-  {
-#pragma omp for schedule(static)
-    for (size_t i = 0; i < first_count; ++i) first(i);
-#pragma omp for schedule(static)
-    for (size_t j = 0; j < second_count; ++j) second(j);
-  }
-}
-
-[[noreturn]] void throw_non_finite(int element, const char* what) {
-  throw NumericalError("element " + std::to_string(element) + ": non-finite " + what +
-                       " (inverted or degenerate element: det F <= 0 for this material)");
+// Says why an element's stress or tangent is not finite: a non-finite displacement
+// (a diverged run), or else a deformation the material rejects (det F <= 0), which only
+// materials with a volume term can do.
+[[noreturn]] void throw_non_finite(const ElementView& element, int index, const Eigen::VectorXd& displacement,
+                                   const Material& material, const char* what) {
+  bool finite = true;
+  for (int basis : element.basis) finite = finite && displacement.segment<3>(3 * basis).allFinite();
+  const std::string reason = !finite ? "its displacement is not finite (the run diverged)"
+                             : material.is_linear()
+                                 ? "the displacement is too large for floating point"
+                                 : "inverted or degenerate element: det F <= 0, which this material rejects";
+  throw NumericalError("element " + std::to_string(index) + ": non-finite " + what + " (" + reason + ")");
 }
 
 }  // namespace
 
-ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials)
+ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials,
+                                   const BasisGroups& extra_couplings)
     : elements_(elements),
       materials_(std::move(materials)),
-      sparsity_(elements),
+      sparsity_(elements, extra_couplings),
       colors_(color_elements(elements)),
       incidence_(elements),
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
@@ -132,20 +95,7 @@ int ElasticAssembler::active_threads() const { return std::min(threads_, omp_get
 
 template <typename Body>
 void ElasticAssembler::for_each_colored_element(Body&& body) const {
-  // Colour by colour: within a colour no two elements share a basis function, so
-  // they scatter without locks and every entry sums in the same order. One parallel
-  // region for all colours: a barrier between colours costs less than a new region.
-  const int threads = active_threads();
-  if (threads == 1 || static_cast<size_t>(elements_.size()) < minimum_parallel_items) {
-    for (const auto& color : colors_)
-      for (int e : color) body(e);
-    return;
-  }
-#pragma omp parallel num_threads(threads)
-  for (const auto& color : colors_) {
-#pragma omp for schedule(static)
-    for (size_t index = 0; index < color.size(); ++index) body(color[index]);
-  }
+  parallel::for_each_colored(colors_, static_cast<size_t>(elements_.size()), active_threads(), body);
 }
 
 bool ElasticAssembler::is_linear() const {
@@ -191,6 +141,8 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
   // BasisIncidence::gather_order so that each thread mostly reads its own slots.
   FirstFailure failure;
   gradient.resize(dof_count());
+  // Basis functions that only extra couplings use get no element force.
+  gradient.tail(dof_count() - 3 * elements_.basis_count()).setZero();
   const auto element_forces = [&](size_t index) {
     const int e = static_cast<int>(index);
     const ElementView element = elements_[e];
@@ -223,7 +175,9 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
   };
   for_each_index_in_two_passes(elements_.size(), element_forces, static_cast<size_t>(elements_.basis_count()),
                                sum_slots, active_threads());
-  if (failure.element() >= 0) throw_non_finite(failure.element(), "stress");
+  if (failure.item() >= 0)
+    throw_non_finite(elements_[failure.item()], failure.item(), displacement,
+                     *materials_[elements_[failure.item()].material], "stress");
 }
 
 void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd) const {
@@ -252,15 +206,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
               return;
             }
           }
-          const int* offsets = sparsity_.pair_offsets(e);
-          for (int b = 0; b < n; ++b)
-            for (int k = 0; k < 3; ++k) {
-              double* column = values + outer[3 * element.basis[b] + k];
-              for (int a = 0; a < n; ++a) {
-                double* block = column + offsets[b * n + a];
-                for (int i = 0; i < 3; ++i) block[i] += stiffness(3 * a + i, 3 * b + k);
-              }
-            }
+          kernel::scatter<N>(element.basis, sparsity_.pair_offsets(e), stiffness, outer, values);
         };
         if constexpr (N == Eigen::Dynamic) {
           scratch.u.conservativeResize(n, 3);
@@ -275,9 +221,11 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
         }
       });
   });
-  if (failure.element() >= 0) throw_non_finite(failure.element(), "tangent stiffness");
-  if (projection_failure.element() >= 0)
-    throw NumericalError("element " + std::to_string(projection_failure.element()) +
+  if (failure.item() >= 0)
+    throw_non_finite(elements_[failure.item()], failure.item(), displacement,
+                     *materials_[elements_[failure.item()].material], "tangent stiffness");
+  if (projection_failure.item() >= 0)
+    throw NumericalError("element " + std::to_string(projection_failure.item()) +
                          ": the eigen-solver of the SPD projection did not converge");
 }
 
@@ -301,8 +249,23 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
   });
 }
 
+Eigen::VectorXd ElasticAssembler::body_force(const Eigen::Vector3d& acceleration) const {
+  // Serial: it runs once per run, and elements sum into shared entries.
+  Eigen::VectorXd force = Eigen::VectorXd::Zero(pattern().rows());
+  for (int e = 0; e < elements_.size(); ++e) {
+    const ElementView element = elements_[e];
+    const double density = materials_[element.material]->density();
+    for (int a = 0; a < element.basis_count(); ++a) {
+      double integral = 0;
+      for (int q = 0; q < element.point_count(); ++q) integral += element.weights[q] * element.values(q, a);
+      force.segment<3>(3 * element.basis[a]) += density * integral * acceleration;
+    }
+  }
+  return force;
+}
+
 Eigen::VectorXd ElasticAssembler::lumped_mass() const {
-  Eigen::VectorXd lumped = Eigen::VectorXd::Zero(dof_count());
+  Eigen::VectorXd lumped = Eigen::VectorXd::Zero(pattern().rows());
   for (int e = 0; e < elements_.size(); ++e) {
     const ElementView element = elements_[e];
     const int n = element.basis_count();

@@ -1,7 +1,6 @@
 #pragma once
 // Hyperelastic energy, internal forces and tangent stiffness of any list of tabulated
-// elements (DESIGN.md: "one assembler turns any list of them plus a Material into
-// energy, gradient and (optionally SPD-projected) Hessian, and mass matrices").
+// elements (docs/architecture.md, "The meeting point").
 //
 // With the displacement u, at each quadrature point F = I + Σ_a u_a ⊗ ∇N_a and
 //   Ψ(u)        = Σ_q w_q ψ(F_q)
@@ -21,14 +20,19 @@ namespace altfem {
 class ElasticAssembler {
 public:
   /// materials[m] is the material of the elements whose material id is m; the
-  /// assembler keeps references to both arguments.
-  ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials);
+  /// assembler keeps references to both. `extra_couplings` are block couplings beyond
+  /// the elements' own (a method's face terms) that its sparsity pattern must hold.
+  ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials,
+                   const BasisGroups& extra_couplings = {});
   ~ElasticAssembler();
 
-  int dof_count() const { return 3 * elements_.basis_count(); }
+  /// 3 × the number of basis functions of the elements and the extra couplings.
+  int dof_count() const { return static_cast<int>(sparsity_.pattern().rows()); }
   const TabulatedElements& elements() const { return elements_; }
   /// The pattern of hessian() and mass_matrix(), all values zero.
   const SparseMatrix& pattern() const { return sparsity_.pattern(); }
+  /// Where each element's and each extra coupling's blocks lie in pattern().
+  const BlockSparsity& sparsity() const { return sparsity_; }
 
   /// Ψ(u); +∞ when a material rejects a deformation (e.g. Neo-Hookean at J ≤ 0).
   double energy(const Eigen::VectorXd& displacement) const;
@@ -40,6 +44,9 @@ public:
   void hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd = false) const;
   /// Consistent mass ∫ ρ N_a N_b (times the 3×3 identity), with pattern().
   void mass_matrix(SparseMatrix& mass) const;
+  /// The load of a uniform body acceleration a (#dofs): f_(3b+i) = Σ_q w_q ρ a_i N_b(x_q),
+  /// i.e. ∫ ρ a·φ_b dV for any basis, not only a partition of unity.
+  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const;
   /// Lumped mass (#dofs) by HRZ: the diagonal of the consistent mass scaled so
   /// each element keeps its mass (Hinton, Rock & Zienkiewicz 1976). Plain row sums give
   /// zero or negative corner masses for quadratic tets; HRZ stays positive.

@@ -6,24 +6,19 @@
 #include <Eigen/Core>
 #include <cmath>
 
+#include "shared/assembly/local_matrices.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/material/material.hpp"
 
 namespace altfem::kernel {
 
-constexpr int dofs_of(int n) { return n == Eigen::Dynamic ? Eigen::Dynamic : 3 * n; }
-
-template <int N>
-using NodeMatrix = Eigen::Matrix<double, N, 3>;  // #basis × 3 (nodal displacements / forces)
-template <int N>
-using LocalMatrix = Eigen::Matrix<double, dofs_of(N), dofs_of(N)>;  // 3#basis × 3#basis
 template <int N>
 using TangentRows = Eigen::Matrix<double, dofs_of(N), 9>;  // 3#basis × 9
 
 /// u_a for the element's basis functions (#basis × 3).
 template <int N>
 void gather(const ElementView& element, const Eigen::VectorXd& u, NodeMatrix<N>& local) {
-  for (int a = 0; a < element.basis_count(); ++a) local.row(a) = u.segment<3>(3 * element.basis[a]).transpose();
+  gather<N>(element.basis, u, local);
 }
 
 /// Point q's gradients (#basis × 3) with a compile-time row count where N is fixed,

@@ -1,18 +1,24 @@
 #include "shared/assembly/element_coloring.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <span>
 
 namespace altfem {
 
-std::vector<std::vector<int>> color_elements(const TabulatedElements& elements) {
+namespace {
+
+// basis_of(item) is the std::span<const int> of an item's basis functions.
+template <typename BasisOf>
+std::vector<std::vector<int>> color_items(int count, int basis_count, BasisOf&& basis_of) {
   // One bit per colour per basis function, in words of 64 colours, grown on demand.
   int words = 1;
-  std::vector<std::uint64_t> used(static_cast<size_t>(elements.basis_count()), 0);
+  std::vector<std::uint64_t> used(static_cast<size_t>(basis_count), 0);
   std::vector<std::vector<int>> colors;
   std::vector<std::uint64_t> forbidden;
-  for (int element = 0; element < elements.size(); ++element) {
-    const auto basis = elements[element].basis;
+  for (int element = 0; element < count; ++element) {
+    const std::span<const int> basis = basis_of(element);
     int chosen = -1;
     forbidden.assign(words, 0);
     for (int node : basis)
@@ -33,6 +39,19 @@ std::vector<std::vector<int>> color_elements(const TabulatedElements& elements) 
     colors[chosen].push_back(element);
   }
   return colors;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> color_elements(const TabulatedElements& elements) {
+  return color_items(elements.size(), elements.basis_count(), [&](int e) { return elements[e].basis; });
+}
+
+std::vector<std::vector<int>> color_groups(const BasisGroups& groups) {
+  int basis_count = 0;
+  for (int g = 0; g < groups.size(); ++g)
+    for (int index : groups[g]) basis_count = std::max(basis_count, index + 1);
+  return color_items(groups.size(), basis_count, [&](int g) { return groups[g]; });
 }
 
 }  // namespace altfem

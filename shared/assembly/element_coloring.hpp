@@ -1,6 +1,7 @@
 #pragma once
 #include <vector>
 
+#include "shared/assembly/basis_groups.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 
 namespace altfem {
@@ -12,5 +13,7 @@ namespace altfem {
 /// for 1 and 2 threads, not merely equal to round-off.
 /// Returns the element indices of each colour.
 std::vector<std::vector<int>> color_elements(const TabulatedElements& elements);
+/// The same for any lists of basis functions (e.g. faces' couplings).
+std::vector<std::vector<int>> color_groups(const BasisGroups& groups);
 
 }  // namespace altfem

@@ -1,5 +1,5 @@
 #pragma once
-// The meeting point of every discretization (DESIGN.md, "Core abstractions"): for each
+// The meeting point of every discretization (docs/architecture.md, "Core abstractions"): for each
 // element, the global indices of its basis functions, the quadrature weights already
 // multiplied by |det J|, and the basis values and physical gradients at the quadrature
 // points. Lagrange tets/hexes, FCM cut cells, DG monomials on polyhedra and harmonic

@@ -1,6 +1,6 @@
 #pragma once
 // The two kinds of failure altfem reports to its users, and their exit codes
-// (DESIGN.md, "Command line and outputs"): bad input exits 2, a numerical
+// (docs/conventions.md, "Command line and outputs"): bad input exits 2, a numerical
 // failure exits 3; anything else that escapes is an internal error (exit 1).
 #include <stdexcept>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The Lagrange element types of the conforming meshes (DESIGN.md, shared/element).
+// The Lagrange element types of the conforming meshes (docs/architecture.md).
 // Node order inside altfem is VTK's for every type; readers permute on input.
 #include <optional>
 #include <string_view>

@@ -1,6 +1,6 @@
 #pragma once
 // The nodes of each Lagrange element on its reference domain, in VTK's order
-// (DESIGN.md, "Conventions"). Tets live on the UNIT tet with vertices (0,0,0),
+// (docs/conventions.md, "Numerical conventions"). Tets live on the UNIT tet with vertices (0,0,0),
 // (1,0,0), (0,1,0), (0,0,1); hexes on [-1,1]^3.
 #include <Eigen/Core>
 

@@ -2,10 +2,11 @@
 
 #include <chrono>
 
-#include "shared/fem/fem_discretization.hpp"
 #include "shared/fem/fem_mesh.hpp"
-#include "shared/fem/point_embedding.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/simulation/basis_embedding.hpp"
 
 namespace altfem {
 
@@ -16,25 +17,25 @@ public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry)
       : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
                                 scene.material.poisson_ratio, scene.material.density)) {
-    VolumeMesh mesh = build_fem_mesh(scene, geometry);
+    mesh_ = build_fem_mesh(scene, geometry);
     const auto start = std::chrono::steady_clock::now();
-    discretization_ = std::make_unique<FemDiscretization>(std::move(mesh), *material_, scene.dirichlet,
-                                                          scene.fem.quadrature_order, scene.file.string());
+    discretization_ = make_lagrange_discretization(mesh_, *material_, scene.dirichlet, scene.fem.quadrature_order,
+                                                   scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms: the scene's own surface when it has one,
     // else the boundary of the mesh.
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(discretization_->mesh()).surface;
-    embedding_ = std::make_unique<PointEmbedding>(discretization_->mesh(), surface_.vertices);
+    surface_ = geometry.surface ? *geometry.surface : boundary_surface(mesh_).surface;
+    embedding_ = std::make_unique<BasisEmbedding>(LagrangeBasisEvaluator(mesh_), surface_.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
   nlohmann::json element_counts() const override {
-    return {{std::string(element_name(discretization_->mesh().element_type)), discretization_->mesh().cells.rows()}};
+    return {{std::string(element_name(mesh_.element_type)), mesh_.cells.rows()}};
   }
   long long quadrature_points() const override { return discretization_->elements().point_count(); }
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
-    UnstructuredGrid grid = grid_from_volume_mesh(discretization_->mesh());
+    UnstructuredGrid grid = grid_from_volume_mesh(mesh_);
     grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
                                                      displacement.data(), displacement.size() / 3, 3));
     return grid;
@@ -43,13 +44,11 @@ public:
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
-  Eigen::VectorXd initial_velocity(const InitialConditions& initial) const override {
-    const VolumeMesh& mesh = discretization_->mesh();
-    const Eigen::Vector3d centre = discretization_->centre_of_mass();
-    Eigen::VectorXd velocity(3 * mesh.nodes.rows());
-    for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
-      velocity.segment<3>(3 * node) = initial.velocity_at(mesh.nodes.row(node).transpose(), centre);
-    return velocity;
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    Eigen::VectorXd values(3 * mesh_.nodes.rows());
+    for (Eigen::Index node = 0; node < mesh_.nodes.rows(); ++node)
+      values.segment<3>(3 * node) = field(mesh_.nodes.row(node).transpose());
+    return values;
   }
   nlohmann::json facts() const override {
     return {{"surface_vertices", surface_.vertices.rows()},
@@ -59,9 +58,10 @@ public:
 
 private:
   std::unique_ptr<Material> material_;
-  std::unique_ptr<FemDiscretization> discretization_;
+  VolumeMesh mesh_;
+  std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;
-  std::unique_ptr<PointEmbedding> embedding_;
+  std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
 };
 

@@ -11,37 +11,61 @@
 
 namespace altfem {
 
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength) {
-  const ReferenceElement& element = reference_element(mesh.element_type);
-  const QuadratureRule rule = element.shape() == ElementShape::tetrahedron ? tet_rule(quadrature_strength)
-                                                                           : hex_rule(quadrature_strength);
-  const int n = element.node_count();
-  const int points = static_cast<int>(rule.weights.size());
-  const int cells = static_cast<int>(mesh.cells.rows());
+namespace {
 
-  // Reference values and gradients are the same for every cell: compute them once.
-  Eigen::MatrixXd values(points, n);
-  std::vector<Eigen::MatrixXd> reference_gradients(points, Eigen::MatrixXd(n, 3));
+// Basis values (#points × #nodes) and reference gradients (one #nodes × 3 per point)
+// of a rule.
+struct ReferenceTable {
+  Eigen::MatrixXd values;
+  std::vector<Eigen::MatrixXd> gradients;
+};
+
+ReferenceTable reference_table(const ReferenceElement& element, const QuadratureRule& rule) {
+  const int n = element.node_count();
+  const auto points = static_cast<int>(rule.weights.size());
+  ReferenceTable table{Eigen::MatrixXd(points, n), std::vector<Eigen::MatrixXd>(points, Eigen::MatrixXd(n, 3))};
+  Eigen::VectorXd row(n);
   for (int q = 0; q < points; ++q) {
-    Eigen::VectorXd row(n);
     element.evaluate(rule.points.row(q).transpose(), row);
-    values.row(q) = row.transpose();
-    element.evaluate_gradients(rule.points.row(q).transpose(), reference_gradients[q]);
+    table.values.row(q) = row.transpose();
+    element.evaluate_gradients(rule.points.row(q).transpose(), table.gradients[q]);
   }
+  return table;
+}
+
+}  // namespace
+
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules) {
+  const ReferenceElement& element = reference_element(mesh.element_type);
+  const int n = element.node_count();
+  const int cells = static_cast<int>(mesh.cells.rows());
+  // The standard rule's reference table serves every cell that has no rule of its own.
+  const ReferenceTable standard = reference_table(element, rules.standard);
 
   // Physical data per cell, computed in parallel, then appended in cell order.
   std::vector<Eigen::VectorXd> weights(cells);
   std::vector<Eigen::MatrixXd> gradients(cells);
+  std::vector<Eigen::MatrixXd> custom_values(cells);
   std::atomic<int> failed_cell{-1};
   std::atomic<int> failed_point{-1};
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < cells; ++cell) {
+    const auto custom = rules.custom.find(cell);
+    const bool own_rule = custom != rules.custom.end();
+    const QuadratureRule& rule = own_rule ? custom->second : rules.standard;
+    ReferenceTable own;
+    if (own_rule) {
+      own = reference_table(element, rule);
+      custom_values[cell] = own.values;
+    }
+    const ReferenceTable& table = own_rule ? own : standard;
+    const auto points = static_cast<int>(rule.weights.size());
     Eigen::MatrixXd nodes(n, 3);
     for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
     weights[cell].resize(points);
     gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
     for (int q = 0; q < points; ++q) {
-      const Eigen::Matrix3d jacobian = nodes.transpose() * reference_gradients[q];  // ∂x_i/∂ξ_j
+      const Eigen::Matrix3d jacobian = nodes.transpose() * table.gradients[q];  // ∂x_i/∂ξ_j
       const double determinant = jacobian.determinant();
       if (!(determinant > 0)) {
         int expected = -1;
@@ -49,7 +73,7 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_stren
         break;
       }
       weights[cell][q] = rule.weights[q] * determinant;
-      gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) = reference_gradients[q] * jacobian.inverse();
+      gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) = table.gradients[q] * jacobian.inverse();
     }
   }
   if (failed_cell >= 0)
@@ -57,15 +81,25 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_stren
                          std::to_string(failed_point.load()) + " (inverted or degenerate " +
                          std::string(element_name(mesh.element_type)) + ")");
 
+  long long point_total = 0;
+  for (const auto& cell_weights : weights) point_total += cell_weights.size();
   TabulatedElements tabulated;
-  tabulated.reserve(cells, static_cast<long long>(cells) * n, static_cast<long long>(cells) * points,
-                    static_cast<long long>(cells) * points * n);
+  tabulated.reserve(cells, static_cast<long long>(cells) * n, point_total, point_total * n);
   std::vector<int> basis(n);
   for (int cell = 0; cell < cells; ++cell) {
     for (int a = 0; a < n; ++a) basis[a] = mesh.cells(cell, a);
-    tabulated.add(basis, std::span<const double>(weights[cell].data(), points), values, gradients[cell]);
+    const Eigen::MatrixXd& values = custom_values[cell].size() > 0 ? custom_values[cell] : standard.values;
+    const int material = rules.materials.empty() ? 0 : rules.materials[cell];
+    tabulated.add(basis, std::span<const double>(weights[cell].data(), weights[cell].size()), values, gradients[cell],
+                  material);
   }
   return tabulated;
+}
+
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength) {
+  const bool tetrahedra = reference_element(mesh.element_type).shape() == ElementShape::tetrahedron;
+  return tabulate_lagrange(mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength)
+                                                              : hex_rule(quadrature_strength), {}, {}});
 }
 
 }  // namespace altfem

@@ -1,14 +1,29 @@
 #pragma once
+#include <unordered_map>
+#include <vector>
+
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/mesh/volume_mesh.hpp"
+#include "shared/quadrature/quadrature_rule.hpp"
 
 namespace altfem {
 
-/// Tabulates a conforming Lagrange mesh: for each cell, the reference rule of
-/// `quadrature_strength` (tet_rule / hex_rule), weights w_q |det J(ξ_q)|, basis values,
-/// and physical gradients ∇N = (∂N/∂ξ) J⁻¹. Basis function i is mesh node i.
-/// OpenMP-parallel over cells. Throws NumericalError naming the cell and point when
-/// det J ≤ 0 (an inverted or degenerate cell).
+/// The quadrature of each cell of a Lagrange mesh, in the reference element's
+/// coordinates, and its material. `fem` uses one rule for all cells; the FCM keeps the
+/// standard rule for inside cells and gives each cut cell its own (Longva et al.
+/// 2020 §4), which is why the rule is looked up per cell.
+struct LagrangeCellRules {
+  QuadratureRule standard;                         ///< every cell not in `custom`
+  std::unordered_map<int, QuadratureRule> custom;  ///< cell → its own rule
+  std::vector<int> materials;                      ///< #cells material ids; empty: all 0
+};
+
+/// Tabulates a conforming Lagrange mesh: for each cell, weights w_q |det J(ξ_q)|, basis
+/// values, and physical gradients ∇N = (∂N/∂ξ) J⁻¹ at its rule's points. Basis function
+/// i is mesh node i. OpenMP-parallel over cells. Throws NumericalError naming the cell
+/// and point when det J ≤ 0 (an inverted or degenerate cell).
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules);
+/// Every cell with the reference rule of `quadrature_strength` (tet_rule / hex_rule), material 0.
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength);
 
 }  // namespace altfem

@@ -1,5 +1,5 @@
 #pragma once
-// Whole-file writes that never leave a truncated file behind (DESIGN.md, principle 5:
+// Whole-file writes that never leave a truncated file behind (docs/conventions.md, principle 5:
 // "Nothing half-written is left behind").
 #include <filesystem>
 #include <string_view>

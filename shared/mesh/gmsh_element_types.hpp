@@ -1,6 +1,6 @@
 #pragma once
 // Gmsh's element type numbers, their node counts and dimensions, and the
-// permutation from Gmsh's node order to VTK's (DESIGN.md, "Conventions").
+// permutation from Gmsh's node order to VTK's (docs/conventions.md, "Numerical conventions").
 #include <optional>
 #include <span>
 #include <string_view>

@@ -1,6 +1,6 @@
 // Gmsh MSH 2.2 and 4.1 ASCII reader (Gmsh reference manual, "MSH file format").
 // Gmsh's own API is not used: it accepts NaN coordinates and reports no line numbers
-// (ENVIRONMENT.md).
+// (docs/environment.md).
 #include <climits>
 #include <optional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // A structural check of ASCII OFF text before CGAL reads it: CGAL's reader only
-// returns false, without a line (ENVIRONMENT.md), so the common mistakes get a
+// returns false, without a line (docs/environment.md), so the common mistakes get a
 // "file: line N" message here.
 #include <string>
 #include <string_view>

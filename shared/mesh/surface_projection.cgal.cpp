@@ -39,4 +39,9 @@ Eigen::Vector3d SurfaceProjection::closest_point(const Eigen::Vector3d& x) const
   return {closest.x(), closest.y(), closest.z()};
 }
 
+std::pair<Eigen::Vector3d, Eigen::Index> SurfaceProjection::closest_point_and_triangle(const Eigen::Vector3d& x) const {
+  const auto [closest, triangle] = tree_->tree.closest_point_and_primitive(Kernel::Point_3(x.x(), x.y(), x.z()));
+  return {{closest.x(), closest.y(), closest.z()}, triangle - tree_->triangles.cbegin()};
+}
+
 }  // namespace altfem

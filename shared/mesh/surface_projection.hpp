@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <memory>
+#include <utility>
 
 #include "shared/mesh/surface_mesh.hpp"
 
@@ -12,6 +13,8 @@ public:
   explicit SurfaceProjection(const SurfaceMesh& surface);
   ~SurfaceProjection();
   Eigen::Vector3d closest_point(const Eigen::Vector3d& x) const;
+  /// The closest point and the row of `surface.triangles` it lies on.
+  std::pair<Eigen::Vector3d, Eigen::Index> closest_point_and_triangle(const Eigen::Vector3d& x) const;
 
 private:
   struct Tree;

@@ -1,5 +1,5 @@
 // Surface input through CGAL's polygon-soup I/O and Polygon Mesh Processing checks,
-// in the order that gives one clear message per defect (ENVIRONMENT.md, "CGAL 5.5"):
+// in the order that gives one clear message per defect (docs/environment.md, "CGAL 5.5"):
 // CGAL's read_polygon_mesh would only return false, or silently repair.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

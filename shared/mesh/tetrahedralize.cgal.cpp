@@ -1,4 +1,4 @@
-// The only translation unit with CGAL Mesh_3 (ENVIRONMENT.md: ~2 minutes and ~4 GB
+// The only translation unit with CGAL Mesh_3 (docs/environment.md: ~2 minutes and ~4 GB
 // to compile). CGAL over a mesher of our own: Mesh_3's Delaunay refinement gives
 // bounded radius–edge ratios and a surface approximation with guarantees.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

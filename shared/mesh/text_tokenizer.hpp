@@ -1,6 +1,6 @@
 #pragma once
 // A whitespace tokenizer over a whole text file that remembers the line of every
-// token, so that each parse error can name "file: line N" (DESIGN.md, "Clear failure").
+// token, so that each parse error can name "file: line N" (docs/conventions.md, principle 5).
 // Written by hand because the file formats are tiny and the errors must carry lines;
 // it never reads past the text (the parsers are fuzzed).
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The rule to use on a reference domain for a given strength (DESIGN.md, Conventions):
+// The rule to use on a reference domain for a given strength (docs/conventions.md, "Numerical conventions"):
 // the smallest shipped Witherden–Vincent rule of strength >= the request whose points are
 // all strictly inside the domain (on boxes: unless the tensor Gauss–Legendre rule has
 // fewer points), else the product rule (collapsed Gauss–Jacobi on simplices, tensor

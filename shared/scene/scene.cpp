@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "shared/common/error.hpp"
+#include "shared/scene/scene_override.hpp"
 #include "shared/scene/scene_schema.hpp"
 #include "shared/scene/scene_shape.hpp"
 
@@ -240,7 +241,9 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
 
 }  // namespace
 
-Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
+Scene parse_scene(std::string_view text, const std::filesystem::path& file) { return parse_scene(text, file, {}); }
+
+Scene parse_scene(std::string_view text, const std::filesystem::path& file, const std::vector<SceneOverride>& overrides) {
   const std::string name = file.string();
   if (std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); }))
     throw InputError(input_message(name, "line 1, column 1", "expected a JSON object, got an empty file"));
@@ -258,19 +261,27 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file) {
   if (!duplicates.duplicate().empty())
     throw InputError(input_message(name, duplicates.duplicate(), "key repeated in its object (JSON keeps only one; "
                                                                 "write each key once)"));
+  apply_scene_overrides(document, overrides, name);
   const std::filesystem::path folder =
       file.has_parent_path() ? std::filesystem::absolute(file).parent_path() : std::filesystem::current_path();
   const scene_schema::Validator validator(name, folder);
   return scene_from_json(validator.resolve(document, scene_schema::scene_rule(), ""), file);
 }
 
-Scene load_scene(const std::filesystem::path& path) {
+Scene load_scene(const std::filesystem::path& path) { return load_scene(path, {}); }
+
+Scene load_scene(const std::filesystem::path& path, const std::vector<SceneOverride>& overrides) {
   std::ifstream stream(path, std::ios::binary);
-  if (!stream || std::filesystem::is_directory(path))
-    throw InputError(input_message(path.string(), "", "expected a readable scene file, got no such file"));
+  if (!stream || std::filesystem::is_directory(path)) {
+    std::error_code error;
+    const std::string what = std::filesystem::is_directory(path, error) ? "a folder"
+                             : std::filesystem::exists(path, error)     ? "a file that cannot be read"
+                                                                        : "no such file";
+    throw InputError(input_message(path.string(), "", "expected a readable scene file, got " + what));
+  }
   std::ostringstream text;
   text << stream.rdbuf();
-  Scene scene = parse_scene(text.str(), path);
+  Scene scene = parse_scene(text.str(), path, overrides);
   if (scene.geometry.kind != GeometryKind::shape && !std::filesystem::is_regular_file(scene.geometry.file)) {
     const char* key = scene.geometry.kind == GeometryKind::surface ? "surface" : "mesh";
     throw InputError(input_message(path.string(), std::string("/geometry/") + key,

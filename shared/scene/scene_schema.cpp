@@ -246,6 +246,42 @@ const ObjectRule fem{
 const ObjectRule discretization{{{.key = "fem", .type = ValueType::object, .default_value = json::object(), .object = &fem}},
                                 {}, {}, {}, {"fcm", "dg", "harmonic"}};
 
+// The `compare` block (docs/scene-schema.md, "compare"): only its shape is checked
+// here; method names are checked by `altfem compare` against the build's registry.
+void check_compare_methods(const Validator& validator, const json& methods, const std::string& pointer) {
+  if (!methods.is_array() || methods.empty())
+    validator.fail(pointer, "expected a non-empty array of method names, got " + describe(methods));
+  for (std::size_t i = 0; i < methods.size(); ++i)
+    if (!methods[i].is_string() || methods[i].get<std::string>().empty())
+      validator.fail(pointer + "/" + std::to_string(i), "expected a method name, got " + describe(methods[i]));
+}
+
+void check_compare(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (resolved.contains("methods")) check_compare_methods(validator, resolved["methods"], pointer + "/methods");
+  if (!resolved.contains("sweeps")) return;
+  const json& sweeps = resolved["sweeps"];
+  if (!sweeps.is_object())
+    validator.fail(pointer + "/sweeps", "expected an object of JSON pointer: [values], got " + describe(sweeps));
+  for (const auto& [key, values] : sweeps.items())
+    if (!values.is_array() || values.empty())
+      validator.fail(pointer + "/sweeps/" + pointer_token(key), "expected a non-empty array of values, got " +
+                                                                    describe(values));
+}
+
+void check_compare_reference(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (!resolved["set"].is_object())
+    validator.fail(pointer + "/set", "expected an object of JSON pointer: value, got " + describe(resolved["set"]));
+}
+
+const ObjectRule compare_reference{{{.key = "method", .type = ValueType::string, .required = true},
+                                    {.key = "set", .type = ValueType::any, .default_value = json::object()}},
+                                   {}, {}, {}, {}, check_compare_reference};
+
+const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
+                          {.key = "sweeps", .type = ValueType::any},
+                          {.key = "reference", .type = ValueType::object, .object = &compare_reference}},
+                         {}, {}, {}, {}, check_compare};
+
 const ObjectRule scene{
     {{.key = "name", .type = ValueType::string},
      {.key = "geometry", .type = ValueType::object, .required = true, .object = &geometry},
@@ -256,7 +292,8 @@ const ObjectRule scene{
      {.key = "time", .type = ValueType::object, .default_value = json{{"static", true}}, .object = &time},
      {.key = "solver", .type = ValueType::object, .default_value = json::object(), .object = &solver},
      {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
-     {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &discretization}},
+     {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &discretization},
+     {.key = "compare", .type = ValueType::object, .object = &compare}},
     {}, {}, {}, {}, check_scene};
 
 }  // namespace

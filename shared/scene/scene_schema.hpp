@@ -23,6 +23,7 @@ enum class ValueType {
   object_array,       ///< array of at least `minimum_count` elements, each by `object`
   components,         ///< non-empty array of distinct "x", "y", "z"
   vector3_or_string,  ///< [3] or the one string in `choices`
+  any,                ///< any JSON value, checked by the object's `check`
 };
 
 struct Bound {

@@ -202,6 +202,7 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
       return (path.is_absolute() ? path : folder_ / path).lexically_normal().string();
     }
     case ValueType::object: return resolve_object(value, *rule.object, pointer, depth + 1);
+    case ValueType::any: return value;
     case ValueType::object_array: {
       if (!value.is_array()) fail(pointer, "expected an array, got " + describe(value));
       if (value.size() < rule.minimum_count)

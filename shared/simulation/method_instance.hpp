@@ -1,7 +1,7 @@
 #pragma once
 // What a method builds for one scene, and what the run driver needs from it: the
 // discretization, output of its mesh, and the embedded surface every method deforms
-// (DESIGN.md, "Metrics": methods are compared on the same surface vertices).
+// (docs/architecture.md, "Metrics": methods are compared on the same surface vertices).
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
@@ -31,8 +31,10 @@ public:
   virtual const SurfaceMesh& embedded_surface() const = 0;
   /// Displacement of every embedded surface vertex (#vertices × 3).
   virtual Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const = 0;
-  /// The initial velocity field (#dofs) of the scene's initial conditions.
-  virtual Eigen::VectorXd initial_velocity(const InitialConditions& initial) const = 0;
+  /// The coefficients (#dofs) of a vector field in the method's basis: exact for affine
+  /// fields, which every method's basis reproduces (initial velocities, the patch and
+  /// rigid-motion tests of the conformance suite).
+  virtual Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const = 0;
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
 };

@@ -3,8 +3,11 @@
 #include <omp.h>
 
 #include <chrono>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "shared/common/error.hpp"
@@ -13,13 +16,60 @@
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
 #include "shared/simulation/progress.hpp"
+#include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/timed_discretization.hpp"
 #include "shared/solve/blas_info.hpp"
+#include "shared/solve/critical_time_step.hpp"
 #include "shared/solve/time_integrator.hpp"
 
 namespace altfem {
 
 namespace {
+
+// A static problem with a load and nothing holding the body has no equilibrium: its
+// rigid-body modes move without bound. Caught before solving, as bad input.
+void check_static_supports(const Scene& scene, const Discretization& discretization) {
+  if (!scene.time.is_static || !discretization.constrained_dofs().empty() || discretization.imposes_conditions_weakly())
+    return;
+  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0;
+  if (loaded)
+    throw InputError(input_message(scene.file.string(), "/boundary_conditions",
+                                   "a static problem with a load needs Dirichlet conditions that hold the body "
+                                   "(none selects any DOF): its rigid-body modes have no equilibrium; add a "
+                                   "condition, or add a time block for a dynamic run"));
+}
+
+// The state after a step must be finite and bounded: an explicit step above the
+// stability limit, or a diverging solve, is stopped at the first such step (exit 3)
+// before anything non-finite reaches an output file.
+void check_state(const State& state, double total_energy, double size, int step, double time_step,
+                 double critical_time_step) {
+  const bool finite = state.displacement.allFinite() && state.velocity.allFinite() && std::isfinite(total_energy);
+  const double largest = finite ? state.displacement.cwiseAbs().maxCoeff() : 0.0;
+  if (finite && largest <= 1e6 * size) return;
+  std::ostringstream message;
+  message << "step " << step << ": the state ";
+  if (finite)
+    message << "exploded (displacement " << largest << " m, over 1e6 times the body's size " << size << " m)";
+  else
+    message << "is not finite";
+  if (std::isfinite(critical_time_step) && time_step > critical_time_step)
+    message << "; the time step " << time_step << " s exceeds the explicit stability limit, about " << critical_time_step
+            << " s: reduce time.dt or use an implicit integrator";
+  throw NumericalError(message.str());
+}
+
+// A failure of a near-incompressible problem gets the reason that usually lies behind
+// it: the tangent's condition number grows like λ/μ, so residuals stall at round-off.
+std::string near_incompressible_hint(const Scene& scene) {
+  const double nu = scene.material.poisson_ratio;
+  if (nu < 0.49) return "";
+  std::ostringstream hint;
+  hint << std::setprecision(8) << " — at Poisson's ratio " << nu << " (λ/μ = " << 2 * nu / (1 - 2 * nu)
+       << ") the tangent is ill-conditioned and residuals stall at round-off: use a higher-order element, a looser "
+          "solver.tolerance, or a locking-free discretization";
+  return hint.str();
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -110,6 +160,15 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   const TimedDiscretization discretization(method->discretization());
   const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
   TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
+  check_static_supports(scene, discretization);
+  const bool explicit_steps = !scene.time.is_static && scene.time.integrator == IntegratorKind::symplectic_euler;
+  const double critical_time_step =
+      explicit_steps ? estimate_critical_time_step(discretization) : std::numeric_limits<double>::infinity();
+  if (explicit_steps && scene.time.dt > critical_time_step)
+    std::fprintf(stderr,
+                 "altfem: warning: time.dt = %g s exceeds the explicit stability limit, about %.3g s (2/omega_max, "
+                 "omega_max^2 the largest eigenvalue of M^-1 K at rest): symplectic Euler will diverge\n",
+                 scene.time.dt, critical_time_step);
   setup_seconds += seconds_since(start);
 
   std::filesystem::create_directories(output_directory);
@@ -128,35 +187,50 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
                          "install libopenblas0-pthread\n", blas.library.c_str());
   summary["facts"] = method->facts();
+  if (explicit_steps) summary["facts"]["critical_time_step"] = critical_time_step;
 
   State state;
   state.displacement = Eigen::VectorXd::Zero(discretization.dof_count());
   state.velocity = scene.time.is_static ? Eigen::VectorXd::Zero(discretization.dof_count()).eval()
-                                        : method->initial_velocity(scene.initial);
+                                        : initial_velocity(*method, scene.initial);
   state.time = scene.time.is_static ? 1.0 : 0.0;  // docs/scene-schema.md: statics evaluate motions at t = 1 s
   if (!scene.time.is_static) integrator.apply_constraints(state);
 
   FrameWriter frames(*method, output_directory, scene.output);
   const int steps = scene.time.is_static ? 1 : scene.time.steps;
-  long long newton_iterations = 0, linear_iterations = 0;
+  long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
+  const double size = geometry.bounds.diagonal().norm();
   std::string status = "ok";
   Progress progress(steps);
   int steps_done = 0;
   try {
     frames.write(state.displacement, scene.time.is_static ? 0.0 : state.time);
-    log << "# step time newton_iterations linear_iterations residual total_energy\n";
+    // iterations: Newton iterations, or objective evaluations with solver.nonlinear = lbfgs.
+    log << "# step time iterations linear_iterations residual total_energy\n";
     for (int step = 1; step <= steps; ++step) {
-      const StepReport report = integrator.step(state);
+      StepReport report;
+      try {
+        report = integrator.step(state);
+      } catch (const NumericalError&) {
+        const StepReport failed = integrator.failed_step_report();
+        newton_iterations += failed.newton_iterations;
+        lbfgs_evaluations += failed.lbfgs_evaluations;
+        linear_iterations += failed.linear_iterations;
+        throw;
+      }
       newton_iterations += report.newton_iterations;
+      lbfgs_evaluations += report.lbfgs_evaluations;
       linear_iterations += report.linear_iterations;
+      const double total_energy = integrator.total_energy(state);
+      check_state(state, total_energy, size, step, scene.time.dt, critical_time_step);
       steps_done = step;
-      log << step << ' ' << state.time << ' ' << report.newton_iterations << ' ' << report.linear_iterations << ' '
-          << report.residual << ' ' << integrator.total_energy(state) << '\n';
+      log << step << ' ' << state.time << ' ' << report.newton_iterations + report.lbfgs_evaluations << ' '
+          << report.linear_iterations << ' ' << report.residual << ' ' << total_energy << '\n';
       if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, state.time);
       progress.update(step, report.newton_iterations);
     }
   } catch (const NumericalError& error) {
-    status = std::string("error: ") + error.what();
+    status = std::string("error: ") + error.what() + near_incompressible_hint(scene);
   }
 
   const LinearSolverStatistics& statistics = linear_solver->statistics();
@@ -171,6 +245,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
   summary["steps"] = steps_done;
   summary["newton_iterations"] = newton_iterations;
+  if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;
   summary["linear_iterations"] = linear_iterations;
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();

@@ -9,7 +9,7 @@
 
 namespace altfem {
 
-/// Runs a scene with one method and writes into `output_directory` (DESIGN.md,
+/// Runs a scene with one method and writes into `output_directory` (docs/conventions.md,
 /// "Command line and outputs"): summary.json, log.txt, volume.pvd + volume_NNNNNN.vtu
 /// and surface.pvd + surface_NNNNNN.vtu every `output.every` steps.
 ///

@@ -29,10 +29,17 @@ public:
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return inner_.hessian_pattern(); }
   bool hessian_is_constant() const override { return inner_.hessian_is_constant(); }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return inner_.mass_matrix(); }
-  const Eigen::VectorXd& lumped_mass() const override { return inner_.lumped_mass(); }
+  const ExplicitMass& explicit_mass() const override { return inner_.explicit_mass(); }
+  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
+    return inner_.body_force(acceleration);
+  }
+  Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override {
+    return inner_.explicit_body_force(acceleration);
+  }
   Eigen::VectorXd external_force(double time) const override { return inner_.external_force(time); }
   const std::vector<int>& constrained_dofs() const override { return inner_.constrained_dofs(); }
   Eigen::VectorXd prescribed_displacement(double time) const override { return inner_.prescribed_displacement(time); }
+  bool imposes_conditions_weakly() const override { return inner_.imposes_conditions_weakly(); }
   PreconditionerFactory preconditioner_factory() const override { return inner_.preconditioner_factory(); }
 
 private:

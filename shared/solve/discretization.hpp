@@ -1,10 +1,14 @@
 #pragma once
-// What a method gives the time integrators (DESIGN.md, "Core abstractions"). The fem
-// method implements it now; fcm, dg and harmonic will.
+// What a method gives the time integrators (docs/architecture.md, "Core
+// abstractions"). Nothing here assumes a nodal basis: body forces come as load vectors
+// integrated against the basis, explicit steps use the method's own mass inverse, and
+// a method may impose its boundary conditions weakly inside its energy (Nitsche,
+// penalty) and constrain no DOF at all.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "shared/solve/explicit_mass.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem {
@@ -15,31 +19,49 @@ public:
 
   virtual int dof_count() const = 0;
 
-  /// Elastic energy Ψ(u); +∞ for a deformation a material rejects.
+  /// Elastic energy Ψ(u), including any term a method adds (DG face terms, ghost
+  /// penalties, weakly imposed conditions); +∞ for a deformation a material rejects.
   virtual double energy(const Eigen::VectorXd& displacement) const = 0;
   /// ∂Ψ/∂u (#dofs).
   virtual void gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const = 0;
   /// ∂²Ψ/∂u² into a matrix with hessian_pattern().
   virtual void hessian(const Eigen::VectorXd& displacement, Eigen::SparseMatrix<double>& hessian,
                        bool project_spd) const = 0;
-  /// The sparsity of hessian(), mass_matrix() and every matrix the integrators build.
+  /// The sparsity of hessian(), mass_matrix() and every matrix the integrators build
+  /// (they add value arrays; TimeIntegrator checks the patterns are identical).
   virtual const Eigen::SparseMatrix<double>& hessian_pattern() const = 0;
   /// True when the Hessian does not depend on u (linear elasticity).
   virtual bool hessian_is_constant() const = 0;
 
   /// Consistent mass matrix, with hessian_pattern().
   virtual const Eigen::SparseMatrix<double>& mass_matrix() const = 0;
-  /// Diagonal (lumped) mass for explicit integration (#dofs, positive).
-  virtual const Eigen::VectorXd& lumped_mass() const = 0;
+  /// The mass explicit integration multiplies and inverts (lumped for Lagrange bases,
+  /// block-diagonal for DG).
+  virtual const ExplicitMass& explicit_mass() const = 0;
 
-  /// External forces other than gravity at a time (gravity is M·g, added by the
-  /// integrators). Zero by default.
+  /// The load vector of a uniform body acceleration a (#dofs): f_(3b+i) = ∫ ρ a_i φ_b dV.
+  /// For a partition-of-unity basis it equals M·(a repeated per basis function); for
+  /// monomial, harmonic or cut-cell bases only the integral is right.
+  virtual Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const = 0;
+  /// The body load explicit integration pairs with explicit_mass(), so that a uniform
+  /// acceleration accelerates every point uniformly: with a lumped mass that is
+  /// M_L·(a repeated per basis function), not the integral (Tet10's corner functions
+  /// integrate to negative values); with a consistent (block) mass it is body_force(a).
+  virtual Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const {
+    return body_force(acceleration);
+  }
+  /// External forces other than body forces at a time (tractions; the boundary data
+  /// of weakly imposed conditions). Zero by default.
   virtual Eigen::VectorXd external_force(double /*time*/) const { return Eigen::VectorXd::Zero(dof_count()); }
 
-  /// The DOFs with a prescribed displacement (sorted, fixed for the whole run).
+  /// The DOFs with a prescribed displacement (sorted, fixed for the whole run); empty
+  /// for a method that imposes its conditions weakly.
   virtual const std::vector<int>& constrained_dofs() const = 0;
   /// Their prescribed displacements at a time, in constrained_dofs() order.
   virtual Eigen::VectorXd prescribed_displacement(double time) const = 0;
+  /// True when Dirichlet conditions act inside energy() and external_force() (weakly),
+  /// so the problem can be supported with no constrained DOF.
+  virtual bool imposes_conditions_weakly() const { return false; }
 
   /// A method-specific preconditioner for the iterative linear solvers (FCM's
   /// Additive Schwarz, DG's block Jacobi); empty for none.

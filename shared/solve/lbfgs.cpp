@@ -1,121 +1,136 @@
 #include "shared/solve/lbfgs.hpp"
 
-#include <nlopt.hpp>
-
-#include <algorithm>
 #include <cmath>
-#include <exception>
-#include <limits>
+#include <deque>
 #include <stdexcept>
-#include <vector>
 
 namespace altfem {
 namespace {
 
-constexpr double infinity = std::numeric_limits<double>::infinity();
+// Hager & Zhang's approximate Wolfe conditions (2005, eq. (23)) with δ = 0.1, σ = 0.9,
+// and their energy slack ε_k = 1e-6 |f(x)| for values at round-off.
+constexpr double sufficient_decrease = 0.1, curvature = 0.9, energy_slack = 1e-6;
+constexpr int max_line_search_evaluations = 40;
 
-// Luksan's L-BFGS (NLopt's LD_LBFGS) has a hard-coded stop ‖∇f‖∞ ≤ 1e-8
-// (luksan/plis.c, tolg). Handing NLopt s·f with s ≥ √n · 1e-8 / tolerance makes
-// that test imply ours, ‖∇f‖₂ ≤ √n ‖∇f‖∞ ≤ tolerance, so ours always decides.
-double objective_scale(Eigen::Index size, double gradient_tolerance) {
-  return std::max(1.0, 2 * std::sqrt(static_cast<double>(size)) * 1e-8 / gradient_tolerance);
-}
-
-struct Run {
-  const LbfgsObjective& objective;
-  nlopt::opt& optimizer;
-  double gradient_tolerance = 0;
-  int max_evaluations = 0;
-  double scale = 1;
-  Eigen::VectorXd point{}, gradient{};  // workspaces, #unknowns
-  Eigen::VectorXd best_point{};
-  double best_value = infinity;
-  double best_gradient_norm = infinity;
-  int evaluations = 0;
-  bool converged = false;
-  bool out_of_evaluations = false;
-  std::exception_ptr error{};
-
-  bool stopping() const { return converged || out_of_evaluations || error; }
+struct Point {
+  Eigen::VectorXd x, gradient;  // gradient in the scaled variables
+  double value = 0;
 };
 
-double evaluate(unsigned size, const double* x, double* gradient, void* data) {
-  Run& run = *static_cast<Run*>(data);
-  // NLopt only looks at force_stop() between line searches; until it does, the
-  // line search gets +inf without the objective being evaluated.
-  if (run.stopping()) {
-    if (gradient != nullptr) std::fill(gradient, gradient + size, 0.0);
-    return infinity;
-  }
-  try {
-    run.point = Eigen::Map<const Eigen::VectorXd>(x, size);
-    const double value = run.objective(run.point, run.gradient);
-    ++run.evaluations;
-    if (run.gradient.size() != static_cast<Eigen::Index>(size))
+class Minimizer {
+public:
+  Minimizer(const LbfgsObjective& objective, const LbfgsOptions& options, LbfgsResult& result)
+      : objective_(objective), options_(options), result_(result) {}
+
+  // f and ∇_y f at y (x = scale ⊙ y), counting evaluations; ‖∇_x f‖ into `norm`.
+  Point evaluate(const Eigen::VectorXd& y, double& norm) {
+    Point point{y, Eigen::VectorXd(), 0};
+    Eigen::VectorXd x = scaled() ? y.cwiseProduct(options_.scale) : y;
+    point.value = objective_(x, gradient_);
+    ++result_.evaluations;
+    if (gradient_.size() != y.size())
       throw std::logic_error("minimize_lbfgs: the objective wrote a gradient of the wrong size");
-    if (gradient != nullptr) Eigen::Map<Eigen::VectorXd>(gradient, size) = run.scale * run.gradient;
-    if (run.evaluations >= run.max_evaluations) run.out_of_evaluations = true;
-    if (std::isfinite(value)) {
-      const double gradient_norm = run.gradient.norm();
-      run.converged = gradient_norm <= run.gradient_tolerance;
-      if (value < run.best_value || run.converged) {
-        run.best_value = value;
-        run.best_point = run.point;
-        run.best_gradient_norm = gradient_norm;
-      }
-    }
-    if (run.stopping()) run.optimizer.force_stop();
-    return run.scale * value;
-  } catch (...) {
-    // Exceptions must not cross NLopt's C code; nlopt.hpp would turn them into a bare "nlopt failure".
-    run.error = std::current_exception();
-    run.optimizer.force_stop();
-    return infinity;
+    norm = gradient_.norm();
+    point.gradient = scaled() ? gradient_.cwiseProduct(options_.scale) : gradient_;
+    return point;
   }
+  bool out_of_evaluations() const { return result_.evaluations >= options_.max_evaluations; }
+
+private:
+  bool scaled() const { return options_.scale.size() > 0; }
+  const LbfgsObjective& objective_;
+  const LbfgsOptions& options_;
+  LbfgsResult& result_;
+  Eigen::VectorXd gradient_;
+};
+
+// −H∇f by the two-loop recursion over the stored pairs (s, y), H₀ = γI.
+Eigen::VectorXd direction(const Eigen::VectorXd& gradient, const std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& pairs) {
+  Eigen::VectorXd q = -gradient;
+  std::vector<double> alpha(pairs.size());
+  for (size_t i = pairs.size(); i-- > 0;) {
+    const auto& [s, y] = pairs[i];
+    alpha[i] = s.dot(q) / y.dot(s);
+    q -= alpha[i] * y;
+  }
+  if (!pairs.empty()) q *= pairs.back().first.dot(pairs.back().second) / pairs.back().second.squaredNorm();
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    const auto& [s, y] = pairs[i];
+    q += (alpha[i] - y.dot(q) / y.dot(s)) * s;
+  }
+  return q;
 }
 
 }  // namespace
 
 LbfgsResult minimize_lbfgs(const LbfgsObjective& objective, Eigen::VectorXd& x, const LbfgsOptions& options) {
-  nlopt::opt optimizer(nlopt::LD_LBFGS, static_cast<unsigned>(x.size()));
-  Run run{.objective = objective,
-          .optimizer = optimizer,
-          .gradient_tolerance = options.gradient_tolerance,
-          .max_evaluations = options.max_evaluations,
-          .scale = objective_scale(x.size(), options.gradient_tolerance),
-          .best_point = x};
-  optimizer.set_min_objective(evaluate, &run);
-  optimizer.set_vector_storage(static_cast<unsigned>(std::max(options.memory, 1)));
-  // Luksan's code replaces tolerances ≤ 0 by its defaults (ftol 1e-14 relative,
-  // xtol 1e-16), which stop it before small gradients are reached; the smallest
-  // positive tolerance leaves only exact stagnation.
-  optimizer.set_ftol_rel(std::numeric_limits<double>::min());
-  optimizer.set_xtol_rel(std::numeric_limits<double>::min());
-
-  std::vector<double> point(x.data(), x.data() + x.size());
-  double value = 0;
-  nlopt::result code = nlopt::FAILURE;
-  try {
-    code = optimizer.optimize(point, value);
-  } catch (const nlopt::forced_stop&) {
-    code = nlopt::FORCED_STOP;
-  } catch (const nlopt::roundoff_limited&) {
-    code = nlopt::ROUNDOFF_LIMITED;
-  } catch (const std::runtime_error&) {  // NLOPT_FAILURE, e.g. a line search that found no decrease
-    code = nlopt::FAILURE;
-  }
-  if (run.error) std::rethrow_exception(run.error);
-
+  if (options.scale.size() > 0 && (options.scale.size() != x.size() || !(options.scale.array() > 0).all()))
+    throw std::invalid_argument("minimize_lbfgs: the variable scale must be positive, one entry per unknown");
   LbfgsResult result;
-  result.evaluations = run.evaluations;
-  result.detail = nlopt_result_to_string(static_cast<nlopt_result>(code));
-  result.status = run.converged            ? LbfgsStatus::converged
-                  : run.out_of_evaluations ? LbfgsStatus::max_evaluations
-                                           : LbfgsStatus::stalled;
-  x = run.best_point;
-  result.objective = run.best_value;
-  result.gradient_norm = run.best_gradient_norm;
-  return result;
+  Minimizer minimizer(objective, options, result);
+  const Eigen::VectorXd start = options.scale.size() > 0 ? x.cwiseQuotient(options.scale) : x;
+  double norm = 0;
+  Point current = minimizer.evaluate(start, norm);
+  if (!std::isfinite(current.value)) throw std::invalid_argument("minimize_lbfgs: the objective is not finite at the start");
+  std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>> pairs;
+  const auto finish = [&](LbfgsStatus status, const std::string& detail) {
+    result.status = status;
+    result.detail = detail;
+    result.objective = current.value;
+    result.gradient_norm = norm;
+    x = options.scale.size() > 0 ? current.x.cwiseProduct(options.scale) : current.x;
+    return result;
+  };
+
+  for (;;) {
+    if (norm <= options.gradient_tolerance) return finish(LbfgsStatus::converged, "converged");
+    if (minimizer.out_of_evaluations()) return finish(LbfgsStatus::max_evaluations, "out of evaluations");
+    Eigen::VectorXd d = direction(current.gradient, pairs);
+    double slope = current.gradient.dot(d);
+    if (!(slope < 0)) {  // not a descent direction: restart from steepest descent
+      pairs.clear();
+      d = -current.gradient;
+      slope = current.gradient.dot(d);
+    }
+    // The first step of a restart is scaled so that it moves at most unit length.
+    double step = pairs.empty() ? std::min(1.0, 1.0 / d.lpNorm<Eigen::Infinity>()) : 1.0;
+    double low = 0, high = INFINITY;  // bracket of acceptable steps
+    Point trial;
+    double trial_norm = 0;
+    bool accepted = false;
+    for (int search = 0; search < max_line_search_evaluations && !minimizer.out_of_evaluations(); ++search) {
+      trial = minimizer.evaluate(current.x + step * d, trial_norm);
+      const double trial_slope = trial.gradient.dot(d);
+      const bool finite = std::isfinite(trial.value) && std::isfinite(trial_slope);
+      const bool armijo = finite && trial.value - current.value <= sufficient_decrease * step * slope;
+      const bool approximate = finite && trial.value <= current.value + energy_slack * std::abs(current.value) &&
+                               trial_slope <= (2 * sufficient_decrease - 1) * slope;
+      const bool flat_enough = finite && trial_slope >= curvature * slope;
+      if ((armijo || approximate) && flat_enough) {
+        accepted = true;
+        break;
+      }
+      if (finite && trial_norm <= options.gradient_tolerance) {  // converged inside the search
+        accepted = true;
+        break;
+      }
+      if (!finite || trial_slope > 0 || !(armijo || approximate)) {
+        high = step;  // too far: the function rose, or the slope turned
+      } else {
+        low = step;  // still descending steeply: go further
+      }
+      step = std::isfinite(high) ? 0.5 * (low + high) : 2 * step;
+    }
+    if (!accepted) return finish(LbfgsStatus::stalled, "the line search found no acceptable step");
+    const Eigen::VectorXd s = trial.x - current.x, y = trial.gradient - current.gradient;
+    if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {  // keep the pair only with positive curvature
+      pairs.emplace_back(s, y);
+      if (static_cast<int>(pairs.size()) > std::max(options.memory, 1)) pairs.pop_front();
+    }
+    current = std::move(trial);
+    norm = trial_norm;
+    ++result.iterations;
+  }
 }
 
 }  // namespace altfem

@@ -82,6 +82,7 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
 NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                                     const NewtonOptions& options, int step) {
   NewtonReport report;
+  iterations_of_last_call_ = 0;
   for (int iteration = 0;; ++iteration) {
     evaluate_gradient(objective, u, step, iteration);
     const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
@@ -96,6 +97,7 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
 
     solve_step(objective, u, gradient_, increment, options.project_spd, step, iteration);
     ++report.iterations;
+    iterations_of_last_call_ = report.iterations;
 
     // Backtracking: Armijo's sufficient decrease when the constraints are met (the
     // direction is then a descent direction of the free problem); while constraints
@@ -118,7 +120,11 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
       }
       if (backtrack >= options.max_backtracks)
         throw NumericalError(where(step, iteration) + ": line search failed (no decrease after " +
-                             std::to_string(backtrack) + " halvings; an element may be inverted)");
+                             std::to_string(backtrack) + " halvings; " +
+                             (objective.hessian_is_constant()
+                                  ? "with a constant tangent this means the residual " + scientific(residual) +
+                                        " is at the round-off of the linear solve)"
+                                  : "an element may be inverted)"));
       alpha *= 0.5;
     }
     u = trial_;
@@ -127,9 +133,11 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
 
 NewtonReport NewtonSolver::single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                                        const NewtonOptions& options, int step) {
+  iterations_of_last_call_ = 0;
   evaluate_gradient(objective, u, step, 0);
   const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);
   solve_step(objective, u, gradient_, increment, options.project_spd, step, 0);
+  iterations_of_last_call_ = 1;
   u += direction_;
   objective.gradient(u, gradient_);
   return NewtonReport{1, elimination_.free_norm(gradient_)};

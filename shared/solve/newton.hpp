@@ -47,6 +47,9 @@ public:
   /// (constrained_dofs() order). Throws NumericalError naming `step` and the iteration.
   NewtonReport minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                         const NewtonOptions& options, int step);
+  /// Linear solves of the last minimize/single_step call so far: after a NumericalError,
+  /// the iterations the failed step had spent (summary.json counts them too).
+  int iterations_of_last_call() const { return iterations_of_last_call_; }
   /// One Newton step without line search or convergence test (semi-implicit Euler).
   NewtonReport single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                            const NewtonOptions& options, int step);
@@ -66,6 +69,7 @@ private:
   Eigen::SparseMatrix<double> matrix_;
   Eigen::SparseMatrix<double> constant_hessian_;  // before elimination, for the lifting
   Eigen::VectorXd rhs_, direction_, gradient_, trial_, trial_gradient_;
+  int iterations_of_last_call_ = 0;
   bool analysed_ = false;
   bool constant_factorised_ = false;
 };

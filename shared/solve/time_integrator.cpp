@@ -1,6 +1,8 @@
 #include "shared/solve/time_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "shared/common/error.hpp"
@@ -10,10 +12,17 @@ namespace altfem {
 
 namespace {
 
-Eigen::VectorXd repeat_per_node(const Eigen::Vector3d& vector, int dofs) {
-  Eigen::VectorXd repeated(dofs);
-  for (int i = 0; i < dofs; ++i) repeated[i] = vector[i % 3];
-  return repeated;
+// The integrators add the value arrays of the Hessian, the mass and the damping
+// matrix: that is only right when all of them have one pattern.
+void check_same_pattern(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& pattern) {
+  const bool same = mass.rows() == pattern.rows() && mass.cols() == pattern.cols() &&
+                    mass.nonZeros() == pattern.nonZeros() && mass.isCompressed() && pattern.isCompressed() &&
+                    std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1,
+                               mass.outerIndexPtr()) &&
+                    std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(),
+                               mass.innerIndexPtr());
+  if (!same)
+    throw std::logic_error("TimeIntegrator: the discretization's mass matrix and Hessian patterns differ");
 }
 
 // Static equilibrium: minimise Ψ(u) − f·u.
@@ -101,12 +110,11 @@ TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolve
     : discretization_(discretization), linear_solver_(linear_solver), options_(options),
       elimination_(discretization.hessian_pattern(), discretization.constrained_dofs()),
       newton_(linear_solver, discretization.hessian_pattern(), elimination_) {
-  const int dofs = discretization.dof_count();
-  gravity_force_ = discretization.mass_matrix() * repeat_per_node(options.gravity, dofs);
+  check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
+  gravity_force_ = discretization.body_force(options.gravity);
   const Eigen::Vector3d representative =
       options.gravity.norm() > 0 ? options.gravity : Eigen::Vector3d::Ones().eval();
-  absolute_tolerance_ =
-      options.tolerance * elimination_.free_norm(discretization.mass_matrix() * repeat_per_node(representative, dofs));
+  absolute_tolerance_ = options.tolerance * elimination_.free_norm(discretization.body_force(representative));
   if (!(absolute_tolerance_ > 0))
     throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
 }
@@ -117,19 +125,27 @@ void TimeIntegrator::apply_constraints(State& state) const {
 
 double TimeIntegrator::total_energy(const State& state) const {
   const double kinetic = options_.kind == IntegrationScheme::symplectic_euler
-                             ? 0.5 * state.velocity.dot(discretization_.lumped_mass().cwiseProduct(state.velocity))
+                             ? discretization_.explicit_mass().kinetic_energy(state.velocity)
                              : 0.5 * state.velocity.dot(discretization_.mass_matrix() * state.velocity);
   return kinetic + discretization_.energy(state.displacement) - gravity_force_.dot(state.displacement);
 }
 
 StepReport TimeIntegrator::step(State& state) {
-  if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
-      options_.kind != IntegrationScheme::semi_implicit)
-    return step_lbfgs(state);
-  switch (options_.kind) {
-    case IntegrationScheme::symplectic_euler: return step_symplectic(state);
-    case IntegrationScheme::semi_implicit: return step_implicit(state, true);
-    default: return step_implicit(state, false);
+  const long long linear_before = linear_solver_.statistics().iterations;
+  failed_step_ = StepReport{};
+  try {
+    if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
+        options_.kind != IntegrationScheme::semi_implicit)
+      return step_lbfgs(state);
+    switch (options_.kind) {
+      case IntegrationScheme::symplectic_euler: return step_symplectic(state);
+      case IntegrationScheme::semi_implicit: return step_implicit(state, true);
+      default: return step_implicit(state, false);
+    }
+  } catch (const NumericalError&) {
+    if (failed_step_.lbfgs_evaluations == 0) failed_step_.newton_iterations = newton_.iterations_of_last_call();
+    failed_step_.linear_iterations = linear_solver_.statistics().iterations - linear_before;
+    throw;
   }
 }
 
@@ -167,21 +183,23 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     state.time = next_time;
     ++state.step;
   }
-  return StepReport{report.iterations, linear_solver_.statistics().iterations - linear_before, report.residual};
+  return StepReport{report.iterations, 0, linear_solver_.statistics().iterations - linear_before, report.residual};
 }
 
 StepReport TimeIntegrator::step_symplectic(State& state) {
-  // Symplectic (semi-implicit) Euler with lumped mass: v⁺ = v + h M_L⁻¹ (f − ∇Ψ(u) − αM_L v),
-  // u⁺ = u + h v⁺; constrained DOFs follow their prescribed motion.
+  // Symplectic (semi-implicit) Euler with the method's explicit mass M_e (lumped for
+  // Lagrange bases) and its matching body load f:
+  //   v⁺ = v + h M_e⁻¹ (f − ∇Ψ(u) − αM_e v),  u⁺ = u + h v⁺;
+  // constrained DOFs follow their prescribed motion.
   const double h = options_.time_step;
   Eigen::VectorXd internal;
   discretization_.gradient(state.displacement, internal);
-  const Eigen::VectorXd& mass = discretization_.lumped_mass();
-  const Eigen::VectorXd gravity = mass.cwiseProduct(repeat_per_node(options_.gravity, discretization_.dof_count()));
-  Eigen::VectorXd force = gravity + discretization_.external_force(state.time) - internal;
-  if (options_.rayleigh_mass > 0) force -= options_.rayleigh_mass * mass.cwiseProduct(state.velocity);
+  const ExplicitMass& mass = discretization_.explicit_mass();
+  Eigen::VectorXd force =
+      discretization_.explicit_body_force(options_.gravity) + discretization_.external_force(state.time) - internal;
+  if (options_.rayleigh_mass > 0) force -= options_.rayleigh_mass * mass.multiply(state.velocity);
   const Eigen::VectorXd previous = state.displacement;
-  state.velocity += h * force.cwiseQuotient(mass);
+  state.velocity += h * mass.solve(force);
   state.displacement += h * state.velocity;
   state.time += h;
   ++state.step;
@@ -192,7 +210,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
     throw NumericalError("step " + std::to_string(state.step) +
                          ": symplectic Euler diverged (non-finite displacement; the time step may exceed the "
                          "stability limit)");
-  return StepReport{0, 0, 0};
+  return StepReport{};
 }
 
 StepReport TimeIntegrator::step_lbfgs(State& state) {
@@ -230,8 +248,19 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   };
   LbfgsOptions lbfgs;
   lbfgs.gradient_tolerance = absolute_tolerance_;
+  // Jacobi scaling from the Hessian at the start (lbfgs.hpp: without it Luksan's line
+  // search stalls on the twisting beam, issue #22).
+  Eigen::SparseMatrix<double> hessian = discretization_.hessian_pattern();
+  objective.hessian(u, hessian, true);
+  const Eigen::VectorXd diagonal = hessian.diagonal();
+  lbfgs.scale.resize(x.size());
+  for (size_t i = 0; i < free.size(); ++i) {
+    const double d = std::abs(diagonal[free[i]]);
+    lbfgs.scale[static_cast<Eigen::Index>(i)] = d > 0 ? 1.0 / std::sqrt(d) : 1.0;
+  }
   lbfgs.max_evaluations = 100 * options_.max_iterations;
   const LbfgsResult result = minimize_lbfgs(evaluate, x, lbfgs);
+  failed_step_.lbfgs_evaluations = result.evaluations;
   if (result.status != LbfgsStatus::converged)
     throw NumericalError("step " + std::to_string(state.step + 1) + ", L-BFGS evaluation " +
                          std::to_string(result.evaluations) + ": not converged (" + result.detail + "), gradient norm " +
@@ -243,7 +272,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
     state.time = time;
     ++state.step;
   }
-  return StepReport{result.evaluations, 0, result.gradient_norm};
+  return StepReport{0, result.evaluations, 0, result.gradient_norm};
 }
 
 }  // namespace altfem

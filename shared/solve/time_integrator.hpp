@@ -1,5 +1,5 @@
 #pragma once
-// Static equilibrium and the time integrators of DESIGN.md, over any Discretization.
+// Static equilibrium and the time integrators (docs/architecture.md), over any Discretization.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
@@ -39,6 +39,7 @@ struct State {
 
 struct StepReport {
   int newton_iterations = 0;
+  int lbfgs_evaluations = 0;  ///< L-BFGS steps report objective evaluations here, not as Newton iterations
   long long linear_iterations = 0;
   double residual = 0;
 };
@@ -54,7 +55,10 @@ public:
   /// Advances the state by one time step (static equilibrium: solves once, at the
   /// state's time). Throws NumericalError naming the step.
   StepReport step(State& state);
-  /// Kinetic (½ vᵀ M v, lumped mass for symplectic Euler) plus elastic energy, minus
+  /// What the last step() spent before it threw: its Newton iterations or L-BFGS
+  /// evaluations, and linear iterations (a failed run's counters include them).
+  StepReport failed_step_report() const { return failed_step_; }
+  /// Kinetic (½ vᵀ M v, the explicit mass for symplectic Euler) plus elastic energy, minus
   /// the potential of gravity.
   double total_energy(const State& state) const;
   /// The absolute Newton tolerance: tolerance · ‖M a_rep‖ over the free DOFs.
@@ -70,7 +74,8 @@ private:
   IntegratorOptions options_;
   DirichletElimination elimination_;
   NewtonSolver newton_;
-  Eigen::VectorXd gravity_force_;  // M g
+  Eigen::VectorXd gravity_force_;  // ∫ρ g φ
+  StepReport failed_step_;
   double absolute_tolerance_ = 0;
 };
 

@@ -1,6 +1,9 @@
 """Reads what `altfem run` wrote with meshio (independent of altfem's own code) and
-checks it against summary.json: frame counts, cell types and counts, finite
-displacements. Usage: check_run_output.py OUTPUT_DIR. Exit code 0 when it matches."""
+checks it against summary.json: frame counts, cell counts, finite displacements.
+Works for every method: Lagrange cells (then the points are the nodes, 3 DOFs each),
+polyhedra, and per-element discontinuous fields (DG writes each element's own copy
+of its vertices, so the DOF count is not 3 x points). Usage: check_run_output.py
+OUTPUT_DIR. Exit code 0 when it matches."""
 import json
 import pathlib
 import sys
@@ -23,20 +26,28 @@ surface_frames = frames("surface.pvd")
 if len(volume_frames) != summary["steps"] + 1 and len(volume_frames) < 2:
     failures.append(f"expected the initial and final volume frames, got {len(volume_frames)}")
 last = meshio.read(volume_frames[-1])
-(kind, expected_cells), = summary["elements"].items()
-meshio_names = {"tet4": "tetra", "tet10": "tetra10", "hex8": "hexahedron", "hex20": "hexahedron20",
-                "hex27": "hexahedron27", "tet20": "VTK_LAGRANGE_TETRAHEDRON"}
 cells = {block.type: len(block.data) for block in last.cells}
-if cells.get(meshio_names[kind], 0) != expected_cells:
-    failures.append(f"volume cells {cells}, expected {expected_cells} {meshio_names[kind]}")
+expected_total = sum(summary["elements"].values())
+if sum(cells.values()) != expected_total:
+    failures.append(f"volume cells {cells}, expected {expected_total} in all ({summary['elements']})")
+lagrange_names = {"tet4": "tetra", "tet10": "tetra10", "hex8": "hexahedron", "hex20": "hexahedron20",
+                  "hex27": "hexahedron27", "tet20": "VTK_LAGRANGE_TETRAHEDRON"}
+for kind, count in summary["elements"].items():
+    if kind in lagrange_names and cells.get(lagrange_names[kind], 0) != count:
+        failures.append(f"volume cells {cells}, expected {count} {lagrange_names[kind]}")
 displacement = last.point_data["displacement"]
-if displacement.shape != (summary["dofs"] // 3, 3) or not numpy.isfinite(displacement).all():
+if displacement.shape != (len(last.points), 3) or not numpy.isfinite(displacement).all():
     failures.append(f"displacement array {displacement.shape} not finite or of the wrong size")
+nodal = all(kind in lagrange_names for kind in summary["elements"])
+if nodal and len(last.points) != summary["dofs"] // 3:
+    failures.append(f"{len(last.points)} points for {summary['dofs']} DOFs of a Lagrange mesh")
 first = meshio.read(volume_frames[0])
 if numpy.abs(first.point_data["displacement"]).max() != 0.0:
     failures.append("the initial frame is not at rest")
 surface = meshio.read(folder / summary["surface"])
-if surface.cells[0].type != "triangle" or len(surface.points) != summary["facts"]["surface_vertices"]:
+if surface.cells[0].type != "triangle" or not numpy.isfinite(surface.point_data["displacement"]).all():
+    failures.append("the deformed surface is not a finite triangle surface")
+if "surface_vertices" in summary["facts"] and len(surface.points) != summary["facts"]["surface_vertices"]:
     failures.append("the deformed surface is not the embedded triangle surface")
 if summary["surface"] != surface_frames[-1].name:
     failures.append("summary.json's surface is not the last surface frame")

@@ -1,4 +1,4 @@
-// `altfem run` end to end on shipped scenes: the summary.json contract of DESIGN.md,
+// `altfem run` end to end on shipped scenes: the summary.json contract of docs/conventions.md,
 // files read back by meshio, solver counts, and numerical failure (exit 3).
 #include <gtest/gtest.h>
 

@@ -38,6 +38,30 @@ struct AssemblyProblem {
   }
 };
 
+/// Central differences of an assembler's energy (→ gradient) and gradient (→ Hessian)
+/// at u, one unknown at a time: #dofs and #dofs × #dofs.
+struct FiniteDifferences {
+  Eigen::VectorXd gradient;
+  Eigen::MatrixXd hessian;
+};
+
+inline FiniteDifferences central_differences(const ElasticAssembler& assembler, const Eigen::VectorXd& u, double step) {
+  FiniteDifferences differences{Eigen::VectorXd(u.size()), Eigen::MatrixXd(u.size(), u.size())};
+  Eigen::VectorXd shifted = u, plus, minus;
+  for (Eigen::Index i = 0; i < u.size(); ++i) {
+    shifted[i] = u[i] + step;
+    const double energy_plus = assembler.energy(shifted);
+    assembler.gradient(shifted, plus);
+    shifted[i] = u[i] - step;
+    const double energy_minus = assembler.energy(shifted);
+    assembler.gradient(shifted, minus);
+    shifted[i] = u[i];
+    differences.gradient[i] = (energy_plus - energy_minus) / (2 * step);
+    differences.hessian.col(i) = (plus - minus) / (2 * step);
+  }
+  return differences;
+}
+
 /// A moderate stretch with shear: well inside every model's domain (det G ≈ 1.1).
 inline Eigen::Matrix3d moderate_deformation() {
   Eigen::Matrix3d G;

@@ -34,7 +34,6 @@ TEST_P(AssemblyDerivatives, GradientAndHessianMatchFiniteDifferences) {
   const test::AssemblyProblem problem(GetParam().type, {2, 2, 2}, GetParam().model);
   const ElasticAssembler& assembler = *problem.assembler;
   const Eigen::VectorXd u = problem.displacement(test::moderate_deformation(), 0.05, 1);
-  const int n = assembler.dof_count();
 
   Eigen::VectorXd gradient;
   assembler.gradient(u, gradient);
@@ -42,20 +41,9 @@ TEST_P(AssemblyDerivatives, GradientAndHessianMatchFiniteDifferences) {
   assembler.hessian(u, hessian);
   const Eigen::MatrixXd dense(hessian);
 
-  Eigen::VectorXd difference_gradient(n);
-  Eigen::MatrixXd difference_hessian(n, n);
-  Eigen::VectorXd shifted = u, plus, minus;
-  for (int i = 0; i < n; ++i) {
-    shifted[i] = u[i] + step;
-    const double energy_plus = assembler.energy(shifted);
-    assembler.gradient(shifted, plus);
-    shifted[i] = u[i] - step;
-    const double energy_minus = assembler.energy(shifted);
-    assembler.gradient(shifted, minus);
-    shifted[i] = u[i];
-    difference_gradient[i] = (energy_plus - energy_minus) / (2 * step);
-    difference_hessian.col(i) = (plus - minus) / (2 * step);
-  }
+  const test::FiniteDifferences differences = test::central_differences(assembler, u, step);
+  const Eigen::VectorXd& difference_gradient = differences.gradient;
+  const Eigen::MatrixXd& difference_hessian = differences.hessian;
   EXPECT_LT((difference_gradient - gradient).norm(), 1e-6 * gradient.norm());
   EXPECT_LT((difference_hessian - dense).norm(), 1e-6 * dense.norm());
   EXPECT_LT((dense - dense.transpose()).norm(), 1e-13 * dense.norm());

@@ -12,6 +12,8 @@
 #include <new>
 
 #include "tests/unit/assembly/assembly_fixture.hpp"
+#include "tests/unit/assembly/face_fixture.hpp"
+#include "tests/unit/assembly/face_term.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t size);
@@ -114,6 +116,22 @@ TEST(CountingAllocator, SeesOperatorNewAndEigenMalloc) {
   EXPECT_EQ(vector.size(), 100);
 }
 
+// Counts the allocations of a Hessian assembly and then of the rest, and expects none.
+template <typename Hessian, typename Rest>
+void expect_no_allocation(Hessian&& hessian, Rest&& rest) {
+  operator_news = 0;
+  mallocs = 0;
+  counting = true;
+  hessian();
+  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
+  rest();
+  counting = false;
+  EXPECT_EQ(hessian_news, 0);
+  EXPECT_EQ(hessian_mallocs, 0);
+  EXPECT_EQ(operator_news.load(), 0);
+  EXPECT_EQ(mallocs.load(), 0);
+}
+
 class SecondAssembly : public ::testing::TestWithParam<ElementType> {};
 
 TEST_P(SecondAssembly, AllocatesNothing) {
@@ -126,24 +144,44 @@ TEST_P(SecondAssembly, AllocatesNothing) {
   assembler.hessian(u, hessian);  // warm-up: sizes the gradient, starts the OpenMP pool
   assembler.gradient(u, gradient);
 
-  operator_news = 0;
-  mallocs = 0;
-  counting = true;
-  assembler.hessian(u, hessian);
-  const long hessian_news = operator_news.exchange(0), hessian_mallocs = mallocs.exchange(0);
-  assembler.gradient(u, gradient);
-  const double energy = assembler.energy(u);
-  counting = false;
-  EXPECT_EQ(hessian_news, 0);
-  EXPECT_EQ(hessian_mallocs, 0);
-  EXPECT_EQ(operator_news.load(), 0);
-  EXPECT_EQ(mallocs.load(), 0);
+  double energy = 0;
+  expect_no_allocation([&] { assembler.hessian(u, hessian); },
+                       [&] {
+                         assembler.gradient(u, gradient);
+                         energy = assembler.energy(u);
+                       });
   EXPECT_GT(gradient.norm(), 0.0);
   EXPECT_GT(energy, 0.0);
 }
 
 INSTANTIATE_TEST_SUITE_P(ElasticAssembler, SecondAssembly, ::testing::Values(ElementType::tet10, ElementType::hex20),
                          [](const auto& info) { return std::string(element_name(info.param)); });
+
+
+TEST(FaceAssembler, SecondAssemblyAllocatesNothing) {
+  // Faces of 8 and 20 functions (fixed-size paths) and of 10, 12, 14 and 16 (the
+  // dynamic path, its sizes interleaved in every thread's share), enough per colour for
+  // parallel regions, with a non-quadratic kernel.
+  const TabulatedFaces faces = test::grid_faces(8, test::random_cell_sizes(512, {4, 6, 10}, 3), 4, 5);
+  int sizes_seen[21] = {};
+  for (int f = 0; f < faces.size(); ++f) ++sizes_seen[faces[f].basis_count()];
+  for (int size : {8, 10, 12, 14, 16, 20}) ASSERT_GT(sizes_seen[size], 0) << size;
+  const test::FaceTerm<test::QuarticJumpKernel> term(faces, test::QuarticJumpKernel());
+  const Eigen::VectorXd u = Eigen::VectorXd::LinSpaced(term.dof_count(), -0.5, 0.5);
+  SparseMatrix hessian = term.sparsity.pattern();
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(term.dof_count());
+  term.assembler.add_hessian(u, hessian);  // warm-up: sizes the scratch, starts the OpenMP pool
+  term.assembler.add_gradient(u, gradient);
+
+  double energy = 0;
+  expect_no_allocation([&] { term.assembler.add_hessian(u, hessian); },
+                       [&] {
+                         term.assembler.add_gradient(u, gradient);
+                         energy = term.assembler.energy(u);
+                       });
+  EXPECT_GT(gradient.norm(), 0.0);
+  EXPECT_GT(energy, 0.0);
+}
 
 }  // namespace
 }  // namespace altfem

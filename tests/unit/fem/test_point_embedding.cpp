@@ -1,4 +1,4 @@
-// PointEmbedding reproduces an affine displacement at random interior points of
+// BasisEmbedding over a Lagrange mesh reproduces an affine displacement at random interior points of
 // distorted meshes (the basis reproduces affine fields; the inverse map must find
 // the right cell and reference point).
 #include <gtest/gtest.h>
@@ -7,7 +7,8 @@
 #include <random>
 
 #include "shared/element/geometry_map.hpp"
-#include "shared/fem/point_embedding.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/simulation/basis_embedding.hpp"
 #include "tests/unit/fem/test_meshes.hpp"
 
 namespace altfem {
@@ -49,7 +50,7 @@ TEST_P(EmbeddingOfType, ReproducesAnAffineDisplacement) {
   const Eigen::Vector3d b(0.3, -0.2, 0.1);
   const Eigen::VectorXd u = test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; });
 
-  const PointEmbedding embedding(mesh, points);
+  const BasisEmbedding embedding(LagrangeBasisEvaluator(mesh), points);
   EXPECT_EQ(embedding.outside_count(), 0);
   EXPECT_EQ(embedding.max_outside_distance(), 0.0);
   const Eigen::MatrixXd displacement = embedding.displacement(u);

@@ -3,7 +3,7 @@
 // boxes, and Gauss quadrature on simplices (altfem_quadrature's collapsed rules, exact
 // for polynomials of the rule's strength) over a signed cone decomposition. Each
 // reference also returns ∫|f|, the denominator of the project's relative error
-// |err| / max(|exact|, ∫|f|) (DESIGN.md, Conventions).
+// |err| / max(|exact|, ∫|f|) (docs/conventions.md, "Numerical conventions").
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>

@@ -18,7 +18,7 @@ Eigen::Vector3d node(const VolumeMesh& mesh, Eigen::Index cell, int local) {
   return mesh.nodes.row(mesh.cells(cell, local)).transpose();
 }
 
-// DESIGN.md convention: VTK node order. Tet10 edges (0,1),(1,2),(0,2),(0,3),(1,3),(2,3).
+// docs/conventions.md: VTK node order. Tet10 edges (0,1),(1,2),(0,2),(0,3),(1,3),(2,3).
 void expect_tet10_midpoints(const VolumeMesh& mesh) {
   constexpr std::array<std::array<int, 2>, 6> edges{{{0, 1}, {1, 2}, {0, 2}, {0, 3}, {1, 3}, {2, 3}}};
   for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)

@@ -1,8 +1,8 @@
-// Time integrators over FemDiscretization: exact free fall for every scheme, and a
+// Time integrators over a Lagrange TabulatedDiscretization: exact free fall for every scheme, and a
 // linear material analysed and factorised once for a whole run.
 #include <gtest/gtest.h>
 
-#include "shared/fem/fem_discretization.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/solve/time_integrator.hpp"
 #include "tests/unit/fem/test_meshes.hpp"
 
@@ -27,8 +27,9 @@ class FreeFall : public ::testing::TestWithParam<IntegrationScheme> {};
 // (backward Euler's single Newton step is exact because K annihilates translations).
 TEST_P(FreeFall, MatchesTheDiscreteRecurrenceExactly) {
   const auto material = make_material(MaterialModel::stable_neo_hookean, 1e5, 0.3, 1000);
-  const FemDiscretization discretization(structured_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10), *material,
-                                         {}, 4);
+  const auto fem = make_lagrange_discretization(structured_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10),
+                                                *material, {}, 4);
+  const Discretization& discretization = *fem;
   const auto solver = make_linear_solver({});
   IntegratorOptions options;
   options.kind = GetParam();
@@ -56,8 +57,9 @@ INSTANTIATE_TEST_SUITE_P(TimeIntegrator, FreeFall,
 
 TEST(TimeIntegrator, LinearMaterialAnalysesAndFactorisesOnce) {
   const auto material = make_material(MaterialModel::linear, 1e6, 0.3, 1000);
-  const FemDiscretization discretization(structured_grid(test::unit_cube(), {3, 2, 2}, ElementType::hex8), *material,
-                                         {clamp_x_min()}, 3);
+  const auto fem = make_lagrange_discretization(structured_grid(test::unit_cube(), {3, 2, 2}, ElementType::hex8),
+                                                *material, {clamp_x_min()}, 3);
+  const Discretization& discretization = *fem;
   EXPECT_TRUE(discretization.hessian_is_constant());
   const auto solver = make_linear_solver({});
   IntegratorOptions options;

@@ -11,7 +11,7 @@ namespace altfem::testing {
 
 enum class Shape { box, simplex };  // [-1,1]^d, or {x_i >= 0, Σ x_i <= 1}; d = points.cols()
 
-/// Largest relative error |Q(f) − ∫f| / max(|∫f|, ∫|f|) (DESIGN.md convention) over the
+/// Largest relative error |Q(f) − ∫f| / max(|∫f|, ∫|f|) (docs/conventions.md) over the
 /// monomials f = x^a y^b z^c of total degree <= degree; `worst` names the monomial.
 double largest_monomial_error(const QuadratureRule& rule, Shape shape, int degree, std::string* worst = nullptr);
 

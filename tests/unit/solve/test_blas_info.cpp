@@ -10,7 +10,7 @@ namespace altfem {
 namespace {
 
 // This machine runs Debian's OpenBLAS (libopenblas0-pthread), which takes over
-// libblas.so.3 through the alternatives system (see shared ENVIRONMENT.md).
+// libblas.so.3 through the alternatives system (docs/environment.md, "BLAS").
 TEST(BlasInfo, ReportsOpenBlasInThisProcess) {
   // Make sure CHOLMOD, hence its BLAS, is in use in this process.
   Eigen::SparseMatrix<double> matrix(1, 1);

@@ -59,26 +59,26 @@ TEST(Lbfgs, MinimisesConvexQuadratic) {
 }
 
 TEST(Lbfgs, InfiniteValueMakesTheLineSearchBacktrack) {
-  // f = Σ xᵢ² − log xᵢ is +inf for any xᵢ ≤ 0 (like an inverted element);
-  // minimiser xᵢ = 1/√2. From xᵢ ≥ 2 the first unit steepest-descent step
-  // lands at 1/xᵢ − xᵢ < 0: NLopt must shrink the step.
+  // f = Σ 100 xᵢ² − log xᵢ is +inf for any xᵢ ≤ 0 (like an inverted element);
+  // minimiser xᵢ = 1/√200. From xᵢ in [0.5, 0.9] the first step (steepest descent,
+  // moving the largest coordinate by 1) lands below 0: the line search must shrink it.
   int infinite_values = 0;
   const auto barrier = [&](const Eigen::VectorXd& x, Eigen::VectorXd& gradient) {
-    gradient = 2 * x - x.cwiseInverse();
+    gradient = 200 * x - x.cwiseInverse();
     if ((x.array() <= 0).any()) {
       ++infinite_values;
       return std::numeric_limits<double>::infinity();
     }
     // A scalar loop: Eigen's vectorised log trips GCC 12's -Wuninitialized with AVX-512.
     double value = 0;
-    for (double coordinate : x) value += coordinate * coordinate - std::log(coordinate);
+    for (double coordinate : x) value += 100 * coordinate * coordinate - std::log(coordinate);
     return value;
   };
-  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(8, 2.0, 5.0);
+  Eigen::VectorXd x = Eigen::VectorXd::LinSpaced(8, 0.5, 0.9);
   const LbfgsResult result = minimize_lbfgs(barrier, x);
   EXPECT_EQ(result.status, LbfgsStatus::converged) << result.detail;
   EXPECT_GT(infinite_values, 0);
-  EXPECT_LT((x - Eigen::VectorXd::Constant(8, std::sqrt(0.5))).norm(), 1e-8);
+  EXPECT_LT((x - Eigen::VectorXd::Constant(8, std::sqrt(1.0 / 200))).norm(), 1e-8);
 }
 
 TEST(Lbfgs, StopsAtMaxEvaluationsWithBestPoint) {

@@ -1,0 +1,158 @@
+#include "dg/dg_linear_system.hpp"
+
+#include <Eigen/QR>
+#include <cmath>
+
+#include "dg/exact_element_matrices.hpp"
+#include "shared/geometry/polygon_moments.hpp"
+#include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
+
+namespace altfem::dg {
+
+namespace {
+
+// Centre and size of a cell: its centroid and diameter (Kaufmann et al. §5).
+MonomialBasis cell_basis(const Polyhedron& cell, int degree) {
+  const Eigen::VectorXd first = polyhedron_moments(cell, 1);
+  const Eigen::Vector3d centroid = first.segment<3>(1) / first[0];
+  double diameter = 0;
+  for (Eigen::Index i = 0; i < cell.vertices.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < cell.vertices.rows(); ++j)
+      diameter = std::max(diameter, (cell.vertices.row(i) - cell.vertices.row(j)).norm());
+  return MonomialBasis(degree, centroid, diameter);
+}
+
+void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
+               const std::vector<int>& dofs) {
+  for (Eigen::Index i = 0; i < block.rows(); ++i)
+    for (Eigen::Index j = 0; j < block.cols(); ++j)
+      if (block(i, j) != 0) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+}
+
+}  // namespace
+
+DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings)
+    : cells_(std::move(cells)), faces_(std::move(faces)), settings_(settings) {
+  offsets_.push_back(0);
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (const Polyhedron& cell : cells_) {
+    bases_.push_back(cell_basis(cell, settings.degree));
+    const ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, 1.0);
+    volumes_.push_back(matrices.integrals[0]);
+    std::vector<int> dofs;
+    for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
+    add_block(triplets, matrices.stiffness, dofs);
+    offsets_.push_back(offsets_.back() + bases_.back().size());
+  }
+  for (const DgFace& face : faces_) {
+    if (face.plus < 0 && !face.dirichlet) continue;  // a free boundary: no face term
+    const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
+    const Eigen::MatrixXd matrix = exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
+                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux);
+    std::vector<int> dofs;
+    for (int side : {face.minus, face.plus}) {
+      if (side < 0) continue;
+      for (int k = 0; k < 3 * bases_[side].size(); ++k) dofs.push_back(3 * offsets_[side] + k);
+    }
+    add_block(triplets, matrix, dofs);
+  }
+  stiffness_.resize(dof_count(), dof_count());
+  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+double DgLinearSystem::face_penalty(const DgFace& face) const {
+  const double area = (face.polygon.rows() >= 3) ? polygon_area_vector(face.polygon).norm() : 0.0;
+  double inverse_volumes = 1.0 / volumes_[face.minus];
+  if (face.plus >= 0) inverse_volumes += 1.0 / volumes_[face.plus];
+  return settings_.penalty * area * inverse_volumes;  // eq. (20)
+}
+
+Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd unused;
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 2);
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      bases_[c].evaluate(x, phi, unused);
+      const Eigen::Vector3d f = rule.weights[q] * force_density(x);
+      for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
+    }
+  }
+  return load;
+}
+
+double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const {
+  double squared = 0;
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd unused;
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 4);
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      bases_[c].evaluate(x, phi, unused);
+      Eigen::Vector3d value = Eigen::Vector3d::Zero();
+      for (int a = 0; a < bases_[c].size(); ++a) value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
+      squared += rule.weights[q] * (value - field(x)).squaredNorm();
+    }
+  }
+  return std::sqrt(squared);
+}
+
+Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
+  Eigen::VectorXd coefficients(dof_count());
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const MonomialBasis& basis = bases_[c];
+    // Collocation on a (k+2)³ grid of the frame's [-¼, ¼]³: exact for fields in P_k.
+    const int per_axis = basis.degree() + 2;
+    const int points = per_axis * per_axis * per_axis;
+    Eigen::MatrixXd system(points, basis.size()), values(points, 3);
+    Eigen::VectorXd phi;
+    Eigen::MatrixXd unused;
+    int row = 0;
+    for (int i = 0; i < per_axis; ++i)
+      for (int j = 0; j < per_axis; ++j)
+        for (int k = 0; k < per_axis; ++k, ++row) {
+          const Eigen::Vector3d xi = (Eigen::Vector3d(i, j, k) / (per_axis - 1)).array() * 0.5 - 0.25;
+          const Eigen::Vector3d x = basis.centre() + basis.scale() * xi;
+          basis.evaluate(x, phi, unused);
+          system.row(row) = phi.transpose();
+          values.row(row) = field(x).transpose();
+        }
+    const Eigen::MatrixXd solution = system.colPivHouseholderQr().solve(values);  // #functions × 3
+    for (int a = 0; a < basis.size(); ++a) coefficients.segment<3>(3 * (offsets_[c] + a)) = solution.row(a).transpose();
+  }
+  return coefficients;
+}
+
+Eigen::VectorXd DgLinearSystem::dirichlet_load(const VectorField& data) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd gradients;
+  for (const DgFace& face : faces_) {
+    if (face.plus >= 0 || !face.dirichlet) continue;
+    const MonomialBasis& basis = bases_[face.minus];
+    const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
+    const double penalty = face_penalty(face);
+    const Eigen::Vector3d& n = face.normal;
+    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      const Eigen::Vector3d g = data(x);
+      basis.evaluate(x, phi, gradients);
+      for (int a = 0; a < basis.size(); ++a) {
+        // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
+        // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
+        const Eigen::Vector3d grad = gradients.row(a).transpose();
+        Eigen::Vector3d entry = penalty * phi[a] * g;
+        if (settings_.flux == Flux::interior_penalty)
+          entry -= settings_.mu * (grad.dot(n) * g + g.dot(grad) * n) + settings_.lambda * g.dot(n) * grad;
+        load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
+      }
+    }
+  }
+  return load;
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,68 @@
+#pragma once
+// The DG system of isotropic linear elasticity on polyhedral cells, integrated exactly
+// (Kaufmann et al. 2009 §4): K = Σ_K K_K + Σ_f K_f (eqs. (23)-(26)) with the penalty
+// η_f = η · area(f) · (1/vol(K⁻) + 1/vol(K⁺)) of eq. (20), the loads of a body force and
+// of Dirichlet data imposed weakly on boundary faces (Nitsche for interior penalty, the
+// penalty alone for Babuška–Zlámal).
+#include <Eigen/SparseCore>
+#include <functional>
+#include <vector>
+
+#include "dg/face_matrices.hpp"
+#include "dg/monomial_basis.hpp"
+#include "shared/geometry/polyhedron.hpp"
+
+namespace altfem::dg {
+
+struct DgFace {
+  Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
+  Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
+  int minus = 0;
+  int plus = -1;            ///< -1: a boundary face
+  bool dirichlet = false;   ///< boundary faces only: the data of dirichlet_load acts here
+};
+
+struct DgSettings {
+  int degree = 2;
+  Flux flux = Flux::interior_penalty;
+  double penalty = 20;  ///< η of eq. (20), in the units of the stiffness (λ, μ)
+  double lambda = 1, mu = 1;
+};
+
+using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+class DgLinearSystem {
+public:
+  DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings);
+
+  /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
+  const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  int offset(int cell) const { return offsets_[cell]; }
+  const MonomialBasis& basis(int cell) const { return bases_[cell]; }
+  int dof_count() const { return 3 * offsets_.back(); }
+
+  /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
+  /// polynomial f of degree ≤ k + 2).
+  Eigen::VectorXd body_load(const VectorField& force_density) const;
+  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, by a rule of
+  /// strength 2k + 2 on each face (exact for polynomial data of degree ≤ k + 3).
+  Eigen::VectorXd dirichlet_load(const VectorField& data) const;
+  /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
+  double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
+  /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
+  /// collocation at points of each cell's frame.
+  Eigen::VectorXd interpolate(const VectorField& field) const;
+
+private:
+  double face_penalty(const DgFace& face) const;
+
+  std::vector<Polyhedron> cells_;
+  std::vector<DgFace> faces_;
+  DgSettings settings_;
+  std::vector<MonomialBasis> bases_;
+  std::vector<double> volumes_;
+  std::vector<int> offsets_;                // #cells + 1
+  Eigen::SparseMatrix<double> stiffness_;
+};
+
+}  // namespace altfem::dg

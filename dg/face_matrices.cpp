@@ -1,0 +1,53 @@
+#include "dg/face_matrices.hpp"
+
+#include "dg/face_polynomials.hpp"
+
+namespace altfem::dg {
+
+Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                  const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
+                                  double penalty, Flux flux) {
+  const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
+  const Eigen::Vector3d centre = minus.centre();
+  const double scale = minus.scale();
+  const FaceIntegrals face(polygon, degree, centre, scale);  // in the minus element's frame
+  const auto integrate = [&](const Polynomial& p, const Polynomial& q) { return face.product(p, q); };
+
+  // The face's functions: the minus element's, then the plus element's, with the sign
+  // of their jump (+1 minus, −1 plus) and the weight of their stress in the average.
+  std::vector<Polynomial> values;
+  std::vector<std::array<Polynomial, 3>> gradients;
+  std::vector<double> jump_sign;
+  const double average = plus ? 0.5 : 1.0;
+  for (const MonomialBasis* side : {&minus, plus}) {
+    if (side == nullptr) continue;
+    const FunctionsInFrame functions = in_frame(*side, centre, scale, degree);
+    values.insert(values.end(), functions.values.begin(), functions.values.end());
+    gradients.insert(gradients.end(), functions.gradients.begin(), functions.gradients.end());
+    jump_sign.insert(jump_sign.end(), functions.values.size(), side == &minus ? 1.0 : -1.0);
+  }
+  const auto n = static_cast<int>(values.size());
+  Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      // Penalty (26): η_f ∫ [[φ_a e_i]]·[[φ_b e_k]] = η_f s_a s_b δ_ik ∫ φ_a φ_b.
+      const double jumps = penalty * jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
+      for (int i = 0; i < 3; ++i) matrix(3 * a + i, 3 * b + i) += jumps;
+      if (flux != Flux::interior_penalty) continue;
+      // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
+      //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b.
+      Eigen::Vector3d value_times_gradient;  // ∫ φ_a ∂_d φ_b
+      for (int d = 0; d < 3; ++d) value_times_gradient[d] = integrate(values[a], gradients[b][d]);
+      const double factor = -jump_sign[a] * average;
+      for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) {
+          const double traction = (i == k ? mu * value_times_gradient.dot(normal) : 0.0) +
+                                  mu * normal[k] * value_times_gradient[i] + lambda * normal[i] * value_times_gradient[k];
+          matrix(3 * a + i, 3 * b + k) += factor * traction;
+          matrix(3 * b + k, 3 * a + i) += factor * traction;  // symmetry (25) = (24)ᵀ
+        }
+    }
+  return matrix;
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,26 @@
+#pragma once
+// The face matrices of DG for isotropic linear elasticity, integrated exactly
+// (Kaufmann et al. 2009 §4.1-4.2, eqs. (19)-(21), (24)-(26)): products of the two
+// neighbours' monomials are polynomials, integrated over the planar polygonal face by
+// the divergence theorem (shared/geometry/planar_polygon_moments). With n the unit
+// normal from the minus to the plus element, [[u]] = u⁻ − u⁺ and {σ} = ½(σ⁻ + σ⁺):
+//   interior penalty (21):  −∫ [[v]]·{σ(u)}n − ∫ [[u]]·{σ(v)}n + η_f ∫ [[u]]·[[v]]
+//   Babuška–Zlámal (19):                                          η_f ∫ [[u]]·[[v]]
+// On a boundary face (no plus element) the same with u⁺ = 0 and {σ} = σ⁻: Nitsche's
+// weak Dirichlet condition for IP, the penalty alone for BZ (§4.2).
+#include <Eigen/Core>
+
+#include "dg/monomial_basis.hpp"
+
+namespace altfem::dg {
+
+enum class Flux { interior_penalty, babuska_zlamal };
+
+/// The face's matrix over [minus basis, plus basis] (3(n⁻ + n⁺) square, local DOF 3a+i,
+/// the minus element's functions first; n⁺ = 0 without `plus`). polygon: #vertices × 3,
+/// planar; normal: unit, minus → plus; penalty: η_f of eq. (20).
+Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                  const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
+                                  double penalty, Flux flux);
+
+}  // namespace altfem::dg

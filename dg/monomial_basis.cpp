@@ -1,0 +1,36 @@
+#include "dg/monomial_basis.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace altfem::dg {
+
+MonomialBasis::MonomialBasis(int degree, const Eigen::Vector3d& centre, double scale)
+    : degree_(degree), centre_(centre), scale_(scale), exponents_(monomial_exponents(degree)) {
+  if (!(scale > 0) || !std::isfinite(scale)) throw std::invalid_argument("MonomialBasis: the scale must be positive");
+}
+
+void MonomialBasis::evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, Eigen::MatrixXd& gradients) const {
+  const Eigen::Vector3d local = (x - centre_) / scale_;
+  // Powers ξ_d^p for p ≤ degree, per axis.
+  Eigen::MatrixXd powers(degree_ + 1, 3);
+  powers.row(0).setOnes();
+  for (int p = 1; p <= degree_; ++p) powers.row(p) = powers.row(p - 1).cwiseProduct(local.transpose());
+  values.resize(size());
+  gradients.resize(size(), 3);
+  for (int a = 0; a < size(); ++a) {
+    const auto alpha = exponents_.row(a);
+    values[a] = powers(alpha(0), 0) * powers(alpha(1), 1) * powers(alpha(2), 2);
+    for (int d = 0; d < 3; ++d) {
+      if (alpha(d) == 0) {
+        gradients(a, d) = 0;
+        continue;
+      }
+      double derivative = alpha(d) / scale_;
+      for (int e = 0; e < 3; ++e) derivative *= powers(e == d ? alpha(e) - 1 : alpha(e), e);
+      gradients(a, d) = derivative;
+    }
+  }
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,114 @@
+#include "fcm/fcm_discretization.hpp"
+
+#include <map>
+
+#include "shared/common/error.hpp"
+#include "shared/element/reference_element.hpp"
+#include "shared/fem/nodal_dirichlet.hpp"
+#include "shared/fem/tabulate_lagrange.hpp"
+#include "shared/quadrature/reference_rules.hpp"
+#include "shared/solve/additive_schwarz_preconditioner.hpp"
+
+namespace altfem::fcm {
+
+namespace {
+
+QuadratureRule standard_rule(ElementType type, int strength) {
+  return reference_element(type).shape() == ElementShape::tetrahedron ? tet_rule(strength) : hex_rule(strength);
+}
+
+// `rule` followed by the standard rule with its weights scaled by `factor` (§5.3).
+QuadratureRule stabilized(const QuadratureRule& rule, const QuadratureRule& standard, double factor) {
+  QuadratureRule result;
+  result.strength = rule.strength;
+  result.points.resize(rule.points.rows() + standard.points.rows(), 3);
+  result.points << rule.points, standard.points;
+  result.weights.resize(rule.weights.size() + standard.weights.size());
+  result.weights << rule.weights, factor * standard.weights;
+  return result;
+}
+
+// Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked.
+LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
+                             int strength, double stabilization) {
+  LagrangeCellRules rules{standard_rule(type, strength), {}, {}};
+  for (size_t k = 0; k < kept.size(); ++k) {
+    const CellQuadrature& cell = cells[kept[k]];
+    if (!cell.rule) continue;
+    rules.custom.emplace(static_cast<int>(k), stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization)
+                                                                : *cell.rule);
+  }
+  return rules;
+}
+
+}  // namespace
+
+FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
+                                           const Material& material, const std::vector<DirichletCondition>& dirichlet,
+                                           const FcmOptions& options, const std::string& scene_file) {
+  const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
+  const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
+
+  // Classify the cells and keep those with enough material.
+  FcmDiscretization fcm;
+  std::vector<int> kept;
+  for (size_t cell = 0; cell < stiffness_cells.size(); ++cell) {
+    const double fraction = stiffness_cells[cell].volume_fraction;
+    if (fraction <= 0) {
+      ++fcm.counts.outside;
+    } else if (fraction < options.discard_fraction) {
+      ++fcm.counts.discarded;
+    } else {
+      kept.push_back(static_cast<int>(cell));
+      fraction >= 1 ? ++fcm.counts.inside : ++fcm.counts.cut;
+      fcm.volume_fractions.push_back(fraction);
+    }
+  }
+  if (kept.empty())
+    throw InputError(input_message(scene_file, "/geometry", "no background cell holds material (check the grid's extent)"));
+  fcm.background_cells = kept;
+
+  // The kept cells with their nodes renumbered in order of first use.
+  fcm.mesh.element_type = background.element_type;
+  fcm.mesh.cells.resize(static_cast<Eigen::Index>(kept.size()), background.cells.cols());
+  std::map<int, int> node_of;
+  std::vector<int> used_nodes;
+  for (size_t k = 0; k < kept.size(); ++k)
+    for (Eigen::Index a = 0; a < background.cells.cols(); ++a) {
+      const int node = background.cells(kept[k], a);
+      const auto [entry, added] = node_of.emplace(node, static_cast<int>(used_nodes.size()));
+      if (added) used_nodes.push_back(node);
+      fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
+    }
+  fcm.mesh.nodes.resize(static_cast<Eigen::Index>(used_nodes.size()), 3);
+  for (size_t i = 0; i < used_nodes.size(); ++i) fcm.mesh.nodes.row(static_cast<Eigen::Index>(i)) = background.nodes.row(used_nodes[i]);
+
+  const bool stabilize_stiffness = options.stabilized == StabilizedMatrices::mass_and_stiffness;
+  const bool stabilize_mass = options.stabilized != StabilizedMatrices::none;
+  DiscretizationParts parts;
+  parts.elements = tabulate_lagrange(fcm.mesh, kept_rules(stiffness_cells, kept, background.element_type,
+                                                          options.quadrature_strength,
+                                                          stabilize_stiffness ? options.stabilization : 0.0));
+  parts.mass_elements = tabulate_lagrange(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
+                                                               options.mass_quadrature_strength,
+                                                               stabilize_mass ? options.stabilization : 0.0));
+  parts.materials = {&material};
+  parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");
+
+  // §5.2: one Schwarz block per small cut cell: the DOFs of its nodes.
+  std::vector<std::vector<int>> blocks;
+  for (size_t k = 0; k < kept.size(); ++k) {
+    if (fcm.volume_fractions[k] >= options.schwarz_fraction) continue;
+    std::vector<int> block;
+    for (Eigen::Index a = 0; a < fcm.mesh.cells.cols(); ++a)
+      for (int i = 0; i < 3; ++i) block.push_back(3 * fcm.mesh.cells(static_cast<Eigen::Index>(k), a) + i);
+    blocks.push_back(std::move(block));
+  }
+  fcm.schwarz_blocks = static_cast<int>(blocks.size());
+  const double epsilon = options.schwarz_epsilon;
+  parts.preconditioner = [blocks, epsilon] { return std::make_unique<AdditiveSchwarzPreconditioner>(blocks, epsilon); };
+  fcm.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
+  return fcm;
+}
+
+}  // namespace altfem::fcm

@@ -1,0 +1,56 @@
+#pragma once
+// The finite cell discretization (Longva et al. 2020 §3.2-5): the conforming Lagrange
+// parts of shared/fem on the background cells that hold material, with the cut cells'
+// own rules for stiffness and (at a higher strength, never simplified) mass, small cut
+// cells discarded, the quadrature stabilised, and the Additive-Schwarz preconditioner
+// over the small cut cells.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "fcm/cell_quadrature.hpp"
+#include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/mesh/volume_mesh.hpp"
+#include "shared/scene/scene.hpp"
+
+namespace altfem::fcm {
+
+/// Which matrices get the stabilising points (§5.3).
+enum class StabilizedMatrices { none, mass, mass_and_stiffness };
+
+struct FcmOptions {
+  int quadrature_strength = 4;       ///< stiffness rules (the paper: Hex20 4, Tet10 3, Hex8 2)
+  int mass_quadrature_strength = 8;  ///< mass and load rules (higher, never simplified; §6)
+  /// Cells whose volume fraction is below this are discarded (§5.3; 0: keep all).
+  double discard_fraction = 1e-4;
+  /// §5.3: every cut cell also gets the uncut cell's standard points with weights
+  /// scaled by this factor (0: off). They are added to the final (simplified) rule, so
+  /// that simplification never trades them against the material's points.
+  double stabilization = 1e-6;
+  StabilizedMatrices stabilized = StabilizedMatrices::mass_and_stiffness;
+  /// §5.2: cut cells below this volume fraction get an Additive-Schwarz block.
+  double schwarz_fraction = 0.5;
+  double schwarz_epsilon = 1e-13;  ///< ε of eq. (14)
+};
+
+struct FcmCellCounts {
+  int inside = 0, cut = 0, discarded = 0, outside = 0;
+};
+
+struct FcmDiscretization {
+  VolumeMesh mesh;                      ///< the kept cells, nodes renumbered (basis function i = node i)
+  std::vector<int> background_cells;    ///< per kept cell: its index in the background grid
+  std::vector<double> volume_fractions; ///< per kept cell
+  FcmCellCounts counts;
+  int schwarz_blocks = 0;
+  std::unique_ptr<TabulatedDiscretization> discretization;
+};
+
+/// Builds the FCM on `background` (any Lagrange grid) for `material` (which must
+/// outlive the result) with nodal Dirichlet conditions on the kept nodes. Throws
+/// InputError when no cell holds material or a condition selects no kept node.
+FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
+                                           const Material& material, const std::vector<DirichletCondition>& dirichlet,
+                                           const FcmOptions& options, const std::string& scene_file = "scene");
+
+}  // namespace altfem::fcm

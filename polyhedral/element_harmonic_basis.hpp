@@ -1,0 +1,51 @@
+#pragma once
+// The harmonic basis of one polyhedral element (Martin et al. 2008 §4-5): for each
+// node (vertex) i, the function harmonic inside the element that equals the 2D
+// harmonic coordinate of node i on every face (FaceHarmonicCoordinates) — hence 1 at
+// node i, 0 at the others, linear along edges, continuous across shared faces up to the
+// fit's accuracy. MFS, eq. (11) in 3D: N(x) = Σ_j w_j / ‖x − k_j‖ + a·x + a₀, fitted in
+// the least-squares sense to the boundary data at m ≈ 3n collocation points (eq. (14));
+// one factorisation serves every node. The linear polynomial makes the basis a partition
+// of unity that reproduces linear fields exactly, which is what rules out ghost forces.
+#include <Eigen/Core>
+
+#include "polyhedral/mfs_options.hpp"
+#include "shared/geometry/polyhedron.hpp"
+
+namespace altfem::harmonic {
+
+class ElementHarmonicBasis {
+public:
+  /// The element's nodes are its vertices. Convex or not; faces planar, counter-clockwise
+  /// seen from outside. Throws std::invalid_argument for a polyhedron with no face.
+  ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options);
+
+  int node_count() const { return static_cast<int>(coefficients_.cols()); }
+  /// N_i(x) (#nodes) and ∇N_i(x) (#nodes × 3).
+  void evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, Eigen::MatrixXd& gradients) const;
+  /// N_i at each point: #points × #nodes.
+  Eigen::MatrixXd values(const Eigen::MatrixXd& points) const;
+  /// The kernel centres k_j (#centres × 3, physical coordinates), all outside the element.
+  Eigen::MatrixXd centres() const;
+  /// The collocation points' RMS misfit of the boundary data, over all nodes (a fit quality).
+  double boundary_residual() const { return boundary_residual_; }
+  /// ∫_∂e b_i n dA per node (#nodes × 3) of the boundary data b_i — the faces' harmonic
+  /// coordinates, which neighbours share — by a strength-6 rule on each face: what
+  /// ∫_e ∇N_i dV must be (divergence theorem), and what the consistency correction of
+  /// harmonic_tabulation makes the quadrature of the gradients give.
+  const Eigen::MatrixXd& boundary_integrals() const { return boundary_integrals_; }
+
+private:
+  Eigen::Vector3d origin_;
+  double scale_ = 1;
+  Eigen::MatrixX3d centres_;      // #centres × 3, local (x − origin) / scale
+  Eigen::MatrixXd coefficients_;  // (#centres + 4) × #nodes
+  double boundary_residual_ = 0;
+  Eigen::MatrixXd boundary_integrals_;  // #nodes × 3
+};
+
+/// Generalised winding number of a closed polyhedron about x (1 inside, 0 outside; by
+/// the signed solid angles of each face's fan triangles, exact for non-convex faces).
+double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x);
+
+}  // namespace altfem::harmonic

@@ -1,0 +1,138 @@
+#include "polyhedral/face_harmonic_coordinates.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/QR>
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+#include "shared/geometry/polygon_moments.hpp"
+
+namespace altfem::harmonic {
+
+namespace {
+
+// Points along the boundary of a counter-clockwise polygon (#nodes × 2): each node, then
+// `per_edge` evenly spaced points inside each edge. For each point: the edge it lies on,
+// the parameter t along it (0 at its first node), and the outward unit normal (at a node:
+// the mean of its two edges' normals).
+struct BoundarySamples {
+  Eigen::MatrixX2d points;
+  Eigen::MatrixX2d normals;
+  std::vector<int> edges;
+  std::vector<double> parameters;
+};
+
+BoundarySamples sample_boundary(const Eigen::MatrixX2d& polygon, int per_edge) {
+  const auto n = static_cast<int>(polygon.rows());
+  std::vector<Eigen::Vector2d> edge_normals(n);
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d along = polygon.row((k + 1) % n) - polygon.row(k);
+    edge_normals[k] = Eigen::Vector2d(along.y(), -along.x()).normalized();
+  }
+  BoundarySamples samples;
+  const int count = n * (per_edge + 1);
+  samples.points.resize(count, 2);
+  samples.normals.resize(count, 2);
+  int row = 0;
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j <= per_edge; ++j, ++row) {
+      const double t = static_cast<double>(j) / (per_edge + 1);
+      samples.points.row(row) = (1 - t) * polygon.row(k) + t * polygon.row((k + 1) % n);
+      const Eigen::Vector2d normal = j == 0 ? (edge_normals[k] + edge_normals[(k + n - 1) % n]).normalized().eval()
+                                            : edge_normals[k];
+      samples.normals.row(row) = normal.transpose();
+      samples.edges.push_back(k);
+      samples.parameters.push_back(t);
+    }
+  return samples;
+}
+
+// Whether x lies inside the polygon (even-odd rule) and its distance to the boundary.
+std::pair<bool, double> locate(const Eigen::MatrixX2d& polygon, const Eigen::Vector2d& x) {
+  const auto n = static_cast<int>(polygon.rows());
+  bool inside = false;
+  double distance = INFINITY;
+  for (int k = 0; k < n; ++k) {
+    const Eigen::Vector2d a = polygon.row(k), b = polygon.row((k + 1) % n);
+    if ((a.y() > x.y()) != (b.y() > x.y()) && x.x() < a.x() + (x.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+      inside = !inside;
+    const Eigen::Vector2d ab = b - a;
+    const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    distance = std::min(distance, (a + t * ab - x).norm());
+  }
+  return {inside, distance};
+}
+
+}  // namespace
+
+FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon, const MfsOptions& options)
+    : polygon_(polygon) {
+  const auto n = static_cast<int>(polygon.rows());
+  if (n < 3 || polygon.cols() != 3) throw std::invalid_argument("FaceHarmonicCoordinates: a face needs >= 3 nodes in 3D");
+  // A right-handed frame of the plane about the face normal, so the polygon is
+  // counter-clockwise in (u, v).
+  const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
+  origin_ = polygon.colwise().mean().transpose();
+  axis_u_ = (polygon.row(1) - polygon.row(0)).transpose();
+  axis_u_ = (axis_u_ - axis_u_.dot(normal) * normal).normalized();
+  axis_v_ = normal.cross(axis_u_);
+  scale_ = 1;
+  scale_ = (to_plane(polygon).rowwise().norm()).maxCoeff();
+  const Eigen::MatrixX2d local = to_plane(polygon);
+  double diameter = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) diameter = std::max(diameter, (local.row(i) - local.row(j)).norm());
+
+  // Kernel centres: boundary samples moved outward by ξ·size (eq. (12)); a centre that
+  // lands inside a non-convex polygon, or too close to it, is dropped.
+  const BoundarySamples samples = sample_boundary(local, options.edge_samples);
+  std::vector<Eigen::Vector2d> centres;
+  for (Eigen::Index s = 0; s < samples.points.rows(); ++s) {
+    const Eigen::Vector2d centre = samples.points.row(s) + options.offset * diameter * samples.normals.row(s);
+    const auto [inside, distance] = locate(local, centre);
+    if (!inside && distance >= 0.5 * options.offset * diameter) centres.push_back(centre);
+  }
+  centres_.resize(static_cast<Eigen::Index>(centres.size()), 2);
+  for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = centres[j].transpose();
+
+  // Least squares against the boundary data at m ≈ 3n collocation points (eqs. (13)-(14)).
+  const BoundarySamples collocation =
+      sample_boundary(local, options.collocation_factor * (options.edge_samples + 1) - 1);
+  const Eigen::Index m = collocation.points.rows(), c = centres_.rows();
+  Eigen::MatrixXd system(m, c + 3);
+  Eigen::MatrixXd data = Eigen::MatrixXd::Zero(m, n);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const Eigen::Vector2d x = collocation.points.row(i);
+    for (Eigen::Index j = 0; j < c; ++j) system(i, j) = std::log((x - centres_.row(j).transpose()).norm());
+    system.block(i, c, 1, 3) << x.x(), x.y(), 1.0;
+    const int edge = collocation.edges[i];
+    const double t = collocation.parameters[i];
+    data(i, edge) += 1 - t;  // linear along the edge between its two nodes
+    data(i, (edge + 1) % n) += t;
+  }
+  coefficients_ = system.completeOrthogonalDecomposition().solve(data);
+}
+
+Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points) const {
+  Eigen::MatrixX2d local(points.rows(), 2);
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    const Eigen::Vector3d offset = points.row(p).transpose() - origin_;
+    local.row(p) << offset.dot(axis_u_) / scale_, offset.dot(axis_v_) / scale_;
+  }
+  return local;
+}
+
+Eigen::MatrixXd FaceHarmonicCoordinates::evaluate(const Eigen::MatrixXd& points) const {
+  const Eigen::MatrixX2d local = to_plane(points);
+  const Eigen::Index c = centres_.rows();
+  Eigen::MatrixXd rows(points.rows(), c + 3);
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    const Eigen::Vector2d x = local.row(p);
+    for (Eigen::Index j = 0; j < c; ++j) rows(p, j) = std::log((x - centres_.row(j).transpose()).norm());
+    rows.block(p, c, 1, 3) << x.x(), x.y(), 1.0;
+  }
+  return rows * coefficients_;
+}
+
+}  // namespace altfem::harmonic

@@ -1,0 +1,239 @@
+#!/usr/bin/python3
+"""Draws report.md and its PNG plots from an `altfem compare` results.csv alone.
+
+Usage: scripts/plot_report.py RESULTS.csv [--out DIR] [--error E]
+  --out    folder for report.md and the PNGs (default: the folder of RESULTS.csv)
+  --error  the relative RMS surface error of the equal-accuracy table (default: the
+           smallest error every method series reaches, i.e. the largest of their minima)
+"""
+import argparse
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+PHASES = ["setup_s", "quadrature_s", "assembly_s", "analysis_s", "factorisation_s", "solve_s"]  # results.csv columns
+
+
+def number(text):
+    return float(text) if text not in ("", None) else math.nan
+
+
+def read_rows(path):
+    with open(path, newline="") as stream:
+        rows = list(csv.DictReader(stream))
+    for row in rows:
+        for key in ("dofs", "elements", "quadrature_points", "newton_iterations", "linear_iterations",
+                    "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
+            row[key] = number(row[key])
+        row["series"] = f"{row['method']} {row['element']}".strip()
+    return rows
+
+
+def measured(rows):
+    """Successful, non-reference runs with a finite positive error."""
+    return [r for r in rows if r["status"] == "ok" and r["is_reference"] != "1" and r["rms_error"] > 0]
+
+
+def pareto_front(rows):
+    """Runs no other run beats in both wall time and error, sorted by time."""
+    front, best = [], math.inf
+    for row in sorted(rows, key=lambda r: (r["total_s"], r["rms_error"])):
+        if row["rms_error"] < best:
+            front.append(row)
+            best = row["rms_error"]
+    return front
+
+
+def series_of(rows):
+    groups = {}
+    for row in rows:
+        groups.setdefault(row["series"], []).append(row)
+    return groups
+
+
+def finish_error_plot(fig, ax, path, xlabel, title, legend_title):
+    """Labels, grid and legend (outside, so it hides no point) of a log-log error plot; saves it."""
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel("RMS surface error / bounding-box diagonal [-]")
+    ax.set_title(title)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(title=legend_title, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def plot_error_vs_time(rows, path):
+    fig, ax = plt.subplots(figsize=(9, 5))
+    for name, group in sorted(series_of(rows).items()):
+        group = sorted(group, key=lambda r: r["dofs"])  # the line follows refinement
+        ax.loglog([r["total_s"] for r in group], [r["rms_error"] for r in group], "o-", label=name)
+    front = pareto_front(rows)
+    ax.loglog([r["total_s"] for r in front], [r["rms_error"] for r in front], "k--", lw=1, zorder=0,
+              drawstyle="steps-post", label="Pareto front (circled runs:\nnone other is both faster\nand more accurate)")
+    ax.scatter([r["total_s"] for r in front], [r["rms_error"] for r in front], s=140, facecolors="none",
+               edgecolors="k", zorder=3)
+    finish_error_plot(fig, ax, path, "wall time of the run, total [s]", "Accuracy against cost (lower left is better)",
+                      "method, element")
+
+
+def fitted_rate(group):
+    """Slope of log(error) against log(DOFs^(1/3)) (error ~ h^rate, h ~ DOFs^(-1/3))."""
+    if len(group) < 2:
+        return None
+    h = np.array([r["dofs"] for r in group]) ** (-1.0 / 3.0)
+    e = np.array([r["rms_error"] for r in group])
+    return float(np.polyfit(np.log(h), np.log(e), 1)[0])
+
+
+def plot_error_vs_dofs(rows, path):
+    fig, ax = plt.subplots(figsize=(9, 5))
+    rates = {}
+    for name, group in sorted(series_of(rows).items()):
+        group = sorted(group, key=lambda r: r["dofs"])
+        rate = fitted_rate(group)
+        rates[name] = rate
+        label = name + (f" (rate {rate:.2f} in h)" if rate is not None else "")
+        ax.loglog([r["dofs"] for r in group], [r["rms_error"] for r in group], "o-", label=label)
+    finish_error_plot(fig, ax, path, "degrees of freedom [-]", "Convergence: error against DOFs (h ~ DOFs^(-1/3))",
+                      "method, element (fitted rate)")
+    return rates
+
+
+def phase_times(row):
+    """Seconds per phase; summary.json's setup includes the quadrature, shown apart here."""
+    phases = {"setup (scene, mesh, basis)": max(row["setup_s"] - row["quadrature_s"], 0.0),
+              "quadrature": row["quadrature_s"], "assembly": row["assembly_s"], "analysis": row["analysis_s"],
+              "factorisation": row["factorisation_s"], "solve": row["solve_s"]}
+    phases = {name: max(value, 0.0) for name, value in phases.items()}
+    phases["other (output, Newton bookkeeping)"] = max(row["total_s"] - sum(phases.values()), 0.0)
+    return phases
+
+
+def plot_time_breakdown(rows, path):
+    ok = [r for r in rows if r["status"] == "ok"]
+    fig, ax = plt.subplots(figsize=(10, 0.35 * len(ok) + 2.0))
+    labels = [r["label"] + (" (reference)" if r["is_reference"] == "1" else "") for r in ok]
+    left = np.zeros(len(ok))
+    for phase in phase_times(ok[0]):
+        share = np.array([100.0 * phase_times(r)[phase] / max(r["total_s"], 1e-12) for r in ok])
+        ax.barh(labels, share, left=left, label=phase)
+        left += share
+    for i, r in enumerate(ok):
+        ax.text(101, i, f"{r['total_s']:.3g} s", va="center", fontsize="small")
+    ax.set_xlim(0, 122)
+    ax.set_xlabel("share of the run's total wall time [%] (total at the right of each bar)")
+    ax.set_title("Where the time goes, per run")
+    ax.invert_yaxis()
+    ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.0, 1.0))
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def default_target(rows):
+    """The smallest error every series reaches: the largest of the series' minima."""
+    minima = [min(r["rms_error"] for r in group) for group in series_of(rows).values()]
+    return max(minima) if minima else math.nan
+
+
+def equal_accuracy_table(rows, target):
+    """Per series: the cheapest run with error <= target, and its time relative to the fastest."""
+    best = {}
+    for name, group in series_of(rows).items():
+        good = [r for r in group if r["rms_error"] <= target]
+        if good:
+            best[name] = min(good, key=lambda r: r["total_s"])
+    fastest = min((r["total_s"] for r in best.values()), default=math.nan)
+    lines = ["| method, element | cheapest configuration | DOFs | RMS error | total time [s] | relative to the fastest |",
+             "|---|---|---|---|---|---|"]
+    for name in sorted(best, key=lambda n: best[n]["total_s"]):
+        r = best[name]
+        lines.append(f"| {name} | {r['label']} | {int(r['dofs'])} | {r['rms_error']:.3g} | {r['total_s']:.3g} | "
+                     f"{r['total_s'] / fastest:.1f}× |")
+    missing = sorted(set(series_of(rows)) - set(best))
+    if missing:
+        lines.append("")
+        lines.append("Not reached by: " + ", ".join(missing) + ".")
+    return "\n".join(lines)
+
+
+def run_table(rows):
+    lines = ["| run | status | exit | DOFs | elements | quadrature points | Newton | linear | total [s] | "
+             "peak memory [MiB] | RMS error | max error |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+
+    def cell(value, fmt):
+        return "—" if math.isnan(value) else format(value, fmt)
+
+    for r in rows:
+        name = r["label"] + (" **(reference)**" if r["is_reference"] == "1" else "")
+        lines.append(f"| {name} | {r['status']} | {int(r['exit_code'])} | {cell(r['dofs'], '.0f')} | "
+                     f"{cell(r['elements'], '.0f')} | {cell(r['quadrature_points'], '.0f')} | "
+                     f"{cell(r['newton_iterations'], '.0f')} | {cell(r['linear_iterations'], '.0f')} | "
+                     f"{cell(r['total_s'], '.3g')} | {cell(r['peak_memory_mib'], '.0f')} | "
+                     f"{cell(r['rms_error'], '.3g')} | {cell(r['max_error'], '.3g')} |")
+    return "\n".join(lines)
+
+
+def write_report(rows, out, target_arg):
+    os.makedirs(out, exist_ok=True)
+    first = rows[0]
+    runs = measured(rows)
+    reference = [r for r in rows if r["is_reference"] == "1"]
+    text = [f"# altfem compare: {first['scene']}", "",
+            f"- **Scene:** `{first['scene']}`",
+            f"- **Machine:** {first['cpu']}, {first['cores']} cores, {first['threads']} thread(s) per run, "
+            f"BLAS {first['blas']}",
+            f"- **Date:** {first['date']}",
+            f"- **Runs:** {len(rows)} ({sum(r['status'] == 'ok' for r in rows)} ok, "
+            f"{sum(r['status'] != 'ok' for r in rows)} failed)",
+            f"- **Reference:** {reference[0]['label'] if reference else 'none (no run succeeded)'}", "",
+            "Error: RMS over the embedded surface vertices of |x − x_reference| over the reference's "
+            "bounding-box diagonal (docs/conventions.md, \"Metrics\"). Time: the run's own total wall time.", ""]
+    if runs:
+        plot_error_vs_time(runs, os.path.join(out, "error_vs_time.png"))
+        rates = plot_error_vs_dofs(runs, os.path.join(out, "error_vs_dofs.png"))
+        target = target_arg if target_arg is not None else default_target(runs)
+        text += ["## Accuracy against wall time", "", "![error against time](error_vs_time.png)", "",
+                 f"## Equal accuracy: RMS error ≤ {target:.3g}", "", equal_accuracy_table(runs, target), "",
+                 "## Error against DOFs", "", "![error against DOFs](error_vs_dofs.png)", "",
+                 "Fitted rates (error ~ h^rate): " +
+                 ", ".join(f"{name} {rate:.2f}" for name, rate in sorted(rates.items()) if rate is not None), ""]
+    if any(r["status"] == "ok" for r in rows):
+        plot_time_breakdown(rows, os.path.join(out, "time_breakdown.png"))
+        text += ["## Time per phase", "", "![time breakdown](time_breakdown.png)", ""]
+    text += ["## Every run", "", run_table(rows), ""]
+    failed = [r for r in rows if r["status"] != "ok"]
+    if failed:
+        text += ["## Failed runs", ""]
+        text += [f"- **{r['label']}**: {r['status']} (exit code {int(r['exit_code'])}): {r['message']}" for r in failed]
+        text += [""]
+    noted = [r for r in rows if r["status"] == "ok" and r["message"]]
+    if noted:
+        text += ["## Notes", ""] + [f"- {r['label']}: {r['message']}" for r in noted] + [""]
+    with open(os.path.join(out, "report.md"), "w") as stream:
+        stream.write("\n".join(text))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("results")
+    parser.add_argument("--out")
+    parser.add_argument("--error", type=float)
+    arguments = parser.parse_args()
+    rows = read_rows(arguments.results)
+    if not rows:
+        sys.exit(f"{arguments.results}: no runs")
+    write_report(rows, arguments.out or os.path.dirname(os.path.abspath(arguments.results)), arguments.error)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,71 @@
+#pragma once
+// The face kernel of a penalty on displacement jumps,
+//   E_f(u) = η_f / 2 ∫_f |[[u]]|² dA,   [[u]] = u⁻ − u⁺,
+// for FaceAssembler. It is the whole face term of the Babuška–Zlámal DG flux
+// (Kaufmann et al. 2009 eq. (19), with η_f of eq. (20)), the penalty part of the
+// interior-penalty flux (eq. (21)), and, on a boundary face (u⁺ = 0), the quadratic
+// part of a weakly imposed homogeneous Dirichlet condition; its data part
+// η_f ∫_f g·v dA is a load (Discretization::external_force).
+#include <vector>
+
+#include "shared/assembly/local_matrices.hpp"
+#include "shared/assembly/tabulated_faces.hpp"
+
+namespace altfem {
+
+class JumpPenaltyKernel {
+public:
+  /// penalties: η_f per face of the TabulatedFaces this kernel is assembled over.
+  explicit JumpPenaltyKernel(std::vector<double> penalties) : penalties_(std::move(penalties)) {}
+
+  bool is_quadratic() const { return true; }
+
+  template <int N>
+  double energy(const FaceView& face, const kernel::NodeMatrix<N>& u) const {
+    double total = 0;
+    for (int q = 0; q < face.point_count(); ++q) total += face.weights[q] * jump(face, u, q).squaredNorm();
+    return 0.5 * penalties_[face.index] * total;
+  }
+
+  /// f_a = η_f Σ_q w_q j_a(q) [[u]]_q with j_a = φ_a⁻ − φ_a⁺.
+  template <int N>
+  void forces(const FaceView& face, const kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) const {
+    forces.setZero();
+    for (int q = 0; q < face.point_count(); ++q) {
+      const Eigen::RowVector3d scaled = penalties_[face.index] * face.weights[q] * jump(face, u, q);
+      for (int a = 0; a < face.basis_count(); ++a)
+        forces.row(a) += (face.values_minus(q, a) - face.values_plus(q, a)) * scaled;
+    }
+  }
+
+  /// K_(3a+i)(3b+k) = η_f Σ_q w_q j_a(q) j_b(q) δ_ik.
+  template <int N>
+  void stiffness(const FaceView& face, const kernel::NodeMatrix<N>&, kernel::LocalMatrix<N>& stiffness) const {
+    stiffness.setZero();
+    const int n = face.basis_count();
+    for (int q = 0; q < face.point_count(); ++q) {
+      const double scale = penalties_[face.index] * face.weights[q];
+      for (int b = 0; b < n; ++b) {
+        const double jump_b = face.values_minus(q, b) - face.values_plus(q, b);
+        for (int a = 0; a < n; ++a) {
+          const double entry = scale * (face.values_minus(q, a) - face.values_plus(q, a)) * jump_b;
+          for (int i = 0; i < 3; ++i) stiffness(3 * a + i, 3 * b + i) += entry;
+        }
+      }
+    }
+  }
+
+private:
+  // [[u]] at point q, summed by hand: an Eigen row-times-matrix product of dynamic
+  // size would allocate a temporary.
+  template <int N>
+  static Eigen::RowVector3d jump(const FaceView& face, const kernel::NodeMatrix<N>& u, int q) {
+    Eigen::RowVector3d value = Eigen::RowVector3d::Zero();
+    for (int a = 0; a < face.basis_count(); ++a) value += (face.values_minus(q, a) - face.values_plus(q, a)) * u.row(a);
+    return value;
+  }
+
+  std::vector<double> penalties_;
+};
+
+}  // namespace altfem

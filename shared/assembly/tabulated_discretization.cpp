@@ -1,0 +1,102 @@
+#include "shared/assembly/tabulated_discretization.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace altfem {
+
+namespace {
+
+// The pattern's extra groups: every term's couplings, in term order.
+BasisGroups collect_couplings(const std::vector<std::unique_ptr<EnergyTerm>>& terms) {
+  BasisGroups all;
+  for (const auto& term : terms)
+    for (int g = 0; g < term->couplings().size(); ++g) all.add(term->couplings()[g]);
+  return all;
+}
+
+std::vector<std::vector<int>> element_dof_groups(const TabulatedElements& elements) {
+  std::vector<std::vector<int>> groups(static_cast<size_t>(elements.size()));
+  for (int e = 0; e < elements.size(); ++e)
+    for (int basis : elements[e].basis)
+      for (int k = 0; k < 3; ++k) groups[e].push_back(3 * basis + k);
+  return groups;
+}
+
+// The mass rules must tabulate the same basis lists, so that both assemblers share one
+// sparsity pattern (the integrators add the mass's and the Hessian's value arrays).
+void check_same_basis(const TabulatedElements& elements, const TabulatedElements& mass_elements) {
+  bool same = elements.size() == mass_elements.size();
+  for (int e = 0; same && e < elements.size(); ++e)
+    same = std::ranges::equal(elements[e].basis, mass_elements[e].basis) &&
+           elements[e].material == mass_elements[e].material;
+  if (!same)
+    throw std::invalid_argument("TabulatedDiscretization: the mass elements must have the elements' basis lists "
+                                "and materials, in the same order");
+}
+
+}  // namespace
+
+TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
+  const BasisGroups couplings = collect_couplings(parts_.terms);
+  assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings);
+  if (parts_.mass_elements) {
+    check_same_basis(parts_.elements, *parts_.mass_elements);
+    mass_assembler_ = std::make_unique<ElasticAssembler>(*parts_.mass_elements, parts_.materials, couplings);
+  }
+  int first_group = 0;
+  for (const auto& term : parts_.terms) {
+    term->bind(assembler_->sparsity(), first_group);
+    first_group += term->couplings().size();
+  }
+  mass_assembler().mass_matrix(mass_);
+  lumped_mass_ = mass_assembler().lumped_mass();
+  if (parts_.explicit_mass == ExplicitMassKind::lumped)
+    explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
+  else
+    explicit_mass_ = std::make_unique<BlockDiagonalMass>(mass_, element_dof_groups(parts_.elements));
+  constant_hessian_ = assembler_->is_linear();
+  for (const auto& term : parts_.terms) constant_hessian_ = constant_hessian_ && term->is_quadratic();
+}
+
+TabulatedDiscretization::~TabulatedDiscretization() = default;
+
+double TabulatedDiscretization::energy(const Eigen::VectorXd& u) const {
+  double total = assembler_->energy(u);
+  for (const auto& term : parts_.terms) {
+    if (!std::isfinite(total)) break;
+    total += term->energy(u);
+  }
+  return total;
+}
+
+void TabulatedDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
+  assembler_->gradient(u, gradient);
+  for (const auto& term : parts_.terms) term->add_gradient(u, gradient);
+}
+
+void TabulatedDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian,
+                                      bool project_spd) const {
+  assembler_->hessian(u, hessian, project_spd);
+  for (const auto& term : parts_.terms) term->add_hessian(u, hessian);
+}
+
+Eigen::VectorXd TabulatedDiscretization::explicit_body_force(const Eigen::Vector3d& acceleration) const {
+  if (parts_.explicit_mass == ExplicitMassKind::block_per_element) return body_force(acceleration);
+  Eigen::VectorXd force(lumped_mass_.size());
+  for (Eigen::Index dof = 0; dof < force.size(); ++dof) force[dof] = lumped_mass_[dof] * acceleration[dof % 3];
+  return force;
+}
+
+Eigen::VectorXd TabulatedDiscretization::external_force(double time) const {
+  if (parts_.external_force) return parts_.external_force(time);
+  return Eigen::VectorXd::Zero(dof_count());
+}
+
+Eigen::VectorXd TabulatedDiscretization::prescribed_displacement(double time) const {
+  if (parts_.dirichlet.dofs.empty()) return Eigen::VectorXd();
+  return parts_.dirichlet.prescribed(time);
+}
+
+}  // namespace altfem

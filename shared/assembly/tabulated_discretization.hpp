@@ -1,0 +1,86 @@
+#pragma once
+// A Discretization built from parts (docs/architecture.md, "Adding a method"):
+// tabulated volume elements with their materials, any energy terms a method adds
+// (face fluxes, ghost penalties, weak conditions), strongly constrained DOFs if any,
+// and the explicit mass that fits the basis. `fem` and `fcm` build one from Lagrange
+// tabulations (the FCM with its own cells and cut-cell rules); DG and harmonic bases
+// from their own. The mass, the Hessian and the load vectors all come from the same
+// tabulated elements, so any basis gets the right ones.
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "shared/assembly/elastic_assembler.hpp"
+#include "shared/assembly/energy_term.hpp"
+#include "shared/assembly/tabulated_elements.hpp"
+#include "shared/material/material.hpp"
+#include "shared/solve/dirichlet_dofs.hpp"
+#include "shared/solve/discretization.hpp"
+
+namespace altfem {
+
+enum class ExplicitMassKind {
+  /// HRZ-lumped diagonal, for Lagrange (partition-of-unity) bases.
+  lumped,
+  /// The consistent mass of each element, inverted block by block: for bases whose
+  /// elements share no basis function (DG).
+  block_per_element,
+};
+
+struct DiscretizationParts {
+  TabulatedElements elements;
+  /// The same elements (same basis lists, in the same order) tabulated with the rules
+  /// the mass matrix, the lumped mass and the body-force loads use, when they differ from
+  /// the stiffness rules: the FCM integrates mass at a higher order than stiffness and
+  /// never simplifies it (Longva et al. 2020 §6). Empty: `elements` serve for both.
+  std::optional<TabulatedElements> mass_elements;
+  /// materials[m] serves the elements of material id m (not owned).
+  std::vector<const Material*> materials;
+  std::vector<std::unique_ptr<EnergyTerm>> terms;
+  DirichletDofs dirichlet;  ///< empty for none
+  bool conditions_weakly = false;  ///< the terms impose the Dirichlet conditions
+  ExplicitMassKind explicit_mass = ExplicitMassKind::lumped;
+  /// Tractions and weak boundary data at a time (#dofs); none if empty.
+  std::function<Eigen::VectorXd(double time)> external_force;
+  PreconditionerFactory preconditioner;
+};
+
+class TabulatedDiscretization final : public Discretization {
+public:
+  explicit TabulatedDiscretization(DiscretizationParts parts);
+  ~TabulatedDiscretization() override;
+
+  int dof_count() const override { return assembler_->dof_count(); }
+  double energy(const Eigen::VectorXd& u) const override;
+  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
+  void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
+  const Eigen::SparseMatrix<double>& hessian_pattern() const override { return assembler_->pattern(); }
+  bool hessian_is_constant() const override { return constant_hessian_; }
+  const Eigen::SparseMatrix<double>& mass_matrix() const override { return mass_; }
+  const ExplicitMass& explicit_mass() const override { return *explicit_mass_; }
+  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
+    return mass_assembler().body_force(acceleration);
+  }
+  Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override;
+  Eigen::VectorXd external_force(double time) const override;
+  const std::vector<int>& constrained_dofs() const override { return parts_.dirichlet.dofs; }
+  Eigen::VectorXd prescribed_displacement(double time) const override;
+  bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
+  PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }
+
+  const TabulatedElements& elements() const { return parts_.elements; }
+  const ElasticAssembler& assembler() const { return *assembler_; }
+
+private:
+  const ElasticAssembler& mass_assembler() const { return mass_assembler_ ? *mass_assembler_ : *assembler_; }
+
+  DiscretizationParts parts_;
+  std::unique_ptr<ElasticAssembler> assembler_;
+  std::unique_ptr<ElasticAssembler> mass_assembler_;  // over parts_.mass_elements, if given
+  Eigen::SparseMatrix<double> mass_;
+  Eigen::VectorXd lumped_mass_;
+  std::unique_ptr<ExplicitMass> explicit_mass_;
+  bool constant_hessian_ = false;
+};
+
+}  // namespace altfem

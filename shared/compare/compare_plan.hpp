@@ -1,0 +1,57 @@
+#pragma once
+// What `altfem compare` runs: methods × the Cartesian product of the sweeps, plus a
+// reference run (docs/scene-schema.md, "Compare"). Each configuration is an `altfem run`
+// with `--set` overrides, so it is reproducible by hand.
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "shared/scene/scene_override.hpp"
+
+namespace altfem {
+
+/// One swept key: a JSON pointer (leading '/') and the values it takes.
+struct Sweep {
+  std::string pointer;
+  std::vector<nlohmann::json> values;
+};
+
+/// The reference run: a method and its overrides; nullopt in ComparePlan means
+/// "the successful run with the most DOFs".
+struct ReferenceSpec {
+  std::string method;
+  std::vector<SceneOverride> overrides;
+};
+
+struct ComparePlan {
+  std::vector<std::string> methods;
+  std::vector<Sweep> sweeps;
+  std::optional<ReferenceSpec> reference;
+};
+
+struct Configuration {
+  std::string method;
+  std::vector<SceneOverride> overrides;  ///< in sweep order
+  bool is_reference = false;
+  /// "fem element=tet4 resolution=[10,1,1]": the method and the last token of each override.
+  std::string label() const;
+};
+
+/// Splits at `separator` outside brackets, braces and double quotes, so JSON values
+/// with commas stay whole: "[1,2],[3,4]" → {"[1,2]", "[3,4]"}.
+std::vector<std::string> split_top_level(std::string_view text, char separator);
+/// "KEY=V1,V2,..." (each V as in SceneOverride). Throws InputError naming --sweep.
+Sweep parse_sweep(std::string_view text);
+/// "METHOD" or "METHOD:KEY=VALUE,KEY=VALUE". Throws InputError naming --reference.
+ReferenceSpec parse_reference(std::string_view text);
+/// The plan of a resolved scene's `compare` block (null or absent: every method, no sweep).
+ComparePlan plan_from_scene(const nlohmann::json& compare_block, const std::vector<std::string>& available_methods);
+
+/// Every method × every combination of sweep values (the first sweep varies slowest),
+/// then the reference. A sweep pointer under /discretization/<m>/ applies to method m only,
+/// so other methods do not run once per value of a key they ignore.
+std::vector<Configuration> expand_configurations(const ComparePlan& plan);
+
+}  // namespace altfem

@@ -1,0 +1,24 @@
+#include "shared/compare/run_record.hpp"
+
+namespace altfem {
+
+using nlohmann::json;
+
+void add_summary(RunRecord& record, const json& summary) {
+  record.dofs = summary.at("dofs");
+  record.element.clear();
+  record.elements = 0;
+  for (const auto& [type, count] : summary.at("elements").items()) {
+    record.element += (record.element.empty() ? "" : "+") + type;
+    record.elements += count.get<long long>();
+  }
+  record.quadrature_points = summary.at("quadrature_points").at("final");
+  record.steps = summary.at("steps");
+  record.newton_iterations = summary.at("newton_iterations");
+  record.linear_iterations = summary.at("linear_iterations");
+  const auto& t = summary.at("timings_s");
+  record.timings = {t.at("setup"), t.at("quadrature"), t.at("assembly"), t.at("analysis"),
+                    t.at("factorisation"), t.at("solve"), t.at("total")};
+}
+
+}  // namespace altfem

@@ -1,0 +1,30 @@
+#pragma once
+// A quadrature rule on any polyhedron with planar faces (DG's nonlinear path, harmonic
+// elements): a cone decomposition from an apex — each face cut into triangles (ear clipping), each
+// triangle with the apex a tetrahedron carrying a tet rule — exact to the requested
+// strength for every closed polyhedron, because the signed tetrahedra add up to the
+// polyhedron as a chain (divergence theorem). When the polyhedron is star-shaped about
+// the apex (every convex cell, and many non-convex ones) all weights are positive;
+// otherwise some tetrahedra are inverted and carry negative weights, which integrate
+// exactly but are no rule a positive-weight simplifier may start from.
+#include <Eigen/Core>
+
+#include "shared/geometry/polyhedron.hpp"
+
+namespace altfem {
+
+struct PolyhedronRule {
+  Eigen::MatrixXd points;  ///< #points × 3, physical
+  Eigen::VectorXd weights; ///< #points, summing to the volume
+  bool positive = true;    ///< every weight > 0
+};
+
+/// A rule on a planar polygon in 3D (polygon: #vertices × 3, simple, convex or not):
+/// the triangle rule of `strength` on the triangles of its ear clipping. Exact to the
+/// strength; weights positive (they sum to the area).
+PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
+
+/// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid. Throws std::invalid_argument for a polyhedron without faces.
+PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
+
+}  // namespace altfem

@@ -1,0 +1,61 @@
+#pragma once
+// Material points embedded in any method's elements (docs/architecture.md,
+// "Metrics"): every method deforms the same scene surface vertices, so the methods are
+// compared point by point. A method supplies only "evaluate my basis at this physical
+// point in this element" (ElementBasisEvaluator); locating points, the rule for points
+// on element boundaries and the sparse product are shared.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <vector>
+
+namespace altfem {
+
+/// How a point that lies in several elements (on a shared face, within tolerance) is
+/// evaluated. A conforming basis gives the same value from each side; a discontinuous
+/// one (DG) does not, and its method chooses.
+enum class BoundaryPointRule {
+  first_element,  ///< the element of lowest index that contains the point
+  average,        ///< the mean of every containing element's evaluation (stitching)
+};
+
+/// The basis of one method's elements, as the embedding asks for it. Implementations
+/// may cache; BasisEmbedding calls them from one thread.
+class ElementBasisEvaluator {
+public:
+  virtual ~ElementBasisEvaluator() = default;
+  virtual int element_count() const = 0;
+  virtual Eigen::AlignedBox3d element_bounds(int element) const = 0;
+  /// If x lies in `element` (up to a relative tolerance of the method's choosing):
+  /// true, with the global indices of the element's basis functions and their values
+  /// at x in `basis` / `values` (resized). False otherwise.
+  virtual bool evaluate_inside(int element, const Eigen::Vector3d& x, std::vector<int>& basis,
+                               std::vector<double>& values) const = 0;
+  /// For a point inside no element: the basis of the element it is extrapolated from
+  /// (the nearest, by the method's measure) at x, and the distance from x to it.
+  virtual double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                                  std::vector<double>& values) const = 0;
+  virtual BoundaryPointRule boundary_rule() const { return BoundaryPointRule::first_element; }
+};
+
+class BasisEmbedding {
+public:
+  /// points: #points × 3. Points outside every element are extrapolated from the
+  /// nearest one (Mesh_3's surface only approximates the input); none is dropped.
+  BasisEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& points);
+
+  /// Displacement at every point (#points × 3) from the coefficients u (#dofs; basis
+  /// function a carries DOFs 3a..3a+2).
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  int outside_count() const { return outside_count_; }
+  /// The largest distance from an outside point to its element (0 if none).
+  double max_outside_distance() const { return max_outside_distance_; }
+
+private:
+  std::vector<long long> offsets_{0};  // #points + 1
+  std::vector<int> basis_;
+  std::vector<double> weights_;
+  int outside_count_ = 0;
+  double max_outside_distance_ = 0;
+};
+
+}  // namespace altfem

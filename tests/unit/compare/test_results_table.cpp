@@ -1,0 +1,80 @@
+// results.csv round trip: every field back exactly, quoting, unknown errors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "shared/common/error.hpp"
+#include "shared/compare/results_table.hpp"
+
+namespace altfem {
+namespace {
+
+TEST(ResultsTable, RoundTripsEveryFieldExactly) {
+  RunRecord ok;
+  ok.hash = "0123456789abcdef";
+  ok.method = "fem";
+  ok.element = "hex20";
+  ok.label = "fem element=hex20 resolution=[10,1,1]";
+  ok.overrides = "discretization/fem/resolution=[10,1,1]";
+  ok.is_reference = true;
+  ok.status = "ok";
+  ok.dofs = 1863;
+  ok.elements = 40;
+  ok.quadrature_points = 1080;
+  ok.steps = 1;
+  ok.newton_iterations = 2;
+  ok.linear_iterations = 7;
+  ok.timings = {0.1, 0.2, 1.0 / 3.0, 0.4, 0.5, 0.6, 2.1};
+  ok.wall_seconds = 2.25;
+  ok.peak_memory_mib = 28.5;
+  ok.rms_error = 1.2345678901234567e-7;
+  ok.max_error = 3e-6;
+  ok.scene = "cantilever";
+  ok.date = "2026-11-23 07:00 UTC";
+  ok.cpu = "AMD EPYC, \"quoted\"";
+  ok.cores = 2;
+  ok.threads = 2;
+  ok.blas = "OpenBLAS 0.3.21";
+  RunRecord failed = ok;
+  failed.is_reference = false;
+  failed.status = "invalid input";
+  failed.exit_code = 2;
+  failed.message = "scene.json: /discretization/fem/resolution: expected an array of 3 integers, got \"bad\"\nsecond";
+  failed.rms_error = std::numeric_limits<double>::quiet_NaN();
+  failed.max_error = std::numeric_limits<double>::quiet_NaN();
+
+  const auto file = std::filesystem::temp_directory_path() / "altfem_unit_results.csv";
+  write_results_csv(file, {ok, failed});
+  const auto read = read_results_csv(file);
+  ASSERT_EQ(read.size(), 2u);
+  for (const auto& [written, back] : {std::pair{ok, read[0]}, std::pair{failed, read[1]}}) {
+    EXPECT_EQ(back.hash, written.hash);
+    EXPECT_EQ(back.label, written.label);
+    EXPECT_EQ(back.overrides, written.overrides);
+    EXPECT_EQ(back.is_reference, written.is_reference);
+    EXPECT_EQ(back.status, written.status);
+    EXPECT_EQ(back.exit_code, written.exit_code);
+    EXPECT_EQ(back.message, written.message);
+    EXPECT_EQ(back.dofs, written.dofs);
+    EXPECT_EQ(back.linear_iterations, written.linear_iterations);
+    EXPECT_EQ(back.timings.assembly, written.timings.assembly);  // 17 digits: exact
+    EXPECT_EQ(back.timings.total, written.timings.total);
+    EXPECT_EQ(back.peak_memory_mib, written.peak_memory_mib);
+    EXPECT_EQ(back.cpu, written.cpu);
+    EXPECT_EQ(back.threads, written.threads);
+  }
+  EXPECT_EQ(read[0].rms_error, ok.rms_error);
+  EXPECT_TRUE(std::isnan(read[1].rms_error));
+  std::filesystem::remove(file);
+}
+
+TEST(ResultsTable, RejectsMissingColumnsAndBadNumbers) {
+  const auto file = std::filesystem::temp_directory_path() / "altfem_unit_results_bad.csv";
+  std::ofstream(file) << "hash,method\nabc,fem\n";
+  EXPECT_THROW(read_results_csv(file), InputError);
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace altfem

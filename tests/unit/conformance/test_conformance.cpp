@@ -1,0 +1,184 @@
+// The conformance suite every method passes (issue #14): the properties any
+// discretization of elasticity must have, checked through the MethodInstance and
+// Discretization interfaces only, so the same tests run against every method —
+// the shipped ones and the test-only two-hexahedra monomial method.
+//   - a rigid translation, and a rigid rotation of a rotation-invariant material, give
+//     zero internal force;
+//   - the patch test: for an affine displacement u = (G − I)x the energy is V ψ(G) and
+//     the virtual work against any affine v = Bx is V P(G) : B (constant stress);
+//   - an affine field is embedded exactly on the scene surface;
+//   - a run writes a summary.json with every required key, finite values, and output
+//     files that meshio reads (tests/cli/check_run_output.py).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "app/method_registry.hpp"
+#include "shared/common/error.hpp"
+#include "shared/material/material.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/simulation/run_simulation.hpp"
+#include "tests/unit/conformance/two_hex_monomial_method.hpp"
+
+namespace altfem {
+namespace {
+
+struct MethodCase {
+  std::string name;
+  MethodFactory factory;
+};
+void PrintTo(const MethodCase& method, std::ostream* out) { *out << method.name; }
+
+// Every method registered in the executable, and the test-only one.
+std::vector<MethodCase> methods_under_test() {
+  std::vector<MethodCase> methods;
+  for (const std::string& name : cli::available_methods()) methods.push_back({name, cli::method_factory(name)});
+  methods.push_back({"two_hex_monomial", test::make_two_hex_monomial_method});
+  return methods;
+}
+
+std::filesystem::path scene_path(const std::string& name) {
+  return std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/unit/conformance/scenes" / name;
+}
+
+using Field = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+
+Field affine(const Eigen::Matrix3d& A, const Eigen::Vector3d& b = Eigen::Vector3d::Zero()) {
+  return [A, b](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; };
+}
+
+class Conformance : public ::testing::TestWithParam<MethodCase> {
+protected:
+  struct Built {
+    Scene scene;
+    SceneGeometry geometry;
+    std::unique_ptr<MethodInstance> method;
+    std::unique_ptr<Material> material;
+  };
+  static Built build(const std::string& scene_file) {
+    Built built;
+    built.scene = load_scene(scene_path(scene_file));
+    built.geometry = load_scene_geometry(built.scene);
+    built.method = GetParam().factory(built.scene, built.geometry);
+    const MaterialSpec& spec = built.scene.material;
+    built.material = make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio,
+                                   spec.density);
+    return built;
+  }
+  // The volume the method integrates: ∫ρ·1 / ρ through its load vector.
+  static double volume(const Built& built) {
+    const Eigen::VectorXd ones = built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
+    return ones.dot(built.method->discretization().body_force(Eigen::Vector3d::UnitX())) / built.scene.material.density;
+  }
+  static Eigen::VectorXd gradient(const Built& built, const Eigen::VectorXd& u) {
+    Eigen::VectorXd g;
+    built.method->discretization().gradient(u, g);
+    return g;
+  }
+};
+
+Eigen::Matrix3d small_strain() {
+  Eigen::Matrix3d A;
+  A << 0.02, 0.01, -0.005, 0.004, -0.01, 0.006, -0.003, 0.008, 0.015;
+  return A;
+}
+
+TEST_P(Conformance, VolumeIsTheGeometrysVolume) {
+  const Built built = build("free_box.json");
+  EXPECT_NEAR(volume(built), built.geometry.volume, 1e-12 * built.geometry.volume);
+}
+
+TEST_P(Conformance, RigidTranslationGivesZeroForce) {
+  const Built built = build("free_box.json");
+  const Eigen::VectorXd translation = built.method->interpolate(affine(Eigen::Matrix3d::Zero(), {0.3, -0.2, 0.5}));
+  const double scale = gradient(built, built.method->interpolate(affine(small_strain()))).cwiseAbs().maxCoeff();
+  ASSERT_GT(scale, 0);
+  EXPECT_LT(gradient(built, translation).cwiseAbs().maxCoeff(), 1e-12 * scale);
+}
+
+TEST_P(Conformance, RigidRotationGivesZeroForce) {
+  const Built built = build("free_box.json");  // stable Neo-Hookean: P(R) = 0
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -1).normalized()).toRotationMatrix();
+  const Eigen::VectorXd rotation = built.method->interpolate(affine(R - Eigen::Matrix3d::Identity(), {0.1, 0, 0}));
+  const double scale = gradient(built, built.method->interpolate(affine(small_strain()))).cwiseAbs().maxCoeff();
+  EXPECT_LT(gradient(built, rotation).cwiseAbs().maxCoeff(), 1e-10 * scale);
+}
+
+TEST_P(Conformance, PatchTestGivesTheExactConstantStress) {
+  const Built built = build("free_box.json");
+  const Eigen::Matrix3d G = Eigen::Matrix3d::Identity() + small_strain();
+  Eigen::Matrix3d B;
+  B << 0.3, -0.1, 0.2, 0.05, 0.4, -0.3, 0.1, 0.2, -0.2;
+  const Eigen::VectorXd u = built.method->interpolate(affine(G - Eigen::Matrix3d::Identity(), {0.01, 0.02, 0.03}));
+  const Eigen::VectorXd v = built.method->interpolate(affine(B));
+  const double V = volume(built);
+  const double energy = V * built.material->energy(G);
+  const double work = V * (built.material->pk1(G).array() * B.array()).sum();
+  EXPECT_NEAR(built.method->discretization().energy(u), energy, 1e-10 * std::abs(energy));
+  EXPECT_NEAR(gradient(built, u).dot(v), work, 1e-10 * std::abs(work));
+}
+
+TEST_P(Conformance, AffineFieldIsEmbeddedExactlyOnTheSurface) {
+  const Built built = build("free_box.json");
+  Eigen::Matrix3d A = small_strain();
+  const Eigen::Vector3d b(0.1, -0.2, 0.3);
+  const Eigen::MatrixXd moved = built.method->embedded_displacement(built.method->interpolate(affine(A, b)));
+  const Eigen::MatrixXd& vertices = built.method->embedded_surface().vertices;
+  ASSERT_EQ(moved.rows(), vertices.rows());
+  const Eigen::MatrixXd expected = (vertices * A.transpose()).rowwise() + b.transpose();
+  EXPECT_LT((moved - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// Every number in a JSON document is finite.
+bool all_finite(const nlohmann::json& value) {
+  if (value.is_number_float()) return std::isfinite(value.get<double>());
+  if (value.is_structured())
+    for (const auto& item : value)
+      if (!all_finite(item)) return false;
+  return true;
+}
+
+TEST_P(Conformance, RunWritesACompleteSummaryAndReadableOutput) {
+  const Scene scene = load_scene(scene_path("clamped_box.json"));
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const auto out = std::filesystem::path(ALTFEM_BINARY_DIR) / "conformance" / GetParam().name;
+  std::filesystem::remove_all(out);
+  const nlohmann::json summary = run_simulation(scene, geometry, GetParam().name, GetParam().factory, out, 0.0);
+  for (const char* key : {"scene", "method", "options", "dofs", "elements", "quadrature_points", "timings_s", "counts",
+                          "steps", "newton_iterations", "linear_iterations", "status", "surface"})
+    EXPECT_TRUE(summary.contains(key)) << key;
+  for (const char* key : {"setup", "quadrature", "assembly", "analysis", "factorisation", "solve", "total"})
+    EXPECT_TRUE(summary["timings_s"].contains(key)) << key;
+  EXPECT_EQ(summary["status"], "ok");
+  EXPECT_TRUE(all_finite(summary));
+  const std::string check = "/usr/bin/python3 " + std::string(ALTFEM_SOURCE_DIR) + "/tests/cli/check_run_output.py " +
+                            out.string();
+  EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
+}
+
+TEST_P(Conformance, BadDiscretizationBlockIsOneLineOfBadInput) {
+  if (GetParam().name == "two_hex_monomial") GTEST_SKIP() << "the test-only method has no scene block";
+  const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "conformance";
+  std::filesystem::create_directories(folder);
+  const auto file = folder / ("bad_block_" + GetParam().name + ".json");
+  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [1, 1, 1] } } },
+    "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+    "discretization": { ")" << GetParam().name << R"(": { "no_such_key": 1 } } })";
+  try {
+    load_scene(file);
+    FAIL() << "accepted an unknown key";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find("/discretization/" + GetParam().name + "/no_such_key"), std::string::npos) << message;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryMethod, Conformance, ::testing::ValuesIn(methods_under_test()),
+                         [](const auto& info) { return info.param.name; });
+
+}  // namespace
+}  // namespace altfem
