@@ -1,0 +1,45 @@
+#include "fcm/intersection_cell_quadrature.hpp"
+
+#include <algorithm>
+
+#include "fcm/cut_cell_rule.hpp"
+#include "fcm/rule_cache.hpp"
+
+namespace altfem::fcm {
+
+CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
+                                                  SimplificationMethod method, double tolerance,
+                                                  const std::filesystem::path& cache_directory) {
+  // Each cell's own volume, once: volume fractions are clipped volume over it.
+  const int corner_count = element_corner_count(background.element_type);
+  std::vector<double> volumes(background.cells.rows());
+  Eigen::MatrixXd corners(corner_count, 3);
+  for (Eigen::Index c = 0; c < background.cells.rows(); ++c) {
+    for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
+    volumes[c] = CellGeometry(background.element_type, corners).volume();
+  }
+  return [background, embedded, method, tolerance, cache_directory, volumes](int strength, RulePurpose purpose) {
+    CellRuleOptions options;
+    options.order = strength;
+    options.simplify = purpose == RulePurpose::stiffness;  // §6: mass rules are not simplified
+    options.method = method;
+    options.tolerance = tolerance;
+    CellRules rules = cache_directory.empty() ? compute_cell_rules(background, embedded, options)
+                                              : cached_cell_rules(background, embedded, options, cache_directory);
+    std::vector<CellQuadrature> cells(rules.cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      CellRule& cell = rules.cells[c];
+      switch (cell.kind) {
+        case CellKind::outside: cells[c].volume_fraction = 0.0; break;
+        case CellKind::inside: cells[c].volume_fraction = 1.0; break;
+        case CellKind::cut:
+          cells[c].volume_fraction = std::clamp(cell.clipped_volume / volumes[c], 0.0, 1.0);
+          cells[c].rule = std::move(cell.rule);
+          break;
+      }
+    }
+    return cells;
+  };
+}
+
+}  // namespace altfem::fcm

@@ -1,0 +1,52 @@
+// The intersection source of cell rules against the exact box source (fcm/
+// box_cell_quadrature.hpp) on an axis-aligned body in a Hex20 grid: the same volume
+// fractions and the same integrals of every polynomial up to the strength, stiffness rules
+// simplified to at most M points, mass rules not.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "fcm/box_cell_quadrature.hpp"
+#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/mesh/structured_grid.hpp"
+
+namespace altfem::fcm {
+namespace {
+
+TEST(IntersectionCellQuadrature, AgreesWithExactBoxRules) {
+  const VolumeMesh grid = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                          Eigen::Vector3i(4, 2, 2), ElementType::hex20);
+  const Eigen::AlignedBox3d body(Eigen::Vector3d(0.1, 0.2, 0.15), Eigen::Vector3d(1.7, 0.9, 0.5));
+  const VolumeMesh embedded = structured_grid(body, Eigen::Vector3i(3, 2, 2), ElementType::tet4);
+  const int strength = 4;
+  const auto exact = box_cell_quadrature(grid, body)(strength, RulePurpose::stiffness);
+  const auto stiffness = intersection_cell_quadrature(grid, embedded)(strength, RulePurpose::stiffness);
+  const auto mass = intersection_cell_quadrature(grid, embedded)(strength, RulePurpose::mass);
+  ASSERT_EQ(exact.size(), stiffness.size());
+  for (std::size_t c = 0; c < exact.size(); ++c) {
+    SCOPED_TRACE("cell " + std::to_string(c));
+    EXPECT_NEAR(stiffness[c].volume_fraction, exact[c].volume_fraction, 1e-13);
+    EXPECT_EQ(stiffness[c].rule.has_value(), exact[c].rule.has_value());
+    if (!exact[c].rule) continue;
+    EXPECT_LE(stiffness[c].rule->points.rows(), 35);
+    EXPECT_GT(mass[c].rule->points.rows(), 35);
+    // Reference-coordinate monomials up to the strength: the cells are affine boxes.
+    for (int a = 0; a <= strength; ++a)
+      for (int b = 0; a + b <= strength; ++b)
+        for (int d = 0; a + b + d <= strength; ++d) {
+          const auto integrate = [&](const QuadratureRule& rule) {
+            double sum = 0.0;
+            for (Eigen::Index q = 0; q < rule.points.rows(); ++q)
+              sum += rule.weights(q) * std::pow(rule.points(q, 0), a) * std::pow(rule.points(q, 1), b) *
+                     std::pow(rule.points(q, 2), d);
+            return sum;
+          };
+          const double reference = integrate(*exact[c].rule);
+          EXPECT_NEAR(integrate(*stiffness[c].rule), reference, 1e-13 * 8.0);
+          EXPECT_NEAR(integrate(*mass[c].rule), reference, 1e-13 * 8.0);
+        }
+  }
+}
+
+}  // namespace
+}  // namespace altfem::fcm
