@@ -68,36 +68,36 @@ double DgLinearSystem::face_penalty(const DgFace& face) const {
   return settings_.penalty * area * inverse_volumes;  // eq. (20)
 }
 
-Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+template <typename Body>
+void DgLinearSystem::for_each_cell_point(int strength, Body&& body) const {
   Eigen::VectorXd phi;
   Eigen::MatrixXd unused;
   for (size_t c = 0; c < cells_.size(); ++c) {
-    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 2);
+    const PolyhedronRule rule = polyhedron_rule(cells_[c], strength);
     for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
       const Eigen::Vector3d x = rule.points.row(q).transpose();
       bases_[c].evaluate(x, phi, unused);
-      const Eigen::Vector3d f = rule.weights[q] * force_density(x);
-      for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
+      body(static_cast<int>(c), x, rule.weights[q], phi);
     }
   }
+}
+
+Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
+  for_each_cell_point(2 * settings_.degree + 2, [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
+    const Eigen::Vector3d f = w * force_density(x);
+    for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
+  });
   return load;
 }
 
 double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const {
   double squared = 0;
-  Eigen::VectorXd phi;
-  Eigen::MatrixXd unused;
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    const PolyhedronRule rule = polyhedron_rule(cells_[c], 2 * settings_.degree + 4);
-    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
-      const Eigen::Vector3d x = rule.points.row(q).transpose();
-      bases_[c].evaluate(x, phi, unused);
-      Eigen::Vector3d value = Eigen::Vector3d::Zero();
-      for (int a = 0; a < bases_[c].size(); ++a) value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
-      squared += rule.weights[q] * (value - field(x)).squaredNorm();
-    }
-  }
+  for_each_cell_point(2 * settings_.degree + 4, [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();
+    for (int a = 0; a < bases_[c].size(); ++a) value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
+    squared += w * (value - field(x)).squaredNorm();
+  });
   return std::sqrt(squared);
 }
 

@@ -55,6 +55,9 @@ public:
 
 private:
   double face_penalty(const DgFace& face) const;
+  // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
+  template <typename Body>
+  void for_each_cell_point(int strength, Body&& body) const;
 
   std::vector<Polyhedron> cells_;
   std::vector<DgFace> faces_;
