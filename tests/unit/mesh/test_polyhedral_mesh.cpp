@@ -6,7 +6,10 @@
 #include <Eigen/Geometry>
 
 #include "shared/common/error.hpp"
+#include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/io/polyhedral_grid.hpp"
+#include "shared/io/vtu_writer.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
@@ -100,6 +103,34 @@ TEST(PolyhedralMesh, InvertedCellIsANumericalErrorNamingTheCell) {
   } catch (const NumericalError& error) {
     EXPECT_NE(std::string(error.what()).find("cell 1"), std::string::npos) << error.what();
   }
+}
+
+
+TEST(PolyhedralMesh, VtuGridHasOnePolyhedronPerCellWithOutwardFacesAndCellData) {
+  const VolumeMesh volume_mesh = structured_grid(
+      Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)), {2, 1, 1}, ElementType::hex8);
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
+  const UnstructuredGrid grid = grid_from_polyhedral_mesh(mesh);
+  ASSERT_EQ(grid.cell_count(), 2);
+  EXPECT_EQ(grid.cell_types, (std::vector<int>{vtk_polyhedron, vtk_polyhedron}));
+  for (int cell = 0; cell < 2; ++cell) {
+    // Outward faces: the area vectors of a closed outward surface give V = ⅓ Σ c_f · A_f n_f.
+    double volume = 0;
+    ASSERT_EQ(grid.polyhedron_faces[cell].size(), 6u);
+    for (const auto& face : grid.polyhedron_faces[cell]) {
+      Eigen::MatrixXd polygon(face.size(), 3);
+      for (std::size_t i = 0; i < face.size(); ++i) polygon.row(i) = grid.points.row(face[i]);
+      volume += polygon_area_vector(polygon).dot(polygon.colwise().mean()) / 3;
+    }
+    EXPECT_NEAR(volume, 1.0, 1e-14) << "cell " << cell;
+  }
+  ASSERT_EQ(grid.cell_data.size(), 2u);
+  EXPECT_EQ(grid.cell_data[0].first, "volume");
+  EXPECT_NEAR(grid.cell_data[0].second(1, 0), 1.0, 1e-14);
+  EXPECT_EQ(grid.cell_data[1].first, "kind");
+  EXPECT_EQ(grid.cell_data[1].second(0, 0), static_cast<double>(PolyhedralCellKind::hexahedron));
+  // The writer accepts it (its own checks: sizes, ids, finite values).
+  EXPECT_NE(vtu_text(grid, "grid.vtu").find("faceoffsets"), std::string::npos);
 }
 
 }  // namespace
