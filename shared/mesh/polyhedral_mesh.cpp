@@ -1,6 +1,7 @@
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <unordered_map>
 
@@ -45,6 +46,16 @@ Polyhedron cell_polyhedron(const PolyhedralMesh& mesh, int cell) {
 
 void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
   const int face_count = mesh.face_count();
+  // Checked here, not inside the parallel loops: an exception must not leave an OpenMP region.
+  if (mesh.face_cells.rows() != face_count || mesh.face_cells.cols() != 2)
+    throw std::invalid_argument("polyhedral mesh: face_cells must be #faces x 2");
+  for (int face = 0; face < face_count; ++face) {
+    if (mesh.faces[face].size() < 3)
+      throw std::invalid_argument("polyhedral mesh: face " + std::to_string(face) + " has fewer than 3 nodes");
+    for (int node : mesh.faces[face])
+      if (node < 0 || node >= mesh.nodes.rows())
+        throw std::invalid_argument("polyhedral mesh: face " + std::to_string(face) + " has a node out of range");
+  }
   mesh.face_areas.resize(face_count);
   mesh.face_normals.resize(face_count, 3);
   mesh.face_centroids.resize(face_count, 3);

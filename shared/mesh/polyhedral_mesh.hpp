@@ -47,8 +47,9 @@ struct PolyhedralMesh {
 Polyhedron cell_polyhedron(const PolyhedralMesh& mesh, int cell);
 
 /// Fills the geometry arrays from nodes, faces and face_cells by the exact moments
-/// (polyhedron_moments, planar_polygon_moments). Throws NumericalError naming the cell
-/// when a cell's volume is not positive.
+/// (polyhedron_moments, planar_polygon_moments). Throws std::invalid_argument for a face
+/// with < 3 nodes, a node index out of range or face_cells not #faces × 2, and
+/// NumericalError naming the cell when a cell's volume is not positive.
 void compute_polyhedral_geometry(PolyhedralMesh& mesh);
 
 }  // namespace altfem

@@ -90,7 +90,10 @@ TEST_P(PolyhedralConversion, VolumesFacesAndAdjacencyAreConsistent) {
 
 INSTANTIATE_TEST_SUITE_P(TetAndHex, PolyhedralConversion,
                          ::testing::Values(Case{ElementType::hex8, {3, 2, 4}}, Case{ElementType::hex27, {2, 2, 1}},
-                                           Case{ElementType::tet4, {2, 3, 2}}, Case{ElementType::tet10, {1, 2, 2}}));
+                                           Case{ElementType::tet4, {2, 3, 2}}, Case{ElementType::tet10, {1, 2, 2}}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::string(element_name(info.param.type));
+                         });
 
 TEST(PolyhedralMesh, InvertedCellIsANumericalErrorNamingTheCell) {
   VolumeMesh volume_mesh = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
