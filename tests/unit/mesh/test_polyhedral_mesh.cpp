@@ -136,5 +136,17 @@ TEST(PolyhedralMesh, VtuGridHasOnePolyhedronPerCellWithOutwardFacesAndCellData) 
   EXPECT_NE(vtu_text(grid, "grid.vtu").find("faceoffsets"), std::string::npos);
 }
 
+TEST(PolyhedralMesh, MalformedFacesAreRejectedBeforeAnyComputation) {
+  PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(structured_grid(
+      Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), {1, 1, 1}, ElementType::tet4));
+  PolyhedralMesh short_face = mesh;
+  short_face.faces[2].pop_back();
+  short_face.faces[2].pop_back();
+  EXPECT_THROW(compute_polyhedral_geometry(short_face), std::invalid_argument);
+  PolyhedralMesh out_of_range = mesh;
+  out_of_range.faces[0][1] = static_cast<int>(mesh.nodes.rows());
+  EXPECT_THROW(compute_polyhedral_geometry(out_of_range), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace altfem
