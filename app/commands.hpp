@@ -12,6 +12,14 @@ namespace altfem::cli {
 
 int info_command();
 int check_command(const std::filesystem::path& scene_file, bool json);
+/// Options of `altfem mesh` (main.cpp documents each).
+struct MeshCommandOptions {
+  std::string method;
+  std::string source = "convert";
+  std::filesystem::path output_directory;
+  bool json = false;
+};
+int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptions& options);
 /// `overrides` are the --set KEY=VALUE assignments (docs/scene-schema.md, "Overrides").
 int run_command(const std::filesystem::path& scene_file, const std::string& method,
                 const std::filesystem::path& output_directory, const std::vector<std::string>& overrides);

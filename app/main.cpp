@@ -64,6 +64,15 @@ int main(int argc, char** argv) {
     command->add_flag("--json", quadrature_json, "Print JSON");
   }
 
+  auto* mesh = app.add_subcommand("mesh", "Build a method's mesh without solving, write it as VTU, print its facts");
+  std::string mesh_scene;
+  altfem::cli::MeshCommandOptions mesh_options;
+  mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
+  mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem (fcm in a later build)")->required();
+  mesh->add_option("--source", mesh_options.source, "dg/harmonic mesh source: convert (the fem mesh, cell by cell)");
+  mesh->add_option("--out", mesh_options.output_directory, "Output folder (default out/<scene>-mesh-<method>)");
+  mesh->add_flag("--json", mesh_options.json, "Print the mesh facts as JSON");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
@@ -77,6 +86,7 @@ int main(int argc, char** argv) {
   try {
     if (*info) return altfem::cli::info_command();
     if (*check) return altfem::cli::check_command(check_scene, check_json);
+    if (*mesh) return altfem::cli::mesh_command(mesh_scene, mesh_options);
     if (*run) return altfem::cli::run_command(run_scene, method, output, overrides);
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
