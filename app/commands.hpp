@@ -11,7 +11,7 @@
 namespace altfem::cli {
 
 int info_command();
-int check_command(const std::filesystem::path& scene_file, bool json);
+int check_command(const std::filesystem::path& scene_file, const std::string& method, bool json);
 /// Options of `altfem mesh` (main.cpp documents each).
 struct MeshCommandOptions {
   std::string method;

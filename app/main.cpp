@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
   std::string check_scene;
   bool check_json = false;
   check->add_option("scene", check_scene, "Scene file (JSON)")->required();
-  check->add_flag("--json", check_json, "Print the resolved scene and geometry facts as JSON");
+  std::string check_method;
+  check->add_option("--method", check_method, "Check and build only this method (default: every method of the build)");
+  check->add_flag("--json", check_json, "Print the resolved scene, geometry and method facts as JSON");
 
   auto* run = app.add_subcommand("run", "Simulate a scene with one method");
   std::string run_scene, method, output;
@@ -85,7 +87,7 @@ int main(int argc, char** argv) {
 
   try {
     if (*info) return altfem::cli::info_command();
-    if (*check) return altfem::cli::check_command(check_scene, check_json);
+    if (*check) return altfem::cli::check_command(check_scene, check_method, check_json);
     if (*mesh) return altfem::cli::mesh_command(mesh_scene, mesh_options);
     if (*run) return altfem::cli::run_command(run_scene, method, output, overrides);
     if (*compare) return altfem::cli::compare_command(comparison);
