@@ -110,6 +110,23 @@ TEST(FcmMethod, AlignedBoxIsFemOnTheSameGrid) {
   EXPECT_EQ(fcm->facts()["cells"]["cut"], 0);
 }
 
+// docs/scenes.md: the authors' code computed λ four times too small; the scenes use the
+// (E, ν) whose Lamé parameters are (λ/4, μ) of the paper's text.
+TEST(EffectiveMaterials, AreThePapersWithAQuarterOfLambda) {
+  struct Row {
+    double youngs, poisson, effective_youngs, effective_poisson;
+  };
+  for (const Row& row : {Row{5e6, 0.48, 4.826e6, 0.4286}, Row{5e5, 0.4, 4.464e5, 0.25}, Row{3e6, 0.4, 2.679e6, 0.25}}) {
+    const double mu = row.youngs / (2 * (1 + row.poisson));
+    const double lambda = row.youngs * row.poisson / ((1 + row.poisson) * (1 - 2 * row.poisson)) / 4;
+    const double effective_mu = row.effective_youngs / (2 * (1 + row.effective_poisson));
+    const double effective_lambda = row.effective_youngs * row.effective_poisson /
+                                    ((1 + row.effective_poisson) * (1 - 2 * row.effective_poisson));
+    EXPECT_NEAR(effective_mu / mu, 1.0, 2e-4) << row.youngs;
+    EXPECT_NEAR(effective_lambda / lambda, 1.0, 2e-3) << row.youngs;
+  }
+}
+
 TEST(FcmSceneBlock, DefaultsAreTheAuthors) {
   Scene scene = sphere_scene("hex20");
   scene.resolved["discretization"]["fcm"] = nlohmann::json::object();
