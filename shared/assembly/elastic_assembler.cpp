@@ -281,6 +281,28 @@ Eigen::VectorXd ElasticAssembler::lumped_mass(const ElementMasses& masses) const
   return lumped;
 }
 
+Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& displacement) const {
+  Eigen::MatrixXd stresses(elements_.size(), 9);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int e = 0; e < elements_.size(); ++e) {
+    const ElementView element = elements_[e];
+    const Material& material = *materials_[element.material];
+    Eigen::MatrixX3d u(element.basis_count(), 3);
+    for (int a = 0; a < element.basis_count(); ++a) u.row(a) = displacement.segment<3>(3 * element.basis[a]).transpose();
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    double volume = 0;
+    for (int q = 0; q < element.point_count(); ++q) {
+      const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + u.transpose() * element.gradients_at(q);
+      sum += element.weights[q] * material.pk1(F) * F.transpose() / F.determinant();
+      volume += element.weights[q];
+    }
+    const Eigen::Matrix3d mean = sum / volume;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) stresses(e, 3 * i + j) = mean(i, j);
+  }
+  return stresses;
+}
+
 void ElasticAssembler::check_masses(const ElementMasses& masses) const {
   bool same = masses.size() == elements_.size();
   for (int e = 0; same && e < elements_.size(); ++e) same = masses.matrices[e].rows() == elements_[e].basis_count();

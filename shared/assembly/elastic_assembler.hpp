@@ -57,6 +57,9 @@ public:
   void mass_matrix(const ElementMasses& masses, SparseMatrix& mass) const;
   Eigen::VectorXd body_force(const ElementMasses& masses, const Eigen::Vector3d& acceleration) const;
   Eigen::VectorXd lumped_mass(const ElementMasses& masses) const;
+  /// Per element the Cauchy stress σ = P Fᵀ / det F averaged over its quadrature points
+  /// (weights w_q |det J|): #elements × 9, row e holding σ row-major. For output.
+  Eigen::MatrixXd mean_cauchy_stress(const Eigen::VectorXd& displacement) const;
   /// Whether every material's tangent is independent of F (linear elasticity): then
   /// the Hessian needs assembling and factorising only once.
   bool is_linear() const;

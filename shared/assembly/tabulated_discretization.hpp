@@ -67,6 +67,9 @@ public:
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
   PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }
+  Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& displacement) const override {
+    return assembler_->mean_cauchy_stress(displacement);
+  }
 
   const TabulatedElements& elements() const { return parts_.elements; }
   const ElasticAssembler& assembler() const { return *assembler_; }
