@@ -62,9 +62,9 @@ int main() {
   std::printf("cell: Hex20 [0,1]^3; object: ball r = %.1f, %lld tetrahedra\n", radius,
               static_cast<long long>(tetrahedra.size()));
 
-  // 1. Intersection rule of degree m = 4 (what altfem uses for quadratic cells: the
-  //    stiffness integrand ∇N·∇N is of degree 2 per axis). Tetrahedra that miss the cell
-  //    contribute nothing.
+  // 1. Intersection rule of degree m = 4 (fcm::CellRuleOptions' default order): a
+  //    degree-4 rule on every piece Q of cell ∩ tetrahedron. Tetrahedra that miss the
+  //    cell contribute nothing.
   const int order = 4;
   const fcm::IntersectionRule intersection = fcm::intersection_rule(cell, tetrahedra, order);
   const QuadratureRule& exact_rule = intersection.rule;
