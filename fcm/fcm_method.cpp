@@ -5,6 +5,7 @@
 #include "fcm/embedded_mesh.hpp"
 #include "fcm/fcm_scene_block.hpp"
 #include "fcm/intersection_cell_quadrature.hpp"
+#include "fcm/region_cut_check.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -37,6 +38,7 @@ public:
     const CellQuadratureSource rules = intersection_cell_quadrature(background, embedded, spec.simplifier,
                                                                     spec.simplification_tolerance, {}, statistics_);
     fcm_ = build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options, file);
+    warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The surface every method deforms: the scene's own, else the boundary of the
@@ -58,6 +60,10 @@ public:
                                                      displacement.data(), displacement.size() / 3, 3));
     grid.cell_data.emplace_back("volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(),
                                                                                       fcm_.volume_fractions.size()));
+    const TabulatedElements& elements = fcm_.discretization->elements();
+    Eigen::VectorXd points(elements.size());
+    for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
+    grid.cell_data.emplace_back("quadrature_points", points);
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
@@ -70,6 +76,7 @@ public:
       values.segment<3>(3 * node) = field(fcm_.mesh.nodes.row(node).transpose());
     return values;
   }
+  std::vector<std::string> warnings() const override { return warnings_; }
   nlohmann::json facts() const override {
     return {{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
             {"cells", {{"inside", fcm_.counts.inside},
@@ -94,6 +101,7 @@ private:
   SurfaceMesh surface_;
   std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
+  std::vector<std::string> warnings_;
   double quadrature_seconds_ = 0;
 };
 

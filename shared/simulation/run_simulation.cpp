@@ -215,6 +215,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
                          "install libopenblas0-pthread\n", blas.library.c_str());
   summary["facts"] = method->facts();
+  summary["warnings"] = method->warnings();
+  for (const std::string& warning : method->warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
   if (explicit_steps) summary["facts"]["critical_time_step"] = critical_time_step;
 
   State state;
