@@ -1,0 +1,16 @@
+#pragma once
+// Sliver merging (Kaufmann et al. 2009, §9.4): a cut piece much smaller than a grid cell
+// makes the methods' element matrices ill-conditioned, so it joins the neighbour it
+// shares its largest face with; the union may be non-convex.
+#include "shared/mesh/polyhedral_mesh.hpp"
+
+namespace altfem {
+
+/// Merges every `cut` cell whose volume is below `minimum_volume` (smallest first) into
+/// the face-neighbour across its largest interior face; faces between merged cells are
+/// removed, unused nodes dropped, the merged cells' kind becomes `merged`, and the
+/// geometry is recomputed. A piece without neighbours (a separate bit of the object) is
+/// kept. Returns the number of cells merged away. Needs the geometry computed.
+int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
+
+}  // namespace altfem

@@ -1,0 +1,263 @@
+// Hexahedral slicing of closed surfaces into polyhedral meshes: an aligned box gives the
+// grid's hexahedra; a sphere, a torus and the bunny give cells whose volumes sum to the
+// enclosed volume, each cell closed (every edge used once each way, Σ area·normal = 0),
+// interior faces shared by exactly two cells; two boxes closer than a cell stay apart;
+// slivers are merged into their neighbours.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+
+#include "shared/common/error.hpp"
+#include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+
+namespace altfem {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+SurfaceMesh box_surface(const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
+  SurfaceMesh box;
+  box.vertices.resize(8, 3);
+  for (int v = 0; v < 8; ++v)
+    box.vertices.row(v) << (v & 1 ? high.x() : low.x()), (v & 2 ? high.y() : low.y()), (v & 4 ? high.z() : low.z());
+  box.triangles.resize(12, 3);
+  box.triangles << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7,
+      1, 7, 5;
+  return box;
+}
+
+SurfaceMesh join(const SurfaceMesh& a, const SurfaceMesh& b) {
+  SurfaceMesh both;
+  both.vertices.resize(a.vertices.rows() + b.vertices.rows(), 3);
+  both.vertices << a.vertices, b.vertices;
+  both.triangles.resize(a.triangles.rows() + b.triangles.rows(), 3);
+  both.triangles << a.triangles, (b.triangles.array() + static_cast<int>(a.vertices.rows())).matrix();
+  return both;
+}
+
+/// A torus about the z axis: a periodic (u, v) grid of `u_count` × `v_count` points.
+SurfaceMesh torus(double major, double minor, int u_count, int v_count, const Eigen::Vector3d& centre) {
+  SurfaceMesh surface;
+  surface.vertices.resize(u_count * v_count, 3);
+  for (int i = 0; i < u_count; ++i)
+    for (int j = 0; j < v_count; ++j) {
+      const double u = 2 * pi * i / u_count, v = 2 * pi * j / v_count;
+      surface.vertices.row(i * v_count + j) =
+          (centre + Eigen::Vector3d((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
+                                    minor * std::sin(v)))
+              .transpose();
+    }
+  surface.triangles.resize(2 * u_count * v_count, 3);
+  for (int i = 0; i < u_count; ++i)
+    for (int j = 0; j < v_count; ++j) {
+      const int a = i * v_count + j, b = ((i + 1) % u_count) * v_count + j, c = ((i + 1) % u_count) * v_count + (j + 1) % v_count,
+                d = i * v_count + (j + 1) % v_count;
+      surface.triangles.row(2 * (i * v_count + j)) << a, b, c;
+      surface.triangles.row(2 * (i * v_count + j) + 1) << a, c, d;
+    }
+  return surface;
+}
+
+SurfaceMesh sphere(double radius, int rings, int segments, const Eigen::Vector3d& centre) {
+  SurfaceMesh surface;
+  const int vertex_count = 2 + (rings - 1) * segments;
+  surface.vertices.resize(vertex_count, 3);
+  surface.vertices.row(0) = (centre - radius * Eigen::Vector3d::UnitZ()).transpose();
+  surface.vertices.row(vertex_count - 1) = (centre + radius * Eigen::Vector3d::UnitZ()).transpose();
+  for (int r = 1; r < rings; ++r)
+    for (int s = 0; s < segments; ++s) {
+      const double polar = pi * r / rings, azimuth = 2 * pi * s / segments;
+      surface.vertices.row(1 + (r - 1) * segments + s) =
+          (centre + radius * Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                                             -std::cos(polar)))
+              .transpose();
+    }
+  std::vector<Eigen::Vector3i> triangles;
+  auto ring_vertex = [&](int r, int s) { return 1 + (r - 1) * segments + (s % segments); };
+  for (int s = 0; s < segments; ++s) {
+    triangles.emplace_back(0, ring_vertex(1, s + 1), ring_vertex(1, s));
+    triangles.emplace_back(vertex_count - 1, ring_vertex(rings - 1, s), ring_vertex(rings - 1, s + 1));
+    for (int r = 1; r < rings - 1; ++r) {
+      triangles.emplace_back(ring_vertex(r, s), ring_vertex(r, s + 1), ring_vertex(r + 1, s + 1));
+      triangles.emplace_back(ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r + 1, s));
+    }
+  }
+  surface.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) surface.triangles.row(t) = triangles[t].transpose();
+  return surface;
+}
+
+double surface_area(const SurfaceMesh& surface) {
+  double area = 0;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)), b = surface.vertices.row(surface.triangles(t, 1)),
+                          c = surface.vertices.row(surface.triangles(t, 2));
+    area += (b - a).cross(c - a).norm() / 2;
+  }
+  return area;
+}
+
+/// Every cell closed and positive, every edge of a cell used once in each direction (no
+/// T-junctions), every interior face in the face lists of exactly its two cells; the
+/// cells' volumes sum to `volume` and the boundary faces' area to `area` (relative `tolerance`).
+void expect_valid_slicing(const PolyhedralMesh& mesh, double volume, double area, double tolerance) {
+  const double scale = std::cbrt(mesh.cell_volumes.maxCoeff());
+  std::vector<int> seen(mesh.face_count(), 0);
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
+    EXPECT_GT(mesh.cell_volumes(cell), 0) << "cell " << cell;
+    Eigen::Vector3d flux = Eigen::Vector3d::Zero();
+    std::map<std::pair<int, int>, int> edges;
+    for (int face : mesh.cell_faces[cell]) {
+      ++seen[face];
+      const bool owner = mesh.face_cells(face, 0) == cell;
+      ASSERT_TRUE(owner || mesh.face_cells(face, 1) == cell);
+      EXPECT_GT(mesh.face_areas(face), 0) << "face " << face;
+      flux += (owner ? 1.0 : -1.0) * mesh.face_areas(face) * mesh.face_normals.row(face).transpose();
+      const auto& loop = mesh.faces[face];
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        int a = loop[i], b = loop[(i + 1) % loop.size()];
+        if (!owner) std::swap(a, b);
+        ++edges[{a, b}];
+      }
+    }
+    EXPECT_LT(flux.norm(), 1e-12 * scale * scale) << "cell " << cell;
+    for (const auto& [edge, count] : edges) {
+      EXPECT_EQ(count, 1) << "cell " << cell << " edge " << edge.first << "-" << edge.second;
+      const auto reverse = edges.find({edge.second, edge.first});
+      EXPECT_TRUE(reverse != edges.end() && reverse->second == 1)
+          << "cell " << cell << " edge " << edge.first << "-" << edge.second << " not matched";
+    }
+  }
+  double boundary_area = 0;
+  Eigen::Vector3d boundary_flux = Eigen::Vector3d::Zero();
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const bool interior = !mesh.is_boundary_face(face);
+    EXPECT_EQ(seen[face], interior ? 2 : 1) << "face " << face;
+    if (interior) EXPECT_NE(mesh.face_cells(face, 0), mesh.face_cells(face, 1));
+    if (!interior) {
+      boundary_area += mesh.face_areas(face);
+      boundary_flux += mesh.face_areas(face) * mesh.face_normals.row(face).transpose();
+    }
+  }
+  EXPECT_NEAR(mesh.cell_volumes.sum(), volume, tolerance * volume);
+  EXPECT_NEAR(boundary_area, area, tolerance * area);
+  EXPECT_LT(boundary_flux.norm(), tolerance * area);
+}
+
+TEST(SliceIntoPolyhedra, ABoxOnGridPlanesIsExactlyTheGridsHexahedra) {
+  const SurfaceMesh box = box_surface(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
+  SlicingOptions options;
+  options.cell_size = 0.25;
+  options.margin_cells = 1;
+  const SlicedMesh sliced = slice_into_polyhedra(box, options);
+  EXPECT_EQ(sliced.grid_cells, Eigen::Vector3i(6, 6, 6));
+  ASSERT_EQ(sliced.mesh.cell_count(), 64);
+  EXPECT_EQ(sliced.hexahedra, 64);
+  EXPECT_EQ(sliced.cut_pieces, 0);
+  for (int cell = 0; cell < 64; ++cell) {
+    EXPECT_EQ(sliced.mesh.cell_kinds[cell], PolyhedralCellKind::hexahedron);
+    EXPECT_EQ(sliced.mesh.cell_faces[cell].size(), 6u);
+    EXPECT_DOUBLE_EQ(sliced.mesh.cell_volumes(cell), 0.25 * 0.25 * 0.25);
+  }
+  EXPECT_EQ(sliced.mesh.nodes.rows(), 125);
+  EXPECT_EQ(sliced.mesh.face_count(), 3 * 5 * 16);
+  expect_valid_slicing(sliced.mesh, 1.0, 6.0, 1e-14);
+}
+
+TEST(SliceIntoPolyhedra, SphereCellsSumToTheEnclosedVolume) {
+  const SurfaceMesh surface = sphere(0.8, 24, 48, Eigen::Vector3d(0.0123, -0.0311, 0.0071));
+  // At resolution 3 grid planes pass through the centre: two meridians and the equator lie
+  // in grid planes (after snapping) and the poles on grid lines.
+  for (int resolution : {3, 8}) {
+    SlicingOptions options;
+    options.resolution = resolution;
+    options.sliver_fraction = 0;
+    const SlicedMesh sliced = slice_into_polyhedra(surface, options);
+    EXPECT_GT(sliced.cut_pieces, 0);
+    expect_valid_slicing(sliced.mesh, surface_volume(surface), surface_area(surface), 1e-10);
+  }
+}
+
+TEST(SliceIntoPolyhedra, TorusCellsSumToTheEnclosedVolume) {
+  const SurfaceMesh surface = torus(1.0, 0.35, 48, 24, Eigen::Vector3d(0.017, 0.0093, -0.021));
+  SlicingOptions options;
+  options.resolution = 10;
+  options.sliver_fraction = 0;
+  const SlicedMesh sliced = slice_into_polyhedra(surface, options);
+  EXPECT_GT(sliced.hexahedra, 0);
+  expect_valid_slicing(sliced.mesh, surface_volume(surface), surface_area(surface), 1e-10);
+}
+
+TEST(SliceIntoPolyhedra, TwoBoxesInOneGridCellGiveTwoPieces) {
+  // A gap of 1e-2 at x ∈ [0.495, 0.505], inside the grid slab x ∈ [0.3825, 0.6175).
+  const SurfaceMesh left = box_surface(Eigen::Vector3d(0.03, 0.03, 0.03), Eigen::Vector3d(0.495, 0.97, 0.97));
+  const SurfaceMesh right = box_surface(Eigen::Vector3d(0.505, 0.03, 0.03), Eigen::Vector3d(0.97, 0.97, 0.97));
+  const SurfaceMesh both = join(left, right);
+  SlicingOptions options;
+  options.resolution = 4;
+  const SlicedMesh sliced = slice_into_polyhedra(both, options);
+  EXPECT_EQ(sliced.split_grid_cells, 25);  // the 5 × 5 grid cells of that slab holding material
+  expect_valid_slicing(sliced.mesh, surface_volume(both), surface_area(both), 1e-12);
+  // No cell reaches across the gap.
+  for (int cell = 0; cell < sliced.mesh.cell_count(); ++cell) {
+    bool on_left = false, on_right = false;
+    for (int face : sliced.mesh.cell_faces[cell])
+      for (int node : sliced.mesh.faces[face]) {
+        on_left |= sliced.mesh.nodes(node, 0) < 0.5;
+        on_right |= sliced.mesh.nodes(node, 0) > 0.5;
+      }
+    EXPECT_FALSE(on_left && on_right) << "cell " << cell;
+  }
+}
+
+TEST(SliceIntoPolyhedra, SlicedBunnyHasTheSurfaceVolume) {
+  const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
+  SlicingOptions options;
+  options.resolution = 8;
+  options.sliver_fraction = 0;
+  const SlicedMesh sliced = slice_into_polyhedra(bunny, options);
+  expect_valid_slicing(sliced.mesh, surface_volume(bunny), surface_area(bunny), 1e-9);
+}
+
+TEST(SliceIntoPolyhedra, SliversAreMergedIntoTheirLargestFaceNeighbour) {
+  // The box reaches 1e-5 past the grid plane x = 1: sixteen pieces of 1e-5 / 0.25 = 4e-5 of a cell.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1.00001, 1, 1));
+  SlicingOptions options;
+  options.cell_size = 0.25;
+  options.margin_cells = 1;
+  options.sliver_fraction = 0;
+  const SlicedMesh kept = slice_into_polyhedra(box, options);
+  EXPECT_EQ(kept.mesh.cell_count(), 64 + 16);
+  EXPECT_EQ(kept.merged_slivers, 0);
+
+  options.sliver_fraction = 1e-3;
+  const SlicedMesh merged = slice_into_polyhedra(box, options);
+  EXPECT_EQ(merged.merged_slivers, 16);
+  ASSERT_EQ(merged.mesh.cell_count(), 64);
+  int merged_cells = 0;
+  for (int cell = 0; cell < 64; ++cell) {
+    merged_cells += merged.mesh.cell_kinds[cell] == PolyhedralCellKind::merged;
+    EXPECT_GE(merged.mesh.cell_volumes(cell), 1e-3 * std::pow(0.25, 3));
+  }
+  EXPECT_EQ(merged_cells, 16);
+  expect_valid_slicing(merged.mesh, 1.00001, surface_area(box), 1e-12);
+  // The merged cells are the hexahedra next to x = 1, now reaching to x = 1.00001.
+  for (int cell = 0; cell < 64; ++cell)
+    if (merged.mesh.cell_kinds[cell] == PolyhedralCellKind::merged)
+      EXPECT_NEAR(merged.mesh.cell_volumes(cell), 0.25 * 0.25 * 0.26001 - 0.25 * 0.25 * 0.01, 1e-15);
+}
+
+TEST(SliceIntoPolyhedra, BadOptionsAreInputErrors) {
+  const SurfaceMesh box = box_surface(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
+  SlicingOptions options;
+  options.resolution = 0;
+  EXPECT_THROW(slice_into_polyhedra(box, options), InputError);
+  options.resolution = 4;
+  options.margin_cells = -1;
+  EXPECT_THROW(slice_into_polyhedra(box, options), InputError);
+}
+
+}  // namespace
+}  // namespace altfem
