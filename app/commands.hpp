@@ -15,7 +15,9 @@ int check_command(const std::filesystem::path& scene_file, bool json);
 /// Options of `altfem mesh` (main.cpp documents each).
 struct MeshCommandOptions {
   std::string method;
-  std::string source = "convert";
+  std::string source = "convert";  ///< dg/harmonic: "convert" (the fem mesh cell by cell) or "slice"
+  int resolution = 16;              ///< --source slice: grid cells along the bounding box's longest side
+  double sliver_fraction = 1e-3;    ///< --source slice: pieces below this fraction of a cell are merged
   std::filesystem::path output_directory;
   bool json = false;
 };
