@@ -164,7 +164,7 @@ private:
 
   /// Every grid face of a cut cell gets its loops (oriented along +e_axis) once.
   void compute_face_regions() {
-    std::vector<GridFace> undetermined_faces;
+    std::vector<UndeterminedFace> undetermined_faces;
     for (int cell = 0; cell < grid_.cell_count(); ++cell) {
       if (!is_cut(cell)) continue;
       const Eigen::Vector3i coordinates = grid_.cell_coordinates(cell);
@@ -186,42 +186,72 @@ private:
                                    ": the surface lies in this grid plane with material on both sides; "
                                    "change the resolution or the margin");
           }
-          const int other_cell = lower_cut ? above : lower;
-          if (undetermined && !(lower_cut && upper_cut)) {
-            // The uncut neighbour decides: the face is wholly inside or outside.
-            if (has_material(other_cell)) {
-              const auto corners = corners_up(face);
-              loops.push_back({corners.begin(), corners.end()});
-            }
-          } else if (!(lower_cut && upper_cut) && has_material(other_cell)) {
-            const auto corners = corners_up(face);
-            if (canonical(loops) != canonical({{corners.begin(), corners.end()}}))
-              throw NumericalError("slicing: " + face_name(face) +
-                                   ": the surface lies in this grid plane next to a cell wholly inside; "
-                                   "change the resolution or the margin");
-          }
-          if (undetermined && lower_cut && upper_cut) undetermined_faces.push_back(face);
+          if (undetermined)
+            undetermined_faces.push_back({face, lower_cut && upper_cut, lower_cut ? -1.0 : 1.0});
+          else
+            check_next_to_inside_cell(face, loops, lower_cut ? above : lower, lower_cut && upper_cut);
           regions_.emplace(key, std::move(loops));
         }
     }
-    // Faces between two cut cells that the surface does not cross: their centres decide.
-    Eigen::MatrixXd centres(undetermined_faces.size(), 3);
-    for (std::size_t f = 0; f < undetermined_faces.size(); ++f) {
-      const GridFace& face = undetermined_faces[f];
+    decide_undetermined_faces(undetermined_faces);
+  }
+
+  /// A grid face of a cut cell that the surface does not cross.
+  struct UndeterminedFace {
+    GridFace face;
+    bool both_cut;
+    double towards_cut_cell;  ///< −1 or +1 along e_axis
+  };
+
+  /// Wholly inside or outside: the face centre decides, or, when the surface lies in the
+  /// face's plane there (the centre is on it), a point just inside the cut cell.
+  void decide_undetermined_faces(const std::vector<UndeterminedFace>& faces) {
+    auto centre_of = [&](const GridFace& face) {
       Eigen::Vector3d centre = grid_.grid_node(face.node).array() + grid_.cell_size / 2;
       centre(face.axis) = grid_.planes[face.axis][face.node(face.axis)];
-      centres.row(f) = centre;
-    }
+      return centre;
+    };
+    Eigen::MatrixXd centres(faces.size(), 3);
+    for (std::size_t f = 0; f < faces.size(); ++f) centres.row(f) = centre_of(faces[f].face);
     const auto sides = points_inside_surface(surface_.vertices, surface_.triangles, centres);
-    for (std::size_t f = 0; f < undetermined_faces.size(); ++f) {
-      const GridFace& face = undetermined_faces[f];
-      if (sides[f] == SurfaceSide::on_surface)
-        throw NumericalError("slicing: " + face_name(face) + ": the surface lies in this grid plane; change the resolution or the margin");
-      if (sides[f] == SurfaceSide::inside) {
-        const auto corners = corners_up(face);
-        regions_[face_key(face)].push_back({corners.begin(), corners.end()});
-      }
+    std::vector<std::size_t> in_plane;
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      if (sides[f] != SurfaceSide::on_surface) continue;
+      if (faces[f].both_cut)
+        throw NumericalError("slicing: " + face_name(faces[f].face) +
+                             ": the surface lies in this grid plane between two cut cells; change the resolution or the margin");
+      in_plane.push_back(f);
     }
+    Eigen::MatrixXd probes(in_plane.size(), 3);
+    for (std::size_t p = 0; p < in_plane.size(); ++p) {
+      const UndeterminedFace& undetermined = faces[in_plane[p]];
+      Eigen::Vector3d probe = centres.row(in_plane[p]);
+      probe(undetermined.face.axis) += undetermined.towards_cut_cell * 1e-6 * grid_.cell_size;
+      probes.row(p) = probe;
+    }
+    const auto probe_sides = points_inside_surface(surface_.vertices, surface_.triangles, probes);
+    std::vector<SurfaceSide> decided = sides;
+    for (std::size_t p = 0; p < in_plane.size(); ++p) decided[in_plane[p]] = probe_sides[p];
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+      const GridFace& face = faces[f].face;
+      Loops& loops = regions_[face_key(face)];
+      if (decided[f] == SurfaceSide::inside) {
+        const auto corners = corners_up(face);
+        loops.push_back({corners.begin(), corners.end()});
+      }
+      const int other = faces[f].towards_cut_cell < 0 ? upper_cell(face) : lower_cell(face);
+      check_next_to_inside_cell(face, loops, other, faces[f].both_cut);
+    }
+  }
+
+  /// Next to a cell wholly inside, the cut cell's face region must be the whole face.
+  void check_next_to_inside_cell(const GridFace& face, const Loops& loops, int other_cell, bool both_cut) {
+    if (both_cut || other_cell < 0 || state_[other_cell] != CellState::inside) return;
+    const auto corners = corners_up(face);
+    if (canonical(loops) != canonical({{corners.begin(), corners.end()}}))
+      throw NumericalError("slicing: " + face_name(face) +
+                           ": the surface lies in this grid plane next to a cell wholly inside; "
+                           "change the resolution or the margin");
   }
 
   SlicedMesh assemble(const SurfacePieces& pieces);

@@ -13,7 +13,10 @@ SlicingGrid SlicingGrid::covering(const Eigen::Vector3d& lower, const Eigen::Vec
   grid.origin = lower.array() - margin_cells * cell_size;
   for (int axis = 0; axis < 3; ++axis) {
     const double extent = upper(axis) - lower(axis) + 2 * margin_cells * cell_size;
-    grid.cells(axis) = std::max(1, static_cast<int>(std::ceil(extent / cell_size - 1e-12)));
+    int& count = grid.cells(axis);
+    count = std::max(1, static_cast<int>(std::ceil(extent / cell_size - 1e-9)));
+    // The last plane must not fall short of the object by a rounding.
+    while (grid.origin(axis) + count * cell_size < upper(axis) + margin_cells * cell_size) ++count;
     grid.planes[axis].resize(grid.cells(axis) + 1);
     for (int i = 0; i <= grid.cells(axis); ++i) grid.planes[axis][i] = grid.origin(axis) + i * cell_size;
   }
@@ -51,16 +54,32 @@ bool lexicographically_less(const Eigen::Vector3d& p, const Eigen::Vector3d& q) 
   return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
 }
 
+// A coordinate within this fraction of a cell of a grid plane is put on the plane: a vertex
+// a few ulps off a plane, or a crossing that lies on a grid line in exact arithmetic but
+// was rounded off it, would otherwise give crossings that round onto each other along
+// different paths and tangle the topology. Moves the surface by at most 1e-12 cells.
+constexpr double snap_fraction = 1e-12;
+
+void snap_to_planes(Eigen::Vector3d& point, const SlicingGrid& grid) {
+  for (int axis = 0; axis < 3; ++axis) {
+    double& value = point(axis);
+    const int slab = grid.slab(axis, value);
+    for (int plane = slab; plane <= slab + 1; ++plane)
+      if (std::abs(value - grid.planes[axis][plane]) <= snap_fraction * grid.cell_size) value = grid.planes[axis][plane];
+  }
+}
+
 /// Where the segment pq meets the plane x_axis = value (the endpoints on opposite sides,
 /// "on" counting as above). Computed from the lexicographically smaller endpoint so both
 /// polygons sharing the edge get the same bits; the plane coordinate is set exactly.
-Eigen::Vector3d plane_crossing(Eigen::Vector3d p, Eigen::Vector3d q, int axis, double value) {
+Eigen::Vector3d plane_crossing(Eigen::Vector3d p, Eigen::Vector3d q, int axis, double value, const SlicingGrid& grid) {
   if (p(axis) == value) return p;
   if (q(axis) == value) return q;
   if (lexicographically_less(q, p)) std::swap(p, q);
   const double t = (value - p(axis)) / (q(axis) - p(axis));
   Eigen::Vector3d crossing = p + t * (q - p);
   crossing(axis) = value;
+  snap_to_planes(crossing, grid);
   return crossing;
 }
 
@@ -70,7 +89,8 @@ void drop_repeated_vertices(Polygon& polygon) {
 }
 
 /// Sutherland–Hodgman: the parts of `polygon` below and above (or on) the plane.
-void split_polygon(const Polygon& polygon, int axis, double value, Polygon& below, Polygon& above) {
+void split_polygon(const Polygon& polygon, int axis, double value, const SlicingGrid& grid, Polygon& below,
+                   Polygon& above) {
   below.clear();
   above.clear();
   for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -79,7 +99,7 @@ void split_polygon(const Polygon& polygon, int axis, double value, Polygon& belo
     const bool p_below = p(axis) < value, q_below = q(axis) < value;
     (p_below ? below : above).push_back(p);
     if (p_below != q_below) {
-      const Eigen::Vector3d crossing = plane_crossing(p, q, axis, value);
+      const Eigen::Vector3d crossing = plane_crossing(p, q, axis, value, grid);
       below.push_back(crossing);
       above.push_back(crossing);
     }
@@ -108,25 +128,18 @@ bool lies_in_grid_plane(const CellPolygon& piece, const SlicingGrid& grid) {
 }  // namespace
 
 SurfacePieces split_surface_by_grid(const SurfaceMesh& surface, const SlicingGrid& grid, NodeRegistry& nodes) {
-  // A vertex a few ulps off a plane would give crossings that round onto the vertex (or
-  // onto each other) and tangle the topology: such coordinates are put on the plane,
-  // which moves the surface by at most snap_fraction × cell_size.
-  constexpr double snap_fraction = 1e-12;
-  Eigen::MatrixXd vertices = surface.vertices;
-  for (Eigen::Index v = 0; v < vertices.rows(); ++v)
-    for (int axis = 0; axis < 3; ++axis) {
-      double& value = vertices(v, axis);
-      const int slab = grid.slab(axis, value);
-      for (int plane = slab; plane <= slab + 1; ++plane)
-        if (std::abs(value - grid.planes[axis][plane]) <= snap_fraction * grid.cell_size) value = grid.planes[axis][plane];
-    }
+  std::vector<Eigen::Vector3d> vertices(static_cast<std::size_t>(surface.vertices.rows()));
+  for (Eigen::Index v = 0; v < surface.vertices.rows(); ++v) {
+    vertices[v] = surface.vertices.row(v).transpose();
+    snap_to_planes(vertices[v], grid);
+  }
   SurfacePieces pieces;
   std::vector<CellPolygon> current, next;
   Polygon below, above;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
     current.assign(1, CellPolygon{{}, Eigen::Vector3i::Zero()});
     for (int corner = 0; corner < 3; ++corner)
-      current[0].polygon.push_back(vertices.row(surface.triangles(t, corner)).transpose());
+      current[0].polygon.push_back(vertices[surface.triangles(t, corner)]);
     for (int axis = 0; axis < 3; ++axis) {
       next.clear();
       for (CellPolygon& piece : current) {
@@ -134,7 +147,7 @@ SurfacePieces split_surface_by_grid(const SurfaceMesh& surface, const SlicingGri
         for (const auto& p : piece.polygon) lowest = std::min(lowest, p(axis)), highest = std::max(highest, p(axis));
         const int first = grid.slab(axis, lowest), last = grid.slab(axis, highest);
         for (int slab = first; slab < last; ++slab) {
-          split_polygon(piece.polygon, axis, grid.planes[axis][slab + 1], below, above);
+          split_polygon(piece.polygon, axis, grid.planes[axis][slab + 1], grid, below, above);
           if (below.size() >= 3) {
             next.push_back({below, piece.cell});
             next.back().cell(axis) = slab;

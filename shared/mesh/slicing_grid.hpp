@@ -9,11 +9,14 @@
 // in double precision. A constructed point is computed once per (edge, plane) from the
 // edge's endpoints in a canonical order and gets the plane's coordinate exactly, so both
 // triangles of an edge and both sides of a cut share bitwise-identical points; only the
-// two in-plane coordinates are rounded (relative 1e-16, far below the 1e-12 volume
-// checks). Measured: the bunny (3.7k triangles) splits at 32³ in a few milliseconds,
-// where a per-cell PMP::clip with Epeck copies and corefines the surface once per cut
-// cell and its box triangulation adds diagonal vertices that the two sides of a grid
-// face do not share.
+// two in-plane coordinates are rounded (relative 1e-16), and a coordinate within 1e-12
+// cells of another plane is put on it (the surface moves by at most that, far below the
+// 1e-10 volume checks), so near-degenerate crossings cannot round apart along two paths
+// (a grid line through a surface edge, a vertex an ulp off a plane).
+// Measured alternative: CGAL's PMP::clip of the bunny by one cell box with the exact
+// kernel (see the report of issue #15 for the numbers) costs far more per cut cell than
+// this whole slicing per grid, and its box triangulation adds diagonal vertices that the
+// two sides of a grid face do not share.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
@@ -69,8 +72,8 @@ struct SurfacePieces {
 };
 
 /// Splits every triangle by the grid planes it crosses (Sutherland–Hodgman along x, then
-/// y, then z) into convex polygons inside one cell each; coordinates within 1e-12 cells of
-/// a plane are first put on it. Pieces lying in a grid plane are
+/// y, then z) into convex polygons inside one cell each; coordinates of vertices and
+/// crossings within 1e-12 cells of a plane are put on it. Pieces lying in a grid plane are
 /// left out: the grid face's region (grid_face_regions) stands for them.
 SurfacePieces split_surface_by_grid(const SurfaceMesh& surface, const SlicingGrid& grid, NodeRegistry& nodes);
 

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <map>
+#include <random>
 
 #include "shared/common/error.hpp"
 #include "shared/mesh/boundary_surface.hpp"
@@ -267,6 +268,66 @@ TEST(SliceIntoPolyhedra, CsgShapeIsSlicedThroughItsMesh3Surface) {
   expect_valid_slicing(sliced.mesh, surface_volume(surface), surface_area(surface), 1e-10);
   const double exact = 0.48 - pi * 0.5 * 0.5 * 0.5 / 6;
   EXPECT_NEAR(sliced.mesh.cell_volumes.sum(), exact, 0.02 * exact);  // Mesh_3's approximation
+}
+
+TEST(SliceIntoPolyhedra, RobustnessBatchOfDegenerateSurfacesKeepsTheVolume) {
+  // Boxes with faces exactly on grid planes (lattice corners, cells of 1/8 or 1/4), jittered
+  // and rotated boxes, spheres and tori centred on lattice points (meridians in grid planes,
+  // grid lines through surface edges, poles on grid lines), several resolutions and margins.
+  std::mt19937 random(42);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int sliced = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    SurfaceMesh surface;
+    SlicingOptions options;
+    options.margin_cells = trial % 3 == 0 ? 0.0 : 0.5;
+    options.sliver_fraction = trial % 5 == 0 ? 1e-3 : 0.0;
+    const bool lattice = trial % 2 == 0;
+    if (trial < 40) {
+      Eigen::Vector3d low, high;
+      for (int axis = 0; axis < 3; ++axis) {
+        double a = unit(random), b = unit(random);
+        if (lattice) a = std::round(a * 8) / 8, b = std::round(b * 8) / 8;
+        if (a == b) b = a + 0.125;
+        low(axis) = std::min(a, b), high(axis) = std::max(a, b);
+      }
+      surface = box_surface(low, high);
+      if (trial % 4 == 1) {
+        const Eigen::Vector3d axis = Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+        surface.vertices = (surface.vertices * Eigen::AngleAxisd(unit(random), axis).toRotationMatrix().transpose()).eval();
+      }
+      if (lattice) options.cell_size = 0.125 * (1 + trial % 4 / 2), options.margin_cells = 1;
+    } else {
+      Eigen::Vector3d centre(unit(random), unit(random), unit(random));
+      if (lattice) centre = (centre * 4).array().round() / 4;
+      surface = trial % 3 == 0 ? torus(0.7 + 0.3 * unit(random), 0.2 + 0.2 * unit(random), 16 + trial % 32, 8 + trial % 16, centre)
+                               : sphere(0.5 + unit(random), 4 + trial % 20, 8 + trial % 30, centre);
+      if (lattice && trial % 3 != 0) options.cell_size = 0.25, options.margin_cells = 1;
+    }
+    const double volume = surface_volume(surface);
+    for (int resolution : {3, 4, 7}) {
+      options.resolution = resolution;
+      const SlicedMesh mesh = slice_into_polyhedra(surface, options);
+      EXPECT_NEAR(mesh.mesh.cell_volumes.sum(), volume, 1e-11 * volume) << "trial " << trial << " resolution " << resolution;
+      ++sliced;
+      if (options.cell_size > 0) break;  // the resolution does not change the grid
+    }
+  }
+  std::printf("robustness batch: %d slicings\n", sliced);
+}
+
+TEST(SliceIntoPolyhedra, AFacePiercedAwayFromItsEdgesIsANumericalErrorNamingIt) {
+  // The torus hole crosses the grid plane z = 0.1 inside one face: a face with a hole.
+  const SurfaceMesh surface = torus(1.0, 0.5, 48, 24, Eigen::Vector3d::Zero());
+  SlicingOptions options;
+  options.cell_size = 1.5;
+  options.margin_cells = 0.6;
+  try {
+    slice_into_polyhedra(surface, options);
+    ADD_FAILURE() << "no error";
+  } catch (const NumericalError& error) {
+    EXPECT_NE(std::string(error.what()).find("grid face z = 0.1"), std::string::npos) << error.what();
+  }
 }
 
 TEST(SliceIntoPolyhedra, BadOptionsAreInputErrors) {
