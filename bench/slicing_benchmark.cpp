@@ -1,5 +1,5 @@
 // Hexahedral slicing into polyhedral meshes (issue #15): the bunny (data/, 3.7k
-// triangles) at 16³ and 32³ cells and a finely triangulated sphere (18k triangles) at
+// triangles) at 16³ and 32³ cells and a finely triangulated sphere (36k triangles) at
 // 64³, on all threads. Prints per case the median time of N runs (default 5), the cells
 // by kind and cut pieces per second.
 //

@@ -16,7 +16,7 @@ SlicingGrid SlicingGrid::covering(const Eigen::Vector3d& lower, const Eigen::Vec
     int& count = grid.cells(axis);
     count = std::max(1, static_cast<int>(std::ceil(extent / cell_size - 1e-9)));
     // The last plane must not fall short of the object by a rounding.
-    while (grid.origin(axis) + count * cell_size < upper(axis) + margin_cells * cell_size) ++count;
+    while (grid.origin(axis) + count * cell_size < upper(axis)) ++count;
     grid.planes[axis].resize(grid.cells(axis) + 1);
     for (int i = 0; i <= grid.cells(axis); ++i) grid.planes[axis][i] = grid.origin(axis) + i * cell_size;
   }

@@ -13,10 +13,10 @@
 // cells of another plane is put on it (the surface moves by at most that, far below the
 // 1e-10 volume checks), so near-degenerate crossings cannot round apart along two paths
 // (a grid line through a surface edge, a vertex an ulp off a plane).
-// Measured alternative: CGAL's PMP::clip of the bunny by one cell box with the exact
-// kernel (see the report of issue #15 for the numbers) costs far more per cut cell than
-// this whole slicing per grid, and its box triangulation adds diagonal vertices that the
-// two sides of a grid face do not share.
+// Measured alternative: CGAL's PMP::clip (Epeck, clip_volume) of the bunny (3.7k
+// triangles) by one cell box takes 5.4 ms per cut cell on this machine — about 18 s for
+// the ~3.3k cut cells at 32³, against 0.16 s for this whole slicing (bench_slicing) — and
+// its box triangulation adds diagonal vertices that the two sides of a grid face do not share.
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
