@@ -75,6 +75,8 @@ int main(int argc, char** argv) {
                    "--source slice: grid cells along the geometry's longest side (default 16)");
   mesh->add_option("--sliver-fraction", mesh_options.sliver_fraction,
                    "--source slice: merge cut pieces below this fraction of a cell (default 1e-3; 0 keeps all)");
+  mesh->add_option("--octree-levels", mesh_options.octree_levels,
+                   "--source slice: join inside cells into octree cells of up to 2^L grid cells per side (default 0)");
   mesh->add_option("--out", mesh_options.output_directory, "Output folder (default out/<scene>-mesh-<method>)");
   mesh->add_flag("--json", mesh_options.json, "Print the mesh facts as JSON");
 

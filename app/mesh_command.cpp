@@ -20,20 +20,21 @@ namespace altfem::cli {
 namespace {
 
 nlohmann::json mesh_facts(const PolyhedralMesh& mesh, double geometry_volume) {
-  int tetrahedra = 0, hexahedra = 0, cut = 0, merged = 0;
+  int tetrahedra = 0, hexahedra = 0, cut = 0, merged = 0, coarse = 0;
   for (PolyhedralCellKind kind : mesh.cell_kinds) {
     switch (kind) {
       case PolyhedralCellKind::tetrahedron: ++tetrahedra; break;
       case PolyhedralCellKind::hexahedron: ++hexahedra; break;
       case PolyhedralCellKind::cut: ++cut; break;
       case PolyhedralCellKind::merged: ++merged; break;
+      case PolyhedralCellKind::coarse: ++coarse; break;
     }
   }
   int boundary_faces = 0;
   for (int face = 0; face < mesh.face_count(); ++face) boundary_faces += mesh.is_boundary_face(face);
   const double volume = mesh.cell_volumes.sum();
   return {{"cells",
-           {{"total", mesh.cell_count()}, {"tetrahedra", tetrahedra}, {"hexahedra", hexahedra}, {"cut", cut}, {"merged", merged}}},
+           {{"total", mesh.cell_count()}, {"tetrahedra", tetrahedra}, {"hexahedra", hexahedra}, {"cut", cut}, {"merged", merged}, {"coarse", coarse}}},
           {"faces", {{"interior", mesh.face_count() - boundary_faces}, {"boundary", boundary_faces}}},
           {"nodes", mesh.nodes.rows()},
           {"volume", volume},
@@ -52,6 +53,9 @@ SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const MeshCommand
   SlicingOptions slicing;
   slicing.resolution = options.resolution;
   slicing.sliver_fraction = options.sliver_fraction;
+  if (options.octree_levels < 0 || options.octree_levels > 10)
+    throw InputError("--octree-levels: must be in 0..10, got " + std::to_string(options.octree_levels));
+  slicing.octree_levels = options.octree_levels;
   if (geometry.surface) return slice_into_polyhedra(*geometry.surface, slicing);
   if (geometry.shape) return slice_into_polyhedra(*geometry.shape, slicing);
   return slice_into_polyhedra(boundary_surface(*geometry.mesh).surface, slicing);
@@ -106,6 +110,7 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
                         {"cut_pieces", sliced.cut_pieces},
                         {"grid_cells_split_by_topology", sliced.split_grid_cells},
                         {"merged_slivers", sliced.merged_slivers},
+                        {"octree_coarse_cells", sliced.coarse_cells},
                         {"sliver_fraction", options.sliver_fraction}};
   facts["build_time_s"] = build_seconds;
   facts["file"] = vtu.string();
@@ -113,11 +118,11 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
     std::printf("%s\n", facts.dump(2).c_str());
     return 0;
   }
-  std::printf("%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra, %d cut, %d merged), %lld nodes\n",
+  std::printf("%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra, %d cut, %d merged, %d coarse), %lld nodes\n",
               method.c_str(), scene.name.c_str(), facts["source"].get<std::string>().c_str(),
               facts["cells"]["total"].get<long long>(), facts["cells"]["tetrahedra"].get<int>(),
               facts["cells"]["hexahedra"].get<int>(), facts["cells"]["cut"].get<int>(),
-              facts["cells"]["merged"].get<int>(), facts["nodes"].get<long long>());
+              facts["cells"]["merged"].get<int>(), facts["cells"]["coarse"].get<int>(), facts["nodes"].get<long long>());
   if (slice)
     std::printf("slicing: %d x %d x %d grid of cells %.4g, %d cut pieces, %d grid cells split by topology, "
                 "%d slivers merged\n",

@@ -7,11 +7,7 @@
 
 namespace altfem {
 
-namespace {
-
-/// The mesh with each group of cells (roots of `groups`) as one cell: faces inside a group
-/// are dropped, nodes no face uses are removed, and the geometry is recomputed.
-void rebuild_with_groups(PolyhedralMesh& mesh, DisjointSets& groups) {
+void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind) {
   const int cell_count = mesh.cell_count();
   std::vector<int> new_cell(cell_count, -1), group_size(cell_count, 0);
   int new_count = 0;
@@ -21,7 +17,7 @@ void rebuild_with_groups(PolyhedralMesh& mesh, DisjointSets& groups) {
     const int root = groups.find(cell);
     if (new_cell[root] < 0) {
       new_cell[root] = new_count++;
-      kinds.push_back(group_size[root] > 1 ? PolyhedralCellKind::merged : mesh.cell_kinds[root]);
+      kinds.push_back(group_size[root] > 1 ? grouped_kind : mesh.cell_kinds[root]);
     }
     new_cell[cell] = new_cell[root];
   }
@@ -58,8 +54,6 @@ void rebuild_with_groups(PolyhedralMesh& mesh, DisjointSets& groups) {
   compute_polyhedral_geometry(mesh);
 }
 
-}  // namespace
-
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
   const int cell_count = mesh.cell_count();
   std::vector<int> slivers;
@@ -95,7 +89,7 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
     members[root].clear();
     ++merged;
   }
-  if (merged > 0) rebuild_with_groups(mesh, groups);
+  if (merged > 0) merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
   return merged;
 }
 

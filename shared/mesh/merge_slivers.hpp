@@ -1,7 +1,9 @@
 #pragma once
-// Sliver merging (Kaufmann et al. 2009, §9.4): a cut piece much smaller than a grid cell
-// makes the methods' element matrices ill-conditioned, so it joins the neighbour it
-// shares its largest face with; the union may be non-convex.
+// Merging cells of a polyhedral mesh: sliver merging (Kaufmann et al. 2009, §9.4) — a cut
+// piece much smaller than a grid cell makes the methods' element matrices ill-conditioned,
+// so it joins the neighbour it shares its largest face with; the union may be non-convex —
+// and the groups of octree grading.
+#include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 namespace altfem {
@@ -12,5 +14,10 @@ namespace altfem {
 /// geometry is recomputed. A piece without neighbours (a separate bit of the object) is
 /// kept. Returns the number of cells merged away. Needs the geometry computed.
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
+
+/// The mesh with each group of cells (the sets of `groups`, over the cell indices) as one
+/// cell of kind `grouped_kind` (a cell alone keeps its kind): faces inside a group are
+/// dropped, nodes no face uses are removed, and the geometry is recomputed.
+void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
 
 }  // namespace altfem

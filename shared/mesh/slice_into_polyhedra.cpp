@@ -11,6 +11,7 @@
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/grid_face_region.hpp"
 #include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/octree_grading.hpp"
 #include "shared/mesh/slicing_grid.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
 
@@ -42,6 +43,8 @@ public:
     compute_face_regions();
     return assemble(pieces);
   }
+  /// After run(): per grid cell, the mesh cell of the hexahedron filling it, or −1.
+  const std::vector<int>& grid_hexahedra() const { return grid_hexahedra_; }
 
 private:
   enum class CellState : signed char { outside, inside, cut };
@@ -263,12 +266,14 @@ private:
   std::vector<CellState> state_;
   std::unordered_map<int, std::array<Segments, 6>> face_segments_;
   std::unordered_map<long long, Loops> regions_;  ///< grid faces of cut cells → loops along +e_axis
+  std::vector<int> grid_hexahedra_;
 };
 
 SlicedMesh Slicer::assemble(const SurfacePieces& pieces) {
   SlicedMesh result;
   PolyhedralMesh& mesh = result.mesh;
   std::vector<int> first_mesh_cell(grid_.cell_count(), -1);  // hexahedron, or the first piece of a cut cell
+  grid_hexahedra_.assign(grid_.cell_count(), -1);
   std::vector<int> piece_cell(pieces.polygons.size(), -1);
   // (face key, lower side?) → the mesh cell of each loop on that side
   std::unordered_map<long long, std::vector<int>> loop_cells_lower, loop_cells_upper;
@@ -277,6 +282,7 @@ SlicedMesh Slicer::assemble(const SurfacePieces& pieces) {
     if (state_[cell] == CellState::outside) continue;
     first_mesh_cell[cell] = cell_count;
     if (state_[cell] == CellState::inside) {
+      grid_hexahedra_[cell] = cell_count;
       mesh.cell_kinds.push_back(PolyhedralCellKind::hexahedron);
       ++cell_count;
       ++result.hexahedra;
@@ -382,6 +388,7 @@ void check_options(const SlicingOptions& options) {
   if (!(options.margin_cells >= 0)) throw InputError("slicing: margin must be >= 0 cells");
   if (!(options.sliver_fraction >= 0 && options.sliver_fraction < 1))
     throw InputError("slicing: sliver fraction must be in [0, 1)");
+  if (options.octree_levels < 0 || options.octree_levels > 10) throw InputError("slicing: octree levels must be in 0..10");
 }
 
 double cell_size_for(const SlicingOptions& options, const Eigen::Vector3d& lower, const Eigen::Vector3d& upper) {
@@ -395,7 +402,10 @@ SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions
   if (surface.triangles.rows() == 0) throw InputError("slicing: the surface has no triangles");
   const Eigen::Vector3d lower = surface.vertices.colwise().minCoeff(), upper = surface.vertices.colwise().maxCoeff();
   const SlicingGrid grid = SlicingGrid::covering(lower, upper, cell_size_for(options, lower, upper), options.margin_cells);
-  SlicedMesh result = Slicer(surface, grid).run();
+  Slicer slicer(surface, grid);
+  SlicedMesh result = slicer.run();
+  if (options.octree_levels > 0)
+    result.coarse_cells = grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
   if (options.sliver_fraction > 0)
     result.merged_slivers = merge_slivers(result.mesh, options.sliver_fraction * std::pow(grid.cell_size, 3));
   return result;

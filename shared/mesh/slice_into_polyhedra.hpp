@@ -5,7 +5,8 @@
 // the exact intersection of the cell with the object, one polyhedron per connected piece
 // (so a thin slot keeps its two sides apart), cells outside are dropped. Interior faces
 // are computed once per grid face, so both cells see the same polygon and nodes.
-// Pieces below a volume fraction are merged into a neighbour (Kaufmann et al. 2009, §9.4).
+// Pieces below a volume fraction are merged into a neighbour (Kaufmann et al. 2009, §9.4);
+// optionally the inside is coarsened by an octree without hanging nodes (octree_grading).
 #include "shared/geometry/analytic_shape.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -19,6 +20,9 @@ struct SlicingOptions {
   /// A cut piece whose volume is below this fraction of a full cell is merged into the
   /// neighbour it shares its largest face with; 0 keeps every piece.
   double sliver_fraction = 1e-3;
+  /// Octree grading (Martin et al. 2008, Fig. 4): grid cells wholly inside, away from the
+  /// surface, are joined into cells of up to 2^octree_levels grid cells per side; 0 keeps the grid.
+  int octree_levels = 0;
 };
 
 struct SlicedMesh {
@@ -29,6 +33,7 @@ struct SlicedMesh {
   int cut_pieces = 0;         ///< connected pieces of cut grid cells, before merging
   int split_grid_cells = 0;   ///< cut grid cells with more than one piece
   int merged_slivers = 0;     ///< pieces merged into a neighbour
+  int coarse_cells = 0;       ///< octree cells of more than one grid cell
 };
 
 /// Slices the closed, outward-oriented surface. Throws InputError for bad options and

@@ -46,8 +46,8 @@ if facts["method"] in ("dg", "harmonic"):
         problems.append("no cell data 'kind'")
     else:
         kinds = set(np.concatenate([np.ravel(block) for block in cell_data["kind"]]).astype(int))
-        if not kinds <= {0, 1, 2, 3}:
-            problems.append(f"cell data 'kind' has values {kinds}, expected 0..3")
+        if not kinds <= {0, 1, 2, 3, 4}:
+            problems.append(f"cell data 'kind' has values {kinds}, expected 0..4")
 for problem in problems:
     print("check_mesh_output:", problem)
 sys.exit(1 if problems else 0)

@@ -58,6 +58,19 @@ TEST(MeshCommand, SlicedBunnyIsPolyhedraWithTheSurfaceVolume) {
             1e-3 * std::pow(facts["slicing"]["cell_size"].get<double>(), 3) * (1 - 1e-12));
 }
 
+TEST(MeshCommand, OctreeGradedCubeIsWrittenWithCoarseCells) {
+  // The Gmsh cube sliced through its boundary surface, inside joined into octree cells.
+  const nlohmann::json facts = mesh_facts_checked_by_meshio(
+      "scenes/cube_msh.json", "dg", {"--source", "slice", "--resolution", "24", "--octree-levels", "2"});
+  ASSERT_FALSE(facts.is_null());
+  EXPECT_GT(facts["cells"]["coarse"].get<int>(), 0);
+  EXPECT_EQ(facts["cells"]["coarse"], facts["slicing"]["octree_coarse_cells"]);
+  EXPECT_LT(std::abs(facts["volume_relative_difference"].get<double>()), 1e-12);
+  // A level-2 cell holds 64 grid cells.
+  EXPECT_NEAR(facts["largest_cell_volume"].get<double>(), 64 * std::pow(facts["slicing"]["cell_size"].get<double>(), 3),
+              1e-12);
+}
+
 TEST(MeshCommand, FcmAndUnbuiltSourcesAreBadInputWithOneLine) {
   for (const auto& arguments : std::vector<std::vector<std::string>>{
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fcm"},

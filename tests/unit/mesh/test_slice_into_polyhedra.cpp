@@ -330,6 +330,46 @@ TEST(SliceIntoPolyhedra, AFacePiercedAwayFromItsEdgesIsANumericalErrorNamingIt) 
   }
 }
 
+TEST(SliceIntoPolyhedra, OctreeGradingIsConformingAndTwoToOneBalanced) {
+  // Martin et al. 2008, Fig. 4: coarse cells inside, their faces carry the finer nodes.
+  const SurfaceMesh surface = sphere(0.8, 24, 48, Eigen::Vector3d(0.0123, -0.0311, 0.0071));
+  SlicingOptions options;
+  options.resolution = 40;  // level-2 cells need 4 + 2 × 8 cells of inside across
+  options.sliver_fraction = 0;
+  const SlicedMesh uniform = slice_into_polyhedra(surface, options);
+  options.octree_levels = 3;
+  const SlicedMesh graded = slice_into_polyhedra(surface, options);
+  EXPECT_GT(graded.coarse_cells, 0);
+  EXPECT_LT(graded.mesh.cell_count(), uniform.mesh.cell_count() - 7 * graded.coarse_cells + 1);
+  // Every edge of every cell used once each way: no hanging node on any cell's boundary.
+  expect_valid_slicing(graded.mesh, surface_volume(surface), surface_area(surface), 1e-10);
+  // Levels from the volumes ((2^L h)^3 for coarse cells); face neighbours within one level.
+  const double cell_volume = std::pow(graded.cell_size, 3);
+  auto level = [&](int cell) {
+    return graded.mesh.cell_kinds[cell] == PolyhedralCellKind::coarse
+               ? static_cast<int>(std::lround(std::log2(graded.mesh.cell_volumes(cell) / cell_volume) / 3))
+               : 0;
+  };
+  int largest_level = 0;
+  for (int cell = 0; cell < graded.mesh.cell_count(); ++cell) {
+    largest_level = std::max(largest_level, level(cell));
+    if (graded.mesh.cell_kinds[cell] == PolyhedralCellKind::coarse) {
+      EXPECT_NEAR(graded.mesh.cell_volumes(cell), std::pow(2.0, 3 * level(cell)) * cell_volume, 1e-12 * cell_volume);
+    }
+  }
+  EXPECT_GE(largest_level, 2);
+  for (int face = 0; face < graded.mesh.face_count(); ++face) {
+    if (graded.mesh.is_boundary_face(face)) continue;
+    EXPECT_LE(std::abs(level(graded.mesh.face_cells(face, 0)) - level(graded.mesh.face_cells(face, 1))), 1)
+        << "face " << face;
+  }
+  // Every node is used by some face.
+  std::vector<bool> used(graded.mesh.nodes.rows(), false);
+  for (const auto& loop : graded.mesh.faces)
+    for (int node : loop) used[node] = true;
+  EXPECT_TRUE(std::all_of(used.begin(), used.end(), [](bool value) { return value; }));
+}
+
 TEST(SliceIntoPolyhedra, BadOptionsAreInputErrors) {
   const SurfaceMesh box = box_surface(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 1, 1));
   SlicingOptions options;
