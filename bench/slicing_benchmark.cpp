@@ -1,7 +1,7 @@
 // Hexahedral slicing into polyhedral meshes (issue #15): the bunny (data/, 3.7k
 // triangles) at 16³ and 32³ cells and a finely triangulated sphere (36k triangles) at
-// 64³, on all threads. Prints per case the median time of N runs (default 5), the cells
-// by kind and cut pieces per second.
+// 64³ (uniform, and octree-graded with 3 levels), on all threads. Prints per case the
+// median time of N runs (default 5), the cells by kind and cut pieces per second.
 //
 //   bench_slicing [--repetitions N]
 //
@@ -52,9 +52,10 @@ SurfaceMesh uv_sphere(int rings) {
   return sphere;
 }
 
-void run_case(const char* name, const SurfaceMesh& surface, int resolution, int repetitions) {
+void run_case(const char* name, const SurfaceMesh& surface, int resolution, int octree_levels, int repetitions) {
   SlicingOptions options;
   options.resolution = resolution;
+  options.octree_levels = octree_levels;
   std::vector<double> seconds;
   SlicedMesh sliced;
   for (int repetition = 0; repetition < repetitions; ++repetition) {
@@ -63,10 +64,10 @@ void run_case(const char* name, const SurfaceMesh& surface, int resolution, int 
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   const double time = bench::median(seconds);
-  std::printf("%-8s %3d^3  median %8.4f s  cells %7d (hexahedra %6d, cut pieces %6d, split grid cells %4d, "
-              "merged slivers %4d)  %9.0f cut pieces/s\n",
-              name, resolution, time, sliced.mesh.cell_count(), sliced.hexahedra, sliced.cut_pieces,
-              sliced.split_grid_cells, sliced.merged_slivers, sliced.cut_pieces / time);
+  std::printf("%-8s %3d^3 octree %d  median %8.4f s  cells %7d (grid hexahedra %6d, cut pieces %6d, split grid "
+              "cells %4d, merged slivers %4d, octree cells %5d)  %9.0f cut pieces/s\n",
+              name, resolution, octree_levels, time, sliced.mesh.cell_count(), sliced.hexahedra, sliced.cut_pieces,
+              sliced.split_grid_cells, sliced.merged_slivers, sliced.coarse_cells, sliced.cut_pieces / time);
 }
 
 }  // namespace
@@ -76,9 +77,10 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i)
     if (std::strcmp(argv[i], "--repetitions") == 0 && i + 1 < argc) repetitions = std::atoi(argv[++i]);
   const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
-  run_case("bunny", bunny, 16, repetitions);
-  run_case("bunny", bunny, 32, repetitions);
+  run_case("bunny", bunny, 16, 0, repetitions);
+  run_case("bunny", bunny, 32, 0, repetitions);
   const SurfaceMesh sphere = uv_sphere(96);
-  run_case("sphere", sphere, 64, repetitions);
+  run_case("sphere", sphere, 64, 0, repetitions);
+  run_case("sphere", sphere, 64, 3, repetitions);
   return 0;
 }
