@@ -15,42 +15,11 @@
 
 #include "bench/median.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
+#include "tests/unit/surfaces.hpp"
 
 namespace {
 
 using namespace altfem;
-
-/// A latitude–longitude sphere of radius 1, slightly off the origin (so grid planes do
-/// not meet its poles): `rings` × 2·`rings` quads, poles as fans.
-SurfaceMesh uv_sphere(int rings) {
-  const double pi = 3.14159265358979323846;
-  const int segments = 2 * rings, count = 2 + (rings - 1) * segments;
-  const Eigen::Vector3d centre(0.0123, -0.0311, 0.0071);
-  SurfaceMesh sphere;
-  sphere.vertices.resize(count, 3);
-  sphere.vertices.row(0) = (centre - Eigen::Vector3d::UnitZ()).transpose();
-  sphere.vertices.row(count - 1) = (centre + Eigen::Vector3d::UnitZ()).transpose();
-  auto ring_vertex = [&](int r, int s) { return 1 + (r - 1) * segments + s % segments; };
-  for (int r = 1; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      const double polar = pi * r / rings, azimuth = 2 * pi * s / segments;
-      sphere.vertices.row(ring_vertex(r, s)) =
-          (centre + Eigen::Vector3d(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), -std::cos(polar)))
-              .transpose();
-    }
-  std::vector<Eigen::Vector3i> triangles;
-  for (int s = 0; s < segments; ++s) {
-    triangles.emplace_back(0, ring_vertex(1, s + 1), ring_vertex(1, s));
-    triangles.emplace_back(count - 1, ring_vertex(rings - 1, s), ring_vertex(rings - 1, s + 1));
-    for (int r = 1; r < rings - 1; ++r) {
-      triangles.emplace_back(ring_vertex(r, s), ring_vertex(r, s + 1), ring_vertex(r + 1, s + 1));
-      triangles.emplace_back(ring_vertex(r, s), ring_vertex(r + 1, s + 1), ring_vertex(r + 1, s));
-    }
-  }
-  sphere.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
-  for (std::size_t t = 0; t < triangles.size(); ++t) sphere.triangles.row(t) = triangles[t].transpose();
-  return sphere;
-}
 
 void run_case(const char* name, const SurfaceMesh& surface, int resolution, int octree_levels, int repetitions) {
   SlicingOptions options;
@@ -79,7 +48,8 @@ int main(int argc, char** argv) {
   const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
   run_case("bunny", bunny, 16, 0, repetitions);
   run_case("bunny", bunny, 32, 0, repetitions);
-  const SurfaceMesh sphere = uv_sphere(96);
+  // Slightly off the origin, so grid planes do not meet its poles.
+  const SurfaceMesh sphere = test::sphere(1.0, 96, 192, Eigen::Vector3d(0.0123, -0.0311, 0.0071));
   run_case("sphere", sphere, 64, 0, repetitions);
   run_case("sphere", sphere, 64, 3, repetitions);
   return 0;
