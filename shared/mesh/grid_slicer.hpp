@@ -27,7 +27,8 @@ public:
 
   GridSlicer(const SurfaceMesh& surface, const SlicingGrid& grid) : surface_(surface), grid_(grid) {}
 
-  /// The sliced mesh: hexahedra, one cell per connected piece of each cut grid cell.
+  /// The sliced mesh: hexahedra, one cell per connected piece of each cut grid cell; its
+  /// geometry arrays are not computed yet.
   SlicedMesh run();
   /// After run(): per grid cell, the mesh cell of the hexahedron filling it, or −1.
   const std::vector<int>& grid_hexahedra() const { return grid_hexahedra_; }

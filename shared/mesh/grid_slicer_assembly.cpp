@@ -115,7 +115,6 @@ SlicedMesh GridSlicer::assemble(const SurfacePieces& pieces) {
   const auto& points = nodes_.points();
   mesh.nodes.resize(static_cast<Eigen::Index>(points.size()), 3);
   for (std::size_t n = 0; n < points.size(); ++n) mesh.nodes.row(n) = points[n];
-  compute_polyhedral_geometry(mesh);
   result.grid_cells = grid_.cells;
   result.cell_size = grid_.cell_size;
   return result;

@@ -23,24 +23,13 @@ void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCel
   }
   std::vector<std::vector<int>> faces;
   std::vector<std::array<int, 2>> face_cells;
-  std::vector<int> node_map(mesh.nodes.rows(), -1);
-  int node_count = 0;
   for (int face = 0; face < mesh.face_count(); ++face) {
     const int owner = new_cell[mesh.face_cells(face, 0)];
     const int neighbour = mesh.face_cells(face, 1) < 0 ? -1 : new_cell[mesh.face_cells(face, 1)];
     if (owner == neighbour) continue;
     faces.push_back(mesh.faces[face]);
-    for (int& node : faces.back()) {
-      if (node_map[node] < 0) node_map[node] = node_count++;
-      node = node_map[node];
-    }
     face_cells.push_back({owner, neighbour});
   }
-  Eigen::MatrixXd nodes(node_count, 3);
-  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
-    if (node_map[node] >= 0) nodes.row(node_map[node]) = mesh.nodes.row(node);
-
-  mesh.nodes = std::move(nodes);
   mesh.faces = std::move(faces);
   mesh.cell_kinds = std::move(kinds);
   mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
@@ -51,7 +40,21 @@ void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCel
     for (int side : face_cells[f])
       if (side >= 0) mesh.cell_faces[side].push_back(static_cast<int>(f));
   }
-  compute_polyhedral_geometry(mesh);
+  drop_unused_nodes(mesh);
+}
+
+void drop_unused_nodes(PolyhedralMesh& mesh) {
+  std::vector<int> node_map(mesh.nodes.rows(), -1);
+  int node_count = 0;
+  for (auto& loop : mesh.faces)
+    for (int& node : loop) {
+      if (node_map[node] < 0) node_map[node] = node_count++;
+      node = node_map[node];
+    }
+  Eigen::MatrixXd nodes(node_count, 3);
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
+    if (node_map[node] >= 0) nodes.row(node_map[node]) = mesh.nodes.row(node);
+  mesh.nodes = std::move(nodes);
 }
 
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
@@ -89,7 +92,10 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
     members[root].clear();
     ++merged;
   }
-  if (merged > 0) merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
+  if (merged > 0) {
+    merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
+    compute_polyhedral_geometry(mesh);
+  }
   return merged;
 }
 

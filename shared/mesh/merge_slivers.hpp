@@ -17,7 +17,11 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
 
 /// The mesh with each group of cells (the sets of `groups`, over the cell indices) as one
 /// cell of kind `grouped_kind` (a cell alone keeps its kind): faces inside a group are
-/// dropped, nodes no face uses are removed, and the geometry is recomputed.
+/// dropped and nodes no face uses are removed. The geometry arrays are left stale: call
+/// compute_polyhedral_geometry.
 void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
+
+/// Removes the nodes no face uses, renumbering the faces' loops.
+void drop_unused_nodes(PolyhedralMesh& mesh);
 
 }  // namespace altfem

@@ -45,10 +45,13 @@ private:
   std::vector<long long> sums_;
 };
 
-/// The axis of an axis-aligned face (its unit normal's non-zero component), or −1.
+/// The axis of a face lying in a plane x_axis = const, or −1.
 int face_axis(const PolyhedralMesh& mesh, int face) {
+  const auto& loop = mesh.faces[face];
   for (int axis = 0; axis < 3; ++axis)
-    if (std::abs(mesh.face_normals(face, axis)) == 1.0) return axis;
+    if (std::all_of(loop.begin(), loop.end(),
+                    [&](int node) { return mesh.nodes(node, axis) == mesh.nodes(loop[0], axis); }))
+      return axis;
   return -1;
 }
 
@@ -180,10 +183,7 @@ int grade_interior_hexahedra(PolyhedralMesh& mesh, const Eigen::Vector3i& grid_c
   if (coarse_cells == 0) return 0;
   merge_cell_groups(mesh, groups, PolyhedralCellKind::coarse);
   join_coplanar_faces(mesh);
-  // Grouping every cell with itself drops the nodes the joined faces no longer use and
-  // recomputes the geometry.
-  DisjointSets alone(mesh.cell_count());
-  merge_cell_groups(mesh, alone, PolyhedralCellKind::coarse);
+  drop_unused_nodes(mesh);
   return coarse_cells;
 }
 

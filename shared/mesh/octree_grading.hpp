@@ -17,7 +17,8 @@ namespace altfem {
 /// 2^(L+1) cells of it is such a hexahedron; the largest such blocks are taken, which keeps
 /// neighbouring cells within one level of each other. Coplanar faces between the same two
 /// cells become one polygon, and a node left on a straight edge of every face that uses it
-/// is removed; the geometry is recomputed. Returns the number of coarse cells.
+/// is removed. Needs no geometry and leaves it stale (call compute_polyhedral_geometry).
+/// Returns the number of coarse cells.
 int grade_interior_hexahedra(PolyhedralMesh& mesh, const Eigen::Vector3i& grid_cells,
                              const std::vector<int>& grid_hexahedra, int max_level);
 

@@ -37,6 +37,7 @@ SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions
   SlicedMesh result = slicer.run();
   if (options.octree_levels > 0)
     result.coarse_cells = grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
+  compute_polyhedral_geometry(result.mesh);
   if (options.sliver_fraction > 0)
     result.merged_slivers = merge_slivers(result.mesh, options.sliver_fraction * std::pow(grid.cell_size, 3));
   return result;
