@@ -24,15 +24,27 @@ struct GridFaceRegion {
   /// Node loops, counter-clockwise seen from outside the cell; empty with `undetermined`
   /// when the surface does not cross the face (the face is then wholly inside or outside).
   std::vector<std::vector<int>> loops;
+  /// Clockwise loops inside `loops`: where the surface pierces the face without reaching
+  /// its edges (split_holes makes the region simple polygons).
+  std::vector<std::vector<int>> holes;
   bool undetermined = false;
 };
 
 /// The region from `segments` (#segments pairs {from, to} of node indices into `points`:
 /// the cell's open surface edges on this face, reversed). Throws NumericalError naming the
-/// face when the segments do not form chains ending on the perimeter, or when the region
-/// has a hole (the surface pierces the face without reaching its edges: change the
-/// resolution or the margin).
+/// face when the segments do not form chains ending on the perimeter.
 GridFaceRegion grid_face_region(const GridFaceView& face, const std::vector<std::array<int, 2>>& segments,
                                 const std::vector<Eigen::Vector3d>& points);
+
+/// Simple polygons covering `outer` (loops counter-clockwise about +e_axis) minus `holes`
+/// (clockwise, each inside one outer loop), without new nodes: each hole is joined to its
+/// outer loop by two bridges between existing vertices — from its vertex of largest
+/// coordinate u = x_(axis+1) along +u and from its vertex of smallest u along −u, to a
+/// vertex they see (Eberly's hole bridging) — which cut the ring into two simple polygons
+/// that share the bridges. Throws NumericalError naming `face_name` when a bridge would
+/// meet another hole first.
+std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer, const std::vector<std::vector<int>>& holes,
+                                          const std::vector<Eigen::Vector3d>& points, int axis,
+                                          const std::string& face_name);
 
 }  // namespace altfem

@@ -81,7 +81,7 @@ Eigen::Vector3d GridSlicer::outward_normal(int local_face) {
   return (local_face % 2 ? 1.0 : -1.0) * Eigen::Vector3d::Unit(local_face / 2);
 }
 
-GridSlicer::Loops GridSlicer::region_from(const GridFace& face, int cell, bool cell_is_lower, bool& undetermined) {
+GridFaceRegion GridSlicer::region_from(const GridFace& face, int cell, bool cell_is_lower) {
   GridFaceView view{face.axis, corners_up(face), face_name(face)};
   if (!cell_is_lower) std::reverse(view.corners.begin(), view.corners.end());
   const auto found = face_segments_.find(cell);
@@ -89,10 +89,11 @@ GridSlicer::Loops GridSlicer::region_from(const GridFace& face, int cell, bool c
   const Segments& segments =
       found == face_segments_.end() ? none : found->second[2 * face.axis + (cell_is_lower ? 1 : 0)];
   GridFaceRegion region = grid_face_region(view, segments, nodes_.points());
-  undetermined = region.undetermined;
-  if (!cell_is_lower)
+  if (!cell_is_lower) {
     for (auto& loop : region.loops) std::reverse(loop.begin(), loop.end());
-  return std::move(region.loops);
+    for (auto& loop : region.holes) std::reverse(loop.begin(), loop.end());
+  }
+  return region;
 }
 
 GridSlicer::Loops GridSlicer::canonical(Loops loops) {
@@ -114,16 +115,19 @@ void GridSlicer::compute_face_regions() {
         if (regions_.count(key)) continue;
         const int lower = lower_cell(face), above = upper_cell(face);
         const bool lower_cut = lower >= 0 && is_cut(lower), upper_cut = above >= 0 && is_cut(above);
-        bool undetermined = false;
-        Loops loops = region_from(face, lower_cut ? lower : above, lower_cut, undetermined);
+        GridFaceRegion region = region_from(face, lower_cut ? lower : above, lower_cut);
         if (lower_cut && upper_cut) {
-          bool other_undetermined = false;
-          const Loops other = region_from(face, above, false, other_undetermined);
-          if (other_undetermined != undetermined || canonical(other) != canonical(loops))
+          const GridFaceRegion other = region_from(face, above, false);
+          if (other.undetermined != region.undetermined || canonical(other.loops) != canonical(region.loops) ||
+              canonical(other.holes) != canonical(region.holes))
             throw NumericalError("slicing: " + face_name(face) +
                                  ": the surface lies in this grid plane with material on both sides; "
                                  "change the resolution or the margin");
         }
+        const bool undetermined = region.undetermined;
+        Loops loops = region.holes.empty()
+                          ? std::move(region.loops)
+                          : split_holes(std::move(region.loops), region.holes, nodes_.points(), axis, face_name(face));
         if (undetermined)
           undetermined_faces.push_back({face, lower_cut && upper_cut, lower_cut ? -1.0 : 1.0});
         else

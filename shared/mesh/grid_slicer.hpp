@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shared/mesh/grid_face_region.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/slicing_grid.hpp"
 
@@ -81,8 +82,9 @@ private:
   void collect_open_edges(const SurfacePieces& pieces);
   static long long edge_key(int a, int b);
   static Eigen::Vector3d outward_normal(int local_face);
-  /// The region of one grid face from one of its cut cells, as loops oriented along +e_axis.
-  Loops region_from(const GridFace& face, int cell, bool cell_is_lower, bool& undetermined);
+  /// The region of one grid face from one of its cut cells, its loops and holes oriented
+  /// along +e_axis.
+  GridFaceRegion region_from(const GridFace& face, int cell, bool cell_is_lower);
   static Loops canonical(Loops loops);
   /// Every grid face of a cut cell gets its loops (oriented along +e_axis) once.
   void compute_face_regions();

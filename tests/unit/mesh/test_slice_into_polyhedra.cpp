@@ -160,11 +160,14 @@ TEST(SliceIntoPolyhedra, TwoBoxesInOneGridCellGiveTwoPieces) {
 
 TEST(SliceIntoPolyhedra, SlicedBunnyHasTheSurfaceVolume) {
   const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
-  SlicingOptions options;
-  options.resolution = 8;
-  options.sliver_fraction = 0;
-  const SlicedMesh sliced = slice_into_polyhedra(bunny, options);
-  expect_valid_slicing(sliced.mesh, surface_volume(bunny), surface_area(bunny), 1e-9);
+  // At 24³ with half a cell of margin the bunny pierces a grid face in a hole.
+  for (int resolution : {8, 24}) {
+    SlicingOptions options;
+    options.resolution = resolution;
+    options.sliver_fraction = 0;
+    const SlicedMesh sliced = slice_into_polyhedra(bunny, options);
+    expect_valid_slicing(sliced.mesh, surface_volume(bunny), surface_area(bunny), 1e-9);
+  }
 }
 
 TEST(SliceIntoPolyhedra, SliversAreMergedIntoTheirLargestFaceNeighbour) {
@@ -215,17 +218,18 @@ TEST(SliceIntoPolyhedra, CsgShapeIsSlicedThroughItsMesh3Surface) {
 TEST(SliceIntoPolyhedra, RobustnessBatchOfDegenerateSurfacesKeepsTheVolume) {
   // Boxes with faces exactly on grid planes (lattice corners, cells of 1/8 or 1/4), jittered
   // and rotated boxes, spheres and tori centred on lattice points (meridians in grid planes,
-  // grid lines through surface edges, poles on grid lines), several resolutions and margins.
+  // grid lines through surface edges, poles on grid lines), several resolutions and margins:
+  // every slicing closed cell by cell with the enclosed volume.
   std::mt19937 random(42);
   std::uniform_real_distribution<double> unit(0, 1);
   int sliced = 0;
-  for (int trial = 0; trial < 80; ++trial) {
+  for (int trial = 0; trial < 40; ++trial) {
     SurfaceMesh surface;
     SlicingOptions options;
     options.margin_cells = trial % 3 == 0 ? 0.0 : 0.5;
     options.sliver_fraction = trial % 5 == 0 ? 1e-3 : 0.0;
     const bool lattice = trial % 2 == 0;
-    if (trial < 40) {
+    if (trial < 20) {
       Eigen::Vector3d low, high;
       for (int axis = 0; axis < 3; ++axis) {
         double a = unit(random), b = unit(random);
@@ -247,10 +251,11 @@ TEST(SliceIntoPolyhedra, RobustnessBatchOfDegenerateSurfacesKeepsTheVolume) {
       if (lattice && trial % 3 != 0) options.cell_size = 0.25, options.margin_cells = 1;
     }
     const double volume = surface_volume(surface);
-    for (int resolution : {3, 4, 7}) {
+    for (int resolution : {3, 7}) {
       options.resolution = resolution;
       const SlicedMesh mesh = slice_into_polyhedra(surface, options);
-      EXPECT_NEAR(mesh.mesh.cell_volumes.sum(), volume, 1e-11 * volume) << "trial " << trial << " resolution " << resolution;
+      SCOPED_TRACE("trial " + std::to_string(trial) + " resolution " + std::to_string(resolution));
+      expect_valid_slicing(mesh.mesh, volume, surface_area(surface), 1e-11);
       ++sliced;
       if (options.cell_size > 0) break;  // the resolution does not change the grid
     }
@@ -258,18 +263,25 @@ TEST(SliceIntoPolyhedra, RobustnessBatchOfDegenerateSurfacesKeepsTheVolume) {
   std::printf("robustness batch: %d slicings\n", sliced);
 }
 
-TEST(SliceIntoPolyhedra, AFacePiercedAwayFromItsEdgesIsANumericalErrorNamingIt) {
-  // The torus hole crosses the grid plane z = 0.1 inside one face: a face with a hole.
+TEST(SliceIntoPolyhedra, AFacePiercedAwayFromItsEdgesIsSplitIntoSimplePolygons) {
+  // The torus hole crosses the grid plane z = 0.1 inside one face: that face's region is a
+  // square with a hole, bridged into two simple polygons.
   const SurfaceMesh surface = torus(1.0, 0.5, 48, 24, Eigen::Vector3d::Zero());
   SlicingOptions options;
   options.cell_size = 1.5;
   options.margin_cells = 0.6;
-  try {
-    slice_into_polyhedra(surface, options);
-    ADD_FAILURE() << "no error";
-  } catch (const NumericalError& error) {
-    EXPECT_NE(std::string(error.what()).find("grid face z = 0.1"), std::string::npos) << error.what();
+  options.sliver_fraction = 0;
+  const SlicedMesh sliced = slice_into_polyhedra(surface, options);
+  int faces_in_plane = 0;
+  for (int face = 0; face < sliced.mesh.face_count(); ++face) {
+    const auto& loop = sliced.mesh.faces[face];
+    faces_in_plane += std::all_of(loop.begin(), loop.end(), [&](int node) {
+      return std::abs(sliced.mesh.nodes(node, 2) - 0.1) < 1e-15 && std::abs(sliced.mesh.nodes(node, 0)) < 0.9 &&
+             std::abs(sliced.mesh.nodes(node, 1)) < 0.9;
+    });
   }
+  EXPECT_EQ(faces_in_plane, 2);  // the holed face as two polygons
+  expect_valid_slicing(sliced.mesh, surface_volume(surface), surface_area(surface), 1e-10);
 }
 
 TEST(SliceIntoPolyhedra, OctreeGradingIsConformingAndTwoToOneBalanced) {
