@@ -10,6 +10,7 @@
 namespace altfem {
 
 SlicedMesh GridSlicer::run() {
+  grid_node_ids_.assign(static_cast<std::size_t>((grid_.cells.array() + 1).prod()), -1);
   const SurfacePieces pieces = split_surface_by_grid(surface_, grid_, nodes_);
   cell_pieces_.resize(grid_.cell_count());
   for (std::size_t p = 0; p < pieces.polygons.size(); ++p) cell_pieces_[pieces.cells[p]].push_back(static_cast<int>(p));

@@ -65,7 +65,13 @@ private:
            " at grid node (" + std::to_string(face.node(0)) + ", " + std::to_string(face.node(1)) + ", " +
            std::to_string(face.node(2)) + ")";
   }
-  int grid_node(const Eigen::Vector3i& node) { return nodes_.node(grid_.grid_node(node)); }
+  /// The node at a grid point, registered on first use (cached: faces ask for corners often).
+  int grid_node(const Eigen::Vector3i& node) {
+    const Eigen::Vector3i points = grid_.cells.array() + 1;
+    int& id = grid_node_ids_[node(0) + points(0) * (node(1) + static_cast<std::size_t>(points(1)) * node(2))];
+    if (id < 0) id = nodes_.node(grid_.grid_node(node));
+    return id;
+  }
 
   /// The corners counter-clockwise seen along +e_axis (outward for the lower cell).
   std::array<int, 4> corners_up(const GridFace& face) {
@@ -103,6 +109,7 @@ private:
   std::unordered_map<int, std::array<Segments, 6>> face_segments_;
   std::unordered_map<long long, Loops> regions_;  ///< grid faces of cut cells → loops along +e_axis
   std::vector<int> grid_hexahedra_;
+  std::vector<int> grid_node_ids_;  ///< per grid point, its node or −1
 };
 
 }  // namespace altfem
