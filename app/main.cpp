@@ -77,7 +77,8 @@ int main(int argc, char** argv) {
                    "--source slice: merge cut pieces below this fraction of a cell (default 1e-3; 0 keeps all)");
   mesh->add_option("--octree-levels", mesh_options.octree_levels,
                    "--source slice: join inside cells into octree cells of up to 2^L grid cells per side (default 0)");
-  mesh->add_option("--out", mesh_options.output_directory, "Output folder (default out/<scene>-mesh-<method>)");
+  mesh->add_option("--out", mesh_options.output_directory,
+                   "Output folder for mesh.vtu (default out/<scene>-mesh-<method>), or a file ending in .vtu");
   mesh->add_flag("--json", mesh_options.json, "Print the mesh facts as JSON");
 
   try {

@@ -93,11 +93,13 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   const PolyhedralMesh& mesh = sliced.mesh;
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  // --out DIR writes DIR/mesh.vtu; --out FILE.vtu writes that file.
   const std::filesystem::path out = options.output_directory.empty()
                                         ? std::filesystem::path("out") / (scene.name + "-mesh-" + method)
                                         : options.output_directory;
-  std::filesystem::create_directories(out);
-  const std::filesystem::path vtu = out / "mesh.vtu";
+  const bool out_is_file = out.extension() == ".vtu";
+  const std::filesystem::path vtu = out_is_file ? out : out / "mesh.vtu";
+  if (!vtu.parent_path().empty()) std::filesystem::create_directories(vtu.parent_path());
   write_vtu(vtu, polyhedral ? grid_from_polyhedral_mesh(mesh) : grid_from_volume_mesh(volume_mesh));
 
   nlohmann::json facts = mesh_facts(mesh, geometry.volume);

@@ -58,6 +58,15 @@ TEST(MeshCommand, SlicedBunnyIsPolyhedraWithTheSurfaceVolume) {
             1e-3 * std::pow(facts["slicing"]["cell_size"].get<double>(), 3) * (1 - 1e-12));
 }
 
+TEST(MeshCommand, OutEndingInVtuIsTheFileWritten) {
+  const auto out = fresh_directory("mesh_file") / "sliced.vtu";
+  const CommandResult result = run_altfem({"mesh", source_path("scenes/bunny.json").string(), "--method", "dg",
+                                           "--source", "slice", "--resolution", "4", "--out", out.string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  EXPECT_EQ(nlohmann::json::parse(result.out)["file"].get<std::string>(), out.string());
+  EXPECT_TRUE(std::filesystem::is_regular_file(out));
+}
+
 TEST(MeshCommand, OctreeGradedCubeIsWrittenWithCoarseCells) {
   // The Gmsh cube sliced through its boundary surface, inside joined into octree cells.
   const nlohmann::json facts = mesh_facts_checked_by_meshio(
