@@ -2,7 +2,8 @@
 // grid's hexahedra; a sphere, a torus and the bunny give cells whose volumes sum to the
 // enclosed volume, each cell closed (every edge used once each way, Σ area·normal = 0),
 // interior faces shared by exactly two cells; two boxes closer than a cell stay apart;
-// slivers are merged into their neighbours; a CSG shape goes through its Mesh_3 surface; a
+// a U-shape keeps its arms apart; slivers are merged into their neighbours; a CSG shape
+// goes through its Mesh_3 surface; a
 // batch of degenerate surfaces keeps the volume; octree grading is conforming and 2:1.
 #include <gtest/gtest.h>
 
@@ -156,6 +157,60 @@ TEST(SliceIntoPolyhedra, TwoBoxesInOneGridCellGiveTwoPieces) {
       }
     EXPECT_FALSE(on_left && on_right) << "cell " << cell;
   }
+}
+
+/// A U-shaped prism, y ∈ [0, 1]: bottom [0, 3] × z [0, 1], arms x ∈ [0, 1.45] and
+/// [1.55, 3] up to z = 3, so its gap (0.1 wide) is thinner than a cell; volume 8.8.
+SurfaceMesh u_shape() {
+  const std::vector<Eigen::Vector2d> outline{{0, 0}, {3, 0}, {3, 3}, {1.55, 3}, {1.55, 1}, {1.45, 1}, {1.45, 3}, {0, 3}};
+  // The outline's triangles without new vertices; counter-clockwise in (x, z), i.e. about −y.
+  const std::vector<Eigen::Vector3i> cap{{0, 1, 4}, {0, 4, 5}, {1, 2, 3}, {1, 3, 4}, {0, 5, 6}, {0, 6, 7}};
+  const int n = static_cast<int>(outline.size());
+  SurfaceMesh u;
+  u.vertices.resize(2 * n, 3);
+  for (int k = 0; k < n; ++k) {
+    u.vertices.row(k) << outline[k].x(), 0, outline[k].y();
+    u.vertices.row(k + n) << outline[k].x(), 1, outline[k].y();
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  for (const auto& t : cap) {
+    triangles.push_back(t);                                         // y = 0, outward −y
+    triangles.emplace_back(t(0) + n, t(2) + n, t(1) + n);           // y = 1, outward +y
+  }
+  for (int k = 0; k < n; ++k) {  // the sides, outward for a counter-clockwise outline about −y
+    const int a = k, b = (k + 1) % n;
+    triangles.emplace_back(a, b + n, b);
+    triangles.emplace_back(a, a + n, b + n);
+  }
+  u.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) u.triangles.row(t) = triangles[t].transpose();
+  return u;
+}
+
+TEST(SliceIntoPolyhedra, AUShapeKeepsItsArmsApartWhereTheGapCrossesAGridCell) {
+  const SurfaceMesh u = u_shape();
+  ASSERT_NEAR(surface_volume(u), 8.8, 1e-12);
+  SlicingOptions options;
+  options.cell_size = 0.5;  // grid planes at −0.25 + k/2: the gap lies in the slab x ∈ [1.25, 1.75]
+  options.sliver_fraction = 0;
+  const SlicedMesh sliced = slice_into_polyhedra(u, options);
+  // Above the bottom (z > 1.25) the gap splits the 4 × 3 grid cells of that slab in two.
+  EXPECT_EQ(sliced.split_grid_cells, 12);
+  expect_valid_slicing(sliced.mesh, 8.8, surface_area(u), 1e-12);
+  int pieces_across_the_gap = 0, pieces_beside_it = 0;
+  for (int cell = 0; cell < sliced.mesh.cell_count(); ++cell) {
+    const Eigen::Vector3d centroid = sliced.mesh.cell_centroids.row(cell);
+    if (centroid.x() < 1.25 || centroid.x() > 1.75 || centroid.z() < 1.25) continue;
+    bool on_left = false, on_right = false;
+    for (int face : sliced.mesh.cell_faces[cell])
+      for (int node : sliced.mesh.faces[face]) {
+        on_left |= sliced.mesh.nodes(node, 0) < 1.5;
+        on_right |= sliced.mesh.nodes(node, 0) > 1.5;
+      }
+    (on_left && on_right ? pieces_across_the_gap : pieces_beside_it)++;
+  }
+  EXPECT_EQ(pieces_across_the_gap, 0);
+  EXPECT_EQ(pieces_beside_it, 24);
 }
 
 TEST(SliceIntoPolyhedra, SlicedBunnyHasTheSurfaceVolume) {
