@@ -3,8 +3,8 @@
 // enclosed volume, each cell closed (every edge used once each way, Σ area·normal = 0),
 // interior faces shared by exactly two cells; two boxes closer than a cell stay apart;
 // a U-shape keeps its arms apart; slivers are merged into their neighbours; a CSG shape
-// goes through its Mesh_3 surface; a
-// batch of degenerate surfaces keeps the volume; octree grading is conforming and 2:1.
+// goes through its Mesh_3 surface; a batch of degenerate surfaces slices into closed cells;
+// a face pierced in a hole is bridged; octree grading is conforming and 2:1.
 #include <gtest/gtest.h>
 
 #include <cmath>
