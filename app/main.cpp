@@ -20,7 +20,9 @@ int main(int argc, char** argv) {
   std::string check_scene;
   bool check_json = false;
   check->add_option("scene", check_scene, "Scene file (JSON)")->required();
-  check->add_flag("--json", check_json, "Print the resolved scene and geometry facts as JSON");
+  std::string check_method;
+  check->add_option("--method", check_method, "Check and build only this method (default: every method of the build)");
+  check->add_flag("--json", check_json, "Print the resolved scene, geometry and method facts as JSON");
 
   auto* run = app.add_subcommand("run", "Simulate a scene with one method");
   std::string run_scene, method, output;
@@ -48,6 +50,11 @@ int main(int argc, char** argv) {
   quadrature->require_subcommand(1);
   auto* monomials = quadrature->add_subcommand("monomials", "Fig. 4 of Longva et al. 2020: monomial errors");
   auto* quadrature_cell = quadrature->add_subcommand("cell", "The rules of one background cell as VTU points");
+  auto* conditioning = quadrature->add_subcommand("conditioning", "Fig. 5 of Longva et al. 2020: kappa and PCG iterations");
+  std::string conditioning_cell;
+  bool conditioning_json = false;
+  conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
+  conditioning->add_flag("--json", conditioning_json, "Print JSON");
   std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
   std::string simplifier = "nnls", quadrature_output = "out/quadrature-cell";
   int quadrature_order = 4;
@@ -93,12 +100,13 @@ int main(int argc, char** argv) {
 
   try {
     if (*info) return altfem::cli::info_command();
-    if (*check) return altfem::cli::check_command(check_scene, check_json);
+    if (*check) return altfem::cli::check_command(check_scene, check_method, check_json);
     if (*mesh) return altfem::cli::mesh_command(mesh_scene, mesh_options);
     if (*run) return altfem::cli::run_command(run_scene, method, output, overrides);
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
       return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
+    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_json);
     if (*quadrature_cell)
       return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
                                                   quadrature_resolution, quadrature_order, simplifier,

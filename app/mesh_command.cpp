@@ -87,7 +87,7 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   if (slice) {
     sliced = slice_scene_geometry(geometry, options);
   } else {
-    volume_mesh = build_fem_mesh(scene, geometry);
+    volume_mesh = build_fem_mesh(fem_spec(scene), geometry);
     sliced.mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
   }
   const PolyhedralMesh& mesh = sliced.mesh;

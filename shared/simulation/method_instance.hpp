@@ -9,6 +9,7 @@
 
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
+#include "shared/scene/method_scene_block.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/discretization.hpp"
@@ -40,5 +41,13 @@ public:
 };
 
 using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&)>;
+
+/// What a method registers (app/method_registry.cpp): its scene block, its factory
+/// and one line for `altfem info`.
+struct MethodDescription {
+  MethodSceneBlock scene_block;
+  MethodFactory factory;
+  std::string_view summary;
+};
 
 }  // namespace altfem
