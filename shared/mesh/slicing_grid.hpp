@@ -15,7 +15,7 @@
 // (a grid line through a surface edge, a vertex an ulp off a plane).
 // Measured alternative: CGAL's PMP::clip (Epeck, clip_volume) of the bunny (3.7k
 // triangles) by one cell box takes 5.4 ms per cut cell on this machine — about 18 s for
-// the ~3.3k cut cells at 32³, against 0.16 s for this whole slicing (bench_slicing) — and
+// the ~3.3k cut cells at 32³, against 0.09 s for this whole slicing (bench_slicing) — and
 // its box triangulation adds diagonal vertices that the two sides of a grid face do not share.
 #include <Eigen/Core>
 #include <array>
