@@ -11,15 +11,14 @@ namespace altfem {
 SlicedMesh GridSlicer::assemble(const SurfacePieces& pieces) {
   SlicedMesh result;
   PolyhedralMesh& mesh = result.mesh;
-  std::vector<int> first_mesh_cell(grid_.cell_count(), -1);  // hexahedron, or the first piece of a cut cell
   grid_hexahedra_.assign(grid_.cell_count(), -1);
   std::vector<int> piece_cell(pieces.polygons.size(), -1);
-  // (face key, lower side?) → the mesh cell of each loop on that side
+  // Per grid face of a cut cell (its key), the mesh cell of each of its loops on the lower
+  // and on the upper side.
   std::unordered_map<long long, std::vector<int>> loop_cells_lower, loop_cells_upper;
   int cell_count = 0;
   for (int cell = 0; cell < grid_.cell_count(); ++cell) {
     if (state_[cell] == CellState::outside) continue;
-    first_mesh_cell[cell] = cell_count;
     if (state_[cell] == CellState::inside) {
       grid_hexahedra_[cell] = cell_count;
       mesh.cell_kinds.push_back(PolyhedralCellKind::hexahedron);
@@ -90,13 +89,13 @@ SlicedMesh GridSlicer::assemble(const SurfacePieces& pieces) {
           const auto region = regions_.find(face_key(face));
           if (region == regions_.end()) {  // between uncut cells: the whole rectangle
             const auto corners = corners_up(face);
-            add_face({corners.begin(), corners.end()}, has_material(lower) ? first_mesh_cell[lower] : -1,
-                     has_material(upper) ? first_mesh_cell[upper] : -1);
+            add_face({corners.begin(), corners.end()}, has_material(lower) ? grid_hexahedra_[lower] : -1,
+                     has_material(upper) ? grid_hexahedra_[upper] : -1);
             continue;
           }
           const auto side_cells = [&](int cell, const auto& loop_cells, std::size_t loop) {
             if (!has_material(cell)) return -1;
-            return state_[cell] == CellState::inside ? first_mesh_cell[cell] : loop_cells.at(region->first)[loop];
+            return state_[cell] == CellState::inside ? grid_hexahedra_[cell] : loop_cells.at(region->first)[loop];
           };
           for (std::size_t loop = 0; loop < region->second.size(); ++loop)
             add_face(region->second[loop], side_cells(lower, loop_cells_lower, loop),
