@@ -15,7 +15,10 @@ int check_command(const std::filesystem::path& scene_file, const std::string& me
 /// Options of `altfem mesh` (main.cpp documents each).
 struct MeshCommandOptions {
   std::string method;
-  std::string source = "convert";
+  std::string source = "convert";  ///< dg/harmonic: "convert" (the fem mesh cell by cell) or "slice"
+  int resolution = 16;              ///< --source slice: grid cells along the bounding box's longest side
+  double sliver_fraction = 1e-3;    ///< --source slice: pieces below this fraction of a cell are merged
+  int octree_levels = 0;            ///< --source slice: inside cells joined up to 2^levels grid cells per side
   std::filesystem::path output_directory;
   bool json = false;
 };

@@ -76,8 +76,16 @@ int main(int argc, char** argv) {
   altfem::cli::MeshCommandOptions mesh_options;
   mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
   mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem (fcm in a later build)")->required();
-  mesh->add_option("--source", mesh_options.source, "dg/harmonic mesh source: convert (the fem mesh, cell by cell)");
-  mesh->add_option("--out", mesh_options.output_directory, "Output folder (default out/<scene>-mesh-<method>)");
+  mesh->add_option("--source", mesh_options.source,
+                   "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry)");
+  mesh->add_option("--resolution", mesh_options.resolution,
+                   "--source slice: grid cells along the geometry's longest side (default 16)");
+  mesh->add_option("--sliver-fraction", mesh_options.sliver_fraction,
+                   "--source slice: merge cut pieces below this fraction of a cell (default 1e-3; 0 keeps all)");
+  mesh->add_option("--octree-levels", mesh_options.octree_levels,
+                   "--source slice: join inside cells into octree cells of up to 2^L grid cells per side (default 0)");
+  mesh->add_option("--out", mesh_options.output_directory,
+                   "Output folder for mesh.vtu (default out/<scene>-mesh-<method>), or a file ending in .vtu");
   mesh->add_flag("--json", mesh_options.json, "Print the mesh facts as JSON");
 
   try {
