@@ -1,4 +1,6 @@
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
@@ -42,9 +44,17 @@ nlohmann::json method_facts(const Scene& scene, const SceneGeometry& geometry, c
   const Eigen::Vector3d unit_x = Eigen::Vector3d::UnitX();
   const Eigen::VectorXd ones = instance->interpolate([&](const Eigen::Vector3d&) { return unit_x; });
   const double mass = ones.dot(instance->discretization().body_force(unit_x));
-  const double volume = mass / scene.material.density;
+  // With several materials the volume is Σ mass_m / ρ_m, which needs the masses per
+  // material: with one density, mass / ρ.
+  double density = scene.materials.front().density;
+  for (const MaterialSpec& material : scene.materials)
+    if (material.density != density) density = std::numeric_limits<double>::quiet_NaN();
+  if (std::isnan(density))
+    return {{"dofs", instance->discretization().dof_count()}, {"elements", instance->element_counts()}, {"integrated_mass", mass}};
+  const double volume = mass / density;
   return {{"dofs", instance->discretization().dof_count()},
           {"elements", instance->element_counts()},
+          {"integrated_mass", mass},
           {"integrated_volume", volume},
           {"volume_difference", volume / geometry.volume - 1.0}};
 }
@@ -77,10 +87,14 @@ int check_command(const std::filesystem::path& scene_file, const std::string& me
   std::printf("\nbounding box: [%g, %g, %g] – [%g, %g, %g]\nvolume: %.6g\nclosed: %s, manifold: %s\n", box.min().x(),
               box.min().y(), box.min().z(), box.max().x(), box.max().y(), box.max().z(), geometry.volume,
               geometry.closed ? "yes" : "no", geometry.manifold ? "yes" : "no");
-  for (const auto& [name, method_facts] : built.items())
-    std::printf("%s: %lld DOFs, integrated volume %.6g (%+.2e relative to the geometry's)\n", name.c_str(),
-                method_facts["dofs"].get<long long>(), method_facts["integrated_volume"].get<double>(),
-                method_facts["volume_difference"].get<double>());
+  for (const auto& [name, method_facts] : built.items()) {
+    std::printf("%s: %lld DOFs, integrated mass %.6g kg", name.c_str(), method_facts["dofs"].get<long long>(),
+                method_facts["integrated_mass"].get<double>());
+    if (method_facts.contains("integrated_volume"))
+      std::printf(", volume %.6g (%+.2e relative to the geometry's)", method_facts["integrated_volume"].get<double>(),
+                  method_facts["volume_difference"].get<double>());
+    std::printf("\n");
+  }
   return 0;
 }
 

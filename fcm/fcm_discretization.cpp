@@ -47,6 +47,16 @@ LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            const Material& material, const std::vector<DirichletCondition>& dirichlet,
                                            const FcmOptions& options, const std::string& scene_file) {
+  return build_fcm_discretization(background, quadrature, {&material},
+                                  std::vector<int>(static_cast<size_t>(background.cells.rows()), 0), dirichlet, options,
+                                  scene_file);
+}
+
+FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
+                                           std::vector<const Material*> materials,
+                                           const std::vector<int>& background_materials,
+                                           const std::vector<DirichletCondition>& dirichlet,
+                                           const FcmOptions& options, const std::string& scene_file) {
   const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
   const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
@@ -84,18 +94,22 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   fcm.mesh.nodes.resize(static_cast<Eigen::Index>(used_nodes.size()), 3);
   for (size_t i = 0; i < used_nodes.size(); ++i) fcm.mesh.nodes.row(static_cast<Eigen::Index>(i)) = background.nodes.row(used_nodes[i]);
 
+  std::vector<int> kept_materials;
+  for (int cell : kept) kept_materials.push_back(background_materials[cell]);
   const bool stabilize_stiffness = options.stabilized == StabilizedMatrices::mass_and_stiffness;
   const bool stabilize_mass = options.stabilized != StabilizedMatrices::none;
   DiscretizationParts parts;
-  parts.elements = tabulate_lagrange(fcm.mesh, kept_rules(stiffness_cells, kept, background.element_type,
-                                                          options.quadrature_strength,
-                                                          stabilize_stiffness ? options.stabilization : 0.0));
+  LagrangeCellRules stiffness_rules = kept_rules(stiffness_cells, kept, background.element_type,
+                                                options.quadrature_strength,
+                                                stabilize_stiffness ? options.stabilization : 0.0);
+  stiffness_rules.materials = kept_materials;
+  parts.elements = tabulate_lagrange(fcm.mesh, stiffness_rules);
   // The mass rules are large (a high strength, never simplified) and used once
   // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
   parts.element_masses = lagrange_element_masses(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
                                                                        options.mass_quadrature_strength,
                                                                        stabilize_mass ? options.stabilization : 0.0));
-  parts.materials = {&material};
+  parts.materials = std::move(materials);
   parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");
 
   // §5.2: one Schwarz block per small cut cell: the DOFs of its nodes.

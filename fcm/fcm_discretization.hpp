@@ -52,5 +52,12 @@ struct FcmDiscretization {
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            const Material& material, const std::vector<DirichletCondition>& dirichlet,
                                            const FcmOptions& options, const std::string& scene_file = "scene");
+/// The same with several materials: background_materials holds each background cell's
+/// index into `materials` (a cut cell takes one material whole).
+FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
+                                           std::vector<const Material*> materials,
+                                           const std::vector<int>& background_materials,
+                                           const std::vector<DirichletCondition>& dirichlet,
+                                           const FcmOptions& options, const std::string& scene_file = "scene");
 
 }  // namespace altfem::fcm

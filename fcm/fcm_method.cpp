@@ -9,8 +9,8 @@
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "shared/material/material.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/scene_materials.hpp"
 
 namespace altfem::fcm {
 
@@ -19,8 +19,7 @@ namespace {
 class FcmMethod final : public MethodInstance {
 public:
   FcmMethod(const Scene& scene, const SceneGeometry& geometry)
-      : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
-                                scene.material.poisson_ratio, scene.material.density)) {
+      : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
     const std::string file = scene.file.string();
     // The background grid over the geometry's bounds (§3.2).
@@ -37,7 +36,8 @@ public:
     statistics_ = std::make_shared<IntersectionStatistics>();
     const CellQuadratureSource rules = intersection_cell_quadrature(background, embedded, spec.simplifier,
                                                                     spec.simplification_tolerance, {}, statistics_);
-    fcm_ = build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options, file);
+    fcm_ = build_fcm_discretization(background, rules, materials_.pointers(),
+                                    materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options, file);
     warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -94,7 +94,7 @@ public:
   }
 
 private:
-  std::unique_ptr<Material> material_;
+  SceneMaterials materials_;
   Eigen::Vector3i resolution_;
   std::shared_ptr<IntersectionStatistics> statistics_;
   FcmDiscretization fcm_;

@@ -7,6 +7,7 @@
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/scene_materials.hpp"
 
 namespace altfem {
 
@@ -15,12 +16,12 @@ namespace {
 class FemMethod final : public MethodInstance {
 public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry)
-      : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
-                                scene.material.poisson_ratio, scene.material.density)) {
+      : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
     mesh_ = build_fem_mesh(fem, geometry);
     const auto start = std::chrono::steady_clock::now();
-    discretization_ = make_lagrange_discretization(mesh_, *material_, scene.dirichlet, fem.quadrature_order,
+    discretization_ = make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
+                                                   scene.dirichlet, fem.quadrature_order,
                                                    scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms: the scene's own surface when it has one,
@@ -58,7 +59,7 @@ public:
   }
 
 private:
-  std::unique_ptr<Material> material_;
+  SceneMaterials materials_;
   VolumeMesh mesh_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;

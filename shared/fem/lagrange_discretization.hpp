@@ -17,5 +17,10 @@ namespace altfem {
 std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
     const VolumeMesh& mesh, const Material& material, const std::vector<DirichletCondition>& dirichlet,
     int quadrature_strength, const std::string& scene_file = "scene");
+/// The same with several materials: material_ids holds each cell's index into
+/// `materials` (empty: all 0).
+std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
+    const VolumeMesh& mesh, std::vector<const Material*> materials, std::vector<int> material_ids,
+    const std::vector<DirichletCondition>& dirichlet, int quadrature_strength, const std::string& scene_file = "scene");
 
 }  // namespace altfem

@@ -34,5 +34,7 @@ void check_volume_mesh(const VolumeMesh& mesh, const std::string& file_name);
 /// Sum of the cells' volumes from their corners: exact for straight-sided cells
 /// (a tetrahedron's corner tetrahedron; a hexahedron's trilinear map).
 double volume_mesh_volume(const VolumeMesh& mesh);
+/// The mean of each cell's corner nodes (#cells × 3).
+Eigen::MatrixX3d corner_centroids(const VolumeMesh& mesh);
 
 }  // namespace altfem

@@ -47,4 +47,12 @@ double volume_mesh_volume(const VolumeMesh& mesh) {
   return volume;
 }
 
+Eigen::MatrixX3d corner_centroids(const VolumeMesh& mesh) {
+  const int corners = element_corner_count(mesh.element_type);
+  Eigen::MatrixX3d centroids = Eigen::MatrixX3d::Zero(mesh.cells.rows(), 3);
+  for (Eigen::Index c = 0; c < mesh.cells.rows(); ++c)
+    for (int a = 0; a < corners; ++a) centroids.row(c) += mesh.nodes.row(mesh.cells(c, a)) / corners;
+  return centroids;
+}
+
 }  // namespace altfem

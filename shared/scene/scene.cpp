@@ -176,9 +176,17 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   scene.name = resolved["name"].get<std::string>();
   scene.geometry = geometry_from_json(resolved["geometry"]);
 
-  const json& material = resolved["material"];
-  scene.material = {material["model"].get<std::string>(), material["youngs_modulus"].get<double>(),
-                    material["poisson_ratio"].get<double>(), material["density"].get<double>()};
+  const auto material_from_json = [](const json& material, const std::string& pointer) {
+    MaterialSpec spec{material["model"].get<std::string>(), material["youngs_modulus"].get<double>(),
+                      material["poisson_ratio"].get<double>(), material["density"].get<double>(), std::nullopt, pointer};
+    if (material.contains("region")) spec.region = region_from_json(material["region"], pointer + "/region");
+    return spec;
+  };
+  if (resolved.contains("material")) scene.materials.push_back(material_from_json(resolved["material"], "/material"));
+  else
+    for (std::size_t i = 0; i < resolved["materials"].size(); ++i)
+      scene.materials.push_back(material_from_json(resolved["materials"][i], "/materials/" + std::to_string(i)));
+  scene.material = scene.materials.front();
 
   const json& conditions = resolved["boundary_conditions"];
   for (std::size_t i = 0; i < conditions.size(); ++i) {

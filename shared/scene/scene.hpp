@@ -41,13 +41,6 @@ struct GeometrySpec {
   Eigen::Vector3d translate = Eigen::Vector3d::Zero();
 };
 
-struct MaterialSpec {
-  std::string model;  ///< one of material_model_names
-  double youngs_modulus = 0.0;
-  double poisson_ratio = 0.0;
-  double density = 0.0;
-};
-
 /// Which material points a boundary condition acts on (world coordinates).
 struct RegionSelector {
   RegionKind kind = RegionKind::box;
@@ -65,6 +58,16 @@ struct RegionSelector {
 
 /// The regions' tolerance of docs/scene-schema.md: 1e-6 × the geometry's bounding-box diagonal.
 double region_tolerance(const Eigen::AlignedBox3d& geometry_bounds);
+
+struct MaterialSpec {
+  std::string model;  ///< one of material_model_names
+  double youngs_modulus = 0.0;
+  double poisson_ratio = 0.0;
+  double density = 0.0;
+  /// `materials` entries: the elements whose centroid it holds (first match wins).
+  std::optional<RegionSelector> region;
+  std::string pointer;  ///< "/material" or "/materials/i", for messages
+};
 
 /// A prescribed displacement u(X, t) of the material point X at time t.
 struct Motion {
@@ -126,7 +129,10 @@ struct Scene {
   std::filesystem::path file;
   std::string name;
   GeometrySpec geometry;
-  MaterialSpec material;
+  /// The scene's materials, at least one: `material`, or the `materials` list, whose
+  /// unselected rest takes the first (docs/scene-schema.md, "Material").
+  std::vector<MaterialSpec> materials;
+  MaterialSpec material;  ///< materials[0]: the material of a scene with one
   std::vector<DirichletCondition> dirichlet;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   InitialConditions initial;

@@ -103,14 +103,6 @@ const ObjectRule geometry{
      {.key = "translate", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})}},
     {{"surface", "mesh", "shape"}}};
 
-const ObjectRule material{
-    {{.key = "model", .type = ValueType::string, .default_value = "stable_neo_hookean",
-      .choices = names(material_model_names)},
-     required_positive("youngs_modulus"),
-     {.key = "poisson_ratio", .type = ValueType::number, .required = true, .lower = Bound{-1.0, false},
-      .upper = Bound{0.5, false}},
-     {.key = "density", .type = ValueType::number, .default_value = 1000.0, .lower = positive}}};
-
 const ObjectRule region_box{{required_vector("min"), required_vector("max")}, {}, {}, {}, {}, check_region_box};
 const ObjectRule region_half_space{
     {required_vector("point"), {.key = "normal", .type = ValueType::vector3, .required = true, .nonzero = true}}};
@@ -118,6 +110,23 @@ const ObjectRule region{{{.key = "box", .type = ValueType::object, .object = &re
                          {.key = "half_space", .type = ValueType::object, .object = &region_half_space},
                          {.key = "sphere", .type = ValueType::object, .object = &shape_sphere}},
                         {{"box", "half_space", "sphere"}}};
+
+// The keys of one material; `materials` entries add an optional region.
+std::vector<KeyRule> material_keys() {
+  return {{.key = "model", .type = ValueType::string, .default_value = "stable_neo_hookean",
+           .choices = names(material_model_names)},
+          required_positive("youngs_modulus"),
+          {.key = "poisson_ratio", .type = ValueType::number, .required = true, .lower = Bound{-1.0, false},
+           .upper = Bound{0.5, false}},
+          {.key = "density", .type = ValueType::number, .default_value = 1000.0, .lower = positive}};
+}
+const ObjectRule material{material_keys()};
+std::vector<KeyRule> material_with_region_keys() {
+  std::vector<KeyRule> keys = material_keys();
+  keys.push_back({.key = "region", .type = ValueType::object, .object = &region});
+  return keys;
+}
+const ObjectRule material_with_region{material_with_region_keys()};
 
 const ObjectRule motion_fixed{{}};
 const ObjectRule motion_translate{{{.key = "velocity", .type = ValueType::vector3},
@@ -212,7 +221,8 @@ const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
 const ObjectRule scene{
     {{.key = "name", .type = ValueType::string},
      {.key = "geometry", .type = ValueType::object, .required = true, .object = &geometry},
-     {.key = "material", .type = ValueType::object, .required = true, .object = &material},
+     {.key = "material", .type = ValueType::object, .object = &material},
+     {.key = "materials", .type = ValueType::object_array, .object = &material_with_region, .minimum_count = 1},
      {.key = "boundary_conditions", .type = ValueType::object_array, .default_value = json::array(), .object = &dirichlet},
      {.key = "loads", .type = ValueType::object, .default_value = json::object(), .object = &loads},
      {.key = "initial_conditions", .type = ValueType::object, .default_value = json::object(), .object = &initial_conditions},
@@ -221,7 +231,7 @@ const ObjectRule scene{
      {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
      {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &method_blocks},
      {.key = "compare", .type = ValueType::object, .object = &compare}},
-    {}, {}, {}, {}, check_scene};
+    {{"material", "materials"}}, {}, {}, {}, check_scene};
 
 }  // namespace
 
