@@ -1,0 +1,130 @@
+#include "polyhedral/harmonic_element_bases.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "polyhedral/harmonic_tabulation.hpp"
+#include "shared/common/error.hpp"
+#include "shared/element/geometry_map.hpp"
+#include "shared/fem/tabulate_lagrange.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
+
+namespace altfem::harmonic {
+
+namespace {
+
+Eigen::MatrixXd node_coordinates(const PolyhedralMesh& mesh, const std::vector<int>& nodes) {
+  Eigen::MatrixXd coordinates(static_cast<Eigen::Index>(nodes.size()), 3);
+  for (size_t i = 0; i < nodes.size(); ++i) coordinates.row(static_cast<Eigen::Index>(i)) = mesh.nodes.row(nodes[i]);
+  return coordinates;
+}
+
+// The plain cells of one element type as a Lagrange mesh on all the mesh's nodes, so
+// tabulate_lagrange serves them; `cells` receives their cell indices in row order.
+VolumeMesh plain_volume_mesh(const PolyhedralMesh& mesh, const std::vector<std::vector<int>>& plain_nodes,
+                             const std::vector<std::optional<ElementType>>& types, ElementType type,
+                             std::vector<int>& cells) {
+  for (int cell = 0; cell < static_cast<int>(types.size()); ++cell)
+    if (types[cell] == type) cells.push_back(cell);
+  VolumeMesh volume;
+  volume.element_type = type;
+  volume.nodes = mesh.nodes;
+  volume.cells.resize(static_cast<Eigen::Index>(cells.size()), element_corner_count(type));
+  for (size_t row = 0; row < cells.size(); ++row)
+    for (int corner = 0; corner < element_corner_count(type); ++corner)
+      volume.cells(static_cast<Eigen::Index>(row), corner) = plain_nodes[cells[row]][corner];
+  return volume;
+}
+
+}  // namespace
+
+HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind,
+                                           const MfsOptions& options)
+    : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
+  const int cells = mesh.cell_count();
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int cell = 0; cell < cells; ++cell) {
+    Cell& entry = cells_[cell];
+    if (kind == HarmonicBasisKind::automatic) {
+      if (auto plain = plain_cell(mesh, cell)) {
+        entry.plain = plain->type;
+        entry.nodes = std::move(plain->nodes);
+        continue;
+      }
+    }
+    entry.nodes = cell_nodes(mesh, cell);
+    entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+  }
+  for (int cell = 0; cell < cells; ++cell)
+    if (cells_[cell].mfs && !std::isfinite(cells_[cell].mfs->boundary_residual()))
+      throw NumericalError("harmonic basis of cell " + std::to_string(cell) +
+                           ": the MFS least-squares fit is not finite (degenerate polyhedron?)");
+}
+
+double HarmonicElementBases::max_boundary_residual() const {
+  double largest = 0;
+  for (const auto& cell : cells_)
+    if (cell.mfs) largest = std::max(largest, cell.mfs->boundary_residual());
+  return largest;
+}
+
+TabulatedElements HarmonicElementBases::tabulate(int strength) const {
+  const int cells = cell_count();
+  std::vector<std::vector<int>> plain_nodes(cells);
+  std::vector<std::optional<ElementType>> types(cells);
+  for (int cell = 0; cell < cells; ++cell)
+    if (cells_[cell].plain) {
+      types[cell] = cells_[cell].plain;
+      plain_nodes[cell] = cells_[cell].nodes;
+    }
+  // Plain cells: the Lagrange tabulation of fem (tet_rule / hex_rule of `strength`).
+  std::vector<int> plain_cells[2];
+  TabulatedElements plain_tables[2];
+  std::vector<int> plain_row(cells, -1);
+  const ElementType plain_types[2] = {ElementType::tet4, ElementType::hex8};
+  for (int t = 0; t < 2; ++t) {
+    const VolumeMesh volume = plain_volume_mesh(mesh_, plain_nodes, types, plain_types[t], plain_cells[t]);
+    if (plain_cells[t].empty()) continue;
+    plain_tables[t] = tabulate_lagrange(volume, strength);
+    for (size_t row = 0; row < plain_cells[t].size(); ++row) plain_row[plain_cells[t][row]] = static_cast<int>(row);
+  }
+  // MFS cells: an exact rule on the polyhedron and the consistency correction.
+  std::vector<HarmonicTabulation> mfs_tables(cells);
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int cell = 0; cell < cells; ++cell)
+    if (cells_[cell].mfs)
+      mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, polyhedron_rule(cell_polyhedron(mesh_, cell), strength),
+                                                   true);
+  TabulatedElements elements;
+  for (int cell = 0; cell < cells; ++cell) {
+    if (const auto& type = cells_[cell].plain) {
+      const ElementView view = plain_tables[*type == ElementType::tet4 ? 0 : 1][plain_row[cell]];
+      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients(
+          view.gradients, static_cast<Eigen::Index>(view.point_count()) * view.basis_count(), 3);
+      elements.add(view.basis, view.weights, view.values, gradients);
+    } else {
+      const HarmonicTabulation& table = mfs_tables[cell];
+      elements.add(cells_[cell].nodes, {table.weights.data(), static_cast<size_t>(table.weights.size())}, table.values,
+                   table.gradients);
+      mfs_tables[cell] = {};  // release as we go
+    }
+  }
+  return elements;
+}
+
+void HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const {
+  const Cell& entry = cells_[cell];
+  if (entry.mfs) {
+    Eigen::MatrixXd gradients;
+    entry.mfs->evaluate(x, values, gradients);
+    return;
+  }
+  const ReferenceElement& element = reference_element(*entry.plain);
+  const InverseMapResult inverse = map_to_reference(element, node_coordinates(mesh_, entry.nodes), x);
+  if (!inverse.converged)
+    throw NumericalError("harmonic embedding: the inverse map of cell " + std::to_string(cell) + " did not converge");
+  values.resize(element.node_count());
+  element.evaluate(inverse.xi, values);
+}
+
+}  // namespace altfem::harmonic
