@@ -43,7 +43,9 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
     for (size_t k = 0; k < face.size(); ++k) {
       const int a = face[k], b = face[(k + 1) % face.size()];
       vertex_normals[a] += face_normals.back();
-      edge_normals[{std::min(a, b), std::max(a, b)}] += face_normals.back();
+      // try_emplace: a default-constructed Eigen vector is uninitialised.
+      edge_normals.try_emplace({std::min(a, b), std::max(a, b)}, Eigen::Vector3d::Zero()).first->second +=
+          face_normals.back();
     }
   }
   BoundarySamples samples;
