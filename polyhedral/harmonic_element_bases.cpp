@@ -13,12 +13,6 @@ namespace altfem::harmonic {
 
 namespace {
 
-Eigen::MatrixXd node_coordinates(const PolyhedralMesh& mesh, const std::vector<int>& nodes) {
-  Eigen::MatrixXd coordinates(static_cast<Eigen::Index>(nodes.size()), 3);
-  for (size_t i = 0; i < nodes.size(); ++i) coordinates.row(static_cast<Eigen::Index>(i)) = mesh.nodes.row(nodes[i]);
-  return coordinates;
-}
-
 // The plain cells of one element type as a Lagrange mesh on all the mesh's nodes, so
 // tabulate_lagrange serves them; `cells` receives their cell indices in row order.
 VolumeMesh plain_volume_mesh(const PolyhedralMesh& mesh, const std::vector<std::vector<int>>& plain_nodes,
@@ -120,7 +114,7 @@ void HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::V
     return;
   }
   const ReferenceElement& element = reference_element(*entry.plain);
-  const InverseMapResult inverse = map_to_reference(element, node_coordinates(mesh_, entry.nodes), x);
+  const InverseMapResult inverse = map_to_reference(element, mesh_.nodes(entry.nodes, Eigen::all), x);
   if (!inverse.converged)
     throw NumericalError("harmonic embedding: the inverse map of cell " + std::to_string(cell) + " did not converge");
   values.resize(element.node_count());
