@@ -1,5 +1,6 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -36,6 +37,9 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
                                            const MfsOptions& options)
     : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
   const int cells = mesh.cell_count();
+  // An exception must not leave the OpenMP region: a cell whose basis fails is
+  // recorded (the first in cell order is reported) and its basis left empty.
+  std::atomic<int> failed_cell{cells};
 #pragma omp parallel for schedule(dynamic, 4)
   for (int cell = 0; cell < cells; ++cell) {
     Cell& entry = cells_[cell];
@@ -47,12 +51,16 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       }
     }
     entry.nodes = cell_nodes(mesh, cell);
-    entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+    try {
+      entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+      if (std::isfinite(entry.mfs->boundary_residual())) continue;
+    } catch (const std::exception&) {
+    }
+    for (int current = failed_cell.load(); cell < current && !failed_cell.compare_exchange_weak(current, cell);) {}
   }
-  for (int cell = 0; cell < cells; ++cell)
-    if (cells_[cell].mfs && !std::isfinite(cells_[cell].mfs->boundary_residual()))
-      throw NumericalError("harmonic basis of cell " + std::to_string(cell) +
-                           ": the MFS least-squares fit is not finite (degenerate polyhedron?)");
+  if (failed_cell < cells)
+    throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
+                         ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
 }
 
 double HarmonicElementBases::max_boundary_residual() const {
