@@ -1,5 +1,6 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <string>
@@ -11,27 +12,6 @@
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::harmonic {
-
-namespace {
-
-// The plain cells of one element type as a Lagrange mesh on all the mesh's nodes, so
-// tabulate_lagrange serves them; `cells` receives their cell indices in row order.
-VolumeMesh plain_volume_mesh(const PolyhedralMesh& mesh, const std::vector<std::vector<int>>& plain_nodes,
-                             const std::vector<std::optional<ElementType>>& types, ElementType type,
-                             std::vector<int>& cells) {
-  for (int cell = 0; cell < static_cast<int>(types.size()); ++cell)
-    if (types[cell] == type) cells.push_back(cell);
-  VolumeMesh volume;
-  volume.element_type = type;
-  volume.nodes = mesh.nodes;
-  volume.cells.resize(static_cast<Eigen::Index>(cells.size()), element_corner_count(type));
-  for (size_t row = 0; row < cells.size(); ++row)
-    for (int corner = 0; corner < element_corner_count(type); ++corner)
-      volume.cells(static_cast<Eigen::Index>(row), corner) = plain_nodes[cells[row]][corner];
-  return volume;
-}
-
-}  // namespace
 
 HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind,
                                            const MfsOptions& options)
@@ -72,23 +52,26 @@ double HarmonicElementBases::max_boundary_residual() const {
 
 TabulatedElements HarmonicElementBases::tabulate(int strength) const {
   const int cells = cell_count();
-  std::vector<std::vector<int>> plain_nodes(cells);
-  std::vector<std::optional<ElementType>> types(cells);
-  for (int cell = 0; cell < cells; ++cell)
-    if (cells_[cell].plain) {
-      types[cell] = cells_[cell].plain;
-      plain_nodes[cell] = cells_[cell].nodes;
-    }
-  // Plain cells: the Lagrange tabulation of fem (tet_rule / hex_rule of `strength`).
-  std::vector<int> plain_cells[2];
-  TabulatedElements plain_tables[2];
+  // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
+  // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
+  // the cell's element in its type's table.
+  const std::array<ElementType, 2> plain_types{ElementType::tet4, ElementType::hex8};
+  std::array<TabulatedElements, 2> plain_tables;
   std::vector<int> plain_row(cells, -1);
-  const ElementType plain_types[2] = {ElementType::tet4, ElementType::hex8};
-  for (int t = 0; t < 2; ++t) {
-    const VolumeMesh volume = plain_volume_mesh(mesh_, plain_nodes, types, plain_types[t], plain_cells[t]);
-    if (plain_cells[t].empty()) continue;
+  for (size_t t = 0; t < plain_types.size(); ++t) {
+    const int corners = element_corner_count(plain_types[t]);
+    std::vector<int> rows;
+    for (int cell = 0; cell < cells; ++cell)
+      if (cells_[cell].plain == plain_types[t]) plain_row[cell] = static_cast<int>(rows.size()), rows.push_back(cell);
+    if (rows.empty()) continue;
+    VolumeMesh volume;
+    volume.element_type = plain_types[t];
+    volume.nodes = mesh_.nodes;
+    volume.cells.resize(static_cast<Eigen::Index>(rows.size()), corners);
+    for (size_t row = 0; row < rows.size(); ++row)
+      for (int corner = 0; corner < corners; ++corner)
+        volume.cells(static_cast<Eigen::Index>(row), corner) = cells_[rows[row]].nodes[corner];
     plain_tables[t] = tabulate_lagrange(volume, strength);
-    for (size_t row = 0; row < plain_cells[t].size(); ++row) plain_row[plain_cells[t][row]] = static_cast<int>(row);
   }
   // MFS cells: an exact rule on the polyhedron and the consistency correction.
   std::vector<HarmonicTabulation> mfs_tables(cells);
@@ -100,7 +83,7 @@ TabulatedElements HarmonicElementBases::tabulate(int strength) const {
   TabulatedElements elements;
   for (int cell = 0; cell < cells; ++cell) {
     if (const auto& type = cells_[cell].plain) {
-      const ElementView view = plain_tables[*type == ElementType::tet4 ? 0 : 1][plain_row[cell]];
+      const ElementView view = plain_tables[*type == plain_types[0] ? 0 : 1][plain_row[cell]];
       const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients(
           view.gradients, static_cast<Eigen::Index>(view.point_count()) * view.basis_count(), 3);
       elements.add(view.basis, view.weights, view.values, gradients);
