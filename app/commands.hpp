@@ -26,6 +26,8 @@ int run_command(const std::filesystem::path& scene_file, const std::string& meth
 
 /// `quadrature monomials`: Longva et al. 2020, §4.6 for strengths 1..order.
 int quadrature_monomials_command(const std::string& cell, int order, const std::string& simplifier, bool json);
+/// `quadrature conditioning`: Longva et al. 2020, §5.4 (Fig. 5) for one cell type.
+int quadrature_conditioning_command(const std::string& cell, bool json);
 /// `quadrature cell`: the rules of one background cell of a scene, as VTU points.
 int quadrature_cell_command(const std::filesystem::path& scene_file, const std::string& cell_index,
                             const std::string& cell_type, const std::string& resolution, int order,

@@ -50,6 +50,11 @@ int main(int argc, char** argv) {
   quadrature->require_subcommand(1);
   auto* monomials = quadrature->add_subcommand("monomials", "Fig. 4 of Longva et al. 2020: monomial errors");
   auto* quadrature_cell = quadrature->add_subcommand("cell", "The rules of one background cell as VTU points");
+  auto* conditioning = quadrature->add_subcommand("conditioning", "Fig. 5 of Longva et al. 2020: kappa and PCG iterations");
+  std::string conditioning_cell;
+  bool conditioning_json = false;
+  conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
+  conditioning->add_flag("--json", conditioning_json, "Print JSON");
   std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
   std::string simplifier = "nnls", quadrature_output = "out/quadrature-cell";
   int quadrature_order = 4;
@@ -93,6 +98,7 @@ int main(int argc, char** argv) {
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
       return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
+    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_json);
     if (*quadrature_cell)
       return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
                                                   quadrature_resolution, quadrature_order, simplifier,
