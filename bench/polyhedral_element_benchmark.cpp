@@ -22,7 +22,7 @@ Polyhedron cell(int kind) {
 }
 const char* cell_name(int kind) { return kind == 0 ? "hexahedron" : "l_prism"; }
 
-// Args: cell kind, MFS samples per edge (4: discretization.harmonic's default).
+// Args: cell kind, MFS samples per edge (5: MfsOptions' and discretization.harmonic's default).
 void harmonic_basis(benchmark::State& state) {
   const Polyhedron element = cell(static_cast<int>(state.range(0)));
   harmonic::MfsOptions options;
@@ -46,7 +46,7 @@ void harmonic_tabulation(benchmark::State& state) {
 
 // What the paper's Table 1 times per polyhedral element (48–688 ms there): the basis, and
 // the element's linear-elastic stiffness K_e (3n × 3n) integrated with it — here the whole
-// per-element set-up of the harmonic method at its defaults (4 samples per edge, an
+// per-element set-up of the harmonic method at its defaults (5 samples per edge, an
 // order-2 rule, the consistency correction), then K_ab = Σ_q w_q (λ ∇N_a ∇N_bᵀ +
 // μ ∇N_b ∇N_aᵀ + μ ∇N_a·∇N_b I). Arg: cell kind.
 void harmonic_element_setup(benchmark::State& state) {

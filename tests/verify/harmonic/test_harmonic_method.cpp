@@ -6,7 +6,7 @@
 //   - on the bases of the method's mesh (1 × 0.6 × 0.8 hexahedra, where the trilinear
 //     basis is harmonic, hence what MFS should find): partition of unity ≤ 1e-10,
 //     N_i(x_j) = δ_ij to the fit's accuracy (shrinking with samples per edge), and MFS
-//     against trilinear ≤ 1e-3 pointwise from the default 4 samples per edge;
+//     against trilinear ≤ 1e-3 pointwise from 4 samples per edge on;
 //   - the patch test under the method's own quadrature with MFS bases: an affine
 //     displacement leaves no force on interior nodes (no ghost forces), rigid translation none anywhere.
 #include <gtest/gtest.h>
@@ -145,13 +145,13 @@ TEST(HarmonicMethod, MfsBasesArePartitionsOfUnityInterpolatingAndNearlyTrilinear
     EXPECT_LT(errors.nodal, 2e-2);
     return errors;
   };
-  // Against samples per edge at the default offset; from the default 4 samples on the
+  // Against samples per edge at the default offset; from 4 samples on the
   // MFS basis is the trilinear one to 1e-3 pointwise.
   const double offset = MfsOptions{}.offset;
   const BasisErrors coarse = row(3, offset);
   for (int samples : {4, 5, 6}) EXPECT_LT(row(samples, offset).trilinear, 1e-3);
   EXPECT_LT(row(8, offset).nodal, 0.1 * coarse.nodal);
-  // Against the offset ξ at the default 4 samples (the paper's 0.1, eq. (12)).
+  // Against the offset ξ at 4 samples (the paper's 0.1, eq. (12)).
   for (double other : {0.1, 0.15, 0.3, 0.5}) row(4, other);
 }
 
