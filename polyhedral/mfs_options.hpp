@@ -5,16 +5,20 @@ namespace altfem::harmonic {
 
 struct MfsOptions {
   /// Kernel centres per edge besides its end nodes (the paper: about 3-5). Faces are
-  /// sampled at about the same spacing.
+  /// sampled at about the same spacing. 5: on a non-convex L-prism 4 leave N_i(x_j) off
+  /// δ_ij by 0.105 at the re-entrant edge, 5 by 0.083 (ex5_harmonic_basis, unit_harmonic);
+  /// on boxes 4 already give the trilinear basis to 9e-4 at half the cost (verify_harmonic,
+  /// bench_polyhedral_element).
   int edge_samples = 5;
   /// Collocation points per kernel centre (m ≈ 3n, eq. (13)): a denser sampling of
   /// the same kind.
   int collocation_factor = 3;
   /// ξ of eq. (12): centres move outward by ξ · size(e) (the element's diameter) along
-  /// the interpolated normal. The paper uses 0.1; measured here (unit tests, harmonic
-  /// basis of the unit cube against the trilinear one, 5 edge samples): ξ = 0.1 misses
-  /// the trilinear basis by 2.5e-3, ξ = 0.2 by 3.7e-4, and ξ = 0.3 makes the least-squares
-  /// system so ill-conditioned that the gradients lose digits.
+  /// the interpolated normal. The paper uses 0.1. On box cells the MFS basis approaches
+  /// the trilinear one faster the farther the centres (verify_harmonic prints the table;
+  /// 4 edge samples: ξ = 0.1 misses it by 5.8e-3, 0.2 by 8.8e-4, 0.3 by 2.0e-4, 0.5 by
+  /// 1.5e-5), but far centres fit the kinks of non-convex cells' boundary data worse;
+  /// 0.2 is kept until the non-convex cells are measured the same way.
   double offset = 0.2;
 };
 

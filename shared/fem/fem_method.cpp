@@ -7,6 +7,7 @@
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
 namespace altfem {
@@ -38,8 +39,7 @@ public:
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_volume_mesh(mesh_);
-    grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-                                                     displacement.data(), displacement.size() / 3, 3));
+    add_nodal_displacement(grid, displacement);
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
@@ -47,15 +47,10 @@ public:
     return embedding_->displacement(displacement);
   }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
-    Eigen::VectorXd values(3 * mesh_.nodes.rows());
-    for (Eigen::Index node = 0; node < mesh_.nodes.rows(); ++node)
-      values.segment<3>(3 * node) = field(mesh_.nodes.row(node).transpose());
-    return values;
+    return interpolate_at_nodes(mesh_.nodes, field);
   }
   nlohmann::json facts() const override {
-    return {{"surface_vertices", surface_.vertices.rows()},
-            {"surface_vertices_outside_mesh", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}};
+    return embedding_facts(surface_, *embedding_);
   }
 
 private:

@@ -95,8 +95,9 @@ const MethodSceneBlock& fem_scene_block() {
   return block;
 }
 
-FemSpec fem_spec(const Scene& scene) {
-  const json fem = resolve_method_block(scene, fem_scene_block());
+FemSpec fem_spec(const Scene& scene) { return fem_spec_from_block(resolve_method_block(scene, fem_scene_block())); }
+
+FemSpec fem_spec_from_block(const json& fem) {
   FemSpec spec;
   spec.element = *element_type_from_name(fem["element"].get<std::string>());
   const std::string mesh = fem["mesh"];

@@ -30,6 +30,9 @@ const MethodSceneBlock& fem_scene_block();
 
 /// The resolved /discretization/fem of `scene` as options. Throws InputError for a bad block.
 FemSpec fem_spec(const Scene& scene);
+/// The options of a block already resolved by fem_scene_block() (rule and complete), e.g.
+/// the volume mesh the harmonic method converts (discretization.harmonic.convert).
+FemSpec fem_spec_from_block(const nlohmann::json& fem);
 
 /// max_cell_size, or the default diagonal / 15 of the loaded geometry's bounds.
 double fem_max_cell_size(const FemSpec& fem, const Eigen::AlignedBox3d& geometry_bounds);

@@ -1,0 +1,115 @@
+#include "polyhedral/harmonic_element_bases.hpp"
+
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <string>
+
+#include "polyhedral/harmonic_tabulation.hpp"
+#include "shared/common/error.hpp"
+#include "shared/element/geometry_map.hpp"
+#include "shared/fem/tabulate_lagrange.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
+
+namespace altfem::harmonic {
+
+HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind,
+                                           const MfsOptions& options)
+    : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
+  const int cells = mesh.cell_count();
+  // An exception must not leave the OpenMP region: a cell whose basis fails is
+  // recorded (the first in cell order is reported) and its basis left empty.
+  std::atomic<int> failed_cell{cells};
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int cell = 0; cell < cells; ++cell) {
+    Cell& entry = cells_[cell];
+    if (kind == HarmonicBasisKind::automatic) {
+      if (auto plain = plain_cell(mesh, cell)) {
+        entry.plain = plain->type;
+        entry.nodes = std::move(plain->nodes);
+        continue;
+      }
+    }
+    entry.nodes = cell_nodes(mesh, cell);
+    try {
+      entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+      if (std::isfinite(entry.mfs->boundary_residual())) continue;
+    } catch (const std::exception&) {
+    }
+    for (int current = failed_cell.load(); cell < current && !failed_cell.compare_exchange_weak(current, cell);) {}
+  }
+  if (failed_cell < cells)
+    throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
+                         ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
+}
+
+double HarmonicElementBases::max_boundary_residual() const {
+  double largest = 0;
+  for (const auto& cell : cells_)
+    if (cell.mfs) largest = std::max(largest, cell.mfs->boundary_residual());
+  return largest;
+}
+
+TabulatedElements HarmonicElementBases::tabulate(int strength, const std::vector<int>& materials) const {
+  const int cells = cell_count();
+  // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
+  // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
+  // the cell's element in its type's table.
+  const std::array<ElementType, 2> plain_types{ElementType::tet4, ElementType::hex8};
+  std::array<TabulatedElements, 2> plain_tables;
+  std::vector<int> plain_row(cells, -1);
+  for (size_t t = 0; t < plain_types.size(); ++t) {
+    const int corners = element_corner_count(plain_types[t]);
+    std::vector<int> rows;
+    for (int cell = 0; cell < cells; ++cell)
+      if (cells_[cell].plain == plain_types[t]) plain_row[cell] = static_cast<int>(rows.size()), rows.push_back(cell);
+    if (rows.empty()) continue;
+    VolumeMesh volume;
+    volume.element_type = plain_types[t];
+    volume.nodes = mesh_.nodes;
+    volume.cells.resize(static_cast<Eigen::Index>(rows.size()), corners);
+    for (size_t row = 0; row < rows.size(); ++row)
+      for (int corner = 0; corner < corners; ++corner)
+        volume.cells(static_cast<Eigen::Index>(row), corner) = cells_[rows[row]].nodes[corner];
+    plain_tables[t] = tabulate_lagrange(volume, strength);
+  }
+  // MFS cells: an exact rule on the polyhedron and the consistency correction.
+  std::vector<HarmonicTabulation> mfs_tables(cells);
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int cell = 0; cell < cells; ++cell)
+    if (cells_[cell].mfs)
+      mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, polyhedron_rule(cell_polyhedron(mesh_, cell), strength),
+                                                   true);
+  TabulatedElements elements;
+  for (int cell = 0; cell < cells; ++cell) {
+    if (const auto& type = cells_[cell].plain) {
+      const ElementView view = plain_tables[*type == plain_types[0] ? 0 : 1][plain_row[cell]];
+      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients(
+          view.gradients, static_cast<Eigen::Index>(view.point_count()) * view.basis_count(), 3);
+      elements.add(view.basis, view.weights, view.values, gradients, materials.empty() ? 0 : materials[cell]);
+    } else {
+      const HarmonicTabulation& table = mfs_tables[cell];
+      elements.add(cells_[cell].nodes, {table.weights.data(), static_cast<size_t>(table.weights.size())}, table.values,
+                   table.gradients, materials.empty() ? 0 : materials[cell]);
+      mfs_tables[cell] = {};  // release as we go
+    }
+  }
+  return elements;
+}
+
+void HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const {
+  const Cell& entry = cells_[cell];
+  if (entry.mfs) {
+    Eigen::MatrixXd gradients;
+    entry.mfs->evaluate(x, values, gradients);
+    return;
+  }
+  const ReferenceElement& element = reference_element(*entry.plain);
+  const InverseMapResult inverse = map_to_reference(element, mesh_.nodes(entry.nodes, Eigen::all), x);
+  if (!inverse.converged)
+    throw NumericalError("harmonic embedding: the inverse map of cell " + std::to_string(cell) + " did not converge");
+  values.resize(element.node_count());
+  element.evaluate(inverse.xi, values);
+}
+
+}  // namespace altfem::harmonic

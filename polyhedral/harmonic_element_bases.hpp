@@ -1,0 +1,57 @@
+#pragma once
+// The basis of every cell of a polyhedral mesh for the harmonic method (Martin et al.
+// 2008 §4-5): nodal, so basis function i is mesh node i and neighbours share it; on a
+// plain Tet4/Hex8 cell (with HarmonicBasisKind::automatic) the closed-form linear /
+// trilinear basis, on every other cell the MFS harmonic basis, built in parallel over
+// cells and kept for tabulation and for evaluation at points (embedding).
+#include <Eigen/Core>
+#include <optional>
+#include <vector>
+
+#include "polyhedral/element_harmonic_basis.hpp"
+#include "polyhedral/harmonic_scene_block.hpp"
+#include "polyhedral/plain_cells.hpp"
+#include "shared/assembly/tabulated_elements.hpp"
+#include "shared/mesh/polyhedral_mesh.hpp"
+
+namespace altfem::harmonic {
+
+class HarmonicElementBases {
+public:
+  /// Keeps a reference to `mesh`. Throws NumericalError naming the cell when an MFS fit
+  /// is not finite.
+  HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options);
+
+  int cell_count() const { return static_cast<int>(cells_.size()); }
+  /// The cell's global basis (node) indices, in the order of its values.
+  const std::vector<int>& nodes(int cell) const { return cells_[cell].nodes; }
+  /// The closed-form element of a plain cell, or nullopt for an MFS cell.
+  std::optional<ElementType> plain_type(int cell) const { return cells_[cell].plain; }
+  /// The MFS basis of an MFS cell (nullptr for a plain cell).
+  const ElementHarmonicBasis* mfs_basis(int cell) const {
+    return cells_[cell].mfs ? &*cells_[cell].mfs : nullptr;
+  }
+  /// The largest RMS boundary misfit of the MFS fits (0 without MFS cells).
+  double max_boundary_residual() const;
+
+  /// Every cell with an exact rule of `strength`: tet_rule/hex_rule on plain cells,
+  /// polyhedron_rule with harmonic_tabulation's consistency correction on MFS cells.
+  /// Element e is cell e, of material materials[e] (empty: all 0). Parallel over cells.
+  TabulatedElements tabulate(int strength, const std::vector<int>& materials = {}) const;
+
+  /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
+  /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an
+  /// MFS cell by its kernel expansion. Throws NumericalError when the inverse map fails.
+  void evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const;
+
+private:
+  struct Cell {
+    std::vector<int> nodes;
+    std::optional<ElementType> plain;
+    std::optional<ElementHarmonicBasis> mfs;
+  };
+  const PolyhedralMesh& mesh_;
+  std::vector<Cell> cells_;
+};
+
+}  // namespace altfem::harmonic

@@ -1,0 +1,102 @@
+#include "polyhedral/harmonic_method.hpp"
+
+#include <chrono>
+
+#include "polyhedral/harmonic_basis_evaluator.hpp"
+#include "polyhedral/harmonic_element_bases.hpp"
+#include "polyhedral/harmonic_scene_block.hpp"
+#include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/fem/fem_mesh.hpp"
+#include "shared/fem/nodal_dirichlet.hpp"
+#include "shared/io/polyhedral_grid.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/simulation/nodal_basis.hpp"
+#include "shared/simulation/scene_materials.hpp"
+
+namespace altfem::harmonic {
+
+namespace {
+
+class HarmonicMethod final : public MethodInstance {
+public:
+  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry)
+      : materials_(scene) {
+    const HarmonicSpec spec = harmonic_spec(scene);
+    // mesh `convert` (the only kind so far): fem's tet or hex mesh, cell by cell.
+    const VolumeMesh volume = build_fem_mesh(spec.convert, geometry);
+    mesh_ = polyhedral_mesh_from_volume_mesh(volume);
+    const auto start = std::chrono::steady_clock::now();
+    bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
+    DiscretizationParts parts;
+    parts.elements = bases_->tabulate(spec.quadrature_order, materials_.ids_of(mesh_.cell_centroids));
+    quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    parts.materials = materials_.pointers();
+    // The basis is nodal (N_i(x_j) = δ_ij up to the fit), so conditions are strong on
+    // the nodes, as in fem; the lumped mass suits its partition of unity.
+    parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
+    parts.explicit_mass = ExplicitMassKind::lumped;
+    discretization_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
+    surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume).surface;
+    evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
+    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+  }
+
+  const Discretization& discretization() const override { return *discretization_; }
+  nlohmann::json element_counts() const override {
+    long long tet4 = 0, hex8 = 0, mfs = 0;
+    for (int cell = 0; cell < bases_->cell_count(); ++cell) {
+      const auto type = bases_->plain_type(cell);
+      (type ? (*type == ElementType::tet4 ? tet4 : hex8) : mfs) += 1;
+    }
+    // Written as polyhedra (VTK 42) whatever their basis: not the Lagrange names.
+    nlohmann::json counts = nlohmann::json::object();
+    if (tet4 > 0) counts["linear_tetrahedron"] = tet4;
+    if (hex8 > 0) counts["trilinear_hexahedron"] = hex8;
+    if (mfs > 0) counts["mfs_polyhedron"] = mfs;
+    return counts;
+  }
+  long long quadrature_points() const override { return discretization_->elements().point_count(); }
+  double quadrature_seconds() const override { return quadrature_seconds_; }
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
+    UnstructuredGrid grid = grid_from_polyhedral_mesh(mesh_);
+    add_nodal_displacement(grid, displacement);
+    return grid;
+  }
+  const SurfaceMesh& embedded_surface() const override { return surface_; }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
+    return embedding_->displacement(displacement);
+  }
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    return interpolate_at_nodes(mesh_.nodes, field);
+  }
+  nlohmann::json facts() const override {
+    nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
+    return facts;
+  }
+
+private:
+  SceneMaterials materials_;
+  PolyhedralMesh mesh_;
+  std::unique_ptr<HarmonicElementBases> bases_;
+  std::unique_ptr<TabulatedDiscretization> discretization_;
+  SurfaceMesh surface_;
+  std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
+  std::unique_ptr<BasisEmbedding> embedding_;
+  double quadrature_seconds_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<MethodInstance> make_harmonic_method(const Scene& scene, const SceneGeometry& geometry) {
+  return std::make_unique<HarmonicMethod>(scene, geometry);
+}
+
+const MethodDescription& harmonic_method() {
+  static const MethodDescription method{harmonic_scene_block(), make_harmonic_method,
+                                        "harmonic-basis polyhedral FEM (MFS bases, Martin et al. 2008)"};
+  return method;
+}
+
+}  // namespace altfem::harmonic

@@ -1,0 +1,38 @@
+#pragma once
+// The `harmonic` block of a scene (docs/scene-schema.md, "harmonic"): its rules, the
+// defaults that depend on the geometry, and the plain options the harmonic method reads.
+#include <array>
+#include <string_view>
+
+#include "polyhedral/mfs_options.hpp"
+#include "shared/fem/fem_scene_block.hpp"
+#include "shared/scene/method_scene_block.hpp"
+
+namespace altfem::harmonic {
+
+/// Where the polyhedral mesh comes from. `convert`: a tet or hex mesh built like fem's
+/// (its block under `convert`), converted cell by cell. Hexahedral slicing joins later
+/// as a second value with its own block.
+enum class HarmonicMeshKind { convert };
+inline constexpr std::array<std::string_view, 1> harmonic_mesh_names{"convert"};
+
+/// Which cells get an MFS basis. `automatic`: plain Tet4/Hex8 cells keep their closed-form
+/// linear/trilinear basis (the harmonic basis of a tet, and the trilinear one that the
+/// MFS basis of a hex approaches), MFS on every other polyhedron; `mfs`: MFS everywhere.
+enum class HarmonicBasisKind { automatic, mfs };
+inline constexpr std::array<std::string_view, 2> harmonic_basis_names{"auto", "mfs"};
+
+struct HarmonicSpec {
+  HarmonicMeshKind mesh = HarmonicMeshKind::convert;
+  FemSpec convert;          ///< the volume mesh `convert` converts (resolved fem block)
+  MfsOptions mfs;           ///< edge_samples and offset from the block
+  int quadrature_order = 2; ///< strength of each cell's rule (polyhedron_rule, tet_rule, hex_rule)
+  HarmonicBasisKind basis = HarmonicBasisKind::automatic;
+};
+
+const MethodSceneBlock& harmonic_scene_block();
+
+/// The resolved /discretization/harmonic of `scene` as options. Throws InputError for a bad block.
+HarmonicSpec harmonic_spec(const Scene& scene);
+
+}  // namespace altfem::harmonic

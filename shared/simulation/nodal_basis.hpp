@@ -1,0 +1,25 @@
+#pragma once
+// What every method with a nodal basis (basis function i is node i: fem, harmonic, the
+// FCM's background nodes) does the same way in its MethodInstance.
+#include <Eigen/Core>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "shared/io/unstructured_grid.hpp"
+#include "shared/mesh/surface_mesh.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+
+namespace altfem {
+
+/// The coefficients (3 × #nodes) of a vector field in a nodal basis: its values at the
+/// nodes (#nodes × 3).
+Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
+                                     const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field);
+
+/// Adds the point data "displacement" (#points × 3) of nodal coefficients u (3 × #points).
+void add_nodal_displacement(UnstructuredGrid& grid, const Eigen::VectorXd& displacement);
+
+/// The facts for summary.json of a surface embedded in a method's elements.
+nlohmann::json embedding_facts(const SurfaceMesh& surface, const BasisEmbedding& embedding);
+
+}  // namespace altfem
