@@ -39,7 +39,8 @@ TEST_P(MonomialFigure, SimplifiedRulesAreAsExactAsTheInitialOnes) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, MonomialFigure,
                          ::testing::Values(SimplificationMethod::linear_program,
-                                           SimplificationMethod::nonnegative_least_squares),
+                                           SimplificationMethod::nonnegative_least_squares,
+                                           SimplificationMethod::caratheodory),
                          [](const auto& info) { return std::string(simplification_method_name(info.param)); });
 
 }  // namespace

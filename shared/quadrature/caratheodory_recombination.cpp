@@ -1,0 +1,91 @@
+#include "shared/quadrature/caratheodory_recombination.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <vector>
+
+namespace altfem {
+namespace {
+
+/// Pivots below this fraction of the largest count as dependent directions.
+constexpr double rank_threshold = 1e-12;
+
+/// Carathéodory–Steinitz elimination on the columns C (r × n) with weights λ > 0 (in
+/// place): along each null vector v of C (C v = 0, so C λ is unchanged), step until
+/// the first weight reaches zero and drop that column; the remaining null vectors are
+/// made zero there first, so later steps never revive it. Leaves at most rank(C)
+/// non-zeros. Tchernychova 2016, §3.2 (the null space computed once, by a pivoted QR of Cᵀ).
+void eliminate(const Eigen::MatrixXd& C, Eigen::VectorXd& lambda) {
+  const Eigen::Index n = C.cols();
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C.transpose());
+  qr.setThreshold(rank_threshold);
+  const Eigen::Index rank = qr.rank();
+  if (rank >= n) return;
+  const Eigen::MatrixXd Q = qr.householderQ();  // n × n; its last n − rank columns span null(C)
+  Eigen::MatrixXd null_space = Q.rightCols(n - rank);
+  for (Eigen::Index k = 0; k < null_space.cols(); ++k) {
+    Eigen::Ref<Eigen::VectorXd> v = null_space.col(k);
+    if (v.maxCoeff() < -v.minCoeff()) v = -v;  // a positive entry to step against
+    Eigen::Index pivot = -1;
+    double step = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      if (v(i) > 0.0 && lambda(i) > 0.0 && (pivot < 0 || lambda(i) / v(i) < step)) {
+        step = lambda(i) / v(i);
+        pivot = i;
+      }
+    }
+    if (pivot < 0) continue;
+    lambda -= step * v;
+    lambda(pivot) = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) lambda(i) = std::max(lambda(i), 0.0);
+    for (Eigen::Index later = k + 1; later < null_space.cols(); ++later) {
+      null_space.col(later) -= (null_space(pivot, later) / v(pivot)) * v;
+      null_space(pivot, later) = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd caratheodory_recombination(const Eigen::Ref<const Eigen::MatrixXd>& columns,
+                                           const Eigen::Ref<const Eigen::VectorXd>& weights,
+                                           Eigen::Index target_size) {
+  const Eigen::Index rows = columns.rows();
+  Eigen::VectorXd result = weights;
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index j = 0; j < weights.size(); ++j) {
+    if (weights(j) > 0.0) active.push_back(j);
+  }
+  const Eigen::Index group_count = 2 * std::max<Eigen::Index>(rows, 1);
+  Eigen::MatrixXd sums(rows, group_count);
+  Eigen::VectorXd lambda(group_count);
+  while (static_cast<Eigen::Index>(active.size()) > target_size) {
+    // Consecutive groups of (nearly) equal size; a group's column is Σ w_j a_j.
+    const Eigen::Index n = static_cast<Eigen::Index>(active.size());
+    const Eigen::Index groups = std::min(group_count, n);
+    const auto begin = [&](Eigen::Index g) { return g * n / groups; };
+    Eigen::MatrixXd group_sums(rows, groups);
+    for (Eigen::Index g = 0; g < groups; ++g) {
+      group_sums.col(g).setZero();
+      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i) group_sums.col(g) += result(active[i]) * columns.col(active[i]);
+    }
+    Eigen::VectorXd group_weights = Eigen::VectorXd::Ones(groups);
+    eliminate(group_sums, group_weights);
+    std::vector<Eigen::Index> kept;
+    for (Eigen::Index g = 0; g < groups; ++g) {
+      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i) {
+        if (group_weights(g) > 0.0) {
+          result(active[i]) *= group_weights(g);
+          kept.push_back(active[i]);
+        } else {
+          result(active[i]) = 0.0;
+        }
+      }
+    }
+    if (kept.size() == active.size()) break;  // independent group sums: nothing to eliminate
+    active = std::move(kept);
+  }
+  return result;
+}
+
+}  // namespace altfem
