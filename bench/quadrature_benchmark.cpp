@@ -1,6 +1,6 @@
 // FCM quadrature (issue #16; Longva et al. 2020, §4.4–4.5, §6.3), medians printed:
 //
-//   bench_quadrature [--repetitions N] [--method lp|nnls] [--part cell|cylinder]
+//   bench_quadrature [--repetitions N] [--method lp|nnls|caratheodory] [--part cell|cylinder]
 //
 // (both methods and both parts by default). Wall-clock medians are printed with the
 // process's CPU time over the same runs: on a shared machine the ratio CPU / (wall ×
@@ -16,6 +16,7 @@
 #include <omp.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -64,7 +65,7 @@ void simplify_one_cell(int repetitions, const std::vector<SimplificationMethod>&
       result = simplify_quadrature(rule, {4, method, 1e-12});
       times.push_back(seconds_since(start));
     }
-    std::printf("  %-4s median %.3f ms, %lld points, residual %.2e%s\n",
+    std::printf("  %-12s median %.3f ms, %lld points, residual %.2e%s\n",
                 std::string(simplification_method_name(method)).c_str(), 1e3 * bench::median(times),
                 static_cast<long long>(result.rule.points.rows()), result.residual, result.failed ? " FAILED" : "");
   }
@@ -94,7 +95,7 @@ void hollow_cylinder(int repetitions, const std::vector<SimplificationMethod>& m
     double wall = 0.0;
     for (int r = 0; r < repetitions; ++r) wall += generation[r] + total[r];
     const double cpu_share = (bench::process_cpu_seconds() - cpu_start) / (wall * omp_get_max_threads());
-    std::printf("  %-4s %d cut + %d inside cells; %lld -> %lld points; %d kept unsimplified; max residual %.2e\n"
+    std::printf("  %-12s %d cut + %d inside cells; %lld -> %lld points; %d kept unsimplified; max residual %.2e\n"
                 "       median generation only %.3f s, generation + simplification %.3f s (CPU share %.0f%%)\n",
                 std::string(simplification_method_name(method)).c_str(), rules.cut_cells, rules.inside_cells,
                 static_cast<long long>(rules.initial_points), static_cast<long long>(rules.final_points),
@@ -107,20 +108,28 @@ void hollow_cylinder(int repetitions, const std::vector<SimplificationMethod>& m
 
 int main(int argc, char** argv) {
   int repetitions = 5;
-  std::vector<SimplificationMethod> methods = {SimplificationMethod::linear_program,
-                                               SimplificationMethod::nonnegative_least_squares};
+  const std::vector<SimplificationMethod> all_methods = {SimplificationMethod::linear_program,
+                                                         SimplificationMethod::nonnegative_least_squares,
+                                                         SimplificationMethod::caratheodory};
+  std::vector<SimplificationMethod> methods = all_methods;
   std::string part;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--repetitions") {
       repetitions = std::max(1, std::atoi(value.c_str()));
-    } else if (key == "--method" && (value == "lp" || value == "nnls")) {
-      methods = {value == "lp" ? SimplificationMethod::linear_program : SimplificationMethod::nonnegative_least_squares};
+    } else if (key == "--method") {
+      const auto named = std::find_if(all_methods.begin(), all_methods.end(),
+                                      [&](SimplificationMethod m) { return simplification_method_name(m) == value; });
+      if (named == all_methods.end()) {
+        std::fprintf(stderr, "bench_quadrature: --method %s: expected lp, nnls or caratheodory\n", value.c_str());
+        return 2;
+      }
+      methods = {*named};
     } else if (key == "--part" && (value == "cell" || value == "cylinder")) {
       part = value;
     } else {
-      std::fprintf(stderr, "bench_quadrature: unknown option %s %s (expected --repetitions N, --method lp|nnls, "
-                           "--part cell|cylinder)\n", key.c_str(), value.c_str());
+      std::fprintf(stderr, "bench_quadrature: unknown option %s %s (expected --repetitions N, --method "
+                           "lp|nnls|caratheodory, --part cell|cylinder)\n", key.c_str(), value.c_str());
       return 2;
     }
   }
