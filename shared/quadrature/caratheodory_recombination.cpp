@@ -17,12 +17,17 @@ constexpr double rank_threshold = 1e-12;
 /// non-zeros. Tchernychova 2016, §3.2 (the null space computed once, by a pivoted QR of Cᵀ).
 void eliminate(const Eigen::MatrixXd& C, Eigen::VectorXd& lambda) {
   const Eigen::Index n = C.cols();
-  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C.transpose());
+  // C Π = Q [R₁ R₂] with R₁ (rank × rank) upper triangular: null(C) = Π [−R₁⁻¹ R₂; I].
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
   qr.setThreshold(rank_threshold);
   const Eigen::Index rank = qr.rank();
   if (rank >= n) return;
-  const Eigen::MatrixXd Q = qr.householderQ();  // n × n; its last n − rank columns span null(C)
-  Eigen::MatrixXd null_space = Q.rightCols(n - rank);
+  const Eigen::MatrixXd& R = qr.matrixQR();
+  Eigen::MatrixXd permuted(n, n - rank);
+  permuted.topRows(rank) = -R.topRightCorner(rank, n - rank);
+  R.topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solveInPlace(permuted.topRows(rank));
+  permuted.bottomRows(n - rank).setIdentity();
+  Eigen::MatrixXd null_space = qr.colsPermutation() * permuted;
   for (Eigen::Index k = 0; k < null_space.cols(); ++k) {
     Eigen::Ref<Eigen::VectorXd> v = null_space.col(k);
     if (v.maxCoeff() < -v.minCoeff()) v = -v;  // a positive entry to step against
