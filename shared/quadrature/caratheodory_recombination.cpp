@@ -30,7 +30,7 @@ std::pair<Eigen::Index, double> ratio_test(const Eigen::Ref<const Eigen::VectorX
 /// place): along each null vector v of C (C v = 0, so C λ is unchanged), step until
 /// the first weight reaches zero and drop that column; the remaining null vectors are
 /// made zero there first, so later steps never revive it. Leaves at most rank(C)
-/// non-zeros. Tchernychova 2016, §3.2 (the null space computed once, by a pivoted QR of C).
+/// non-zeros. The null space is computed once, by a pivoted QR of C.
 void eliminate(const Eigen::Ref<const Eigen::MatrixXd>& C, Eigen::VectorXd& lambda) {
   const Eigen::Index n = C.cols();
   // C Π = Q [R₁ R₂] with R₁ (rank × rank) upper triangular: null(C) = Π [−R₁⁻¹ R₂; I].
@@ -46,7 +46,7 @@ void eliminate(const Eigen::Ref<const Eigen::MatrixXd>& C, Eigen::VectorXd& lamb
   Eigen::MatrixXd null_space = qr.colsPermutation() * permuted;
   for (Eigen::Index k = 0; k < null_space.cols(); ++k) {
     Eigen::Ref<Eigen::VectorXd> v = null_space.col(k);
-    // ±v: either direction keeps C λ; the one that reaches a zero weight first.
+    // Either direction keeps C λ: v, or −v when v has no positive entry on the remaining weights.
     auto [pivot, step] = ratio_test(v, lambda);
     if (pivot < 0) {
       v = -v;
