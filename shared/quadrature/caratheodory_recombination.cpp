@@ -10,7 +10,7 @@ namespace altfem {
 namespace {
 
 /// Pivots below this fraction of the largest count as dependent directions.
-constexpr double rank_threshold = 1e-12;
+constexpr double rank_threshold = 1e-14;
 
 /// The largest step t with λ − t v >= 0 and the index that reaches zero first, over
 /// the λ_i > 0; pivot −1 when v has no positive entry there.
