@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 #include <cstdio>
 
+#include "simplification_methods.hpp"
 #include "fcm/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -51,11 +52,8 @@ TEST_P(ThinSlabs, SimplifiedRulesKeepNearlyDependentMomentsToRounding) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, ThinSlabs,
-                         ::testing::Values(SimplificationMethod::linear_program,
-                                           SimplificationMethod::nonnegative_least_squares,
-                                           SimplificationMethod::caratheodory),
-                         [](const auto& info) { return std::string(simplification_method_name(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Methods, ThinSlabs, testing::every_simplification_method(),
+                         testing::simplification_method_test_name);
 
 }  // namespace
 }  // namespace altfem::fcm
