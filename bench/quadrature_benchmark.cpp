@@ -2,13 +2,14 @@
 //
 //   bench_quadrature [--repetitions N] [--method lp|nnls|caratheodory] [--part cell|cylinder]
 //
-// (both methods and both parts by default). Wall-clock medians are printed with the
+// (all three methods and both parts by default). Wall-clock medians are printed with the
 // process's CPU time over the same runs: on a shared machine the ratio CPU / (wall ×
 // threads) says how much of the machine the benchmark actually had.
 //
 // 1. Simplifying one Hex20 cut cell at m = 4 from about 3,000 intersection points, with
-//    the LP (Clp) and the LP-free NNLS (Lawson–Hanson) simplifier, on one thread
-//    (target: <= 2 ms median each), with the moment residuals.
+//    the LP (Clp) and the LP-free NNLS (Lawson–Hanson) and Carathéodory (recombination)
+//    simplifiers, on one thread (target: <= 2 ms median each), with the moment
+//    residuals, and the default's phases (moment matrix, recombination).
 // 2. Whole-mesh generation + simplification for a hollow cylinder (length 16, radii
 //    1 and 0.5) in a 7 × 7 × 56 Hex20 grid of cubes, ~2,000 cells meeting the object as
 //    in §6.2–6.3, on all threads (target: <= 2 s on 2 cores), with point counts
@@ -131,8 +132,8 @@ int main(int argc, char** argv) {
                                                          SimplificationMethod::caratheodory};
   std::vector<SimplificationMethod> methods = all_methods;
   std::string part;
-  for (int i = 1; i + 1 < argc; i += 2) {
-    const std::string key = argv[i], value = argv[i + 1];
+  for (int i = 1; i < argc; i += 2) {
+    const std::string key = argv[i], value = i + 1 < argc ? argv[i + 1] : "";
     if (key == "--repetitions") {
       repetitions = std::max(1, std::atoi(value.c_str()));
     } else if (key == "--method") {
