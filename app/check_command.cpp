@@ -2,6 +2,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/method_registry.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 
@@ -33,15 +34,35 @@ nlohmann::json geometry_facts(const SceneGeometry& geometry) {
   return facts;
 }
 
+// What the method integrates, built as `run` builds it: its DOFs, and the volume
+// ∫ 1 dV = (interpolant of e_x)ᵀ · body_force(e_x) / ρ through its own quadrature
+// (the isoparametric volume of a curved mesh, the cut cells' volume of an embedded one).
+nlohmann::json method_facts(const Scene& scene, const SceneGeometry& geometry, const MethodDescription& method) {
+  const std::unique_ptr<MethodInstance> instance = method.factory(scene, geometry);
+  const Eigen::Vector3d unit_x = Eigen::Vector3d::UnitX();
+  const Eigen::VectorXd ones = instance->interpolate([&](const Eigen::Vector3d&) { return unit_x; });
+  const double mass = ones.dot(instance->discretization().body_force(unit_x));
+  const double volume = mass / scene.material.density;
+  return {{"dofs", instance->discretization().dof_count()},
+          {"elements", instance->element_counts()},
+          {"integrated_volume", volume},
+          {"volume_difference", volume / geometry.volume - 1.0}};
+}
+
 }  // namespace
 
-int check_command(const std::filesystem::path& scene_file, bool json) {
-  const Scene scene = load_scene(scene_file);
+int check_command(const std::filesystem::path& scene_file, const std::string& method, bool json) {
+  Scene scene = load_scene(scene_file);
+  const std::vector<std::string> methods = method.empty() ? available_methods() : std::vector<std::string>{method};
+  for (const auto& name : methods) (void)find_method(name);
+  resolve_method_blocks(scene, methods);
   const SceneGeometry geometry = load_scene_geometry(scene);
   for (const auto& warning : geometry.warnings) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
   const nlohmann::json facts = geometry_facts(geometry);
+  nlohmann::json built;
+  for (const auto& name : methods) built[name] = method_facts(scene, geometry, find_method(name));
   if (json) {
-    std::printf("%s\n", nlohmann::json{{"scene", scene.resolved}, {"geometry", facts}}.dump(2).c_str());
+    std::printf("%s\n", nlohmann::json{{"scene", scene.resolved}, {"geometry", facts}, {"methods", built}}.dump(2).c_str());
     return 0;
   }
   std::printf("%s: valid scene '%s'\n", scene_file.c_str(), scene.name.c_str());
@@ -56,6 +77,10 @@ int check_command(const std::filesystem::path& scene_file, bool json) {
   std::printf("\nbounding box: [%g, %g, %g] – [%g, %g, %g]\nvolume: %.6g\nclosed: %s, manifold: %s\n", box.min().x(),
               box.min().y(), box.min().z(), box.max().x(), box.max().y(), box.max().z(), geometry.volume,
               geometry.closed ? "yes" : "no", geometry.manifold ? "yes" : "no");
+  for (const auto& [name, method_facts] : built.items())
+    std::printf("%s: %lld DOFs, integrated volume %.6g (%+.2e relative to the geometry's)\n", name.c_str(),
+                method_facts["dofs"].get<long long>(), method_facts["integrated_volume"].get<double>(),
+                method_facts["volume_difference"].get<double>());
   return 0;
 }
 

@@ -46,8 +46,8 @@ ComparePlan plan_of(const CompareArguments& arguments, const Scene& scene) {
     for (const auto& sweep : arguments.sweeps) plan.sweeps.push_back(parse_sweep(sweep));
   }
   if (!arguments.reference.empty()) plan.reference = parse_reference(arguments.reference);
-  for (const auto& method : plan.methods) (void)method_factory(method);  // throws naming the available ones
-  if (plan.reference) (void)method_factory(plan.reference->method);
+  for (const auto& method : plan.methods) (void)find_method(method, "--methods");  // throws naming the available ones
+  if (plan.reference) (void)find_method(plan.reference->method, "--reference");
   return plan;
 }
 
@@ -77,7 +77,9 @@ std::string utc_now() {
 std::string hash_of(const Configuration& configuration, const std::string& scene_text,
                     const std::filesystem::path& scene_file) {
   try {
-    return run_hash(configuration.method, parse_scene(scene_text, scene_file, configuration.overrides).resolved);
+    Scene scene = parse_scene(scene_text, scene_file, configuration.overrides);
+    resolve_method_blocks(scene, {configuration.method});
+    return run_hash(configuration.method, scene.resolved);
   } catch (const InputError&) {
     json invalid{{"scene", scene_text}};
     for (const auto& override_ : configuration.overrides) invalid["overrides"].push_back(override_.text);

@@ -1,33 +1,37 @@
 #include "app/method_registry.hpp"
 
-#include <map>
-
+#include "fcm/fcm_method.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_method.hpp"
 
 namespace altfem::cli {
 
-namespace {
-// fcm, dg and harmonic join here as their libraries land.
-const std::map<std::string, MethodFactory>& registry() {
-  static const std::map<std::string, MethodFactory> methods{{"fem", make_fem_method}};
+const std::vector<MethodDescription>& registered_methods() {
+  static const std::vector<MethodDescription> methods{fem_method(), fcm::fcm_method()};
   return methods;
 }
-}  // namespace
 
 std::vector<std::string> available_methods() {
   std::vector<std::string> names;
-  for (const auto& [name, factory] : registry()) names.push_back(name);
+  for (const auto& method : registered_methods()) names.emplace_back(method.scene_block.name);
   return names;
 }
 
-MethodFactory method_factory(const std::string& name) {
-  const auto found = registry().find(name);
-  if (found != registry().end()) return found->second;
+const MethodDescription& find_method(const std::string& name, std::string_view option) {
+  for (const auto& method : registered_methods())
+    if (method.scene_block.name == name) return method;
   std::string list;
   for (const auto& available : available_methods()) list += (list.empty() ? "" : ", ") + available;
-  throw InputError(input_message("--method", "", "method '" + name + "' is not available in this build (available: " +
+  throw InputError(input_message(std::string(option), "", "method '" + name + "' is not available in this build (available: " +
                                                      list + ")"));
+}
+
+void resolve_method_blocks(Scene& scene, const std::vector<std::string>& methods) {
+  std::vector<MethodSceneBlock> blocks;
+  for (const auto& method : registered_methods()) blocks.push_back(method.scene_block);
+  check_method_block_names(scene, blocks);
+  for (const auto& name : methods)
+    scene.resolved["discretization"][name] = resolve_method_block(scene, find_method(name).scene_block);
 }
 
 }  // namespace altfem::cli

@@ -111,12 +111,14 @@ RunResult run_once(altfem::Scene scene) {
 // medians of every phase.
 int run_case(const std::vector<std::string>& arguments, int repetitions) {
   altfem::Scene scene = altfem::load_scene(fs::path(ALTFEM_SOURCE_DIR) / "scenes" / (arguments[0] + ".json"));
+  // The fem block is resolved by the method from scene.resolved (fem_spec).
+  json& fem = scene.resolved["discretization"]["fem"];
   if (arguments[0] == "cantilever") {
-    scene.fem.element = *altfem::element_type_from_name(arguments[1]);
-    scene.fem.mesh = altfem::FemMeshKind::grid;
-    scene.fem.resolution = {std::stoi(arguments[2]), std::stoi(arguments[3]), std::stoi(arguments[4])};
+    fem = {{"element", arguments[1]},
+           {"mesh", "grid"},
+           {"resolution", {std::stoi(arguments[2]), std::stoi(arguments[3]), std::stoi(arguments[4])}}};
   } else {
-    scene.fem.max_cell_size = std::stod(arguments[1]);
+    fem["max_cell_size"] = std::stod(arguments[1]);
     scene.time.steps = std::stoi(arguments[2]);
   }
   std::vector<RunResult> runs;

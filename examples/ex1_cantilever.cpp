@@ -26,7 +26,8 @@ int main(int argc, char** argv) {
   const SceneGeometry geometry = load_scene_geometry(scene);
 
   // 2. The mesh: a structured Hex20 grid of the beam's box (discretization.fem).
-  VolumeMesh mesh = build_fem_mesh(scene, geometry);
+  const FemSpec fem_options = fem_spec(scene);
+  VolumeMesh mesh = build_fem_mesh(fem_options, geometry);
   std::printf("mesh: %lld %s cells, %lld nodes\n", static_cast<long long>(mesh.cells.rows()),
               std::string(element_name(mesh.element_type)).c_str(), static_cast<long long>(mesh.nodes.rows()));
 
@@ -37,7 +38,7 @@ int main(int argc, char** argv) {
   // 4. The discretization: every cell tabulated at its quadrature points (weights
   //    w_q |det J|, ∇N_a), the nodes of the clamped region constrained.
   const auto discretization =
-      make_lagrange_discretization(mesh, *material, scene.dirichlet, scene.fem.quadrature_order, file);
+      make_lagrange_discretization(mesh, *material, scene.dirichlet, fem_options.quadrature_order, file);
   const Discretization& fem = *discretization;
 
   // 5. Static equilibrium: minimise Ψ(u) − f·u with the load f_a = ∫ ρ g N_a dV (equal

@@ -1,8 +1,7 @@
 #include "shared/fem/fem_mesh.hpp"
 
-#include <string>
+#include <stdexcept>
 
-#include "shared/common/error.hpp"
 #include "shared/mesh/curve_boundary.hpp"
 #include "shared/mesh/elevate_order.hpp"
 #include "shared/mesh/spatial_order.hpp"
@@ -12,14 +11,12 @@
 
 namespace altfem {
 
-VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
-  const FemSpec& fem = scene.fem;
-  const std::string file = scene.file.string();
+VolumeMesh build_fem_mesh(const FemSpec& fem, const SceneGeometry& geometry) {
   switch (fem.mesh) {
     case FemMeshKind::grid:
       return structured_grid(geometry.bounds, fem.resolution, fem.element);
     case FemMeshKind::tetrahedralize: {
-      // The scene validator has checked that fem.element is a tetrahedron.
+      // fem_scene_block has checked that fem.element is a tetrahedron.
       const double size = fem_max_cell_size(fem, geometry.bounds);
       VolumeMesh linear = geometry.surface ? tetrahedralize_surface(*geometry.surface, size)
                                            : tetrahedralize_shape(*geometry.shape, size);
@@ -38,10 +35,10 @@ VolumeMesh build_fem_mesh(const Scene& scene, const SceneGeometry& geometry) {
       return spatially_ordered(mesh);
     }
     case FemMeshKind::file:
-      // The scene validator has checked that the file's cells are fem.element.
+      // fem_scene_block has checked that the file's cells are fem.element.
       return *geometry.mesh;
   }
-  throw InputError(input_message(file, "/discretization/fem/mesh", "unknown mesh kind"));
+  throw std::logic_error("build_fem_mesh: unknown mesh kind");
 }
 
 }  // namespace altfem

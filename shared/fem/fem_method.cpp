@@ -17,9 +17,10 @@ public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry)
       : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
                                 scene.material.poisson_ratio, scene.material.density)) {
-    mesh_ = build_fem_mesh(scene, geometry);
+    const FemSpec fem = fem_spec(scene);
+    mesh_ = build_fem_mesh(fem, geometry);
     const auto start = std::chrono::steady_clock::now();
-    discretization_ = make_lagrange_discretization(mesh_, *material_, scene.dirichlet, scene.fem.quadrature_order,
+    discretization_ = make_lagrange_discretization(mesh_, *material_, scene.dirichlet, fem.quadrature_order,
                                                    scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms: the scene's own surface when it has one,
@@ -69,6 +70,12 @@ private:
 
 std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneGeometry& geometry) {
   return std::make_unique<FemMethod>(scene, geometry);
+}
+
+const MethodDescription& fem_method() {
+  static const MethodDescription method{fem_scene_block(), make_fem_method,
+                                        "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)"};
+  return method;
 }
 
 }  // namespace altfem

@@ -224,17 +224,6 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   const json& output = resolved["output"];
   scene.output = {output["every"].get<int>(), output["surface"].get<bool>(), output["volume"].get<bool>()};
 
-  const json& fem = resolved["discretization"]["fem"];
-  scene.fem.element = *element_type_from_name(fem["element"].get<std::string>());
-  scene.fem.mesh = kind_from_name<FemMeshKind>(fem_mesh_names, fem["mesh"]);
-  if (fem.contains("resolution"))
-    scene.fem.resolution = {fem["resolution"][0].get<int>(), fem["resolution"][1].get<int>(),
-                            fem["resolution"][2].get<int>()};
-  if (fem.contains("max_cell_size") && !fem["max_cell_size"].is_null())
-    scene.fem.max_cell_size = fem["max_cell_size"].get<double>();
-  scene.fem.quadrature_order = fem["quadrature_order"].get<int>();
-  scene.fem.curved = fem["curved"].get<bool>();
-
   scene.resolved = std::move(resolved);
   return scene;
 }

@@ -25,7 +25,6 @@ enum class RegionKind { box, half_space, sphere };
 enum class MotionKind { fixed, translate, rotate };
 enum class IntegratorKind { backward_euler, symplectic_euler, semi_implicit };
 enum class NonlinearSolverKind { newton, lbfgs };
-enum class FemMeshKind { grid, tetrahedralize, file };
 
 inline constexpr std::array<std::string_view, 5> material_model_names{
     "linear", "corotated_linear", "st_venant_kirchhoff", "neo_hookean", "stable_neo_hookean"};
@@ -33,7 +32,6 @@ inline constexpr std::array<std::string_view, 3> motion_kind_names{"fixed", "tra
 inline constexpr std::array<std::string_view, 3> integrator_names{"backward_euler", "symplectic_euler",
                                                                   "semi_implicit"};
 inline constexpr std::array<std::string_view, 2> nonlinear_solver_names{"newton", "lbfgs"};
-inline constexpr std::array<std::string_view, 3> fem_mesh_names{"grid", "tetrahedralize", "file"};
 
 struct GeometrySpec {
   GeometryKind kind = GeometryKind::shape;
@@ -124,20 +122,6 @@ struct OutputSpec {
   bool volume = true;
 };
 
-struct FemSpec {
-  ElementType element = ElementType::tet10;
-  FemMeshKind mesh = FemMeshKind::tetrahedralize;
-  Eigen::Vector3i resolution = Eigen::Vector3i::Constant(4);  ///< grid only
-  /// tetrahedralize only; nullopt (a surface geometry) means the loaded surface's
-  /// bounding-box diagonal / 15 — see fem_max_cell_size.
-  std::optional<double> max_cell_size;
-  int quadrature_order = 4;
-  bool curved = false;
-};
-
-/// max_cell_size, or the default diagonal / 15 of the loaded geometry's bounds.
-double fem_max_cell_size(const FemSpec& fem, const Eigen::AlignedBox3d& geometry_bounds);
-
 struct Scene {
   std::filesystem::path file;
   std::string name;
@@ -149,8 +133,10 @@ struct Scene {
   TimeSpec time;
   SolverSpec solver;
   OutputSpec output;
-  FemSpec fem;
-  nlohmann::json resolved;  ///< the whole scene with defaults filled and paths absolute
+  /// The whole scene with defaults filled and paths absolute. Each method's block under
+  /// /discretization is resolved by that method (method_scene_block.hpp): load_scene
+  /// only checks that every block is an object.
+  nlohmann::json resolved;
 };
 
 /// Reads, validates and resolves a scene file, and checks that the files it names

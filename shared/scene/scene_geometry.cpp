@@ -82,11 +82,6 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
       break;
     case GeometryKind::mesh:
       geometry.mesh = read_volume_mesh(spec.file);
-      if (geometry.mesh->element_type != scene.fem.element)
-        throw InputError(input_message(file, "/discretization/fem/element",
-                                       "must match the mesh file's element '" +
-                                           std::string(element_name(geometry.mesh->element_type)) + "', got '" +
-                                           std::string(element_name(scene.fem.element)) + "'"));
       transform(geometry.mesh->nodes, spec.scale, spec.translate);
       geometry.bounds = bounds_of(geometry.mesh->nodes);
       geometry.volume = cells_volume(*geometry.mesh);

@@ -28,7 +28,7 @@ struct SceneGeometry {
 };
 
 /// Reads the surface or volume mesh (or builds the shape), applies scale/translate,
-/// checks that a `file` mesh has the scene's fem element, and that every Dirichlet
+/// and checks that every Dirichlet
 /// region selects at least one point of the geometry (surface vertices, mesh nodes,
 /// or sample points inside the analytic shape). Throws InputError naming the file
 /// and e.g. /boundary_conditions/0/region.

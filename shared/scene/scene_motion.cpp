@@ -50,8 +50,4 @@ Eigen::Vector3d InitialConditions::velocity_at(const Eigen::Vector3d& x, const E
   return velocity + angular_velocity.cross(x - centre.value_or(centre_of_mass));
 }
 
-double fem_max_cell_size(const FemSpec& fem, const Eigen::AlignedBox3d& geometry_bounds) {
-  return fem.max_cell_size.value_or(geometry_bounds.diagonal().norm() / 15.0);
-}
-
 }  // namespace altfem

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "shared/element/element_type.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_shape.hpp"
 
@@ -15,28 +14,10 @@ namespace {
 
 using nlohmann::json;
 
-constexpr Bound positive{0.0, false};
-constexpr Bound non_negative{0.0, true};
-constexpr Bound at_least_one{1.0, true};
-
-template <std::size_t n>
-std::vector<std::string_view> names(const std::array<std::string_view, n>& array) {
-  return {array.begin(), array.end()};
-}
-
-std::vector<std::string_view> element_names() {
-  std::vector<std::string_view> result;
-  for (auto type : {ElementType::tet4, ElementType::tet10, ElementType::tet20, ElementType::hex8, ElementType::hex20,
-                    ElementType::hex27})
-    result.push_back(element_name(type));
-  return result;
-}
-
 KeyRule required_vector(std::string_view key) { return {.key = key, .type = ValueType::vector3, .required = true}; }
 KeyRule required_positive(std::string_view key) {
   return {.key = key, .type = ValueType::number, .required = true, .lower = positive};
 }
-KeyRule flag(std::string_view key, bool value) { return {.key = key, .type = ValueType::boolean, .default_value = value}; }
 
 void check_shape_box(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
   for (int i = 0; i < 3; ++i)
@@ -78,65 +59,23 @@ void check_time(const Validator& validator, const json& input, json& resolved, c
       validator.fail(pointer + "/" + key, std::string("missing required key '") + key + "' (or set \"static\": true)");
 }
 
-std::string geometry_kind(const json& geometry) {
-  if (geometry.contains("surface")) return "a surface file";
-  if (geometry.contains("mesh")) return "a volume mesh file";
-  return "a '" + geometry["shape"].begin().key() + "' shape";
-}
-
-// The fem defaults that depend on the geometry (docs/scene-schema.md, "fem").
-void resolve_fem(const Validator& validator, json& scene) {
-  const json& geometry = scene["geometry"];
-  json& fem = scene["discretization"]["fem"];
-  const std::string pointer = "/discretization/fem";
-  const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
-  const ElementType element = *element_type_from_name(fem["element"].get<std::string>());
-  const bool hex = element_shape(element) == ElementShape::hexahedron;
-  if (!fem.contains("mesh"))
-    fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
-  const std::string mesh = fem["mesh"];
-  if (mesh == "grid" && !is_box)
-    validator.fail(pointer + "/mesh", "'grid' needs an analytic box geometry, got " + geometry_kind(geometry));
-  if (mesh == "tetrahedralize" && geometry.contains("mesh"))
-    validator.fail(pointer + "/mesh", "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
-  if (mesh == "tetrahedralize" && hex)
-    validator.fail(pointer + "/element", "'tetrahedralize' needs a tet element, got " + describe(fem["element"]));
-  if (mesh == "file" && !geometry.contains("mesh"))
-    validator.fail(pointer + "/mesh", "'file' needs a volume mesh geometry, got " + geometry_kind(geometry));
-  if (mesh != "grid" && fem.contains("resolution"))
-    validator.fail(pointer + "/resolution", "applies only to mesh 'grid', got mesh '" + mesh + "'");
-  if (mesh != "tetrahedralize" && fem.contains("max_cell_size"))
-    validator.fail(pointer + "/max_cell_size", "applies only to mesh 'tetrahedralize', got mesh '" + mesh + "'");
-
-  const double scale = geometry["scale"].get<double>();
-  if (mesh == "grid" && !fem.contains("resolution")) {
-    const Eigen::Vector3d extent =
-        scale * (vector3_from_json(geometry["shape"]["box"]["max"]) - vector3_from_json(geometry["shape"]["box"]["min"]));
-    const double cell = std::min(extent.minCoeff() / 2.0, extent.maxCoeff() / 4.0);
-    fem["resolution"] = json::array();
-    for (int i = 0; i < 3; ++i) {
-      const double cells = extent[i] / cell;  // NaN or inf only for absurd (overflowing) boxes
-      fem["resolution"].push_back(!(cells >= 1.0) ? 1L : cells > 32.0 ? 32L : std::lround(cells));
-    }
-  }
-  if (mesh == "tetrahedralize" && !fem.contains("max_cell_size")) {
-    if (geometry.contains("shape"))
-      fem["max_cell_size"] = scale * shape_from_json(geometry["shape"])->bounding_box().diagonal().norm() / 15.0;
-    else
-      fem["max_cell_size"] = nullptr;  // the surface's bounds are known only once it is read
-  }
-  if (!fem.contains("quadrature_order")) fem["quadrature_order"] = 2 * element_degree(element);
-}
-
 void check_scene(const Validator& validator, const json&, json& resolved, const std::string&) {
   if (!resolved.contains("name")) {
     std::string stem = std::filesystem::path(validator.file()).stem().string();
     resolved["name"] = stem.empty() ? "scene" : stem;
   }
-  resolve_fem(validator, resolved);
+  // Each block belongs to a method, which validates it (method_scene_block.hpp); here
+  // only the shape every block shares.
+  for (const auto& [name, block] : resolved["discretization"].items())
+    if (!block.is_object())
+      validator.fail("/discretization/" + pointer_token(name), "expected an object (the method's options), got " +
+                                                                   describe(block));
 }
 
 extern const ObjectRule shape;
+
+// `discretization`: one block per method, each checked by its method.
+const ObjectRule method_blocks{{}, {}, {}, {}, true};
 
 const ObjectRule shape_box{{required_vector("min"), required_vector("max")}, {}, {}, {}, {}, check_shape_box};
 const ObjectRule shape_sphere{{required_vector("centre"), required_positive("radius")}};
@@ -234,18 +173,6 @@ const ObjectRule output{{{.key = "every", .type = ValueType::integer, .default_v
                          flag("surface", true),
                          flag("volume", true)}};
 
-const ObjectRule fem{
-    {{.key = "element", .type = ValueType::string, .default_value = "tet10",
-      .choices = element_names()},
-     {.key = "mesh", .type = ValueType::string, .choices = names(fem_mesh_names)},
-     {.key = "resolution", .type = ValueType::integer3, .lower = at_least_one},
-     {.key = "max_cell_size", .type = ValueType::number, .lower = positive},
-     {.key = "quadrature_order", .type = ValueType::integer, .lower = at_least_one},
-     flag("curved", false)}};
-
-const ObjectRule discretization{{{.key = "fem", .type = ValueType::object, .default_value = json::object(), .object = &fem}},
-                                {}, {}, {}, {"fcm", "dg", "harmonic"}};
-
 // The `compare` block (docs/scene-schema.md, "compare"): only its shape is checked
 // here; method names are checked by `altfem compare` against the build's registry.
 void check_compare_methods(const Validator& validator, const json& methods, const std::string& pointer) {
@@ -292,7 +219,7 @@ const ObjectRule scene{
      {.key = "time", .type = ValueType::object, .default_value = json{{"static", true}}, .object = &time},
      {.key = "solver", .type = ValueType::object, .default_value = json::object(), .object = &solver},
      {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
-     {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &discretization},
+     {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &method_blocks},
      {.key = "compare", .type = ValueType::object, .object = &compare}},
     {}, {}, {}, {}, check_scene};
 

@@ -1,7 +1,9 @@
 #pragma once
 // The scene schema as data (one rule per key of docs/scene-schema.md) and the
 // validator that checks a JSON document against it and fills in the defaults.
-// Internal to shared/scene.
+// Methods describe their own `discretization` block with the same rules
+// (method_scene_block.hpp).
+#include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -31,6 +33,10 @@ struct Bound {
   bool inclusive;
 };
 
+inline constexpr Bound positive{0.0, false};
+inline constexpr Bound non_negative{0.0, true};
+inline constexpr Bound at_least_one{1.0, true};
+
 struct ObjectRule;
 class Validator;
 
@@ -47,6 +53,16 @@ struct KeyRule {
   bool nonzero = false;
 };
 
+/// A boolean key with a default.
+inline KeyRule flag(std::string_view key, bool value) {
+  return {.key = key, .type = ValueType::boolean, .default_value = value};
+}
+/// The choices of a string key from a names array (e.g. scene.hpp's).
+template <std::size_t n>
+std::vector<std::string_view> names(const std::array<std::string_view, n>& array) {
+  return {array.begin(), array.end()};
+}
+
 /// Cross-key rules that do not fit one key: called on the resolved object.
 using ObjectCheck = void (*)(const Validator& validator, const nlohmann::json& input, nlohmann::json& resolved,
                              const std::string& pointer);
@@ -58,8 +74,9 @@ struct ObjectRule {
   /// If set, the value of this string key picks the rule for the rest of the object.
   std::string_view tag = {};
   std::vector<std::pair<std::string_view, const ObjectRule*>> variants = {};
-  /// Keys known to the project but not available in this build (later methods).
-  std::vector<std::string_view> unavailable = {};
+  /// Keys beyond `keys` are kept as given, to be checked by their owner (the method
+  /// blocks under `discretization`, which each method resolves).
+  bool open = false;
   ObjectCheck check = nullptr;
 };
 

@@ -259,8 +259,10 @@ json Validator::resolve_object(const json& value, const ObjectRule& given_rule, 
     if (!given_rule.tag.empty() && key == given_rule.tag) continue;
     const std::string key_pointer = pointer + "/" + pointer_token(key);
     if (find_key(*rule, key)) continue;
-    if (std::find(rule->unavailable.begin(), rule->unavailable.end(), key) != rule->unavailable.end())
-      fail(key_pointer, "method '" + key + "' is not available in this build");
+    if (rule->open) {
+      resolved[key] = item;
+      continue;
+    }
     std::string what = "unknown key";
     if (!given_rule.tag.empty()) what += " for " + std::string(given_rule.tag) + " " + describe(resolved[std::string(given_rule.tag)]);
     what += ", expected one of " + choice_list(key_names(*rule));

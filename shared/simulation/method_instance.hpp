@@ -5,10 +5,13 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
+#include "shared/scene/method_scene_block.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/discretization.hpp"
@@ -37,8 +40,19 @@ public:
   virtual Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const = 0;
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
+  /// What the user should know about this discretization of the scene (one line each),
+  /// printed by `run` and kept in summary.json's `warnings`.
+  virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&)>;
+
+/// What a method registers (app/method_registry.cpp): its scene block, its factory
+/// and one line for `altfem info`.
+struct MethodDescription {
+  MethodSceneBlock scene_block;
+  MethodFactory factory;
+  std::string_view summary;
+};
 
 }  // namespace altfem

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "shared/common/error.hpp"
+#include "shared/fem/fem_scene_block.hpp"
 #include "shared/scene/scene_override.hpp"
 
 namespace altfem {
@@ -53,8 +54,8 @@ TEST(SceneOverride, ErrorsNameTheAssignment) {
 TEST(SceneOverride, OverridesAreValidatedLikeTheScene) {
   const Scene scene = parse_scene(beam, "beam.json", {parse_scene_override("discretization/fem/resolution=[8,2,2]"),
                                                       parse_scene_override("discretization/fem/element=tet4")});
-  EXPECT_EQ(scene.fem.resolution, Eigen::Vector3i(8, 2, 2));
-  EXPECT_EQ(scene.fem.element, ElementType::tet4);
+  EXPECT_EQ(fem_spec(scene).resolution, Eigen::Vector3i(8, 2, 2));
+  EXPECT_EQ(fem_spec(scene).element, ElementType::tet4);
   try {
     (void)parse_scene(beam, "beam.json", {parse_scene_override("material/poisson_ratio=0.5")});
     FAIL();

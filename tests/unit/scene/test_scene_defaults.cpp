@@ -33,34 +33,13 @@ TEST(SceneDefaults, MinimalSceneIsResolvedCompletely) {
   EXPECT_EQ(resolved["solver"]["linear_tolerance"], 1e-10);
   EXPECT_EQ(resolved["solver"]["linear_max_iterations"], 10000);
   EXPECT_EQ(resolved["output"], nlohmann::json({{"every", 1}, {"surface", true}, {"volume", true}}));
-  // A box with the default tet10 gets a structured (Kuhn) grid from its aspect.
-  const nlohmann::json& fem = resolved["discretization"]["fem"];
-  EXPECT_EQ(fem["element"], "tet10");
-  EXPECT_EQ(fem["mesh"], "grid");
-  EXPECT_EQ(fem["resolution"], nlohmann::json({4, 4, 4}));
-  EXPECT_EQ(fem["quadrature_order"], 4);
-  EXPECT_EQ(fem["curved"], false);
-  EXPECT_FALSE(fem.contains("max_cell_size"));
+  // Method blocks are resolved by their methods (tests/unit/fem/test_fem_scene_block.cpp).
+  EXPECT_EQ(resolved["discretization"], nlohmann::json::object());
 
   EXPECT_EQ(scene.name, "minimal");
   EXPECT_EQ(scene.material.density, 1000.0);
   EXPECT_TRUE(scene.time.is_static);
   EXPECT_FALSE(scene.initial.centre.has_value());
-  EXPECT_FALSE(scene.fem.max_cell_size.has_value());
-}
-
-TEST(SceneDefaults, GridResolutionFollowsTheAspect) {
-  const auto resolution = [](const std::string& max, const std::string& element) {
-    const std::string text = R"({"geometry": {"shape": {"box": {"min": [0, 0, 0], "max": )" + max +
-                             R"(}}}, "material": {"youngs_modulus": 1, "poisson_ratio": 0},
-                                "discretization": {"fem": {"element": ")" + element + R"("}}})";
-    const Scene scene = parse_scene(text, "grid.json");
-    EXPECT_EQ(scene.fem.mesh, FemMeshKind::grid);
-    return scene.fem.resolution;
-  };
-  EXPECT_EQ(resolution("[1, 1, 1]", "hex8"), Eigen::Vector3i(4, 4, 4));
-  EXPECT_EQ(resolution("[1, 0.1, 0.1]", "hex20"), Eigen::Vector3i(20, 2, 2));
-  EXPECT_EQ(resolution("[1, 1, 0.01]", "hex27"), Eigen::Vector3i(32, 32, 2));
 }
 
 TEST(SceneDefaults, DynamicTimeAndRelativePaths) {
@@ -79,7 +58,6 @@ TEST(SceneDefaults, DynamicTimeAndRelativePaths) {
   EXPECT_EQ(scene.time.steps, 4);
   EXPECT_EQ(scene.time.integrator, IntegratorKind::backward_euler);
   EXPECT_EQ(scene.resolved["time"]["rayleigh_damping"], nlohmann::json({{"mass", 0.0}, {"stiffness", 0.0}}));
-  EXPECT_EQ(scene.resolved["discretization"]["fem"]["max_cell_size"], nullptr);
   // v + ω × (x − c): ω = 2 ẑ, x − c = ŷ ⇒ −2 x̂.
   EXPECT_EQ(scene.initial.velocity_at({1, 1, 0}, {9, 9, 9}), Eigen::Vector3d(-2, 0, 0));
 }

@@ -1,0 +1,65 @@
+// `altfem check`: the method blocks it resolves and the volume each method integrates.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <numbers>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace altfem::test {
+namespace {
+
+// The shipped hollow cylinder (r 0.07–0.1, height 0.5) with its default Tet10 cells, curved or not.
+std::filesystem::path cylinder_scene(bool curved) {
+  const auto folder = fresh_directory(std::string("check-cylinder-") + (curved ? "curved" : "straight"));
+  std::ifstream in(source_path("scenes/hollow_cylinder.json"));
+  nlohmann::json scene = nlohmann::json::parse(in);
+  scene["discretization"] = {{"fem", {{"element", "tet10"}, {"max_cell_size", 0.025}, {"curved", curved}}}};
+  scene.erase("compare");
+  const auto file = folder / "cylinder.json";
+  std::ofstream(file) << scene.dump();
+  return file;
+}
+
+double integrated_volume(bool curved) {
+  const CommandResult result = run_altfem({"check", cylinder_scene(curved).string(), "--method", "fem", "--json"});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  return nlohmann::json::parse(result.out)["methods"]["fem"]["integrated_volume"].get<double>();
+}
+
+TEST(Check, ReportsTheIsoparametricVolumeOfACurvedMesh) {
+  const double exact = std::numbers::pi * (0.1 * 0.1 - 0.07 * 0.07) * 0.5;
+  const double straight = std::abs(integrated_volume(false) / exact - 1);
+  const double curved = std::abs(integrated_volume(true) / exact - 1);
+  std::printf("volume error: straight-sided %.2e, curved %.2e\n", straight, curved);
+  // Both meshes have the same vertices, so a straight-sided volume would be the same
+  // for both. Chords of the circles lose ~h²/(12 r²) of the area; curved quadratic
+  // edges recover most of it. What is left is Mesh_3's rounding of the sharp rims
+  // (its features are not protected: issue #21, item 5).
+  EXPECT_GT(straight, 5e-3);
+  EXPECT_LT(curved, straight / 3);
+}
+
+TEST(Check, ResolvesEveryMethodBlockWithoutMethod) {
+  const CommandResult result = run_altfem({"check", source_path("scenes/cantilever.json").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(result.out);
+  for (const auto& [name, facts] : report["methods"].items()) {
+    SCOPED_TRACE(name);
+    EXPECT_TRUE(report["scene"]["discretization"].contains(name));
+    EXPECT_GT(facts["dofs"].get<long long>(), 0);
+    EXPECT_LT(std::abs(facts["volume_difference"].get<double>()), 1e-10);  // a box: every method integrates it exactly
+  }
+  EXPECT_TRUE(report["methods"].contains("fem"));
+}
+
+TEST(Check, UnknownMethodIsBadInput) {
+  const CommandResult result = run_altfem({"check", source_path("scenes/cantilever.json").string(), "--method", "fxm"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--method: method 'fxm' is not available in this build"), std::string::npos) << result.err;
+}
+
+}  // namespace
+}  // namespace altfem::test
