@@ -72,8 +72,8 @@ int main() {
   std::printf("intersection rule: %lld points, volume %.12f (clipped pieces: %.12f)\n",
               static_cast<long long>(exact_rule.points.rows()), rule_volume, intersection.clipped_volume);
 
-  // 2. Simplification to at most M = C(m+3, 3) points (§4.4), non-negative least squares
-  //    on the Chebyshev moment system.
+  // 2. Simplification to at most M = C(m+3, 3) points (§4.4), Carathéodory–Steinitz
+  //    recombination (the default simplifier) on the Chebyshev moment system.
   const int limit = (order + 1) * (order + 2) * (order + 3) / 6;
   const SimplificationResult simplified = simplify_quadrature(exact_rule, {.degree = order});
   const QuadratureRule& rule = simplified.rule;

@@ -4,7 +4,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <array>
 #include <utility>
 
 #include "shared/geometry/clip_convex.hpp"
@@ -18,10 +18,29 @@ using Point = Kernel::Point_3;
 Point to_point(const Eigen::Vector3d& x) { return Point(x.x(), x.y(), x.z()); }
 
 /// A convex polytope as a boundary: faces list vertex indices counter-clockwise seen
-/// from outside. Vertices no face uses may remain (they are ignored).
+/// from outside, stored flat (face f is indices[start[f]], …, indices[start[f + 1] − 1]).
+/// Vertices no face uses may remain (they are ignored).
 struct ConvexPolytope {
   std::vector<Eigen::Vector3d> vertices;
-  std::vector<std::vector<int>> faces;
+  std::vector<int> indices;
+  std::vector<int> start;  ///< #faces + 1
+
+  int face_count() const { return static_cast<int>(start.size()) - 1; }
+  void clear_faces() {
+    indices.clear();
+    start.assign(1, 0);
+  }
+  void close_face() { start.push_back(static_cast<int>(indices.size())); }
+};
+
+/// Scratch of one clipping, reused: clipping runs for every candidate tetrahedron of
+/// every cut cell, and these few small arrays were most of its time as allocations.
+struct ClipWorkspace {
+  ConvexPolytope polytope, clipped;
+  std::vector<int> side, cap;
+  std::vector<char> in_cap;
+  std::vector<std::array<int, 3>> edge_vertex;  ///< (u, v, new vertex) per cut edge, u < v
+  std::vector<std::pair<double, int>> angles;
 };
 
 /// -1 kept side (inside), 0 on the plane, +1 outside: one exact predicate.
@@ -33,17 +52,17 @@ int side_of(const ClipPlane& plane, const Eigen::Vector3d& x) {
 
 enum class ClipOutcome { unchanged, cut, empty };
 
-/// Cuts `polytope` by one plane in place.
-ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
+/// Cuts `workspace.polytope` by one plane in place.
+ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
+  ConvexPolytope& polytope = workspace.polytope;
   const int vertex_count = static_cast<int>(polytope.vertices.size());
-  std::vector<int> side(vertex_count);
+  std::vector<int>& side = workspace.side;
+  side.assign(vertex_count, 0);
   bool any_inside = false, any_outside = false;
-  for (const auto& face : polytope.faces) {
-    for (const int v : face) {
-      side[v] = side_of(plane, polytope.vertices[v]);
-      any_inside |= side[v] < 0;
-      any_outside |= side[v] > 0;
-    }
+  for (const int v : polytope.indices) {
+    side[v] = side_of(plane, polytope.vertices[v]);
+    any_inside |= side[v] < 0;
+    any_outside |= side[v] > 0;
   }
   if (!any_outside) return ClipOutcome::unchanged;  // kept side (faces on the plane included)
   if (!any_inside) return ClipOutcome::empty;       // outside, or flat on the plane
@@ -51,13 +70,14 @@ ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
   // Signed distances along the (unnormalised) normal only place the new vertices;
   // which edges are cut was decided exactly above.
   const Eigen::Vector3d normal = (plane.b - plane.a).cross(plane.c - plane.a);
-  std::map<std::pair<int, int>, int> edge_vertex;  // each cut edge's new vertex, shared by its two faces
+  workspace.edge_vertex.clear();  // each cut edge's new vertex, shared by its two faces
   const auto cut_edge = [&](int u, int v) {
-    const auto key = std::minmax(u, v);
-    const auto found = edge_vertex.find(key);
-    if (found != edge_vertex.end()) return found->second;
-    const Eigen::Vector3d& p = polytope.vertices[key.first];
-    const Eigen::Vector3d& q = polytope.vertices[key.second];
+    const auto [low, high] = std::minmax(u, v);
+    for (const auto& [first, second, vertex] : workspace.edge_vertex) {
+      if (first == low && second == high) return vertex;
+    }
+    const Eigen::Vector3d& p = polytope.vertices[low];
+    const Eigen::Vector3d& q = polytope.vertices[high];
     const double dp = (p - plane.a).dot(normal), dq = (q - plane.a).dot(normal);
     // The exact predicates put p and q strictly on opposite sides, but the rounded
     // distances of nearly-on points may not agree in sign: |dp| / (|dp| + |dq|) is the
@@ -66,26 +86,28 @@ ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
     const double t = sum > 0.0 ? std::abs(dp) / sum : 0.5;
     polytope.vertices.push_back(p + t * (q - p));
     const int index = static_cast<int>(polytope.vertices.size()) - 1;
-    edge_vertex.emplace(key, index);
+    workspace.edge_vertex.push_back({low, high, index});
     return index;
   };
 
-  std::vector<std::vector<int>> kept_faces;
-  std::vector<int> cap;  // vertices on the plane: the new face
-  std::vector<char> in_cap(vertex_count, 0);
-  for (const auto& face : polytope.faces) {
-    std::vector<int> clipped;
-    const int n = static_cast<int>(face.size());
+  ConvexPolytope& kept = workspace.clipped;  // the kept faces
+  kept.clear_faces();
+  std::vector<int>& cap = workspace.cap;  // vertices on the plane: the new face
+  cap.clear();
+  std::vector<char>& in_cap = workspace.in_cap;
+  in_cap.assign(vertex_count, 0);
+  for (int f = 0; f < polytope.face_count(); ++f) {
+    const int begin = polytope.start[f], n = polytope.start[f + 1] - begin;
     for (int i = 0; i < n; ++i) {
-      const int u = face[i], v = face[(i + 1) % n];
-      if (side[u] <= 0) clipped.push_back(u);
+      const int u = polytope.indices[begin + i], v = polytope.indices[begin + (i + 1) % n];
+      if (side[u] <= 0) kept.indices.push_back(u);
       if (side[u] == 0 && !in_cap[u]) {
         in_cap[u] = 1;
         cap.push_back(u);
       }
       if (side[u] * side[v] < 0) {
         const int w = cut_edge(u, v);
-        clipped.push_back(w);
+        kept.indices.push_back(w);
         if (static_cast<int>(in_cap.size()) <= w) in_cap.resize(w + 1, 0);
         if (!in_cap[w]) {
           in_cap[w] = 1;
@@ -93,7 +115,11 @@ ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
         }
       }
     }
-    if (clipped.size() >= 3) kept_faces.push_back(std::move(clipped));
+    if (static_cast<int>(kept.indices.size()) - kept.start.back() >= 3) {
+      kept.close_face();
+    } else {
+      kept.indices.resize(kept.start.back());
+    }
   }
   if (cap.size() >= 3) {
     // Order the cap counter-clockwise seen from outside (along +normal) around its centroid.
@@ -103,25 +129,28 @@ ClipOutcome clip_by_plane(ConvexPolytope& polytope, const ClipPlane& plane) {
     const Eigen::Vector3d unit_normal = normal.normalized();
     const Eigen::Vector3d first = (polytope.vertices[cap[0]] - centre).normalized();
     const Eigen::Vector3d second = unit_normal.cross(first);
-    std::vector<std::pair<double, int>> angles;
+    std::vector<std::pair<double, int>>& angles = workspace.angles;
+    angles.clear();
     for (const int v : cap) {
       const Eigen::Vector3d d = polytope.vertices[v] - centre;
       angles.emplace_back(std::atan2(d.dot(second), d.dot(first)), v);
     }
     std::sort(angles.begin(), angles.end());
-    std::vector<int> cap_face;
-    for (const auto& [angle, v] : angles) cap_face.push_back(v);
-    kept_faces.push_back(std::move(cap_face));
+    for (const auto& [angle, v] : angles) kept.indices.push_back(v);
+    kept.close_face();
   }
-  polytope.faces = std::move(kept_faces);
-  return polytope.faces.size() >= 4 ? ClipOutcome::cut : ClipOutcome::empty;
+  std::swap(polytope.indices, kept.indices);
+  std::swap(polytope.start, kept.start);
+  return polytope.face_count() >= 4 ? ClipOutcome::cut : ClipOutcome::empty;
 }
 
 }  // namespace
 
 std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetrahedron,
                                                  const std::vector<ClipPlane>& planes) {
-  ConvexPolytope polytope;
+  thread_local ClipWorkspace workspace;
+  ConvexPolytope& polytope = workspace.polytope;
+  polytope.vertices.clear();
   for (int i = 0; i < 4; ++i) polytope.vertices.push_back(tetrahedron.row(i).transpose());
   // Outward counter-clockwise faces of a positively oriented tetrahedron (VTK order);
   // a negatively oriented one is reordered first.
@@ -129,10 +158,11 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
                         to_point(polytope.vertices[2]), to_point(polytope.vertices[3])) != CGAL::POSITIVE) {
     std::swap(polytope.vertices[1], polytope.vertices[2]);
   }
-  polytope.faces = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  polytope.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+  polytope.start = {0, 3, 6, 9, 12};
   bool cut = false;
   for (const ClipPlane& plane : planes) {
-    const ClipOutcome outcome = clip_by_plane(polytope, plane);
+    const ClipOutcome outcome = clip_by_plane(workspace, plane);
     if (outcome == ClipOutcome::empty) return {};
     cut |= outcome == ClipOutcome::cut;
   }
@@ -145,22 +175,23 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
 
   // Fan from the centroid of the used vertices: every (centroid, face triangle) is a
   // positively oriented tetrahedron of the convex piece; flat ones add no volume.
-  std::vector<char> used(polytope.vertices.size(), 0);
+  std::vector<char>& used = workspace.in_cap;
+  used.assign(polytope.vertices.size(), 0);
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   int used_count = 0;
-  for (const auto& face : polytope.faces) {
-    for (const int v : face) {
-      if (!used[v]) {
-        used[v] = 1;
-        centroid += polytope.vertices[v];
-        ++used_count;
-      }
+  for (const int v : polytope.indices) {
+    if (!used[v]) {
+      used[v] = 1;
+      centroid += polytope.vertices[v];
+      ++used_count;
     }
   }
   centroid /= used_count;
   std::vector<TetrahedronCorners> pieces;
-  for (const auto& face : polytope.faces) {
-    for (std::size_t i = 1; i + 1 < face.size(); ++i) {
+  for (int f = 0; f < polytope.face_count(); ++f) {
+    const int* face = polytope.indices.data() + polytope.start[f];
+    const int n = polytope.start[f + 1] - polytope.start[f];
+    for (int i = 1; i + 1 < n; ++i) {
       TetrahedronCorners piece;
       piece.row(0) = centroid.transpose();
       piece.row(1) = polytope.vertices[face[0]].transpose();

@@ -1,6 +1,7 @@
 #include "shared/quadrature/chebyshev_moment_matrix.hpp"
 
 #include <stdexcept>
+#include <vector>
 
 namespace altfem {
 
@@ -20,22 +21,26 @@ Eigen::MatrixXd chebyshev_moment_matrix(const Eigen::Ref<const Eigen::MatrixXd>&
   }
 
   // T_k(x̂) per axis by the three-term recurrence, then the products in graded order
-  // (degree q, then b + c, then c: the order of monomial_index).
-  Eigen::MatrixXd chebyshev(degree + 1, 3);
+  // (degree q, then b + c, then c: the order of monomial_index). Plain arrays: this
+  // runs for every point of every cut cell.
+  const int values = degree + 1;
+  std::vector<double> chebyshev(3 * static_cast<std::size_t>(values));  // axis d: [d * values, (d + 1) * values)
   for (Eigen::Index j = 0; j < count; ++j) {
-    const Eigen::RowVector3d scaled = (points.row(j) - centre).cwiseQuotient(half_size);
-    chebyshev.row(0).setOnes();
-    if (degree >= 1) chebyshev.row(1) = scaled;
-    for (int k = 2; k <= degree; ++k) {
-      chebyshev.row(k) = 2.0 * scaled.cwiseProduct(chebyshev.row(k - 1)) - chebyshev.row(k - 2);
+    for (int d = 0; d < 3; ++d) {
+      double* t = chebyshev.data() + d * values;
+      const double x = (points(j, d) - centre(d)) / half_size(d);
+      t[0] = 1.0;
+      if (degree >= 1) t[1] = x;
+      // 2 (x T_{k-1}) − T_{k-2}: the doubling is exact, so the value does not depend on
+      // whether the compiler fuses the subtraction (results stay bit-identical).
+      for (int k = 2; k <= degree; ++k) t[k] = 2.0 * (x * t[k - 1]) - t[k - 2];
     }
-    int row = 0;
+    const double *tx = chebyshev.data(), *ty = tx + values, *tz = ty + values;
+    double* column = matrix.col(j).data();
     for (int q = 0; q <= degree; ++q) {
       for (int transverse = 0; transverse <= q; ++transverse) {
-        for (int c = 0; c <= transverse; ++c) {
-          const int b = transverse - c, a = q - transverse;
-          matrix(row++, j) = chebyshev(a, 0) * chebyshev(b, 1) * chebyshev(c, 2);
-        }
+        const double x_part = tx[q - transverse];
+        for (int c = 0; c <= transverse; ++c) *column++ = x_part * ty[transverse - c] * tz[c];
       }
     }
   }

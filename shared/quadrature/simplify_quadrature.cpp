@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "shared/quadrature/basic_feasible_point.hpp"
+#include "shared/quadrature/caratheodory_recombination.hpp"
 #include "shared/quadrature/chebyshev_moment_matrix.hpp"
 #include "shared/quadrature/nonnegative_least_squares.hpp"
 
@@ -42,7 +43,7 @@ Eigen::MatrixXd orthonormal_row_basis(const Eigen::MatrixXd& moments) {
   return basis.transpose();
 }
 
-/// The candidate weights of `method` on the orthonormal system A w = b; empty on failure.
+/// The candidate weights of the LP or NNLS on the orthonormal system A w = b; empty on failure.
 Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd& A, const Eigen::VectorXd& b) {
   if (method == SimplificationMethod::linear_program) {
     auto solution = basic_feasible_point(A, b);
@@ -55,7 +56,12 @@ Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd
 }  // namespace
 
 std::string_view simplification_method_name(SimplificationMethod method) {
-  return method == SimplificationMethod::linear_program ? "lp" : "nnls";
+  switch (method) {
+    case SimplificationMethod::linear_program: return "lp";
+    case SimplificationMethod::nonnegative_least_squares: return "nnls";
+    case SimplificationMethod::caratheodory: return "caratheodory";
+  }
+  return "?";
 }
 
 SimplificationResult simplify_quadrature(const QuadratureRule& rule, const SimplificationOptions& options) {
@@ -73,10 +79,20 @@ SimplificationResult simplify_quadrature(const QuadratureRule& rule, const Simpl
   const Eigen::MatrixXd moments = chebyshev_moment_matrix(rule.points, options.degree);  // M × N
   const Eigen::VectorXd target = moments * rule.weights;
 
-  const Eigen::MatrixXd A = orthonormal_row_basis(moments);  // r × N
-  const Eigen::VectorXd b = A * rule.weights;
-
-  const Eigen::VectorXd candidate = solve_weights(options.method, A, b);
+  // The system the candidate's weights are re-solved on: the orthonormal one of eq. (10)
+  // for the LP and NNLS; recombination needs no transform (its null spaces are those of
+  // P) and re-solves on P itself by a pivoted QR, stable at any row scaling.
+  Eigen::MatrixXd A;  // r × N
+  Eigen::VectorXd b, candidate;
+  if (options.method == SimplificationMethod::caratheodory) {
+    candidate = caratheodory_recombination(moments, rule.weights, basis_size);
+  } else {
+    A = orthonormal_row_basis(moments);
+    b = A * rule.weights;
+    candidate = solve_weights(options.method, A, b);
+  }
+  const Eigen::MatrixXd& system = A.size() > 0 ? A : moments;
+  const Eigen::VectorXd& rhs = A.size() > 0 ? b : target;
   // Weights at rounding level are zeros the solver did not land on exactly; keeping
   // them would give points that carry nothing.
   const double negligible = negligible_weight * rule.weights.sum();
@@ -92,13 +108,13 @@ SimplificationResult simplify_quadrature(const QuadratureRule& rule, const Simpl
 
   // Re-solve the weights on the chosen points: the solvers stop at their own
   // tolerances; the square (or overdetermined) system on the support is exact.
-  Eigen::MatrixXd chosen(A.rows(), kept);
+  Eigen::MatrixXd chosen(system.rows(), kept);
   Eigen::VectorXd weights(kept);
   for (Eigen::Index i = 0; i < kept; ++i) {
-    chosen.col(i) = A.col(support[i]);
+    chosen.col(i) = system.col(support[i]);
     weights(i) = candidate(support[i]);
   }
-  const Eigen::VectorXd polished = chosen.colPivHouseholderQr().solve(b);
+  const Eigen::VectorXd polished = chosen.colPivHouseholderQr().solve(rhs);
   if ((polished.array() > 0.0).all()) weights = polished;
 
   QuadratureRule simplified;

@@ -11,17 +11,18 @@
 namespace altfem {
 
 enum class SimplificationMethod {
-  linear_program,            ///< Clp's simplex on the transformed LP, eq. (10)
-  nonnegative_least_squares  ///< Lawson–Hanson on the same system (no LP solver)
+  linear_program,             ///< Clp's simplex on the transformed LP, eq. (10)
+  nonnegative_least_squares,  ///< Lawson–Hanson on the same system (no LP solver)
+  caratheodory                ///< Carathéodory–Steinitz recombination (caratheodory_recombination.hpp)
 };
 
-/// "lp" or "nnls".
+/// "lp", "nnls" or "caratheodory".
 std::string_view simplification_method_name(SimplificationMethod method);
 
 struct SimplificationOptions {
   int degree = 2;
   /// Measured faster at equal accuracy (docs/quadrature.md): see the default there.
-  SimplificationMethod method = SimplificationMethod::nonnegative_least_squares;
+  SimplificationMethod method = SimplificationMethod::caratheodory;
   /// Largest accepted moment residual (see SimplificationResult::residual).
   double tolerance = 1e-12;
 };

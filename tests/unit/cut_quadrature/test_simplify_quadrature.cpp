@@ -100,7 +100,8 @@ TEST_P(SimplifyQuadrature, AnImpossibleToleranceKeepsTheOriginalAndSaysSo) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, SimplifyQuadrature,
                          ::testing::Values(SimplificationMethod::linear_program,
-                                           SimplificationMethod::nonnegative_least_squares),
+                                           SimplificationMethod::nonnegative_least_squares,
+                                           SimplificationMethod::caratheodory),
                          [](const auto& info) { return std::string(simplification_method_name(info.param)); });
 
 TEST(NonnegativeLeastSquares, ActiveConstraintAndExactSolution) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "simplification_methods.hpp"
 #include "fcm/monomial_experiment.hpp"
 
 namespace altfem::fcm {
@@ -37,10 +38,8 @@ TEST_P(MonomialFigure, SimplifiedRulesAreAsExactAsTheInitialOnes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, MonomialFigure,
-                         ::testing::Values(SimplificationMethod::linear_program,
-                                           SimplificationMethod::nonnegative_least_squares),
-                         [](const auto& info) { return std::string(simplification_method_name(info.param)); });
+INSTANTIATE_TEST_SUITE_P(Methods, MonomialFigure, testing::every_simplification_method(),
+                         testing::simplification_method_test_name);
 
 }  // namespace
 }  // namespace altfem::fcm

@@ -1,0 +1,110 @@
+#include "shared/quadrature/caratheodory_recombination.hpp"
+
+#include <Eigen/QR>
+#include <algorithm>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace altfem {
+namespace {
+
+/// Pivots below this fraction of the largest count as dependent directions.
+constexpr double rank_threshold = 1e-14;
+
+/// The largest step t with λ − t v >= 0 and the index that reaches zero first, over
+/// the λ_i > 0; pivot −1 when v has no positive entry there.
+std::pair<Eigen::Index, double> ratio_test(const Eigen::Ref<const Eigen::VectorXd>& v, const Eigen::VectorXd& lambda) {
+  Eigen::Index pivot = -1;
+  double step = 0.0;
+  for (Eigen::Index i = 0; i < v.size(); ++i) {
+    if (v(i) > 0.0 && lambda(i) > 0.0 && (pivot < 0 || lambda(i) / v(i) < step)) {
+      step = lambda(i) / v(i);
+      pivot = i;
+    }
+  }
+  return {pivot, step};
+}
+
+/// Carathéodory–Steinitz elimination on the columns C (r × n) with weights λ > 0 (in
+/// place): along each null vector v of C (C v = 0, so C λ is unchanged), step until
+/// the first weight reaches zero and drop that column; the remaining null vectors are
+/// made zero there first, so later steps never revive it. Leaves at most rank(C)
+/// non-zeros. The null space is computed once, by a pivoted QR of C.
+void eliminate(const Eigen::Ref<const Eigen::MatrixXd>& C, Eigen::VectorXd& lambda) {
+  const Eigen::Index n = C.cols();
+  // C Π = Q [R₁ R₂] with R₁ (rank × rank) upper triangular: null(C) = Π [−R₁⁻¹ R₂; I].
+  Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
+  qr.setThreshold(rank_threshold);
+  const Eigen::Index rank = qr.rank();
+  if (rank >= n) return;
+  const Eigen::MatrixXd& R = qr.matrixQR();
+  Eigen::MatrixXd permuted(n, n - rank);
+  permuted.topRows(rank) = -R.topRightCorner(rank, n - rank);
+  R.topLeftCorner(rank, rank).triangularView<Eigen::Upper>().solveInPlace(permuted.topRows(rank));
+  permuted.bottomRows(n - rank).setIdentity();
+  Eigen::MatrixXd null_space = qr.colsPermutation() * permuted;
+  for (Eigen::Index k = 0; k < null_space.cols(); ++k) {
+    Eigen::Ref<Eigen::VectorXd> v = null_space.col(k);
+    // Either direction keeps C λ: v, or −v when v has no positive entry on the remaining weights.
+    auto [pivot, step] = ratio_test(v, lambda);
+    if (pivot < 0) {
+      v = -v;
+      std::tie(pivot, step) = ratio_test(v, lambda);
+    }
+    if (pivot < 0) continue;  // v vanishes on the remaining weights
+    lambda -= step * v;
+    lambda(pivot) = 0.0;
+    for (Eigen::Index i = 0; i < n; ++i) lambda(i) = std::max(lambda(i), 0.0);
+    for (Eigen::Index later = k + 1; later < null_space.cols(); ++later) {
+      null_space.col(later) -= (null_space(pivot, later) / v(pivot)) * v;
+      null_space(pivot, later) = 0.0;
+    }
+  }
+}
+
+}  // namespace
+
+Eigen::VectorXd caratheodory_recombination(const Eigen::Ref<const Eigen::MatrixXd>& columns,
+                                           const Eigen::Ref<const Eigen::VectorXd>& weights,
+                                           Eigen::Index target_size) {
+  const Eigen::Index rows = columns.rows();
+  Eigen::VectorXd result = weights;
+  std::vector<Eigen::Index> active;
+  for (Eigen::Index j = 0; j < weights.size(); ++j) {
+    if (weights(j) > 0.0) active.push_back(j);
+  }
+  const Eigen::Index group_count = 2 * std::max<Eigen::Index>(rows, 1);
+  Eigen::MatrixXd group_sums(rows, group_count);
+  Eigen::VectorXd group_weights(group_count);
+  std::vector<Eigen::Index> kept;
+  while (static_cast<Eigen::Index>(active.size()) > target_size) {
+    // Consecutive groups of (nearly) equal size; a group's column is Σ w_j a_j.
+    const Eigen::Index n = static_cast<Eigen::Index>(active.size());
+    const Eigen::Index groups = std::min(group_count, n);
+    const auto begin = [&](Eigen::Index g) { return g * n / groups; };
+    group_sums.setZero();
+    for (Eigen::Index g = 0; g < groups; ++g) {
+      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i) group_sums.col(g) += result(active[i]) * columns.col(active[i]);
+    }
+    group_weights.resize(groups);
+    group_weights.setOnes();
+    eliminate(group_sums.leftCols(groups), group_weights);
+    kept.clear();
+    for (Eigen::Index g = 0; g < groups; ++g) {
+      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i) {
+        if (group_weights(g) > 0.0) {
+          result(active[i]) *= group_weights(g);
+          kept.push_back(active[i]);
+        } else {
+          result(active[i]) = 0.0;
+        }
+      }
+    }
+    if (kept.size() == active.size()) break;  // independent group sums: nothing to eliminate
+    active.swap(kept);
+  }
+  return result;
+}
+
+}  // namespace altfem
