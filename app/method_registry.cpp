@@ -1,12 +1,13 @@
 #include "app/method_registry.hpp"
 
+#include "dg/dg_method.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_method.hpp"
 
 namespace altfem::cli {
 
 const std::vector<MethodDescription>& registered_methods() {
-  static const std::vector<MethodDescription> methods{fem_method()};
+  static const std::vector<MethodDescription> methods{fem_method(), dg::dg_method()};
   return methods;
 }
 

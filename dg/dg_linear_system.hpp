@@ -19,7 +19,9 @@ struct DgFace {
   Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
   int minus = 0;
   int plus = -1;            ///< -1: a boundary face
-  bool dirichlet = false;   ///< boundary faces only: the data of dirichlet_load acts here
+  /// Boundary faces only: the index of the Dirichlet condition imposed weakly here (the
+  /// `condition` argument of dirichlet_load's data), -1 for a free face.
+  int condition = -1;
 };
 
 struct DgSettings {
@@ -27,9 +29,15 @@ struct DgSettings {
   Flux flux = Flux::interior_penalty;
   double penalty = 20;  ///< η of eq. (20), in the units of the stiffness (λ, μ)
   double lambda = 1, mu = 1;
+  double density = 1;   ///< ρ of the mass matrix
+  /// η_f of a boundary face is this factor × eq. (20) (1 in Kaufmann et al.; MFEM and
+  /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
+  double boundary_penalty_factor = 1;
 };
 
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+/// Dirichlet data g(condition, x): the displacement condition `condition` prescribes at x.
+using ConditionData = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&)>;
 
 class DgLinearSystem {
 public:
@@ -37,6 +45,12 @@ public:
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// The consistent mass ρ ∫ φ_a φ_b δ_ik (3 × Σ #functions square), block-diagonal by cell.
+  Eigen::SparseMatrix<double> mass() const;
+  /// ∫ φ_a dV of every function (Σ #functions): the load of a unit body force density.
+  const Eigen::VectorXd& function_integrals() const { return integrals_; }
+  int cell_count() const { return static_cast<int>(cells_.size()); }
+  const Polyhedron& cell(int index) const { return cells_[index]; }
   int offset(int cell) const { return offsets_[cell]; }
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
@@ -44,9 +58,10 @@ public:
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
   Eigen::VectorXd body_load(const VectorField& force_density) const;
-  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, by a rule of
-  /// strength 2k + 2 on each face (exact for polynomial data of degree ≤ k + 3).
-  Eigen::VectorXd dirichlet_load(const VectorField& data) const;
+  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, g = data(the
+  /// face's condition, x), by a rule of strength 2k + 2 on each face (exact for polynomial
+  /// data of degree ≤ k + 3).
+  Eigen::VectorXd dirichlet_load(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
@@ -64,6 +79,8 @@ private:
   DgSettings settings_;
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
+  std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square
+  Eigen::VectorXd integrals_;
   std::vector<int> offsets_;                // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
 };

@@ -27,7 +27,7 @@ double solve_and_compare(Flux flux, double penalty) {
   const test::GridCells grid = test::hex_grid_cells(4);
   const DgLinearSystem system(grid.cells, grid.faces, {2, flux, penalty, lambda, mu});
   const Eigen::VectorXd load =
-      system.body_load([](const Eigen::Vector3d&) { return body_force; }) + system.dirichlet_load(exact);
+      system.body_load([](const Eigen::Vector3d&) { return body_force; }) + system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact(x); });
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system.stiffness());
   const Eigen::VectorXd u = solver.solve(load);
   const Eigen::VectorXd expected = system.interpolate(exact);
