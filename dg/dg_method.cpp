@@ -28,7 +28,7 @@ std::vector<Polyhedron> mesh_cells(const PolyhedralMesh& mesh) {
 }
 
 // Every face of the mesh, a boundary face carrying the first Dirichlet condition whose
-// region holds all its nodes (the condition is imposed weakly on it, §4.2).
+// region holds its centroid (the condition is imposed weakly on the whole face, §4.2).
 std::vector<DgFace> mesh_faces(const PolyhedralMesh& mesh, const Scene& scene) {
   const double tolerance = 1e-9 * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
   std::vector<DgFace> faces(mesh.face_count());
@@ -41,15 +41,11 @@ std::vector<DgFace> mesh_faces(const PolyhedralMesh& mesh, const Scene& scene) {
     face.minus = mesh.face_cells(f, 0);
     face.plus = mesh.face_cells(f, 1);
     if (face.plus >= 0) continue;
-    for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c) {
-      bool inside = true;
-      for (Eigen::Index v = 0; v < face.polygon.rows() && inside; ++v)
-        inside = scene.dirichlet[c].region.contains(face.polygon.row(v).transpose(), tolerance);
-      if (inside) {
+    for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c)
+      if (scene.dirichlet[c].region.contains(mesh.face_centroids.row(f).transpose(), tolerance)) {
         face.condition = static_cast<int>(c);
         ++faces_per_condition[c];
       }
-    }
   }
   for (size_t c = 0; c < scene.dirichlet.size(); ++c) {
     const DirichletCondition& condition = scene.dirichlet[c];
@@ -58,7 +54,7 @@ std::vector<DgFace> mesh_faces(const PolyhedralMesh& mesh, const Scene& scene) {
                                      "dg imposes all three components weakly in this build, got a subset"));
     if (faces_per_condition[c] == 0)
       throw InputError(input_message(scene.file.string(), condition.pointer + "/region",
-                                     "holds no whole boundary face of the dg mesh (weak conditions act on faces)"));
+                                     "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
   }
   return faces;
 }
