@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "dg/dg_scene_block.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/io/polyhedral_grid.hpp"
@@ -51,7 +52,8 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   // dg and harmonic: the fem mesh converted cell by cell (Kaufmann et al. 2009 §9 and
   // Martin et al. 2008 §7 also slice a grid; not in this build). fem: its own mesh; its
   // facts come from the same conversion (straight-sided cells from the corners).
-  const VolumeMesh volume_mesh = build_fem_mesh(fem_spec(scene), geometry);
+  // dg reads the mesh keys of its own block (the same rules as fem's).
+  const VolumeMesh volume_mesh = build_fem_mesh(method == "dg" ? dg::dg_spec(scene).mesh : fem_spec(scene), geometry);
   const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -36,8 +36,8 @@ Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& accele
   return load;
 }
 
-PreconditionerFactory LinearDgDiscretization::preconditioner_factory() const {
-  return [blocks = element_dofs_]() -> std::unique_ptr<Preconditioner> {
+PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element_dofs) {
+  return [blocks = std::move(element_dofs)]() -> std::unique_ptr<Preconditioner> {
     return std::make_unique<AdditiveSchwarzPreconditioner>(blocks);
   };
 }

@@ -11,6 +11,10 @@
 
 namespace altfem::dg {
 
+/// Block Jacobi for PCG: one dense block per element (AdditiveSchwarzPreconditioner
+/// with disjoint blocks). element_dofs: each element's DOFs.
+PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element_dofs);
+
 class LinearDgDiscretization final : public Discretization {
 public:
   /// stiffness, mass: #dofs square, symmetric; function_integrals: ∫ ρ φ_a dV per basis
@@ -36,9 +40,7 @@ public:
   const std::vector<int>& constrained_dofs() const override { return no_dofs_; }
   Eigen::VectorXd prescribed_displacement(double) const override { return {}; }
   bool imposes_conditions_weakly() const override { return true; }
-  /// Block Jacobi: one dense block per element (AdditiveSchwarzPreconditioner with
-  /// disjoint blocks).
-  PreconditionerFactory preconditioner_factory() const override;
+  PreconditionerFactory preconditioner_factory() const override { return block_jacobi_factory(element_dofs_); }
 
 private:
   Eigen::SparseMatrix<double> stiffness_, mass_;  // the same pattern (their union)

@@ -52,7 +52,8 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
     const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
     const Eigen::MatrixXd matrix = exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
-                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux);
+                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux,
+                                                     face.components);
     std::vector<int> dofs;
     for (int side : {face.minus, face.plus}) {
       if (side < 0) continue;
@@ -157,7 +158,9 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const 
     const Eigen::Vector3d& n = face.normal;
     for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
       const Eigen::Vector3d x = rule.points.row(q).transpose();
-      const Eigen::Vector3d g = data(face.condition, x);
+      Eigen::Vector3d g = data(face.condition, x);
+      for (int i = 0; i < 3; ++i)
+        if (!face.components[i]) g[i] = 0;  // P g
       basis.evaluate(x, phi, gradients);
       for (int a = 0; a < basis.size(); ++a) {
         // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with

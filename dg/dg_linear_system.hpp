@@ -22,6 +22,8 @@ struct DgFace {
   /// Boundary faces only: the index of the Dirichlet condition imposed weakly here (the
   /// `condition` argument of dirichlet_load's data), -1 for a free face.
   int condition = -1;
+  /// The components that condition prescribes (the others are free on this face).
+  std::array<bool, 3> components{true, true, true};
 };
 
 struct DgSettings {
@@ -51,6 +53,9 @@ public:
   const Eigen::VectorXd& function_integrals() const { return integrals_; }
   int cell_count() const { return static_cast<int>(cells_.size()); }
   const Polyhedron& cell(int index) const { return cells_[index]; }
+  const std::vector<DgFace>& faces() const { return faces_; }
+  /// η_f of eq. (20) for one of faces() (× boundary_penalty_factor on a boundary face).
+  double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
@@ -58,8 +63,8 @@ public:
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
   Eigen::VectorXd body_load(const VectorField& force_density) const;
-  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, g = data(the
-  /// face's condition, x), by a rule of strength 2k + 2 on each face (exact for polynomial
+  /// −∫ Pg·σ(v)n + η_f ∫ Pg·v (IP) or η_f ∫ Pg·v (BZ) over the Dirichlet faces, g = data(the
+  /// face's condition, x), P = diag(the face's components), by a rule of strength 2k + 2 on each face (exact for polynomial
   /// data of degree ≤ k + 3).
   Eigen::VectorXd dirichlet_load(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
@@ -69,7 +74,6 @@ public:
   Eigen::VectorXd interpolate(const VectorField& field) const;
 
 private:
-  double face_penalty(const DgFace& face) const;
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>
   void for_each_cell_point(int strength, Body&& body) const;

@@ -6,6 +6,7 @@
 #include "dg/dg_linear_system.hpp"
 #include "dg/dg_scene_block.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
+#include "dg/tabulated_dg.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/material/material.hpp"
@@ -44,25 +45,16 @@ std::vector<DgFace> mesh_faces(const PolyhedralMesh& mesh, const Scene& scene) {
     for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c)
       if (scene.dirichlet[c].region.contains(mesh.face_centroids.row(f).transpose(), tolerance)) {
         face.condition = static_cast<int>(c);
+        face.components = scene.dirichlet[c].components;
         ++faces_per_condition[c];
       }
   }
   for (size_t c = 0; c < scene.dirichlet.size(); ++c) {
-    const DirichletCondition& condition = scene.dirichlet[c];
-    if (!(condition.components[0] && condition.components[1] && condition.components[2]))
-      throw InputError(input_message(scene.file.string(), condition.pointer + "/components",
-                                     "dg imposes all three components weakly in this build, got a subset"));
     if (faces_per_condition[c] == 0)
-      throw InputError(input_message(scene.file.string(), condition.pointer + "/region",
+      throw InputError(input_message(scene.file.string(), scene.dirichlet[c].pointer + "/region",
                                      "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
   }
   return faces;
-}
-
-void require_linear_material(const Scene& scene) {
-  if (scene.material.model != "linear")
-    throw InputError(input_message(scene.file.string(), "/material/model",
-                                   "dg supports 'linear' in this build, got '" + scene.material.model + "'"));
 }
 
 // K positive definite, up to its rigid motions when no condition holds the body: K + δM
@@ -84,23 +76,23 @@ bool positive_definite(const DgLinearSystem& system) {
 class DgMethod final : public MethodInstance {
 public:
   DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)) {
-    require_linear_material(scene);
-    const auto material = make_material(MaterialModel::linear, scene.material.youngs_modulus,
-                                        scene.material.poisson_ratio, scene.material.density);
+    material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
+                              scene.material.poisson_ratio, scene.material.density);
     const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
     mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
     const std::vector<DgFace> faces = mesh_faces(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
     const auto start = std::chrono::steady_clock::now();
-    const auto lame = material->lame();
+    const auto lame = material_->lame();
     const FacePenalty penalty = face_penalty(spec_, scene.material.youngs_modulus, lame.lambda, lame.mu);
     settings_ = {spec_.degree, spec_.flux, penalty.eta, lame.lambda, lame.mu, scene.material.density,
                  penalty.boundary_factor};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_);
-    // Kaufmann et al. §8: "start with a low value and double it until K is positive definite".
-    while (spec_.double_until_definite && !positive_definite(*system_)) {
+    // Kaufmann et al. §8: "start with a low value and double it until K is positive
+    // definite" (K of the linear material; Babuška–Zlámal is definite for any η).
+    while (spec_.double_until_definite && material_->is_linear() && !positive_definite(*system_)) {
       if (++doublings_ > max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");
@@ -111,9 +103,16 @@ public:
     for (int cell = 0; cell < mesh_.cell_count(); ++cell)
       for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
         element_dofs[cell].push_back(dof);
-    discretization_ = std::make_unique<LinearDgDiscretization>(
-        system_->stiffness(), system_->mass(), scene.material.density * system_->function_integrals(),
-        std::move(element_dofs), [this](double time) { return weak_condition_load(time); });
+    auto external_force = [this](double time) { return weak_condition_load(time); };
+    if (material_->is_linear()) {
+      linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(),
+                                                         scene.material.density * system_->function_integrals(),
+                                                         std::move(element_dofs), external_force);
+      discretization_ = linear_.get();
+    } else {
+      tabulated_ = make_tabulated_dg(*system_, *material_, external_force, block_jacobi_factory(std::move(element_dofs)));
+      discretization_ = tabulated_.discretization.get();
+    }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume_mesh).surface;
@@ -122,9 +121,11 @@ public:
 
   const Discretization& discretization() const override { return *discretization_; }
   nlohmann::json element_counts() const override { return {{"polyhedron", mesh_.cell_count()}}; }
-  /// None: every integral of the stiffness, mass and body force is exact (§5).
-  long long quadrature_points() const override { return 0; }
-  /// The exact integration and assembly, which replace tabulation.
+  /// None for the linear material: every integral is exact (§5); else the volume rules'.
+  long long quadrature_points() const override {
+    return tabulated_.discretization ? tabulated_.discretization->elements().point_count() : 0;
+  }
+  /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
@@ -162,7 +163,10 @@ private:
   PolyhedralMesh mesh_;
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
-  std::unique_ptr<LinearDgDiscretization> discretization_;
+  std::unique_ptr<Material> material_;
+  std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material
+  TabulatedDg tabulated_;                           // any other
+  const Discretization* discretization_ = nullptr;
   SurfaceMesh surface_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double integration_seconds_ = 0;
@@ -215,7 +219,7 @@ std::unique_ptr<MethodInstance> make_dg_method(const Scene& scene, const SceneGe
 
 const MethodDescription& dg_method() {
   static const MethodDescription method{dg_scene_block(), make_dg_method,
-                                        "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra (linear elasticity)"};
+                                        "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra"};
   return method;
 }
 

@@ -36,6 +36,14 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
   for (std::string_view key : mesh_keys)
     if (mesh.contains(key)) dg[std::string(key)] = mesh[std::string(key)];
 
+  // Interior penalty's consistency terms are linear-elastic in this build
+  // (dg/tabulated_dg.hpp): other materials default to, and need, Babuška–Zlámal.
+  const bool linear = scene["material"]["model"] == "linear";
+  if (!dg.contains("flux")) dg["flux"] = linear ? "interior_penalty" : "babuska_zlamal";
+  if (!linear && dg["flux"] == "interior_penalty")
+    validator.fail(pointer + "/flux", "'interior_penalty' needs material model 'linear' in this build, got '" +
+                                          scene["material"]["model"].get<std::string>() + "' (use 'babuska_zlamal')");
+
   json& penalty = dg["penalty"];
   if (!penalty.contains("convention")) penalty["convention"] = "kaufmann";
   const auto convention = static_cast<PenaltyConvention>(
@@ -66,8 +74,7 @@ const scene_schema::ObjectRule& dg_rule() {
   static const scene_schema::ObjectRule rule{
       {{.key = "degree", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one,
         .upper = scene_schema::Bound{3.0, true}},
-       {.key = "flux", .type = ValueType::string, .default_value = "interior_penalty",
-        .choices = scene_schema::names(flux_names)},
+       {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = scene_schema::names(fem_mesh_names)},

@@ -1,7 +1,8 @@
 // The dg method through the MethodInstance / Discretization interfaces: weakly imposed
 // moving conditions (Kaufmann et al. 2009 §4.2) reproduce an exact affine solution,
 // the automatic penalty doubling (§8) ends at the first definite K, the block-Jacobi
-// preconditioner solves the system with PCG, and the volume output is per element.
+// preconditioner solves the system with PCG, the volume output is per element, and a
+// nonlinear material runs through the shared assembly with the Babuška–Zlámal flux.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -70,6 +71,31 @@ TEST(DgMethod, WeakMovingConditionsReproduceTheAffineSolution) {
       EXPECT_LT((u - exact).cwiseAbs().maxCoeff(), 1e-10) << "degree " << degree << ", t = " << time;
     }
   }
+}
+
+// Uniaxial tension with lateral contraction (ν = 0.3): rollers prescribe only u_x on the
+// x faces, u_y on y = 0 and u_z on z = 0; the exact u = ε(x, −νy, −νz) is affine, and the
+// projected Nitsche terms reproduce it.
+TEST(DgMethod, ConditionsOnSomeComponentsReproduceUniaxialTension) {
+  const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
+  std::filesystem::create_directories(folder);
+  const auto file = folder / "rollers.json";
+  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
+    "material": { "model": "linear", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+    "boundary_conditions": [
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } }, "components": ["x"] },
+      { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"],
+        "motion": { "kind": "translate", "displacement": [0.02, 0, 0], "duration": 1 } },
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [3, 0, 2] } }, "components": ["y"] },
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [3, 2, 0] } }, "components": ["z"] } ],
+    "time": { "static": true },
+    "discretization": { "dg": { "degree": 2, "element": "tet4", "resolution": [2, 1, 1] } } })";
+  const Built built = build(file);
+  const Discretization& discretization = built.method->discretization();
+  const Eigen::VectorXd u = solve(discretization, discretization.external_force(1.0));
+  const Eigen::VectorXd exact =
+      built.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.01 * x.x(), -0.003 * x.y(), -0.003 * x.z()); });
+  EXPECT_LT((u - exact).cwiseAbs().maxCoeff(), 1e-10);
 }
 
 // Babuška–Zlámal is inconsistent (§4.1): the same bar is only approximated.
@@ -142,14 +168,19 @@ TEST(DgMethod, VolumeOutputGivesEachElementItsOwnField) {
   }
 }
 
-TEST(DgMethod, OtherMaterialModelsAreBadInputNamingTheModel) {
-  const auto file = write_bar_scene("neo_hookean_bar", R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })", "{}");
+TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialIsBadInputNamingTheFlux) {
+  const std::string neo_hookean = R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
+  const auto file = write_bar_scene("neo_hookean_ip_bar", neo_hookean, R"({ "flux": "interior_penalty" })");
   try {
     (void)build(file);
-    FAIL() << "accepted neo_hookean";
+    FAIL() << "accepted interior_penalty with neo_hookean";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("/material/model"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("/discretization/dg/flux"), std::string::npos) << error.what();
   }
+  // The default flux of a nonlinear material is Babuška–Zlámal, through the shared assembly.
+  const Built built = build(write_bar_scene("neo_hookean_bar", neo_hookean, R"({ "resolution": [2, 1, 1] })"));
+  EXPECT_EQ(built.method->facts()["flux"], "babuska_zlamal");
+  EXPECT_GT(built.method->quadrature_points(), 0);
 }
 
 }  // namespace
