@@ -10,8 +10,7 @@
 
 #include "dg/dg_method.hpp"
 #include "shared/fem/fem_method.hpp"
-#include "shared/scene/scene_override.hpp"
-#include "shared/solve/time_integrator.hpp"
+#include "tests/verify/dg/static_surface.hpp"
 
 namespace altfem::dg {
 namespace {
@@ -22,31 +21,9 @@ struct TipResult {
 };
 
 TipResult tip_deflection(const MethodFactory& factory, const std::vector<std::string>& assignments) {
-  std::vector<SceneOverride> overrides;
-  for (const auto& assignment : assignments) overrides.push_back(parse_scene_override(assignment));
-  const Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", overrides);
-  const SceneGeometry geometry = load_scene_geometry(scene);
-  const auto method = factory(scene, geometry);
-  const Discretization& discretization = method->discretization();
-  const auto solver = make_linear_solver({});
-  IntegratorOptions options;
-  options.kind = IntegrationScheme::static_equilibrium;
-  options.gravity = scene.gravity;
-  TimeIntegrator integrator(discretization, *solver, options);
-  State state{Eigen::VectorXd::Zero(discretization.dof_count()), Eigen::VectorXd::Zero(discretization.dof_count())};
-  integrator.apply_constraints(state);
-  integrator.step(state);
-  const Eigen::MatrixXd moved = method->embedded_displacement(state.displacement);
-  const Eigen::MatrixXd& vertices = method->embedded_surface().vertices;
-  double sum = 0;
-  int count = 0;
-  for (Eigen::Index v = 0; v < vertices.rows(); ++v)
-    if (std::abs(vertices(v, 0) - 1.0) < 1e-12) {
-      sum += moved(v, 2);
-      ++count;
-    }
-  EXPECT_GT(count, 0);
-  return {discretization.dof_count(), -sum / count};
+  const test::StaticSurface surface =
+      test::static_surface(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", factory, assignments);
+  return {surface.dofs, -test::mean_on_plane(surface, 0, 1.0, 2, 1e-9)};
 }
 
 TEST(DgCantilever, TipDeflectionAgreesWithTimoshenkoAndFineFem) {
