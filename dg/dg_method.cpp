@@ -6,6 +6,7 @@
 #include "dg/dg_linear_system.hpp"
 #include "dg/dg_scene_block.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
@@ -21,26 +22,14 @@ namespace {
 // Doublings of η before giving up: 2²⁰ × the start is far beyond any useful penalty.
 constexpr int max_doublings = 20;
 
-std::vector<Polyhedron> mesh_cells(const PolyhedralMesh& mesh) {
-  std::vector<Polyhedron> cells;
-  cells.reserve(mesh.cell_count());
-  for (int cell = 0; cell < mesh.cell_count(); ++cell) cells.push_back(cell_polyhedron(mesh, cell));
-  return cells;
-}
-
-// Every face of the mesh, a boundary face carrying the first Dirichlet condition whose
-// region holds its centroid (the condition is imposed weakly on the whole face, §4.2).
-std::vector<DgFace> mesh_faces(const PolyhedralMesh& mesh, const Scene& scene) {
+// The mesh's faces, a boundary face carrying the first Dirichlet condition whose region
+// holds its centroid (the condition is imposed weakly on the whole face, §4.2).
+std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scene& scene) {
   const double tolerance = 1e-9 * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
-  std::vector<DgFace> faces(mesh.face_count());
+  std::vector<DgFace> faces = mesh_faces(mesh);
   std::vector<int> faces_per_condition(scene.dirichlet.size(), 0);
   for (int f = 0; f < mesh.face_count(); ++f) {
     DgFace& face = faces[f];
-    face.polygon.resize(static_cast<Eigen::Index>(mesh.faces[f].size()), 3);
-    for (size_t v = 0; v < mesh.faces[f].size(); ++v) face.polygon.row(v) = mesh.nodes.row(mesh.faces[f][v]);
-    face.normal = mesh.face_normals.row(f).transpose();
-    face.minus = mesh.face_cells(f, 0);
-    face.plus = mesh.face_cells(f, 1);
     if (face.plus >= 0) continue;
     for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c)
       if (scene.dirichlet[c].region.contains(mesh.face_centroids.row(f).transpose(), tolerance)) {
@@ -80,7 +69,7 @@ public:
                               scene.material.poisson_ratio, scene.material.density);
     const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
     mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
-    const std::vector<DgFace> faces = mesh_faces(mesh_, scene);
+    const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
     const auto start = std::chrono::steady_clock::now();
