@@ -15,7 +15,10 @@ int check_command(const std::filesystem::path& scene_file, const std::string& me
 /// Options of `altfem mesh` (main.cpp documents each).
 struct MeshCommandOptions {
   std::string method;
-  std::string source = "convert";
+  std::string source = "convert";  ///< dg/harmonic: "convert" (the fem mesh cell by cell) or "slice"
+  int resolution = 16;              ///< --source slice: grid cells along the bounding box's longest side
+  double sliver_fraction = 1e-3;    ///< --source slice: pieces below this fraction of a cell are merged
+  int octree_levels = 0;            ///< --source slice: inside cells joined up to 2^levels grid cells per side
   std::filesystem::path output_directory;
   bool json = false;
 };
@@ -26,6 +29,8 @@ int run_command(const std::filesystem::path& scene_file, const std::string& meth
 
 /// `quadrature monomials`: Longva et al. 2020, §4.6 for strengths 1..order.
 int quadrature_monomials_command(const std::string& cell, int order, const std::string& simplifier, bool json);
+/// `quadrature conditioning`: Longva et al. 2020, §5.4 (Fig. 5) for one cell type.
+int quadrature_conditioning_command(const std::string& cell, bool json);
 /// `quadrature cell`: the rules of one background cell of a scene, as VTU points.
 int quadrature_cell_command(const std::filesystem::path& scene_file, const std::string& cell_index,
                             const std::string& cell_type, const std::string& resolution, int order,

@@ -50,6 +50,11 @@ int main(int argc, char** argv) {
   quadrature->require_subcommand(1);
   auto* monomials = quadrature->add_subcommand("monomials", "Fig. 4 of Longva et al. 2020: monomial errors");
   auto* quadrature_cell = quadrature->add_subcommand("cell", "The rules of one background cell as VTU points");
+  auto* conditioning = quadrature->add_subcommand("conditioning", "Fig. 5 of Longva et al. 2020: kappa and PCG iterations");
+  std::string conditioning_cell;
+  bool conditioning_json = false;
+  conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
+  conditioning->add_flag("--json", conditioning_json, "Print JSON");
   std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
   std::string simplifier = "nnls", quadrature_output = "out/quadrature-cell";
   int quadrature_order = 4;
@@ -71,8 +76,16 @@ int main(int argc, char** argv) {
   altfem::cli::MeshCommandOptions mesh_options;
   mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
   mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem (fcm in a later build)")->required();
-  mesh->add_option("--source", mesh_options.source, "dg/harmonic mesh source: convert (the fem mesh, cell by cell)");
-  mesh->add_option("--out", mesh_options.output_directory, "Output folder (default out/<scene>-mesh-<method>)");
+  mesh->add_option("--source", mesh_options.source,
+                   "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry)");
+  mesh->add_option("--resolution", mesh_options.resolution,
+                   "--source slice: grid cells along the geometry's longest side (default 16)");
+  mesh->add_option("--sliver-fraction", mesh_options.sliver_fraction,
+                   "--source slice: merge cut pieces below this fraction of a cell (default 1e-3; 0 keeps all)");
+  mesh->add_option("--octree-levels", mesh_options.octree_levels,
+                   "--source slice: join inside cells into octree cells of up to 2^L grid cells per side (default 0)");
+  mesh->add_option("--out", mesh_options.output_directory,
+                   "Output folder for mesh.vtu (default out/<scene>-mesh-<method>), or a file ending in .vtu");
   mesh->add_flag("--json", mesh_options.json, "Print the mesh facts as JSON");
 
   try {
@@ -93,6 +106,7 @@ int main(int argc, char** argv) {
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
       return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
+    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_json);
     if (*quadrature_cell)
       return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
                                                   quadrature_resolution, quadrature_order, simplifier,

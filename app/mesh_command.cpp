@@ -10,7 +10,9 @@
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/io/polyhedral_grid.hpp"
 #include "shared/io/vtu_writer.hpp"
+#include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 
@@ -19,12 +21,21 @@ namespace altfem::cli {
 namespace {
 
 nlohmann::json mesh_facts(const PolyhedralMesh& mesh, double geometry_volume) {
-  int tetrahedra = 0, hexahedra = 0;
-  for (PolyhedralCellKind kind : mesh.cell_kinds) (kind == PolyhedralCellKind::tetrahedron ? tetrahedra : hexahedra)++;
+  int tetrahedra = 0, hexahedra = 0, cut = 0, merged = 0, coarse = 0;
+  for (PolyhedralCellKind kind : mesh.cell_kinds) {
+    switch (kind) {
+      case PolyhedralCellKind::tetrahedron: ++tetrahedra; break;
+      case PolyhedralCellKind::hexahedron: ++hexahedra; break;
+      case PolyhedralCellKind::cut: ++cut; break;
+      case PolyhedralCellKind::merged: ++merged; break;
+      case PolyhedralCellKind::coarse: ++coarse; break;
+    }
+  }
   int boundary_faces = 0;
   for (int face = 0; face < mesh.face_count(); ++face) boundary_faces += mesh.is_boundary_face(face);
   const double volume = mesh.cell_volumes.sum();
-  return {{"cells", {{"total", mesh.cell_count()}, {"tetrahedra", tetrahedra}, {"hexahedra", hexahedra}}},
+  return {{"cells",
+           {{"total", mesh.cell_count()}, {"tetrahedra", tetrahedra}, {"hexahedra", hexahedra}, {"cut", cut}, {"merged", merged}, {"coarse", coarse}}},
           {"faces", {{"interior", mesh.face_count() - boundary_faces}, {"boundary", boundary_faces}}},
           {"nodes", mesh.nodes.rows()},
           {"volume", volume},
@@ -32,6 +43,23 @@ nlohmann::json mesh_facts(const PolyhedralMesh& mesh, double geometry_volume) {
           {"volume_relative_difference", geometry_volume > 0 ? (volume - geometry_volume) / geometry_volume : 0.0},
           {"smallest_cell_volume", mesh.cell_volumes.minCoeff()},
           {"largest_cell_volume", mesh.cell_volumes.maxCoeff()}};
+}
+
+/// The geometry sliced by a grid (Kaufmann et al. 2009 §9.2, Martin et al. 2008 §7):
+/// surfaces directly, shapes through their Mesh_3 surface, volume meshes through their boundary.
+SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const MeshCommandOptions& options) {
+  if (options.resolution < 1) throw InputError("--resolution: must be >= 1, got " + std::to_string(options.resolution));
+  if (!(options.sliver_fraction >= 0 && options.sliver_fraction < 1))
+    throw InputError("--sliver-fraction: must be in [0, 1), got " + std::to_string(options.sliver_fraction));
+  SlicingOptions slicing;
+  slicing.resolution = options.resolution;
+  slicing.sliver_fraction = options.sliver_fraction;
+  if (options.octree_levels < 0 || options.octree_levels > 10)
+    throw InputError("--octree-levels: must be in 0..10, got " + std::to_string(options.octree_levels));
+  slicing.octree_levels = options.octree_levels;
+  if (geometry.surface) return slice_into_polyhedra(*geometry.surface, slicing);
+  if (geometry.shape) return slice_into_polyhedra(*geometry.shape, slicing);
+  return slice_into_polyhedra(boundary_surface(*geometry.mesh).surface, slicing);
 }
 
 }  // namespace
@@ -43,41 +71,67 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   if (method != "dg" && method != "harmonic" && method != "fem")
     throw InputError("--method: expected dg, harmonic, fem or fcm, got '" + method + "'");
   const bool polyhedral = method != "fem";
-  if (polyhedral && options.source != "convert")
-    throw InputError("--source " + options.source + ": only 'convert' (the fem mesh, cell by cell) is in this build");
+  if (options.source != "convert" && options.source != "slice")
+    throw InputError("--source: expected convert or slice, got '" + options.source + "'");
+  if (!polyhedral && options.source != "convert")
+    throw InputError("--source " + options.source + ": only for the polyhedral methods (dg, harmonic)");
   const Scene scene = load_scene(scene_file);
   const SceneGeometry geometry = load_scene_geometry(scene);
   for (const auto& warning : geometry.warnings) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
 
-  // dg and harmonic: the fem mesh converted cell by cell (Kaufmann et al. 2009 §9 and
-  // Martin et al. 2008 §7 also slice a grid; not in this build). fem: its own mesh; its
-  // facts come from the same conversion (straight-sided cells from the corners).
-  // dg reads the mesh keys of its own block (the same rules as fem's).
-  const VolumeMesh volume_mesh = build_fem_mesh(method == "dg" ? dg::dg_spec(scene).mesh : fem_spec(scene), geometry);
-  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
+  // dg and harmonic: the fem mesh converted cell by cell, or the geometry sliced by a
+  // grid. fem: its own mesh; its facts come from the same conversion (straight-sided
+  // cells from the corners).
+  const bool slice = options.source == "slice";
+  VolumeMesh volume_mesh;
+  SlicedMesh sliced;
+  if (slice) {
+    sliced = slice_scene_geometry(geometry, options);
+  } else {
+    // dg reads the mesh keys of its own block (the same rules as fem's).
+    volume_mesh = build_fem_mesh(method == "dg" ? dg::dg_spec(scene).mesh : fem_spec(scene), geometry);
+    sliced.mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
+  }
+  const PolyhedralMesh& mesh = sliced.mesh;
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+  // --out DIR writes DIR/mesh.vtu; --out FILE.vtu writes that file.
   const std::filesystem::path out = options.output_directory.empty()
                                         ? std::filesystem::path("out") / (scene.name + "-mesh-" + method)
                                         : options.output_directory;
-  std::filesystem::create_directories(out);
-  const std::filesystem::path vtu = out / "mesh.vtu";
+  const bool out_is_file = out.extension() == ".vtu";
+  const std::filesystem::path vtu = out_is_file ? out : out / "mesh.vtu";
+  if (!vtu.parent_path().empty()) std::filesystem::create_directories(vtu.parent_path());
   write_vtu(vtu, polyhedral ? grid_from_polyhedral_mesh(mesh) : grid_from_volume_mesh(volume_mesh));
 
   nlohmann::json facts = mesh_facts(mesh, geometry.volume);
   facts["method"] = method;
   if (!polyhedral) facts["nodes"] = volume_mesh.nodes.rows();  // the written mesh's, higher-order nodes included
   facts["source"] = polyhedral ? options.source : std::string(element_name(volume_mesh.element_type));
+  if (slice)
+    facts["slicing"] = {{"grid", {sliced.grid_cells(0), sliced.grid_cells(1), sliced.grid_cells(2)}},
+                        {"cell_size", sliced.cell_size},
+                        {"cut_pieces", sliced.cut_pieces},
+                        {"grid_cells_split_by_topology", sliced.split_grid_cells},
+                        {"merged_slivers", sliced.merged_slivers},
+                        {"octree_coarse_cells", sliced.coarse_cells},
+                        {"sliver_fraction", options.sliver_fraction}};
   facts["build_time_s"] = build_seconds;
   facts["file"] = vtu.string();
   if (options.json) {
     std::printf("%s\n", facts.dump(2).c_str());
     return 0;
   }
-  std::printf("%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra), %lld nodes\n", method.c_str(),
-              scene.name.c_str(), facts["source"].get<std::string>().c_str(), facts["cells"]["total"].get<long long>(),
-              facts["cells"]["tetrahedra"].get<int>(), facts["cells"]["hexahedra"].get<int>(),
-              facts["nodes"].get<long long>());
+  std::printf("%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra, %d cut, %d merged, %d coarse), %lld nodes\n",
+              method.c_str(), scene.name.c_str(), facts["source"].get<std::string>().c_str(),
+              facts["cells"]["total"].get<long long>(), facts["cells"]["tetrahedra"].get<int>(),
+              facts["cells"]["hexahedra"].get<int>(), facts["cells"]["cut"].get<int>(),
+              facts["cells"]["merged"].get<int>(), facts["cells"]["coarse"].get<int>(), facts["nodes"].get<long long>());
+  if (slice)
+    std::printf("slicing: %d x %d x %d grid of cells %.4g, %d cut pieces, %d grid cells split by topology, "
+                "%d slivers merged\n",
+                sliced.grid_cells(0), sliced.grid_cells(1), sliced.grid_cells(2), sliced.cell_size, sliced.cut_pieces,
+                sliced.split_grid_cells, sliced.merged_slivers);
   std::printf("faces: %d interior, %d boundary\n", facts["faces"]["interior"].get<int>(),
               facts["faces"]["boundary"].get<int>());
   std::printf("volume: %.10g (geometry %.10g, relative difference %.3e)\n", facts["volume"].get<double>(),

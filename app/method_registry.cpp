@@ -1,13 +1,14 @@
 #include "app/method_registry.hpp"
 
 #include "dg/dg_method.hpp"
+#include "fcm/fcm_method.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_method.hpp"
 
 namespace altfem::cli {
 
 const std::vector<MethodDescription>& registered_methods() {
-  static const std::vector<MethodDescription> methods{fem_method(), dg::dg_method()};
+  static const std::vector<MethodDescription> methods{fem_method(), fcm::fcm_method(), dg::dg_method()};
   return methods;
 }
 

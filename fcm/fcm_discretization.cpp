@@ -4,6 +4,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/element/reference_element.hpp"
+#include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/quadrature/reference_rules.hpp"
@@ -89,9 +90,11 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   parts.elements = tabulate_lagrange(fcm.mesh, kept_rules(stiffness_cells, kept, background.element_type,
                                                           options.quadrature_strength,
                                                           stabilize_stiffness ? options.stabilization : 0.0));
-  parts.mass_elements = tabulate_lagrange(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
-                                                               options.mass_quadrature_strength,
-                                                               stabilize_mass ? options.stabilization : 0.0));
+  // The mass rules are large (a high strength, never simplified) and used once
+  // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
+  parts.element_masses = lagrange_element_masses(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
+                                                                       options.mass_quadrature_strength,
+                                                                       stabilize_mass ? options.stabilization : 0.0));
   parts.materials = {&material};
   parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");
 

@@ -5,11 +5,14 @@
 #include "fcm/cut_cell_rule.hpp"
 #include "fcm/rule_cache.hpp"
 
+#include <chrono>
+
 namespace altfem::fcm {
 
 CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
-                                                  SimplificationMethod method, double tolerance,
-                                                  const std::filesystem::path& cache_directory) {
+                                                  std::optional<SimplificationMethod> method, double tolerance,
+                                                  const std::filesystem::path& cache_directory,
+                                                  std::shared_ptr<IntersectionStatistics> statistics) {
   // Each cell's own volume, once: volume fractions are clipped volume over it.
   const int corner_count = element_corner_count(background.element_type);
   std::vector<double> volumes(background.cells.rows());
@@ -18,14 +21,26 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
     volumes[c] = CellGeometry(background.element_type, corners).volume();
   }
-  return [background, embedded, method, tolerance, cache_directory, volumes](int strength, RulePurpose purpose) {
+  return [background, embedded, method, tolerance, cache_directory, volumes, statistics](int strength,
+                                                                                          RulePurpose purpose) {
+    const auto start = std::chrono::steady_clock::now();
     CellRuleOptions options;
     options.order = strength;
-    options.simplify = purpose == RulePurpose::stiffness;  // §6: mass rules are not simplified
-    options.method = method;
+    // §6: mass rules are never simplified.
+    options.simplify = purpose == RulePurpose::stiffness && method.has_value();
+    if (method) options.method = *method;
     options.tolerance = tolerance;
     CellRules rules = cache_directory.empty() ? compute_cell_rules(background, embedded, options)
                                               : cached_cell_rules(background, embedded, options, cache_directory);
+    if (statistics) {
+      statistics->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (purpose == RulePurpose::stiffness) {
+        statistics->initial_points = rules.initial_points;
+        statistics->final_points = rules.final_points;
+        statistics->max_residual = rules.max_residual;
+        statistics->failed_simplifications = rules.failed_simplifications;
+      }
+    }
     std::vector<CellQuadrature> cells(rules.cells.size());
     for (std::size_t c = 0; c < cells.size(); ++c) {
       CellRule& cell = rules.cells[c];

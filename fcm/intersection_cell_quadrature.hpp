@@ -4,19 +4,32 @@
 // stiffness rules simplified to at most C(m+3, 3) points, mass rules not (§6), and
 // optionally cached on disk (rule_cache.hpp).
 #include <filesystem>
+#include <memory>
+#include <optional>
 
 #include "fcm/cell_quadrature.hpp"
 #include "fcm/cell_rules.hpp"
 
 namespace altfem::fcm {
 
+/// What the last stiffness rules cost and how exact they are (for summary.json).
+struct IntersectionStatistics {
+  Eigen::Index initial_points = 0;  ///< stiffness points of the cut cells before simplification
+  Eigen::Index final_points = 0;    ///< … and after
+  double max_residual = 0.0;        ///< worst simplification moment residual
+  int failed_simplifications = 0;
+  double seconds = 0.0;             ///< generation and simplification, stiffness and mass
+};
+
 /// background: the FCM mesh (hexahedra with planar faces, or tetrahedra); embedded: a
-/// Tet4 mesh of the object. `method` and `tolerance` as in SimplificationOptions. With a
+/// Tet4 mesh of the object. `method` and `tolerance` as in SimplificationOptions
+/// (method nullopt: stiffness rules are not simplified, §6.3's comparison). With a
 /// non-empty cache_directory the rules are read from / written to it. The source keeps
-/// copies of both meshes.
-CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
-                                                  SimplificationMethod method = SimplificationOptions{}.method,
-                                                  double tolerance = SimplificationOptions{}.tolerance,
-                                                  const std::filesystem::path& cache_directory = {});
+/// copies of both meshes; when `statistics` is given, each call records into it.
+CellQuadratureSource intersection_cell_quadrature(
+    const VolumeMesh& background, const VolumeMesh& embedded,
+    std::optional<SimplificationMethod> method = SimplificationOptions{}.method,
+    double tolerance = SimplificationOptions{}.tolerance, const std::filesystem::path& cache_directory = {},
+    std::shared_ptr<IntersectionStatistics> statistics = nullptr);
 
 }  // namespace altfem::fcm

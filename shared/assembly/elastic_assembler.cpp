@@ -229,7 +229,10 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
                          ": the eigen-solver of the SPD projection did not converge");
 }
 
-void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
+void ElasticAssembler::mass_matrix(SparseMatrix& mass) const { mass_matrix(element_masses(elements_), mass); }
+
+void ElasticAssembler::mass_matrix(const ElementMasses& masses, SparseMatrix& mass) const {
+  check_masses(masses);
   mass = pattern();
   double* values = mass.valuePtr();
   const int* outer = mass.outerIndexPtr();
@@ -238,48 +241,73 @@ void ElasticAssembler::mass_matrix(SparseMatrix& mass) const {
       const double density = materials_[element.material]->density();
       const int n = element.basis_count();
       const int* offsets = sparsity_.pair_offsets(e);
+      const Eigen::MatrixXd& matrix = masses.matrices[e];
       for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
-          double m = 0;
-          for (int q = 0; q < element.point_count(); ++q)
-            m += element.weights[q] * element.values(q, a) * element.values(q, b);
-          m *= density;
+          const double m = density * matrix(a, b);
           for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
         }
   });
 }
 
 Eigen::VectorXd ElasticAssembler::body_force(const Eigen::Vector3d& acceleration) const {
+  return body_force(element_masses(elements_), acceleration);
+}
+
+Eigen::VectorXd ElasticAssembler::body_force(const ElementMasses& masses, const Eigen::Vector3d& acceleration) const {
+  check_masses(masses);
   // Serial: it runs once per run, and elements sum into shared entries.
   Eigen::VectorXd force = Eigen::VectorXd::Zero(pattern().rows());
   for (int e = 0; e < elements_.size(); ++e) {
     const ElementView element = elements_[e];
     const double density = materials_[element.material]->density();
-    for (int a = 0; a < element.basis_count(); ++a) {
-      double integral = 0;
-      for (int q = 0; q < element.point_count(); ++q) integral += element.weights[q] * element.values(q, a);
-      force.segment<3>(3 * element.basis[a]) += density * integral * acceleration;
-    }
+    for (int a = 0; a < element.basis_count(); ++a)
+      force.segment<3>(3 * element.basis[a]) += density * masses.integrals[e][a] * acceleration;
   }
   return force;
 }
 
-Eigen::VectorXd ElasticAssembler::lumped_mass() const {
+Eigen::VectorXd ElasticAssembler::lumped_mass() const { return lumped_mass(element_masses(elements_)); }
+
+Eigen::VectorXd ElasticAssembler::lumped_mass(const ElementMasses& masses) const {
+  check_masses(masses);
   Eigen::VectorXd lumped = Eigen::VectorXd::Zero(pattern().rows());
   for (int e = 0; e < elements_.size(); ++e) {
     const ElementView element = elements_[e];
-    const int n = element.basis_count();
-    double element_mass = 0, diagonal_sum = 0;
-    Eigen::VectorXd diagonal = Eigen::VectorXd::Zero(n);
-    for (int q = 0; q < element.point_count(); ++q) {
-      element_mass += element.weights[q];
-      for (int a = 0; a < n; ++a) diagonal[a] += element.weights[q] * element.values(q, a) * element.values(q, a);
-    }
-    diagonal_sum = diagonal.sum();
-    const double scale = materials_[element.material]->density() * element_mass / diagonal_sum;
-    for (int a = 0; a < n; ++a) lumped.segment<3>(3 * element.basis[a]).array() += scale * diagonal[a];
+    const Eigen::VectorXd diagonal = masses.matrices[e].diagonal();
+    const double scale = materials_[element.material]->density() * masses.volumes[e] / diagonal.sum();
+    for (int a = 0; a < element.basis_count(); ++a) lumped.segment<3>(3 * element.basis[a]).array() += scale * diagonal[a];
   }
   return lumped;
+}
+
+Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& displacement) const {
+  Eigen::MatrixXd stresses(elements_.size(), 9);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int e = 0; e < elements_.size(); ++e) {
+    const ElementView element = elements_[e];
+    const Material& material = *materials_[element.material];
+    Eigen::MatrixX3d u(element.basis_count(), 3);
+    for (int a = 0; a < element.basis_count(); ++a) u.row(a) = displacement.segment<3>(3 * element.basis[a]).transpose();
+    Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+    double volume = 0;
+    for (int q = 0; q < element.point_count(); ++q) {
+      const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + u.transpose() * element.gradients_at(q);
+      sum += element.weights[q] * material.pk1(F) * F.transpose() / F.determinant();
+      volume += element.weights[q];
+    }
+    const Eigen::Matrix3d mean = sum / volume;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) stresses(e, 3 * i + j) = mean(i, j);
+  }
+  return stresses;
+}
+
+void ElasticAssembler::check_masses(const ElementMasses& masses) const {
+  bool same = masses.size() == elements_.size();
+  for (int e = 0; same && e < elements_.size(); ++e) same = masses.matrices[e].rows() == elements_[e].basis_count();
+  if (!same)
+    throw std::invalid_argument("ElasticAssembler: the element masses must be the elements', in the same order");
 }
 
 }  // namespace altfem

@@ -12,6 +12,7 @@
 
 #include "shared/assembly/basis_incidence.hpp"
 #include "shared/assembly/block_sparsity.hpp"
+#include "shared/assembly/element_masses.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/material/material.hpp"
 
@@ -51,6 +52,14 @@ public:
   /// each element keeps its mass (Hinton, Rock & Zienkiewicz 1976). Plain row sums give
   /// zero or negative corner masses for quadratic tets; HRZ stays positive.
   Eigen::VectorXd lumped_mass() const;
+  /// The same three from other rules of the same elements, reduced per element (one
+  /// entry per element, in order; ElementMasses): the FCM's mass rules.
+  void mass_matrix(const ElementMasses& masses, SparseMatrix& mass) const;
+  Eigen::VectorXd body_force(const ElementMasses& masses, const Eigen::Vector3d& acceleration) const;
+  Eigen::VectorXd lumped_mass(const ElementMasses& masses) const;
+  /// Per element the Cauchy stress σ = P Fᵀ / det F averaged over its quadrature points
+  /// (weights w_q |det J|): #elements × 9, row e holding σ row-major. For output.
+  Eigen::MatrixXd mean_cauchy_stress(const Eigen::VectorXd& displacement) const;
   /// Whether every material's tangent is independent of F (linear elasticity): then
   /// the Hessian needs assembling and factorising only once.
   bool is_linear() const;
@@ -58,6 +67,7 @@ public:
 private:
   struct Scratch;
   void check_materials() const;
+  void check_masses(const ElementMasses& masses) const;
   /// OpenMP's current thread count, at most the number of scratch blocks.
   int active_threads() const;
   /// body(element index) for every element, colour by colour, in parallel within a colour.

@@ -61,10 +61,12 @@ void for_each_index_in_two_passes(size_t first_count, First&& first, size_t seco
 /// body(item) for every item, colour by colour: within a colour no two items share a
 /// basis function, so they scatter without locks and every entry sums in the same
 /// order. One parallel region for all colours: a barrier between colours costs less
-/// than a new region.
+/// than a new region. Every colour ends in a barrier, so the work per colour, not the
+/// total, decides: a 187-tet mesh in 20 colours took 0.3 s per assembly on a loaded
+/// 2-core machine in parallel, 0.3 ms serially.
 template <typename Body>
 void for_each_colored(const std::vector<std::vector<int>>& colors, size_t total, int threads, Body&& body) {
-  if (threads == 1 || total < minimum_parallel_items) {
+  if (threads == 1 || total < minimum_parallel_items * colors.size()) {
     for (const auto& color : colors)
       for (int item : color) body(item);
     return;

@@ -24,34 +24,20 @@ std::vector<std::vector<int>> element_dof_groups(const TabulatedElements& elemen
   return groups;
 }
 
-// The mass rules must tabulate the same basis lists, so that both assemblers share one
-// sparsity pattern (the integrators add the mass's and the Hessian's value arrays).
-void check_same_basis(const TabulatedElements& elements, const TabulatedElements& mass_elements) {
-  bool same = elements.size() == mass_elements.size();
-  for (int e = 0; same && e < elements.size(); ++e)
-    same = std::ranges::equal(elements[e].basis, mass_elements[e].basis) &&
-           elements[e].material == mass_elements[e].material;
-  if (!same)
-    throw std::invalid_argument("TabulatedDiscretization: the mass elements must have the elements' basis lists "
-                                "and materials, in the same order");
-}
-
 }  // namespace
 
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
   const BasisGroups couplings = collect_couplings(parts_.terms);
   assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings);
-  if (parts_.mass_elements) {
-    check_same_basis(parts_.elements, *parts_.mass_elements);
-    mass_assembler_ = std::make_unique<ElasticAssembler>(*parts_.mass_elements, parts_.materials, couplings);
-  }
+  masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
+  parts_.element_masses.reset();
   int first_group = 0;
   for (const auto& term : parts_.terms) {
     term->bind(assembler_->sparsity(), first_group);
     first_group += term->couplings().size();
   }
-  mass_assembler().mass_matrix(mass_);
-  lumped_mass_ = mass_assembler().lumped_mass();
+  assembler_->mass_matrix(masses_, mass_);
+  lumped_mass_ = assembler_->lumped_mass(masses_);
   if (parts_.explicit_mass == ExplicitMassKind::lumped)
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
   else

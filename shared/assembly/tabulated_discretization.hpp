@@ -29,11 +29,11 @@ enum class ExplicitMassKind {
 
 struct DiscretizationParts {
   TabulatedElements elements;
-  /// The same elements (same basis lists, in the same order) tabulated with the rules
-  /// the mass matrix, the lumped mass and the body-force loads use, when they differ from
-  /// the stiffness rules: the FCM integrates mass at a higher order than stiffness and
-  /// never simplifies it (Longva et al. 2020 §6). Empty: `elements` serve for both.
-  std::optional<TabulatedElements> mass_elements;
+  /// The elements' masses (one entry per element, in order) from the rules the mass
+  /// matrix, the lumped mass and the body-force loads use, when they differ from the
+  /// stiffness rules: the FCM integrates mass at a higher order than stiffness and
+  /// never simplifies it (Longva et al. 2020 §6). Empty: from `elements`.
+  std::optional<ElementMasses> element_masses;
   /// materials[m] serves the elements of material id m (not owned).
   std::vector<const Material*> materials;
   std::vector<std::unique_ptr<EnergyTerm>> terms;
@@ -59,7 +59,7 @@ public:
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return mass_; }
   const ExplicitMass& explicit_mass() const override { return *explicit_mass_; }
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
-    return mass_assembler().body_force(acceleration);
+    return assembler_->body_force(masses_, acceleration);
   }
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override;
@@ -67,16 +67,17 @@ public:
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
   PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }
+  Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& displacement) const override {
+    return assembler_->mean_cauchy_stress(displacement);
+  }
 
   const TabulatedElements& elements() const { return parts_.elements; }
   const ElasticAssembler& assembler() const { return *assembler_; }
 
 private:
-  const ElasticAssembler& mass_assembler() const { return mass_assembler_ ? *mass_assembler_ : *assembler_; }
-
   DiscretizationParts parts_;
   std::unique_ptr<ElasticAssembler> assembler_;
-  std::unique_ptr<ElasticAssembler> mass_assembler_;  // over parts_.mass_elements, if given
+  ElementMasses masses_;  // parts_.element_masses, or those of parts_.elements
   Eigen::SparseMatrix<double> mass_;
   Eigen::VectorXd lumped_mass_;
   std::unique_ptr<ExplicitMass> explicit_mass_;

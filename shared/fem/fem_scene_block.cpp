@@ -2,9 +2,9 @@
 #include "shared/fem/fem_scene_block.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <string>
 
+#include "shared/mesh/structured_grid.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene_shape.hpp"
 
@@ -70,12 +70,8 @@ void complete_fem(const Validator& validator, const json& scene, json& fem, cons
   if (mesh == "grid" && !fem.contains("resolution")) {
     const Eigen::Vector3d extent =
         scale * (vector3_from_json(geometry["shape"]["box"]["max"]) - vector3_from_json(geometry["shape"]["box"]["min"]));
-    const double cell = std::min(extent.minCoeff() / 2.0, extent.maxCoeff() / 4.0);
-    fem["resolution"] = json::array();
-    for (int i = 0; i < 3; ++i) {
-      const double cells = extent[i] / cell;  // NaN or inf only for absurd (overflowing) boxes
-      fem["resolution"].push_back(!(cells >= 1.0) ? 1L : cells > 32.0 ? 32L : std::lround(cells));
-    }
+    const Eigen::Vector3i resolution = default_grid_resolution(extent);
+    fem["resolution"] = {resolution.x(), resolution.y(), resolution.z()};
   }
   // A surface's bounds are known only once it is read: its default stays absent
   // (fem_max_cell_size).

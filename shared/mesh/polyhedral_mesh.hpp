@@ -14,7 +14,10 @@ namespace altfem {
 /// Where a cell came from (written to VTU as the integer cell data "kind").
 enum class PolyhedralCellKind : int {
   tetrahedron = 0,  ///< a tetrahedron of a converted volume mesh
-  hexahedron = 1,   ///< a hexahedron of a converted volume mesh
+  hexahedron = 1,   ///< a hexahedron of a converted volume mesh, or a grid cell wholly inside a sliced object
+  cut = 2,          ///< one connected piece of a grid cell cut by a sliced object's surface
+  merged = 3,       ///< a cell with sliver pieces merged into it (merge_slivers)
+  coarse = 4,       ///< an octree cell: 2^(3L) grid cells wholly inside, its finer neighbours' nodes on its faces
 };
 
 struct PolyhedralMesh {

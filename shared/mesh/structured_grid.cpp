@@ -1,6 +1,8 @@
 #include "shared/mesh/structured_grid.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <stdexcept>
 
 #include "shared/mesh/elevate_order.hpp"
@@ -68,6 +70,16 @@ VolumeMesh structured_grid(const Eigen::AlignedBox3d& box, const Eigen::Vector3i
   if (!((box.sizes().array() > 0).all())) throw std::invalid_argument("structured_grid: the box is empty");
   const bool tetrahedra = element_shape(type) == ElementShape::tetrahedron;
   return elevate_order(linear_grid(box, resolution, tetrahedra), type);
+}
+
+Eigen::Vector3i default_grid_resolution(const Eigen::Vector3d& extent) {
+  const double cell = std::min(extent.minCoeff() / 2.0, extent.maxCoeff() / 4.0);
+  Eigen::Vector3i resolution;
+  for (int i = 0; i < 3; ++i) {
+    const double cells = extent[i] / cell;  // NaN or inf only for absurd (overflowing) boxes
+    resolution[i] = !(cells >= 1.0) ? 1 : cells > 32.0 ? 32 : static_cast<int>(std::lround(cells));
+  }
+  return resolution;
 }
 
 }  // namespace altfem

@@ -12,4 +12,9 @@ namespace altfem {
 /// Higher-order nodes are placed on straight edges (elevate_order).
 VolumeMesh structured_grid(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& resolution, ElementType type);
 
+/// The default resolution of a grid over a box with these extents (docs/scene-schema.md):
+/// cells of size h = min(shortest / 2, longest / 4), n = clamp(round(extent / h), 1, 32)
+/// per axis — a cube gives (4, 4, 4), a 1 × 0.1 × 0.1 beam (20, 2, 2).
+Eigen::Vector3i default_grid_resolution(const Eigen::Vector3d& extent);
+
 }  // namespace altfem

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "shared/io/unstructured_grid.hpp"
@@ -38,6 +40,9 @@ public:
   virtual Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const = 0;
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
+  /// What the user should know about this discretization of the scene (one line each),
+  /// printed by `run` and kept in summary.json's `warnings`.
+  virtual std::vector<std::string> warnings() const { return {}; }
 };
 
 using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&)>;

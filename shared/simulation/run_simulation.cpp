@@ -108,6 +108,24 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const Discretizati
   return options;
 }
 
+// The largest von Mises stress of the elements' mean Cauchy stresses (#elements × 9);
+// 0 when there are none.
+Eigen::VectorXd von_mises(const Eigen::MatrixXd& stresses) {
+  Eigen::VectorXd result(stresses.rows());
+  for (Eigen::Index e = 0; e < stresses.rows(); ++e) {
+    const Eigen::RowVectorXd row = stresses.row(e);  // contiguous: rows of a column-major matrix are strided
+    const Eigen::Matrix3d sigma = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(row.data());
+    const Eigen::Matrix3d deviator = sigma - sigma.trace() / 3 * Eigen::Matrix3d::Identity();
+    result[e] = std::sqrt(1.5 * deviator.squaredNorm());  // √(3/2 s:s)
+  }
+  return result;
+}
+
+double max_von_mises(const Discretization& discretization, const Eigen::VectorXd& displacement) {
+  const Eigen::MatrixXd stresses = discretization.element_cauchy_stress(displacement);
+  return stresses.rows() == 0 ? 0.0 : von_mises(stresses).maxCoeff();
+}
+
 // Writes the frames of one output time: the method's mesh and the embedded surface.
 class FrameWriter {
 public:
@@ -115,11 +133,21 @@ public:
       : method_(method), directory_(directory), output_(output), volume_(directory / "volume.pvd"),
         surface_(directory / "surface.pvd") {}
 
+  // Stress as cell data, when the discretization's elements are the volume cells.
+  void add_stress(UnstructuredGrid& grid, const Eigen::VectorXd& displacement) const {
+    const Eigen::MatrixXd stresses = method_.discretization().element_cauchy_stress(displacement);
+    if (stresses.rows() == 0 || stresses.rows() != grid.cell_count()) return;
+    grid.cell_data.emplace_back("cauchy_stress", stresses);
+    grid.cell_data.emplace_back("von_mises", von_mises(stresses));
+  }
+
   void write(const Eigen::VectorXd& displacement, double time) {
     char name[64];
     if (output_.volume) {
       std::snprintf(name, sizeof name, "volume_%06d.vtu", frame_);
-      write_vtu(directory_ / name, method_.volume_grid(displacement));
+      UnstructuredGrid grid = method_.volume_grid(displacement);
+      add_stress(grid, displacement);
+      write_vtu(directory_ / name, grid);
       volume_.add(time, name);
       volume_.write();
     }
@@ -187,6 +215,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
                          "install libopenblas0-pthread\n", blas.library.c_str());
   summary["facts"] = method->facts();
+  summary["warnings"] = method->warnings();
+  for (const std::string& warning : method->warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
   if (explicit_steps) summary["facts"]["critical_time_step"] = critical_time_step;
 
   State state;
@@ -206,7 +236,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   try {
     frames.write(state.displacement, scene.time.is_static ? 0.0 : state.time);
     // iterations: Newton iterations, or objective evaluations with solver.nonlinear = lbfgs.
-    log << "# step time iterations linear_iterations residual total_energy\n";
+    log << "# step time iterations linear_iterations residual total_energy max_von_mises\n";
     for (int step = 1; step <= steps; ++step) {
       StepReport report;
       try {
@@ -225,7 +255,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       check_state(state, total_energy, size, step, scene.time.dt, critical_time_step);
       steps_done = step;
       log << step << ' ' << state.time << ' ' << report.newton_iterations + report.lbfgs_evaluations << ' '
-          << report.linear_iterations << ' ' << report.residual << ' ' << total_energy << '\n';
+          << report.linear_iterations << ' ' << report.residual << ' ' << total_energy << ' '
+          << max_von_mises(method->discretization(), state.displacement) << '\n';
       if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, state.time);
       progress.update(step, report.newton_iterations);
     }

@@ -66,6 +66,9 @@ public:
   /// A method-specific preconditioner for the iterative linear solvers (FCM's
   /// Additive Schwarz, DG's block Jacobi); empty for none.
   virtual PreconditionerFactory preconditioner_factory() const { return {}; }
+  /// Per element the Cauchy stress averaged over it (#elements × 9, row-major σ), in
+  /// the order of the method's volume cells; empty when the discretization has none.
+  virtual Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& /*displacement*/) const { return {}; }
 };
 
 }  // namespace altfem

@@ -77,6 +77,10 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
     throw NumericalError(where(step, iteration) + ": " + error.what());
   }
   if (!direction_.allFinite()) throw NumericalError(where(step, iteration) + ": the linear solve produced non-finite values");
+  // An iterative solver meets the constrained rows only to its tolerance (a Schwarz
+  // block couples them to free DOFs), and the constraints must be met exactly for
+  // Newton to stop: they are known, so set them.
+  elimination_.set_constrained(direction_, increment);
 }
 
 NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,

@@ -51,6 +51,22 @@ if "surface_vertices" in summary["facts"] and len(surface.points) != summary["fa
     failures.append("the deformed surface is not the embedded triangle surface")
 if summary["surface"] != surface_frames[-1].name:
     failures.append("summary.json's surface is not the last surface frame")
+# Stress (issue #21): the elements' mean Cauchy stress and von Mises as cell data, the
+# step's largest von Mises as the last column of log.txt, the same number.
+if "von_mises" in last.cell_data:
+    von_mises = numpy.concatenate(last.cell_data["von_mises"]).reshape(-1)
+    stress = numpy.concatenate(last.cell_data["cauchy_stress"])
+    if stress.shape != (len(von_mises), 9) or not numpy.isfinite(stress).all():
+        failures.append(f"cauchy_stress array {stress.shape} not finite or of the wrong size")
+    s = stress.reshape(-1, 3, 3)
+    deviator = s - numpy.trace(s, axis1=1, axis2=2)[:, None, None] / 3 * numpy.eye(3)
+    if not numpy.allclose(numpy.sqrt(1.5 * (deviator ** 2).sum(axis=(1, 2))), von_mises, rtol=1e-12, atol=0):
+        failures.append("von_mises is not sqrt(3/2 s:s) of cauchy_stress")
+    log = [line.split() for line in (folder / "log.txt").read_text().splitlines() if not line.startswith("#")]
+    if log and summary["steps"] == len(log) and not numpy.isclose(float(log[-1][-1]), von_mises.max(), rtol=1e-5):
+        failures.append(f"log.txt's last max_von_mises {log[-1][-1]} is not the last frame's {von_mises.max()}")
+elif summary["method"] in ("fem", "fcm"):
+    failures.append("no von_mises cell data in the volume output")
 for failure in failures:
     print(failure)
 sys.exit(1 if failures else 0)

@@ -2,6 +2,7 @@
 // of one cell's rules (read back with meshio), and bad arguments exiting 2.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
 
@@ -51,6 +52,31 @@ TEST(QuadratureCommand, CellWritesRulesAsVtuPoints) {
   const std::string command = "/usr/bin/python3 -c \"" + script + "\" " + (folder / "simplified_rule.vtu").string() +
                               " " + report["clipped_volume"].dump();
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
+}
+
+}  // namespace
+}  // namespace altfem::test
+
+namespace altfem::test {
+namespace {
+
+TEST(QuadratureConditioning, PrintsTheFigure5Rows) {
+  const CommandResult result = run_altfem({"quadrature", "conditioning", "--cell", "hex8", "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json rows = nlohmann::json::parse(result.out);
+  ASSERT_EQ(rows.size(), 20u);  // 10 fractions × stabilisation 0 and 1e-6
+  for (const auto& row : rows)
+    for (const char* preconditioner : {"none", "jacobi", "schwarz"}) {
+      EXPECT_GE(row["condition_number"][preconditioner].get<double>(), 1.0);
+      EXPECT_GE(row["pcg_iterations"][preconditioner].get<int>(), 1);
+    }
+  EXPECT_DOUBLE_EQ(rows.back()["volume_fraction"].get<double>(), std::pow(2.0, -30));
+}
+
+TEST(QuadratureConditioning, UnknownCellIsBadInput) {
+  const CommandResult result = run_altfem({"quadrature", "conditioning", "--cell", "tet20"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--cell: expected tet4, tet10, hex8 or hex20, got 'tet20'"), std::string::npos) << result.err;
 }
 
 }  // namespace

@@ -24,7 +24,8 @@ TEST(ShippedScenes, EveryOneLoadsWithItsGeometry) {
     EXPECT_EQ(scene.name, entry.path().stem().string());
     EXPECT_GT(geometry.volume, 0.0);
     EXPECT_FALSE(geometry.bounds.isEmpty());
-    EXPECT_FALSE(scene.dirichlet.empty());
+    // Held by a condition, or set moving (the spinning body floats free).
+    EXPECT_TRUE(!scene.dirichlet.empty() || scene.initial.angular_velocity.norm() > 0);
     ++count;
   }
   EXPECT_GE(count, 6);

@@ -1,0 +1,120 @@
+#include "fcm/fcm_method.hpp"
+
+#include <chrono>
+
+#include "fcm/embedded_mesh.hpp"
+#include "fcm/fcm_scene_block.hpp"
+#include "fcm/intersection_cell_quadrature.hpp"
+#include "fcm/region_cut_check.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/structured_grid.hpp"
+#include "shared/material/material.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+
+namespace altfem::fcm {
+
+namespace {
+
+class FcmMethod final : public MethodInstance {
+public:
+  FcmMethod(const Scene& scene, const SceneGeometry& geometry)
+      : material_(make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
+                                scene.material.poisson_ratio, scene.material.density)) {
+    const FcmSpec spec = fcm_spec(scene);
+    const std::string file = scene.file.string();
+    // The background grid over the geometry's bounds (§3.2).
+    const Eigen::AlignedBox3d box = background_box(geometry.bounds, spec.margin);
+    resolution_ = spec.resolution.value_or(default_grid_resolution(box.sizes()));
+    const VolumeMesh background = structured_grid(box, resolution_, spec.cell);
+
+    // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
+    // or shape at the same default size as fem's, so both deform the same surface.
+    const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
+    const VolumeMesh embedded = embedded_tetrahedra(geometry, embedded_size, file);
+
+    const auto start = std::chrono::steady_clock::now();
+    statistics_ = std::make_shared<IntersectionStatistics>();
+    const CellQuadratureSource rules = intersection_cell_quadrature(background, embedded, spec.simplifier,
+                                                                    spec.simplification_tolerance, {}, statistics_);
+    fcm_ = build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options, file);
+    warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
+    quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    // The surface every method deforms: the scene's own, else the boundary of the
+    // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
+    surface_ = geometry.surface ? *geometry.surface : boundary_surface(embedded).surface;
+    evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
+    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+  }
+
+  const Discretization& discretization() const override { return *fcm_.discretization; }
+  nlohmann::json element_counts() const override {
+    return {{std::string(element_name(fcm_.mesh.element_type)), fcm_.mesh.cells.rows()}};
+  }
+  long long quadrature_points() const override { return fcm_.discretization->elements().point_count(); }
+  double quadrature_seconds() const override { return quadrature_seconds_; }
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
+    UnstructuredGrid grid = grid_from_volume_mesh(fcm_.mesh);
+    grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+                                                     displacement.data(), displacement.size() / 3, 3));
+    grid.cell_data.emplace_back("volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(),
+                                                                                      fcm_.volume_fractions.size()));
+    const TabulatedElements& elements = fcm_.discretization->elements();
+    Eigen::VectorXd points(elements.size());
+    for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
+    grid.cell_data.emplace_back("quadrature_points", points);
+    return grid;
+  }
+  const SurfaceMesh& embedded_surface() const override { return surface_; }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
+    return embedding_->displacement(displacement);
+  }
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    Eigen::VectorXd values(3 * fcm_.mesh.nodes.rows());
+    for (Eigen::Index node = 0; node < fcm_.mesh.nodes.rows(); ++node)
+      values.segment<3>(3 * node) = field(fcm_.mesh.nodes.row(node).transpose());
+    return values;
+  }
+  std::vector<std::string> warnings() const override { return warnings_; }
+  nlohmann::json facts() const override {
+    return {{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
+            {"cells", {{"inside", fcm_.counts.inside},
+                       {"cut", fcm_.counts.cut},
+                       {"discarded", fcm_.counts.discarded},
+                       {"outside", fcm_.counts.outside}}},
+            {"cut_cell_points", {{"initial", statistics_->initial_points}, {"final", statistics_->final_points}}},
+            {"worst_moment_residual", statistics_->max_residual},
+            {"failed_simplifications", statistics_->failed_simplifications},
+            {"rule_generation_s", statistics_->seconds},
+            {"schwarz_blocks", fcm_.schwarz_blocks},
+            {"surface_vertices", surface_.vertices.rows()},
+            {"surface_vertices_outside_kept_cells", embedding_->outside_count()},
+            {"max_outside_distance", embedding_->max_outside_distance()}};
+  }
+
+private:
+  std::unique_ptr<Material> material_;
+  Eigen::Vector3i resolution_;
+  std::shared_ptr<IntersectionStatistics> statistics_;
+  FcmDiscretization fcm_;
+  SurfaceMesh surface_;
+  std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
+  std::unique_ptr<BasisEmbedding> embedding_;
+  std::vector<std::string> warnings_;
+  double quadrature_seconds_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<MethodInstance> make_fcm_method(const Scene& scene, const SceneGeometry& geometry) {
+  return std::make_unique<FcmMethod>(scene, geometry);
+}
+
+const MethodDescription& fcm_method() {
+  static const MethodDescription method{fcm_scene_block(), make_fcm_method,
+                                        "finite cell method: Lagrange background grid, exact cut-cell quadrature"};
+  return method;
+}
+
+}  // namespace altfem::fcm

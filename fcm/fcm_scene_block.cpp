@@ -1,0 +1,105 @@
+// The `fcm` block of docs/scene-schema.md, as data; keep the two in step.
+#include "fcm/fcm_scene_block.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string>
+
+#include "shared/mesh/structured_grid.hpp"
+
+namespace altfem::fcm {
+
+namespace {
+
+using nlohmann::json;
+using scene_schema::KeyRule;
+using scene_schema::ValueType;
+
+struct CellDefaults {
+  int stiffness, mass;
+};
+
+// The authors' quadrature strengths (Longva et al. 2020, §6): stiffness rules are
+// simplified, mass rules of a higher strength are not. Hex20's mass is 10 because its
+// cut-cell rules come from tetrahedral pieces (their 11 applies to the hex rule).
+const std::map<std::string, CellDefaults, std::less<>> cell_defaults{
+    {"tet4", {1, 2}}, {"tet10", {3, 5}}, {"hex8", {2, 5}}, {"hex20", {4, 10}}, {"hex27", {5, 11}}};
+
+std::vector<std::string_view> cell_names() {
+  std::vector<std::string_view> names;
+  for (const auto& [name, defaults] : cell_defaults) names.push_back(name);
+  return names;
+}
+
+constexpr std::array<std::string_view, 3> simplifier_names{"nnls", "lp", "none"};
+constexpr std::array<std::string_view, 2> stabilized_names{"mass_and_stiffness", "mass"};
+
+void complete_fcm(const scene_schema::Validator&, const json&, json& fcm, const std::string&) {
+  const CellDefaults& defaults = cell_defaults.find(fcm["cell"].get<std::string>())->second;
+  if (!fcm.contains("quadrature_order")) fcm["quadrature_order"] = defaults.stiffness;
+  if (!fcm.contains("mass_quadrature_order")) fcm["mass_quadrature_order"] = defaults.mass;
+}
+
+const scene_schema::ObjectRule fcm_rule{
+    {{.key = "cell", .type = ValueType::string, .default_value = "hex20", .choices = cell_names()},
+     {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
+     {.key = "margin", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative,
+      .upper = scene_schema::Bound{1.0, false}},
+     {.key = "embedded_cell_size", .type = ValueType::number, .lower = scene_schema::positive},
+     {.key = "quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
+     {.key = "mass_quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
+     {.key = "simplifier", .type = ValueType::string, .default_value = "nnls",
+      .choices = scene_schema::names(simplifier_names)},
+     {.key = "simplification_tolerance", .type = ValueType::number, .default_value = 1e-12,
+      .lower = scene_schema::positive},
+     {.key = "discard_fraction", .type = ValueType::number, .default_value = 1e-4, .lower = scene_schema::non_negative,
+      .upper = scene_schema::Bound{1.0, false}},
+     {.key = "stabilization", .type = ValueType::number, .default_value = 1e-6, .lower = scene_schema::non_negative},
+     {.key = "stabilized_matrices", .type = ValueType::string, .default_value = "mass_and_stiffness",
+      .choices = scene_schema::names(stabilized_names)},
+     {.key = "schwarz_fraction", .type = ValueType::number, .default_value = 0.5, .lower = scene_schema::non_negative,
+      .upper = scene_schema::Bound{1.0, true}},
+     {.key = "schwarz_epsilon", .type = ValueType::number, .default_value = 1e-13, .lower = scene_schema::positive}}};
+
+}  // namespace
+
+const MethodSceneBlock& fcm_scene_block() {
+  static const MethodSceneBlock block{"fcm", &fcm_rule, complete_fcm};
+  return block;
+}
+
+FcmSpec fcm_spec(const Scene& scene) {
+  const json fcm = resolve_method_block(scene, fcm_scene_block());
+  FcmSpec spec;
+  spec.cell = *element_type_from_name(fcm["cell"].get<std::string>());
+  if (fcm.contains("resolution"))
+    spec.resolution = Eigen::Vector3i(fcm["resolution"][0].get<int>(), fcm["resolution"][1].get<int>(),
+                                      fcm["resolution"][2].get<int>());
+  spec.margin = fcm["margin"].get<double>();
+  if (fcm.contains("embedded_cell_size")) spec.embedded_cell_size = fcm["embedded_cell_size"].get<double>();
+  const std::string simplifier = fcm["simplifier"];
+  if (simplifier == "none") spec.simplifier.reset();
+  else spec.simplifier = simplifier == "lp" ? SimplificationMethod::linear_program
+                                            : SimplificationMethod::nonnegative_least_squares;
+  spec.simplification_tolerance = fcm["simplification_tolerance"].get<double>();
+  FcmOptions& options = spec.options;
+  options.quadrature_strength = fcm["quadrature_order"].get<int>();
+  options.mass_quadrature_strength = fcm["mass_quadrature_order"].get<int>();
+  options.discard_fraction = fcm["discard_fraction"].get<double>();
+  options.stabilization = fcm["stabilization"].get<double>();
+  options.stabilized = options.stabilization == 0.0 ? StabilizedMatrices::none
+                       : fcm["stabilized_matrices"] == "mass"
+                           ? StabilizedMatrices::mass
+                           : StabilizedMatrices::mass_and_stiffness;
+  options.schwarz_fraction = fcm["schwarz_fraction"].get<double>();
+  options.schwarz_epsilon = fcm["schwarz_epsilon"].get<double>();
+  return spec;
+}
+
+Eigen::AlignedBox3d background_box(const Eigen::AlignedBox3d& bounds, double margin) {
+  const Eigen::Vector3d grow = margin * bounds.sizes();
+  return {bounds.min() - grow, bounds.max() + grow};
+}
+
+}  // namespace altfem::fcm

@@ -1,0 +1,27 @@
+#pragma once
+// Merging cells of a polyhedral mesh: sliver merging (Kaufmann et al. 2009, §9.4) — a cut
+// piece much smaller than a grid cell makes the methods' element matrices ill-conditioned,
+// so it joins the neighbour it shares its largest face with; the union may be non-convex —
+// and the groups of octree grading.
+#include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/polyhedral_mesh.hpp"
+
+namespace altfem {
+
+/// Merges every `cut` cell whose volume is below `minimum_volume` (smallest first) into
+/// the face-neighbour across its largest interior face; faces between merged cells are
+/// removed, unused nodes dropped, the merged cells' kind becomes `merged`, and the
+/// geometry is recomputed. A piece without neighbours (a separate bit of the object) is
+/// kept. Returns the number of cells merged away. Needs the geometry computed.
+int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
+
+/// The mesh with each group of cells (the sets of `groups`, over the cell indices) as one
+/// cell of kind `grouped_kind` (a cell alone keeps its kind): faces inside a group are
+/// dropped and nodes no face uses are removed. The geometry arrays are left stale: call
+/// compute_polyhedral_geometry.
+void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
+
+/// Removes the nodes no face uses, renumbering the faces' loops.
+void drop_unused_nodes(PolyhedralMesh& mesh);
+
+}  // namespace altfem

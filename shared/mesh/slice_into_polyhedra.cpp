@@ -1,0 +1,56 @@
+#include "shared/mesh/slice_into_polyhedra.hpp"
+
+#include <cmath>
+
+#include "shared/common/error.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/grid_slicer.hpp"
+#include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/octree_grading.hpp"
+#include "shared/mesh/tetrahedralize.hpp"
+
+namespace altfem {
+
+namespace {
+
+void check_options(const SlicingOptions& options) {
+  if (options.cell_size < 0 || (options.cell_size == 0 && options.resolution < 1))
+    throw InputError("slicing: resolution must be >= 1 or cell_size > 0");
+  if (!(options.margin_cells >= 0)) throw InputError("slicing: margin must be >= 0 cells");
+  if (!(options.sliver_fraction >= 0 && options.sliver_fraction < 1))
+    throw InputError("slicing: sliver fraction must be in [0, 1)");
+  if (options.octree_levels < 0 || options.octree_levels > 10) throw InputError("slicing: octree levels must be in 0..10");
+}
+
+double cell_size_for(const SlicingOptions& options, const Eigen::Vector3d& lower, const Eigen::Vector3d& upper) {
+  return options.cell_size > 0 ? options.cell_size : (upper - lower).maxCoeff() / options.resolution;
+}
+
+}  // namespace
+
+SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions& options) {
+  check_options(options);
+  if (surface.triangles.rows() == 0) throw InputError("slicing: the surface has no triangles");
+  const Eigen::Vector3d lower = surface.vertices.colwise().minCoeff(), upper = surface.vertices.colwise().maxCoeff();
+  const SlicingGrid grid = SlicingGrid::covering(lower, upper, cell_size_for(options, lower, upper), options.margin_cells);
+  GridSlicer slicer(surface, grid);
+  SlicedMesh result = slicer.run();
+  if (options.octree_levels > 0)
+    result.coarse_cells = grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
+  compute_polyhedral_geometry(result.mesh);
+  if (options.sliver_fraction > 0)
+    result.merged_slivers = merge_slivers(result.mesh, options.sliver_fraction * std::pow(grid.cell_size, 3));
+  return result;
+}
+
+SlicedMesh slice_into_polyhedra(const AnalyticShape& shape, const SlicingOptions& options) {
+  check_options(options);
+  const Eigen::AlignedBox3d box = shape.bounding_box();
+  const double cell_size = cell_size_for(options, box.min(), box.max());
+  const SurfaceMesh surface = boundary_surface(tetrahedralize_shape(shape, cell_size / 2)).surface;
+  SlicingOptions surface_options = options;
+  surface_options.cell_size = cell_size;
+  return slice_into_polyhedra(surface, surface_options);
+}
+
+}  // namespace altfem

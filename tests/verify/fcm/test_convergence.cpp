@@ -1,0 +1,231 @@
+// Longva et al. 2020 §6.6, Fig. 10, the convergence of the FCM: the L2 error falls at
+// the optimal rates, h² for Hex8 and h³ for Hex20, while a voxel (staircase) fem mesh of
+// the same grids does not converge at its rate. The problem is one backward-Euler step
+// of a free linear-elastic ball set in motion by a smooth non-affine velocity,
+// (M/Δt² + K) u = M v₀/Δt: elliptic, with a smooth solution, on a curved domain with no
+// sharp edge. (The paper clamps the flat face of a half-ball; its reference needs the
+// flat face and the sharp rim kept by the tetrahedral mesh, which Mesh_3 rounds off —
+// the FCM clamps background nodes under the rounded rim and the two solve different
+// problems there; see the closing note of issue #17.) The reference is Tet10 fem on the
+// very tetrahedra the FCM embeds (one polyhedral domain for all), so the rates measure
+// the discretizations, not the geometry. Prints the tables.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "fcm/embedded_mesh.hpp"
+#include "fcm/fcm_scene_block.hpp"
+#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
+#include "shared/material/material.hpp"
+#include "shared/mesh/elevate_order.hpp"
+#include "shared/mesh/structured_grid.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+#include "shared/solve/linear_solver.hpp"
+#include "shared/solve/time_integrator.hpp"
+
+namespace altfem::fcm {
+namespace {
+
+// v₀(x) = 0.01 (y z, x², x y): smooth, not affine, with no rigid part.
+Eigen::Vector3d initial_velocity(const Eigen::Vector3d& x) {
+  return 0.01 * Eigen::Vector3d(x.y() * x.z(), x.x() * x.x(), x.x() * x.y());
+}
+
+// One backward-Euler step of Δt = 1 s from rest position with nodal velocities v₀:
+// Δt² K / M ~ E Δt² / (ρ R²) = 100, so elasticity shapes the solution.
+Eigen::VectorXd one_step(const Discretization& discretization, const Eigen::MatrixXd& nodes) {
+  IntegratorOptions options;
+  options.kind = IntegrationScheme::backward_euler;
+  options.time_step = 1.0;
+  options.tolerance = 1e-10;
+  const auto solver = make_linear_solver(LinearSolverOptions{});
+  TimeIntegrator integrator(discretization, *solver, options);
+  State state;
+  state.displacement = Eigen::VectorXd::Zero(discretization.dof_count());
+  state.velocity.resize(discretization.dof_count());
+  for (Eigen::Index node = 0; node < nodes.rows(); ++node)
+    state.velocity.segment<3>(3 * node) = initial_velocity(nodes.row(node).transpose());
+  integrator.step(state);  // throws NumericalError if Newton fails
+  return state.displacement;
+}
+
+// The reference's quadrature points, weights and displacement there.
+struct ReferenceField {
+  Eigen::MatrixXd points;  ///< #points × 3
+  Eigen::VectorXd weights;
+  Eigen::MatrixXd displacement;  ///< #points × 3
+  double norm = 0;               ///< ‖u‖_L2
+};
+
+ReferenceField reference_field(const VolumeMesh& mesh, const TabulatedElements& elements, const Eigen::VectorXd& u) {
+  ReferenceField field;
+  const auto count = static_cast<Eigen::Index>(elements.point_count());
+  field.points.resize(count, 3);
+  field.weights.resize(count);
+  field.displacement.resize(count, 3);
+  Eigen::Index row = 0;
+  for (int e = 0; e < elements.size(); ++e) {
+    const ElementView element = elements[e];
+    for (int q = 0; q < element.point_count(); ++q, ++row) {
+      Eigen::Vector3d x = Eigen::Vector3d::Zero(), value = Eigen::Vector3d::Zero();
+      for (int a = 0; a < element.basis_count(); ++a) {
+        x += element.values(q, a) * mesh.nodes.row(element.basis[a]).transpose();
+        value += element.values(q, a) * u.segment<3>(3 * element.basis[a]);
+      }
+      field.points.row(row) = x.transpose();
+      field.weights[row] = element.weights[q];
+      field.displacement.row(row) = value.transpose();
+    }
+  }
+  field.norm = std::sqrt((field.weights.asDiagonal() * field.displacement.rowwise().squaredNorm()).sum());
+  return field;
+}
+
+// ‖u_h − u_ref‖_L2 / ‖u_ref‖_L2 at the reference's quadrature points.
+double relative_error(const ReferenceField& reference, const VolumeMesh& mesh, const Eigen::VectorXd& u) {
+  const LagrangeBasisEvaluator evaluator(mesh);
+  const BasisEmbedding embedding(evaluator, reference.points);
+  const Eigen::MatrixXd difference = embedding.displacement(u) - reference.displacement;
+  return std::sqrt((reference.weights.asDiagonal() * difference.rowwise().squaredNorm()).sum()) / reference.norm;
+}
+
+struct Row {
+  double h;
+  int dofs;
+  double error;
+};
+
+void print(const char* title, const std::vector<Row>& rows) {
+  std::printf("%s\n  %8s %8s %12s %6s\n", title, "h", "DOFs", "L2 error", "rate");
+  for (size_t i = 0; i < rows.size(); ++i) {
+    if (i == 0) std::printf("  %8.4f %8d %12.4e %6s\n", rows[i].h, rows[i].dofs, rows[i].error, "");
+    else
+      std::printf("  %8.4f %8d %12.4e %6.2f\n", rows[i].h, rows[i].dofs, rows[i].error,
+                  std::log(rows[i - 1].error / rows[i].error) / std::log(rows[i - 1].h / rows[i].h));
+  }
+}
+
+double last_rate(const std::vector<Row>& rows) {
+  const Row& a = rows[rows.size() - 2];
+  const Row& b = rows.back();
+  return std::log(a.error / b.error) / std::log(a.h / b.h);
+}
+
+class FreeBall : public ::testing::Test {
+protected:
+  static void SetUpTestSuite() {
+    scene_ = new Scene(load_scene(ALTFEM_SOURCE_DIR "/tests/verify/fcm/scenes/ball.json"));
+    geometry_ = new SceneGeometry(load_scene_geometry(*scene_));
+    const MaterialSpec& spec = scene_->material;
+    material_ = make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio,
+                              spec.density)
+                    .release();
+    const double size = scene_->resolved["discretization"]["fcm"]["embedded_cell_size"].get<double>();
+    embedded_ = new VolumeMesh(embedded_tetrahedra(*geometry_, size, "ball.json"));
+    reference_mesh_ = new VolumeMesh(elevate_order(*embedded_, ElementType::tet10));
+    const auto reference = make_lagrange_discretization(*reference_mesh_, *material_, {}, 6);
+    reference_ = new ReferenceField(
+        reference_field(*reference_mesh_, reference->elements(), one_step(*reference, reference_mesh_->nodes)));
+    std::printf("reference: Tet10 fem, %lld DOFs, %lld quadrature points\n",
+                static_cast<long long>(3 * reference_mesh_->nodes.rows()),
+                static_cast<long long>(reference_->weights.size()));
+  }
+  static void TearDownTestSuite() {
+    delete reference_;
+    delete reference_mesh_;
+    delete embedded_;
+    delete material_;
+    delete geometry_;
+    delete scene_;
+  }
+
+  // FCM with `cell` on an n³ grid over the ball's bounds (h = 2/n), with
+  // the scene block's (the authors') quadrature options.
+  static Row fcm_row(const std::string& cell, int n) {
+    Scene scene = *scene_;
+    scene.resolved["discretization"]["fcm"]["cell"] = cell;
+    const FcmSpec spec = fcm_spec(scene);
+    const VolumeMesh background = structured_grid(geometry_->bounds, {n, n, n}, spec.cell);
+    const CellQuadratureSource rules =
+        intersection_cell_quadrature(background, *embedded_, spec.simplifier, spec.simplification_tolerance);
+    const FcmDiscretization fcm = build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options);
+    const Eigen::VectorXd u = one_step(*fcm.discretization, fcm.mesh.nodes);
+    return {2.0 / n, fcm.discretization->dof_count(), relative_error(*reference_, fcm.mesh, u)};
+  }
+
+  // fem on the voxels of the same grid: the Hex8 cells whose centre is inside.
+  static Row voxel_row(int n) {
+    const Eigen::AlignedBox3d box = geometry_->bounds;
+    const VolumeMesh grid = structured_grid(box, {n, n, n}, ElementType::hex8);
+    std::vector<int> inside;
+    for (Eigen::Index c = 0; c < grid.cells.rows(); ++c) {
+      Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+      for (int a = 0; a < 8; ++a) centre += grid.nodes.row(grid.cells(c, a)).transpose() / 8;
+      if (geometry_->shape->level_set(centre) < 0) inside.push_back(static_cast<int>(c));
+    }
+    VolumeMesh voxels{ElementType::hex8, grid.nodes, Eigen::MatrixXi(inside.size(), 8)};
+    for (size_t i = 0; i < inside.size(); ++i) voxels.cells.row(static_cast<Eigen::Index>(i)) = grid.cells.row(inside[i]);
+    // Unused grid nodes carry no element: give them to no DOF by compacting.
+    std::vector<int> index(grid.nodes.rows(), -1);
+    int used = 0;
+    for (Eigen::Index c = 0; c < voxels.cells.rows(); ++c)
+      for (int a = 0; a < 8; ++a)
+        if (index[voxels.cells(c, a)] < 0) index[voxels.cells(c, a)] = used++;
+    Eigen::MatrixXd nodes(used, 3);
+    for (Eigen::Index node = 0; node < grid.nodes.rows(); ++node)
+      if (index[node] >= 0) nodes.row(index[node]) = grid.nodes.row(node);
+    for (Eigen::Index c = 0; c < voxels.cells.rows(); ++c)
+      for (int a = 0; a < 8; ++a) voxels.cells(c, a) = index[voxels.cells(c, a)];
+    voxels.nodes = nodes;
+    const auto discretization = make_lagrange_discretization(voxels, *material_, {}, 2);
+    const Eigen::VectorXd u = one_step(*discretization, voxels.nodes);
+    return {2.0 / n, discretization->dof_count(), relative_error(*reference_, voxels, u)};
+  }
+
+  static Scene* scene_;
+  static SceneGeometry* geometry_;
+  static Material* material_;
+  static VolumeMesh* embedded_;
+  static VolumeMesh* reference_mesh_;
+  static ReferenceField* reference_;
+};
+
+Scene* FreeBall::scene_ = nullptr;
+SceneGeometry* FreeBall::geometry_ = nullptr;
+Material* FreeBall::material_ = nullptr;
+VolumeMesh* FreeBall::embedded_ = nullptr;
+VolumeMesh* FreeBall::reference_mesh_ = nullptr;
+ReferenceField* FreeBall::reference_ = nullptr;
+
+TEST_F(FreeBall, Hex8FcmConvergesAtRateTwo) {
+  std::vector<Row> rows;
+  for (int n : {4, 8, 16}) rows.push_back(fcm_row("hex8", n));
+  print("Hex8 FCM", rows);
+  EXPECT_GE(last_rate(rows), 1.8);
+}
+
+TEST_F(FreeBall, Hex20FcmConvergesAtRateThree) {
+  std::vector<Row> rows;
+  for (int n : {2, 4, 8}) rows.push_back(fcm_row("hex20", n));
+  print("Hex20 FCM", rows);
+  EXPECT_GE(last_rate(rows), 2.6);
+}
+
+// The staircase boundary moves by O(h) with every refinement: the error falls
+// erratically, at about rate 1 on average instead of 2, and stays well above the FCM's.
+TEST_F(FreeBall, VoxelFemStallsNearRateOne) {
+  std::vector<Row> rows;
+  for (int n : {4, 8, 16, 32}) rows.push_back(voxel_row(n));
+  print("Hex8 voxel fem", rows);
+  const double mean_rate = std::log(rows.front().error / rows.back().error) / std::log(rows.front().h / rows.back().h);
+  std::printf("mean rate %.2f\n", mean_rate);
+  EXPECT_LT(mean_rate, 1.5);
+  EXPECT_GT(rows[2].error, 2 * fcm_row("hex8", 16).error);  // h = 1/8
+}
+
+}  // namespace
+}  // namespace altfem::fcm
