@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "Simulate a scene with one method");
   std::string run_scene, method, output;
   run->add_option("scene", run_scene, "Scene file (JSON)")->required();
-  run->add_option("--method", method, "Discretization: fem (fcm, dg, harmonic in later builds)")->required();
+  run->add_option("--method", method, "Discretization: fem, dg (fcm, harmonic in later builds)")->required();
   run->add_option("--out", output, "Output folder (default out/<scene>-<method>)");
   std::vector<std::string> overrides;
   run->add_option("--set", overrides, "KEY=VALUE: set the scene's JSON pointer KEY to VALUE (JSON, else a string)")

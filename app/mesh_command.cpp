@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "dg/dg_scene_block.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/io/polyhedral_grid.hpp"
@@ -87,7 +88,8 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   if (slice) {
     sliced = slice_scene_geometry(geometry, options);
   } else {
-    volume_mesh = build_fem_mesh(fem_spec(scene), geometry);
+    // dg reads the mesh keys of its own block (the same rules as fem's).
+    volume_mesh = build_fem_mesh(method == "dg" ? dg::dg_spec(scene).mesh : fem_spec(scene), geometry);
     sliced.mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
   }
   const PolyhedralMesh& mesh = sliced.mesh;

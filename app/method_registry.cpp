@@ -1,5 +1,6 @@
 #include "app/method_registry.hpp"
 
+#include "dg/dg_method.hpp"
 #include "fcm/fcm_method.hpp"
 #include "polyhedral/harmonic_method.hpp"
 #include "shared/common/error.hpp"
@@ -8,7 +9,8 @@
 namespace altfem::cli {
 
 const std::vector<MethodDescription>& registered_methods() {
-  static const std::vector<MethodDescription> methods{fem_method(), fcm::fcm_method(), harmonic::harmonic_method()};
+  static const std::vector<MethodDescription> methods{fem_method(), fcm::fcm_method(), dg::dg_method(),
+                                                      harmonic::harmonic_method()};
   return methods;
 }
 

@@ -38,18 +38,22 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   std::vector<Eigen::Triplet<double>> triplets;
   for (const Polyhedron& cell : cells_) {
     bases_.push_back(cell_basis(cell, settings.degree));
-    const ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, 1.0);
+    ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, settings.density);
     volumes_.push_back(matrices.integrals[0]);
+    masses_.push_back(std::move(matrices.mass));
+    integrals_.conservativeResize(offsets_.back() + bases_.back().size());
+    integrals_.tail(bases_.back().size()) = matrices.integrals;
     std::vector<int> dofs;
     for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
     add_block(triplets, matrices.stiffness, dofs);
     offsets_.push_back(offsets_.back() + bases_.back().size());
   }
   for (const DgFace& face : faces_) {
-    if (face.plus < 0 && !face.dirichlet) continue;  // a free boundary: no face term
+    if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
     const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
     const Eigen::MatrixXd matrix = exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
-                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux);
+                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux,
+                                                     face.components);
     std::vector<int> dofs;
     for (int side : {face.minus, face.plus}) {
       if (side < 0) continue;
@@ -65,7 +69,22 @@ double DgLinearSystem::face_penalty(const DgFace& face) const {
   const double area = (face.polygon.rows() >= 3) ? polygon_area_vector(face.polygon).norm() : 0.0;
   double inverse_volumes = 1.0 / volumes_[face.minus];
   if (face.plus >= 0) inverse_volumes += 1.0 / volumes_[face.plus];
-  return settings_.penalty * area * inverse_volumes;  // eq. (20)
+  const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
+  return factor * settings_.penalty * area * inverse_volumes;  // eq. (20)
+}
+
+Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
+  std::vector<Eigen::Triplet<double>> triplets;
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const int first = offsets_[c];
+    for (Eigen::Index a = 0; a < masses_[c].rows(); ++a)
+      for (Eigen::Index b = 0; b < masses_[c].cols(); ++b)
+        for (int i = 0; i < 3; ++i)
+          triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, masses_[c](a, b));
+  }
+  Eigen::SparseMatrix<double> matrix(dof_count(), dof_count());
+  matrix.setFromTriplets(triplets.begin(), triplets.end());
+  return matrix;
 }
 
 template <typename Body>
@@ -127,19 +146,21 @@ Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
   return coefficients;
 }
 
-Eigen::VectorXd DgLinearSystem::dirichlet_load(const VectorField& data) const {
+Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
   for (const DgFace& face : faces_) {
-    if (face.plus >= 0 || !face.dirichlet) continue;
+    if (face.plus >= 0 || face.condition < 0) continue;
     const MonomialBasis& basis = bases_[face.minus];
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
     const double penalty = face_penalty(face);
     const Eigen::Vector3d& n = face.normal;
     for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
       const Eigen::Vector3d x = rule.points.row(q).transpose();
-      const Eigen::Vector3d g = data(x);
+      Eigen::Vector3d g = data(face.condition, x);
+      for (int i = 0; i < 3; ++i)
+        if (!face.components[i]) g[i] = 0;  // P g
       basis.evaluate(x, phi, gradients);
       for (int a = 0; a < basis.size(); ++a) {
         // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with

@@ -19,7 +19,11 @@ struct DgFace {
   Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
   int minus = 0;
   int plus = -1;            ///< -1: a boundary face
-  bool dirichlet = false;   ///< boundary faces only: the data of dirichlet_load acts here
+  /// Boundary faces only: the index of the Dirichlet condition imposed weakly here (the
+  /// `condition` argument of dirichlet_load's data), -1 for a free face.
+  int condition = -1;
+  /// The components that condition prescribes (the others are free on this face).
+  std::array<bool, 3> components{true, true, true};
 };
 
 struct DgSettings {
@@ -27,9 +31,15 @@ struct DgSettings {
   Flux flux = Flux::interior_penalty;
   double penalty = 20;  ///< η of eq. (20), in the units of the stiffness (λ, μ)
   double lambda = 1, mu = 1;
+  double density = 1;   ///< ρ of the mass matrix
+  /// η_f of a boundary face is this factor × eq. (20) (1 in Kaufmann et al.; MFEM and
+  /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
+  double boundary_penalty_factor = 1;
 };
 
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
+/// Dirichlet data g(condition, x): the displacement condition `condition` prescribes at x.
+using ConditionData = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&)>;
 
 class DgLinearSystem {
 public:
@@ -37,6 +47,15 @@ public:
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// The consistent mass ρ ∫ φ_a φ_b δ_ik (3 × Σ #functions square), block-diagonal by cell.
+  Eigen::SparseMatrix<double> mass() const;
+  /// ∫ φ_a dV of every function (Σ #functions): the load of a unit body force density.
+  const Eigen::VectorXd& function_integrals() const { return integrals_; }
+  int cell_count() const { return static_cast<int>(cells_.size()); }
+  const Polyhedron& cell(int index) const { return cells_[index]; }
+  const std::vector<DgFace>& faces() const { return faces_; }
+  /// η_f of eq. (20) for one of faces() (× boundary_penalty_factor on a boundary face).
+  double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
@@ -44,9 +63,10 @@ public:
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
   Eigen::VectorXd body_load(const VectorField& force_density) const;
-  /// −∫ g·σ(v)n + η_f ∫ g·v (IP) or η_f ∫ g·v (BZ) over the Dirichlet faces, by a rule of
-  /// strength 2k + 2 on each face (exact for polynomial data of degree ≤ k + 3).
-  Eigen::VectorXd dirichlet_load(const VectorField& data) const;
+  /// −∫ Pg·σ(v)n + η_f ∫ Pg·v (IP) or η_f ∫ Pg·v (BZ) over the Dirichlet faces, g = data(the
+  /// face's condition, x), P = diag(the face's components), by a rule of strength 2k + 2 on each face (exact for polynomial
+  /// data of degree ≤ k + 3).
+  Eigen::VectorXd dirichlet_load(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
@@ -54,7 +74,6 @@ public:
   Eigen::VectorXd interpolate(const VectorField& field) const;
 
 private:
-  double face_penalty(const DgFace& face) const;
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>
   void for_each_cell_point(int strength, Body&& body) const;
@@ -64,6 +83,8 @@ private:
   DgSettings settings_;
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
+  std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square
+  Eigen::VectorXd integrals_;
   std::vector<int> offsets_;                // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
 };

@@ -6,7 +6,7 @@ namespace altfem::dg {
 
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                   const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
-                                  double penalty, Flux flux) {
+                                  double penalty, Flux flux, const std::array<bool, 3>& components) {
   const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
   const Eigen::Vector3d centre = minus.centre();
   const double scale = minus.scale();
@@ -32,7 +32,8 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
     for (int b = 0; b < n; ++b) {
       // Penalty (26): η_f ∫ [[φ_a e_i]]·[[φ_b e_k]] = η_f s_a s_b δ_ik ∫ φ_a φ_b.
       const double jumps = penalty * jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
-      for (int i = 0; i < 3; ++i) matrix(3 * a + i, 3 * b + i) += jumps;
+      for (int i = 0; i < 3; ++i)
+        if (components[i]) matrix(3 * a + i, 3 * b + i) += jumps;
       if (flux != Flux::interior_penalty) continue;
       // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
       //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b.
@@ -41,6 +42,7 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
       const double factor = -jump_sign[a] * average;
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
+          if (!components[i]) continue;  // P v = 0 for an unprescribed test component
           const double traction = (i == k ? mu * value_times_gradient.dot(normal) : 0.0) +
                                   mu * normal[k] * value_times_gradient[i] + lambda * normal[i] * value_times_gradient[k];
           matrix(3 * a + i, 3 * b + k) += factor * traction;

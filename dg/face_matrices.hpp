@@ -9,6 +9,7 @@
 // On a boundary face (no plus element) the same with u⁺ = 0 and {σ} = σ⁻: Nitsche's
 // weak Dirichlet condition for IP, the penalty alone for BZ (§4.2).
 #include <Eigen/Core>
+#include <array>
 
 #include "dg/monomial_basis.hpp"
 
@@ -18,9 +19,11 @@ enum class Flux { interior_penalty, babuska_zlamal };
 
 /// The face's matrix over [minus basis, plus basis] (3(n⁻ + n⁺) square, local DOF 3a+i,
 /// the minus element's functions first; n⁺ = 0 without `plus`). polygon: #vertices × 3,
-/// planar; normal: unit, minus → plus; penalty: η_f of eq. (20).
+/// planar; normal: unit, minus → plus; penalty: η_f of eq. (20). components: on a
+/// boundary face, the components the condition prescribes — with P = diag(components)
+/// the terms become −∫ Pv·σ(u)n − ∫ Pu·σ(v)n + η_f ∫ Pu·Pv (all three on interior faces).
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                   const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
-                                  double penalty, Flux flux);
+                                  double penalty, Flux flux, const std::array<bool, 3>& components = {true, true, true});
 
 }  // namespace altfem::dg

@@ -22,6 +22,7 @@
 #include <cstdio>
 
 #include "dg/dg_linear_system.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
@@ -46,18 +47,9 @@ struct DgGrid {
 DgGrid unit_cube_grid(int n) {
   const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(
       structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()}, {n, n, n}, ElementType::hex8));
-  DgGrid grid;
-  for (int cell = 0; cell < mesh.cell_count(); ++cell) grid.cells.push_back(cell_polyhedron(mesh, cell));
-  for (int f = 0; f < mesh.face_count(); ++f) {
-    dg::DgFace face;
-    face.polygon.resize(static_cast<Eigen::Index>(mesh.faces[f].size()), 3);
-    for (size_t v = 0; v < mesh.faces[f].size(); ++v) face.polygon.row(v) = mesh.nodes.row(mesh.faces[f][v]);
-    face.normal = mesh.face_normals.row(f).transpose();  // out of face_cells(f, 0)
-    face.minus = mesh.face_cells(f, 0);
-    face.plus = mesh.face_cells(f, 1);
-    face.dirichlet = mesh.is_boundary_face(f);
-    grid.faces.push_back(face);
-  }
+  DgGrid grid{dg::mesh_cells(mesh), dg::mesh_faces(mesh)};
+  for (dg::DgFace& face : grid.faces)
+    if (face.plus < 0) face.condition = 0;  // one condition, g, on the whole boundary
   return grid;
 }
 
@@ -70,7 +62,7 @@ struct Errors {
 Errors solve_and_compare(const DgGrid& grid, dg::Flux flux, double penalty) {
   const dg::DgLinearSystem system(grid.cells, grid.faces, {2, flux, penalty, lambda, mu});
   const Eigen::VectorXd load = system.body_load([](const Eigen::Vector3d&) { return body_force; }) +
-                               system.dirichlet_load(exact_solution);
+                               system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact_solution(x); });
   const Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system.stiffness());
   const Eigen::VectorXd solution = solver.solve(load);
   const Eigen::VectorXd interpolant = system.interpolate(exact_solution);

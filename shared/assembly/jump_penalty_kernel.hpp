@@ -5,7 +5,8 @@
 // (Kaufmann et al. 2009 eq. (19), with η_f of eq. (20)), the penalty part of the
 // interior-penalty flux (eq. (21)), and, on a boundary face (u⁺ = 0), the quadratic
 // part of a weakly imposed homogeneous Dirichlet condition; its data part
-// η_f ∫_f g·v dA is a load (Discretization::external_force).
+// η_f ∫_f g·v dA is a load (Discretization::external_force). A condition on some
+// components only penalises those: E_f = η_f / 2 ∫_f |P [[u]]|² with P = diag(mask_f).
 #include <vector>
 
 #include "shared/assembly/local_matrices.hpp"
@@ -15,41 +16,46 @@ namespace altfem {
 
 class JumpPenaltyKernel {
 public:
-  /// penalties: η_f per face of the TabulatedFaces this kernel is assembled over.
-  explicit JumpPenaltyKernel(std::vector<double> penalties) : penalties_(std::move(penalties)) {}
+  /// penalties: η_f per face of the TabulatedFaces this kernel is assembled over;
+  /// masks: per face, 1 for each penalised component and 0 for the others (empty: all 1).
+  explicit JumpPenaltyKernel(std::vector<double> penalties, std::vector<Eigen::RowVector3d> masks = {})
+      : penalties_(std::move(penalties)), masks_(std::move(masks)) {}
 
   bool is_quadratic() const { return true; }
 
   template <int N>
   double energy(const FaceView& face, const kernel::NodeMatrix<N>& u) const {
     double total = 0;
-    for (int q = 0; q < face.point_count(); ++q) total += face.weights[q] * jump(face, u, q).squaredNorm();
+    const Eigen::RowVector3d m = mask(face);
+    for (int q = 0; q < face.point_count(); ++q) total += face.weights[q] * jump(face, u, q).cwiseProduct(m).squaredNorm();
     return 0.5 * penalties_[face.index] * total;
   }
 
-  /// f_a = η_f Σ_q w_q j_a(q) [[u]]_q with j_a = φ_a⁻ − φ_a⁺.
+  /// f_a = η_f Σ_q w_q j_a(q) P[[u]]_q with j_a = φ_a⁻ − φ_a⁺.
   template <int N>
   void forces(const FaceView& face, const kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) const {
     forces.setZero();
+    const Eigen::RowVector3d m = mask(face);
     for (int q = 0; q < face.point_count(); ++q) {
-      const Eigen::RowVector3d scaled = penalties_[face.index] * face.weights[q] * jump(face, u, q);
+      const Eigen::RowVector3d scaled = penalties_[face.index] * face.weights[q] * jump(face, u, q).cwiseProduct(m);
       for (int a = 0; a < face.basis_count(); ++a)
         forces.row(a) += (face.values_minus(q, a) - face.values_plus(q, a)) * scaled;
     }
   }
 
-  /// K_(3a+i)(3b+k) = η_f Σ_q w_q j_a(q) j_b(q) δ_ik.
+  /// K_(3a+i)(3b+k) = η_f Σ_q w_q j_a(q) j_b(q) δ_ik P_ii.
   template <int N>
   void stiffness(const FaceView& face, const kernel::NodeMatrix<N>&, kernel::LocalMatrix<N>& stiffness) const {
     stiffness.setZero();
     const int n = face.basis_count();
+    const Eigen::RowVector3d m = mask(face);
     for (int q = 0; q < face.point_count(); ++q) {
       const double scale = penalties_[face.index] * face.weights[q];
       for (int b = 0; b < n; ++b) {
         const double jump_b = face.values_minus(q, b) - face.values_plus(q, b);
         for (int a = 0; a < n; ++a) {
           const double entry = scale * (face.values_minus(q, a) - face.values_plus(q, a)) * jump_b;
-          for (int i = 0; i < 3; ++i) stiffness(3 * a + i, 3 * b + i) += entry;
+          for (int i = 0; i < 3; ++i) stiffness(3 * a + i, 3 * b + i) += entry * m[i];
         }
       }
     }
@@ -65,7 +71,12 @@ private:
     return value;
   }
 
+  Eigen::RowVector3d mask(const FaceView& face) const {
+    return masks_.empty() ? Eigen::RowVector3d::Ones() : masks_[face.index];
+  }
+
   std::vector<double> penalties_;
+  std::vector<Eigen::RowVector3d> masks_;
 };
 
 }  // namespace altfem

@@ -43,7 +43,7 @@ inline GridCells hex_grid_cells(int n) {
               ++next[axis];
               face.plus = index(next[0], next[1], next[2]);
             }
-            face.dirichlet = boundary;
+            face.condition = boundary ? 0 : -1;
             grid.faces.push_back(face);
           }
         grid.cells.push_back(cell);

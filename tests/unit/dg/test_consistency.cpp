@@ -26,8 +26,8 @@ const Eigen::Vector3d body_force = -mu * Eigen::Vector3d(2, -2, 2) - (lambda + m
 double solve_and_compare(Flux flux, double penalty) {
   const test::GridCells grid = test::hex_grid_cells(4);
   const DgLinearSystem system(grid.cells, grid.faces, {2, flux, penalty, lambda, mu});
-  const Eigen::VectorXd load =
-      system.body_load([](const Eigen::Vector3d&) { return body_force; }) + system.dirichlet_load(exact);
+  const Eigen::VectorXd load = system.body_load([](const Eigen::Vector3d&) { return body_force; }) +
+                               system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact(x); });
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system.stiffness());
   const Eigen::VectorXd u = solver.solve(load);
   const Eigen::VectorXd expected = system.interpolate(exact);

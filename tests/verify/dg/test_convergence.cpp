@@ -27,7 +27,8 @@ double l2_error(int cells_per_axis, int degree, Flux flux) {
   const double penalty = 5.0 * (degree + 1) * (degree + 1) * (lambda + 2 * mu);
   const DgLinearSystem system(grid.cells, grid.faces, {degree, flux, penalty, lambda, mu});
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system.stiffness());
-  const Eigen::VectorXd u = solver.solve(system.body_load(force) + system.dirichlet_load(exact));
+  const Eigen::VectorXd u =
+      solver.solve(system.body_load(force) + system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact(x); }));
   return system.l2_error(u, exact);
 }
 

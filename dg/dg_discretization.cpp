@@ -1,0 +1,45 @@
+#include "dg/dg_discretization.hpp"
+
+#include "shared/solve/additive_schwarz_preconditioner.hpp"
+
+namespace altfem::dg {
+
+namespace {
+
+// `matrix` on the union of its pattern and `other`'s: the integrators add value arrays
+// of the Hessian and the mass, so both must share one pattern (explicit zeros kept).
+Eigen::SparseMatrix<double> on_union_pattern(const Eigen::SparseMatrix<double>& matrix,
+                                             const Eigen::SparseMatrix<double>& other) {
+  Eigen::SparseMatrix<double> result = matrix + 0.0 * other;
+  result.makeCompressed();
+  return result;
+}
+
+}  // namespace
+
+LinearDgDiscretization::LinearDgDiscretization(const Eigen::SparseMatrix<double>& stiffness,
+                                               const Eigen::SparseMatrix<double>& mass,
+                                               Eigen::VectorXd function_integrals,
+                                               std::vector<std::vector<int>> element_dofs,
+                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+    : stiffness_(on_union_pattern(stiffness, mass)),
+      mass_(on_union_pattern(mass, stiffness)),
+      function_integrals_(std::move(function_integrals)),
+      element_dofs_(std::move(element_dofs)),
+      explicit_mass_(mass_, element_dofs_),
+      weak_condition_load_(std::move(weak_condition_load)) {}
+
+Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& acceleration) const {
+  Eigen::VectorXd load(dof_count());
+  for (Eigen::Index a = 0; a < function_integrals_.size(); ++a)
+    load.segment<3>(3 * a) = function_integrals_[a] * acceleration;
+  return load;
+}
+
+PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element_dofs) {
+  return [blocks = std::move(element_dofs)]() -> std::unique_ptr<Preconditioner> {
+    return std::make_unique<AdditiveSchwarzPreconditioner>(blocks);
+  };
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,215 @@
+#include "dg/dg_method.hpp"
+
+#include <chrono>
+
+#include "dg/dg_discretization.hpp"
+#include "dg/dg_linear_system.hpp"
+#include "dg/dg_scene_block.hpp"
+#include "dg/monomial_basis_evaluator.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
+#include "dg/tabulated_dg.hpp"
+#include "shared/common/error.hpp"
+#include "shared/fem/fem_mesh.hpp"
+#include "shared/material/material.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/solve/linear_solver.hpp"
+
+namespace altfem::dg {
+
+namespace {
+
+// Doublings of η before giving up: 2²⁰ × the start is far beyond any useful penalty.
+constexpr int max_doublings = 20;
+
+// The mesh's faces, a boundary face carrying the first Dirichlet condition whose region
+// holds its centroid (the condition is imposed weakly on the whole face, §4.2).
+std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scene& scene) {
+  const double tolerance = 1e-9 * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+  std::vector<DgFace> faces = mesh_faces(mesh);
+  std::vector<int> faces_per_condition(scene.dirichlet.size(), 0);
+  for (int f = 0; f < mesh.face_count(); ++f) {
+    DgFace& face = faces[f];
+    if (face.plus >= 0) continue;
+    for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c)
+      if (scene.dirichlet[c].region.contains(mesh.face_centroids.row(f).transpose(), tolerance)) {
+        face.condition = static_cast<int>(c);
+        face.components = scene.dirichlet[c].components;
+        ++faces_per_condition[c];
+      }
+  }
+  for (size_t c = 0; c < scene.dirichlet.size(); ++c) {
+    if (faces_per_condition[c] == 0)
+      throw InputError(input_message(scene.file.string(), scene.dirichlet[c].pointer + "/region",
+                                     "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
+  }
+  return faces;
+}
+
+// K positive definite, up to its rigid motions when no condition holds the body: K + δM
+// with δ = 1e-10 · max K_ii / max M_ii admits a Cholesky factor (CHOLMOD).
+bool positive_definite(const DgLinearSystem& system) {
+  const Eigen::SparseMatrix<double>& stiffness = system.stiffness();
+  const Eigen::SparseMatrix<double> mass = system.mass();
+  const double shift = 1e-10 * stiffness.diagonal().maxCoeff() / mass.diagonal().maxCoeff();
+  const Eigen::SparseMatrix<double> shifted = stiffness + shift * mass;
+  const auto solver = make_linear_solver({});
+  try {
+    solver->factorize(shifted);
+    return true;
+  } catch (const NumericalError&) {
+    return false;
+  }
+}
+
+class DgMethod final : public MethodInstance {
+public:
+  DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)) {
+    material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
+                              scene.material.poisson_ratio, scene.material.density);
+    const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
+    mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
+    const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
+    for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
+
+    const auto start = std::chrono::steady_clock::now();
+    const auto lame = material_->lame();
+    const FacePenalty penalty = face_penalty(spec_, scene.material.youngs_modulus, lame.lambda, lame.mu);
+    settings_ = {spec_.degree, spec_.flux, penalty.eta, lame.lambda, lame.mu, scene.material.density,
+                 penalty.boundary_factor};
+    const std::vector<Polyhedron> cells = mesh_cells(mesh_);
+    system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_);
+    // Kaufmann et al. §8: "start with a low value and double it until K is positive
+    // definite" (K of the linear material; Babuška–Zlámal is definite for any η).
+    while (spec_.double_until_definite && material_->is_linear() && !positive_definite(*system_)) {
+      if (++doublings_ > max_doublings)
+        throw NumericalError("dg: K is not positive definite after doubling the penalty " +
+                             std::to_string(max_doublings) + " times");
+      settings_.penalty *= 2;
+      system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_);
+    }
+    std::vector<std::vector<int>> element_dofs(mesh_.cell_count());
+    for (int cell = 0; cell < mesh_.cell_count(); ++cell)
+      for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
+        element_dofs[cell].push_back(dof);
+    auto external_force = [this](double time) { return weak_condition_load(time); };
+    if (material_->is_linear()) {
+      linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(),
+                                                         scene.material.density * system_->function_integrals(),
+                                                         std::move(element_dofs), external_force);
+      discretization_ = linear_.get();
+    } else {
+      tabulated_ = make_tabulated_dg(*system_, *material_, external_force, block_jacobi_factory(std::move(element_dofs)));
+      discretization_ = tabulated_.discretization.get();
+    }
+    integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume_mesh).surface;
+    embedding_ = std::make_unique<BasisEmbedding>(MonomialBasisEvaluator(mesh_, *system_), surface_.vertices);
+  }
+
+  const Discretization& discretization() const override { return *discretization_; }
+  nlohmann::json element_counts() const override { return {{"polyhedron", mesh_.cell_count()}}; }
+  /// None for the linear material: every integral is exact (§5); else the volume rules'.
+  long long quadrature_points() const override {
+    return tabulated_.discretization ? tabulated_.discretization->elements().point_count() : 0;
+  }
+  /// The exact integration and assembly (and the tabulation of a nonlinear material).
+  double quadrature_seconds() const override { return integration_seconds_; }
+  const SurfaceMesh& embedded_surface() const override { return surface_; }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    return system_->interpolate(field);
+  }
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override;
+  nlohmann::json facts() const override {
+    return {{"degree", spec_.degree},
+            {"flux", flux_names[static_cast<int>(spec_.flux)]},
+            {"penalty",
+             {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
+              {"value", spec_.penalty_value * (1 << doublings_)},
+              {"doublings", doublings_},
+              {"eta_pa", settings_.penalty}}},
+            {"surface_vertices", surface_.vertices.rows()},
+            {"surface_vertices_outside_mesh", embedding_->outside_count()},
+            {"max_outside_distance", embedding_->max_outside_distance()}};
+  }
+
+private:
+  // The data part of the weakly imposed conditions at a time (§4.2): zero while every
+  // motion is `fixed`.
+  Eigen::VectorXd weak_condition_load(double time) const {
+    bool moving = false;
+    for (const Motion& motion : motions_) moving = moving || motion.kind != MotionKind::fixed;
+    if (!moving) return Eigen::VectorXd::Zero(system_->dof_count());
+    return system_->dirichlet_load(
+        [&](int condition, const Eigen::Vector3d& x) { return motions_[condition].displacement(x, time); });
+  }
+
+  DgSpec spec_;
+  DgSettings settings_;
+  int doublings_ = 0;
+  PolyhedralMesh mesh_;
+  std::vector<Motion> motions_;  // per Dirichlet condition
+  std::unique_ptr<DgLinearSystem> system_;
+  std::unique_ptr<Material> material_;
+  std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material
+  TabulatedDg tabulated_;                           // any other
+  const Discretization* discretization_ = nullptr;
+  SurfaceMesh surface_;
+  std::unique_ptr<BasisEmbedding> embedding_;
+  double integration_seconds_ = 0;
+};
+
+// Each cell with its own copy of its nodes, displaced by its own field: the output
+// shows DG's discontinuities. Cell data "element": the cell's index.
+UnstructuredGrid DgMethod::volume_grid(const Eigen::VectorXd& u) const {
+  UnstructuredGrid grid;
+  std::vector<Eigen::Vector3d> points, displacements;
+  Eigen::MatrixXd elements(mesh_.cell_count(), 1);
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd gradients;
+  std::vector<std::vector<int64_t>> faces;
+  for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
+    const Polyhedron polyhedron = system_->cell(cell);
+    const auto first = static_cast<int64_t>(points.size());
+    for (Eigen::Index v = 0; v < polyhedron.vertices.rows(); ++v) {
+      const Eigen::Vector3d x = polyhedron.vertices.row(v).transpose();
+      system_->basis(cell).evaluate(x, phi, gradients);
+      Eigen::Vector3d value = Eigen::Vector3d::Zero();
+      for (Eigen::Index a = 0; a < phi.size(); ++a) value += phi[a] * u.segment<3>(3 * (system_->offset(cell) + a));
+      points.push_back(x);
+      displacements.push_back(value);
+    }
+    faces.clear();
+    for (const auto& loop : polyhedron.faces) {
+      faces.emplace_back();
+      for (int v : loop) faces.back().push_back(first + v);
+    }
+    grid.add_polyhedron(faces);
+    elements(cell, 0) = cell;
+  }
+  grid.points.resize(static_cast<Eigen::Index>(points.size()), 3);
+  Eigen::MatrixXd displacement(grid.points.rows(), 3);
+  for (size_t p = 0; p < points.size(); ++p) {
+    grid.points.row(p) = points[p].transpose();
+    displacement.row(p) = displacements[p].transpose();
+  }
+  grid.point_data.emplace_back("displacement", std::move(displacement));
+  grid.cell_data.emplace_back("element", std::move(elements));
+  return grid;
+}
+
+}  // namespace
+
+std::unique_ptr<MethodInstance> make_dg_method(const Scene& scene, const SceneGeometry& geometry) {
+  return std::make_unique<DgMethod>(scene, geometry);
+}
+
+const MethodDescription& dg_method() {
+  static const MethodDescription method{dg_scene_block(), make_dg_method,
+                                        "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra"};
+  return method;
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,121 @@
+// The `dg` block of docs/scene-schema.md, as data; keep the two in step.
+#include "dg/dg_scene_block.hpp"
+
+#include <algorithm>
+
+namespace altfem::dg {
+
+namespace {
+
+using nlohmann::json;
+using scene_schema::ValueType;
+using scene_schema::Validator;
+
+// The keys the `dg` block shares with the `fem` block: the volume mesh that is
+// converted into polyhedra.
+constexpr std::array<std::string_view, 4> mesh_keys{"element", "mesh", "resolution", "max_cell_size"};
+
+template <std::size_t n>
+int index_of(const std::array<std::string_view, n>& names, const std::string& name) {
+  return static_cast<int>(std::find(names.begin(), names.end(), name) - names.begin());
+}
+
+// The defaults that depend on the geometry and on the penalty convention.
+void complete_dg(const Validator& validator, const json& scene, json& dg, const std::string& pointer) {
+  const json& geometry = scene["geometry"];
+  const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
+  if (!dg.contains("mesh")) dg["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
+  // Straight-sided cells: the conversion keeps corner nodes only, so the linear element
+  // of the mesh kind is the default (a mesh file's own element otherwise).
+  if (!dg.contains("element") && dg["mesh"] != "file") dg["element"] = dg["mesh"] == "grid" ? "hex8" : "tet4";
+  // The fem block's rules check and complete the mesh keys (messages name this block).
+  json mesh = json::object();
+  for (std::string_view key : mesh_keys)
+    if (dg.contains(key)) mesh[std::string(key)] = dg[std::string(key)];
+  fem_scene_block().complete(validator, scene, mesh, pointer);
+  for (std::string_view key : mesh_keys)
+    if (mesh.contains(key)) dg[std::string(key)] = mesh[std::string(key)];
+
+  // Interior penalty's consistency terms are linear-elastic in this build
+  // (dg/tabulated_dg.hpp): other materials default to, and need, Babuška–Zlámal.
+  const bool linear = scene["material"]["model"] == "linear";
+  if (!dg.contains("flux")) dg["flux"] = linear ? "interior_penalty" : "babuska_zlamal";
+  if (!linear && dg["flux"] == "interior_penalty")
+    validator.fail(pointer + "/flux", "'interior_penalty' needs material model 'linear' in this build, got '" +
+                                          scene["material"]["model"].get<std::string>() + "' (use 'babuska_zlamal')");
+
+  json& penalty = dg["penalty"];
+  if (!penalty.contains("convention")) penalty["convention"] = "kaufmann";
+  const auto convention = static_cast<PenaltyConvention>(
+      index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
+  const int degree = dg["degree"].get<int>();
+  if (!penalty.contains("value"))
+    penalty["value"] = convention == PenaltyConvention::kaufmann ? 20.0
+                       : convention == PenaltyConvention::mfem   ? double((degree + 1) * (degree + 1))
+                                                                 : 1.0;
+  if (!penalty.contains("double_until_definite"))
+    penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;
+}
+
+const scene_schema::ObjectRule penalty_rule{
+    {{.key = "convention", .type = ValueType::string, .choices = scene_schema::names(penalty_convention_names)},
+     {.key = "value", .type = ValueType::number, .lower = scene_schema::positive},
+     {.key = "double_until_definite", .type = ValueType::boolean}}};
+
+// The element names the `fem` block accepts (the same volume meshes are converted).
+std::vector<std::string_view> fem_element_names() {
+  for (const auto& key : fem_scene_block().rule->keys)
+    if (key.key == "element") return key.choices;
+  return {};
+}
+
+// A function-local static: it reads the fem block's rule, which must be initialised first.
+const scene_schema::ObjectRule& dg_rule() {
+  static const scene_schema::ObjectRule rule{
+      {{.key = "degree", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one,
+        .upper = scene_schema::Bound{3.0, true}},
+       {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
+       {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
+       {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
+       {.key = "mesh", .type = ValueType::string, .choices = scene_schema::names(fem_mesh_names)},
+       {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
+       {.key = "max_cell_size", .type = ValueType::number, .lower = scene_schema::positive}}};
+  return rule;
+}
+
+}  // namespace
+
+const MethodSceneBlock& dg_scene_block() {
+  static const MethodSceneBlock block{"dg", &dg_rule(), complete_dg};
+  return block;
+}
+
+DgSpec dg_spec(const Scene& scene) {
+  const json dg = resolve_method_block(scene, dg_scene_block());
+  DgSpec spec;
+  spec.degree = dg["degree"].get<int>();
+  spec.flux = static_cast<Flux>(index_of(flux_names, dg["flux"].get<std::string>()));
+  const json& penalty = dg["penalty"];
+  spec.convention = static_cast<PenaltyConvention>(
+      index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
+  spec.penalty_value = penalty["value"].get<double>();
+  spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.mesh.element = *element_type_from_name(dg["element"].get<std::string>());
+  spec.mesh.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
+  if (dg.contains("resolution"))
+    spec.mesh.resolution = {dg["resolution"][0].get<int>(), dg["resolution"][1].get<int>(), dg["resolution"][2].get<int>()};
+  if (dg.contains("max_cell_size")) spec.mesh.max_cell_size = dg["max_cell_size"].get<double>();
+  return spec;
+}
+
+FacePenalty face_penalty(const DgSpec& spec, double youngs_modulus, double lambda, double mu) {
+  const double k = spec.degree, stiffness = lambda + 2 * mu;
+  switch (spec.convention) {
+    case PenaltyConvention::kaufmann: return {spec.penalty_value * youngs_modulus, 1.0};
+    case PenaltyConvention::mfem: return {spec.penalty_value * stiffness / 2, 2.0};
+    case PenaltyConvention::dealii: return {spec.penalty_value * k * (k + 1) * stiffness / 2, 2.0};
+  }
+  return {spec.penalty_value * youngs_modulus, 1.0};
+}
+
+}  // namespace altfem::dg

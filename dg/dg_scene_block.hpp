@@ -1,0 +1,55 @@
+#pragma once
+// The `dg` block of a scene (docs/scene-schema.md, "dg"): its rules, the defaults that
+// depend on the geometry, and the options the dg method reads.
+//
+// Penalty conventions. Every convention ends as Kaufmann et al.'s face penalty
+// (2009, eq. (20)) η_f = c_f · η · area(f) · (1/vol(K⁻) + 1/vol(K⁺)), where c_f = 1 on
+// interior faces and c_f = `boundary_factor` on Dirichlet faces (the plus term is absent):
+//   kaufmann  value η̂ (default 20):  η = η̂ · E (η̂ relative to Young's modulus, so that
+//             the paper's 10¹–10² is unit-free), c_f = 1 on every face;
+//   mfem      value κ (default (k+1)², MFEM example 17): MFEM's κ·(λ+2μ)/h with
+//             1/h = area(f)/vol(K) averaged (½ each side) on interior faces and taken
+//             whole on boundary faces, i.e. η = κ(λ+2μ)/2, c_f = 2;
+//   dealii    value γ (default 1, deal.II step-74): γ·k(k+1)·(λ+2μ)·½(1/h⁻ + 1/h⁺) with the
+//             cell extent h = vol(K)/area(f) (1/h on a boundary face), i.e.
+//             η = γ·k(k+1)(λ+2μ)/2, c_f = 2.
+// With `double_until_definite` (default for kaufmann only) η is doubled until K is
+// positive definite, as Kaufmann et al. do (§8, "we simply start with a low value and
+// double it"); the η used is reported in summary.json (facts).
+#include <string>
+
+#include "dg/face_matrices.hpp"
+#include "shared/fem/fem_scene_block.hpp"
+#include "shared/scene/method_scene_block.hpp"
+
+namespace altfem::dg {
+
+enum class PenaltyConvention { kaufmann, mfem, dealii };
+inline constexpr std::array<std::string_view, 3> penalty_convention_names{"kaufmann", "mfem", "dealii"};
+inline constexpr std::array<std::string_view, 2> flux_names{"interior_penalty", "babuska_zlamal"};
+
+struct DgSpec {
+  int degree = 2;
+  Flux flux = Flux::interior_penalty;
+  PenaltyConvention convention = PenaltyConvention::kaufmann;
+  double penalty_value = 20;
+  bool double_until_definite = true;
+  /// The volume mesh converted into polyhedra: element, mesh kind, resolution and
+  /// max_cell_size as the `fem` block means them (quadrature_order and curved unused).
+  FemSpec mesh;
+};
+
+const MethodSceneBlock& dg_scene_block();
+
+/// The resolved /discretization/dg of `scene` as options. Throws InputError for a bad block.
+DgSpec dg_spec(const Scene& scene);
+
+struct FacePenalty {
+  double eta;              ///< η of eq. (20) in the units of the stiffness (Pa)
+  double boundary_factor;  ///< c_f on Dirichlet faces
+};
+
+/// The penalty of `spec`'s convention for a material (E, λ, μ), before any doubling.
+FacePenalty face_penalty(const DgSpec& spec, double youngs_modulus, double lambda, double mu);
+
+}  // namespace altfem::dg

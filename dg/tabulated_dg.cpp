@@ -1,0 +1,99 @@
+#include "dg/tabulated_dg.hpp"
+
+#include <numeric>
+
+#include "shared/assembly/face_assembler.hpp"
+#include "shared/assembly/jump_penalty_kernel.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
+
+namespace altfem::dg {
+
+namespace {
+
+std::vector<int> cell_functions(const DgLinearSystem& system, int cell) {
+  std::vector<int> functions(system.basis(cell).size());
+  std::iota(functions.begin(), functions.end(), system.offset(cell));
+  return functions;
+}
+
+// values (#points × n) and gradients ((#points·n) × 3) of cell's basis at rule points,
+// in columns [column, column + n).
+void tabulate_basis(const MonomialBasis& basis, const Eigen::MatrixXd& points, Eigen::Index column,
+                    Eigen::MatrixXd& values, Eigen::MatrixXd& gradients) {
+  const Eigen::Index n = basis.size(), width = values.cols();
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd grad;
+  for (Eigen::Index q = 0; q < points.rows(); ++q) {
+    basis.evaluate(points.row(q).transpose(), phi, grad);
+    values.block(q, column, 1, n) = phi.transpose();
+    gradients.block(q * width + column, 0, n, 3) = grad;
+  }
+}
+
+TabulatedElements tabulate_cells(const DgLinearSystem& system, int strength) {
+  TabulatedElements elements;
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
+    const int n = system.basis(cell).size();
+    Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
+    tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
+    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()), values,
+                 gradients);
+  }
+  return elements;
+}
+
+// The faces that carry a term (interior, or with a Dirichlet condition), their η_f and
+// the components each penalises.
+struct FaceTerms {
+  TabulatedFaces faces;
+  std::vector<double> penalties;            // η_f per face
+  std::vector<Eigen::RowVector3d> masks;    // the penalised components per face
+};
+
+FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
+  FaceTerms terms;
+  for (const DgFace& face : system.faces()) {
+    if (face.plus < 0 && face.condition < 0) continue;
+    const PolyhedronRule rule = polygon_rule(face.polygon, strength);
+    std::vector<int> functions = cell_functions(system, face.minus);
+    const Eigen::Index minus_count = static_cast<Eigen::Index>(functions.size());
+    if (face.plus >= 0)
+      for (int a : cell_functions(system, face.plus)) functions.push_back(a);
+    const Eigen::Index points = rule.weights.size(), n = static_cast<Eigen::Index>(functions.size());
+    Eigen::MatrixXd values_minus = Eigen::MatrixXd::Zero(points, n), values_plus = values_minus;
+    Eigen::MatrixXd gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), gradients_plus = gradients_minus;
+    tabulate_basis(system.basis(face.minus), rule.points, 0, values_minus, gradients_minus);
+    if (face.plus >= 0) tabulate_basis(system.basis(face.plus), rule.points, minus_count, values_plus, gradients_plus);
+    const Eigen::MatrixXd normals = face.normal.transpose().replicate(points, 1);
+    terms.faces.add(functions, std::span<const double>(rule.weights.data(), points), normals, values_minus,
+                    values_plus, gradients_minus, gradients_plus, face.minus, face.plus);
+    terms.penalties.push_back(system.face_penalty(face));
+    terms.masks.emplace_back(face.components[0], face.components[1], face.components[2]);
+  }
+  return terms;
+}
+
+}  // namespace
+
+TabulatedDg make_tabulated_dg(const DgLinearSystem& system, const Material& material,
+                              std::function<Eigen::VectorXd(double)> external_force,
+                              PreconditionerFactory preconditioner) {
+  const int strength = 2 * system.basis(0).degree();
+  DiscretizationParts parts;
+  parts.elements = tabulate_cells(system, strength);
+  parts.materials = {&material};
+  TabulatedDg result;
+  FaceTerms terms = tabulate_faces(system, strength);
+  result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
+  parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
+      *result.faces, JumpPenaltyKernel(std::move(terms.penalties), std::move(terms.masks))));
+  parts.conditions_weakly = true;
+  parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
+  parts.external_force = std::move(external_force);
+  parts.preconditioner = std::move(preconditioner);
+  result.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
+  return result;
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,30 @@
+#pragma once
+// DG for every material model (beyond Kaufmann et al. 2009, whose §4 is linear): the
+// monomials of a DgLinearSystem tabulated at points of a rule on each polyhedron
+// (polyhedron_rule: exact for polynomials up to its strength) for the shared assembly,
+// which evaluates any hyperelastic ψ(F); the faces carry the Babuška–Zlámal jump penalty
+// η_f/2 ∫ |[[u]]|² (eq. (19), shared JumpPenaltyKernel), interior and Dirichlet faces
+// alike. The interior-penalty consistency terms of a nonlinear material (the average
+// first Piola–Kirchhoff stress of Ten Eyck & Lew 2006 and its symmetric partner) need
+// the third derivative of ψ for an exact Hessian and are not in this build.
+#include <memory>
+
+#include "dg/dg_linear_system.hpp"
+#include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/assembly/tabulated_faces.hpp"
+
+namespace altfem::dg {
+
+struct TabulatedDg {
+  std::unique_ptr<TabulatedFaces> faces;  ///< the face assembler keeps a reference: declared first, freed last
+  std::unique_ptr<TabulatedDiscretization> discretization;
+};
+
+/// The discretization of `system`'s cells and faces (its bases, penalties and Dirichlet
+/// faces) with `material` (not owned); the rule strength is 2k (mass and body-force loads
+/// exact). external_force: the weak conditions' data load at a time; preconditioner: block Jacobi.
+TabulatedDg make_tabulated_dg(const DgLinearSystem& system, const Material& material,
+                              std::function<Eigen::VectorXd(double)> external_force,
+                              PreconditionerFactory preconditioner);
+
+}  // namespace altfem::dg
