@@ -65,6 +65,12 @@ bool positive_definite(const DgLinearSystem& system) {
 class DgMethod final : public MethodInstance {
 public:
   DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)) {
+    // The exact integration has one λ, μ for all cells; material regions are fem's,
+    // fcm's and harmonic's so far.
+    if (scene.materials.size() > 1)
+      throw InputError(input_message(scene.file.string(), "/materials",
+                                     "dg supports one material in this build, got " +
+                                         std::to_string(scene.materials.size()) + " (use fem, fcm or harmonic)"));
     material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
                               scene.material.poisson_ratio, scene.material.density);
     const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
