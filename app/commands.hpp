@@ -35,7 +35,7 @@ int quadrature_conditioning_command(const std::string& cell, bool json);
 int quadrature_cell_command(const std::filesystem::path& scene_file, const std::string& cell_index,
                             const std::string& cell_type, const std::string& resolution, int order,
                             const std::string& simplifier, const std::filesystem::path& output, bool json);
-/// "lp" or "nnls" (--simplifier); InputError otherwise.
+/// "caratheodory", "nnls" or "lp" (--simplifier); InputError otherwise.
 SimplificationMethod parse_simplification_method(const std::string& name);
 
 }  // namespace altfem::cli

@@ -56,7 +56,7 @@ int main(int argc, char** argv) {
   conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
   conditioning->add_flag("--json", conditioning_json, "Print JSON");
   std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
-  std::string simplifier = "nnls", quadrature_output = "out/quadrature-cell";
+  std::string simplifier = "caratheodory", quadrature_output = "out/quadrature-cell";
   int quadrature_order = 4;
   bool quadrature_json = false;
   monomials->add_option("--cell", quadrature_cell_type, "hex8|hex20|hex27|tet4|tet10")->required();
@@ -67,7 +67,7 @@ int main(int argc, char** argv) {
   quadrature_cell->add_option("--out", quadrature_output, "Output folder (default out/quadrature-cell)");
   for (auto* command : {monomials, quadrature_cell}) {
     command->add_option("--order", quadrature_order, "Polynomial degree m (default 4)");
-    command->add_option("--simplifier", simplifier, "lp or nnls (default nnls)");
+    command->add_option("--simplifier", simplifier, "caratheodory, nnls or lp (default caratheodory)");
     command->add_flag("--json", quadrature_json, "Print JSON");
   }
 

@@ -65,7 +65,8 @@ int quadrature_monomials_command(const std::string& cell_name, int order, const 
 SimplificationMethod parse_simplification_method(const std::string& name) {
   if (name == "lp") return SimplificationMethod::linear_program;
   if (name == "nnls") return SimplificationMethod::nonnegative_least_squares;
-  throw InputError(input_message("command line", "--simplifier", "expected lp or nnls, got '" + name + "'"));
+  if (name == "caratheodory") return SimplificationMethod::caratheodory;
+  throw InputError(input_message("command line", "--simplifier", "expected caratheodory, nnls or lp, got '" + name + "'"));
 }
 
 }  // namespace altfem::cli

@@ -32,7 +32,7 @@ std::vector<std::string_view> cell_names() {
   return names;
 }
 
-constexpr std::array<std::string_view, 3> simplifier_names{"nnls", "lp", "none"};
+constexpr std::array<std::string_view, 4> simplifier_names{"caratheodory", "nnls", "lp", "none"};
 constexpr std::array<std::string_view, 2> stabilized_names{"mass_and_stiffness", "mass"};
 
 void complete_fcm(const scene_schema::Validator&, const json&, json& fcm, const std::string&) {
@@ -49,7 +49,7 @@ const scene_schema::ObjectRule fcm_rule{
      {.key = "embedded_cell_size", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
      {.key = "mass_quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
-     {.key = "simplifier", .type = ValueType::string, .default_value = "nnls",
+     {.key = "simplifier", .type = ValueType::string, .default_value = "caratheodory",
       .choices = scene_schema::names(simplifier_names)},
      {.key = "simplification_tolerance", .type = ValueType::number, .default_value = 1e-12,
       .lower = scene_schema::positive},
@@ -80,8 +80,9 @@ FcmSpec fcm_spec(const Scene& scene) {
   if (fcm.contains("embedded_cell_size")) spec.embedded_cell_size = fcm["embedded_cell_size"].get<double>();
   const std::string simplifier = fcm["simplifier"];
   if (simplifier == "none") spec.simplifier.reset();
-  else spec.simplifier = simplifier == "lp" ? SimplificationMethod::linear_program
-                                            : SimplificationMethod::nonnegative_least_squares;
+  else if (simplifier == "lp") spec.simplifier = SimplificationMethod::linear_program;
+  else if (simplifier == "nnls") spec.simplifier = SimplificationMethod::nonnegative_least_squares;
+  else spec.simplifier = SimplificationMethod::caratheodory;
   spec.simplification_tolerance = fcm["simplification_tolerance"].get<double>();
   FcmOptions& options = spec.options;
   options.quadrature_strength = fcm["quadrature_order"].get<int>();

@@ -24,7 +24,7 @@ struct FcmSpec {
   /// Mesh_3 cell size of the embedded tetrahedral mesh of a surface or shape; nullopt:
   /// the bounds' diagonal / 15, as fem's default (the two then deform the same surface).
   std::optional<double> embedded_cell_size;
-  std::optional<SimplificationMethod> simplifier = SimplificationMethod::nonnegative_least_squares;  ///< nullopt: none
+  std::optional<SimplificationMethod> simplifier = SimplificationMethod::caratheodory;  ///< nullopt: none
   double simplification_tolerance = 1e-12;
   FcmOptions options;  ///< strengths, discarding, stabilisation, Schwarz
 };
