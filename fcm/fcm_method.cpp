@@ -10,6 +10,7 @@
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
 namespace altfem::fcm {
@@ -56,8 +57,7 @@ public:
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_volume_mesh(fcm_.mesh);
-    grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-                                                     displacement.data(), displacement.size() / 3, 3));
+    add_nodal_displacement(grid, displacement);
     grid.cell_data.emplace_back("volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(),
                                                                                       fcm_.volume_fractions.size()));
     const TabulatedElements& elements = fcm_.discretization->elements();
@@ -71,14 +71,12 @@ public:
     return embedding_->displacement(displacement);
   }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
-    Eigen::VectorXd values(3 * fcm_.mesh.nodes.rows());
-    for (Eigen::Index node = 0; node < fcm_.mesh.nodes.rows(); ++node)
-      values.segment<3>(3 * node) = field(fcm_.mesh.nodes.row(node).transpose());
-    return values;
+    return interpolate_at_nodes(fcm_.mesh.nodes, field);
   }
   std::vector<std::string> warnings() const override { return warnings_; }
   nlohmann::json facts() const override {
-    return {{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
+    nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    facts.update({{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
             {"cells", {{"inside", fcm_.counts.inside},
                        {"cut", fcm_.counts.cut},
                        {"discarded", fcm_.counts.discarded},
@@ -87,10 +85,8 @@ public:
             {"worst_moment_residual", statistics_->max_residual},
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
-            {"schwarz_blocks", fcm_.schwarz_blocks},
-            {"surface_vertices", surface_.vertices.rows()},
-            {"surface_vertices_outside_kept_cells", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}};
+            {"schwarz_blocks", fcm_.schwarz_blocks}});
+    return facts;
   }
 
 private:
