@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "Simulate a scene with one method");
   std::string run_scene, method, output;
   run->add_option("scene", run_scene, "Scene file (JSON)")->required();
-  run->add_option("--method", method, "Discretization: fem, dg (fcm, harmonic in later builds)")->required();
+  run->add_option("--method", method, "Discretization: fem, fcm, dg or harmonic")->required();
   run->add_option("--out", output, "Output folder (default out/<scene>-<method>)");
   std::vector<std::string> overrides;
   run->add_option("--set", overrides, "KEY=VALUE: set the scene's JSON pointer KEY to VALUE (JSON, else a string)")
@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
   std::string mesh_scene;
   altfem::cli::MeshCommandOptions mesh_options;
   mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
-  mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem (fcm in a later build)")->required();
+  mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem or fcm")->required();
   mesh->add_option("--source", mesh_options.source,
                    "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry)");
   mesh->add_option("--resolution", mesh_options.resolution,

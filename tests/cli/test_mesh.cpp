@@ -1,5 +1,5 @@
 // `altfem mesh`: builds and writes a method's mesh without solving; the VTU is read back
-// with meshio and compared with the printed facts; fcm and unknown sources are exit 2.
+// with meshio and compared with the printed facts; fcm's kept cells; unknown sources are exit 2.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,9 +80,22 @@ TEST(MeshCommand, OctreeGradedCubeIsWrittenWithCoarseCells) {
               1e-12);
 }
 
-TEST(MeshCommand, FcmAndUnbuiltSourcesAreBadInputWithOneLine) {
+// fcm's mesh is its kept background cells, as `run` builds them.
+TEST(MeshCommand, FcmMeshIsTheKeptBackgroundCells) {
+  const auto out = fresh_directory("mesh-fcm") / "sphere.vtu";
+  const CommandResult result =
+      run_altfem({"mesh", source_path("scenes/sphere.json").string(), "--method", "fcm", "--out", out.string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json facts = nlohmann::json::parse(result.out);
+  EXPECT_GT(facts["cells"]["cut"].get<int>(), 0);
+  EXPECT_EQ(facts["elements"]["hex20"].get<int>(), facts["cells"]["inside"].get<int>() + facts["cells"]["cut"].get<int>());
+  EXPECT_LT(facts["cut_cell_points"]["final"].get<long long>(), facts["cut_cell_points"]["initial"].get<long long>());
+  EXPECT_TRUE(std::filesystem::exists(out));
+}
+
+TEST(MeshCommand, UnbuiltSourcesAreBadInputWithOneLine) {
   for (const auto& arguments : std::vector<std::vector<std::string>>{
-           {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fcm"},
+           {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fcm", "--source", "slice"},
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "dg", "--source", "slicing"},
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fem", "--source", "slice"},
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "dg", "--source", "slice", "--resolution",
