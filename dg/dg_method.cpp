@@ -115,7 +115,10 @@ public:
   }
 
   const Discretization& discretization() const override { return *discretization_; }
-  nlohmann::json element_counts() const override { return {{"polyhedron", mesh_.cell_count()}}; }
+  /// By degree, so that `compare` draws one series per order: {"k2_polyhedron": n}.
+  nlohmann::json element_counts() const override {
+    return {{"k" + std::to_string(spec_.degree) + "_polyhedron", mesh_.cell_count()}};
+  }
   /// None for the linear material: every integral is exact (§5); else the volume rules'.
   long long quadrature_points() const override {
     return tabulated_.discretization ? tabulated_.discretization->elements().point_count() : 0;
