@@ -110,7 +110,7 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume_mesh).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh).surface;
     embedding_ = std::make_unique<BasisEmbedding>(MonomialBasisEvaluator(mesh_, *system_), surface_.vertices);
   }
 

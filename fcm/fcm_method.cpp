@@ -44,7 +44,7 @@ public:
 
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(embedded).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded).surface;
     evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }

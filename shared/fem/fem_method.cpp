@@ -27,7 +27,7 @@ public:
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms: the scene's own surface when it has one,
     // else the boundary of the mesh.
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(mesh_).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(mesh_).surface;
     embedding_ = std::make_unique<BasisEmbedding>(LagrangeBasisEvaluator(mesh_), surface_.vertices);
   }
 

@@ -7,6 +7,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/analytic_shape.hpp"
+#include "shared/geometry/feature_curves.hpp"
 
 namespace altfem {
 
@@ -29,49 +30,6 @@ bool pairwise_disjoint(const std::vector<ShapePointer>& shapes) {
     for (std::size_t j = i + 1; j < shapes.size(); ++j)
       if (!disjoint(shapes[i]->bounding_box(), shapes[j]->bounding_box())) return false;
   return true;
-}
-
-// The parts of a child's sharp edge that lie on the CSG's surface: runs of samples with
-// |φ| ≤ tolerance, each end moved by bisection to where the edge leaves the surface
-// (into another child of a union, or out of an intersection or difference).
-std::vector<Polyline> parts_on_surface(const Polyline& line, const AnalyticShape& shape, double tolerance) {
-  const auto on_surface = [&](const Eigen::Vector3d& x) { return std::abs(shape.level_set(x)) <= tolerance; };
-  const auto boundary = [&](Eigen::Vector3d on, Eigen::Vector3d off) {
-    for (int iteration = 0; iteration < 40; ++iteration) {
-      const Eigen::Vector3d middle = 0.5 * (on + off);
-      (on_surface(middle) ? on : off) = middle;
-    }
-    return on;
-  };
-  std::vector<char> kept(line.size());
-  for (std::size_t i = 0; i < line.size(); ++i) kept[i] = on_surface(line[i]);
-  const bool closed = line.size() > 2 && line.front() == line.back();
-  if (std::all_of(kept.begin(), kept.end(), [](char k) { return k; })) return {line};
-  // A closed curve is walked from a sample off the surface so no run wraps around.
-  Polyline walk = line;
-  if (closed) {
-    walk.pop_back();
-    const auto first_off = std::find(kept.begin(), kept.end() - 1, 0) - kept.begin();
-    std::rotate(walk.begin(), walk.begin() + first_off, walk.end());
-    walk.push_back(walk.front());
-    for (std::size_t i = 0; i < walk.size(); ++i) kept[i] = on_surface(walk[i]);
-  }
-  std::vector<Polyline> parts;
-  Polyline run;
-  for (std::size_t i = 0; i < walk.size(); ++i) {
-    if (kept[i]) {
-      if (run.empty() && i > 0) run.push_back(boundary(walk[i], walk[i - 1]));
-      run.push_back(walk[i]);
-      continue;
-    }
-    if (!run.empty()) {
-      run.push_back(boundary(walk[i - 1], walk[i]));
-      if ((run.front() - run.back()).norm() > tolerance) parts.push_back(run);
-      run.clear();
-    }
-  }
-  if (run.size() > 1) parts.push_back(run);
-  return parts;
 }
 
 class Csg final : public AnalyticShape {
@@ -130,11 +88,31 @@ public:
 
   std::vector<Polyline> sharp_edges(double spacing) const override {
     const double tolerance = 1e-9 * bounding_box().diagonal().norm();
+    std::vector<Polyline> candidates;
+    for (std::size_t i = 0; i < children_.size(); ++i) {
+      for (Polyline& line : children_[i]->sharp_edges(spacing)) candidates.push_back(std::move(line));
+      const std::vector<PlanarFace> faces = children_[i]->planar_faces();
+      for (std::size_t j = 0; j < children_.size(); ++j) {
+        // A curve between two children with planar faces lies on both: found from the first's only.
+        if (j == i || (j < i && !children_[j]->planar_faces().empty())) continue;
+        for (const PlanarFace& face : faces)
+          for (Polyline& line : zero_set_on_face(face, *children_[j], spacing)) candidates.push_back(std::move(line));
+      }
+    }
     std::vector<Polyline> edges;
-    for (const auto& child : children_)
-      for (const Polyline& line : child->sharp_edges(spacing))
-        for (Polyline& part : parts_on_surface(line, *this, tolerance)) edges.push_back(std::move(part));
+    for (const Polyline& line : candidates)
+      for (Polyline& part : parts_on_surface(line, *this, tolerance)) edges.push_back(std::move(part));
+    // Curves found separately meet at the same points up to bisection: Mesh_3 needs
+    // them to share those ends exactly.
+    snap_ends(edges, 1e-6 * bounding_box().diagonal().norm());
     return edges;
+  }
+
+  std::vector<PlanarFace> planar_faces() const override {
+    std::vector<PlanarFace> faces;
+    for (const auto& child : children_)
+      for (const PlanarFace& face : child->planar_faces()) faces.push_back(face);
+    return faces;
   }
 
   // Closed form only when the children are disjoint or nested in a convex child
@@ -239,6 +217,11 @@ public:
     for (Polyline& line : edges)
       for (Eigen::Vector3d& point : line) point = scale_ * point + translate_;
     return edges;
+  }
+  std::vector<PlanarFace> planar_faces() const override {
+    std::vector<PlanarFace> faces = shape_->planar_faces();
+    for (PlanarFace& face : faces) face = {scale_ * face.origin + translate_, scale_ * face.u, scale_ * face.v};
+    return faces;
   }
 
 private:

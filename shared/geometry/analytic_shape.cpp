@@ -58,6 +58,17 @@ public:
     for (int axis = 0; axis < 3; ++axis) planes[axis] = {box_.min()[axis], box_.max()[axis]};
     return planes;
   }
+  std::vector<PlanarFace> planar_faces() const override {
+    std::vector<PlanarFace> faces;
+    const Eigen::Vector3d size = box_.sizes();
+    for (int axis = 0; axis < 3; ++axis) {
+      const Eigen::Vector3d u = size[(axis + 1) % 3] * Eigen::Vector3d::Unit((axis + 1) % 3);
+      const Eigen::Vector3d v = size[(axis + 2) % 3] * Eigen::Vector3d::Unit((axis + 2) % 3);
+      faces.push_back({box_.min(), u, v});
+      faces.push_back({box_.min() + size[axis] * Eigen::Vector3d::Unit(axis), u, v});
+    }
+    return faces;
+  }
   std::vector<Polyline> sharp_edges(double spacing) const override {
     std::vector<Polyline> edges;
     // The 12 edges join corners that differ in one bit (x = 1, y = 2, z = 4).

@@ -16,6 +16,10 @@ namespace altfem {
 using Polyline = std::vector<Eigen::Vector3d>;
 /// Per axis, sorted coordinates of axis-aligned planes.
 using AxisPlanes = std::array<std::vector<double>, 3>;
+/// A planar rectangle {origin + s·u + t·v : s, t ∈ [0, 1]} (u ⟂ v), e.g. a box face.
+struct PlanarFace {
+  Eigen::Vector3d origin, u, v;
+};
 
 class AnalyticShape {
 public:
@@ -43,9 +47,13 @@ public:
   virtual std::optional<AxisPlanes> axis_planes() const { return std::nullopt; }
   /// The sharp edges of the surface (a box's 12 edges, a cylinder's rims), sampled at
   /// most `spacing` apart, for Mesh_3 to protect. A CSG keeps its children's edges
-  /// where they lie on its surface; curves along which two children's surfaces meet
-  /// are not included.
+  /// where they lie on its surface, and adds the curves where one child's planar face
+  /// meets another child's surface (a half-ball's rim: feature_curves.hpp); curves
+  /// between two curved surfaces (a cylinder through a sphere) are not included.
   virtual std::vector<Polyline> sharp_edges(double /*spacing*/) const { return {}; }
+  /// The planar faces of the surface that are rectangles (a box's six); CSG: its
+  /// children's, which may reach beyond its own surface.
+  virtual std::vector<PlanarFace> planar_faces() const { return {}; }
   /// exact_volume() if known, else integrate_volume(*this, volume_tolerance).
   double volume() const;
 

@@ -29,8 +29,9 @@ using CgalSurface = CGAL::Surface_mesh<Point>;
 
 // Complex: Mesh_complex_3_in_triangulation_3 over the domain's triangulation (with
 // the domain's corner and curve indices when it protects features).
+// cell_size 0 leaves the cells' size free (CGAL's convention).
 template <typename Complex, typename Domain>
-VolumeMesh mesh_domain(const Domain& domain, double size) {
+VolumeMesh mesh_domain(const Domain& domain, double size, double cell_size) {
   using Criteria = CGAL::Mesh_criteria_3<typename Complex::Triangulation>;
   namespace parameters = CGAL::parameters;
   if (!(size > 0)) throw InputError("tetrahedralize: max_cell_size must be > 0");
@@ -38,7 +39,7 @@ VolumeMesh mesh_domain(const Domain& domain, double size) {
   // edge_size only acts on protected features.
   const Criteria criteria(parameters::edge_size = size, parameters::facet_angle = 25, parameters::facet_size = size,
                           parameters::facet_distance = size / 10, parameters::cell_radius_edge_ratio = 3,
-                          parameters::cell_size = size);
+                          parameters::cell_size = cell_size);
   const Complex complex =
       CGAL::make_mesh_3<Complex>(domain, criteria, parameters::no_perturb(), parameters::no_exude());
 
@@ -81,10 +82,10 @@ VolumeMesh tetrahedralize_surface(const SurfaceMesh& surface, double max_cell_si
   using Domain = CGAL::Polyhedral_mesh_domain_3<CgalSurface, Kernel>;
   using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
   const Domain domain(cgal_surface);
-  return mesh_domain<CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>>(domain, max_cell_size);
+  return mesh_domain<CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>>(domain, max_cell_size, max_cell_size);
 }
 
-VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size) {
+VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size, bool bound_cells) {
   using ImplicitDomain = CGAL::Labeled_mesh_domain_3<Kernel>;
   using Domain = CGAL::Mesh_domain_with_polyline_features_3<ImplicitDomain>;
   using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
@@ -105,7 +106,7 @@ VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size
     for (const Eigen::Vector3d& x : edge) line.emplace_back(x.x(), x.y(), x.z());
   }
   domain.add_features(polylines.begin(), polylines.end());
-  return mesh_domain<Complex>(domain, size);
+  return mesh_domain<Complex>(domain, size, bound_cells ? size : 0.0);
 }
 
 }  // namespace altfem

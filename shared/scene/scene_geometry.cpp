@@ -1,8 +1,11 @@
 #include "shared/scene/scene_geometry.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/tetrahedralize.hpp"
 
 namespace altfem {
 
@@ -67,6 +70,15 @@ bool region_meets_points(const RegionSelector& region, const Eigen::MatrixXd& po
   return false;
 }
 
+// Methods mesh a shape at their own sizes; the surface they all deform is this one, fine
+// enough that its own facets are not what a comparison measures.
+SurfaceMesh shape_surface(const AnalyticShape& shape) {
+  const double size = std::min(shape.bounding_box().diagonal().norm() / 40, shape.smallest_feature() / 2);
+  const VolumeMesh mesh =
+      shape.axis_planes() ? tetrahedralize_box_shape(shape, size) : tetrahedralize_shape(shape, size, false);
+  return boundary_surface(mesh).surface;
+}
+
 }  // namespace
 
 SceneGeometry load_scene_geometry(const Scene& scene) {
@@ -93,6 +105,7 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
                            : make_scaled_translated(spec.shape, spec.scale, spec.translate);
       geometry.bounds = geometry.shape->bounding_box();
       geometry.volume = geometry.shape->volume();
+      geometry.shape_surface = shape_surface(*geometry.shape);
       break;
   }
 

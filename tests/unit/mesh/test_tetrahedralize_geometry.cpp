@@ -86,9 +86,51 @@ TEST(SharpEdges, BoxEdgesCylinderRimsAndTheirPartsOnACsgSurface) {
   // Box 2 (1 × 0.6 × 0.6) pokes out of the unit cube's face x = 1: its 4 edges along x
   // keep their 0.5 outside, the 4 edges of its far face x = 1.5 stay (0.6 each), those
   // of its near face x = 0.5 are buried. The cube keeps all 12 edges (box 2 touches none).
-  // The ends are found by bisection to 1e-9 of the diagonal.
-  EXPECT_NEAR(total_length(overlap->sharp_edges(0.05)), 12 + 4 * 0.5 + 4 * 0.6, 1e-7);
+  // The two meet along a 0.6 square on x = 1, found once (marching squares cut its
+  // corners by less than the spacing).
+  const double overlap_length = total_length(overlap->sharp_edges(0.05));
+  EXPECT_LE(overlap_length, 12 + 4 * 0.5 + 4 * 0.6 + 4 * 0.6 + 1e-7);
+  EXPECT_GE(overlap_length, 12 + 4 * 0.5 + 4 * 0.6 + 4 * 0.6 - 4 * 0.05);
   EXPECT_NEAR(overlap->smallest_feature(), 0.6, 1e-15);
+}
+
+TEST(SharpEdges, AHalfBallsRimIsWhereTheBoxFaceMeetsTheSphere) {
+  const double radius = 0.5;
+  const auto half_ball = make_intersection({make_sphere({0, 0, 0}, radius), make_box({-1, -1, 0}, {1, 1, 1})});
+  const auto rims = half_ball->sharp_edges(0.02);
+  ASSERT_EQ(rims.size(), 1u);
+  EXPECT_EQ(rims[0].front(), rims[0].back());  // closed
+  EXPECT_NEAR(polyline_length(rims[0]), 2 * std::numbers::pi * radius, 2e-3);
+  for (const Eigen::Vector3d& x : rims[0]) {
+    EXPECT_NEAR(x.z(), 0.0, 1e-12);
+    EXPECT_NEAR(x.norm(), radius, 1e-9);
+  }
+  // A bar whose end pokes through a ball: the box's edges end on the sphere where the
+  // curves on its faces begin, at exactly the same points.
+  const auto bar_and_ball = make_union({make_box({0, 0, 0}, {0.6, 0.2, 0.2}), make_sphere({0.55, 0.1, 0.1}, 0.2)});
+  const auto edges = bar_and_ball->sharp_edges(0.01);
+  int shared_ends = 0;
+  for (std::size_t a = 0; a < edges.size(); ++a)
+    for (std::size_t b = a + 1; b < edges.size(); ++b)
+      for (const auto* x : {&edges[a].front(), &edges[a].back()})
+        for (const auto* y : {&edges[b].front(), &edges[b].back()}) {
+          const double distance = (*x - *y).norm();
+          EXPECT_TRUE(distance == 0 || distance > 1e-4) << distance;
+          shared_ends += distance == 0;
+        }
+  EXPECT_GE(shared_ends, 4);
+}
+
+TEST(TetrahedralizeShape, ProtectsAHalfBallsRim) {
+  const double radius = 0.5, size = 0.15;
+  const auto half_ball = make_intersection({make_sphere({0, 0, 0}, radius), make_box({-1, -1, 0}, {1, 1, 1})});
+  const VolumeMesh mesh = tetrahedralize_shape(*half_ball, size);
+  int rim_nodes = 0;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+    const Eigen::Vector3d x = mesh.nodes.row(node);
+    if (std::abs(x.z()) < 1e-9 && std::abs(x.norm() - radius) < 1e-3) ++rim_nodes;
+  }
+  EXPECT_GE(rim_nodes, static_cast<int>(2 * std::numbers::pi * radius / size));
 }
 
 TEST(TetrahedralizeShape, ProtectsACylindersRims) {
