@@ -148,6 +148,51 @@ TEST(ReferenceElement, GradientsMatchCentralFiniteDifferences) {
   }
 }
 
+TEST(ReferenceElement, HessiansMatchCentralFiniteDifferencesOfTheGradients) {
+  const double h = 1e-6;
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    const int n = element.node_count();
+    Eigen::MatrixXd plus(n, 3), minus(n, 3), hessians(n, 9), finite_differences(n, 9);
+    for (const Eigen::Vector3d& xi : random_reference_points(type, 10, 17)) {
+      element.evaluate_hessians(xi, hessians);
+      for (int d = 0; d < 3; ++d) {
+        const Eigen::Vector3d offset = h * Eigen::Vector3d::Unit(d);
+        element.evaluate_gradients(xi + offset, plus);
+        element.evaluate_gradients(xi - offset, minus);
+        for (int e = 0; e < 3; ++e) finite_differences.col(3 * e + d) = (plus.col(e) - minus.col(e)) / (2.0 * h);
+      }
+      const double scale = std::max(1.0, hessians.cwiseAbs().maxCoeff());
+      EXPECT_LT((finite_differences - hessians).cwiseAbs().maxCoeff(), 1e-7 * scale)
+          << element_name(type) << " at " << xi.transpose();
+    }
+  }
+}
+
+TEST(ReferenceElement, HessiansReproduceEveryMonomialsSecondDerivatives) {
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    Eigen::MatrixXd hessians(element.node_count(), 9);
+    for (const Eigen::Vector3i& e : expected_space(type)) {
+      Eigen::VectorXd nodal(element.node_count());
+      for (int i = 0; i < element.node_count(); ++i) nodal[i] = monomial(e, element.nodes().row(i).transpose());
+      for (const Eigen::Vector3d& xi : random_reference_points(type, 5, 19, -0.2)) {
+        element.evaluate_hessians(xi, hessians);
+        for (int d = 0; d < 3; ++d)
+          for (int c = 0; c < 3; ++c) {
+            // ∂_d ∂_c ξ^e by hand.
+            Eigen::Vector3i lowered = e;
+            double factor = lowered[d]--;
+            factor *= lowered[c]--;
+            const double exact = factor == 0.0 ? 0.0 : factor * monomial(lowered, xi);
+            EXPECT_NEAR(hessians.col(3 * d + c).dot(nodal), exact, 1e-10)
+                << element_name(type) << " monomial " << e.transpose() << " d " << d << " c " << c;
+          }
+      }
+    }
+  }
+}
+
 TEST(ReferenceElement, ContainsItsDomainAndNothingElse) {
   const ReferenceElement& tet = reference_element(ElementType::tet10);
   EXPECT_TRUE(tet.contains(Eigen::Vector3d(0.25, 0.25, 0.25), 0.0));
