@@ -130,7 +130,7 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     GhostPenaltyFaces ghost = ghost_penalty_faces(fcm.mesh, fcm.volume_fractions);
     fcm.ghost_faces = std::make_unique<TabulatedFaces>(std::move(ghost.faces));
     parts.terms.push_back(std::make_unique<FaceAssembler<GhostPenaltyKernel>>(
-        *fcm.ghost_faces, GhostPenaltyKernel(ghost_penalties(*fcm.ghost_faces, kept_materials, materials,
+        *fcm.ghost_faces, GhostPenaltyKernel(*fcm.ghost_faces, ghost_penalties(*fcm.ghost_faces, kept_materials, materials,
                                                               options.ghost_penalty),
                                              std::move(ghost.sizes), element_degree(background.element_type))));
   }

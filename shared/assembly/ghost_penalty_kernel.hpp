@@ -25,15 +25,23 @@ public:
   /// Most basis functions a face may couple (two Hex27 cells share 9: 45).
   static constexpr int max_face_basis = 64;
 
-  /// penalties: γ_F per face of the TabulatedFaces this kernel is assembled over (for
+  /// For the faces this kernel is assembled over: penalties, γ_F per face (for
   /// elasticity a modulus times a dimensionless γ, so that g_F scales like the
-  /// stiffness); sizes: h_F per face; degree: p, 1 or 2 (2 needs faces with Hessians).
-  GhostPenaltyKernel(std::vector<double> penalties, std::vector<double> sizes, int degree)
+  /// stiffness); sizes, h_F per face; degree p, 1 or 2. Throws std::invalid_argument
+  /// unless there is one penalty and one size per face, no face couples more than
+  /// max_face_basis functions, and the faces carry Hessians when p = 2 (checked here,
+  /// not in the parallel assembly loops, where a throw would terminate).
+  GhostPenaltyKernel(const TabulatedFaces& faces, std::vector<double> penalties, std::vector<double> sizes, int degree)
       : penalties_(std::move(penalties)), sizes_(std::move(sizes)), degree_(degree) {
     if (degree < 1 || degree > 2)
       throw std::invalid_argument("GhostPenaltyKernel: degree " + std::to_string(degree) + " (only 1 and 2)");
-    if (penalties_.size() != sizes_.size())
+    if (static_cast<int>(penalties_.size()) != faces.size() || static_cast<int>(sizes_.size()) != faces.size())
       throw std::invalid_argument("GhostPenaltyKernel: one penalty and one size per face");
+    if (faces.max_face_basis() > max_face_basis)
+      throw std::invalid_argument("GhostPenaltyKernel: a face couples " + std::to_string(faces.max_face_basis()) +
+                                  " functions (at most " + std::to_string(max_face_basis) + ")");
+    if (degree == 2 && faces.size() > 0 && !faces[0].has_hessians())
+      throw std::invalid_argument("GhostPenaltyKernel: degree 2 needs faces tabulated with Hessians");
   }
 
   bool is_quadratic() const { return true; }
@@ -98,11 +106,6 @@ private:
 
   void normal_derivative_jumps(const FaceView& face, int q, Jumps& jumps) const {
     const int n = face.basis_count();
-    if (n > max_face_basis)
-      throw std::invalid_argument("GhostPenaltyKernel: a face couples " + std::to_string(n) + " functions (at most " +
-                                  std::to_string(max_face_basis) + ")");
-    if (degree_ == 2 && !face.has_hessians())
-      throw std::invalid_argument("GhostPenaltyKernel: degree 2 needs faces tabulated with Hessians");
     const Eigen::Vector3d normal = face.normal(q);
     const FaceView::Gradients minus = face.gradients_minus_at(q), plus = face.gradients_plus_at(q);
     for (int a = 0; a < n; ++a) jumps[0][a] = (minus.row(a) - plus.row(a)).dot(normal.transpose());

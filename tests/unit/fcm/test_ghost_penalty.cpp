@@ -49,7 +49,8 @@ Eigen::VectorXd interpolate(const VolumeMesh& mesh, const Field& field) {
 test::FaceTerm<GhostPenaltyKernel> unit_penalty(const Grid& grid) {
   const auto faces = static_cast<size_t>(grid.ghost.faces.size());
   return {grid.ghost.faces,
-          GhostPenaltyKernel(std::vector<double>(faces, 1.0), grid.ghost.sizes, element_degree(grid.mesh.element_type))};
+          GhostPenaltyKernel(grid.ghost.faces, std::vector<double>(faces, 1.0), grid.ghost.sizes,
+                             element_degree(grid.mesh.element_type))};
 }
 
 // h_F of the faces in the plane x = 1: a hex face's side 1; the triangles that split
@@ -57,6 +58,7 @@ test::FaceTerm<GhostPenaltyKernel> unit_penalty(const Grid& grid) {
 double plane_face_size(ElementType type) { return element_shape(type) == ElementShape::tetrahedron ? std::sqrt(2.0) : 1.0; }
 
 class GhostPenalty : public ::testing::TestWithParam<ElementType> {};
+
 
 TEST_P(GhostPenalty, ActsOnTheInteriorFacesOfCutCellsOnly) {
   const ElementType type = GetParam();
@@ -84,15 +86,15 @@ TEST_P(GhostPenalty, KinkAcrossAGridPlaneCostsHalfHTimesItsArea) {
 
 // u = (0, 0, (y − 1)₊²) on quadratic cells: [∂ₙu] = 0 and [∂ₙ²u] = ±2 on y = 1, so
 // E = ½ (h_F³ / (2!)²) 4 · 4 = 2 h_F³.
-TEST_P(GhostPenalty, CurvatureJumpCostsTheSecondDerivativeTerm) {
-  const ElementType type = GetParam();
-  if (element_degree(type) < 2) GTEST_SKIP() << "linear cells have no second-derivative term";
-  const Grid g = grid(type);
-  const auto term = unit_penalty(g);
-  const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
-    return Eigen::Vector3d(0, 0, std::pow(std::max(x[1] - 1, 0.0), 2));
-  });
-  EXPECT_NEAR(term.assembler.energy(u), 2 * std::pow(plane_face_size(type), 3), 1e-11);
+TEST(GhostPenaltyQuadratic, CurvatureJumpCostsTheSecondDerivativeTerm) {
+  for (ElementType type : {ElementType::hex20, ElementType::hex27, ElementType::tet10}) {
+    const Grid g = grid(type);
+    const auto term = unit_penalty(g);
+    const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
+      return Eigen::Vector3d(0, 0, std::pow(std::max(x[1] - 1, 0.0), 2));
+    });
+    EXPECT_NEAR(term.assembler.energy(u), 2 * std::pow(plane_face_size(type), 3), 1e-11) << element_name(type);
+  }
 }
 
 // Any polynomial of the cells' complete degree has no jumps: the penalty leaves the
@@ -152,6 +154,16 @@ TEST_P(GhostPenalty, ForcesAndStiffnessAreTheEnergysDerivatives) {
   EXPECT_NEAR(0.5 * u.dot(stiffness * u), energy, 1e-12 * energy);
   EXPECT_LT((stiffness * u - gradient).norm(), 1e-12 * gradient.norm());
   EXPECT_LT((Eigen::MatrixXd(stiffness) - Eigen::MatrixXd(stiffness).transpose()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+TEST(GhostPenaltyKernel, RefusesQuadraticCellsWithoutHessiansAndMismatchedSizes) {
+  Grid g = grid(ElementType::hex8);  // linear cells: faces without Hessians
+  const auto faces = static_cast<size_t>(g.ghost.faces.size());
+  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 2), std::invalid_argument);
+  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces + 1, 1.0), g.ghost.sizes, 1),
+               std::invalid_argument);
+  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 3), std::invalid_argument);
+  EXPECT_NO_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 1));
 }
 
 INSTANTIATE_TEST_SUITE_P(Cells, GhostPenalty,
