@@ -2,9 +2,6 @@
 
 #include <map>
 
-#include "fcm/ghost_penalty_faces.hpp"
-#include "shared/assembly/face_assembler.hpp"
-#include "shared/assembly/ghost_penalty_kernel.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/fem/lagrange_element_masses.hpp"
@@ -43,20 +40,6 @@ LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std
                                                                 : *cell.rule);
   }
   return rules;
-}
-
-// γ_F = γ × the mean P-wave modulus λ + 2μ of the face's two cells, so that the
-// penalty scales like the elastic stiffness it stabilises.
-std::vector<double> ghost_penalties(const TabulatedFaces& faces, const std::vector<int>& cell_materials,
-                                    const std::vector<const Material*>& materials, double gamma) {
-  const auto modulus = [&](int cell) {
-    const LameParameters lame = materials[cell_materials[cell]]->lame();
-    return lame.lambda + 2 * lame.mu;
-  };
-  std::vector<double> penalties;
-  for (int f = 0; f < faces.size(); ++f)
-    penalties.push_back(gamma * 0.5 * (modulus(faces[f].minus) + modulus(faces[f].plus)));
-  return penalties;
 }
 
 }  // namespace
@@ -127,12 +110,9 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                                                        options.mass_quadrature_strength,
                                                                        stabilize_mass ? options.stabilization : 0.0));
   if (options.ghost_penalty > 0) {
-    GhostPenaltyFaces ghost = ghost_penalty_faces(fcm.mesh, fcm.volume_fractions);
-    fcm.ghost_faces = std::make_unique<TabulatedFaces>(std::move(ghost.faces));
-    parts.terms.push_back(std::make_unique<FaceAssembler<GhostPenaltyKernel>>(
-        *fcm.ghost_faces, GhostPenaltyKernel(*fcm.ghost_faces, ghost_penalties(*fcm.ghost_faces, kept_materials, materials,
-                                                              options.ghost_penalty),
-                                             std::move(ghost.sizes), element_degree(background.element_type))));
+    fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(fcm.mesh, fcm.volume_fractions));
+    parts.terms.push_back(ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials,
+                                             options.ghost_penalty));
   }
   parts.materials = std::move(materials);
   parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "fcm/cell_quadrature.hpp"
+#include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
-#include "shared/assembly/tabulated_faces.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
@@ -50,7 +50,7 @@ struct FcmDiscretization {
   int schwarz_blocks = 0;
   /// The ghost penalty's faces (null when off); declared before `discretization`,
   /// whose face term refers to them, so that they outlive it.
-  std::unique_ptr<TabulatedFaces> ghost_faces;
+  std::unique_ptr<GhostPenaltyFaces> ghost;
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 

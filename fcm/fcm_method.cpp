@@ -86,7 +86,7 @@ public:
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
             {"schwarz_blocks", fcm_.schwarz_blocks},
-            {"ghost_penalty_faces", fcm_.ghost_faces ? fcm_.ghost_faces->size() : 0}});
+            {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
     return facts;
   }
 

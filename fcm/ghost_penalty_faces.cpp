@@ -7,6 +7,8 @@
 #include <map>
 #include <string>
 
+#include "shared/assembly/face_assembler.hpp"
+#include "shared/assembly/ghost_penalty_kernel.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/element_faces.hpp"
 #include "shared/element/geometry_map.hpp"
@@ -181,6 +183,20 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
     result.sizes.push_back(size);
   }
   return result;
+}
+
+std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
+                                               const std::vector<int>& cell_materials,
+                                               const std::vector<const Material*>& materials, double gamma) {
+  const auto modulus = [&](int cell) {
+    const LameParameters lame = materials[cell_materials[cell]]->lame();
+    return lame.lambda + 2 * lame.mu;
+  };
+  std::vector<double> penalties;
+  for (int f = 0; f < faces.faces.size(); ++f)
+    penalties.push_back(gamma * 0.5 * (modulus(faces.faces[f].minus) + modulus(faces.faces[f].plus)));
+  return std::make_unique<FaceAssembler<GhostPenaltyKernel>>(
+      faces.faces, GhostPenaltyKernel(faces.faces, std::move(penalties), faces.sizes, element_degree(type)));
 }
 
 }  // namespace altfem::fcm

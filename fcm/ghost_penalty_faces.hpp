@@ -1,12 +1,15 @@
 #pragma once
-// The faces a ghost penalty acts on (Burman 2010; deal.II step-85's F_h): every face
-// shared by two kept background cells at least one of which is cut, tabulated for
+// The FCM's face ghost penalty (Burman 2010; deal.II step-85's F_h and g_F): every
+// face shared by two kept background cells at least one of which is cut, tabulated for
 // FaceAssembler with both sides' values, gradients and (for quadratic cells) Hessians
-// of the conforming Lagrange basis, so that GhostPenaltyKernel can form the jumps of
-// the normal derivatives up to the cells' degree.
+// of the conforming Lagrange basis, and the energy term GhostPenaltyKernel makes of
+// them with the jumps of the normal derivatives up to the cells' degree.
+#include <memory>
 #include <vector>
 
+#include "shared/assembly/energy_term.hpp"
 #include "shared/assembly/tabulated_faces.hpp"
+#include "shared/material/material.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem::fcm {
@@ -22,5 +25,13 @@ struct GhostPenaltyFaces {
 /// neighbours. Any cell geometry: Hessians include the map's curvature term. Throws
 /// NumericalError when a face point cannot be located in the neighbour across it.
 GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions);
+
+/// The penalty's energy term over `faces` (which must outlive it) on cells of `type`:
+/// γ_F = γ × the mean P-wave modulus λ + 2μ of the face's two cells, so that the
+/// penalty scales like the elastic stiffness it stabilises and γ is dimensionless.
+/// cell_materials: per cell of the faces' mesh, its index into `materials`.
+std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
+                                               const std::vector<int>& cell_materials,
+                                               const std::vector<const Material*>& materials, double gamma);
 
 }  // namespace altfem::fcm

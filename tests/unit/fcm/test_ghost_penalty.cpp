@@ -12,6 +12,7 @@
 
 #include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/ghost_penalty_kernel.hpp"
+#include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "tests/unit/assembly/face_term.hpp"
 
@@ -26,15 +27,19 @@ struct Grid {
   VolumeMesh mesh;
   GhostPenaltyFaces ghost;
 };
+double corner_centroid_x(const VolumeMesh& mesh, Eigen::Index cell) {
+  const int corners = element_corner_count(mesh.element_type);
+  double x = 0;
+  for (int a = 0; a < corners; ++a) x += mesh.nodes(mesh.cells(cell, a), 0);
+  return x / corners;
+}
+
 Grid grid(ElementType type, bool inside_below_x = false) {
   Grid result{structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(2)), {2, 2, 2}, type),
               {}};
   std::vector<double> fractions;
-  for (Eigen::Index c = 0; c < result.mesh.cells.rows(); ++c) {
-    double x = 0;
-    for (int a = 0; a < element_corner_count(type); ++a) x += result.mesh.nodes(result.mesh.cells(c, a), 0);
-    fractions.push_back(inside_below_x && x / element_corner_count(type) < 1 ? 1.0 : 0.5);
-  }
+  for (Eigen::Index c = 0; c < result.mesh.cells.rows(); ++c)
+    fractions.push_back(inside_below_x && corner_centroid_x(result.mesh, c) < 1 ? 1.0 : 0.5);
   result.ghost = ghost_penalty_faces(result.mesh, fractions);
   return result;
 }
@@ -82,6 +87,27 @@ TEST_P(GhostPenalty, KinkAcrossAGridPlaneCostsHalfHTimesItsArea) {
     return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0);
   });
   EXPECT_NEAR(term.assembler.energy(u), 2 * plane_face_size(type), 1e-12);
+}
+
+// The FCM's term: γ_F = γ × the mean λ + 2μ of the two cells. Two materials split at
+// x = 1 (moduli M₁ left, M₂ right): the kink's faces lie between them, so
+// E = ½ γ (M₁ + M₂)/2 · h_F · 4.
+TEST_P(GhostPenalty, TermScalesTheKinkByTheMeanPWaveModulus) {
+  const ElementType type = GetParam();
+  const Grid g = grid(type);
+  const auto soft = make_material(MaterialModel::linear, 1e5, 0.3, 1000);
+  const auto stiff = make_material(MaterialModel::linear, 3e6, 0.45, 1000);
+  std::vector<int> cell_materials;
+  for (Eigen::Index c = 0; c < g.mesh.cells.rows(); ++c) cell_materials.push_back(corner_centroid_x(g.mesh, c) < 1 ? 0 : 1);
+  const double gamma = 0.3;
+  const std::unique_ptr<EnergyTerm> term =
+      ghost_penalty_term(g.ghost, type, cell_materials, {soft.get(), stiff.get()}, gamma);
+  const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
+    return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0);
+  });
+  const auto modulus = [](const Material& material) { return material.lame().lambda + 2 * material.lame().mu; };
+  const double expected = 0.5 * gamma * 0.5 * (modulus(*soft) + modulus(*stiff)) * plane_face_size(type) * 4;
+  EXPECT_NEAR(term->energy(u), expected, 1e-12 * expected);
 }
 
 // u = (0, 0, (y − 1)₊²) on quadratic cells: [∂ₙu] = 0 and [∂ₙ²u] = ±2 on y = 1, so
