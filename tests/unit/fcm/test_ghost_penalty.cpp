@@ -1,7 +1,7 @@
 // The face ghost penalty (Burman 2010, deal.II step-85's g_F) on background grids of
 // every FCM cell: which faces it acts on, and its energy for displacements whose
-// normal-derivative jumps are known in closed form — a kink (x − 1)₊ and a curvature
-// jump (x − 1)₊² across the grid plane x = 1, both interpolated exactly — so the face
+// normal-derivative jumps are known in closed form — a kink (x − 1)₊ across the grid
+// plane x = 1 and a curvature jump (y − 1)₊² across y = 1, interpolated exactly — so the face
 // rules, normals, the traces' gradients and Hessians and the h_F^{2k−1}/(k!)² weights are
 // all checked at once. Also: forces and stiffness consistent with the energy, and
 // polynomials of the cell's degree cost nothing (the penalty keeps the patch test).
@@ -21,12 +21,6 @@ namespace {
 
 using Field = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
-// [0, 2]³ in 2³ cubes (h = 1); every cell cut unless `inside_below_x` (cells with
-// x < 1 then count as uncut).
-struct Grid {
-  VolumeMesh mesh;
-  GhostPenaltyFaces ghost;
-};
 double corner_centroid_x(const VolumeMesh& mesh, Eigen::Index cell) {
   const int corners = element_corner_count(mesh.element_type);
   double x = 0;
@@ -34,6 +28,12 @@ double corner_centroid_x(const VolumeMesh& mesh, Eigen::Index cell) {
   return x / corners;
 }
 
+// [0, 2]³ in 2³ cubes (h = 1); every cell cut unless `inside_below_x` (cells with
+// x < 1 then count as uncut).
+struct Grid {
+  VolumeMesh mesh;
+  GhostPenaltyFaces ghost;
+};
 Grid grid(ElementType type, bool inside_below_x = false) {
   Grid result{structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(2)), {2, 2, 2}, type),
               {}};
