@@ -85,7 +85,8 @@ public:
             {"worst_moment_residual", statistics_->max_residual},
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
-            {"schwarz_blocks", fcm_.schwarz_blocks}});
+            {"schwarz_blocks", fcm_.schwarz_blocks},
+            {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
     return facts;
   }
 
