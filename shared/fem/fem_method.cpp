@@ -28,7 +28,8 @@ public:
     // The surface every method deforms: the scene's own surface when it has one,
     // else the boundary of the mesh.
     surface_ = geometry.surface ? *geometry.surface : boundary_surface(mesh_).surface;
-    embedding_ = std::make_unique<BasisEmbedding>(LagrangeBasisEvaluator(mesh_), surface_.vertices);
+    evaluator_ = std::make_unique<LagrangeBasisEvaluator>(mesh_);
+    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -43,6 +44,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
@@ -58,6 +60,7 @@ private:
   VolumeMesh mesh_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;
+  std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
 };

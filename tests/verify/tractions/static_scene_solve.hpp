@@ -1,0 +1,35 @@
+#pragma once
+// Static equilibrium as `altfem run` solves it (the method's discretization plus the
+// scene's surface loads), without writing output.
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "shared/scene/scene.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/simulation/method_instance.hpp"
+#include "shared/simulation/timed_discretization.hpp"
+
+namespace altfem::test {
+
+/// The displacement (#dofs) of static equilibrium at t = 1 s under the discretization's
+/// own external force plus `loads`: Newton to `tolerance` (solver.tolerance's rule).
+Eigen::VectorXd solve_static(const Discretization& discretization, std::vector<TimeDependentLoad> loads,
+                             double tolerance = 1e-10);
+
+struct StaticSolution {
+  Scene scene;
+  SceneGeometry geometry;
+  std::unique_ptr<MethodInstance> method;
+  Eigen::VectorXd displacement;  ///< #dofs
+};
+
+/// Builds the registered method `method_name` for a static scene and solves it with
+/// the scene's surface loads.
+StaticSolution solve_static_scene(Scene scene, const std::string& method_name, double tolerance = 1e-10);
+/// The same for scene text (relative paths resolve against the working folder).
+StaticSolution solve_static_scene(const std::string& scene_text, const std::string& method_name,
+                                  double tolerance = 1e-10);
+
+}  // namespace altfem::test
