@@ -5,9 +5,10 @@
 // (Timoshenko & Goodier, Theory of Elasticity, §28). The quarter is meshed by a
 // structured grid in (r, θ, z) mapped node by node (mid-nodes too, so Tet10 cells are
 // curved); the pressure acts on the mesh boundary's triangles through the corners,
-// as `altfem run` loads fem, via SurfaceTractionLoad. The nodal error must fall at a
-// measured rate: ≥ 1.8 for Tet4 (O(h²)), ≥ 1.8 for Tet10, whose chordal load
-// surface limits it to O(h²) on a curved boundary as the docs say (the table is printed).
+// as `altfem run` loads fem, via SurfaceTractionLoad. The largest nodal error of Tet10
+// must fall at rate ≥ 1.9: O(h²), not Tet10's O(h³), because the load acts on the
+// chordal triangles of the curved boundary (docs/scene-schema.md, "Loads"): their
+// points lie O(h²) off the isoparametric faces. Measured: 2.08, 2.05, 2.00 (printed).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -106,9 +107,7 @@ void expect_rate(ElementType type, double minimum_rate) {
   EXPECT_LT(previous, 1e-2);
 }
 
-TEST(LameCylinder, Tet4NodalErrorFallsAtSecondOrder) { expect_rate(ElementType::tet4, 1.8); }
-
-TEST(LameCylinder, Tet10NodalErrorFalls) { expect_rate(ElementType::tet10, 1.8); }
+TEST(LameCylinder, Tet10NodalErrorFallsAtSecondOrder) { expect_rate(ElementType::tet10, 1.9); }
 
 }  // namespace
 }  // namespace altfem
