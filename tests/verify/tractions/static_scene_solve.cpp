@@ -3,6 +3,9 @@
 #include <stdexcept>
 
 #include "app/method_registry.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
+#include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/surface_traction.hpp"
 #include "shared/solve/time_integrator.hpp"
 
@@ -19,6 +22,26 @@ Eigen::VectorXd solve_static(const Discretization& discretization, std::vector<T
   State state{Eigen::VectorXd::Zero(loaded.dof_count()), Eigen::VectorXd::Zero(loaded.dof_count()), 1.0, 0};
   integrator.step(state);
   return state.displacement;
+}
+
+RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
+  RegionSelector region;
+  region.kind = RegionKind::half_space;
+  region.point = point;
+  region.normal = normal;
+  return region;
+}
+
+Eigen::VectorXd solve_lagrange_static(const VolumeMesh& mesh, const Material& material,
+                                      const std::vector<DirichletCondition>& conditions, SurfaceTraction load) {
+  const auto discretization = make_lagrange_discretization(mesh, material, conditions, 6);
+  load.pointer = "/loads/traction/0";
+  const SurfaceMesh surface = boundary_surface(mesh).surface;
+  const LagrangeBasisEvaluator evaluator(mesh);
+  const Eigen::AlignedBox3d bounds(mesh.nodes.colwise().minCoeff().transpose(), mesh.nodes.colwise().maxCoeff().transpose());
+  const double tolerance = region_tolerance(bounds);
+  const SurfaceTractionLoad traction({load}, surface, evaluator, discretization->dof_count(), tolerance, "test");
+  return solve_static(*discretization, {traction}, 1e-12);
 }
 
 StaticSolution solve_static_scene(Scene scene, const std::string& method_name, double tolerance) {

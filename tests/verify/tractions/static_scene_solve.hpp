@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "shared/material/material.hpp"
+#include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/method_instance.hpp"
@@ -17,6 +19,14 @@ namespace altfem::test {
 /// own external force plus `loads`: Newton to `tolerance` (solver.tolerance's rule).
 Eigen::VectorXd solve_static(const Discretization& discretization, std::vector<TimeDependentLoad> loads,
                              double tolerance = 1e-10);
+
+/// The region (x − point)·normal ≤ 0.
+RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal);
+
+/// Static equilibrium of the fem discretization of a Lagrange mesh (quadrature strength
+/// 6) under one surface load on its boundary, integrated as `altfem run` integrates it.
+Eigen::VectorXd solve_lagrange_static(const VolumeMesh& mesh, const Material& material,
+                                      const std::vector<DirichletCondition>& conditions, SurfaceTraction load);
 
 struct StaticSolution {
   Scene scene;

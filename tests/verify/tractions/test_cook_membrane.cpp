@@ -23,26 +23,14 @@
 #include <filesystem>
 #include <vector>
 
-#include "shared/fem/lagrange_basis_evaluator.hpp"
-#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"
-#include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "shared/simulation/surface_traction.hpp"
 #include "tests/verify/tractions/static_scene_solve.hpp"
 
 namespace altfem {
 namespace {
 
 constexpr double quoted_displacement = 23.96;  // see the comment at the top
-
-RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
-  RegionSelector region;
-  region.kind = RegionKind::half_space;
-  region.point = point;
-  region.normal = normal;
-  return region;
-}
 
 // The mean u_y over the points (#points × 3) on the corner edge x = 48, y = 60, from
 // their displacements (#points × 3).
@@ -67,15 +55,11 @@ double cook_corner_displacement(ElementType type, int n) {
   }
   const auto material = make_material(MaterialModel::linear, 1.0, 1.0 / 3.0, 1.0);
   DirichletCondition clamp;
-  clamp.region = half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX());  // x ≤ 0
-  const auto discretization = make_lagrange_discretization(mesh, *material, {clamp}, 6);
+  clamp.region = test::half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX());  // x ≤ 0
   SurfaceTraction shear;
-  shear.region = half_space(Eigen::Vector3d(48, 0, 0), -Eigen::Vector3d::UnitX());  // x ≥ 48
+  shear.region = test::half_space(Eigen::Vector3d(48, 0, 0), -Eigen::Vector3d::UnitX());  // x ≥ 48
   shear.traction = Eigen::Vector3d(0, 1.0 / 16, 0);  // total 1 over the 16 × 1 end
-  const SurfaceMesh surface = boundary_surface(mesh).surface;
-  const LagrangeBasisEvaluator evaluator(mesh);
-  const SurfaceTractionLoad load({shear}, surface, evaluator, discretization->dof_count(), 1e-6, "cook");
-  const Eigen::VectorXd u = test::solve_static(*discretization, {load}, 1e-12);
+  const Eigen::VectorXd u = test::solve_lagrange_static(mesh, *material, {clamp}, shear);
   using NodeRows = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
   return corner_displacement(mesh.nodes, Eigen::Map<const NodeRows>(u.data(), mesh.nodes.rows(), 3));
 }

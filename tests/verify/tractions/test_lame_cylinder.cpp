@@ -15,12 +15,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "shared/fem/lagrange_basis_evaluator.hpp"
-#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"
-#include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "shared/simulation/surface_traction.hpp"
 #include "tests/verify/tractions/static_scene_solve.hpp"
 
 namespace altfem {
@@ -33,14 +29,6 @@ Eigen::Vector3d exact_displacement(const Eigen::Vector3d& x) {
   const double u_r = (1 + poisson_ratio) * pressure * inner * inner / (youngs_modulus * (outer * outer - inner * inner)) *
                      ((1 - 2 * poisson_ratio) * r + outer * outer / r);
   return {u_r * x.x() / r, u_r * x.y() / r, 0.0};
-}
-
-RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {
-  RegionSelector region;
-  region.kind = RegionKind::half_space;
-  region.point = point;
-  region.normal = normal;
-  return region;
 }
 
 DirichletCondition roller(const RegionSelector& region, int component) {
@@ -62,12 +50,10 @@ double relative_nodal_error(ElementType type, int n) {
   const auto material = make_material(MaterialModel::linear, youngs_modulus, poisson_ratio, 1.0);
   // Plane strain: u_z = 0 on both ends; symmetry: u_y = 0 on y = 0, u_x = 0 on x = 0.
   const std::vector<DirichletCondition> conditions{
-      roller(half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), 2),
-      roller(half_space(Eigen::Vector3d(0, 0, height), -Eigen::Vector3d::UnitZ()), 2),
-      roller(half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()), 1),
-      roller(half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()), 0)};
-  const auto discretization = make_lagrange_discretization(mesh, *material, conditions, 6);
-
+      roller(test::half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()), 2),
+      roller(test::half_space(Eigen::Vector3d(0, 0, height), -Eigen::Vector3d::UnitZ()), 2),
+      roller(test::half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitY()), 1),
+      roller(test::half_space(Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitX()), 0)};
   // The pressure on the bore: the sphere about the axis's midpoint through the bore's
   // rim holds every bore triangle's centroid and no outer one; it also takes in
   // triangles of the end and symmetry faces near the bore, whose loads (normal to
@@ -77,12 +63,7 @@ double relative_nodal_error(ElementType type, int n) {
   load.region.centre = Eigen::Vector3d(0, 0, height / 2);
   load.region.radius = std::hypot(inner, height / 2) * (1 + 1e-6);
   load.pressure = pressure;
-  load.pointer = "/loads/traction/0";
-  const SurfaceMesh surface = boundary_surface(mesh).surface;
-  const LagrangeBasisEvaluator evaluator(mesh);
-  const SurfaceTractionLoad traction({load}, surface, evaluator, discretization->dof_count(), 1e-9, "lame");
-
-  const Eigen::VectorXd displacement = test::solve_static(*discretization, {traction}, 1e-12);
+  const Eigen::VectorXd displacement = test::solve_lagrange_static(mesh, *material, conditions, load);
 
   double error = 0, largest = 0;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
