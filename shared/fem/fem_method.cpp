@@ -5,6 +5,7 @@
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
+#include "shared/fem/lagrange_surface_lift.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/nodal_basis.hpp"
@@ -26,8 +27,14 @@ public:
                                                    scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms: the scene's own surface when it has one,
-    // else the boundary of the mesh.
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(mesh_).surface;
+    // else the boundary of the mesh, whose loads act on the cells' curved faces.
+    if (geometry.surface) {
+      surface_ = *geometry.surface;
+    } else {
+      const BoundarySurface boundary = boundary_surface(mesh_);
+      surface_ = boundary.surface;
+      lift_ = lagrange_surface_lift(mesh_, boundary);
+    }
     evaluator_ = std::make_unique<LagrangeBasisEvaluator>(mesh_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -45,6 +52,7 @@ public:
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
+  SurfaceLift surface_lift() const override { return lift_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
@@ -60,6 +68,7 @@ private:
   VolumeMesh mesh_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;
+  SurfaceLift lift_;  // empty with the scene's own surface
   std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;

@@ -15,6 +15,7 @@
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/surface_lift.hpp"
 #include "shared/solve/discretization.hpp"
 
 namespace altfem {
@@ -36,6 +37,10 @@ public:
   /// The basis of the method's elements at any point: what the embedded surface and the
   /// surface loads (surface_traction.hpp) are evaluated through.
   virtual const ElementBasisEvaluator& basis_evaluator() const = 0;
+  /// The curved surface the embedded surface's triangles stand for, when they only
+  /// approximate the method's boundary (fem on a curved Lagrange mesh); empty when the
+  /// triangles are the surface. Surface loads are integrated on it.
+  virtual SurfaceLift surface_lift() const { return {}; }
   /// Displacement of every embedded surface vertex (#vertices × 3).
   virtual Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const = 0;
   /// The coefficients (#dofs) of a vector field in the method's basis: exact for affine

@@ -17,6 +17,9 @@ namespace {
 // functions restricted to an arbitrary plane (x²y²z² → degree 6). Tet20 and DG k = 3
 // are cubic, Hex20 quartic there; harmonic bases are not polynomials, and converge.
 constexpr int triangle_strength = 6;
+// On a lifted (curved) triangle the integrand is φ_a times the area vector: on a Hex27
+// face, degree 4 times degree 6 in the triangle's coordinates.
+constexpr int lifted_triangle_strength = 10;
 
 using Polygon = std::vector<Eigen::Vector3d>;
 
@@ -79,13 +82,14 @@ std::vector<Polygon> cell_pieces(const Polygon& triangle, const PointLocator& lo
 
 SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const SurfaceTraction& load,
                                         const ElementBasisEvaluator& evaluator, double tolerance,
-                                        const std::string& file) {
+                                        const std::string& file, const SurfaceLift& lift) {
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(evaluator.element_count()));
   for (int e = 0; e < evaluator.element_count(); ++e) boxes[e] = evaluator.element_bounds(e);
   const PointLocator locator(std::move(boxes));
   const double slack =
       1e-9 * (surface.vertices.colwise().maxCoeff() - surface.vertices.colwise().minCoeff()).norm();
-  const QuadratureRule rule = triangle_rule(triangle_strength);  // weights sum to 1/2
+  // Weights sum to 1/2.
+  const QuadratureRule rule = triangle_rule(lift ? lifted_triangle_strength : triangle_strength);
 
   std::vector<Eigen::Vector3d> points, forces;
   std::vector<int> candidates;
@@ -96,8 +100,19 @@ SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const Surfac
                            surface.vertices.row(surface.triangles(t, 2)).transpose()};
     if (!load.region.contains((triangle[0] + triangle[1] + triangle[2]) / 3, tolerance)) continue;
     ++selected;
-    const Eigen::Vector3d normal = (triangle[1] - triangle[0]).cross(triangle[2] - triangle[0]).normalized();
     // docs/conventions.md, "Surface loads": a pressure acts along the inward normal.
+    if (lift) {
+      Eigen::Vector3d point, area_vector;
+      for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+        const double xi = rule.points(q, 0), eta = rule.points(q, 1);
+        lift(static_cast<int>(t), Eigen::Vector3d(1 - xi - eta, xi, eta), point, area_vector);
+        points.push_back(point);
+        forces.push_back(rule.weights[q] * (load.traction ? Eigen::Vector3d(*load.traction * area_vector.norm())
+                                                          : Eigen::Vector3d(-load.pressure * area_vector)));
+      }
+      continue;
+    }
+    const Eigen::Vector3d normal = (triangle[1] - triangle[0]).cross(triangle[2] - triangle[0]).normalized();
     const Eigen::Vector3d traction = load.traction ? *load.traction : Eigen::Vector3d(-load.pressure * normal);
     for (const Polygon& piece : cell_pieces(triangle, locator, slack, candidates))
       for (size_t i = 1; i + 1 < piece.size(); ++i) {  // a fan over the convex piece
@@ -125,10 +140,10 @@ SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const Surfac
 
 SurfaceTractionLoad::SurfaceTractionLoad(const std::vector<SurfaceTraction>& loads, const SurfaceMesh& surface,
                                          const ElementBasisEvaluator& evaluator, int dof_count, double tolerance,
-                                         const std::string& file)
+                                         const std::string& file, const SurfaceLift& lift)
     : loads_(loads), vectors_(dof_count, static_cast<Eigen::Index>(loads.size())) {
   for (size_t i = 0; i < loads.size(); ++i) {
-    const SurfaceForcePoints points = surface_force_points(surface, loads[i], evaluator, tolerance, file);
+    const SurfaceForcePoints points = surface_force_points(surface, loads[i], evaluator, tolerance, file, lift);
     vectors_.col(static_cast<Eigen::Index>(i)) = BasisEmbedding(evaluator, points.points).load(points.forces, dof_count);
   }
 }
@@ -145,7 +160,7 @@ std::function<Eigen::VectorXd(double)> surface_traction_load(const Scene& scene,
   if (scene.tractions.empty()) return {};
   return SurfaceTractionLoad(scene.tractions, method.embedded_surface(), method.basis_evaluator(),
                              method.discretization().dof_count(), region_tolerance(geometry_bounds),
-                             scene.file.string());
+                             scene.file.string(), method.surface_lift());
 }
 
 }  // namespace altfem

@@ -11,6 +11,7 @@
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/surface_lift.hpp"
 
 namespace altfem {
 
@@ -28,18 +29,24 @@ struct SurfaceForcePoints {
 /// triangle rule of strength 6 — exact for every polynomial basis of altfem restricted
 /// to a plane (Hex27's triquadratic functions reach degree 6). A triangle that crosses
 /// the evaluator's cells is split along them when their bounding boxes tile it (the
-/// axis-aligned cells of fcm's grid), so that each piece meets one polynomial.
-/// Throws InputError "file: <load.pointer>/region: ..." when no triangle is selected.
+/// axis-aligned cells of fcm's grid), so that each piece meets one polynomial. With a
+/// `lift`, each selected triangle is integrated on the curved surface it stands for
+/// instead (points, area and, for a pressure, normals from the lift; no splitting: a
+/// lifted triangle is a face of one cell) with a rule of strength 10, exact for a
+/// pressure on a curved Hex27 face. Throws InputError
+/// "file: <load.pointer>/region: ..." when no triangle is selected.
 SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const SurfaceTraction& load,
                                         const ElementBasisEvaluator& evaluator, double tolerance,
-                                        const std::string& file);
+                                        const std::string& file, const SurfaceLift& lift = {});
 
 /// The load vectors of surface loads, integrated once, scaled by their ramps at a time.
 class SurfaceTractionLoad {
 public:
-  /// One load vector (#dofs) per entry of `loads`, on `surface` in `evaluator`'s basis.
+  /// One load vector (#dofs) per entry of `loads`, on `surface` (lifted by `lift`) in
+  /// `evaluator`'s basis.
   SurfaceTractionLoad(const std::vector<SurfaceTraction>& loads, const SurfaceMesh& surface,
-                      const ElementBasisEvaluator& evaluator, int dof_count, double tolerance, const std::string& file);
+                      const ElementBasisEvaluator& evaluator, int dof_count, double tolerance, const std::string& file,
+                      const SurfaceLift& lift = {});
   /// Σ_i factor_i(t) f_i (#dofs), f_(i,3a+k) = Σ_T ∫_T t_k φ_a dA.
   Eigen::VectorXd operator()(double time) const;
 

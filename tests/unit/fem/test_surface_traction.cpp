@@ -2,11 +2,18 @@
 // against exact integrals: a pressure p on the whole closed boundary has zero resultant
 // (∮ n dA = 0) and does virtual work −p ∮ x·n dA = −3 p V on the affine field u = x; a
 // traction t on one face of area A does work t·∫x dA; ramps scale the vector; a
-// region that holds no triangle is bad input naming its key.
+// region that holds no triangle is bad input naming its key. On a curved Tet10/Hex20
+// mesh the lift to the isoparametric faces makes −3 p V exact with V the isoparametric
+// volume; the chordal triangles alone do not.
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
+#include "shared/fem/lagrange_surface_lift.hpp"
+#include "shared/material/material.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/nodal_basis.hpp"
@@ -94,6 +101,38 @@ TEST_P(SurfaceTractionOnGrid, RegionHoldingNoTriangleNamesTheKey) {
     EXPECT_NE(std::string(error.what()).find("s.json: /loads/traction/0/region: holds the centroid of no triangle"),
               std::string::npos)
         << error.what();
+  }
+}
+
+// The box bent smoothly, node by node (mid-nodes too): curved isoparametric cells.
+VolumeMesh bent_grid(ElementType type) {
+  VolumeMesh mesh = structured_grid(box, {3, 2, 2}, type);
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+    const Eigen::Vector3d x = mesh.nodes.row(node).transpose();
+    mesh.nodes.row(node) << x.x() + 0.1 * std::sin(2 * x.y()), x.y() + 0.15 * x.x() * x.x(), x.z() * (1 + 0.2 * x.x());
+  }
+  return mesh;
+}
+
+TEST(SurfaceTractionOnCurvedCells, LiftMakesTheClosedPressureWorkExact) {
+  for (ElementType type : {ElementType::tet10, ElementType::hex20, ElementType::hex27}) {
+    SCOPED_TRACE(std::string(element_name(type)));
+    const VolumeMesh mesh = bent_grid(type);
+    const auto material = make_material(MaterialModel::linear, 1.0, 0.3, 2.0);
+    const auto discretization = make_lagrange_discretization(mesh, *material, {}, 8);
+    const Eigen::VectorXd ones = interpolate_at_nodes(mesh.nodes, [](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX().eval(); });
+    const double volume = ones.dot(discretization->body_force(Eigen::Vector3d::UnitX())) / 2.0;  // ∫ρ dV / ρ
+    SurfaceTraction pressure = load_on(everything());
+    pressure.pressure = 3.0;
+    const BoundarySurface boundary = boundary_surface(mesh);
+    const LagrangeBasisEvaluator evaluator(mesh);
+    const Eigen::VectorXd identity = interpolate_at_nodes(mesh.nodes, [](const Eigen::Vector3d& x) { return x; });
+    const auto work = [&](const SurfaceLift& lift) {
+      return identity.dot(SurfaceTractionLoad({pressure}, boundary.surface, evaluator, discretization->dof_count(), 1e-9,
+                                              "s.json", lift)(1.0));
+    };
+    EXPECT_NEAR(work(lagrange_surface_lift(mesh, boundary)), -3 * 3.0 * volume, 1e-11 * volume);
+    EXPECT_GT(std::abs(work({}) + 3 * 3.0 * volume), 1e-4 * volume) << "the chordal surface is not the cells' boundary";
   }
 }
 

@@ -5,6 +5,7 @@
 #include "app/method_registry.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
+#include "shared/fem/lagrange_surface_lift.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/surface_traction.hpp"
 #include "shared/solve/time_integrator.hpp"
@@ -36,11 +37,12 @@ Eigen::VectorXd solve_lagrange_static(const VolumeMesh& mesh, const Material& ma
                                       const std::vector<DirichletCondition>& conditions, SurfaceTraction load) {
   const auto discretization = make_lagrange_discretization(mesh, material, conditions, 6);
   load.pointer = "/loads/traction/0";
-  const SurfaceMesh surface = boundary_surface(mesh).surface;
+  const BoundarySurface boundary = boundary_surface(mesh);
   const LagrangeBasisEvaluator evaluator(mesh);
   const Eigen::AlignedBox3d bounds(mesh.nodes.colwise().minCoeff().transpose(), mesh.nodes.colwise().maxCoeff().transpose());
   const double tolerance = region_tolerance(bounds);
-  const SurfaceTractionLoad traction({load}, surface, evaluator, discretization->dof_count(), tolerance, "test");
+  const SurfaceTractionLoad traction({load}, boundary.surface, evaluator, discretization->dof_count(), tolerance, "test",
+                                     lagrange_surface_lift(mesh, boundary));
   return solve_static(*discretization, {traction}, 1e-12);
 }
 

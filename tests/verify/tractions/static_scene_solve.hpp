@@ -24,7 +24,8 @@ Eigen::VectorXd solve_static(const Discretization& discretization, std::vector<T
 RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal);
 
 /// Static equilibrium of the fem discretization of a Lagrange mesh (quadrature strength
-/// 6) under one surface load on its boundary, integrated as `altfem run` integrates it.
+/// 6) under one surface load on its boundary's curved faces, integrated as `altfem run`
+/// integrates it for fem.
 Eigen::VectorXd solve_lagrange_static(const VolumeMesh& mesh, const Material& material,
                                       const std::vector<DirichletCondition>& conditions, SurfaceTraction load);
 
