@@ -202,6 +202,16 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   }
 
   scene.gravity = vector3_from_json(resolved["loads"]["gravity"]);
+  const json& tractions = resolved["loads"]["traction"];
+  for (std::size_t i = 0; i < tractions.size(); ++i) {
+    SurfaceTraction load;
+    load.pointer = "/loads/traction/" + std::to_string(i);
+    load.region = region_from_json(tractions[i]["region"], load.pointer + "/region");
+    if (tractions[i].contains("traction")) load.traction = vector3_from_json(tractions[i]["traction"]);
+    else load.pressure = tractions[i]["pressure"].get<double>();
+    load.ramp = tractions[i]["ramp"].get<double>();
+    scene.tractions.push_back(load);
+  }
 
   const json& initial = resolved["initial_conditions"];
   scene.initial.velocity = vector3_from_json(initial["velocity"]);

@@ -110,8 +110,13 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
   }
 
   const double tolerance = region_tolerance(geometry.bounds);
-  for (const auto& condition : scene.dirichlet) {
-    const RegionSelector& region = condition.region;
+  // Dirichlet and surface-load regions; a load region is checked against the loaded
+  // surface's triangles again when a method is built (surface_traction.hpp).
+  std::vector<const RegionSelector*> regions;
+  for (const auto& condition : scene.dirichlet) regions.push_back(&condition.region);
+  for (const auto& load : scene.tractions) regions.push_back(&load.region);
+  for (const RegionSelector* selector : regions) {
+    const RegionSelector& region = *selector;
     bool selects = false;
     std::string tested;
     if (geometry.surface) {

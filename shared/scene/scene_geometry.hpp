@@ -39,7 +39,7 @@ struct SceneGeometry {
 };
 
 /// Reads the surface or volume mesh (or builds the shape), applies scale/translate,
-/// and checks that every Dirichlet
+/// and checks that every Dirichlet and surface-load
 /// region selects at least one point of the geometry (surface vertices, mesh nodes,
 /// or sample points inside the analytic shape). Throws InputError naming the file
 /// and e.g. /boundary_conditions/0/region.

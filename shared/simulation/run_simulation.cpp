@@ -17,6 +17,7 @@
 #include "shared/io/vtu_writer.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/rigid_motion.hpp"
+#include "shared/simulation/surface_traction.hpp"
 #include "shared/simulation/timed_discretization.hpp"
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/critical_time_step.hpp"
@@ -185,7 +186,11 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   const auto start = std::chrono::steady_clock::now();
   const double loading_seconds = setup_seconds;
   const std::unique_ptr<MethodInstance> method = factory(scene, geometry);
-  const TimedDiscretization discretization(method->discretization());
+  // The scene's loads that every method gets the same way, each a load vector at a
+  // time, added to the method's own external force: a new kind adds its line here.
+  std::vector<TimeDependentLoad> scene_loads;
+  if (auto tractions = surface_traction_load(scene, geometry.bounds, *method)) scene_loads.push_back(std::move(tractions));
+  const TimedDiscretization discretization(method->discretization(), std::move(scene_loads));
   const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
   TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
   check_static_supports(scene, discretization);
