@@ -120,6 +120,10 @@ void print(const char* title, const std::vector<Row>& rows) {
   }
 }
 
+double mean_rate(const std::vector<Row>& rows) {
+  return std::log(rows.front().error / rows.back().error) / std::log(rows.front().h / rows.back().h);
+}
+
 double last_rate(const std::vector<Row>& rows) {
   const Row& a = rows[rows.size() - 2];
   const Row& b = rows.back();
@@ -212,6 +216,23 @@ protected:
 
   static double h(int n) { return geometry_->bounds.sizes().maxCoeff() / n; }
 
+  // The FCM rows of `cell` on the grids n, printed under `title`.
+  static std::vector<Row> fcm_study(const std::string& cell, const std::vector<int>& sizes, const std::string& title) {
+    std::vector<Row> rows;
+    for (int n : sizes) rows.push_back(fcm_row(cell, n));
+    print(title.c_str(), rows);
+    return rows;
+  }
+
+  // The voxel fem rows on the grids n = 4 … 32, printed under `title` with their mean rate.
+  static std::vector<Row> voxel_study(const std::string& title) {
+    std::vector<Row> rows;
+    for (int n : {4, 8, 16, 32}) rows.push_back(voxel_row(n));
+    print(title.c_str(), rows);
+    std::printf("mean rate %.2f\n", mean_rate(rows));
+    return rows;
+  }
+
   static Scene* scene_;
   static SceneGeometry* geometry_;
   static Material* material_;
@@ -233,43 +254,26 @@ using ClampedHalfBall = Convergence<half_ball>;
 using FreeBall = Convergence<ball>;
 
 TEST_F(ClampedHalfBall, Hex8FcmConvergesTowardsRateTwo) {
-  std::vector<Row> rows;
-  for (int n : {4, 8, 16}) rows.push_back(fcm_row("hex8", n));
-  print("Hex8 FCM, clamped half-ball", rows);
-  EXPECT_GE(last_rate(rows), 1.6);
+  EXPECT_GE(last_rate(fcm_study("hex8", {4, 8, 16}, "Hex8 FCM, clamped half-ball")), 1.6);
 }
 
 // The rim singularity caps Hex20's rate; it still beats Hex8 at equal h by far.
 TEST_F(ClampedHalfBall, Hex20FcmIsFarMoreAccurateThanHex8) {
-  std::vector<Row> rows;
-  for (int n : {2, 4, 8}) rows.push_back(fcm_row("hex20", n));
-  print("Hex20 FCM, clamped half-ball", rows);
+  const std::vector<Row> rows = fcm_study("hex20", {2, 4, 8}, "Hex20 FCM, clamped half-ball");
   EXPECT_GE(last_rate(rows), 1.5);
   EXPECT_LT(5 * rows.back().error, fcm_row("hex8", 8).error);  // h = 1/4
 }
 
 TEST_F(ClampedHalfBall, VoxelFemStallsNearRateOne) {
-  std::vector<Row> rows;
-  for (int n : {4, 8, 16, 32}) rows.push_back(voxel_row(n));
-  print("Hex8 voxel fem, clamped half-ball", rows);
-  const double mean_rate = std::log(rows.front().error / rows.back().error) / std::log(rows.front().h / rows.back().h);
-  std::printf("mean rate %.2f\n", mean_rate);
-  EXPECT_LT(mean_rate, 1.5);
+  const std::vector<Row> rows = voxel_study("Hex8 voxel fem, clamped half-ball");
+  EXPECT_LT(mean_rate(rows), 1.5);
   EXPECT_GT(rows[2].error, 1.5 * fcm_row("hex8", 16).error);  // h = 1/8
 }
 
-TEST_F(FreeBall, Hex8FcmConvergesAtRateTwo) {
-  std::vector<Row> rows;
-  for (int n : {4, 8, 16}) rows.push_back(fcm_row("hex8", n));
-  print("Hex8 FCM", rows);
-  EXPECT_GE(last_rate(rows), 1.8);
-}
+TEST_F(FreeBall, Hex8FcmConvergesAtRateTwo) { EXPECT_GE(last_rate(fcm_study("hex8", {4, 8, 16}, "Hex8 FCM")), 1.8); }
 
 TEST_F(FreeBall, Hex20FcmConvergesAtRateThree) {
-  std::vector<Row> rows;
-  for (int n : {2, 4, 8}) rows.push_back(fcm_row("hex20", n));
-  print("Hex20 FCM", rows);
-  EXPECT_GE(last_rate(rows), 2.6);
+  EXPECT_GE(last_rate(fcm_study("hex20", {2, 4, 8}, "Hex20 FCM")), 2.6);
 }
 
 // The face ghost penalty in place of the stabilisation (γ = 0.01, the conditioning
@@ -293,12 +297,8 @@ TEST_F(FreeBall, GhostPenaltyKeepsTheRates) {
 // The staircase boundary moves by O(h) with every refinement: the error falls
 // erratically, at about rate 1 on average instead of 2, and stays well above the FCM's.
 TEST_F(FreeBall, VoxelFemStallsNearRateOne) {
-  std::vector<Row> rows;
-  for (int n : {4, 8, 16, 32}) rows.push_back(voxel_row(n));
-  print("Hex8 voxel fem", rows);
-  const double mean_rate = std::log(rows.front().error / rows.back().error) / std::log(rows.front().h / rows.back().h);
-  std::printf("mean rate %.2f\n", mean_rate);
-  EXPECT_LT(mean_rate, 1.5);
+  const std::vector<Row> rows = voxel_study("Hex8 voxel fem");
+  EXPECT_LT(mean_rate(rows), 1.5);
   EXPECT_GT(rows[2].error, 2 * fcm_row("hex8", 16).error);  // h = 1/8
 }
 
