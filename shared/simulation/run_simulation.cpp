@@ -15,8 +15,10 @@
 #include "shared/io/json_file.hpp"
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
+#include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/rigid_motion.hpp"
+#include "shared/simulation/scene_loads.hpp"
 #include "shared/simulation/timed_discretization.hpp"
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/critical_time_step.hpp"
@@ -28,10 +30,12 @@ namespace {
 
 // A static problem with a load and nothing holding the body has no equilibrium: its
 // rigid-body modes move without bound. Caught before solving, as bad input.
-void check_static_supports(const Scene& scene, const Discretization& discretization) {
+void check_static_supports(const Scene& scene, const Discretization& discretization,
+                           const std::function<Eigen::VectorXd(double)>& scene_load) {
   if (!scene.time.is_static || !discretization.constrained_dofs().empty() || discretization.imposes_conditions_weakly())
     return;
-  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0;
+  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0 ||
+                      (scene_load && scene_load(1.0).norm() > 0);
   if (loaded)
     throw InputError(input_message(scene.file.string(), "/boundary_conditions",
                                    "a static problem with a load needs Dirichlet conditions that hold the body "
@@ -75,8 +79,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-IntegratorOptions integrator_options(const Scene& scene) {
+IntegratorOptions integrator_options(const Scene& scene, std::function<Eigen::VectorXd(double)> scene_load) {
   IntegratorOptions options;
+  options.external_load = std::move(scene_load);
   if (scene.time.is_static) {
     options.kind = IntegrationScheme::static_equilibrium;
   } else {
@@ -124,6 +129,15 @@ Eigen::VectorXd von_mises(const Eigen::MatrixXd& stresses) {
 double max_von_mises(const Discretization& discretization, const Eigen::VectorXd& displacement) {
   const Eigen::MatrixXd stresses = discretization.element_cauchy_stress(displacement);
   return stresses.rows() == 0 ? 0.0 : von_mises(stresses).maxCoeff();
+}
+
+// summary.json's field_errors of the final state against the scene's exact_displacement,
+// on a rule 2 stronger than the method's own where it can (field_quadrature); null for a
+// method that cannot tabulate its basis at points.
+nlohmann::json exact_solution_errors(const MethodInstance& method, const VectorExpression& exact, const State& state) {
+  const std::optional<FieldQuadrature> quadrature = method.field_quadrature(2);
+  if (!quadrature) return nullptr;
+  return field_errors_json(field_errors(*quadrature, exact, state.displacement, state.time));
 }
 
 // Writes the frames of one output time: the method's mesh and the embedded surface.
@@ -187,8 +201,9 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   const std::unique_ptr<MethodInstance> method = factory(scene, geometry);
   const TimedDiscretization discretization(method->discretization());
   const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
-  TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
-  check_static_supports(scene, discretization);
+  const auto scene_load = scene_external_load(scene, *method, method_name);
+  TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene, scene_load));
+  check_static_supports(scene, discretization, scene_load);
   const bool explicit_steps = !scene.time.is_static && scene.time.integrator == IntegratorKind::symplectic_euler;
   const double critical_time_step =
       explicit_steps ? estimate_critical_time_step(discretization) : std::numeric_limits<double>::infinity();
@@ -280,6 +295,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["linear_iterations"] = linear_iterations;
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();
+  if (scene.exact_displacement.has_value() && status == "ok")
+    summary["field_errors"] = exact_solution_errors(*method, scene.exact_displacement, state);
   write_file_atomically(output_directory / "log.txt", log.str());
   write_json_file(output_directory / "summary.json", summary);
   if (status != "ok") throw NumericalError(status.substr(std::string("error: ").size()));
