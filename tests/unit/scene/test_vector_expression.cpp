@@ -45,9 +45,10 @@ TEST(VectorExpression, ThreadsEvaluatingAtOnceGetTheSerialValues) {
     threads.emplace_back([&, i] {
       // Alternate batch and point-wise evaluation so that the pool is shared heavily.
       results[i].resize(points.rows(), 3);
-      for (Eigen::Index p = 0; p < points.rows(); ++p)
-        results[i].row(p) = (p % 2 == 0 ? f(points.row(p).transpose(), 0.3).transpose()
-                                        : f.evaluate(points.row(p), 0.3).row(0));
+      for (Eigen::Index p = 0; p < points.rows(); ++p) {
+        if (p % 2 == 0) results[i].row(p) = f(points.row(p).transpose(), 0.3).transpose();
+        else results[i].row(p) = f.evaluate(points.row(p), 0.3).row(0);
+      }
     });
   for (auto& thread : threads) thread.join();
   for (const auto& result : results) EXPECT_EQ(result, serial);
