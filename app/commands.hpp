@@ -29,8 +29,16 @@ int run_command(const std::filesystem::path& scene_file, const std::string& meth
 
 /// `quadrature monomials`: Longva et al. 2020, §4.6 for strengths 1..order.
 int quadrature_monomials_command(const std::string& cell, int order, const std::string& simplifier, bool json);
-/// `quadrature conditioning`: Longva et al. 2020, §5.4 (Fig. 5) for one cell type.
-int quadrature_conditioning_command(const std::string& cell, bool json);
+/// `quadrature conditioning`: Longva et al. 2020, §5.4 (Fig. 5) for one cell type, with
+/// stabilisation 0 and 1e-6 (the paper's remedies) and, for comparison, the face ghost
+/// penalty with γ = ghost_penalty and no stabilisation.
+int quadrature_conditioning_command(const std::string& cell, double ghost_penalty, bool json);
+/// γ of the ghost-penalty rows unless --ghost-penalty says otherwise: measured on Fig. 5
+/// and the FreeBall convergence test (tests/verify/fcm), 0.01 bounds κ at 2^-30 (Hex8
+/// 1.1e4, Hex20 1.6e6, Tet10 1.4e5 unpreconditioned) while costing Hex20 1.45× its L2
+/// error (0.1: κ about 5× lower on Hex8, the Hex20 error 6× higher; 0.001: the error
+/// unchanged, κ about 8× higher).
+inline constexpr double default_conditioning_ghost_penalty = 0.01;
 /// `quadrature cell`: the rules of one background cell of a scene, as VTU points.
 int quadrature_cell_command(const std::filesystem::path& scene_file, const std::string& cell_index,
                             const std::string& cell_type, const std::string& resolution, int order,

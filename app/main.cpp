@@ -55,6 +55,11 @@ int main(int argc, char** argv) {
   bool conditioning_json = false;
   conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
   conditioning->add_flag("--json", conditioning_json, "Print JSON");
+  double conditioning_ghost_penalty = altfem::cli::default_conditioning_ghost_penalty;
+  conditioning
+      ->add_option("--ghost-penalty", conditioning_ghost_penalty,
+                   "gamma of the face ghost penalty in the comparison rows (stabilisation 0)")
+      ->check(CLI::PositiveNumber);
   std::string quadrature_cell_type = "hex20", quadrature_scene, quadrature_index, quadrature_resolution = "4";
   std::string simplifier = "caratheodory", quadrature_output = "out/quadrature-cell";
   int quadrature_order = 4;
@@ -106,7 +111,7 @@ int main(int argc, char** argv) {
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
       return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
-    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_json);
+    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_ghost_penalty, conditioning_json);
     if (*quadrature_cell)
       return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
                                                   quadrature_resolution, quadrature_order, simplifier,

@@ -69,6 +69,7 @@ public:
   double quadrature_seconds() const override { return inner_->quadrature_seconds(); }
   altfem::UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override { return inner_->volume_grid(u); }
   const altfem::SurfaceMesh& embedded_surface() const override { return inner_->embedded_surface(); }
+  const altfem::ElementBasisEvaluator& basis_evaluator() const override { return inner_->basis_evaluator(); }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
     end_face_ = end_face_displacement(*inner_, u);
     return inner_->embedded_displacement(u);

@@ -110,8 +110,9 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume_mesh).surface;
-    embedding_ = std::make_unique<BasisEmbedding>(MonomialBasisEvaluator(mesh_, *system_), surface_.vertices);
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh).surface;
+    evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
+    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -126,6 +127,7 @@ public:
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return system_->interpolate(field);
@@ -175,6 +177,7 @@ private:
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
   SurfaceMesh surface_;
+  std::unique_ptr<MonomialBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double integration_seconds_ = 0;
 };

@@ -13,9 +13,13 @@
 //     which also undoes the near-dependence of the functions of one tiny cell;
 // and quadrature stabilisation (§5.3): the empty part of a cut cell is integrated with
 // the material scaled by a small factor (here 1e-6), which bounds the smallest
-// eigenvalue from below at the price of a small modelling error.
+// eigenvalue from below at the price of a small modelling error. A third remedy, not
+// the paper's: the face ghost penalty (Burman 2010; deal.II step-85) penalises the jumps
+// of the normal derivatives across the faces of cut cells, which ties a tiny cell's
+// functions to its neighbours' and bounds κ with no added points and no preconditioner.
 // The material and the deformation u(X) = (X, X, −X) are the paper's (see
 // fcm/conditioning_experiment.hpp); the eigenvalues are dense, so this takes seconds.
+#include <algorithm>
 #include <cstdio>
 
 #include "fcm/conditioning_experiment.hpp"
@@ -53,5 +57,18 @@ int main() {
                   figure_five ? "verified" : "NOT verified", smallest.none, smallest.schwarz, smallest.jacobi);
     ok = ok && figure_five;
   }
-  return ok ? 0 : 1;
+
+  // The ghost penalty (γ = 0.01 × (λ + 2μ), the conditioning command's default) instead
+  // of the stabilisation: κ stays near the uncut grid's at every fraction.
+  const std::vector<fcm::ConditioningRow> ghost = fcm::conditioning_experiment(ElementType::hex8, exponents, 0.0, 0.01);
+  std::printf("Hex8, ghost penalty 0.01, no stabilisation\n%10s %11s %8s\n", "fraction", "none", "CG");
+  double worst = 0;
+  for (size_t k = 0; k < ghost.size(); ++k) {
+    std::printf("   2^-%-5d %11.3e %8d\n", exponents[k], ghost[k].none, ghost[k].none_iterations);
+    worst = std::max(worst, ghost[k].none);
+  }
+  const bool bounded = worst < 1e6;
+  std::printf("%s: with the ghost penalty the unpreconditioned kappa stays below %.2e\n",
+              bounded ? "verified" : "NOT verified", worst);
+  return ok && bounded ? 0 : 1;
 }

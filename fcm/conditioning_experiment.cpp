@@ -48,7 +48,7 @@ int pcg_iterations(const Eigen::MatrixXd& A, const Eigen::MatrixXd& S) {
 }  // namespace
 
 std::vector<ConditioningRow> conditioning_experiment(ElementType cell, const std::vector<int>& exponents,
-                                                     double stabilization) {
+                                                     double stabilization, double ghost_penalty) {
   const Eigen::AlignedBox3d domain(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(4.0 / 3.0));
   const VolumeMesh grid = structured_grid(domain, {4, 4, 4}, cell);
   const auto material = make_material(MaterialModel::stable_neo_hookean, 2.679e6, 0.25, 1000);
@@ -67,6 +67,7 @@ std::vector<ConditioningRow> conditioning_experiment(ElementType cell, const std
     options.mass_quadrature_strength = 2 * degree + 2;
     options.discard_fraction = 0;  // "discarding off"
     options.stabilization = stabilization;
+    options.ghost_penalty = ghost_penalty;
     // Hexahedra: the exact rules of a box in a box; tetrahedra: intersection rules
     // against the body split into six tetrahedra (§4.5), unsimplified.
     const CellQuadratureSource rules =

@@ -109,6 +109,11 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   parts.element_masses = lagrange_element_masses(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
                                                                        options.mass_quadrature_strength,
                                                                        stabilize_mass ? options.stabilization : 0.0));
+  if (options.ghost_penalty > 0) {
+    fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(fcm.mesh, fcm.volume_fractions));
+    parts.terms.push_back(ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials,
+                                             options.ghost_penalty));
+  }
   parts.materials = std::move(materials);
   parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");
 

@@ -2,13 +2,14 @@
 // The finite cell discretization (Longva et al. 2020 §3.2-5): the conforming Lagrange
 // parts of shared/fem on the background cells that hold material, with the cut cells'
 // own rules for stiffness and (at a higher strength, never simplified) mass, small cut
-// cells discarded, the quadrature stabilised, and the Additive-Schwarz preconditioner
-// over the small cut cells.
+// cells discarded, the quadrature stabilised, the Additive-Schwarz preconditioner
+// over the small cut cells, and (a remedy the paper does not use) a face ghost penalty.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "fcm/cell_quadrature.hpp"
+#include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
@@ -31,6 +32,10 @@ struct FcmOptions {
   /// §5.2: cut cells below this volume fraction get an Additive-Schwarz block.
   double schwarz_fraction = 0.5;
   double schwarz_epsilon = 1e-13;  ///< ε of eq. (14)
+  /// γ of the face ghost penalty on the faces of cut cells (Burman 2010, in deal.II
+  /// step-85's form; GhostPenaltyKernel), scaled by the P-wave modulus λ + 2μ so that it
+  /// is dimensionless (0: off). Another remedy for small cuts than §5.2-5.3's.
+  double ghost_penalty = 0;
 };
 
 struct FcmCellCounts {
@@ -43,6 +48,9 @@ struct FcmDiscretization {
   std::vector<double> volume_fractions; ///< per kept cell
   FcmCellCounts counts;
   int schwarz_blocks = 0;
+  /// The ghost penalty's faces (null when off); declared before `discretization`,
+  /// whose face term refers to them, so that they outlive it.
+  std::unique_ptr<GhostPenaltyFaces> ghost;
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 

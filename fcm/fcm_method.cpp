@@ -45,7 +45,7 @@ public:
 
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(embedded).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded).surface;
     evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -68,6 +68,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
@@ -92,7 +93,8 @@ public:
             {"worst_moment_residual", statistics_->max_residual},
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
-            {"schwarz_blocks", fcm_.schwarz_blocks}});
+            {"schwarz_blocks", fcm_.schwarz_blocks},
+            {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
     return facts;
   }
 

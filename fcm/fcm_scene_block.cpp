@@ -60,7 +60,8 @@ const scene_schema::ObjectRule fcm_rule{
       .choices = scene_schema::names(stabilized_names)},
      {.key = "schwarz_fraction", .type = ValueType::number, .default_value = 0.5, .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, true}},
-     {.key = "schwarz_epsilon", .type = ValueType::number, .default_value = 1e-13, .lower = scene_schema::positive}}};
+     {.key = "schwarz_epsilon", .type = ValueType::number, .default_value = 1e-13, .lower = scene_schema::positive},
+     {.key = "ghost_penalty", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative}}};
 
 }  // namespace
 
@@ -95,6 +96,7 @@ FcmSpec fcm_spec(const Scene& scene) {
                            : StabilizedMatrices::mass_and_stiffness;
   options.schwarz_fraction = fcm["schwarz_fraction"].get<double>();
   options.schwarz_epsilon = fcm["schwarz_epsilon"].get<double>();
+  options.ghost_penalty = fcm["ghost_penalty"].get<double>();
   return spec;
 }
 

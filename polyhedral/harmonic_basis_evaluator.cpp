@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include "shared/common/error.hpp"
+
 namespace altfem::harmonic {
 
 namespace {
@@ -51,12 +53,13 @@ double HarmonicBasisEvaluator::distance_to_boundary(int cell, const Eigen::Vecto
   return distance;
 }
 
-void HarmonicBasisEvaluator::evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
+bool HarmonicBasisEvaluator::evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                                       std::vector<double>& values) const {
   Eigen::VectorXd cell_values;
-  bases_.evaluate(cell, x, cell_values);
+  if (!bases_.evaluate(cell, x, cell_values)) return false;
   basis = bases_.nodes(cell);
   values.assign(cell_values.data(), cell_values.data() + cell_values.size());
+  return true;
 }
 
 bool HarmonicBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
@@ -64,8 +67,7 @@ bool HarmonicBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x,
   const double tolerance = 1e-9 * mesh_.cell_diameters[cell];
   if (bounds_[cell].exteriorDistance(x) > tolerance) return false;
   if (winding_number(cell_polyhedron(mesh_, cell), x) <= 0.5 && distance_to_boundary(cell, x) > tolerance) return false;
-  evaluate(cell, x, basis, values);
-  return true;
+  return evaluate(cell, x, basis, values);
 }
 
 double HarmonicBasisEvaluator::evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
@@ -75,15 +77,21 @@ double HarmonicBasisEvaluator::evaluate_nearest(const Eigen::Vector3d& x, std::v
   std::vector<std::pair<double, int>> candidates;
   for (int cell = 0; cell < bases_.cell_count(); ++cell) candidates.emplace_back(bounds_[cell].exteriorDistance(x), cell);
   std::sort(candidates.begin(), candidates.end());
-  double best = std::numeric_limits<double>::infinity();
-  int nearest = 0;
-  for (const auto& [box_distance, cell] : candidates) {
-    if (box_distance >= best) break;
-    const double distance = distance_to_boundary(cell, x);
-    if (distance < best) best = distance, nearest = cell;
+  // The nearest cell whose map can be inverted: a sliver next to the point cannot.
+  std::vector<char> degenerate(candidates.size(), 0);
+  for (;;) {
+    double best = std::numeric_limits<double>::infinity();
+    std::size_t nearest = candidates.size();
+    for (std::size_t i = 0; i < candidates.size() && candidates[i].first < best; ++i) {
+      if (degenerate[i]) continue;
+      const double distance = distance_to_boundary(candidates[i].second, x);
+      if (distance < best) best = distance, nearest = i;
+    }
+    if (nearest == candidates.size())
+      throw NumericalError("harmonic embedding: no cell near a surface point has an invertible map");
+    if (evaluate(candidates[nearest].second, x, basis, values)) return best;
+    degenerate[nearest] = 1;
   }
-  evaluate(nearest, x, basis, values);
-  return best;
 }
 
 }  // namespace altfem::harmonic

@@ -20,7 +20,7 @@ public:
   double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override;
 
 private:
-  void evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;
+  bool evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;
   double distance_to_boundary(int cell, const Eigen::Vector3d& x) const;
 
   const PolyhedralMesh& mesh_;

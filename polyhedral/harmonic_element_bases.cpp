@@ -97,19 +97,19 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const std::vector
   return elements;
 }
 
-void HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const {
+bool HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const {
   const Cell& entry = cells_[cell];
   if (entry.mfs) {
     Eigen::MatrixXd gradients;
     entry.mfs->evaluate(x, values, gradients);
-    return;
+    return true;
   }
   const ReferenceElement& element = reference_element(*entry.plain);
   const InverseMapResult inverse = map_to_reference(element, mesh_.nodes(entry.nodes, Eigen::all), x);
-  if (!inverse.converged)
-    throw NumericalError("harmonic embedding: the inverse map of cell " + std::to_string(cell) + " did not converge");
+  if (!inverse.converged) return false;
   values.resize(element.node_count());
   element.evaluate(inverse.xi, values);
+  return true;
 }
 
 }  // namespace altfem::harmonic

@@ -41,8 +41,9 @@ public:
 
   /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
   /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an
-  /// MFS cell by its kernel expansion. Throws NumericalError when the inverse map fails.
-  void evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const;
+  /// MFS cell by its kernel expansion. Returns false when the inverse map fails (a
+  /// degenerate cell: Mesh_3 leaves slivers).
+  bool evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const;
 
 private:
   struct Cell {

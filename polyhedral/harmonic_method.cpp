@@ -38,7 +38,7 @@ public:
     parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
     parts.explicit_mass = ExplicitMassKind::lumped;
     discretization_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(volume).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume).surface;
     evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -74,6 +74,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }

@@ -29,7 +29,7 @@ def read_rows(path):
     with open(path, newline="") as stream:
         rows = list(csv.DictReader(stream))
     for row in rows:
-        for key in ("dofs", "elements", "quadrature_points", "newton_iterations", "linear_iterations",
+        for key in ("dofs", "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations",
                     "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
             row[key] = number(row[key])
         row["series"] = f"{row['method']} {row['element']}".strip()
@@ -144,6 +144,20 @@ def default_target(rows):
     return max(minima) if minima else math.nan
 
 
+def solve_seconds(row):
+    """The time spent stepping: assembly and linear algebra, without set-up and quadrature."""
+    return sum(row[key] for key in ("assembly_s", "analysis_s", "factorisation_s", "solve_s"))
+
+
+def per_step_ms(row):
+    return f"{1000 * solve_seconds(row) / row['steps']:.3g}" if row["steps"] > 0 else "—"
+
+
+def per_iteration_ms(row):
+    iterations = row["newton_iterations"]
+    return f"{1000 * solve_seconds(row) / iterations:.3g}" if iterations > 0 else "—"
+
+
 def equal_accuracy_table(rows, target):
     """Per series: the cheapest run with error <= target, and its time relative to the fastest."""
     best = {}
@@ -152,12 +166,13 @@ def equal_accuracy_table(rows, target):
         if good:
             best[name] = min(good, key=lambda r: r["total_s"])
     fastest = min((r["total_s"] for r in best.values()), default=math.nan)
-    lines = ["| method, element | cheapest configuration | DOFs | RMS error | total time [s] | relative to the fastest |",
-             "|---|---|---|---|---|---|"]
+    lines = ["| method, element | cheapest configuration | DOFs | RMS error | total time [s] | per step [ms] | "
+             "per Newton iteration [ms] | relative to the fastest |",
+             "|---|---|---|---|---|---|---|---|"]
     for name in sorted(best, key=lambda n: best[n]["total_s"]):
         r = best[name]
         lines.append(f"| {name} | {r['label']} | {int(r['dofs'])} | {r['rms_error']:.3g} | {r['total_s']:.3g} | "
-                     f"{r['total_s'] / fastest:.1f}× |")
+                     f"{per_step_ms(r)} | {per_iteration_ms(r)} | {r['total_s'] / fastest:.1f}× |")
     missing = sorted(set(series_of(rows)) - set(best))
     if missing:
         lines.append("")

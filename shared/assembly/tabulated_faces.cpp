@@ -20,7 +20,9 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
                          const Eigen::Ref<const Eigen::MatrixXd>& values_minus,
                          const Eigen::Ref<const Eigen::MatrixXd>& values_plus,
                          const Eigen::Ref<const Eigen::MatrixXd>& gradients_minus,
-                         const Eigen::Ref<const Eigen::MatrixXd>& gradients_plus, int minus, int plus) {
+                         const Eigen::Ref<const Eigen::MatrixXd>& gradients_plus, int minus, int plus,
+                         const Eigen::Ref<const Eigen::MatrixXd>& hessians_minus,
+                         const Eigen::Ref<const Eigen::MatrixXd>& hessians_plus) {
   const auto n = static_cast<Eigen::Index>(basis.size());
   const auto points = static_cast<Eigen::Index>(weights.size());
   const auto values_fit = [&](const auto& values) { return values.rows() == points && values.cols() == n; };
@@ -31,6 +33,12 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
       !gradients_fit(gradients_minus) || !gradients_fit(gradients_plus))
     throw std::invalid_argument("TabulatedFaces::add: normals must be #points × 3, values #points × #basis and "
                                 "gradients (#points·#basis) × 3");
+  const bool with_hessians = hessians_minus.rows() > 0 || hessians_plus.rows() > 0;
+  const auto hessians_fit = [&](const auto& hessians) { return hessians.rows() == points * n && hessians.cols() == 9; };
+  if (with_hessians && (!hessians_fit(hessians_minus) || !hessians_fit(hessians_plus)))
+    throw std::invalid_argument("TabulatedFaces::add: Hessians must be (#points·#basis) × 9");
+  if (size() > 0 && with_hessians != !hessians_minus_.empty())
+    throw std::invalid_argument("TabulatedFaces::add: either every face has Hessians or none has");
   for (Eigen::Index q = 0; q < points; ++q)
     if (std::abs(normals.row(q).norm() - 1.0) > 1e-12)
       throw std::invalid_argument("TabulatedFaces::add: the normal at point " + std::to_string(q) + " is not a unit vector");
@@ -42,6 +50,8 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
   append_row_major(values_plus, values_plus_);
   append_row_major(gradients_minus, gradients_minus_);
   append_row_major(gradients_plus, gradients_plus_);
+  append_row_major(hessians_minus, hessians_minus_);
+  append_row_major(hessians_plus, hessians_plus_);
   value_offsets_.push_back(static_cast<long long>(values_minus_.size()));
   minus_.push_back(minus);
   plus_.push_back(plus);
@@ -61,6 +71,8 @@ FaceView TabulatedFaces::operator[](int face) const {
                   {values_plus_.data() + value_begin, points, n},
                   gradients_minus_.data() + 3 * value_begin,
                   gradients_plus_.data() + 3 * value_begin,
+                  hessians_minus_.empty() ? nullptr : hessians_minus_.data() + 9 * value_begin,
+                  hessians_plus_.empty() ? nullptr : hessians_plus_.data() + 9 * value_begin,
                   face,
                   minus_[face],
                   plus_[face]};

@@ -16,6 +16,7 @@ namespace {
 using MonomialValues = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ReferenceElement::max_node_count, 1>;
 using MonomialGradients =
     Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
+using MonomialHessians = Eigen::Matrix<double, Eigen::Dynamic, 9, 0, ReferenceElement::max_node_count, 9>;
 
 constexpr int max_exponent = 3;  // Tet20's cubics
 using Powers = std::array<std::array<double, max_exponent + 1>, 3>;
@@ -86,6 +87,24 @@ void ReferenceElement::evaluate_gradients(const Eigen::Vector3d& xi,
     }
   }
   gradients.noalias() = coefficients_.lazyProduct(derivatives);
+}
+
+void ReferenceElement::evaluate_hessians(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> hessians) const {
+  const int count = node_count();
+  const Powers powers = powers_of(xi);
+  MonomialHessians derivatives(count, 9);
+  for (int j = 0; j < count; ++j)
+    for (int d = 0; d < 3; ++d)
+      for (int e = 0; e < 3; ++e) {
+        // ∂_d ∂_e ξ^a: lower exponent d, then e, each time by the factor it had.
+        Eigen::Vector3i lowered = exponents_[j];
+        double factor = lowered[d];
+        --lowered[d];
+        factor *= lowered[e];
+        --lowered[e];
+        derivatives(j, 3 * d + e) = factor == 0.0 ? 0.0 : factor * monomial(powers, lowered);
+      }
+  hessians.noalias() = coefficients_.lazyProduct(derivatives);
 }
 
 bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {

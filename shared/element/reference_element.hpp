@@ -35,6 +35,10 @@ public:
   void evaluate(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::VectorXd> values) const;
   /// gradients (#nodes × 3) = ∂N_i/∂ξ_j. Writes into the caller's storage; no allocation.
   void evaluate_gradients(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> gradients) const;
+  /// hessians (#nodes × 9): column 3j + k = ∂²N_i/∂ξ_j∂ξ_k (each row a row-major 3 × 3
+  /// matrix). Writes into the caller's storage; no allocation. For derivative-jump
+  /// terms on faces (ghost penalties, Burman 2010) on quadratic cells.
+  void evaluate_hessians(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> hessians) const;
 
   /// Whether ξ lies in the reference domain enlarged by `tolerance` (in reference
   /// coordinates): tets ξ_j ≥ −tol and Σξ_j ≤ 1 + tol; hexes |ξ_j| ≤ 1 + tol.

@@ -5,6 +5,7 @@
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
+#include "shared/fem/lagrange_surface_lift.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
@@ -27,10 +28,19 @@ public:
                                                    scene.dirichlet, fem.quadrature_order,
                                                    scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // The surface every method deforms: the scene's own surface when it has one,
-    // else the boundary of the mesh.
-    surface_ = geometry.surface ? *geometry.surface : boundary_surface(mesh_).surface;
-    embedding_ = std::make_unique<BasisEmbedding>(LagrangeBasisEvaluator(mesh_), surface_.vertices);
+    // The surface every method deforms (SceneGeometry::common_surface), else the mesh's
+    // boundary. Surface loads act on the scene's surface when it has one, else on the
+    // mesh's own boundary lifted to the cells' curved faces: the domain fem solves on.
+    const BoundarySurface boundary = boundary_surface(mesh_);
+    if (geometry.surface) {
+      load_surface_ = *geometry.surface;
+    } else {
+      load_surface_ = boundary.surface;
+      lift_ = lagrange_surface_lift(mesh_, boundary);
+    }
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
+    evaluator_ = std::make_unique<LagrangeBasisEvaluator>(mesh_);
+    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -45,6 +55,9 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
+  SurfaceLift surface_lift() const override { return lift_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
   }
@@ -68,6 +81,9 @@ private:
   VolumeMesh mesh_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;
+  SurfaceMesh load_surface_;
+  SurfaceLift lift_;  // empty with the scene's own surface
+  std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
   int quadrature_order_ = 0;

@@ -7,6 +7,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/analytic_shape.hpp"
+#include "shared/geometry/feature_curves.hpp"
 
 namespace altfem {
 
@@ -63,6 +64,55 @@ public:
         box = box.intersection(children_[i]->bounding_box());
     }
     return box;
+  }
+
+  double smallest_feature() const override {
+    double smallest = children_.front()->smallest_feature();
+    for (const auto& child : children_) smallest = std::min(smallest, child->smallest_feature());
+    return smallest;
+  }
+
+  std::optional<AxisPlanes> axis_planes() const override {
+    AxisPlanes planes;
+    for (const auto& child : children_) {
+      const std::optional<AxisPlanes> own = child->axis_planes();
+      if (!own) return std::nullopt;
+      for (int axis = 0; axis < 3; ++axis) planes[axis].insert(planes[axis].end(), (*own)[axis].begin(), (*own)[axis].end());
+    }
+    for (auto& coordinates : planes) {
+      std::sort(coordinates.begin(), coordinates.end());
+      coordinates.erase(std::unique(coordinates.begin(), coordinates.end()), coordinates.end());
+    }
+    return planes;
+  }
+
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    const double tolerance = 1e-9 * bounding_box().diagonal().norm();
+    std::vector<Polyline> candidates;
+    for (std::size_t i = 0; i < children_.size(); ++i) {
+      for (Polyline& line : children_[i]->sharp_edges(spacing)) candidates.push_back(std::move(line));
+      const std::vector<PlanarFace> faces = children_[i]->planar_faces();
+      for (std::size_t j = 0; j < children_.size(); ++j) {
+        // A curve between two children with planar faces lies on both: found from the first's only.
+        if (j == i || (j < i && !children_[j]->planar_faces().empty())) continue;
+        for (const PlanarFace& face : faces)
+          for (Polyline& line : zero_set_on_face(face, *children_[j], spacing)) candidates.push_back(std::move(line));
+      }
+    }
+    std::vector<Polyline> edges;
+    for (const Polyline& line : candidates)
+      for (Polyline& part : parts_on_surface(line, *this, tolerance)) edges.push_back(std::move(part));
+    // Curves found separately meet at the same points up to bisection: Mesh_3 needs
+    // them to share those ends exactly.
+    snap_ends(edges, 1e-6 * bounding_box().diagonal().norm());
+    return edges;
+  }
+
+  std::vector<PlanarFace> planar_faces() const override {
+    std::vector<PlanarFace> faces;
+    for (const auto& child : children_)
+      for (const PlanarFace& face : child->planar_faces()) faces.push_back(face);
+    return faces;
   }
 
   // Closed form only when the children are disjoint or nested in a convex child
@@ -154,6 +204,25 @@ public:
     return *volume * scale_ * scale_ * scale_;
   }
   bool is_convex() const override { return shape_->is_convex(); }
+  double smallest_feature() const override { return scale_ * shape_->smallest_feature(); }
+  std::optional<AxisPlanes> axis_planes() const override {
+    std::optional<AxisPlanes> planes = shape_->axis_planes();
+    if (planes)
+      for (int axis = 0; axis < 3; ++axis)
+        for (double& coordinate : (*planes)[axis]) coordinate = scale_ * coordinate + translate_[axis];
+    return planes;
+  }
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    std::vector<Polyline> edges = shape_->sharp_edges(spacing / scale_);
+    for (Polyline& line : edges)
+      for (Eigen::Vector3d& point : line) point = scale_ * point + translate_;
+    return edges;
+  }
+  std::vector<PlanarFace> planar_faces() const override {
+    std::vector<PlanarFace> faces = shape_->planar_faces();
+    for (PlanarFace& face : faces) face = {scale_ * face.origin + translate_, scale_ * face.u, scale_ * face.v};
+    return faces;
+  }
 
 private:
   ShapePointer shape_;

@@ -5,22 +5,14 @@
 #include <map>
 #include <span>
 
+#include "shared/element/element_faces.hpp"
+
 namespace altfem {
 
-namespace {
-
-// Outward faces of the VTK corner orderings (counter-clockwise seen from outside).
-constexpr std::array<std::array<int, 4>, 4> tetrahedron_faces{{{0, 2, 1, -1}, {0, 1, 3, -1}, {1, 2, 3, -1}, {0, 3, 2, -1}}};
-constexpr std::array<std::array<int, 4>, 6> hexahedron_faces{
-    {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
-
-}  // namespace
-
 BoundarySurface boundary_surface(const VolumeMesh& mesh) {
-  const bool tetrahedra = element_shape(mesh.element_type) == ElementShape::tetrahedron;
-  const std::span<const std::array<int, 4>> faces =
-      tetrahedra ? std::span<const std::array<int, 4>>(tetrahedron_faces) : std::span<const std::array<int, 4>>(hexahedron_faces);
-  const int corners = tetrahedra ? 3 : 4;
+  const ElementShape shape = element_shape(mesh.element_type);
+  const std::span<const std::array<int, 4>> faces = element_faces(shape);
+  const int corners = face_corner_count(shape);
 
   // Count each face by its sorted corners; remember one (cell, face) for it.
   std::map<std::array<int, 4>, std::pair<int, int>> owner;
@@ -29,7 +21,7 @@ BoundarySurface boundary_surface(const VolumeMesh& mesh) {
     for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
       std::array<int, 4> key{-1, -1, -1, -1};
       for (int c = 0; c < corners; ++c) key[c] = mesh.cells(cell, faces[f][c]);
-      std::sort(key.begin(), key.begin() + corners);
+      std::sort(key.begin(), key.end());  // a triangle's -1 pad sorts first
       ++count[key];
       owner[key] = {static_cast<int>(cell), f};
     }

@@ -215,6 +215,16 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   }
 
   scene.gravity = vector3_from_json(resolved["loads"]["gravity"]);
+  const json& tractions = resolved["loads"]["traction"];
+  for (std::size_t i = 0; i < tractions.size(); ++i) {
+    SurfaceTraction load;
+    load.pointer = "/loads/traction/" + std::to_string(i);
+    load.region = region_from_json(tractions[i]["region"], load.pointer + "/region");
+    if (tractions[i].contains("traction")) load.traction = vector3_from_json(tractions[i]["traction"]);
+    else load.pressure = tractions[i]["pressure"].get<double>();
+    load.ramp = tractions[i]["ramp"].get<double>();
+    scene.tractions.push_back(load);
+  }
   if (resolved["loads"].contains("body_force"))
     scene.body_force = expression_from_json(resolved["loads"]["body_force"], constants, file_name, "/loads/body_force");
   if (resolved.contains("exact_displacement"))

@@ -4,6 +4,7 @@
 // every default resolved.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -91,6 +92,22 @@ struct DirichletCondition {
   std::string pointer;                               ///< e.g. "/boundary_conditions/0"
 };
 
+/// A surface load of `loads.traction` (docs/scene-schema.md): a dead load — its direction
+/// is fixed in the reference configuration — on the embedded surface's triangles whose
+/// centroid the region holds.
+struct SurfaceTraction {
+  RegionSelector region;
+  /// Force per reference area [Pa]: the traction vector, or −pressure × the outward
+  /// unit normal of each triangle (a positive pressure pushes into the body).
+  std::optional<Eigen::Vector3d> traction;
+  double pressure = 0.0;  ///< used when `traction` is empty
+  double ramp = 0.0;      ///< T [s]: the load is scaled by min(t/T, 1); 0 means no ramp
+  std::string pointer;    ///< "/loads/traction/i", for messages
+
+  /// The load factor at a time: min(t/T, 1), or 1 without a ramp.
+  double factor(double time) const { return ramp > 0 ? std::min(time / ramp, 1.0) : 1.0; }
+};
+
 struct InitialConditions {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();
@@ -137,6 +154,7 @@ struct Scene {
   MaterialSpec material;  ///< materials[0]: the material of a scene with one
   std::vector<DirichletCondition> dirichlet;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  std::vector<SurfaceTraction> tractions;  ///< `loads.traction`
   /// loads.body_force: force per unit volume f(X, t) (N/m³) at the rest position X; absent: none.
   VectorExpression body_force;
   /// exact_displacement: u(X, t) for the field errors of summary.json; absent: none.

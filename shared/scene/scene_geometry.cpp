@@ -1,8 +1,11 @@
 #include "shared/scene/scene_geometry.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/tetrahedralize.hpp"
 
 namespace altfem {
 
@@ -67,12 +70,22 @@ bool region_meets_points(const RegionSelector& region, const Eigen::MatrixXd& po
   return false;
 }
 
+// Methods mesh a shape at their own sizes; the surface they all deform is this one, fine
+// enough that its own facets are not what a comparison measures.
+SurfaceMesh shape_surface(const AnalyticShape& shape) {
+  const double size = std::min(shape.bounding_box().diagonal().norm() / 40, shape.smallest_feature() / 2);
+  const VolumeMesh mesh =
+      shape.axis_planes() ? tetrahedralize_box_shape(shape, size) : tetrahedralize_shape(shape, size, false);
+  return boundary_surface(mesh).surface;
+}
+
 }  // namespace
 
 SceneGeometry load_scene_geometry(const Scene& scene) {
   const GeometrySpec& spec = scene.geometry;
   const std::string file = scene.file.string();
   SceneGeometry geometry;
+  geometry.scene_file = file;
   switch (spec.kind) {
     case GeometryKind::surface:
       geometry.surface = read_surface(spec.file, &geometry.warnings);
@@ -92,12 +105,18 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
                            : make_scaled_translated(spec.shape, spec.scale, spec.translate);
       geometry.bounds = geometry.shape->bounding_box();
       geometry.volume = geometry.shape->volume();
+      geometry.shape_surface = shape_surface(*geometry.shape);
       break;
   }
 
   const double tolerance = region_tolerance(geometry.bounds);
-  for (const auto& condition : scene.dirichlet) {
-    const RegionSelector& region = condition.region;
+  // Dirichlet and surface-load regions; a load region is checked against the loaded
+  // surface's triangles again when a method is built (surface_traction.hpp).
+  std::vector<const RegionSelector*> regions;
+  for (const auto& condition : scene.dirichlet) regions.push_back(&condition.region);
+  for (const auto& load : scene.tractions) regions.push_back(&load.region);
+  for (const RegionSelector* selector : regions) {
+    const RegionSelector& region = *selector;
     bool selects = false;
     std::string tested;
     if (geometry.surface) {

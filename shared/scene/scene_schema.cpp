@@ -168,7 +168,16 @@ const ObjectRule dirichlet{
      {.key = "motion", .type = ValueType::object, .default_value = json{{"kind", "fixed"}}, .object = &motion},
      {.key = "components", .type = ValueType::components, .default_value = json::array({"x", "y", "z"})}}};
 
+// `loads.traction` entries: a region and exactly one of a traction vector or a pressure.
+const ObjectRule traction{{{.key = "region", .type = ValueType::object, .required = true, .object = &region},
+                           {.key = "traction", .type = ValueType::vector3},
+                           {.key = "pressure", .type = ValueType::number},
+                           {.key = "ramp", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}},
+                          {{"traction", "pressure"}}};
+
 const ObjectRule loads{{{.key = "gravity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
+                        {.key = "traction", .type = ValueType::object_array, .default_value = json::array(),
+                         .object = &traction},
                         {.key = "body_force", .type = ValueType::expression3}}};
 
 const ObjectRule initial_conditions{

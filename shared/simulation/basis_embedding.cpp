@@ -49,4 +49,12 @@ Eigen::MatrixXd BasisEmbedding::displacement(const Eigen::VectorXd& u) const {
   return result;
 }
 
+Eigen::VectorXd BasisEmbedding::load(const Eigen::MatrixXd& forces, int dof_count) const {
+  Eigen::VectorXd result = Eigen::VectorXd::Zero(dof_count);
+  for (Eigen::Index point = 0; point + 1 < static_cast<Eigen::Index>(offsets_.size()); ++point)
+    for (long long entry = offsets_[point]; entry < offsets_[point + 1]; ++entry)
+      result.segment<3>(3 * static_cast<Eigen::Index>(basis_[entry])) += weights_[entry] * forces.row(point).transpose();
+  return result;
+}
+
 }  // namespace altfem

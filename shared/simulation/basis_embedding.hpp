@@ -46,6 +46,9 @@ public:
   /// Displacement at every point (#points × 3) from the coefficients u (#dofs; basis
   /// function a carries DOFs 3a..3a+2).
   Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  /// The load vector (#dofs) of forces at the points (#points × 3 [N]), the transpose of
+  /// displacement(): f_(3a+i) = Σ_p φ_a(x_p) F_(p,i).
+  Eigen::VectorXd load(const Eigen::MatrixXd& forces, int dof_count) const;
   int outside_count() const { return outside_count_; }
   /// The largest distance from an outside point to its element (0 if none).
   double max_outside_distance() const { return max_outside_distance_; }

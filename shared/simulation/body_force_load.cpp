@@ -1,5 +1,7 @@
 #include "shared/simulation/body_force_load.hpp"
 
+#include "shared/common/error.hpp"
+
 namespace altfem {
 
 Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const Eigen::MatrixXd& forces, int dof_count) {
@@ -25,6 +27,16 @@ BodyForceLoad::BodyForceLoad(FieldQuadrature quadrature, VectorExpression force,
 Eigen::VectorXd BodyForceLoad::operator()(double time) const {
   if (constant_.size() > 0) return constant_;
   return integrate_against_basis(quadrature_, evaluate_at_points(force_, quadrature_.points, time), dof_count_);
+}
+
+std::function<Eigen::VectorXd(double)> body_force_load(const Scene& scene, const MethodInstance& method,
+                                                       const std::string& method_name) {
+  if (!scene.body_force.has_value()) return {};
+  std::optional<FieldQuadrature> quadrature = method.field_quadrature(0);
+  if (!quadrature)
+    throw InputError(input_message(scene.file.string(), "/loads/body_force",
+                                   "method '" + method_name + "' cannot integrate a body-force expression"));
+  return BodyForceLoad(std::move(*quadrature), scene.body_force, method.discretization().dof_count());
 }
 
 }  // namespace altfem

@@ -4,8 +4,12 @@
 // with its own volume rule: F_(3a+i) = Σ_q w_q f_i(x_q, t) φ_a(x_q) ≈ ∫ f_i φ_a dV.
 #include <Eigen/Core>
 
-#include "shared/scene/vector_expression.hpp"
+#include <functional>
+#include <string>
+
+#include "shared/scene/scene.hpp"
 #include "shared/simulation/field_quadrature.hpp"
+#include "shared/simulation/method_instance.hpp"
 
 namespace altfem {
 
@@ -24,5 +28,11 @@ private:
   int dof_count_;
   Eigen::VectorXd constant_;  // the load when f does not depend on t
 };
+
+/// The scene's `loads.body_force` on the method's basis as a load at a time (for
+/// TimedDiscretization's scene loads); empty when the scene has none. Throws InputError
+/// naming the key when the method gives no field quadrature.
+std::function<Eigen::VectorXd(double)> body_force_load(const Scene& scene, const MethodInstance& method,
+                                                       const std::string& method_name);
 
 }  // namespace altfem

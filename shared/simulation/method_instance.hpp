@@ -15,6 +15,8 @@
 #include "shared/scene/method_scene_block.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/surface_lift.hpp"
 #include "shared/simulation/field_quadrature.hpp"
 #include "shared/solve/discretization.hpp"
 
@@ -34,6 +36,17 @@ public:
   virtual UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const = 0;
   /// The embedded surface at rest (the scene's surface, or the mesh boundary).
   virtual const SurfaceMesh& embedded_surface() const = 0;
+  /// The basis of the method's elements at any point: what the embedded surface and the
+  /// surface loads (surface_traction.hpp) are evaluated through.
+  virtual const ElementBasisEvaluator& basis_evaluator() const = 0;
+  /// The surface that surface loads act on: the embedded surface unless the method
+  /// solves on a domain of its own whose boundary it knows better (fem: its mesh's
+  /// boundary, lifted to the curved faces).
+  virtual const SurfaceMesh& load_surface() const { return embedded_surface(); }
+  /// The curved surface the load surface's triangles stand for, when they only
+  /// approximate the method's boundary (fem on a curved Lagrange mesh); empty when the
+  /// triangles are the surface. Surface loads are integrated on it.
+  virtual SurfaceLift surface_lift() const { return {}; }
   /// Displacement of every embedded surface vertex (#vertices × 3).
   virtual Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const = 0;
   /// The coefficients (#dofs) of a vector field in the method's basis: exact for affine

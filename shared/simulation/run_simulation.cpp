@@ -15,10 +15,11 @@
 #include "shared/io/json_file.hpp"
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
+#include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/rigid_motion.hpp"
-#include "shared/simulation/scene_loads.hpp"
+#include "shared/simulation/surface_traction.hpp"
 #include "shared/simulation/timed_discretization.hpp"
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/critical_time_step.hpp"
@@ -30,12 +31,10 @@ namespace {
 
 // A static problem with a load and nothing holding the body has no equilibrium: its
 // rigid-body modes move without bound. Caught before solving, as bad input.
-void check_static_supports(const Scene& scene, const Discretization& discretization,
-                           const std::function<Eigen::VectorXd(double)>& scene_load) {
+void check_static_supports(const Scene& scene, const Discretization& discretization) {
   if (!scene.time.is_static || !discretization.constrained_dofs().empty() || discretization.imposes_conditions_weakly())
     return;
-  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0 ||
-                      (scene_load && scene_load(1.0).norm() > 0);
+  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0;
   if (loaded)
     throw InputError(input_message(scene.file.string(), "/boundary_conditions",
                                    "a static problem with a load needs Dirichlet conditions that hold the body "
@@ -79,9 +78,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-IntegratorOptions integrator_options(const Scene& scene, std::function<Eigen::VectorXd(double)> scene_load) {
+IntegratorOptions integrator_options(const Scene& scene) {
   IntegratorOptions options;
-  options.external_load = std::move(scene_load);
   if (scene.time.is_static) {
     options.kind = IntegrationScheme::static_equilibrium;
   } else {
@@ -199,11 +197,15 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   const auto start = std::chrono::steady_clock::now();
   const double loading_seconds = setup_seconds;
   const std::unique_ptr<MethodInstance> method = factory(scene, geometry);
-  const TimedDiscretization discretization(method->discretization());
+  // The scene's loads that every method gets the same way, each a load vector at a
+  // time, added to the method's own external force: a new kind adds its line here.
+  std::vector<TimeDependentLoad> scene_loads;
+  if (auto tractions = surface_traction_load(scene, geometry.bounds, *method)) scene_loads.push_back(std::move(tractions));
+  if (auto body_force = body_force_load(scene, *method, method_name)) scene_loads.push_back(std::move(body_force));
+  const TimedDiscretization discretization(method->discretization(), std::move(scene_loads));
   const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
-  const auto scene_load = scene_external_load(scene, *method, method_name);
-  TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene, scene_load));
-  check_static_supports(scene, discretization, scene_load);
+  TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
+  check_static_supports(scene, discretization);
   const bool explicit_steps = !scene.time.is_static && scene.time.integrator == IntegratorKind::symplectic_euler;
   const double critical_time_step =
       explicit_steps ? estimate_critical_time_step(discretization) : std::numeric_limits<double>::infinity();

@@ -1,16 +1,24 @@
 #pragma once
 #include <chrono>
+#include <functional>
+#include <vector>
 
 #include "shared/solve/discretization.hpp"
 
 namespace altfem {
 
-/// A Discretization that forwards to another and adds the wall time of energy,
-/// gradient and Hessian evaluations to `assembly_seconds` (summary.json's
-/// timings_s.assembly), so no method has to time itself.
+/// A load vector (#dofs) at a time.
+using TimeDependentLoad = std::function<Eigen::VectorXd(double time)>;
+
+/// The run driver's view of a method's discretization: it forwards to it, adds the wall
+/// time of energy, gradient and Hessian evaluations to `assembly_seconds`
+/// (summary.json's timings_s.assembly), so no method has to time itself, and adds the
+/// scene's loads that are the same for every method (surface tractions) to the
+/// method's own external_force (which may hold weak boundary data: added, not replaced).
 class TimedDiscretization final : public Discretization {
 public:
-  explicit TimedDiscretization(const Discretization& inner) : inner_(inner) {}
+  explicit TimedDiscretization(const Discretization& inner, std::vector<TimeDependentLoad> scene_loads = {})
+      : inner_(inner), scene_loads_(std::move(scene_loads)) {}
 
   double assembly_seconds() const { return seconds_; }
   int dof_count() const override { return inner_.dof_count(); }
@@ -36,7 +44,11 @@ public:
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override {
     return inner_.explicit_body_force(acceleration);
   }
-  Eigen::VectorXd external_force(double time) const override { return inner_.external_force(time); }
+  Eigen::VectorXd external_force(double time) const override {
+    Eigen::VectorXd force = inner_.external_force(time);
+    for (const TimeDependentLoad& load : scene_loads_) force += load(time);
+    return force;
+  }
   const std::vector<int>& constrained_dofs() const override { return inner_.constrained_dofs(); }
   Eigen::VectorXd prescribed_displacement(double time) const override { return inner_.prescribed_displacement(time); }
   bool imposes_conditions_weakly() const override { return inner_.imposes_conditions_weakly(); }
@@ -53,6 +65,7 @@ private:
     std::chrono::steady_clock::time_point start_;
   };
   const Discretization& inner_;
+  std::vector<TimeDependentLoad> scene_loads_;
   mutable double seconds_ = 0;
 };
 

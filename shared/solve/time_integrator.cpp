@@ -123,11 +123,6 @@ void TimeIntegrator::apply_constraints(State& state) const {
   elimination_.set_constrained(state.displacement, discretization_.prescribed_displacement(state.time));
 }
 
-Eigen::VectorXd TimeIntegrator::external_force(double time) const {
-  if (!options_.external_load) return discretization_.external_force(time);
-  return discretization_.external_force(time) + options_.external_load(time);
-}
-
 double TimeIntegrator::total_energy(const State& state) const {
   const double kinetic = options_.kind == IntegrationScheme::symplectic_euler
                              ? discretization_.explicit_mass().kinetic_energy(state.velocity)
@@ -159,7 +154,7 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
   NewtonOptions newton{absolute_tolerance_, options_.max_iterations, options_.line_search, options_.project_spd};
   NewtonReport report;
   if (options_.kind == IntegrationScheme::static_equilibrium) {
-    const Eigen::VectorXd force = gravity_force_ + external_force(state.time);
+    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(state.time);
     StaticPotential potential(discretization_, force);
     // Static equilibrium is one load step: messages call it step 1.
     report = newton_.minimize(potential, state.displacement, discretization_.prescribed_displacement(state.time),
@@ -169,7 +164,7 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     const double next_time = state.time + h;
     const Eigen::VectorXd previous = state.displacement;
     const Eigen::VectorXd target = previous + h * state.velocity;
-    const Eigen::VectorXd force = gravity_force_ + external_force(next_time);
+    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(next_time);
     Eigen::SparseMatrix<double> damping;
     const bool damped = options_.rayleigh_mass > 0 || options_.rayleigh_stiffness > 0;
     if (damped) {
@@ -201,7 +196,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
   discretization_.gradient(state.displacement, internal);
   const ExplicitMass& mass = discretization_.explicit_mass();
   Eigen::VectorXd force =
-      discretization_.explicit_body_force(options_.gravity) + external_force(state.time) - internal;
+      discretization_.explicit_body_force(options_.gravity) + discretization_.external_force(state.time) - internal;
   if (options_.rayleigh_mass > 0) force -= options_.rayleigh_mass * mass.multiply(state.velocity);
   const Eigen::VectorXd previous = state.displacement;
   state.velocity += h * mass.solve(force);
@@ -226,7 +221,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   const double time = is_static ? state.time : state.time + h;
   const Eigen::VectorXd previous = state.displacement;
   const Eigen::VectorXd target = previous + h * state.velocity;
-  const Eigen::VectorXd force = gravity_force_ + external_force(time);
+  const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(time);
   StaticPotential static_potential(discretization_, force);
   IncrementalPotential incremental(discretization_, h, target, previous, nullptr, force);
   const Objective& objective = is_static ? static_cast<const Objective&>(static_potential) : incremental;

@@ -2,7 +2,6 @@
 // Static equilibrium and the time integrators (docs/architecture.md), over any Discretization.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
-#include <functional>
 #include <memory>
 #include <string_view>
 
@@ -30,9 +29,6 @@ struct IntegratorOptions {
   double rayleigh_mass = 0;       ///< α of D = αM + βK
   double rayleigh_stiffness = 0;  ///< β of D = αM + βK, K frozen at the start of each step
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
-  /// Loads of the scene at a time (#dofs) added to the discretization's own
-  /// external_force (body forces given as expressions, tractions); empty: none.
-  std::function<Eigen::VectorXd(double time)> external_load;
 };
 
 struct State {
@@ -72,8 +68,6 @@ private:
   StepReport step_implicit(State& state, bool single_step);
   StepReport step_symplectic(State& state);
   StepReport step_lbfgs(State& state);
-  /// The discretization's external force plus the scene's external_load at a time.
-  Eigen::VectorXd external_force(double time) const;
 
   const Discretization& discretization_;
   LinearSolver& linear_solver_;

@@ -64,13 +64,24 @@ TEST(QuadratureConditioning, PrintsTheFigure5Rows) {
   const CommandResult result = run_altfem({"quadrature", "conditioning", "--cell", "hex8", "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json rows = nlohmann::json::parse(result.out);
-  ASSERT_EQ(rows.size(), 20u);  // 10 fractions × stabilisation 0 and 1e-6
+  ASSERT_EQ(rows.size(), 30u);  // 10 fractions × stabilisation 0, 1e-6, and the ghost penalty
   for (const auto& row : rows)
     for (const char* preconditioner : {"none", "jacobi", "schwarz"}) {
       EXPECT_GE(row["condition_number"][preconditioner].get<double>(), 1.0);
       EXPECT_GE(row["pcg_iterations"][preconditioner].get<int>(), 1);
     }
   EXPECT_DOUBLE_EQ(rows.back()["volume_fraction"].get<double>(), std::pow(2.0, -30));
+  // The last ten rows: the ghost penalty (default γ) without stabilisation, which keeps
+  // the unpreconditioned κ orders of magnitude below the plain run's at 2^-30.
+  EXPECT_GT(rows.back()["ghost_penalty"].get<double>(), 0.0);
+  EXPECT_EQ(rows.back()["stabilization"].get<double>(), 0.0);
+  EXPECT_LT(1e6 * rows.back()["condition_number"]["none"].get<double>(), rows[9]["condition_number"]["none"].get<double>());
+}
+
+TEST(QuadratureConditioning, GhostPenaltyMustBePositive) {
+  const CommandResult result = run_altfem({"quadrature", "conditioning", "--cell", "hex8", "--ghost-penalty", "-1"});
+  EXPECT_EQ(result.exit_code, 2);
+  EXPECT_NE(result.err.find("--ghost-penalty"), std::string::npos) << result.err;
 }
 
 TEST(QuadratureConditioning, UnknownCellIsBadInput) {

@@ -88,6 +88,7 @@ public:
   long long quadrature_points() const override { return discretization_->elements().point_count(); }
   double quadrature_seconds() const override { return 0; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return *this; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
 
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {

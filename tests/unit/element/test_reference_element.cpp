@@ -126,24 +126,64 @@ TEST(ReferenceElement, Hex20IsSerendipityNotTriquadratic) {
   }
 }
 
-TEST(ReferenceElement, GradientsMatchCentralFiniteDifferences) {
+// Central differences (step 1e-6) of a tabulation ξ ↦ #nodes × c along each reference
+// axis: column c·d + j of the result holds ∂(column j)/∂ξ_d.
+template <typename Tabulate>
+Eigen::MatrixXd central_differences(int nodes, int columns, const Eigen::Vector3d& xi, Tabulate tabulate) {
   const double h = 1e-6;
+  Eigen::MatrixXd plus(nodes, columns), minus(nodes, columns), result(nodes, 3 * columns);
+  for (int d = 0; d < 3; ++d) {
+    tabulate(Eigen::Vector3d(xi + h * Eigen::Vector3d::Unit(d)), plus);
+    tabulate(Eigen::Vector3d(xi - h * Eigen::Vector3d::Unit(d)), minus);
+    result.middleCols(columns * d, columns) = (plus - minus) / (2.0 * h);
+  }
+  return result;
+}
+
+// Gradients against differences of the values, Hessians against differences of the
+// gradients (column 3d + e of those is ∂²/∂ξ_d∂ξ_e, the Hessians' layout; symmetric).
+TEST(ReferenceElement, GradientsAndHessiansMatchCentralFiniteDifferences) {
   for (ElementType type : all_element_types) {
     const ReferenceElement& element = reference_element(type);
     const int n = element.node_count();
-    Eigen::VectorXd plus(n), minus(n);
-    Eigen::MatrixXd gradients(n, 3), finite_differences(n, 3);
+    Eigen::MatrixXd gradients(n, 3), hessians(n, 9);
     for (const Eigen::Vector3d& xi : random_reference_points(type, 10, 13)) {
       element.evaluate_gradients(xi, gradients);
-      for (int d = 0; d < 3; ++d) {
-        const Eigen::Vector3d offset = h * Eigen::Vector3d::Unit(d);
-        element.evaluate(xi + offset, plus);
-        element.evaluate(xi - offset, minus);
-        finite_differences.col(d) = (plus - minus) / (2.0 * h);
+      element.evaluate_hessians(xi, hessians);
+      const Eigen::MatrixXd value_differences = central_differences(
+          n, 1, xi, [&](const Eigen::Vector3d& at, Eigen::MatrixXd& values) { element.evaluate(at, values.col(0)); });
+      const Eigen::MatrixXd gradient_differences = central_differences(
+          n, 3, xi, [&](const Eigen::Vector3d& at, Eigen::MatrixXd& values) { element.evaluate_gradients(at, values); });
+      for (const auto& [exact, differences] :
+           {std::pair{&gradients, &value_differences}, std::pair{&hessians, &gradient_differences}}) {
+        const double scale = std::max(1.0, exact->cwiseAbs().maxCoeff());
+        EXPECT_LT((*differences - *exact).cwiseAbs().maxCoeff(), 1e-7 * scale)
+            << element_name(type) << " at " << xi.transpose() << ", " << exact->cols() << " columns";
       }
-      const double scale = std::max(1.0, gradients.cwiseAbs().maxCoeff());
-      EXPECT_LT((finite_differences - gradients).cwiseAbs().maxCoeff(), 1e-7 * scale)
-          << element_name(type) << " at " << xi.transpose();
+    }
+  }
+}
+
+TEST(ReferenceElement, HessiansReproduceEveryMonomialsSecondDerivatives) {
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    Eigen::MatrixXd hessians(element.node_count(), 9);
+    for (const Eigen::Vector3i& e : expected_space(type)) {
+      Eigen::VectorXd nodal(element.node_count());
+      for (int i = 0; i < element.node_count(); ++i) nodal[i] = monomial(e, element.nodes().row(i).transpose());
+      for (const Eigen::Vector3d& xi : random_reference_points(type, 5, 19, -0.2)) {
+        element.evaluate_hessians(xi, hessians);
+        for (int d = 0; d < 3; ++d)
+          for (int c = 0; c < 3; ++c) {
+            // ∂_d ∂_c ξ^e by hand.
+            Eigen::Vector3i lowered = e;
+            double factor = lowered[d]--;
+            factor *= lowered[c]--;
+            const double exact = factor == 0.0 ? 0.0 : factor * monomial(lowered, xi);
+            EXPECT_NEAR(hessians.col(3 * d + c).dot(nodal), exact, 1e-10)
+                << element_name(type) << " monomial " << e.transpose() << " d " << d << " c " << c;
+          }
+      }
     }
   }
 }

@@ -15,6 +15,17 @@ namespace {
 
 using Field = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 
+// A basis with no elements: rigid_motion evaluates none.
+class NoElements final : public ElementBasisEvaluator {
+public:
+  int element_count() const override { return 0; }
+  Eigen::AlignedBox3d element_bounds(int) const override { return {}; }
+  bool evaluate_inside(int, const Eigen::Vector3d&, std::vector<int>&, std::vector<double>&) const override {
+    return false;
+  }
+  double evaluate_nearest(const Eigen::Vector3d&, std::vector<int>&, std::vector<double>&) const override { return 0; }
+};
+
 // A method reduced to what rigid_motion asks of it: a discretization and interpolation.
 class InterpolatingMethod final : public MethodInstance {
 public:
@@ -26,6 +37,7 @@ public:
   double quadrature_seconds() const override { return 0; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd&) const override { return {}; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const ElementBasisEvaluator& basis_evaluator() const override { return no_elements_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd&) const override { return {}; }
   Eigen::VectorXd interpolate(const Field& field) const override { return interpolate_(field); }
 
@@ -33,6 +45,7 @@ private:
   TabulatedDiscretization discretization_;
   std::function<Eigen::VectorXd(const Field&)> interpolate_;
   SurfaceMesh surface_;
+  NoElements no_elements_;
 };
 
 // [0,2]×[0,2]×[0,1] without the quarter [1,2]×[1,2], shifted by `offset`, in Hex20

@@ -1,0 +1,202 @@
+#include "fcm/ghost_penalty_faces.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <map>
+#include <string>
+
+#include "shared/assembly/face_assembler.hpp"
+#include "shared/assembly/ghost_penalty_kernel.hpp"
+#include "shared/common/error.hpp"
+#include "shared/element/element_faces.hpp"
+#include "shared/element/geometry_map.hpp"
+#include "shared/quadrature/reference_rules.hpp"
+
+namespace altfem::fcm {
+
+namespace {
+
+using FaceKey = std::array<int, 4>;  // corner nodes, -1 padded, sorted
+struct CellFace {
+  int cell, face;
+};
+
+// The interior faces of the mesh: both (cell, local face) pairs of each shared face.
+std::vector<std::array<CellFace, 2>> interior_faces(const VolumeMesh& mesh) {
+  const ElementShape shape = element_shape(mesh.element_type);
+  const auto faces = element_faces(shape);
+  const int corners = face_corner_count(shape);
+  std::map<FaceKey, CellFace> first_seen;
+  std::vector<std::array<CellFace, 2>> pairs;
+  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+      FaceKey key{-1, -1, -1, -1};
+      for (int c = 0; c < corners; ++c) key[c] = mesh.cells(cell, faces[f][c]);
+      std::sort(key.begin(), key.end());  // a triangle's -1 pad sorts first
+      const auto [entry, added] = first_seen.try_emplace(key, CellFace{cell, f});
+      if (!added) pairs.push_back({entry->second, CellFace{cell, f}});
+    }
+  return pairs;
+}
+
+// A point of the face rule in the minus cell's reference coordinates with the
+// derivatives of that parametrisation: triangles affinely from the unit triangle,
+// quadrilaterals bilinearly from [-1, 1]² (corners in cyclic order).
+struct FacePoint {
+  Eigen::Vector3d xi, d_xi_ds, d_xi_dt;
+};
+FacePoint face_point(const std::vector<Eigen::Vector3d>& corners, double s, double t) {
+  if (corners.size() == 3)
+    return {corners[0] + s * (corners[1] - corners[0]) + t * (corners[2] - corners[0]), corners[1] - corners[0],
+            corners[2] - corners[0]};
+  const std::array<double, 4> value{(1 - s) * (1 - t) / 4, (1 + s) * (1 - t) / 4, (1 + s) * (1 + t) / 4,
+                                    (1 - s) * (1 + t) / 4};
+  const std::array<double, 4> d_s{-(1 - t) / 4, (1 - t) / 4, (1 + t) / 4, -(1 + t) / 4};
+  const std::array<double, 4> d_t{-(1 - s) / 4, -(1 + s) / 4, (1 + s) / 4, (1 - s) / 4};
+  FacePoint point{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  for (int c = 0; c < 4; ++c) {
+    point.xi += value[c] * corners[c];
+    point.d_xi_ds += d_s[c] * corners[c];
+    point.d_xi_dt += d_t[c] * corners[c];
+  }
+  return point;
+}
+
+// Physical values, gradients (#nodes × 3) and Hessians (#nodes × 9) of one cell's
+// basis at reference point ξ. With J_mi = ∂x_m/∂ξ_i and g_a = ∇ₓφ_a:
+//   ∇_ξφ_a = Jᵀ g_a,   ∇_ξ²φ_a = Jᵀ Hₓφ_a J + Σ_m g_am ∇_ξ²x_m,
+// hence Hₓφ_a = J^{-T} (∇_ξ²φ_a − Σ_m g_am ∇_ξ²x_m) J^{-1} (the last term vanishes for
+// the affine maps of structured grids).
+struct SideDerivatives {
+  Eigen::VectorXd values;
+  Eigen::MatrixXd gradients, hessians;
+};
+SideDerivatives side_derivatives(const ReferenceElement& element, const Eigen::MatrixXd& nodes,
+                                 const Eigen::Vector3d& xi) {
+  const int n = element.node_count();
+  SideDerivatives side{Eigen::VectorXd(n), Eigen::MatrixXd(n, 3), Eigen::MatrixXd(n, 9)};
+  Eigen::MatrixXd reference_gradients(n, 3), reference_hessians(n, 9);
+  element.evaluate(xi, side.values);
+  element.evaluate_gradients(xi, reference_gradients);
+  element.evaluate_hessians(xi, reference_hessians);
+  const Eigen::Matrix3d jacobian = nodes.transpose() * reference_gradients;
+  const Eigen::Matrix3d inverse = jacobian.inverse();
+  side.gradients = reference_gradients * inverse;
+  std::array<Eigen::Matrix3d, 3> map_hessians;  // ∇_ξ²x_m
+  for (int m = 0; m < 3; ++m) {
+    const Eigen::Matrix<double, 1, 9> flat = nodes.col(m).transpose() * reference_hessians;
+    for (int c = 0; c < 9; ++c) map_hessians[m](c / 3, c % 3) = flat[c];
+  }
+  for (int a = 0; a < n; ++a) {
+    Eigen::Matrix3d reference;
+    for (int c = 0; c < 9; ++c) reference(c / 3, c % 3) = reference_hessians(a, c);
+    for (int m = 0; m < 3; ++m) reference -= side.gradients(a, m) * map_hessians[m];
+    const Eigen::Matrix3d physical = inverse.transpose() * reference * inverse;
+    for (int c = 0; c < 9; ++c) side.hessians(a, c) = physical(c / 3, c % 3);
+  }
+  return side;
+}
+
+Eigen::MatrixXd cell_nodes(const VolumeMesh& mesh, int cell) {
+  Eigen::MatrixXd nodes(mesh.cells.cols(), 3);
+  for (Eigen::Index a = 0; a < mesh.cells.cols(); ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+  return nodes;
+}
+
+}  // namespace
+
+GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions) {
+  const ReferenceElement& element = reference_element(mesh.element_type);
+  const ElementShape shape = element.shape();
+  const int degree = element.degree();
+  const QuadratureRule rule = shape == ElementShape::tetrahedron ? triangle_rule(2 * degree) : quad_rule(2 * degree);
+  const auto points = static_cast<int>(rule.weights.size());
+  const int n_cell = element.node_count();
+  const int corner_count = face_corner_count(shape);
+
+  GhostPenaltyFaces result;
+  for (const auto& [minus, plus] : interior_faces(mesh)) {
+    if (volume_fractions[minus.cell] >= 1 && volume_fractions[plus.cell] >= 1) continue;
+    const Eigen::MatrixXd minus_nodes = cell_nodes(mesh, minus.cell), plus_nodes = cell_nodes(mesh, plus.cell);
+
+    // The face's functions: the minus cell's nodes, then the plus cell's others.
+    std::vector<int> basis;
+    for (int a = 0; a < n_cell; ++a) basis.push_back(mesh.cells(minus.cell, a));
+    std::vector<int> plus_local(static_cast<size_t>(n_cell));
+    for (int a = 0; a < n_cell; ++a) {
+      const int node = mesh.cells(plus.cell, a);
+      const auto found = std::find(basis.begin(), basis.end(), node);
+      plus_local[a] = static_cast<int>(found - basis.begin());
+      if (found == basis.end()) basis.push_back(node);
+    }
+    const auto n = static_cast<Eigen::Index>(basis.size());
+
+    std::vector<Eigen::Vector3d> corners;
+    double size = 0;
+    for (int c = 0; c < corner_count; ++c) {
+      const int corner = element_faces(shape)[minus.face][c];
+      corners.push_back(element.nodes().row(corner).transpose());
+      const int next = element_faces(shape)[minus.face][(c + 1) % corner_count];
+      size = std::max(size, (minus_nodes.row(corner) - minus_nodes.row(next)).norm());
+    }
+    const Eigen::Vector3d centre_offset = plus_nodes.colwise().mean() - minus_nodes.colwise().mean();
+
+    std::vector<double> weights(static_cast<size_t>(points));
+    Eigen::MatrixXd normals(points, 3);
+    Eigen::MatrixXd values_minus = Eigen::MatrixXd::Zero(points, n), values_plus = Eigen::MatrixXd::Zero(points, n);
+    Eigen::MatrixXd gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), gradients_plus = gradients_minus;
+    Eigen::MatrixXd hessians_minus = Eigen::MatrixXd::Zero(points * n, 9), hessians_plus = hessians_minus;
+    for (int q = 0; q < points; ++q) {
+      const FacePoint point = face_point(corners, rule.points(q, 0), rule.points(q, 1));
+      const Eigen::Vector3d x = map_to_physical(element, minus_nodes, point.xi);
+      const Eigen::Matrix3d jacobian = map_jacobian(element, minus_nodes, point.xi);
+      const Eigen::Vector3d cross = (jacobian * point.d_xi_ds).cross(jacobian * point.d_xi_dt);
+      weights[q] = rule.weights[q] * cross.norm();
+      const Eigen::Vector3d normal = cross.normalized();
+      normals.row(q) = (normal.dot(centre_offset) >= 0 ? normal : -normal).transpose();
+
+      const InverseMapResult located = map_to_reference(element, plus_nodes, x);
+      if (!located.converged || !element.contains(located.xi, 1e-8))
+        throw NumericalError("ghost penalty: face point " + std::to_string(q) + " between cells " +
+                             std::to_string(minus.cell) + " and " + std::to_string(plus.cell) +
+                             " is not in the cell across the face");
+      const SideDerivatives from_minus = side_derivatives(element, minus_nodes, point.xi);
+      const SideDerivatives from_plus = side_derivatives(element, plus_nodes, located.xi);
+      for (int a = 0; a < n_cell; ++a) {
+        values_minus(q, a) = from_minus.values[a];
+        gradients_minus.row(q * n + a) = from_minus.gradients.row(a);
+        hessians_minus.row(q * n + a) = from_minus.hessians.row(a);
+        const int b = plus_local[a];
+        values_plus(q, b) = from_plus.values[a];
+        gradients_plus.row(q * n + b) = from_plus.gradients.row(a);
+        hessians_plus.row(q * n + b) = from_plus.hessians.row(a);
+      }
+    }
+    if (degree < 2) {  // first derivatives suffice (GhostPenaltyKernel sums k = 1..p)
+      hessians_minus.resize(0, 9);
+      hessians_plus.resize(0, 9);
+    }
+    result.faces.add(basis, weights, normals, values_minus, values_plus, gradients_minus, gradients_plus, minus.cell,
+                     plus.cell, hessians_minus, hessians_plus);
+    result.sizes.push_back(size);
+  }
+  return result;
+}
+
+std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
+                                               const std::vector<int>& cell_materials,
+                                               const std::vector<const Material*>& materials, double gamma) {
+  const auto modulus = [&](int cell) {
+    const LameParameters lame = materials[cell_materials[cell]]->lame();
+    return lame.lambda + 2 * lame.mu;
+  };
+  std::vector<double> penalties;
+  for (int f = 0; f < faces.faces.size(); ++f)
+    penalties.push_back(gamma * 0.5 * (modulus(faces.faces[f].minus) + modulus(faces.faces[f].plus)));
+  return std::make_unique<FaceAssembler<GhostPenaltyKernel>>(
+      faces.faces, GhostPenaltyKernel(faces.faces, std::move(penalties), faces.sizes, element_degree(type)));
+}
+
+}  // namespace altfem::fcm

@@ -1,0 +1,37 @@
+#pragma once
+// The FCM's face ghost penalty (Burman 2010; deal.II step-85's F_h and g_F): every
+// face shared by two kept background cells at least one of which is cut, tabulated for
+// FaceAssembler with both sides' values, gradients and (for quadratic cells) Hessians
+// of the conforming Lagrange basis, and the energy term GhostPenaltyKernel makes of
+// them with the jumps of the normal derivatives up to the cells' degree.
+#include <memory>
+#include <vector>
+
+#include "shared/assembly/energy_term.hpp"
+#include "shared/assembly/tabulated_faces.hpp"
+#include "shared/material/material.hpp"
+#include "shared/mesh/volume_mesh.hpp"
+
+namespace altfem::fcm {
+
+struct GhostPenaltyFaces {
+  TabulatedFaces faces;       ///< minus/plus: kept-cell indices; Hessians if the degree is 2
+  std::vector<double> sizes;  ///< h_F per face: its longest edge (a hex face's side, as step-85's h)
+};
+
+/// The interior faces of `mesh` (the kept cells, basis function i = node i) next to a
+/// cut cell, volume_fractions[c] < 1. Face rules of strength 2p on the reference face
+/// (exact for the products of jumps on affine cells), points mapped into both
+/// neighbours. Any cell geometry: Hessians include the map's curvature term. Throws
+/// NumericalError when a face point cannot be located in the neighbour across it.
+GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions);
+
+/// The penalty's energy term over `faces` (which must outlive it) on cells of `type`:
+/// γ_F = γ × the mean P-wave modulus λ + 2μ of the face's two cells, so that the
+/// penalty scales like the elastic stiffness it stabilises and γ is dimensionless.
+/// cell_materials: per cell of the faces' mesh, its index into `materials`.
+std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
+                                               const std::vector<int>& cell_materials,
+                                               const std::vector<const Material*>& materials, double gamma);
+
+}  // namespace altfem::fcm
