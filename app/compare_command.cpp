@@ -189,6 +189,7 @@ int compare_command(const CompareArguments& arguments) {
   for (const std::string& hash : order) {
     RunRecord record = read_results_csv(runs / hash / "record.csv").at(0);
     record.is_reference = hash == reference_hash;
+    if (plan.error) record.report_error = *plan.error;
     records.push_back(std::move(record));
   }
   measure_errors(records, runs);

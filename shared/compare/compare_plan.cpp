@@ -93,6 +93,7 @@ ComparePlan plan_from_scene(const json& compare_block, const std::vector<std::st
       for (const auto& value : values) sweep.values.push_back(value);
       plan.sweeps.push_back(std::move(sweep));
     }
+  if (present && compare_block.contains("error")) plan.error = compare_block["error"].get<double>();
   if (present && compare_block.contains("reference")) {
     const json& reference = compare_block["reference"];
     ReferenceSpec spec{reference["method"].get<std::string>(), {}};

@@ -29,6 +29,8 @@ struct ComparePlan {
   std::vector<std::string> methods;
   std::vector<Sweep> sweeps;
   std::optional<ReferenceSpec> reference;
+  /// The RMS error of the report's equal-accuracy table (nullopt: the report's default).
+  std::optional<double> error;
 };
 
 struct Configuration {

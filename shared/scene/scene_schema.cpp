@@ -248,7 +248,8 @@ const ObjectRule compare_reference{{{.key = "method", .type = ValueType::string,
 
 const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                           {.key = "sweeps", .type = ValueType::any},
-                          {.key = "reference", .type = ValueType::object, .object = &compare_reference}},
+                          {.key = "reference", .type = ValueType::object, .object = &compare_reference},
+                          {.key = "error", .type = ValueType::number, .lower = positive}},
                          {}, {}, {}, {}, check_compare};
 
 const ObjectRule scene{

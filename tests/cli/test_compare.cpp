@@ -83,5 +83,21 @@ TEST(Compare, RunsReusesReportsFailuresAndRedrawsTheReportFromTheCsv) {
   EXPECT_TRUE(std::filesystem::exists(alone / "error_vs_time.png"));
 }
 
+// The scene's compare/error sets the equal-accuracy table's target, kept in results.csv
+// so that the report still regenerates from it alone.
+TEST(Compare, TheScenesErrorTargetsTheEqualAccuracyTable) {
+  const auto out = fresh_directory("compare-error");
+  const auto result = run_altfem({"compare", source_path("tests/cli/scenes/tiny_beam_error.json").string(), "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 0) << result.err << result.out;
+  const std::string report = text_of(out / "report.md");
+  EXPECT_NE(report.find("## Equal accuracy: RMS error ≤ 0.25"), std::string::npos) << report;
+  const auto rows = lines_of(text_of(out / "results.csv"));
+  EXPECT_NE(rows.at(0).find("report_error"), std::string::npos) << rows.at(0);
+  const std::string command = "/usr/bin/python3 " + source_path("scripts/plot_report.py").string() + " " +
+                              (out / "results.csv").string() + " --out " + (out / "again").string();
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  EXPECT_EQ(text_of(out / "again" / "report.md"), report);
+}
+
 }  // namespace
 }  // namespace altfem::test
