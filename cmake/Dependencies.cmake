@@ -27,6 +27,9 @@ find_package(PkgConfig QUIET)
 altfem_require(PKG_CONFIG_FOUND pkg-config "pkg-config")
 pkg_check_modules(CLP QUIET IMPORTED_TARGET clp)
 altfem_require(CLP_FOUND coinor-libclp-dev "COIN-OR Clp")
+# muParser (the scene's expressions of x, y, z, t; deal.II's FunctionParser uses it).
+pkg_check_modules(MUPARSER QUIET IMPORTED_TARGET muparser)
+altfem_require(MUPARSER_FOUND libmuparser-dev "muParser")
 
 # SuiteSparse 5 on Debian ships neither a CMake config nor a .pc file.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)

@@ -133,6 +133,15 @@ public:
     return system_->interpolate(field);
   }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override;
+  /// The monomials at polyhedron rules of strength 2k (+ added_strength), the strength
+  /// at which a nonlinear material is tabulated (the linear one integrates exactly).
+  std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
+    const int strength = 2 * spec_.degree + added_strength;
+    FieldQuadrature quadrature;
+    quadrature.elements = std::make_shared<TabulatedElements>(tabulate_dg_cells(*system_, strength, &quadrature.points));
+    quadrature.strength = strength;
+    return quadrature;
+  }
   nlohmann::json facts() const override {
     return {{"degree", spec_.degree},
             {"flux", flux_names[static_cast<int>(spec_.flux)]},

@@ -30,19 +30,6 @@ void tabulate_basis(const MonomialBasis& basis, const Eigen::MatrixXd& points, E
   }
 }
 
-TabulatedElements tabulate_cells(const DgLinearSystem& system, int strength) {
-  TabulatedElements elements;
-  for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
-    const int n = system.basis(cell).size();
-    Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
-    tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
-    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()), values,
-                 gradients);
-  }
-  return elements;
-}
-
 // The faces that carry a term (interior, or with a Dirichlet condition), their η_f and
 // the components each penalises.
 struct FaceTerms {
@@ -76,12 +63,32 @@ FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
 
 }  // namespace
 
+TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points) {
+  TabulatedElements elements;
+  std::vector<Eigen::MatrixXd> cell_points;
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
+    const int n = system.basis(cell).size();
+    Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
+    tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
+    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()), values,
+                 gradients);
+    if (points) cell_points.push_back(rule.points);
+  }
+  if (points) {
+    points->resize(elements.point_count(), 3);
+    Eigen::Index row = 0;
+    for (const Eigen::MatrixXd& block : cell_points) points->middleRows(row, block.rows()) = block, row += block.rows();
+  }
+  return elements;
+}
+
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, const Material& material,
                               std::function<Eigen::VectorXd(double)> external_force,
                               PreconditionerFactory preconditioner) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
-  parts.elements = tabulate_cells(system, strength);
+  parts.elements = tabulate_dg_cells(system, strength);
   parts.materials = {&material};
   TabulatedDg result;
   FaceTerms terms = tabulate_faces(system, strength);

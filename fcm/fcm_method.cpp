@@ -22,6 +22,7 @@ public:
   FcmMethod(const Scene& scene, const SceneGeometry& geometry)
       : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
+    quadrature_strength_ = spec.options.quadrature_strength;
     const std::string file = scene.file.string();
     // The background grid over the geometry's bounds (§3.2).
     const Eigen::AlignedBox3d box = background_box(geometry.bounds, spec.margin);
@@ -75,6 +76,12 @@ public:
     return interpolate_at_nodes(fcm_.mesh.nodes, field);
   }
   std::vector<std::string> warnings() const override { return warnings_; }
+  /// The stiffness rules at any requested strength: cut cells' rules are simplified to
+  /// match the moments up to that strength only (§4), so no stronger rule is at hand. The
+  /// stabilising points (§5.3, weights × `stabilization`) are included.
+  std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const override {
+    return nodal_field_quadrature(borrowed(fcm_.discretization->elements()), fcm_.mesh.nodes, quadrature_strength_);
+  }
   nlohmann::json facts() const override {
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
     facts.update({{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
@@ -94,6 +101,7 @@ public:
 private:
   SceneMaterials materials_;
   Eigen::Vector3i resolution_;
+  int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
   FcmDiscretization fcm_;
   SurfaceMesh surface_;

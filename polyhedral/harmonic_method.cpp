@@ -29,6 +29,7 @@ public:
     const auto start = std::chrono::steady_clock::now();
     bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
     DiscretizationParts parts;
+    quadrature_order_ = spec.quadrature_order;
     parts.elements = bases_->tabulate(spec.quadrature_order, materials_.ids_of(mesh_.cell_centroids));
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     parts.materials = materials_.pointers();
@@ -43,6 +44,15 @@ public:
   }
 
   const Discretization& discretization() const override { return *discretization_; }
+  /// The stiffness tabulation, or every cell re-tabulated at the stronger rule; the
+  /// points from the basis' linear precision (exact on plain cells, to the MFS fit elsewhere).
+  std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
+    if (added_strength == 0)
+      return nodal_field_quadrature(borrowed(discretization_->elements()), mesh_.nodes, quadrature_order_);
+    const int strength = quadrature_order_ + added_strength;
+    return nodal_field_quadrature(std::make_shared<TabulatedElements>(bases_->tabulate(strength)), mesh_.nodes,
+                                  strength);
+  }
   nlohmann::json element_counts() const override {
     long long tet4 = 0, hex8 = 0, mfs = 0;
     for (int cell = 0; cell < bases_->cell_count(); ++cell) {
@@ -86,6 +96,7 @@ private:
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
+  int quadrature_order_ = 0;
 };
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/lagrange_surface_lift.hpp"
+#include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/nodal_basis.hpp"
@@ -20,6 +21,7 @@ public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry)
       : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
+    quadrature_order_ = fem.quadrature_order;
     mesh_ = build_fem_mesh(fem, geometry);
     const auto start = std::chrono::steady_clock::now();
     discretization_ = make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
@@ -65,6 +67,14 @@ public:
   nlohmann::json facts() const override {
     return embedding_facts(surface_, *embedding_);
   }
+  /// The stiffness rule's tabulation, or every cell re-tabulated at the stronger rule.
+  std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
+    if (added_strength == 0)
+      return nodal_field_quadrature(borrowed(discretization_->elements()), mesh_.nodes, quadrature_order_);
+    const int strength = quadrature_order_ + added_strength;
+    return nodal_field_quadrature(std::make_shared<TabulatedElements>(tabulate_lagrange(mesh_, strength)), mesh_.nodes,
+                                  strength);
+  }
 
 private:
   SceneMaterials materials_;
@@ -76,6 +86,7 @@ private:
   std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
+  int quadrature_order_ = 0;
 };
 
 }  // namespace

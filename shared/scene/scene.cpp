@@ -137,11 +137,22 @@ RegionSelector region_from_json(const json& region, const std::string& pointer) 
   return selector;
 }
 
-Motion motion_from_json(const json& value) {
+// The three components of an expression key (validated: strings or numbers).
+VectorExpression expression_from_json(const json& value, const ExpressionConstants& constants, const std::string& file,
+                                      const std::string& pointer) {
+  std::array<std::string, 3> components;
+  for (int i = 0; i < 3; ++i) components[i] = value[i].is_string() ? value[i].get<std::string>() : value[i].dump();
+  return VectorExpression(components, constants, file, pointer);
+}
+
+Motion motion_from_json(const json& value, const ExpressionConstants& constants, const std::string& file,
+                        const std::string& pointer) {
   Motion motion;
   motion.kind = kind_from_name<MotionKind>(motion_kind_names, value["kind"]);
   if (value.contains("velocity")) motion.velocity = vector3_from_json(value["velocity"]);
-  if (value.contains("displacement")) {
+  if (motion.kind == MotionKind::field) {
+    motion.field = expression_from_json(value["displacement"], constants, file, pointer + "/displacement");
+  } else if (value.contains("displacement")) {
     motion.total_displacement = vector3_from_json(value["displacement"]);
     motion.duration = value["duration"].get<double>();
   }
@@ -174,6 +185,8 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   Scene scene;
   scene.file = file;
   scene.name = resolved["name"].get<std::string>();
+  const std::string file_name = file.string();
+  const ExpressionConstants constants = resolved["constants"].get<ExpressionConstants>();
   scene.geometry = geometry_from_json(resolved["geometry"]);
 
   const auto material_from_json = [](const json& material, const std::string& pointer) {
@@ -194,7 +207,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
     DirichletCondition condition;
     condition.pointer = pointer;
     condition.region = region_from_json(conditions[i]["region"], pointer + "/region");
-    condition.motion = motion_from_json(conditions[i]["motion"]);
+    condition.motion = motion_from_json(conditions[i]["motion"], constants, file_name, pointer + "/motion");
     condition.components = {false, false, false};
     for (const auto& component : conditions[i]["components"])
       condition.components[component.get<std::string>()[0] - 'x'] = true;
@@ -212,6 +225,11 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
     load.ramp = tractions[i]["ramp"].get<double>();
     scene.tractions.push_back(load);
   }
+  if (resolved["loads"].contains("body_force"))
+    scene.body_force = expression_from_json(resolved["loads"]["body_force"], constants, file_name, "/loads/body_force");
+  if (resolved.contains("exact_displacement"))
+    scene.exact_displacement =
+        expression_from_json(resolved["exact_displacement"], constants, file_name, "/exact_displacement");
 
   const json& initial = resolved["initial_conditions"];
   scene.initial.velocity = vector3_from_json(initial["velocity"]);

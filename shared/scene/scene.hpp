@@ -15,6 +15,7 @@
 
 #include "shared/element/element_type.hpp"
 #include "shared/geometry/analytic_shape.hpp"
+#include "shared/scene/vector_expression.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem {
@@ -23,13 +24,13 @@ namespace altfem {
 // allowed strings of the schema.
 enum class GeometryKind { surface, mesh, shape };
 enum class RegionKind { box, half_space, sphere };
-enum class MotionKind { fixed, translate, rotate };
+enum class MotionKind { fixed, translate, rotate, field };
 enum class IntegratorKind { backward_euler, symplectic_euler, semi_implicit };
 enum class NonlinearSolverKind { newton, lbfgs };
 
 inline constexpr std::array<std::string_view, 5> material_model_names{
     "linear", "corotated_linear", "st_venant_kirchhoff", "neo_hookean", "stable_neo_hookean"};
-inline constexpr std::array<std::string_view, 3> motion_kind_names{"fixed", "translate", "rotate"};
+inline constexpr std::array<std::string_view, 4> motion_kind_names{"fixed", "translate", "rotate", "field"};
 inline constexpr std::array<std::string_view, 3> integrator_names{"backward_euler", "symplectic_euler",
                                                                   "semi_implicit"};
 inline constexpr std::array<std::string_view, 2> nonlinear_solver_names{"newton", "lbfgs"};
@@ -79,6 +80,7 @@ struct Motion {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();               ///< rotate: unit
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();              ///< rotate: a point on the axis
   double angular_velocity = 0.0;                                 ///< rotate: rad/s
+  VectorExpression field;                                        ///< field: u = field(X, t)
 
   Eigen::Vector3d displacement(const Eigen::Vector3d& rest_position, double time) const;
 };
@@ -153,6 +155,10 @@ struct Scene {
   std::vector<DirichletCondition> dirichlet;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::vector<SurfaceTraction> tractions;  ///< `loads.traction`
+  /// loads.body_force: force per unit volume f(X, t) (N/m³) at the rest position X; absent: none.
+  VectorExpression body_force;
+  /// exact_displacement: u(X, t) for the field errors of summary.json; absent: none.
+  VectorExpression exact_displacement;
   InitialConditions initial;
   TimeSpec time;
   SolverSpec solver;

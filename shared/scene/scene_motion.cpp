@@ -42,6 +42,7 @@ Eigen::Vector3d Motion::displacement(const Eigen::Vector3d& rest_position, doubl
       const Eigen::AngleAxisd rotation(angular_velocity * time, axis);
       return rotation * (rest_position - centre) + centre - rest_position;
     }
+    case MotionKind::field: return field(rest_position, time);
   }
   return Eigen::Vector3d::Zero();
 }

@@ -3,6 +3,7 @@
 #include "shared/scene/scene_schema.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 
 #include "shared/scene/scene.hpp"
@@ -59,7 +60,24 @@ void check_time(const Validator& validator, const json& input, json& resolved, c
       validator.fail(pointer + "/" + key, std::string("missing required key '") + key + "' (or set \"static\": true)");
 }
 
+// `constants`: names the expressions may use, each a finite number (docs/scene-schema.md, "Expressions").
+void check_constants(const Validator& validator, const json& constants) {
+  if (!constants.is_object())
+    validator.fail("/constants", "expected an object of name: number, got " + describe(constants));
+  for (const auto& [name, value] : constants.items()) {
+    const std::string pointer = "/constants/" + pointer_token(name);
+    const bool identifier = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+                            std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+    if (!identifier) validator.fail(pointer, "expected a name of letters, digits and '_' not starting with a digit");
+    for (const char* reserved : {"x", "y", "z", "t", "pi", "_pi", "_e"})
+      if (name == reserved) validator.fail(pointer, std::string("'") + reserved + "' is reserved; choose another name");
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+      validator.fail(pointer, "expected a finite number, got " + describe(value));
+  }
+}
+
 void check_scene(const Validator& validator, const json&, json& resolved, const std::string&) {
+  check_constants(validator, resolved["constants"]);
   if (!resolved.contains("name")) {
     std::string stem = std::filesystem::path(validator.file()).stem().string();
     resolved["name"] = stem.empty() ? "scene" : stem;
@@ -136,8 +154,13 @@ const ObjectRule motion_translate{{{.key = "velocity", .type = ValueType::vector
 const ObjectRule motion_rotate{{{.key = "axis", .type = ValueType::vector3, .required = true, .nonzero = true},
                                 required_vector("centre"),
                                 {.key = "angular_velocity", .type = ValueType::number, .required = true}}};
+KeyRule required_expression(std::string_view key) {
+  return {.key = key, .type = ValueType::expression3, .required = true};
+}
+const ObjectRule motion_field{{required_expression("displacement")}};
 const ObjectRule motion{{}, {}, "kind",
-                        {{"fixed", &motion_fixed}, {"translate", &motion_translate}, {"rotate", &motion_rotate}}};
+                        {{"fixed", &motion_fixed}, {"translate", &motion_translate}, {"rotate", &motion_rotate},
+                         {"field", &motion_field}}};
 
 const ObjectRule dirichlet{
     {{.key = "type", .type = ValueType::string, .required = true, .choices = {"dirichlet"}},
@@ -154,7 +177,8 @@ const ObjectRule traction{{{.key = "region", .type = ValueType::object, .require
 
 const ObjectRule loads{{{.key = "gravity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
                         {.key = "traction", .type = ValueType::object_array, .default_value = json::array(),
-                         .object = &traction}}};
+                         .object = &traction},
+                        {.key = "body_force", .type = ValueType::expression3}}};
 
 const ObjectRule initial_conditions{
     {{.key = "velocity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
@@ -240,7 +264,9 @@ const ObjectRule scene{
      {.key = "solver", .type = ValueType::object, .default_value = json::object(), .object = &solver},
      {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
      {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &method_blocks},
-     {.key = "compare", .type = ValueType::object, .object = &compare}},
+     {.key = "compare", .type = ValueType::object, .object = &compare},
+     {.key = "constants", .type = ValueType::any, .default_value = json::object()},
+     {.key = "exact_displacement", .type = ValueType::expression3}},
     {{"material", "materials"}}, {}, {}, {}, check_scene};
 
 }  // namespace

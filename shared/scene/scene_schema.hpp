@@ -25,6 +25,7 @@ enum class ValueType {
   object_array,       ///< array of at least `minimum_count` elements, each by `object`
   components,         ///< non-empty array of distinct "x", "y", "z"
   vector3_or_string,  ///< [3] or the one string in `choices`
+  expression3,        ///< [3] expressions of x, y, z, t: strings (or numbers); parsed by scene.cpp
   any,                ///< any JSON value, checked by the object's `check`
 };
 

@@ -224,6 +224,18 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
       }
       return value;
     }
+    case ValueType::expression3: {
+      if (!value.is_array() || value.size() != 3)
+        fail(pointer, "expected an array of 3 expressions of x, y, z, t (strings), got " + describe(value));
+      for (std::size_t i = 0; i < 3; ++i)
+        if (!value[i].is_string() && !value[i].is_number())
+          fail(pointer + "/" + std::to_string(i), "expected an expression of x, y, z, t (a string), got " +
+                                                      describe(value[i]));
+      for (std::size_t i = 0; i < 3; ++i)
+        if (value[i].is_number()) number(value[i], KeyRule{.key = rule.key, .type = ValueType::number},
+                                         pointer + "/" + std::to_string(i));
+      return value;
+    }
     case ValueType::vector3_or_string:
       if (value.is_string()) {
         if (value != rule.choices.front())

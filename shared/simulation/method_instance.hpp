@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -16,6 +17,7 @@
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/surface_lift.hpp"
+#include "shared/simulation/field_quadrature.hpp"
 #include "shared/solve/discretization.hpp"
 
 namespace altfem {
@@ -51,6 +53,11 @@ public:
   /// fields, which every method's basis reproduces (initial velocities, the patch and
   /// rigid-motion tests of the conformance suite).
   virtual Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const = 0;
+  /// The basis at the points of a volume rule over the method's domain, with their
+  /// positions: the method's own stiffness rule for `added_strength` 0 (body-force loads),
+  /// a rule of that much higher strength where the method can (field errors). nullopt
+  /// when the method cannot tabulate its basis at points.
+  virtual std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const { return std::nullopt; }
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
   /// What the user should know about this discretization of the scene (one line each),

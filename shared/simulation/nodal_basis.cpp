@@ -14,6 +14,12 @@ void add_nodal_displacement(UnstructuredGrid& grid, const Eigen::VectorXd& displ
                                                    displacement.data(), displacement.size() / 3, 3));
 }
 
+FieldQuadrature nodal_field_quadrature(std::shared_ptr<const TabulatedElements> elements, const Eigen::MatrixXd& nodes,
+                                       int strength) {
+  Eigen::MatrixXd points = nodal_quadrature_points(*elements, nodes);
+  return {std::move(elements), std::move(points), strength};
+}
+
 nlohmann::json embedding_facts(const SurfaceMesh& surface, const BasisEmbedding& embedding) {
   return {{"surface_vertices", surface.vertices.rows()},
           {"surface_vertices_outside_mesh", embedding.outside_count()},

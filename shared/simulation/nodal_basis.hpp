@@ -8,6 +8,7 @@
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/field_quadrature.hpp"
 
 namespace altfem {
 
@@ -18,6 +19,11 @@ Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
 
 /// Adds the point data "displacement" (#points × 3) of nodal coefficients u (3 × #points).
 void add_nodal_displacement(UnstructuredGrid& grid, const Eigen::VectorXd& displacement);
+
+/// A method's field quadrature from tabulated elements of a nodal basis (nodes:
+/// #nodes × 3), the points placed by nodal_quadrature_points.
+FieldQuadrature nodal_field_quadrature(std::shared_ptr<const TabulatedElements> elements, const Eigen::MatrixXd& nodes,
+                                       int strength);
 
 /// The facts for summary.json of a surface embedded in a method's elements.
 nlohmann::json embedding_facts(const SurfaceMesh& surface, const BasisEmbedding& embedding);

@@ -15,6 +15,8 @@
 #include "shared/io/json_file.hpp"
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
+#include "shared/simulation/body_force_load.hpp"
+#include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/surface_traction.hpp"
@@ -127,6 +129,15 @@ double max_von_mises(const Discretization& discretization, const Eigen::VectorXd
   return stresses.rows() == 0 ? 0.0 : von_mises(stresses).maxCoeff();
 }
 
+// summary.json's field_errors of the final state against the scene's exact_displacement,
+// on a rule 2 stronger than the method's own where it can (field_quadrature); null for a
+// method that cannot tabulate its basis at points.
+nlohmann::json exact_solution_errors(const MethodInstance& method, const VectorExpression& exact, const State& state) {
+  const std::optional<FieldQuadrature> quadrature = method.field_quadrature(2);
+  if (!quadrature) return nullptr;
+  return field_errors_json(field_errors(*quadrature, exact, state.displacement, state.time));
+}
+
 // Writes the frames of one output time: the method's mesh and the embedded surface.
 class FrameWriter {
 public:
@@ -190,6 +201,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   // time, added to the method's own external force: a new kind adds its line here.
   std::vector<TimeDependentLoad> scene_loads;
   if (auto tractions = surface_traction_load(scene, geometry.bounds, *method)) scene_loads.push_back(std::move(tractions));
+  if (auto body_force = body_force_load(scene, *method, method_name)) scene_loads.push_back(std::move(body_force));
   const TimedDiscretization discretization(method->discretization(), std::move(scene_loads));
   const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
   TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
@@ -285,6 +297,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["linear_iterations"] = linear_iterations;
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();
+  if (scene.exact_displacement.has_value() && status == "ok")
+    summary["field_errors"] = exact_solution_errors(*method, scene.exact_displacement, state);
   write_file_atomically(output_directory / "log.txt", log.str());
   write_json_file(output_directory / "summary.json", summary);
   if (status != "ok") throw NumericalError(status.substr(std::string("error: ").size()));

@@ -20,6 +20,8 @@
 #include "shared/common/error.hpp"
 #include "shared/material/material.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/simulation/body_force_load.hpp"
+#include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "tests/unit/conformance/two_hex_monomial_method.hpp"
 
@@ -130,6 +132,43 @@ TEST_P(Conformance, AffineFieldIsEmbeddedExactlyOnTheSurface) {
   ASSERT_EQ(moved.rows(), vertices.rows());
   const Eigen::MatrixXd expected = (vertices * A.transpose()).rowwise() + b.transpose();
   EXPECT_LT((moved - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// A body force f = A x + b integrated against the basis (field_quadrature(0)): tested
+// with the field 1 it is ∫ f dV = V (A c + b), c the box's centre, exactly (a linear
+// integrand). Field errors of an interpolated affine field against its own expression
+// vanish, and against the expression shifted by s are |s| √V (L2) and 0 (H1).
+TEST_P(Conformance, FieldQuadratureIntegratesLoadsAndMeasuresErrors) {
+  const Built built = build("free_box.json");
+  const std::optional<FieldQuadrature> loads = built.method->field_quadrature(0);
+  if (!loads) GTEST_SKIP() << "the method gives no field quadrature (body forces and field errors unavailable)";
+  const VectorExpression force({"x + 2*y", "3*z - 1", "0.5*x + 4"}, {}, "scene", "/loads/body_force");
+  const int dofs = built.method->discretization().dof_count();
+  const Eigen::VectorXd load = integrate_against_basis(*loads, evaluate_at_points(force, loads->points, 0.0), dofs);
+  const Eigen::VectorXd ones = built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
+  const Eigen::Vector3d c = built.geometry.bounds.center();
+  const double V = volume(built);
+  const double expected = V * ((c.x() + 2 * c.y()) + (3 * c.z() - 1) + (0.5 * c.x() + 4));
+  EXPECT_NEAR(ones.dot(load), expected, 1e-10 * std::abs(expected));
+
+  const std::optional<FieldQuadrature> errors_rule = built.method->field_quadrature(2);
+  ASSERT_TRUE(errors_rule);
+  const Eigen::VectorXd u = built.method->interpolate(affine(small_strain(), Eigen::Vector3d(0.1, -0.2, 0.3)));
+  const Eigen::Matrix3d A = small_strain();
+  const auto expression = [&](double shift) {
+    std::array<std::string, 3> components;
+    for (int i = 0; i < 3; ++i)
+      components[i] = std::to_string(A(i, 0)) + "*x + " + std::to_string(A(i, 1)) + "*y + " + std::to_string(A(i, 2)) +
+                      "*z + " + std::to_string(Eigen::Vector3d(0.1, -0.2, 0.3)[i] + shift);
+    return VectorExpression(components, {}, "scene", "/exact_displacement");
+  };
+  // std::to_string keeps 6 decimals: small_strain()'s entries must be exact in them.
+  const FieldErrors same = field_errors(*errors_rule, expression(0.0), u, 0.0);
+  EXPECT_LT(same.l2, 1e-10 * same.exact_l2);
+  EXPECT_LT(same.h1_seminorm, 1e-8 * same.exact_h1_seminorm);
+  const FieldErrors shifted = field_errors(*errors_rule, expression(0.25), u, 0.0);
+  EXPECT_NEAR(shifted.l2, 0.25 * std::sqrt(3 * V), 1e-10);
+  EXPECT_LT(shifted.h1_seminorm, 1e-8 * shifted.exact_h1_seminorm);
 }
 
 // Every number in a JSON document is finite.
