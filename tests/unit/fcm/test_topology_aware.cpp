@@ -22,6 +22,7 @@ constexpr double gap_middle = 1.1;
 
 struct BarsRun {
   nlohmann::json facts;
+  Eigen::VectorXd pieces;  ///< the volume output's `piece` per kept cell
   double worst_error = 0;  ///< max over surface vertices of |u − (0, ∓δ, 0)| / δ
 };
 
@@ -41,7 +42,9 @@ BarsRun run_two_bars(bool topology_aware) {
   state.velocity = state.displacement;
   integrator.step(state);
 
-  BarsRun run{method->facts(), 0.0};
+  BarsRun run{method->facts(), {}, 0.0};
+  for (const auto& [name, values] : method->volume_grid(state.displacement).cell_data)
+    if (name == "piece") run.pieces = values.col(0);
   const Eigen::MatrixXd displacement = method->embedded_displacement(state.displacement);
   const Eigen::MatrixXd& vertices = method->embedded_surface().vertices;
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {
@@ -55,9 +58,14 @@ TEST(TopologyAwareCells, TwoBarsSharingCellsSeparateAsTheExactSolution) {
   const BarsRun separate = run_two_bars(true);
   EXPECT_EQ(separate.facts["cells"]["split"].get<int>(), 4);  // the middle row of the 4 × 3 × 1 grid
   EXPECT_LT(separate.worst_error, 1e-8);
+  // 4 × 3 grid cells, the 4 middle ones in two pieces: 16 kept cells, 4 of them piece 1.
+  ASSERT_EQ(separate.pieces.size(), 16);
+  EXPECT_EQ(separate.pieces.sum(), 4);
   const BarsRun glued = run_two_bars(false);
   EXPECT_EQ(glued.facts["cells"]["split"].get<int>(), 0);
   EXPECT_GT(glued.worst_error, 0.1);
+  EXPECT_EQ(glued.pieces.size(), 12);
+  EXPECT_EQ(glued.pieces.sum(), 0);
   std::printf("two bars, worst |u - exact| / delta: topology-aware %.3e, shared DOFs %.3e\n", separate.worst_error,
               glued.worst_error);
 }
