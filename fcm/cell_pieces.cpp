@@ -17,8 +17,6 @@ namespace {
 /// A corner within this fraction of a cell's diagonal of a plane lies on it: the
 /// clip computes its new vertices in double precision.
 constexpr double plane_tolerance = 1e-9;
-/// A contact area above this fraction of a cell's diagonal squared has positive area.
-constexpr double area_tolerance = 1e-12;
 
 /// The triangles of a tetrahedron (corner indices).
 constexpr std::array<std::array<int, 3>, 4> tetrahedron_triangles{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
@@ -74,7 +72,7 @@ struct Fragment {
 struct CellFragments {
   std::vector<Fragment> fragments;  ///< by ascending tetrahedron
   std::vector<int> piece;           ///< per fragment
-  double area_threshold = 0, distance_threshold = 0;
+  double distance_threshold = 0;
 
   /// The fragment of tetrahedron t in this cell, or −1.
   int find(int t) const {
@@ -115,7 +113,6 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   CellFragments result;
   const double diagonal = box.diagonal().norm();
   result.distance_threshold = plane_tolerance * diagonal;
-  result.area_threshold = area_tolerance * diagonal * diagonal;
   buckets.candidate_indices(box, candidates);
   if (candidates.empty()) return result;
 
@@ -141,7 +138,7 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   for (int i = 0; i < count; ++i)
     for (int f = 0; f < 4; ++f) {
       const int other = result.find(tetrahedron_neighbours[result.fragments[i].tetrahedron][f]);
-      if (other >= 0 && result.fragments[i].tetrahedron_face_area[f] > result.area_threshold) components.join(i, other);
+      if (other >= 0 && result.fragments[i].tetrahedron_face_area[f] > 0) components.join(i, other);
     }
   // Pieces numbered in order of their first (smallest) tetrahedron.
   std::vector<int> piece_of_root(static_cast<std::size_t>(count), -1);
@@ -231,11 +228,11 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
       const CellFragments& there = cells[across.cell];
       const Plane plane = face_plane(corners, cell_faces[f]);
       const auto touches = [&](int fragment) {
-        return fragment >= 0 && there.fragments[fragment].cell_face_area[across.face] > there.area_threshold;
+        return fragment >= 0 && there.fragments[fragment].cell_face_area[across.face] > 0;
       };
       for (std::size_t i = 0; i < here.fragments.size(); ++i) {
         const Fragment& fragment = here.fragments[i];
-        if (fragment.cell_face_area[f] <= here.area_threshold) continue;
+        if (fragment.cell_face_area[f] <= 0) continue;
         // The same tetrahedron on both sides: it crosses the face.
         if (const int same = there.find(fragment.tetrahedron); touches(same))
           link(cell, here.piece[i], across.cell, there.piece[same]);

@@ -40,9 +40,11 @@ struct CellPieces {
 /// connected when both touch F with positive area and they come from the same
 /// tetrahedron (it crosses F) or from two tetrahedra sharing a face that lies in F.
 /// "Touches with positive area" sums the clipped pieces' triangles whose corners lie
-/// within 1e-9 × the cell's diagonal of the plane (the clip rounds new vertices), and
-/// compares the sum with 1e-12 × diagonal². Contacts through an edge or a point only
-/// do not connect: the material is continuous only across a surface.
+/// within 1e-9 × the cell's diagonal of the plane (the clip rounds new vertices) and
+/// asks for a positive sum: the clip's in/out decisions are exact, so a face of the
+/// clipped part lies in the plane only where the contact is a surface, however small
+/// (a threshold on the area split tiny slivers off spheres). Contacts through an edge
+/// or a point only do not connect: the material is continuous only across a surface.
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded);
 
 }  // namespace altfem::fcm
