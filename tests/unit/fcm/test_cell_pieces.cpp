@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <set>
 
 #include "fcm/cell_pieces.hpp"
 #include "fcm/cut_cell_rule.hpp"
+#include "fcm/piece_basis_evaluator.hpp"
 #include "fcm/piece_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
@@ -169,6 +171,19 @@ TEST(CellPieces, TetrahedralCellsSplitToo) {
       const bool a_lower = mesh.tetrahedra[a].front() < 24, b_lower = mesh.tetrahedra[b].front() < 24;
       if (a_lower != b_lower) EXPECT_EQ(shared_nodes(mesh, a, b), 0) << a << " " << b;
     }
+}
+
+// Surface points go to the nearest piece: the distance to a tetrahedron is 0 inside and
+// on it, the distance to the nearest face, edge or corner outside.
+TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
+  TetrahedronCorners unit;
+  unit << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  EXPECT_EQ(distance_to_tetrahedron({0.1, 0.2, 0.3}, unit), 0.0);
+  EXPECT_EQ(distance_to_tetrahedron({0.5, 0.5, 0.0}, unit), 0.0);
+  EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit), 0.25, 1e-15);                    // below a face
+  EXPECT_NEAR(distance_to_tetrahedron({1, 1, 1}, unit), (Eigen::Vector3d(1, 1, 1) / 3 * 2).norm(), 1e-15);  // off the slanted face
+  EXPECT_NEAR(distance_to_tetrahedron({-1, -1, 0.5}, unit), std::sqrt(2.0), 1e-15);              // off the z edge
+  EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);                // off corner (1, 0, 0)
 }
 
 }  // namespace
