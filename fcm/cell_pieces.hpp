@@ -30,7 +30,8 @@ struct CellPieces {
 };
 
 /// The pieces of every cell of `background` (tetrahedra or hexahedra with planar faces,
-/// conforming) over the conforming Tet4 mesh `embedded` of the object.
+/// conforming) over the Tet4 mesh `embedded` of the object (conforming; faces are
+/// matched by their corners' positions, so duplicated nodes do not split it).
 ///
 /// Decided combinatorially on the clipped embedded tetrahedra (the brief's second
 /// option), not by exact predicates: a fragment is an embedded tetrahedron clipped by a

@@ -107,6 +107,24 @@ TEST_P(TwoBars, EachCellHoldsTwoPiecesAndEveryNodeTwoCopies) {
 
 INSTANTIATE_TEST_SUITE_P(EmbeddedCellsAlongTheBars, TwoBars, ::testing::Values(2, 3));
 
+// Every tetrahedron with nodes of its own (a soup, as some mesh files are): faces are
+// matched by position, so the pieces are those of the shared-node mesh.
+TEST(CellPieces, DuplicatedNodesAreMatchedByPosition) {
+  const VolumeMesh shared = box_tetrahedra({0.5, 0, 0}, {2, 0.4, 1}, Eigen::Vector3i(3, 1, 2));
+  VolumeMesh soup{ElementType::tet4, Eigen::MatrixXd(4 * shared.cells.rows(), 3), Eigen::MatrixXi(shared.cells.rows(), 4)};
+  for (int t = 0; t < shared.cells.rows(); ++t)
+    for (int a = 0; a < 4; ++a) {
+      soup.nodes.row(4 * t + a) = shared.nodes.row(shared.cells(t, a));
+      soup.cells(t, a) = 4 * t + a;
+    }
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, soup);
+  EXPECT_EQ(pieces.piece_count(), 2);
+  EXPECT_EQ(pieces.tetrahedra, find_cell_pieces(background, shared).tetrahedra);
+  EXPECT_EQ(pieces.neighbours[0][0], (std::vector<PieceReference>{{1, 0}}));
+}
+
 // A box touching its cell's face from inside leaves the neighbour without material.
 TEST(CellPieces, PieceTouchingAFaceLeavesTheNeighbourEmpty) {
   const VolumeMesh embedded = box_tetrahedra({0.2, 0.2, 0.2}, {1, 0.8, 0.8}, Eigen::Vector3i(2, 2, 2));
