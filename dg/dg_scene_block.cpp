@@ -100,6 +100,7 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.mesh.pointer = "/discretization/dg";
   spec.mesh.element = *element_type_from_name(dg["element"].get<std::string>());
   spec.mesh.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
   if (dg.contains("resolution"))

@@ -1,7 +1,7 @@
 #pragma once
 // The tetrahedral mesh of the embedded object that intersection quadrature clips
 // (Longva et al. 2020, §4.5): a scene's tetrahedral volume mesh as it is, or its
-// surface or analytic shape tetrahedralised by CGAL Mesh_3.
+// surface or analytic shape tetrahedralised and checked by tetrahedralize_geometry.
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene_geometry.hpp"
 

@@ -60,6 +60,7 @@ HarmonicSpec harmonic_spec(const Scene& scene) {
   HarmonicSpec spec;
   spec.mesh = enum_from_name<HarmonicMeshKind>(harmonic_mesh_names, harmonic["mesh"]);
   spec.convert = fem_spec_from_block(harmonic["convert"]);
+  spec.convert.pointer = "/discretization/harmonic/convert";
   spec.mfs.edge_samples = harmonic["samples_per_edge"].get<int>();
   spec.mfs.offset = harmonic["kernel_offset"].get<double>();
   spec.quadrature_order = harmonic["quadrature_order"].get<int>();

@@ -7,7 +7,7 @@
 #include "shared/mesh/spatial_order.hpp"
 #include "shared/mesh/surface_projection.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "shared/mesh/tetrahedralize.hpp"
+#include "shared/scene/tetrahedralize_geometry.hpp"
 
 namespace altfem {
 
@@ -18,8 +18,7 @@ VolumeMesh build_fem_mesh(const FemSpec& fem, const SceneGeometry& geometry) {
     case FemMeshKind::tetrahedralize: {
       // fem_scene_block has checked that fem.element is a tetrahedron.
       const double size = fem_max_cell_size(fem, geometry.bounds);
-      VolumeMesh linear = geometry.surface ? tetrahedralize_surface(*geometry.surface, size)
-                                           : tetrahedralize_shape(*geometry.shape, size);
+      VolumeMesh linear = tetrahedralize_geometry(geometry, size, fem.pointer + "/max_cell_size");
       VolumeMesh mesh = elevate_order(linear, fem.element);
       if (fem.curved && fem.element != ElementType::tet4) {
         if (geometry.surface) {

@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "shared/element/element_type.hpp"
@@ -24,6 +25,8 @@ struct FemSpec {
   std::optional<double> max_cell_size;
   int quadrature_order = 4;
   bool curved = false;
+  /// The block these options come from, for messages (e.g. max_cell_size's key).
+  std::string pointer = "/discretization/fem";
 };
 
 const MethodSceneBlock& fem_scene_block();

@@ -31,6 +31,49 @@ bool pairwise_disjoint(const std::vector<ShapePointer>& shapes) {
   return true;
 }
 
+// The parts of a child's sharp edge that lie on the CSG's surface: runs of samples with
+// |φ| ≤ tolerance, each end moved by bisection to where the edge leaves the surface
+// (into another child of a union, or out of an intersection or difference).
+std::vector<Polyline> parts_on_surface(const Polyline& line, const AnalyticShape& shape, double tolerance) {
+  const auto on_surface = [&](const Eigen::Vector3d& x) { return std::abs(shape.level_set(x)) <= tolerance; };
+  const auto boundary = [&](Eigen::Vector3d on, Eigen::Vector3d off) {
+    for (int iteration = 0; iteration < 40; ++iteration) {
+      const Eigen::Vector3d middle = 0.5 * (on + off);
+      (on_surface(middle) ? on : off) = middle;
+    }
+    return on;
+  };
+  std::vector<char> kept(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) kept[i] = on_surface(line[i]);
+  const bool closed = line.size() > 2 && line.front() == line.back();
+  if (std::all_of(kept.begin(), kept.end(), [](char k) { return k; })) return {line};
+  // A closed curve is walked from a sample off the surface so no run wraps around.
+  Polyline walk = line;
+  if (closed) {
+    walk.pop_back();
+    const auto first_off = std::find(kept.begin(), kept.end() - 1, 0) - kept.begin();
+    std::rotate(walk.begin(), walk.begin() + first_off, walk.end());
+    walk.push_back(walk.front());
+    for (std::size_t i = 0; i < walk.size(); ++i) kept[i] = on_surface(walk[i]);
+  }
+  std::vector<Polyline> parts;
+  Polyline run;
+  for (std::size_t i = 0; i < walk.size(); ++i) {
+    if (kept[i]) {
+      if (run.empty() && i > 0) run.push_back(boundary(walk[i], walk[i - 1]));
+      run.push_back(walk[i]);
+      continue;
+    }
+    if (!run.empty()) {
+      run.push_back(boundary(walk[i - 1], walk[i]));
+      if ((run.front() - run.back()).norm() > tolerance) parts.push_back(run);
+      run.clear();
+    }
+  }
+  if (run.size() > 1) parts.push_back(run);
+  return parts;
+}
+
 class Csg final : public AnalyticShape {
 public:
   Csg(Operation operation, std::vector<ShapePointer> children)
@@ -63,6 +106,35 @@ public:
         box = box.intersection(children_[i]->bounding_box());
     }
     return box;
+  }
+
+  double smallest_feature() const override {
+    double smallest = children_.front()->smallest_feature();
+    for (const auto& child : children_) smallest = std::min(smallest, child->smallest_feature());
+    return smallest;
+  }
+
+  std::optional<AxisPlanes> axis_planes() const override {
+    AxisPlanes planes;
+    for (const auto& child : children_) {
+      const std::optional<AxisPlanes> own = child->axis_planes();
+      if (!own) return std::nullopt;
+      for (int axis = 0; axis < 3; ++axis) planes[axis].insert(planes[axis].end(), (*own)[axis].begin(), (*own)[axis].end());
+    }
+    for (auto& coordinates : planes) {
+      std::sort(coordinates.begin(), coordinates.end());
+      coordinates.erase(std::unique(coordinates.begin(), coordinates.end()), coordinates.end());
+    }
+    return planes;
+  }
+
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    const double tolerance = 1e-9 * bounding_box().diagonal().norm();
+    std::vector<Polyline> edges;
+    for (const auto& child : children_)
+      for (const Polyline& line : child->sharp_edges(spacing))
+        for (Polyline& part : parts_on_surface(line, *this, tolerance)) edges.push_back(std::move(part));
+    return edges;
   }
 
   // Closed form only when the children are disjoint or nested in a convex child
@@ -154,6 +226,20 @@ public:
     return *volume * scale_ * scale_ * scale_;
   }
   bool is_convex() const override { return shape_->is_convex(); }
+  double smallest_feature() const override { return scale_ * shape_->smallest_feature(); }
+  std::optional<AxisPlanes> axis_planes() const override {
+    std::optional<AxisPlanes> planes = shape_->axis_planes();
+    if (planes)
+      for (int axis = 0; axis < 3; ++axis)
+        for (double& coordinate : (*planes)[axis]) coordinate = scale_ * coordinate + translate_[axis];
+    return planes;
+  }
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    std::vector<Polyline> edges = shape_->sharp_edges(spacing / scale_);
+    for (Polyline& line : edges)
+      for (Eigen::Vector3d& point : line) point = scale_ * point + translate_;
+    return edges;
+  }
 
 private:
   ShapePointer shape_;

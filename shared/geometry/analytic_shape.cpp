@@ -15,6 +15,27 @@ void require(bool condition, const std::string& what) {
   if (!condition) throw InputError("analytic shape: " + what);
 }
 
+// The segment a → b sampled at most `spacing` apart (both ends included).
+Polyline sampled_segment(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double spacing) {
+  const int pieces = std::max(1, static_cast<int>(std::ceil((b - a).norm() / spacing)));
+  Polyline line;
+  for (int i = 0; i <= pieces; ++i) line.push_back(a + (b - a) * (static_cast<double>(i) / pieces));
+  return line;
+}
+
+// A closed circle of radius r about `centre` in the plane orthogonal to the unit `axis`.
+Polyline sampled_circle(const Eigen::Vector3d& centre, const Eigen::Vector3d& axis, double radius, double spacing) {
+  const int pieces = std::max(16, static_cast<int>(std::ceil(2 * std::numbers::pi * radius / spacing)));
+  const Eigen::Vector3d u = axis.unitOrthogonal(), v = axis.cross(u);
+  Polyline circle;
+  for (int i = 0; i < pieces; ++i) {
+    const double angle = 2 * std::numbers::pi * i / pieces;
+    circle.push_back(centre + radius * (std::cos(angle) * u + std::sin(angle) * v));
+  }
+  circle.push_back(circle.front());
+  return circle;
+}
+
 // Exact signed distance to an axis-aligned box (the classic construction: the
 // outside part is the distance to the clamped point, the inside part the distance
 // to the nearest face).
@@ -31,8 +52,28 @@ public:
   Eigen::AlignedBox3d bounding_box() const override { return box_; }
   std::optional<double> exact_volume() const override { return box_.volume(); }
   bool is_convex() const override { return true; }
+  double smallest_feature() const override { return box_.sizes().minCoeff(); }
+  std::optional<AxisPlanes> axis_planes() const override {
+    AxisPlanes planes;
+    for (int axis = 0; axis < 3; ++axis) planes[axis] = {box_.min()[axis], box_.max()[axis]};
+    return planes;
+  }
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    std::vector<Polyline> edges;
+    // The 12 edges join corners that differ in one bit (x = 1, y = 2, z = 4).
+    for (int corner = 0; corner < 8; ++corner)
+      for (int bit : {1, 2, 4})
+        if (!(corner & bit))
+          edges.push_back(sampled_segment(corner_point(corner), corner_point(corner | bit), spacing));
+    return edges;
+  }
 
 private:
+  Eigen::Vector3d corner_point(int bits) const {
+    return {bits & 1 ? box_.max().x() : box_.min().x(), bits & 2 ? box_.max().y() : box_.min().y(),
+            bits & 4 ? box_.max().z() : box_.min().z()};
+  }
+
   Eigen::AlignedBox3d box_;
 };
 
@@ -49,6 +90,7 @@ public:
     return 4.0 / 3.0 * std::numbers::pi * radius_ * radius_ * radius_;
   }
   bool is_convex() const override { return true; }
+  double smallest_feature() const override { return radius_; }
 
 private:
   Eigen::Vector3d centre_;
@@ -89,6 +131,17 @@ public:
     return std::numbers::pi * (radius_ * radius_ - inner_radius_ * inner_radius_) * height_;
   }
   bool is_convex() const override { return inner_radius_ == 0.0; }
+  double smallest_feature() const override {
+    return std::min({height_, radius_, inner_radius_ > 0 ? radius_ - inner_radius_ : radius_});
+  }
+  std::vector<Polyline> sharp_edges(double spacing) const override {
+    std::vector<Polyline> rims;
+    for (double z : {0.0, height_}) {
+      rims.push_back(sampled_circle(base_ + z * axis_, axis_, radius_, spacing));
+      if (inner_radius_ > 0) rims.push_back(sampled_circle(base_ + z * axis_, axis_, inner_radius_, spacing));
+    }
+    return rims;
+  }
 
 private:
   Eigen::Vector3d base_, axis_;

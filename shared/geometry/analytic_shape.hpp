@@ -5,11 +5,17 @@
 // continuous and cheap.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
 
 namespace altfem {
+
+/// A piecewise-linear curve; a closed one repeats its first point at the end.
+using Polyline = std::vector<Eigen::Vector3d>;
+/// Per axis, sorted coordinates of axis-aligned planes.
+using AxisPlanes = std::array<std::vector<double>, 3>;
 
 class AnalyticShape {
 public:
@@ -27,6 +33,19 @@ public:
   virtual std::optional<double> exact_volume() const = 0;
   /// True only when the shape is known to be convex (used by CSG to prove nesting).
   virtual bool is_convex() const { return false; }
+  /// The size of the shape's smallest part: a box's shortest side, a sphere's radius, a
+  /// cylinder's radius or height, a tube's wall; a CSG's smallest child's. Mesh_3's
+  /// criteria are held below it (tetrahedralize.hpp).
+  virtual double smallest_feature() const = 0;
+  /// When the shape is built from axis-aligned boxes only: the planes that hold its whole
+  /// surface, so that it is exactly a union of cells of the rectilinear grid through
+  /// them (tetrahedralize_box_shape). nullopt for any shape with a curved part.
+  virtual std::optional<AxisPlanes> axis_planes() const { return std::nullopt; }
+  /// The sharp edges of the surface (a box's 12 edges, a cylinder's rims), sampled at
+  /// most `spacing` apart, for Mesh_3 to protect. A CSG keeps its children's edges
+  /// where they lie on its surface; curves along which two children's surfaces meet
+  /// are not included.
+  virtual std::vector<Polyline> sharp_edges(double /*spacing*/) const { return {}; }
   /// exact_volume() if known, else integrate_volume(*this, volume_tolerance).
   double volume() const;
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <stdexcept>
 
 #include "shared/mesh/elevate_order.hpp"
@@ -11,16 +12,16 @@ namespace altfem {
 
 namespace {
 
-VolumeMesh linear_grid(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& n, bool tetrahedra) {
+VolumeMesh linear_grid(const AxisPlanes& coordinates, bool tetrahedra) {
   VolumeMesh mesh;
+  Eigen::Vector3i n;
+  for (int axis = 0; axis < 3; ++axis) n[axis] = static_cast<int>(coordinates[axis].size()) - 1;
   const auto index = [&](int i, int j, int k) { return i + (n.x() + 1) * (j + (n.y() + 1) * k); };
   mesh.nodes.resize(static_cast<Eigen::Index>(n.x() + 1) * (n.y() + 1) * (n.z() + 1), 3);
-  const Eigen::Vector3d size = box.sizes();
   for (int k = 0; k <= n.z(); ++k)
     for (int j = 0; j <= n.y(); ++j)
       for (int i = 0; i <= n.x(); ++i)
-        mesh.nodes.row(index(i, j, k)) =
-            (box.min() + Eigen::Vector3d(size.x() * i / n.x(), size.y() * j / n.y(), size.z() * k / n.z())).transpose();
+        mesh.nodes.row(index(i, j, k)) << coordinates[0][i], coordinates[1][j], coordinates[2][k];
 
   const int cubes = n.x() * n.y() * n.z();
   mesh.element_type = tetrahedra ? ElementType::tet4 : ElementType::hex8;
@@ -68,8 +69,19 @@ VolumeMesh linear_grid(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& n,
 VolumeMesh structured_grid(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& resolution, ElementType type) {
   if ((resolution.array() < 1).any()) throw std::invalid_argument("structured_grid: resolution must be >= 1");
   if (!((box.sizes().array() > 0).all())) throw std::invalid_argument("structured_grid: the box is empty");
+  AxisPlanes coordinates;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int i = 0; i <= resolution[axis]; ++i)
+      coordinates[axis].push_back(box.min()[axis] + box.sizes()[axis] * i / resolution[axis]);
+  return rectilinear_grid(coordinates, type);
+}
+
+VolumeMesh rectilinear_grid(const AxisPlanes& coordinates, ElementType type) {
+  for (const auto& axis : coordinates)
+    if (axis.size() < 2 || !std::is_sorted(axis.begin(), axis.end(), std::less_equal<>()))
+      throw std::invalid_argument("rectilinear_grid: every axis needs at least 2 strictly increasing coordinates");
   const bool tetrahedra = element_shape(type) == ElementShape::tetrahedron;
-  return elevate_order(linear_grid(box, resolution, tetrahedra), type);
+  return elevate_order(linear_grid(coordinates, tetrahedra), type);
 }
 
 Eigen::Vector3i default_grid_resolution(const Eigen::Vector3d& extent) {

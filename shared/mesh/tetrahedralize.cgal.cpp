@@ -5,11 +5,13 @@
 #include <CGAL/Labeled_mesh_domain_3.h>
 #include <CGAL/Mesh_complex_3_in_triangulation_3.h>
 #include <CGAL/Mesh_criteria_3.h>
+#include <CGAL/Mesh_domain_with_polyline_features_3.h>
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polyhedral_mesh_domain_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/make_mesh_3.h>
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <vector>
@@ -25,15 +27,16 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using CgalSurface = CGAL::Surface_mesh<Point>;
 
-template <typename Domain>
+// Complex: Mesh_complex_3_in_triangulation_3 over the domain's triangulation (with
+// the domain's corner and curve indices when it protects features).
+template <typename Complex, typename Domain>
 VolumeMesh mesh_domain(const Domain& domain, double size) {
-  using Triangulation = typename CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
-  using Complex = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>;
-  using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
+  using Criteria = CGAL::Mesh_criteria_3<typename Complex::Triangulation>;
   namespace parameters = CGAL::parameters;
   if (!(size > 0)) throw InputError("tetrahedralize: max_cell_size must be > 0");
   CGAL::get_default_random() = CGAL::Random(0);
-  const Criteria criteria(parameters::facet_angle = 25, parameters::facet_size = size,
+  // edge_size only acts on protected features.
+  const Criteria criteria(parameters::edge_size = size, parameters::facet_angle = 25, parameters::facet_size = size,
                           parameters::facet_distance = size / 10, parameters::cell_radius_edge_ratio = 3,
                           parameters::cell_size = size);
   const Complex complex =
@@ -75,20 +78,34 @@ VolumeMesh tetrahedralize_surface(const SurfaceMesh& surface, double max_cell_si
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
     cgal_surface.add_face(vertices[surface.triangles(t, 0)], vertices[surface.triangles(t, 1)],
                           vertices[surface.triangles(t, 2)]);
-  const CGAL::Polyhedral_mesh_domain_3<CgalSurface, Kernel> domain(cgal_surface);
-  return mesh_domain(domain, max_cell_size);
+  using Domain = CGAL::Polyhedral_mesh_domain_3<CgalSurface, Kernel>;
+  using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+  const Domain domain(cgal_surface);
+  return mesh_domain<CGAL::Mesh_complex_3_in_triangulation_3<Triangulation>>(domain, max_cell_size);
 }
 
 VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size) {
-  using Domain = CGAL::Labeled_mesh_domain_3<Kernel>;
+  using ImplicitDomain = CGAL::Labeled_mesh_domain_3<Kernel>;
+  using Domain = CGAL::Mesh_domain_with_polyline_features_3<ImplicitDomain>;
+  using Triangulation = CGAL::Mesh_triangulation_3<Domain, CGAL::Default, CGAL::Sequential_tag>::type;
+  using Complex = CGAL::Mesh_complex_3_in_triangulation_3<Triangulation, Domain::Corner_index, Domain::Curve_index>;
   const Eigen::AlignedBox3d box = shape.bounding_box();
   const Eigen::Vector3d centre = box.center();
   const double radius = 0.5 * box.diagonal().norm() * 1.05;
+  // A mesh coarser than the shape's thinnest part cannot represent it.
+  const double size = std::min(max_cell_size, shape.smallest_feature());
   auto level_set = [&shape](const Point& p) { return shape.level_set(Eigen::Vector3d(p.x(), p.y(), p.z())); };
-  const Domain domain = Domain::create_implicit_mesh_domain(
+  Domain domain(ImplicitDomain::create_implicit_mesh_domain(
       level_set, Kernel::Sphere_3(Point(centre.x(), centre.y(), centre.z()), radius * radius),
-      CGAL::parameters::relative_error_bound = 1e-7);
-  return mesh_domain(domain, max_cell_size);
+      CGAL::parameters::relative_error_bound = 1e-7));
+  // Features sampled finely against the size so that the polylines follow curved rims.
+  std::vector<std::vector<Point>> polylines;
+  for (const Polyline& edge : shape.sharp_edges(size / 4)) {
+    std::vector<Point>& line = polylines.emplace_back();
+    for (const Eigen::Vector3d& x : edge) line.emplace_back(x.x(), x.y(), x.z());
+  }
+  domain.add_features(polylines.begin(), polylines.end());
+  return mesh_domain<Complex>(domain, size);
 }
 
 }  // namespace altfem

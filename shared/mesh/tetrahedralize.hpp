@@ -12,7 +12,16 @@ namespace altfem {
 /// Mesh_3 only approximates the input surface: some surface vertices fall outside.
 VolumeMesh tetrahedralize_surface(const SurfaceMesh& surface, double max_cell_size);
 /// The same for an analytic shape, through Mesh_3's implicit-function domain on the
-/// shape's level set.
+/// shape's level set, with the criteria held below the shape's smallest feature (sizes
+/// at most smallest_feature(), facet distance a tenth of the size) and its sharp
+/// edges (AnalyticShape::sharp_edges) protected as polyline features, so a cylinder's
+/// rims stay sharp.
 VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size);
+/// The exact Tet4 mesh of a shape built from axis-aligned boxes (axis_planes() set):
+/// the rectilinear grid through its planes, each interval split into cells of at most
+/// 2/√3 · `max_cell_size` (so circumradii stay below it, as with Mesh_3), Kuhn-split,
+/// and the cells inside kept. Sharp edges, volume and gaps
+/// between boxes are exact, which Mesh_3 does not give.
+VolumeMesh tetrahedralize_box_shape(const AnalyticShape& shape, double max_cell_size);
 
 }  // namespace altfem

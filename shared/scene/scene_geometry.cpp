@@ -73,6 +73,7 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
   const GeometrySpec& spec = scene.geometry;
   const std::string file = scene.file.string();
   SceneGeometry geometry;
+  geometry.scene_file = file;
   switch (spec.kind) {
     case GeometryKind::surface:
       geometry.surface = read_surface(spec.file, &geometry.warnings);

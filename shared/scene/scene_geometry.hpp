@@ -14,6 +14,7 @@
 namespace altfem {
 
 struct SceneGeometry {
+  std::string scene_file;              ///< the scene that names it, for messages
   std::optional<SurfaceMesh> surface;  ///< surface kind
   std::optional<VolumeMesh> mesh;      ///< mesh kind
   ShapePointer shape;                  ///< shape kind, already scaled and translated

@@ -1,0 +1,139 @@
+// Tetrahedral meshes that keep apart what the geometry keeps apart (#21 item 5):
+// exact meshes of box-built shapes, protected sharp edges, and the checks of
+// tetrahedralize_geometry with the key they name.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "shared/common/error.hpp"
+#include "shared/mesh/mesh_components.hpp"
+#include "shared/mesh/tetrahedralize.hpp"
+#include "shared/scene/tetrahedralize_geometry.hpp"
+
+namespace altfem {
+namespace {
+
+double mesh_volume(const VolumeMesh& mesh) {
+  double volume = 0;
+  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell) {
+    const Eigen::Vector3d a = mesh.nodes.row(mesh.cells(cell, 0)), b = mesh.nodes.row(mesh.cells(cell, 1)),
+                          c = mesh.nodes.row(mesh.cells(cell, 2)), d = mesh.nodes.row(mesh.cells(cell, 3));
+    const double signed_volume = (b - a).cross(c - a).dot(d - a) / 6.0;
+    EXPECT_GT(signed_volume, 0.0) << "cell " << cell;
+    volume += signed_volume;
+  }
+  return volume;
+}
+
+double polyline_length(const Polyline& line) {
+  double length = 0;
+  for (std::size_t i = 1; i < line.size(); ++i) length += (line[i] - line[i - 1]).norm();
+  return length;
+}
+
+double total_length(const std::vector<Polyline>& lines) {
+  double length = 0;
+  for (const Polyline& line : lines) length += polyline_length(line);
+  return length;
+}
+
+// The shape of the issue: two boxes 4 mm apart.
+ShapePointer two_boxes() {
+  return make_union({make_box({0, 0, 0}, {1, 0.1, 0.1}), make_box({0.3, 0.104, 0}, {1, 0.204, 0.1})});
+}
+
+SceneGeometry shape_geometry(ShapePointer shape) {
+  SceneGeometry geometry;
+  geometry.scene_file = "scene.json";
+  geometry.shape = std::move(shape);
+  geometry.bounds = geometry.shape->bounding_box();
+  geometry.volume = geometry.shape->volume();
+  return geometry;
+}
+
+TEST(TetrahedralizeBoxShape, KeepsTwoBoxesFourMillimetresApartApart) {
+  const VolumeMesh mesh = tetrahedralize_box_shape(*two_boxes(), 0.07);
+  EXPECT_EQ(volume_mesh_components(mesh), 2);
+  EXPECT_NEAR(mesh_volume(mesh), 0.1 * 0.1 + 0.7 * 0.1 * 0.1, 1e-14);
+  // No node in the gap.
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+    const double y = mesh.nodes(node, 1);
+    EXPECT_FALSE(y > 0.1 + 1e-12 && y < 0.104 - 1e-12) << node;
+  }
+}
+
+TEST(TetrahedralizeBoxShape, MeshesAnLShapeAndANotchExactly) {
+  const ShapePointer l_shape = make_union({make_box({0, 0, 0}, {1, 0.2, 0.2}), make_box({0, 0, 0}, {0.2, 1, 0.2})});
+  const VolumeMesh l_mesh = tetrahedralize_box_shape(*l_shape, 0.1);
+  EXPECT_EQ(volume_mesh_components(l_mesh), 1);
+  EXPECT_NEAR(mesh_volume(l_mesh), 2 * 0.04 - 0.2 * 0.04, 1e-14);
+  const ShapePointer notched = make_difference({make_box({0, 0, 0}, {1, 1, 1}), make_box({0.3, 0.3, 0.5}, {0.6, 2, 2})});
+  EXPECT_NEAR(mesh_volume(tetrahedralize_box_shape(*notched, 0.25)), 1 - 0.3 * 0.7 * 0.5, 1e-14);
+  EXPECT_FALSE(make_sphere({0, 0, 0}, 1)->axis_planes());
+}
+
+TEST(SharpEdges, BoxEdgesCylinderRimsAndTheirPartsOnACsgSurface) {
+  EXPECT_NEAR(total_length(make_box({0, 0, 0}, {1, 2, 3})->sharp_edges(0.1)), 4 * 6.0, 1e-12);
+  EXPECT_EQ(make_box({0, 0, 0}, {1, 2, 3})->sharp_edges(0.1).size(), 12u);
+  const auto tube = make_cylinder({0, 0, 0}, {0, 0, 1}, 2.0, 0.5, 0.3);
+  const auto rims = tube->sharp_edges(0.01);
+  ASSERT_EQ(rims.size(), 4u);
+  // Inscribed polygons: the length is 2π r up to O(spacing²).
+  EXPECT_NEAR(total_length(rims), 2 * 2 * std::numbers::pi * (0.5 + 0.3), 1e-3);
+  EXPECT_NEAR(tube->smallest_feature(), 0.2, 1e-15);
+  const auto overlap = make_union({make_box({0, 0, 0}, {1, 1, 1}), make_box({0.5, 0.2, 0.2}, {1.5, 0.8, 0.8})});
+  // Box 2 (1 × 0.6 × 0.6) pokes out of the unit cube's face x = 1: its 4 edges along x
+  // keep their 0.5 outside, the 4 edges of its far face x = 1.5 stay (0.6 each), those
+  // of its near face x = 0.5 are buried. The cube keeps all 12 edges (box 2 touches none).
+  // The ends are found by bisection to 1e-9 of the diagonal.
+  EXPECT_NEAR(total_length(overlap->sharp_edges(0.05)), 12 + 4 * 0.5 + 4 * 0.6, 1e-7);
+  EXPECT_NEAR(overlap->smallest_feature(), 0.6, 1e-15);
+}
+
+TEST(TetrahedralizeShape, ProtectsACylindersRims) {
+  const double radius = 0.5, height = 1.0, size = 0.2;
+  const auto cylinder = make_cylinder({0, 0, 0}, {0, 0, 1}, height, radius);
+  const VolumeMesh mesh = tetrahedralize_shape(*cylinder, size);
+  // Nodes on the bottom rim (the protected polyline's chords, spacing size / 4, sag
+  // below 1e-3), spread all around it.
+  int rim_nodes = 0;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+    const Eigen::Vector3d x = mesh.nodes.row(node);
+    if (std::abs(x.z()) < 1e-9 && std::abs(x.head<2>().norm() - radius) < 1e-3) ++rim_nodes;
+  }
+  EXPECT_GE(rim_nodes, static_cast<int>(2 * std::numbers::pi * radius / size));
+  const double exact = std::numbers::pi * radius * radius * height;
+  // Facets are chords of the curved side (sag h² / 8R), so the volume falls short by O(h²).
+  EXPECT_LT(std::abs(mesh_volume(mesh) - exact) / exact, 0.03);
+}
+
+TEST(TetrahedralizeGeometry, BoxShapesAreExactAndPassTheChecks) {
+  const VolumeMesh mesh = tetrahedralize_geometry(shape_geometry(two_boxes()), 0.07, "/discretization/fem/max_cell_size");
+  EXPECT_EQ(volume_mesh_components(mesh), 2);
+}
+
+TEST(TetrahedralizeGeometry, ACoarseMeshThatGluesTwoBallsExitsNamingTheSizeKey) {
+  // Two balls 0.02 apart, meshed with cells of 0.3: Mesh_3 bridges the gap.
+  const auto balls = make_union({make_sphere({0, 0, 0}, 0.5), make_sphere({1.02, 0, 0}, 0.5)});
+  try {
+    tetrahedralize_geometry(shape_geometry(balls), 0.3, "/discretization/fem/max_cell_size");
+    FAIL() << "expected an InputError";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("scene.json"), std::string::npos) << message;
+    EXPECT_NE(message.find("/discretization/fem/max_cell_size"), std::string::npos) << message;
+  }
+  // Fine enough, the same geometry passes with two pieces.
+  const VolumeMesh fine = tetrahedralize_geometry(shape_geometry(balls), 0.1, "/discretization/fem/max_cell_size");
+  EXPECT_EQ(volume_mesh_components(fine), 2);
+}
+
+TEST(MeshComponents, CountsSolidShellsOfASurfaceAndPiecesOfAShape) {
+  EXPECT_EQ(shape_components(*two_boxes(), 0.002), 2);
+  const auto hollow = make_difference({make_sphere({0, 0, 0}, 1), make_sphere({0, 0, 0}, 0.5)});
+  EXPECT_EQ(shape_components(*hollow, 0.05), 1);
+}
+
+}  // namespace
+}  // namespace altfem
