@@ -111,6 +111,7 @@ public:
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
             {"piece_finding_s", topology_seconds_},
+            {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
             {"schwarz_blocks", fcm_.schwarz_blocks}});
     return facts;
   }

@@ -6,6 +6,15 @@
 
 namespace altfem::fcm {
 
+int PieceMesh::split_nodes() const {
+  std::vector<int> copies;
+  for (const int node : background_node) {
+    if (node >= static_cast<int>(copies.size())) copies.resize(static_cast<std::size_t>(node) + 1, 0);
+    ++copies[node];
+  }
+  return static_cast<int>(std::count_if(copies.begin(), copies.end(), [](int count) { return count >= 2; }));
+}
+
 PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces) {
   const int cell_count = static_cast<int>(background.cells.rows());
   const Eigen::Index nodes_per_cell = background.cells.cols();

@@ -23,6 +23,9 @@ struct PieceMesh {
   std::vector<int> piece;                     ///< per cell: its piece index within the background cell
   std::vector<std::vector<int>> tetrahedra;   ///< per cell: the embedded tetrahedra it clips
   std::vector<int> background_node;           ///< per node: the background node it copies
+
+  /// Background nodes with two or more copies.
+  int split_nodes() const;
 };
 
 /// The piece mesh of `background` with its `pieces` (find_cell_pieces).
