@@ -94,10 +94,10 @@ int fcm_mesh_command(const std::filesystem::path& scene_file, const MeshCommandO
     return 0;
   }
   const nlohmann::json& cells = facts["cells"];
-  std::printf("fcm mesh of '%s': %s background grid, %d inside, %d cut, %d discarded, %d outside cells; %lld "
-              "quadrature points (cut cells: %lld -> %lld)\nbuild time: %.3f s\nwritten: %s\n",
+  std::printf("fcm mesh of '%s': %s background grid, %d inside, %d cut, %d discarded, %d outside cells (%d split "
+              "into pieces); %lld quadrature points (cut cells: %lld -> %lld)\nbuild time: %.3f s\nwritten: %s\n",
               scene.name.c_str(), facts["background_resolution"].dump().c_str(), cells["inside"].get<int>(),
-              cells["cut"].get<int>(), cells["discarded"].get<int>(), cells["outside"].get<int>(),
+              cells["cut"].get<int>(), cells["discarded"].get<int>(), cells["outside"].get<int>(), cells["split"].get<int>(),
               facts["quadrature_points"].get<long long>(), facts["cut_cell_points"]["initial"].get<long long>(),
               facts["cut_cell_points"]["final"].get<long long>(), build_seconds, vtu.c_str());
   return 0;

@@ -16,7 +16,8 @@ constexpr double inside_tolerance = 1e-12;
 
 }  // namespace
 
-CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options) {
+CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
+                             const std::vector<std::vector<int>>* cell_tetrahedra) {
   const TetrahedronBuckets buckets(embedded);
   const ElementType type = background.element_type;
   const int corner_count = element_corner_count(type);
@@ -40,7 +41,12 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
         for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
         const Eigen::AlignedBox3d box(corners.colwise().minCoeff().transpose(),
                                       corners.colwise().maxCoeff().transpose());
-        buckets.candidates(box, candidates);
+        if (cell_tetrahedra) {
+          candidates.clear();
+          for (const int t : (*cell_tetrahedra)[c]) candidates.push_back(buckets.corners(t));
+        } else {
+          buckets.candidates(box, candidates);
+        }
         CellRule& cell = result.cells[c];
         if (candidates.empty()) continue;
         const CellGeometry geometry(type, corners);

@@ -39,8 +39,11 @@ struct CellRules {
 
 /// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral
 /// mesh of the object (corner nodes used). A cell counts as inside when its clipped
-/// volume equals its own volume to 1e-12 relative.
-CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options);
+/// volume equals its own volume to 1e-12 relative. With `cell_tetrahedra` (one list per
+/// cell), cell c clips exactly the embedded tetrahedra listed for it — a piece of a
+/// background cell (piece_mesh.hpp) — instead of those the bucket grid finds near it.
+CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
+                             const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
 
 /// Recomputes the totals of `rules` (points, cell counts, failures, max residual) from its cells.
 void sum_cell_rule_totals(CellRules& rules);

@@ -56,7 +56,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
                                            const std::vector<DirichletCondition>& dirichlet,
-                                           const FcmOptions& options, const std::string& scene_file) {
+                                           const FcmOptions& options, const std::string& scene_file,
+                                           const NodeRegionFilter& dirichlet_nodes) {
   const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
   const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
@@ -115,7 +116,12 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                              options.ghost_penalty));
   }
   parts.materials = std::move(materials);
-  parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells");
+  NodeRegionFilter kept_dirichlet_nodes;
+  if (dirichlet_nodes)
+    kept_dirichlet_nodes = [&](int node, const RegionSelector& region, double tolerance) {
+      return dirichlet_nodes(used_nodes[node], region, tolerance);
+    };
+  parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells", kept_dirichlet_nodes);
 
   // §5.2: one Schwarz block per small cut cell: the DOFs of its nodes.
   std::vector<std::vector<int>> blocks;

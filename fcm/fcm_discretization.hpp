@@ -11,6 +11,7 @@
 #include "fcm/cell_quadrature.hpp"
 #include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
@@ -61,11 +62,14 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                            const Material& material, const std::vector<DirichletCondition>& dirichlet,
                                            const FcmOptions& options, const std::string& scene_file = "scene");
 /// The same with several materials: background_materials holds each background cell's
-/// index into `materials` (a cut cell takes one material whole).
+/// index into `materials` (a cut cell takes one material whole). `dirichlet_nodes`
+/// (nodes of `background`; optional) narrows the nodes each region selects
+/// (topology-aware cells: piece_dirichlet.hpp).
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
                                            const std::vector<DirichletCondition>& dirichlet,
-                                           const FcmOptions& options, const std::string& scene_file = "scene");
+                                           const FcmOptions& options, const std::string& scene_file = "scene",
+                                           const NodeRegionFilter& dirichlet_nodes = {});
 
 }  // namespace altfem::fcm

@@ -1,10 +1,15 @@
 #include "fcm/fcm_method.hpp"
 
 #include <chrono>
+#include <optional>
 
+#include "fcm/cell_pieces.hpp"
 #include "fcm/embedded_mesh.hpp"
 #include "fcm/fcm_scene_block.hpp"
 #include "fcm/intersection_cell_quadrature.hpp"
+#include "fcm/piece_basis_evaluator.hpp"
+#include "fcm/piece_dirichlet.hpp"
+#include "fcm/piece_mesh.hpp"
 #include "fcm/region_cut_check.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/mesh/boundary_surface.hpp"
@@ -27,26 +32,40 @@ public:
     // The background grid over the geometry's bounds (§3.2).
     const Eigen::AlignedBox3d box = background_box(geometry.bounds, spec.margin);
     resolution_ = spec.resolution.value_or(default_grid_resolution(box.sizes()));
-    const VolumeMesh background = structured_grid(box, resolution_, spec.cell);
+    VolumeMesh background = structured_grid(box, resolution_, spec.cell);
 
     // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
     // or shape at the same default size as fem's, so both deform the same surface.
     const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
-    const VolumeMesh embedded = embedded_tetrahedra(geometry, embedded_size, file);
+    embedded_ = embedded_tetrahedra(geometry, embedded_size, file);
 
     const auto start = std::chrono::steady_clock::now();
+    // Topology-aware cells (§7's limitation): the grid becomes one cell per piece of
+    // material, each clipping only its own tetrahedra, with node copies per part.
+    std::vector<std::vector<int>> cell_tetrahedra;
+    if (spec.topology_aware) {
+      const CellPieces pieces = find_cell_pieces(background, embedded_);
+      split_cells_ = pieces.split_cells();
+      pieces_ = piece_mesh(background, pieces);
+      background = pieces_->mesh;
+      cell_tetrahedra = pieces_->tetrahedra;
+      topology_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    }
     statistics_ = std::make_shared<IntersectionStatistics>();
-    const CellQuadratureSource rules = intersection_cell_quadrature(background, embedded, spec.simplifier,
-                                                                    spec.simplification_tolerance, {}, statistics_);
+    const CellQuadratureSource rules =
+        intersection_cell_quadrature(background, embedded_, spec.simplifier, spec.simplification_tolerance, {},
+                                     statistics_, std::move(cell_tetrahedra));
     fcm_ = build_fcm_discretization(background, rules, materials_.pointers(),
-                                    materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options, file);
+                                    materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options, file,
+                                    pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_) : NodeRegionFilter{});
     warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded).surface;
-    evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded_).surface;
+    if (pieces_) evaluator_ = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
+    else evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
 
@@ -65,6 +84,11 @@ public:
     Eigen::VectorXd points(elements.size());
     for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
     grid.cell_data.emplace_back("quadrature_points", points);
+    // Which piece of its background cell a kept cell is (0 unless the cell is split).
+    Eigen::VectorXd piece = Eigen::VectorXd::Zero(elements.size());
+    if (pieces_)
+      for (int e = 0; e < elements.size(); ++e) piece[e] = pieces_->piece[fcm_.background_cells[e]];
+    grid.cell_data.emplace_back("piece", piece);
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
@@ -88,11 +112,14 @@ public:
             {"cells", {{"inside", fcm_.counts.inside},
                        {"cut", fcm_.counts.cut},
                        {"discarded", fcm_.counts.discarded},
+                       {"split", split_cells_},
                        {"outside", fcm_.counts.outside}}},
             {"cut_cell_points", {{"initial", statistics_->initial_points}, {"final", statistics_->final_points}}},
             {"worst_moment_residual", statistics_->max_residual},
             {"failed_simplifications", statistics_->failed_simplifications},
             {"rule_generation_s", statistics_->seconds},
+            {"piece_finding_s", topology_seconds_},
+            {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
             {"schwarz_blocks", fcm_.schwarz_blocks},
             {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
     return facts;
@@ -103,9 +130,13 @@ private:
   Eigen::Vector3i resolution_;
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
+  VolumeMesh embedded_;
+  std::optional<PieceMesh> pieces_;  ///< topology-aware cells only
+  int split_cells_ = 0;
+  double topology_seconds_ = 0;
   FcmDiscretization fcm_;
   SurfaceMesh surface_;
-  std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
+  std::unique_ptr<ElementBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   std::vector<std::string> warnings_;
   double quadrature_seconds_ = 0;

@@ -61,7 +61,8 @@ const scene_schema::ObjectRule fcm_rule{
      {.key = "schwarz_fraction", .type = ValueType::number, .default_value = 0.5, .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, true}},
      {.key = "schwarz_epsilon", .type = ValueType::number, .default_value = 1e-13, .lower = scene_schema::positive},
-     {.key = "ghost_penalty", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative}}};
+     {.key = "ghost_penalty", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative},
+     scene_schema::flag("topology_aware", true)}};
 
 }  // namespace
 
@@ -85,6 +86,7 @@ FcmSpec fcm_spec(const Scene& scene) {
   else if (simplifier == "nnls") spec.simplifier = SimplificationMethod::nonnegative_least_squares;
   else spec.simplifier = SimplificationMethod::caratheodory;
   spec.simplification_tolerance = fcm["simplification_tolerance"].get<double>();
+  spec.topology_aware = fcm["topology_aware"].get<bool>();
   FcmOptions& options = spec.options;
   options.quadrature_strength = fcm["quadrature_order"].get<int>();
   options.mass_quadrature_strength = fcm["mass_quadrature_order"].get<int>();

@@ -26,6 +26,9 @@ struct FcmSpec {
   std::optional<double> embedded_cell_size;
   std::optional<SimplificationMethod> simplifier = SimplificationMethod::caratheodory;  ///< nullopt: none
   double simplification_tolerance = 1e-12;
+  /// One copy of a cell's DOFs per connected piece of material in it (piece_mesh.hpp):
+  /// disconnected parts sharing a cell move independently (the limitation of §7).
+  bool topology_aware = true;
   FcmOptions options;  ///< strengths, discarding, stabilisation, Schwarz
 };
 

@@ -1,6 +1,7 @@
 #include "fcm/intersection_cell_quadrature.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include "fcm/cut_cell_rule.hpp"
 #include "fcm/rule_cache.hpp"
@@ -12,7 +13,8 @@ namespace altfem::fcm {
 CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
                                                   std::optional<SimplificationMethod> method, double tolerance,
                                                   const std::filesystem::path& cache_directory,
-                                                  std::shared_ptr<IntersectionStatistics> statistics) {
+                                                  std::shared_ptr<IntersectionStatistics> statistics,
+                                                  std::vector<std::vector<int>> cell_tetrahedra) {
   // Each cell's own volume, once: volume fractions are clipped volume over it.
   const int corner_count = element_corner_count(background.element_type);
   std::vector<double> volumes(background.cells.rows());
@@ -21,8 +23,8 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
     volumes[c] = CellGeometry(background.element_type, corners).volume();
   }
-  return [background, embedded, method, tolerance, cache_directory, volumes, statistics](int strength,
-                                                                                          RulePurpose purpose) {
+  return [background, embedded, method, tolerance, cache_directory, volumes, statistics,
+          cell_tetrahedra = std::move(cell_tetrahedra)](int strength, RulePurpose purpose) {
     const auto start = std::chrono::steady_clock::now();
     CellRuleOptions options;
     options.order = strength;
@@ -30,8 +32,10 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     options.simplify = purpose == RulePurpose::stiffness && method.has_value();
     if (method) options.method = *method;
     options.tolerance = tolerance;
-    CellRules rules = cache_directory.empty() ? compute_cell_rules(background, embedded, options)
-                                              : cached_cell_rules(background, embedded, options, cache_directory);
+    const std::vector<std::vector<int>>* tetrahedra = cell_tetrahedra.empty() ? nullptr : &cell_tetrahedra;
+    CellRules rules = cache_directory.empty()
+                          ? compute_cell_rules(background, embedded, options, tetrahedra)
+                          : cached_cell_rules(background, embedded, options, cache_directory, nullptr, tetrahedra);
     if (statistics) {
       statistics->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (purpose == RulePurpose::stiffness) {

@@ -26,10 +26,12 @@ struct IntersectionStatistics {
 /// (method nullopt: stiffness rules are not simplified, §6.3's comparison). With a
 /// non-empty cache_directory the rules are read from / written to it. The source keeps
 /// copies of both meshes; when `statistics` is given, each call records into it.
+/// A non-empty `cell_tetrahedra` (one list per background cell) names the embedded
+/// tetrahedra each cell clips: the pieces of a PieceMesh (topology-aware cells).
 CellQuadratureSource intersection_cell_quadrature(
     const VolumeMesh& background, const VolumeMesh& embedded,
     std::optional<SimplificationMethod> method = SimplificationOptions{}.method,
     double tolerance = SimplificationOptions{}.tolerance, const std::filesystem::path& cache_directory = {},
-    std::shared_ptr<IntersectionStatistics> statistics = nullptr);
+    std::shared_ptr<IntersectionStatistics> statistics = nullptr, std::vector<std::vector<int>> cell_tetrahedra = {});
 
 }  // namespace altfem::fcm

@@ -116,7 +116,8 @@ std::optional<CellRules> deserialise(const std::string& text, Eigen::Index cell_
 
 }  // namespace
 
-std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options) {
+std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
+                             const std::vector<std::vector<int>>* cell_tetrahedra) {
   Hasher hasher;
   hasher.bytes(magic, sizeof magic);
   for (const VolumeMesh* mesh : {&background, &embedded}) {
@@ -128,14 +129,20 @@ std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& emb
   hasher.scalar<std::int32_t>(options.simplify);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.method));
   hasher.scalar<double>(options.tolerance);
+  if (cell_tetrahedra)
+    for (const std::vector<int>& tetrahedra : *cell_tetrahedra) {
+      hasher.scalar<std::int64_t>(static_cast<std::int64_t>(tetrahedra.size()));
+      hasher.bytes(tetrahedra.data(), sizeof(int) * tetrahedra.size());
+    }
   return hasher.value;
 }
 
 CellRules cached_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
-                            const std::filesystem::path& directory, bool* reused) {
+                            const std::filesystem::path& directory, bool* reused,
+                            const std::vector<std::vector<int>>* cell_tetrahedra) {
   char name[32];
   std::snprintf(name, sizeof name, "%016llx.rules",
-                static_cast<unsigned long long>(cell_rules_key(background, embedded, options)));
+                static_cast<unsigned long long>(cell_rules_key(background, embedded, options, cell_tetrahedra)));
   const std::filesystem::path path = directory / name;
   if (std::ifstream file{path, std::ios::binary}) {
     const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
@@ -145,7 +152,7 @@ CellRules cached_cell_rules(const VolumeMesh& background, const VolumeMesh& embe
       return *rules;
     }
   }
-  CellRules rules = compute_cell_rules(background, embedded, options);
+  CellRules rules = compute_cell_rules(background, embedded, options, cell_tetrahedra);
   std::filesystem::create_directories(directory);
   write_file_atomically(path, serialise(rules));
   if (reused) *reused = false;

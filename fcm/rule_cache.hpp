@@ -13,12 +13,14 @@
 namespace altfem::fcm {
 
 /// 64-bit FNV-1a hash of the inputs of compute_cell_rules (bit patterns of the doubles).
-std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options);
+std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
+                             const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
 
 /// compute_cell_rules, read from `directory`/<key>.rules when present and complete, else
 /// computed and stored there (the folder is created). `reused` tells which happened.
 /// Throws std::runtime_error naming the path if the file cannot be written.
 CellRules cached_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
-                            const std::filesystem::path& directory, bool* reused = nullptr);
+                            const std::filesystem::path& directory, bool* reused = nullptr,
+                            const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
 
 }  // namespace altfem::fcm

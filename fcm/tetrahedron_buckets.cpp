@@ -44,11 +44,9 @@ Eigen::Vector3i TetrahedronBuckets::bucket_of(const Eigen::Vector3d& x) const {
   return index;
 }
 
-void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box,
-                                    std::vector<TetrahedronCorners>& candidates) const {
-  candidates.clear();
+void TetrahedronBuckets::candidate_indices(const Eigen::AlignedBox3d& box, std::vector<int>& indices) const {
+  indices.clear();
   if (tetrahedra_.empty() || !bounds_.intersects(box)) return;
-  std::vector<int> indices;
   const Eigen::Vector3i low = bucket_of(box.min()), high = bucket_of(box.max());
   for (int k = low.z(); k <= high.z(); ++k)
     for (int j = low.y(); j <= high.y(); ++j)
@@ -58,9 +56,15 @@ void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box,
       }
   std::sort(indices.begin(), indices.end());
   indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
-  for (const int t : indices) {
-    if (boxes_[t].intersects(box)) candidates.push_back(tetrahedra_[t]);
-  }
+  std::erase_if(indices, [&](int t) { return !boxes_[t].intersects(box); });
+}
+
+void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box,
+                                    std::vector<TetrahedronCorners>& candidates) const {
+  candidates.clear();
+  std::vector<int> indices;
+  candidate_indices(box, indices);
+  for (const int t : indices) candidates.push_back(tetrahedra_[t]);
 }
 
 }  // namespace altfem::fcm

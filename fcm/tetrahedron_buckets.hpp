@@ -19,6 +19,10 @@ public:
   /// The corners (4 × 3) of every tetrahedron whose bounding box meets `box`, each once,
   /// in increasing index order, written into `candidates` (cleared first).
   void candidates(const Eigen::AlignedBox3d& box, std::vector<TetrahedronCorners>& candidates) const;
+  /// The same as indices into the mesh's cells (ascending), written into `indices` (cleared first).
+  void candidate_indices(const Eigen::AlignedBox3d& box, std::vector<int>& indices) const;
+  /// The corners (4 × 3) of tetrahedron t.
+  const TetrahedronCorners& corners(int t) const { return tetrahedra_[t]; }
 
   Eigen::Index size() const { return static_cast<Eigen::Index>(tetrahedra_.size()); }
 

@@ -9,7 +9,8 @@
 namespace altfem {
 
 DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<DirichletCondition>& conditions,
-                              const std::string& scene_file, std::string_view mesh_name) {
+                              const std::string& scene_file, std::string_view mesh_name,
+                              const NodeRegionFilter& also_requires) {
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < nodes.rows(); ++node) bounds.extend(nodes.row(node).transpose());
   const double tolerance = region_tolerance(bounds);
@@ -18,6 +19,7 @@ DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<Di
     int selected = 0;
     for (Eigen::Index node = 0; node < nodes.rows(); ++node) {
       if (!conditions[c].region.contains(nodes.row(node).transpose(), tolerance)) continue;
+      if (also_requires && !also_requires(static_cast<int>(node), conditions[c].region, tolerance)) continue;
       ++selected;
       for (int k = 0; k < 3; ++k)
         if (conditions[c].components[k]) condition_of_dof[3 * static_cast<int>(node) + k] = static_cast<int>(c);

@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,13 @@ namespace altfem {
 /// scene's order. nodes: #nodes × 3 rest positions (basis function i is node i).
 /// Throws InputError naming the condition when its region selects no node of
 /// `mesh_name` (e.g. "the fem mesh").
+///
+/// `also_requires` (when given) narrows each region's choice: a node the region contains
+/// is selected only if also_requires(node, region, tolerance) holds (fcm's
+/// topology-aware cells: a node's copy whose material does not reach the region).
+using NodeRegionFilter = std::function<bool(int node, const RegionSelector& region, double tolerance)>;
 DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<DirichletCondition>& conditions,
-                              const std::string& scene_file, std::string_view mesh_name);
+                              const std::string& scene_file, std::string_view mesh_name,
+                              const NodeRegionFilter& also_requires = {});
 
 }  // namespace altfem

@@ -1,6 +1,6 @@
 // The on-disk rule cache (fcm/rule_cache.hpp): a second run reuses the file and gets
 // identical rules; other options miss; a truncated file (an interrupted writer without
-// the atomic rename) is recomputed, not trusted.
+// the atomic rename) is recomputed, not trusted; named tetrahedra per cell key apart.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -41,6 +41,14 @@ TEST(RuleCache, SecondRunReusesIdenticalRulesAndTruncatedFilesAreRecomputed) {
   cached_cell_rules(background, embedded, options, directory, &reused);
   EXPECT_FALSE(reused);  // moved geometry: another key
   embedded.nodes(0, 0) -= 1e-3;
+  // Cells that clip named tetrahedra (pieces of topology-aware cells): another key, and
+  // the cached rules are those of the named tetrahedra (none: every cell outside).
+  const std::vector<std::vector<int>> no_tetrahedra(static_cast<std::size_t>(background.cells.rows()));
+  const CellRules pieces = cached_cell_rules(background, embedded, options, directory, &reused, &no_tetrahedra);
+  EXPECT_FALSE(reused);
+  EXPECT_EQ(pieces.final_points, 0);
+  cached_cell_rules(background, embedded, options, directory, &reused, &no_tetrahedra);
+  EXPECT_TRUE(reused);
 
   char name[32];
   std::snprintf(name, sizeof name, "%016llx.rules",

@@ -1,0 +1,270 @@
+#include "fcm/cell_pieces.hpp"
+
+#include <algorithm>
+#include <array>
+#include <exception>
+#include <map>
+
+#include "fcm/cut_cell_rule.hpp"
+#include "fcm/tetrahedron_buckets.hpp"
+#include "shared/element/element_faces.hpp"
+#include "shared/mesh/disjoint_sets.hpp"
+
+namespace altfem::fcm {
+
+namespace {
+
+/// A corner within this fraction of a cell's diagonal of a plane lies on it: the
+/// clip computes its new vertices in double precision.
+constexpr double plane_tolerance = 1e-9;
+
+/// The triangles of a tetrahedron (corner indices).
+constexpr std::array<std::array<int, 3>, 4> tetrahedron_triangles{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
+
+struct FaceNeighbour {
+  int cell = -1, face = -1;  ///< the cell across a face and that face's local index; −1: none
+};
+
+struct Plane {
+  Eigen::Vector3d normal;  ///< unit
+  double offset;           ///< normal · x on the plane
+  double distance(const Eigen::Vector3d& x) const { return std::abs(normal.dot(x) - offset); }
+};
+
+/// The plane through a face's first three corners (`corners` are the cell's corner rows).
+template <typename Corners>
+Plane face_plane(const Corners& corners, const std::array<int, 4>& face) {
+  const Eigen::Vector3d a = corners.row(face[0]).transpose(), b = corners.row(face[1]).transpose(),
+                        c = corners.row(face[2]).transpose();
+  const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+  return {normal, normal.dot(a)};
+}
+
+/// Per node, the lowest-numbered node at exactly the same position: a mesh read with
+/// duplicated nodes (a soup of tetrahedra) still has its faces matched.
+std::vector<int> first_node_at_position(const Eigen::MatrixXd& nodes) {
+  std::map<std::array<double, 3>, int> first;
+  std::vector<int> canonical(static_cast<std::size_t>(nodes.rows()));
+  for (int node = 0; node < nodes.rows(); ++node)
+    canonical[node] = first.emplace(std::array<double, 3>{nodes(node, 0), nodes(node, 1), nodes(node, 2)}, node)
+                          .first->second;
+  return canonical;
+}
+
+/// Per cell and local face (element_faces order), the cell across it in a conforming
+/// mesh (faces matched by the positions of their corners).
+std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) {
+  const std::vector<int> canonical = first_node_at_position(mesh.nodes);
+  const ElementShape shape = element_shape(mesh.element_type);
+  const auto faces = element_faces(shape);
+  const int corners = face_corner_count(shape);
+  std::vector<std::vector<FaceNeighbour>> neighbours(static_cast<std::size_t>(mesh.cells.rows()),
+                                                     std::vector<FaceNeighbour>(faces.size()));
+  std::map<std::array<int, 4>, FaceNeighbour> first_side;
+  for (int cell = 0; cell < mesh.cells.rows(); ++cell)
+    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+      std::array<int, 4> key{-1, -1, -1, -1};
+      for (int c = 0; c < corners; ++c) key[c] = canonical[mesh.cells(cell, faces[f][c])];
+      std::sort(key.begin(), key.begin() + corners);
+      const auto [entry, added] = first_side.emplace(key, FaceNeighbour{cell, f});
+      if (added) continue;
+      neighbours[cell][f] = entry->second;
+      neighbours[entry->second.cell][entry->second.face] = {cell, f};
+    }
+  return neighbours;
+}
+
+/// An embedded tetrahedron clipped by one cell, with the areas by which the clipped
+/// part touches the planes of the cell's faces and of the tetrahedron's faces.
+struct Fragment {
+  int tetrahedron = -1;
+  std::array<double, 6> cell_face_area{};
+  std::array<double, 4> tetrahedron_face_area{};
+};
+
+struct CellFragments {
+  std::vector<Fragment> fragments;  ///< by ascending tetrahedron
+  std::vector<int> piece;           ///< per fragment
+  double distance_threshold = 0;
+
+  /// The fragment of tetrahedron t in this cell, or −1.
+  int find(int t) const {
+    const auto it = std::lower_bound(fragments.begin(), fragments.end(), t,
+                                     [](const Fragment& fragment, int value) { return fragment.tetrahedron < value; });
+    return it != fragments.end() && it->tetrahedron == t ? static_cast<int>(it - fragments.begin()) : -1;
+  }
+};
+
+/// Adds to `areas[k]` the area of every triangle of the clipped tetrahedra lying in planes[k].
+template <std::size_t N>
+void add_contact_areas(const std::vector<TetrahedronCorners>& clipped, const std::array<Plane, N>& planes,
+                       int plane_count, double distance_threshold, std::array<double, N>& areas) {
+  for (const TetrahedronCorners& piece : clipped)
+    for (const auto& triangle : tetrahedron_triangles) {
+      const Eigen::Vector3d a = piece.row(triangle[0]).transpose(), b = piece.row(triangle[1]).transpose(),
+                            c = piece.row(triangle[2]).transpose();
+      for (int k = 0; k < plane_count; ++k) {
+        const Plane& plane = planes[k];
+        if (plane.distance(a) <= distance_threshold && plane.distance(b) <= distance_threshold &&
+            plane.distance(c) <= distance_threshold)
+          areas[k] += 0.5 * (b - a).cross(c - a).norm();
+      }
+    }
+}
+
+/// The fragments of one cell and their pieces: components of face adjacency through
+/// contacts of positive area inside the cell.
+CellFragments cell_fragments(const VolumeMesh& background, int cell, const TetrahedronBuckets& buckets,
+                             const std::vector<std::array<int, 4>>& tetrahedron_neighbours,
+                             std::vector<int>& candidates) {
+  const ElementType type = background.element_type;
+  const ElementShape shape = element_shape(type);
+  const int corner_count = element_corner_count(type);
+  Eigen::MatrixXd corners(corner_count, 3);
+  for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(cell, i));
+  const Eigen::AlignedBox3d box(corners.colwise().minCoeff().transpose(), corners.colwise().maxCoeff().transpose());
+  CellFragments result;
+  const double diagonal = box.diagonal().norm();
+  result.distance_threshold = plane_tolerance * diagonal;
+  buckets.candidate_indices(box, candidates);
+  if (candidates.empty()) return result;
+
+  const CellGeometry geometry(type, corners);
+  const auto cell_faces = element_faces(shape);
+  std::array<Plane, 6> cell_planes;
+  for (std::size_t f = 0; f < cell_faces.size(); ++f) cell_planes[f] = face_plane(corners, cell_faces[f]);
+  for (const int t : candidates) {
+    const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(buckets.corners(t), geometry.planes());
+    if (clipped.empty()) continue;
+    Fragment fragment;
+    fragment.tetrahedron = t;
+    add_contact_areas(clipped, cell_planes, static_cast<int>(cell_faces.size()), result.distance_threshold,
+                      fragment.cell_face_area);
+    std::array<Plane, 4> tetrahedron_planes;
+    for (int f = 0; f < 4; ++f) tetrahedron_planes[f] = face_plane(buckets.corners(t), tetrahedron_faces[f]);
+    add_contact_areas(clipped, tetrahedron_planes, 4, result.distance_threshold, fragment.tetrahedron_face_area);
+    result.fragments.push_back(fragment);
+  }
+
+  const int count = static_cast<int>(result.fragments.size());
+  DisjointSets components(count);
+  for (int i = 0; i < count; ++i)
+    for (int f = 0; f < 4; ++f) {
+      const int other = result.find(tetrahedron_neighbours[result.fragments[i].tetrahedron][f]);
+      if (other >= 0 && result.fragments[i].tetrahedron_face_area[f] > 0) components.join(i, other);
+    }
+  // Pieces numbered in order of their first (smallest) tetrahedron.
+  std::vector<int> piece_of_root(static_cast<std::size_t>(count), -1);
+  int pieces = 0;
+  result.piece.resize(count);
+  for (int i = 0; i < count; ++i) {
+    int& piece = piece_of_root[components.find(i)];
+    if (piece < 0) piece = pieces++;
+    result.piece[i] = piece;
+  }
+  return result;
+}
+
+/// Whether the embedded tetrahedron's face lies in `plane`.
+bool face_in_plane(const VolumeMesh& embedded, int tetrahedron, int face, const Plane& plane, double threshold) {
+  for (int c = 0; c < 3; ++c)
+    if (plane.distance(embedded.nodes.row(embedded.cells(tetrahedron, tetrahedron_faces[face][c])).transpose()) > threshold)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+int CellPieces::split_cells() const {
+  return static_cast<int>(std::count_if(tetrahedra.begin(), tetrahedra.end(),
+                                        [](const auto& pieces) { return pieces.size() >= 2; }));
+}
+
+int CellPieces::piece_count() const {
+  int count = 0;
+  for (const auto& pieces : tetrahedra) count += static_cast<int>(pieces.size());
+  return count;
+}
+
+CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded) {
+  const TetrahedronBuckets buckets(embedded);
+  const std::vector<std::vector<FaceNeighbour>> tetrahedron_adjacency = face_neighbours(embedded);
+  std::vector<std::array<int, 4>> tetrahedron_neighbours(tetrahedron_adjacency.size());
+  for (std::size_t t = 0; t < tetrahedron_adjacency.size(); ++t)
+    for (int f = 0; f < 4; ++f) tetrahedron_neighbours[t][f] = tetrahedron_adjacency[t][f].cell;
+
+  const int cell_count = static_cast<int>(background.cells.rows());
+  std::vector<CellFragments> cells(static_cast<std::size_t>(cell_count));
+  std::exception_ptr failure;
+#pragma omp parallel
+  {
+    std::vector<int> candidates;
+#pragma omp for schedule(dynamic, 4)
+    for (int cell = 0; cell < cell_count; ++cell) {
+      try {
+        cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates);
+      } catch (...) {
+#pragma omp critical(altfem_fcm_cell_pieces_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+
+  CellPieces result;
+  result.tetrahedra.resize(cell_count);
+  result.neighbours.resize(cell_count);
+  for (int cell = 0; cell < cell_count; ++cell) {
+    const CellFragments& fragments = cells[cell];
+    const int pieces = fragments.piece.empty() ? 0 : *std::max_element(fragments.piece.begin(), fragments.piece.end()) + 1;
+    result.tetrahedra[cell].resize(pieces);
+    result.neighbours[cell].resize(pieces);
+    for (std::size_t i = 0; i < fragments.fragments.size(); ++i)
+      result.tetrahedra[cell][fragments.piece[i]].push_back(fragments.fragments[i].tetrahedron);
+  }
+
+  // Pieces of face neighbours connected through the shared face.
+  const std::vector<std::vector<FaceNeighbour>> cell_adjacency = face_neighbours(background);
+  const auto cell_faces = element_faces(element_shape(background.element_type));
+  const auto link = [&](int cell, int piece, int other_cell, int other_piece) {
+    result.neighbours[cell][piece].emplace_back(other_cell, other_piece);
+    result.neighbours[other_cell][other_piece].emplace_back(cell, piece);
+  };
+  for (int cell = 0; cell < cell_count; ++cell) {
+    const CellFragments& here = cells[cell];
+    if (here.fragments.empty()) continue;
+    Eigen::MatrixXd corners(element_corner_count(background.element_type), 3);
+    for (Eigen::Index i = 0; i < corners.rows(); ++i) corners.row(i) = background.nodes.row(background.cells(cell, i));
+    for (int f = 0; f < static_cast<int>(cell_faces.size()); ++f) {
+      const FaceNeighbour across = cell_adjacency[cell][f];
+      if (across.cell < cell) continue;  // no neighbour, or the pair was done from the other side
+      const CellFragments& there = cells[across.cell];
+      const Plane plane = face_plane(corners, cell_faces[f]);
+      const auto touches = [&](int fragment) {
+        return fragment >= 0 && there.fragments[fragment].cell_face_area[across.face] > 0;
+      };
+      for (std::size_t i = 0; i < here.fragments.size(); ++i) {
+        const Fragment& fragment = here.fragments[i];
+        if (fragment.cell_face_area[f] <= 0) continue;
+        // The same tetrahedron on both sides: it crosses the face.
+        if (const int same = there.find(fragment.tetrahedron); touches(same))
+          link(cell, here.piece[i], across.cell, there.piece[same]);
+        // A neighbouring tetrahedron through a face lying in the cell face.
+        for (int g = 0; g < 4; ++g) {
+          const int neighbour = tetrahedron_neighbours[fragment.tetrahedron][g];
+          if (neighbour < 0 || !face_in_plane(embedded, fragment.tetrahedron, g, plane, here.distance_threshold)) continue;
+          if (const int other = there.find(neighbour); touches(other))
+            link(cell, here.piece[i], across.cell, there.piece[other]);
+        }
+      }
+    }
+  }
+  for (auto& pieces : result.neighbours)
+    for (auto& neighbours : pieces) {
+      std::sort(neighbours.begin(), neighbours.end());
+      neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+    }
+  return result;
+}
+
+}  // namespace altfem::fcm

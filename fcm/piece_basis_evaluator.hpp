@@ -1,0 +1,45 @@
+#pragma once
+// Embedding of surface points in topology-aware finite cells: the copies of a split
+// background cell overlap in space, so a point that lies in the cell belongs to the
+// piece whose material is nearest to it (a surface vertex lies on its own piece's
+// boundary, and only approximately when Mesh_3 meshed the surface).
+#include <memory>
+#include <vector>
+
+#include "fcm/piece_mesh.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+
+namespace altfem::fcm {
+
+class PieceBasisEvaluator final : public ElementBasisEvaluator {
+public:
+  /// mesh: the kept cells (basis function i = node i), kept_rows: per kept cell its row
+  /// in `pieces`; embedded: the Tet4 mesh the pieces' tetrahedra index. Keeps
+  /// references to mesh and embedded.
+  PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh& pieces, const std::vector<int>& kept_rows,
+                      const VolumeMesh& embedded);
+
+  int element_count() const override { return whole_.element_count(); }
+  Eigen::AlignedBox3d element_bounds(int cell) const override { return whole_.element_bounds(cell); }
+  /// As LagrangeBasisEvaluator, and for a cell of a split background cell only when its
+  /// piece is (one of) the nearest of the kept pieces of that background cell.
+  bool evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
+                       std::vector<double>& values) const override;
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+    return whole_.evaluate_nearest(x, basis, values);
+  }
+
+private:
+  /// Distance from x to the union of the kept cell's piece tetrahedra.
+  double distance_to_piece(int cell, const Eigen::Vector3d& x) const;
+
+  LagrangeBasisEvaluator whole_;
+  const VolumeMesh& embedded_;
+  std::vector<std::vector<int>> piece_tetrahedra_;  ///< per kept cell (empty: its background cell is whole)
+  std::vector<std::vector<int>> siblings_;          ///< per kept cell of a split cell: the other kept pieces
+};
+
+/// Distance from x to the closed tetrahedron (4 × 3 corners).
+double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners);
+
+}  // namespace altfem::fcm

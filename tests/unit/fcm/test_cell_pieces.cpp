@@ -1,0 +1,208 @@
+// Topology-aware cells (fcm/cell_pieces.hpp, fcm/piece_mesh.hpp): the connected pieces
+// of the material in each background cell, exact piece volumes, and one node copy per
+// connected part of the material around the node.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <set>
+
+#include "fcm/cell_pieces.hpp"
+#include "fcm/cut_cell_rule.hpp"
+#include "fcm/piece_basis_evaluator.hpp"
+#include "fcm/piece_mesh.hpp"
+#include "shared/mesh/structured_grid.hpp"
+
+namespace altfem::fcm {
+namespace {
+
+VolumeMesh box_tetrahedra(const Eigen::Vector3d& low, const Eigen::Vector3d& high, const Eigen::Vector3i& resolution) {
+  return structured_grid(Eigen::AlignedBox3d(low, high), resolution, ElementType::tet4);
+}
+
+// Both meshes in one (their nodes kept apart: the parts touch nowhere).
+VolumeMesh concatenate(const VolumeMesh& first, const VolumeMesh& second) {
+  VolumeMesh mesh{ElementType::tet4, Eigen::MatrixXd(first.nodes.rows() + second.nodes.rows(), 3),
+                  Eigen::MatrixXi(first.cells.rows() + second.cells.rows(), 4)};
+  mesh.nodes << first.nodes, second.nodes;
+  mesh.cells << first.cells, (second.cells.array() + static_cast<int>(first.nodes.rows())).matrix();
+  return mesh;
+}
+
+// The mesh without the cells whose centroid `remove` holds (nodes kept: unused ones are harmless).
+VolumeMesh without_cells(const VolumeMesh& mesh, const std::function<bool(const Eigen::Vector3d&)>& remove) {
+  VolumeMesh result{mesh.element_type, mesh.nodes, Eigen::MatrixXi(0, mesh.cells.cols())};
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index c = 0; c < mesh.cells.rows(); ++c) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (Eigen::Index a = 0; a < 4; ++a) centroid += mesh.nodes.row(mesh.cells(c, a)).transpose() / 4;
+    if (!remove(centroid)) kept.push_back(c);
+  }
+  result.cells.resize(static_cast<Eigen::Index>(kept.size()), mesh.cells.cols());
+  for (std::size_t k = 0; k < kept.size(); ++k) result.cells.row(static_cast<Eigen::Index>(k)) = mesh.cells.row(kept[k]);
+  return result;
+}
+
+// The physical volume of a piece: its tetrahedra clipped by the cell.
+double piece_volume(const VolumeMesh& background, int cell, const std::vector<int>& tetrahedra, const VolumeMesh& embedded) {
+  const int corners = element_corner_count(background.element_type);
+  Eigen::MatrixXd cell_corners(corners, 3);
+  for (int i = 0; i < corners; ++i) cell_corners.row(i) = background.nodes.row(background.cells(cell, i));
+  std::vector<TetrahedronCorners> pieces;
+  for (const int t : tetrahedra) {
+    TetrahedronCorners tetrahedron;
+    for (int i = 0; i < 4; ++i) tetrahedron.row(i) = embedded.nodes.row(embedded.cells(t, i));
+    pieces.push_back(tetrahedron);
+  }
+  return intersection_rule(CellGeometry(background.element_type, cell_corners), pieces, 1).clipped_volume;
+}
+
+std::set<int> nodes_of(const PieceMesh& mesh, int row) {
+  std::set<int> nodes;
+  for (Eigen::Index a = 0; a < mesh.mesh.cells.cols(); ++a) nodes.insert(mesh.mesh.cells(row, a));
+  return nodes;
+}
+
+int shared_nodes(const PieceMesh& mesh, int first, int second) {
+  const std::set<int> a = nodes_of(mesh, first), b = nodes_of(mesh, second);
+  return static_cast<int>(std::count_if(a.begin(), a.end(), [&](int node) { return b.count(node) > 0; }));
+}
+
+// Two bars 0.2 apart, x in [0.5, 2], in a row of two cells [0, 1] and [1, 2]. With two
+// embedded cells along x the tetrahedra cross the cell face x = 1 (the same tetrahedron
+// connects both sides); with three they end on it (face-neighbours in the face connect).
+class TwoBars : public ::testing::TestWithParam<int> {};
+
+TEST_P(TwoBars, EachCellHoldsTwoPiecesAndEveryNodeTwoCopies) {
+  const Eigen::Vector3i resolution(GetParam(), 1, 2);
+  const VolumeMesh embedded = concatenate(box_tetrahedra({0.5, 0, 0}, {2, 0.4, 1}, resolution),
+                                          box_tetrahedra({0.5, 0.6, 0}, {2, 1, 1}, resolution));
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, embedded);
+  EXPECT_EQ(pieces.split_cells(), 2);
+  ASSERT_EQ(pieces.piece_count(), 4);
+  const double cell_volume[2] = {0.5 * 0.4, 0.4};
+  for (int cell = 0; cell < 2; ++cell)
+    for (int piece = 0; piece < 2; ++piece)
+      EXPECT_NEAR(piece_volume(background, cell, pieces.tetrahedra[cell][piece], embedded), cell_volume[cell], 1e-14);
+  // The lower bar's piece continues into the lower bar's piece of the next cell, only.
+  const int lower_count = 6 * resolution.prod();  // the lower bar's tetrahedra come first
+  for (int piece = 0; piece < 2; ++piece) {
+    const bool is_lower = pieces.tetrahedra[0][piece].front() < lower_count;
+    const int partner = (pieces.tetrahedra[1][0].front() < lower_count) == is_lower ? 0 : 1;
+    EXPECT_EQ(pieces.neighbours[0][piece], (std::vector<PieceReference>{{1, partner}}));
+  }
+
+  const PieceMesh mesh = piece_mesh(background, pieces);
+  ASSERT_EQ(mesh.mesh.cells.rows(), 4);
+  EXPECT_EQ(mesh.mesh.nodes.rows(), 24);  // 12 grid nodes, two copies each
+  EXPECT_EQ(shared_nodes(mesh, 0, 1), 0);  // the two pieces of a cell share no DOF
+  int across = 0;                          // the four face nodes, per bar
+  for (int piece = 0; piece < 2; ++piece)
+    for (int other = 2; other < 4; ++other) across += shared_nodes(mesh, piece, other);
+  EXPECT_EQ(across, 8);
+}
+
+INSTANTIATE_TEST_SUITE_P(EmbeddedCellsAlongTheBars, TwoBars, ::testing::Values(2, 3));
+
+// Every tetrahedron with nodes of its own (a soup, as some mesh files are): faces are
+// matched by position, so the pieces are those of the shared-node mesh.
+TEST(CellPieces, DuplicatedNodesAreMatchedByPosition) {
+  const VolumeMesh shared = box_tetrahedra({0.5, 0, 0}, {2, 0.4, 1}, Eigen::Vector3i(3, 1, 2));
+  VolumeMesh soup{ElementType::tet4, Eigen::MatrixXd(4 * shared.cells.rows(), 3), Eigen::MatrixXi(shared.cells.rows(), 4)};
+  for (int t = 0; t < shared.cells.rows(); ++t)
+    for (int a = 0; a < 4; ++a) {
+      soup.nodes.row(4 * t + a) = shared.nodes.row(shared.cells(t, a));
+      soup.cells(t, a) = 4 * t + a;
+    }
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, soup);
+  EXPECT_EQ(pieces.piece_count(), 2);
+  EXPECT_EQ(pieces.tetrahedra, find_cell_pieces(background, shared).tetrahedra);
+  EXPECT_EQ(pieces.neighbours[0][0], (std::vector<PieceReference>{{1, 0}}));
+}
+
+// A box touching its cell's face from inside leaves the neighbour without material.
+TEST(CellPieces, PieceTouchingAFaceLeavesTheNeighbourEmpty) {
+  const VolumeMesh embedded = box_tetrahedra({0.2, 0.2, 0.2}, {1, 0.8, 0.8}, Eigen::Vector3i(2, 2, 2));
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, embedded);
+  ASSERT_EQ(pieces.tetrahedra[0].size(), 1u);
+  EXPECT_TRUE(pieces.tetrahedra[1].empty());
+  EXPECT_TRUE(pieces.neighbours[0][0].empty());
+  EXPECT_NEAR(piece_volume(background, 0, pieces.tetrahedra[0][0], embedded), 0.8 * 0.6 * 0.6, 1e-14);
+  const PieceMesh mesh = piece_mesh(background, pieces);
+  EXPECT_EQ(mesh.mesh.cells.rows(), 2);
+  EXPECT_EQ(mesh.mesh.nodes.rows(), 12);
+  EXPECT_TRUE(mesh.tetrahedra[1].empty());
+}
+
+// A U: two legs x in [0, 0.3] and [0.7, 1] rising from y = 0 to y = 1.5, joined by a bar
+// y in [1.2, 1.5]. The lower cell (y in [0, 1]) holds the legs apart; the upper cell
+// holds the bend. The legs' pieces share the nodes of the face y = 1 (the material joins
+// through the upper cell) and have their own copies of the nodes at y = 0.
+TEST(CellPieces, UShapeJoinsThroughTheNeighbouringCell) {
+  const VolumeMesh embedded =
+      without_cells(box_tetrahedra({0, 0, 0}, {1, 1.5, 1}, Eigen::Vector3i(10, 15, 1)),
+                    [](const Eigen::Vector3d& x) { return x.x() > 0.3 && x.x() < 0.7 && x.y() < 1.2; });
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1)),
+                                                Eigen::Vector3i(1, 2, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, embedded);
+  ASSERT_EQ(pieces.tetrahedra[0].size(), 2u);
+  ASSERT_EQ(pieces.tetrahedra[1].size(), 1u);
+  EXPECT_EQ(pieces.split_cells(), 1);
+  for (int piece = 0; piece < 2; ++piece) {
+    EXPECT_NEAR(piece_volume(background, 0, pieces.tetrahedra[0][piece], embedded), 0.3, 1e-14);
+    EXPECT_EQ(pieces.neighbours[0][piece], (std::vector<PieceReference>{{1, 0}}));
+  }
+  EXPECT_NEAR(piece_volume(background, 1, pieces.tetrahedra[1][0], embedded), 2 * 0.3 * 0.2 + 0.3, 1e-14);
+
+  const PieceMesh mesh = piece_mesh(background, pieces);
+  ASSERT_EQ(mesh.mesh.cells.rows(), 3);
+  EXPECT_EQ(mesh.mesh.nodes.rows(), 4 * 2 + 4 + 4);  // y = 0 twice; y = 1 and y = 2 once
+  EXPECT_EQ(shared_nodes(mesh, 0, 1), 4);            // the face y = 1
+  EXPECT_EQ(shared_nodes(mesh, 0, 2), 4);
+  EXPECT_EQ(shared_nodes(mesh, 1, 2), 4);
+}
+
+// The same two bars in a tetrahedral background (each grid cube split into 6).
+TEST(CellPieces, TetrahedralCellsSplitToo) {
+  const VolumeMesh embedded = concatenate(box_tetrahedra({0, 0, 0}, {1, 0.4, 1}, Eigen::Vector3i(2, 1, 2)),
+                                          box_tetrahedra({0, 0.6, 0}, {1, 1, 1}, Eigen::Vector3i(2, 1, 2)));
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
+                                                Eigen::Vector3i(1, 1, 1), ElementType::tet4);
+  const CellPieces pieces = find_cell_pieces(background, embedded);
+  double volume = 0;
+  for (int cell = 0; cell < 6; ++cell)
+    for (const auto& piece : pieces.tetrahedra[cell]) volume += piece_volume(background, cell, piece, embedded);
+  EXPECT_NEAR(volume, 0.8, 1e-14);
+  EXPECT_GT(pieces.split_cells(), 0);
+  // No node copy is shared by a piece of each bar: the bars never meet.
+  const PieceMesh mesh = piece_mesh(background, pieces);
+  for (int a = 0; a < mesh.mesh.cells.rows(); ++a)
+    for (int b = 0; b < mesh.mesh.cells.rows(); ++b) {
+      if (mesh.tetrahedra[a].empty() || mesh.tetrahedra[b].empty()) continue;
+      const bool a_lower = mesh.tetrahedra[a].front() < 24, b_lower = mesh.tetrahedra[b].front() < 24;
+      if (a_lower != b_lower) EXPECT_EQ(shared_nodes(mesh, a, b), 0) << a << " " << b;
+    }
+}
+
+// Surface points go to the nearest piece: the distance to a tetrahedron is 0 inside and
+// on it, the distance to the nearest face, edge or corner outside.
+TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
+  TetrahedronCorners unit;
+  unit << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
+  EXPECT_EQ(distance_to_tetrahedron({0.1, 0.2, 0.3}, unit), 0.0);
+  EXPECT_EQ(distance_to_tetrahedron({0.5, 0.5, 0.0}, unit), 0.0);
+  EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit), 0.25, 1e-15);                    // below a face
+  EXPECT_NEAR(distance_to_tetrahedron({1, 1, 1}, unit), (Eigen::Vector3d(1, 1, 1) / 3 * 2).norm(), 1e-15);  // off the slanted face
+  EXPECT_NEAR(distance_to_tetrahedron({-1, -1, 0.5}, unit), std::sqrt(2.0), 1e-15);              // off the z edge
+  EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);                // off corner (1, 0, 0)
+}
+
+}  // namespace
+}  // namespace altfem::fcm
