@@ -9,10 +9,7 @@
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_mesh.hpp"
 #include "shared/material/material.hpp"
-#include "shared/mesh/boundary_surface.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem::dg {
@@ -73,8 +70,10 @@ public:
                                          std::to_string(scene.materials.size()) + " (use fem, fcm or harmonic)"));
     material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
                               scene.material.poisson_ratio, scene.material.density);
-    const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
-    mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
+    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec_.mesh, geometry);
+    mesh_ = std::move(built.sliced.mesh);
+    surface_ = std::move(built.surface);
+    mesh_facts_ = std::move(built.facts);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
@@ -110,7 +109,6 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh).surface;
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -143,7 +141,8 @@ public:
     return quadrature;
   }
   nlohmann::json facts() const override {
-    return {{"degree", spec_.degree},
+    nlohmann::json facts = mesh_facts_;
+    facts.update({{"degree", spec_.degree},
             {"flux", flux_names[static_cast<int>(spec_.flux)]},
             {"penalty",
              {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
@@ -152,7 +151,8 @@ public:
               {"eta_pa", settings_.penalty}}},
             {"surface_vertices", surface_.vertices.rows()},
             {"surface_vertices_outside_mesh", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}};
+            {"max_outside_distance", embedding_->max_outside_distance()}});
+    return facts;
   }
 
 private:
@@ -170,6 +170,7 @@ private:
   DgSettings settings_;
   int doublings_ = 0;
   PolyhedralMesh mesh_;
+  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   std::unique_ptr<Material> material_;

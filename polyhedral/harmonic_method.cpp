@@ -6,11 +6,8 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 #include "polyhedral/harmonic_scene_block.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
-#include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
-#include "shared/mesh/boundary_surface.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
@@ -23,9 +20,12 @@ public:
   HarmonicMethod(const Scene& scene, const SceneGeometry& geometry)
       : materials_(scene) {
     const HarmonicSpec spec = harmonic_spec(scene);
-    // mesh `convert` (the only kind so far): fem's tet or hex mesh, cell by cell.
-    const VolumeMesh volume = build_fem_mesh(spec.convert, geometry);
-    mesh_ = polyhedral_mesh_from_volume_mesh(volume);
+    // fem's tet or hex mesh cell by cell, or the geometry sliced: its grid's hexahedra
+    // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
+    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec.mesh, geometry);
+    mesh_ = std::move(built.sliced.mesh);
+    surface_ = std::move(built.surface);
+    mesh_facts_ = std::move(built.facts);
     const auto start = std::chrono::steady_clock::now();
     bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
     DiscretizationParts parts;
@@ -38,7 +38,6 @@ public:
     parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
     parts.explicit_mass = ExplicitMassKind::lumped;
     discretization_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume).surface;
     evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -83,6 +82,7 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    facts.update(mesh_facts_);
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
     return facts;
   }
@@ -90,6 +90,7 @@ public:
 private:
   SceneMaterials materials_;
   PolyhedralMesh mesh_;
+  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   SurfaceMesh surface_;
