@@ -73,6 +73,8 @@ public:
     PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_ = std::move(built.surface);
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
@@ -125,6 +127,7 @@ public:
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
@@ -177,7 +180,7 @@ private:
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<MonomialBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double integration_seconds_ = 0;

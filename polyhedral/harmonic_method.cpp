@@ -25,6 +25,8 @@ public:
     PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_ = std::move(built.surface);
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     const auto start = std::chrono::steady_clock::now();
     bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
@@ -73,6 +75,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
@@ -93,7 +96,7 @@ private:
   nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;

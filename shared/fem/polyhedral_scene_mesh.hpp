@@ -23,6 +23,10 @@ struct PolyhedralSceneMesh {
   /// The surface the method deforms and loads act on: the geometry's common surface, else
   /// the boundary of the volume mesh (the converted one, or the scene's own when sliced).
   SurfaceMesh surface;
+  /// The surface loads act on: the boundary of the domain integrated, as triangles each
+  /// on one cell's face (the converted volume mesh's boundary; the sliced mesh's boundary
+  /// faces, ear-clipped).
+  SurfaceMesh load_surface;
   /// {"source": "convert" | "slice"} and, when sliced, "slicing": slicing_facts.
   nlohmann::json facts;
 };
