@@ -136,6 +136,15 @@ void print_table(const std::string& name, const std::vector<Row>& rows) {
   }
 }
 
+// Runs the case, prints its table and checks the rates between its two meshes.
+void expect_rates(const Case& test, const std::filesystem::path& scene_file, double l2_rate, double h1_rate) {
+  const std::vector<Row> rows = run_case(test, scene_file);
+  print_table(test.name, rows);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_GE(rate(rows[0], rows[1], &Row::l2), l2_rate);
+  EXPECT_GE(rate(rows[0], rows[1], &Row::h1), h1_rate);
+}
+
 const std::filesystem::path ball_scene =
     std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests" / "verify" / "manufactured" / "scenes" / "sliced_ball.json";
 
@@ -169,33 +178,19 @@ TEST(SlicedConvergence, DgReproducesPolynomialsOfItsDegreeOnABall) {
 // mesh to mesh; complete degree-1 polynomials held nearly continuous also lock, README
 // "Manufactured solutions"). k = 1 with MFEM's smaller penalty, k = 2 with the default.
 TEST(SlicedConvergence, DgInteriorPenaltyDegreeOneOnABall) {
-  const Case test{"dg_k1", "dg", {"degree=1", "penalty/convention=mfem", "penalty/double_until_definite=true"}, {6, 12}};
-  const std::vector<Row> rows = run_case(test, ball_scene);
-  print_table(test.name, rows);
-  ASSERT_EQ(rows.size(), 2u);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::l2), 1.45);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::h1), 0.9);
+  expect_rates({"dg_k1", "dg", {"degree=1", "penalty/convention=mfem", "penalty/double_until_definite=true"}, {6, 12}},
+               ball_scene, 1.45, 0.9);
 }
 
 TEST(SlicedConvergence, DgInteriorPenaltyDegreeTwoOnABall) {
-  const Case test{"dg_k2", "dg", {"degree=2"}, {4, 8}};
-  const std::vector<Row> rows = run_case(test, ball_scene);
-  print_table(test.name, rows);
-  ASSERT_EQ(rows.size(), 2u);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::l2), 2.2);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::h1), 1.5);
+  expect_rates({"dg_k2", "dg", {"degree=2"}, {4, 8}}, ball_scene, 2.2, 1.5);
 }
 
 TEST(SlicedConvergence, HarmonicOnABendingPrism) {
   // Two kernel centres per edge: a cut cell of the 48-gon has up to ~40 edges, and the
   // MFS systems grow with the samples (5 per edge: 40 s for the 6-cell mesh; 2: 0.7 s),
   // while the errors change by < 2% (1, 2 and 3 samples at 8 cells per side).
-  const Case test{"harmonic", "harmonic", {"samples_per_edge=2"}, {6, 12}};
-  const std::vector<Row> rows = run_case(test, write_bending_scene());
-  print_table(test.name, rows);
-  ASSERT_EQ(rows.size(), 2u);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::l2), 1.8);
-  EXPECT_GE(rate(rows[0], rows[1], &Row::h1), 0.9);
+  expect_rates({"harmonic", "harmonic", {"samples_per_edge=2"}, {6, 12}}, write_bending_scene(), 1.8, 0.9);
 }
 
 }  // namespace
