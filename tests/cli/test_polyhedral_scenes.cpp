@@ -23,14 +23,22 @@ struct SceneRun {
   bool slice;         ///< the default mesh is expected to be sliced
 };
 
+// Names a parameter by its scene and method in test output (instead of its bytes).
+void PrintTo(const SceneRun& run, std::ostream* out) { *out << run.scene << " " << run.method; }
+
 nlohmann::json read_json(const std::filesystem::path& file) {
   std::ifstream in(file);
   return nlohmann::json::parse(in);
 }
 
-// dg's default mesh rule (docs/scene-schema.md, dg/mesh): a surface, or a shape that is not a box.
+// dg's default mesh rule (docs/scene-schema.md, dg/mesh): a surface, or a shape that is not
+// a box, unless the scene's dg block names the mesh or a converted mesh's keys.
 bool sliced_by_default(const nlohmann::json& scene) {
   const nlohmann::json& geometry = scene["geometry"];
+  const nlohmann::json dg = scene.contains("discretization") ? scene["discretization"].value("dg", nlohmann::json::object())
+                                                              : nlohmann::json::object();
+  for (const char* key : {"mesh", "element", "resolution", "max_cell_size"})
+    if (dg.contains(key)) return dg.value("mesh", "") == "slice";
   return geometry.contains("surface") || (geometry.contains("shape") && !geometry["shape"].contains("box"));
 }
 
