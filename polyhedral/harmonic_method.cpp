@@ -49,7 +49,9 @@ public:
       elements_ = &linear->elements();
       discretization_ = std::move(linear);
     }
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume).surface;
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = boundary_surface(volume).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -85,6 +87,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
@@ -114,7 +117,7 @@ private:
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
