@@ -4,7 +4,9 @@
 //  Fig. 11: κ grows with the ratio of the largest to the smallest element volume. Here a
 //  tetrahedron split into a small inner tetrahedron (scaled by s about the centroid) and
 //  the four convex frusta between its faces and the outer ones (five elements; the
-//  paper's mesh has nine), s = ½ → 10⁻³: the volume ratio sweeps eight decades.
+//  paper's mesh has nine), s = ½ → 10⁻⁶: the volume ratio sweeps seventeen decades, κ
+//  grows as its cube root once the small element dominates. Graded slabs (thin cells,
+//  not shape-regular) for comparison: κ grows as the ratio squared.
 //  Fig. 12: a single non-convex element whose middle section thins to ε keeps κ bounded:
 //  two unit cubes joined by a neck of width ε and height 1 (a prism over a dumbbell
 //  profile), ε = 10⁻¹ → 10⁻⁶; a Tet4 fem mesh of the same dumbbell (its neck's cells ε
