@@ -103,7 +103,9 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh).surface;
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = boundary_surface(volume_mesh).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -120,6 +122,7 @@ public:
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
@@ -206,7 +209,7 @@ private:
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<MonomialBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double integration_seconds_ = 0;

@@ -63,7 +63,9 @@ public:
 
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded_).surface;
+    // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
+    load_surface_ = boundary_surface(embedded_).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     if (pieces_) evaluator_ = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
     else evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
@@ -92,6 +94,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
@@ -135,7 +138,7 @@ private:
   int split_cells_ = 0;
   double topology_seconds_ = 0;
   FcmDiscretization fcm_;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<ElementBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   std::vector<std::string> warnings_;
