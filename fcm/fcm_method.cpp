@@ -29,10 +29,11 @@ public:
     const FcmSpec spec = fcm_spec(scene);
     quadrature_strength_ = spec.options.quadrature_strength;
     const std::string file = scene.file.string();
-    // The background grid over the geometry's bounds (§3.2).
-    const Eigen::AlignedBox3d box = background_box(geometry.bounds, spec.margin);
-    resolution_ = spec.resolution.value_or(default_grid_resolution(box.sizes()));
-    VolumeMesh background = structured_grid(box, resolution_, spec.cell);
+    // The background grid over the geometry's bounds, or the user's mesh (§3.2).
+    BackgroundMesh generated = background_mesh(spec, geometry.bounds);
+    VolumeMesh background = std::move(generated.mesh);
+    resolution_ = generated.resolution;
+    background_cells_ = background.cells.rows();
 
     // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
     // or shape at the same default size as fem's, so both deform the same surface.
@@ -111,7 +112,9 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
-    facts.update({{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
+    facts.update({{"background_cells", background_cells_},
+                   {"background_resolution", resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()}
+                                                         : nlohmann::json("file")},
             {"cells", {{"inside", fcm_.counts.inside},
                        {"cut", fcm_.counts.cut},
                        {"discarded", fcm_.counts.discarded},
@@ -130,7 +133,8 @@ public:
 
 private:
   SceneMaterials materials_;
-  Eigen::Vector3i resolution_;
+  std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
+  Eigen::Index background_cells_ = 0;
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
   VolumeMesh embedded_;
