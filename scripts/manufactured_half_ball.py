@@ -53,6 +53,14 @@ scene = {
         "dg": {"degree": 2, "element": "tet4", "mesh": "tetrahedralize", "max_cell_size": 0.25},
         "harmonic": {"convert": {"element": "tet4", "mesh": "tetrahedralize", "max_cell_size": 0.2}},
     },
+    "compare": {
+        "methods": ["fem", "fcm", "dg", "harmonic"],
+        "sweeps": {"discretization/fem/max_cell_size": [0.4, 0.2],
+                   "discretization/fcm/cell": ["hex8", "hex20"],
+                   "discretization/fcm/resolution": [[4, 4, 2], [8, 8, 4]],
+                   "discretization/harmonic/convert/max_cell_size": [0.3, 0.15]},
+        "reference": {"method": "fcm", "set": {"discretization/fcm/resolution": [16, 16, 8]}},
+    },
 }
 path = pathlib.Path(__file__).resolve().parent.parent / "scenes" / "manufactured_half_ball.json"
 path.write_text(json.dumps(scene, indent=2) + "\n")
