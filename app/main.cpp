@@ -82,7 +82,8 @@ int main(int argc, char** argv) {
   mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
   mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem or fcm")->required();
   mesh->add_option("--source", mesh_options.source,
-                   "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry)");
+                   "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry); "
+                   "default: the mesh of the method's scene block, as run builds it");
   mesh->add_option("--resolution", mesh_options.resolution,
                    "--source slice: grid cells along the geometry's longest side (default 16)");
   mesh->add_option("--sliver-fraction", mesh_options.sliver_fraction,

@@ -8,15 +8,17 @@
 #include "app/method_registry.hpp"
 #include "fcm/fcm_method.hpp"
 #include "dg/dg_scene_block.hpp"
+#include "polyhedral/harmonic_scene_block.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
+#include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/io/polyhedral_grid.hpp"
 #include "shared/io/vtu_writer.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
-#include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_slicing.hpp"
 
 namespace altfem::cli {
 
@@ -47,28 +49,25 @@ nlohmann::json mesh_facts(const PolyhedralMesh& mesh, double geometry_volume) {
           {"largest_cell_volume", mesh.cell_volumes.maxCoeff()}};
 }
 
-/// The geometry sliced by a grid (Kaufmann et al. 2009 §9.2, Martin et al. 2008 §7):
-/// surfaces directly, shapes through their Mesh_3 surface, volume meshes through their boundary.
-SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const MeshCommandOptions& options) {
+// The command line's slicing options, checked with messages naming the flags.
+SlicingOptions slicing_options(const MeshCommandOptions& options) {
   if (options.resolution < 1) throw InputError("--resolution: must be >= 1, got " + std::to_string(options.resolution));
   if (!(options.sliver_fraction >= 0 && options.sliver_fraction < 1))
     throw InputError("--sliver-fraction: must be in [0, 1), got " + std::to_string(options.sliver_fraction));
+  if (options.octree_levels < 0 || options.octree_levels > 10)
+    throw InputError("--octree-levels: must be in 0..10, got " + std::to_string(options.octree_levels));
   SlicingOptions slicing;
   slicing.resolution = options.resolution;
   slicing.sliver_fraction = options.sliver_fraction;
-  if (options.octree_levels < 0 || options.octree_levels > 10)
-    throw InputError("--octree-levels: must be in 0..10, got " + std::to_string(options.octree_levels));
   slicing.octree_levels = options.octree_levels;
-  if (geometry.surface) return slice_into_polyhedra(*geometry.surface, slicing);
-  if (geometry.shape) return slice_into_polyhedra(*geometry.shape, slicing);
-  return slice_into_polyhedra(boundary_surface(*geometry.mesh).surface, slicing);
+  return slicing;
 }
 
 // fcm: the kept background cells with their volume fractions and quadrature points,
 // built as `run` builds them (the cut-cell rules included).
 int fcm_mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptions& options,
                      std::chrono::steady_clock::time_point start) {
-  if (options.source != "convert")
+  if (!options.source.empty())
     throw InputError("--source " + options.source + ": fcm's mesh is its background grid (no --source)");
   Scene scene = load_scene(scene_file);
   resolve_method_blocks(scene, {"fcm"});
@@ -112,27 +111,38 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   if (method != "dg" && method != "harmonic" && method != "fem")
     throw InputError("--method: expected dg, harmonic, fem or fcm, got '" + method + "'");
   const bool polyhedral = method != "fem";
-  if (options.source != "convert" && options.source != "slice")
+  if (!options.source.empty() && options.source != "convert" && options.source != "slice")
     throw InputError("--source: expected convert or slice, got '" + options.source + "'");
-  if (!polyhedral && options.source != "convert")
+  if (!polyhedral && options.source == "slice")
     throw InputError("--source " + options.source + ": only for the polyhedral methods (dg, harmonic)");
-  const Scene scene = load_scene(scene_file);
+  Scene scene = load_scene(scene_file);
+  resolve_method_blocks(scene, {method});
   const SceneGeometry geometry = load_scene_geometry(scene);
   for (const auto& warning : geometry.warnings) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
 
-  // dg and harmonic: the fem mesh converted cell by cell, or the geometry sliced by a
+  // dg and harmonic: the mesh their block names, as `run` builds it, unless --source
+  // asks for the fem mesh converted cell by cell or the geometry sliced by the flags'
   // grid. fem: its own mesh; its facts come from the same conversion (straight-sided
   // cells from the corners).
-  const bool slice = options.source == "slice";
   VolumeMesh volume_mesh;
   SlicedMesh sliced;
-  if (slice) {
-    sliced = slice_scene_geometry(geometry, options);
+  nlohmann::json source_facts = {{"source", "convert"}};
+  if (polyhedral) {
+    PolyhedralMeshSource source = method == "dg" ? dg::dg_spec(scene).mesh : harmonic::harmonic_spec(scene).mesh;
+    if (options.source == "slice") source.slicing = slicing_options(options);
+    if (options.source == "convert" && source.slicing) {
+      source.slicing.reset();
+      source.convert = fem_spec(scene);
+    }
+    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(source, geometry);
+    sliced = std::move(built.sliced);
+    source_facts = std::move(built.facts);
+    if (source.slicing) source_facts["slicing"]["sliver_fraction"] = source.slicing->sliver_fraction;
   } else {
-    // dg reads the mesh keys of its own block (the same rules as fem's).
-    volume_mesh = build_fem_mesh(method == "dg" ? dg::dg_spec(scene).mesh : fem_spec(scene), geometry);
+    volume_mesh = build_fem_mesh(fem_spec(scene), geometry);
     sliced.mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
   }
+  const bool slice = source_facts["source"] == "slice";
   const PolyhedralMesh& mesh = sliced.mesh;
   const double build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -148,15 +158,8 @@ int mesh_command(const std::filesystem::path& scene_file, const MeshCommandOptio
   nlohmann::json facts = mesh_facts(mesh, geometry.volume);
   facts["method"] = method;
   if (!polyhedral) facts["nodes"] = volume_mesh.nodes.rows();  // the written mesh's, higher-order nodes included
-  facts["source"] = polyhedral ? options.source : std::string(element_name(volume_mesh.element_type));
-  if (slice)
-    facts["slicing"] = {{"grid", {sliced.grid_cells(0), sliced.grid_cells(1), sliced.grid_cells(2)}},
-                        {"cell_size", sliced.cell_size},
-                        {"cut_pieces", sliced.cut_pieces},
-                        {"grid_cells_split_by_topology", sliced.split_grid_cells},
-                        {"merged_slivers", sliced.merged_slivers},
-                        {"octree_coarse_cells", sliced.coarse_cells},
-                        {"sliver_fraction", options.sliver_fraction}};
+  if (polyhedral) facts.update(source_facts);
+  else facts["source"] = std::string(element_name(volume_mesh.element_type));
   facts["build_time_s"] = build_seconds;
   facts["file"] = vtu.string();
   if (options.json) {

@@ -9,10 +9,7 @@
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_mesh.hpp"
 #include "shared/material/material.hpp"
-#include "shared/mesh/boundary_surface.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/simulation/scene_materials.hpp"
 #include "shared/solve/linear_solver.hpp"
 
@@ -66,13 +63,17 @@ bool positive_definite(const DgLinearSystem& system) {
 class DgMethod final : public MethodInstance {
 public:
   DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)), materials_(scene) {
-    const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
-    mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
+    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec_.mesh, geometry);
+    mesh_ = std::move(built.sliced.mesh);
+    surface_ = std::move(built.surface);
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = std::move(built.load_surface);
+    mesh_facts_ = std::move(built.facts);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
     const auto start = std::chrono::steady_clock::now();
-    cell_materials_ = cell_materials(scene, corner_centroids(volume_mesh));
+    cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
     const DgMaterial& first = cell_materials_.materials.front();
     settings_ = {spec_.degree, spec_.flux, first.penalty, first.lambda, first.mu, first.density, boundary_factor(scene)};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
@@ -103,9 +104,6 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    // Surface loads act on the boundary of the domain integrated: the mesh's.
-    load_surface_ = boundary_surface(volume_mesh).surface;
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -139,7 +137,8 @@ public:
     return quadrature;
   }
   nlohmann::json facts() const override {
-    return {{"degree", spec_.degree},
+    nlohmann::json facts = mesh_facts_;
+    facts.update({{"degree", spec_.degree},
             {"flux", flux_names[static_cast<int>(spec_.flux)]},
             {"penalty",
              {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
@@ -148,7 +147,8 @@ public:
               {"eta_pa", settings_.penalty}}},
             {"surface_vertices", surface_.vertices.rows()},
             {"surface_vertices_outside_mesh", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}};
+            {"max_outside_distance", embedding_->max_outside_distance()}});
+    return facts;
   }
 
 private:
@@ -203,6 +203,7 @@ private:
   DgCellMaterials cell_materials_;
   int doublings_ = 0;
   PolyhedralMesh mesh_;
+  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 
+#include "shared/scene/scene_slicing.hpp"
+
 namespace altfem::dg {
 
 namespace {
@@ -12,8 +14,8 @@ using scene_schema::ValueType;
 using scene_schema::Validator;
 
 // The keys the `dg` block shares with the `fem` block: the volume mesh that is
-// converted into polyhedra.
-constexpr std::array<std::string_view, 4> mesh_keys{"element", "mesh", "resolution", "max_cell_size"};
+// converted into polyhedra ("mesh" first: it alone also names the slicing).
+constexpr std::array<std::string_view, 4> mesh_keys{"mesh", "element", "resolution", "max_cell_size"};
 
 template <std::size_t n>
 int index_of(const std::array<std::string_view, n>& names, const std::string& name) {
@@ -21,10 +23,26 @@ int index_of(const std::array<std::string_view, n>& names, const std::string& na
 }
 
 // The defaults that depend on the geometry and on the penalty convention.
-void complete_dg(const Validator& validator, const json& scene, json& dg, const std::string& pointer) {
+// The mesh: hexahedral slicing of a surface or a shape that is not a box (Kaufmann et
+// al. 2009, §9.2), unless the block names the converted mesh's keys (element, resolution,
+// max_cell_size); a box's grid and a volume mesh file are converted, as fem would mesh them.
+void complete_dg_mesh(const Validator& validator, const json& scene, json& dg, const std::string& pointer) {
   const json& geometry = scene["geometry"];
   const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
-  if (!dg.contains("mesh")) dg["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
+  const bool names_converted_mesh =
+      std::any_of(mesh_keys.begin() + 1, mesh_keys.end(), [&](std::string_view key) { return dg.contains(key); });
+  if (!dg.contains("mesh"))
+    dg["mesh"] = geometry.contains("mesh") ? "file"
+                 : is_box                  ? "grid"
+                 : names_converted_mesh    ? "tetrahedralize"
+                                           : "slice";
+  complete_slice_key(validator, dg, pointer);
+  if (dg["mesh"] == "slice") {
+    for (std::string_view key : mesh_keys)
+      if (key != "mesh" && dg.contains(key))
+        validator.fail(pointer + "/" + std::string(key), "only with a converted mesh (grid, tetrahedralize or file), not with mesh 'slice'");
+    return;
+  }
   // Straight-sided cells: the conversion keeps corner nodes only, so the linear element
   // of the mesh kind is the default (a mesh file's own element otherwise).
   if (!dg.contains("element") && dg["mesh"] != "file") dg["element"] = dg["mesh"] == "grid" ? "hex8" : "tet4";
@@ -35,6 +53,11 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
   fem_scene_block().complete(validator, scene, mesh, pointer);
   for (std::string_view key : mesh_keys)
     if (mesh.contains(key)) dg[std::string(key)] = mesh[std::string(key)];
+}
+
+// The defaults that depend on the geometry and on the penalty convention.
+void complete_dg(const Validator& validator, const json& scene, json& dg, const std::string& pointer) {
+  complete_dg_mesh(validator, scene, dg, pointer);
 
   // Interior penalty's consistency terms are linear-elastic in this build
   // (dg/tabulated_dg.hpp): other materials default to, and need, Babuška–Zlámal.
@@ -74,6 +97,13 @@ std::vector<std::string_view> fem_element_names() {
   return {};
 }
 
+// fem's mesh kinds, converted, and `slice`.
+std::vector<std::string_view> mesh_names() {
+  std::vector<std::string_view> names = scene_schema::names(fem_mesh_names);
+  names.push_back("slice");
+  return names;
+}
+
 // A function-local static: it reads the fem block's rule, which must be initialised first.
 const scene_schema::ObjectRule& dg_rule() {
   static const scene_schema::ObjectRule rule{
@@ -82,7 +112,8 @@ const scene_schema::ObjectRule& dg_rule() {
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
-       {.key = "mesh", .type = ValueType::string, .choices = scene_schema::names(fem_mesh_names)},
+       {.key = "mesh", .type = ValueType::string, .choices = mesh_names()},
+       {.key = "slice", .type = ValueType::object, .object = &slicing_rule()},
        {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
        {.key = "max_cell_size", .type = ValueType::number, .lower = scene_schema::positive}}};
   return rule;
@@ -105,12 +136,17 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
-  spec.mesh.pointer = "/discretization/dg";
-  spec.mesh.element = *element_type_from_name(dg["element"].get<std::string>());
-  spec.mesh.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
+  if (dg["mesh"] == "slice") {
+    spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
+    return spec;
+  }
+  FemSpec& convert = spec.mesh.convert;
+  convert.pointer = "/discretization/dg";
+  convert.element = *element_type_from_name(dg["element"].get<std::string>());
+  convert.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
   if (dg.contains("resolution"))
-    spec.mesh.resolution = {dg["resolution"][0].get<int>(), dg["resolution"][1].get<int>(), dg["resolution"][2].get<int>()};
-  if (dg.contains("max_cell_size")) spec.mesh.max_cell_size = dg["max_cell_size"].get<double>();
+    convert.resolution = {dg["resolution"][0].get<int>(), dg["resolution"][1].get<int>(), dg["resolution"][2].get<int>()};
+  if (dg.contains("max_cell_size")) convert.max_cell_size = dg["max_cell_size"].get<double>();
   return spec;
 }
 

@@ -20,6 +20,7 @@
 
 #include "dg/face_matrices.hpp"
 #include "shared/fem/fem_scene_block.hpp"
+#include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/method_scene_block.hpp"
 
 namespace altfem::dg {
@@ -34,9 +35,10 @@ struct DgSpec {
   PenaltyConvention convention = PenaltyConvention::kaufmann;
   double penalty_value = 20;
   bool double_until_definite = true;
-  /// The volume mesh converted into polyhedra: element, mesh kind, resolution and
-  /// max_cell_size as the `fem` block means them (quadrature_order and curved unused).
-  FemSpec mesh;
+  /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
+  /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
+  /// (quadrature_order and curved unused).
+  PolyhedralMeshSource mesh;
 };
 
 const MethodSceneBlock& dg_scene_block();

@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "shared/mesh/polyhedral_cell_location.hpp"
+
 namespace altfem::dg {
 
 MonomialBasisEvaluator::MonomialBasisEvaluator(const PolyhedralMesh& mesh, const DgLinearSystem& system)
@@ -23,7 +25,16 @@ double MonomialBasisEvaluator::plane_distance(int element, const Eigen::Vector3d
 
 bool MonomialBasisEvaluator::evaluate_inside(int element, const Eigen::Vector3d& x, std::vector<int>& basis,
                                              std::vector<double>& values) const {
-  if (plane_distance(element, x) > 1e-9 * mesh_.cell_diameters[element]) return false;
+  const double tolerance = 1e-9 * mesh_.cell_diameters[element];
+  if (bounds_[element].exteriorDistance(x) > tolerance) return false;
+  // Behind every face plane is inside any closed cell (the planes' intersection is its
+  // kernel); in front of one is outside only for a convex cell. Cut, merged and coarse
+  // cells of a sliced mesh may be non-convex: the winding number decides.
+  if (plane_distance(element, x) > tolerance) {
+    const PolyhedralCellKind kind = mesh_.cell_kinds[element];
+    const bool convex = kind == PolyhedralCellKind::tetrahedron || kind == PolyhedralCellKind::hexahedron;
+    if (convex || !cell_holds(mesh_, element, x, tolerance)) return false;
+  }
   fill(element, x, basis, values);
   return true;
 }
@@ -33,11 +44,10 @@ double MonomialBasisEvaluator::evaluate_nearest(const Eigen::Vector3d& x, std::v
   int nearest = 0;
   double nearest_distance = std::numeric_limits<double>::infinity();
   for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
-    // Both the box's and the planes' distances are lower bounds of the distance to a
-    // convex cell: their maximum is the measure, and the box alone prunes.
+    // The box's distance bounds the boundary's from below: it prunes.
     const double box_distance = bounds_[cell].exteriorDistance(x);
     if (box_distance >= nearest_distance) continue;
-    const double distance = std::max(box_distance, plane_distance(cell, x));
+    const double distance = distance_to_cell_boundary(mesh_, cell, x);
     if (distance < nearest_distance) {
       nearest = cell;
       nearest_distance = distance;

@@ -10,9 +10,10 @@
 
 namespace altfem::dg {
 
-/// Point location assumes convex cells (those of converted tetrahedral and hexahedral
-/// meshes): x lies in a cell when it is behind every face plane, up to 1e-9 × the
-/// cell's diameter. Both references must outlive the evaluator.
+/// Point location: x lies in a cell when it is behind every face plane, up to 1e-9 × the
+/// cell's diameter, or, for cells that may be non-convex (cut, merged and coarse cells
+/// of a sliced mesh), when the cell's winding number about x exceeds 1/2 or x lies that
+/// close to its boundary. Both references must outlive the evaluator.
 class MonomialBasisEvaluator final : public ElementBasisEvaluator {
 public:
   MonomialBasisEvaluator(const PolyhedralMesh& mesh, const DgLinearSystem& system);
@@ -21,9 +22,7 @@ public:
   Eigen::AlignedBox3d element_bounds(int element) const override { return bounds_[element]; }
   bool evaluate_inside(int element, const Eigen::Vector3d& x, std::vector<int>& basis,
                        std::vector<double>& values) const override;
-  /// The nearest cell by the larger of two lower bounds of the distance to a convex cell:
-  /// to its bounding box and in front of its face planes (exact when the nearest point
-  /// is inside a face).
+  /// The cell whose boundary is nearest (its bounding box's distance prunes).
   double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override;
   BoundaryPointRule boundary_rule() const override { return BoundaryPointRule::average; }
 

@@ -4,7 +4,6 @@
 #include <Eigen/QR>
 #include <cmath>
 #include <map>
-#include <numbers>
 #include <stdexcept>
 #include <vector>
 
@@ -109,26 +108,7 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
   return samples;
 }
 
-// The solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee 1983).
-double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const double la = a.norm(), lb = b.norm(), lc = c.norm();
-  const double numerator = a.dot(b.cross(c));
-  const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
-  return 2 * std::atan2(numerator, denominator);
-}
-
 }  // namespace
-
-double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x) {
-  double total = 0;
-  for (const auto& face : polyhedron.faces) {
-    const Eigen::Vector3d first = polyhedron.vertices.row(face[0]).transpose() - x;
-    for (size_t k = 1; k + 1 < face.size(); ++k)
-      total += solid_angle(first, polyhedron.vertices.row(face[k]).transpose() - x,
-                           polyhedron.vertices.row(face[k + 1]).transpose() - x);
-  }
-  return total / (4 * std::numbers::pi);
-}
 
 ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options) {
   if (element.faces.empty()) throw std::invalid_argument("ElementHarmonicBasis: the polyhedron has no face");

@@ -11,6 +11,7 @@
 
 #include "polyhedral/mfs_options.hpp"
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/mesh/polyhedral_cell_location.hpp"
 
 namespace altfem::harmonic {
 
@@ -44,8 +45,7 @@ private:
   Eigen::MatrixXd boundary_integrals_;  // #nodes × 3
 };
 
-/// Generalised winding number of a closed polyhedron about x (1 inside, 0 outside; by
-/// the signed solid angles of each face's fan triangles, exact for non-convex faces).
-double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x);
+/// The generalised winding number (shared/mesh/polyhedral_cell_location.hpp).
+using altfem::winding_number;
 
 }  // namespace altfem::harmonic

@@ -21,7 +21,6 @@ public:
 
 private:
   bool evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;
-  double distance_to_boundary(int cell, const Eigen::Vector3d& x) const;
 
   const PolyhedralMesh& mesh_;
   const HarmonicElementBases& bases_;

@@ -8,11 +8,8 @@
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/warped_linear_discretization.hpp"
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
-#include "shared/mesh/boundary_surface.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
@@ -25,9 +22,14 @@ public:
   HarmonicMethod(const Scene& scene, const SceneGeometry& geometry)
       : materials_(scene) {
     const HarmonicSpec spec = harmonic_spec(scene);
-    // mesh `convert` (the only kind so far): fem's tet or hex mesh, cell by cell.
-    const VolumeMesh volume = build_fem_mesh(spec.convert, geometry);
-    mesh_ = polyhedral_mesh_from_volume_mesh(volume);
+    // fem's tet or hex mesh cell by cell, or the geometry sliced: its grid's hexahedra
+    // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
+    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec.mesh, geometry);
+    mesh_ = std::move(built.sliced.mesh);
+    surface_ = std::move(built.surface);
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = std::move(built.load_surface);
+    mesh_facts_ = std::move(built.facts);
     const auto start = std::chrono::steady_clock::now();
     bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
     DiscretizationParts parts;
@@ -49,9 +51,6 @@ public:
       elements_ = &linear->elements();
       discretization_ = std::move(linear);
     }
-    // Surface loads act on the boundary of the domain integrated: the mesh's.
-    load_surface_ = boundary_surface(volume).surface;
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -97,6 +96,7 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    facts.update(mesh_facts_);
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
     return facts;
   }
@@ -114,6 +114,7 @@ private:
 
   SceneMaterials materials_;
   PolyhedralMesh mesh_;
+  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation

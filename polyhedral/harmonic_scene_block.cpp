@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <string>
 
+#include "shared/scene/scene_slicing.hpp"
+
 namespace altfem::harmonic {
 
 namespace {
@@ -13,10 +15,20 @@ using scene_schema::KeyRule;
 using scene_schema::ValueType;
 using scene_schema::Validator;
 
-// The volume mesh to convert is described exactly as a fem block (its rules, its
-// geometry-dependent defaults), except that its element defaults to the linear one the
-// conversion keeps: hex8 on a box's grid, tet4 otherwise; a mesh file keeps its own.
+// The volume mesh to convert (mesh `convert`, the default) is described exactly as a fem
+// block (its rules, its geometry-dependent defaults), except that its element defaults to
+// the linear one the conversion keeps: hex8 on a box's grid, tet4 otherwise; a mesh file
+// keeps its own. Mesh `slice` reads `slice` instead, and no `convert`.
 void complete_harmonic(const Validator& validator, const json& scene, json& harmonic, const std::string& pointer) {
+  complete_slice_key(validator, harmonic, pointer);
+  if (harmonic["mesh"] == "slice") {
+    if (harmonic.contains("convert"))
+      validator.fail(pointer + "/convert", "only with mesh 'convert', got mesh 'slice'");
+    return;
+  }
+  const MethodSceneBlock& fem = fem_scene_block();
+  if (!harmonic.contains("convert"))
+    harmonic["convert"] = validator.resolve(json::object(), *fem.rule, pointer + "/convert");
   json& convert = harmonic["convert"];
   const json& geometry = scene["geometry"];
   const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
@@ -24,7 +36,6 @@ void complete_harmonic(const Validator& validator, const json& scene, json& harm
     const bool grid = convert.contains("mesh") ? convert["mesh"] == "grid" : is_box;
     convert["element"] = grid ? "hex8" : "tet4";
   }
-  const MethodSceneBlock& fem = fem_scene_block();
   fem.complete(validator, scene, convert, pointer + "/convert");
 }
 
@@ -32,7 +43,8 @@ const scene_schema::ObjectRule& harmonic_rule() {
   static const scene_schema::ObjectRule rule{
       {{.key = "mesh", .type = ValueType::string, .default_value = "convert",
         .choices = scene_schema::names(harmonic_mesh_names)},
-       {.key = "convert", .type = ValueType::object, .default_value = json::object(), .object = fem_scene_block().rule},
+       {.key = "convert", .type = ValueType::object, .object = fem_scene_block().rule},
+       {.key = "slice", .type = ValueType::object, .object = &slicing_rule()},
        {.key = "samples_per_edge", .type = ValueType::integer, .default_value = MfsOptions{}.edge_samples,
         .lower = scene_schema::at_least_one},
        {.key = "kernel_offset", .type = ValueType::number, .default_value = MfsOptions{}.offset,
@@ -59,9 +71,12 @@ const MethodSceneBlock& harmonic_scene_block() {
 HarmonicSpec harmonic_spec(const Scene& scene) {
   const json harmonic = resolve_method_block(scene, harmonic_scene_block());
   HarmonicSpec spec;
-  spec.mesh = enum_from_name<HarmonicMeshKind>(harmonic_mesh_names, harmonic["mesh"]);
-  spec.convert = fem_spec_from_block(harmonic["convert"]);
-  spec.convert.pointer = "/discretization/harmonic/convert";
+  if (harmonic["mesh"] == "slice") {
+    spec.mesh.slicing = slicing_options_from_block(harmonic["slice"]);
+  } else {
+    spec.mesh.convert = fem_spec_from_block(harmonic["convert"]);
+    spec.mesh.convert.pointer = "/discretization/harmonic/convert";
+  }
   spec.mfs.edge_samples = harmonic["samples_per_edge"].get<int>();
   spec.mfs.offset = harmonic["kernel_offset"].get<double>();
   spec.quadrature_order = harmonic["quadrature_order"].get<int>();

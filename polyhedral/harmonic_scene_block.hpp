@@ -5,16 +5,15 @@
 #include <string_view>
 
 #include "polyhedral/mfs_options.hpp"
-#include "shared/fem/fem_scene_block.hpp"
+#include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/method_scene_block.hpp"
 
 namespace altfem::harmonic {
 
 /// Where the polyhedral mesh comes from. `convert`: a tet or hex mesh built like fem's
-/// (its block under `convert`), converted cell by cell. Hexahedral slicing joins later
-/// as a second value with its own block.
-enum class HarmonicMeshKind { convert };
-inline constexpr std::array<std::string_view, 1> harmonic_mesh_names{"convert"};
+/// (its block under `convert`), converted cell by cell; `slice`: the geometry sliced by a
+/// grid (Martin et al. 2008, §7; its options under `slice`, shared/scene/scene_slicing.hpp).
+inline constexpr std::array<std::string_view, 2> harmonic_mesh_names{"convert", "slice"};
 
 /// Which cells get an MFS basis. `automatic`: plain Tet4/Hex8 cells keep their closed-form
 /// linear/trilinear basis (the harmonic basis of a tet, and the trilinear one that the
@@ -23,8 +22,7 @@ enum class HarmonicBasisKind { automatic, mfs };
 inline constexpr std::array<std::string_view, 2> harmonic_basis_names{"auto", "mfs"};
 
 struct HarmonicSpec {
-  HarmonicMeshKind mesh = HarmonicMeshKind::convert;
-  FemSpec convert;          ///< the volume mesh `convert` converts (resolved fem block)
+  PolyhedralMeshSource mesh;  ///< `slice` (slicing set) or `convert` (the resolved fem block)
   MfsOptions mfs;           ///< edge_samples and offset from the block
   int quadrature_order = 2; ///< strength of each cell's rule (polyhedron_rule, tet_rule, hex_rule)
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;

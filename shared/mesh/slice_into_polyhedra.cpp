@@ -40,6 +40,10 @@ SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions
   compute_polyhedral_geometry(result.mesh);
   if (options.sliver_fraction > 0)
     result.merged_slivers = merge_slivers(result.mesh, options.sliver_fraction * std::pow(grid.cell_size, 3));
+  // Surface vertices inside a planar part of the boundary (a triangle fan's centre) are
+  // no corner of the merged face polygon: a conforming method would give them degrees of
+  // freedom with no support (zero mass and stiffness).
+  drop_unused_nodes(result.mesh);
   return result;
 }
 

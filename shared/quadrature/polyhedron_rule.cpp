@@ -12,11 +12,8 @@
 
 namespace altfem {
 
-namespace {
-
-// Triangles (as index triples into the face) of a simple planar polygon, by ear
-// clipping in its plane: unlike a fan, every triangle keeps the face's orientation, so a
-// cell star-shaped about the apex gives only positive tetrahedra.
+// Unlike a fan, every triangle keeps the face's orientation, so a cell star-shaped about
+// the apex gives only positive tetrahedra.
 std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices, const std::vector<int>& face) {
   const auto n = static_cast<int>(face.size());
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();  // Newell's normal
@@ -59,8 +56,6 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
   triangles.push_back({remaining[0], remaining[1], remaining[2]});
   return triangles;
 }
-
-}  // namespace
 
 PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength) {
   const QuadratureRule triangle = triangle_rule(strength);

@@ -8,6 +8,8 @@
 // otherwise some tetrahedra are inverted and carry negative weights, which integrate
 // exactly but are no rule a positive-weight simplifier may start from.
 #include <Eigen/Core>
+#include <array>
+#include <vector>
 
 #include "shared/geometry/polyhedron.hpp"
 
@@ -18,6 +20,10 @@ struct PolyhedronRule {
   Eigen::VectorXd weights; ///< #points, summing to the volume
   bool positive = true;    ///< every weight > 0
 };
+
+/// Triangles (index triples into `face`, in its orientation) of a simple planar polygon
+/// (face: indices of `vertices` rows, convex or not), by ear clipping in its plane.
+std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices, const std::vector<int>& face);
 
 /// A rule on a planar polygon in 3D (polygon: #vertices × 3, simple, convex or not):
 /// the triangle rule of `strength` on the triangles of its ear clipping. Exact to the

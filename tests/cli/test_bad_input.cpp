@@ -54,7 +54,12 @@ TEST_P(BadScene, CheckAndRunRejectWithOneLineAndNoOutput) {
   const auto scene = source_path("tests/data/bad/scene/" + GetParam().file);
   expect_bad_input(run_altfem({"check", scene.string()}), GetParam().file, GetParam().expected);
   const auto out = fresh_directory("bad-scene") / "run";
-  expect_bad_input(run_altfem({"run", scene.string(), "--method", "fem", "--out", out.string()}), GetParam().file,
+  // `run` resolves its own method's block only: a fixture whose message names another
+  // method's block runs that method.
+  std::string method = "fem";
+  for (const char* other : {"dg", "harmonic"})
+    if (GetParam().expected.find("/discretization/" + std::string(other) + "/") != std::string::npos) method = other;
+  expect_bad_input(run_altfem({"run", scene.string(), "--method", method, "--out", out.string()}), GetParam().file,
                    GetParam().expected);
   EXPECT_FALSE(std::filesystem::exists(out)) << "a rejected run left " << out;
 }

@@ -1,0 +1,38 @@
+#pragma once
+// The polyhedral mesh a polyhedral method (dg, harmonic) runs on, from either source its
+// scene block names: a tet or hex mesh built by the fem rules and converted cell by cell,
+// or the geometry sliced by a grid (Kaufmann et al. 2009, §9.2; Martin et al. 2008, §7).
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "shared/fem/fem_scene_block.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/mesh/surface_mesh.hpp"
+#include "shared/scene/scene_geometry.hpp"
+
+namespace altfem {
+
+struct PolyhedralMeshSource {
+  std::optional<SlicingOptions> slicing;  ///< set: hexahedral slicing; unset: conversion of `convert`
+  FemSpec convert;                        ///< the volume mesh converted (resolved fem rules)
+};
+
+struct PolyhedralSceneMesh {
+  /// The mesh, and when sliced the slicing's counts (all zero for a converted mesh).
+  SlicedMesh sliced;
+  /// The surface the method deforms and loads act on: the geometry's common surface, else
+  /// the boundary of the volume mesh (the converted one, or the scene's own when sliced).
+  SurfaceMesh surface;
+  /// The surface loads act on: the boundary of the domain integrated, as triangles each
+  /// on one cell's face (the converted volume mesh's boundary; the sliced mesh's boundary
+  /// faces, ear-clipped).
+  SurfaceMesh load_surface;
+  /// {"source": "convert" | "slice"} and, when sliced, "slicing": slicing_facts.
+  nlohmann::json facts;
+};
+
+/// Builds the mesh `source` describes for the scene's geometry. Throws InputError and
+/// NumericalError as build_fem_mesh and slice_scene_geometry do.
+PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& source, const SceneGeometry& geometry);
+
+}  // namespace altfem

@@ -1,0 +1,74 @@
+#include "shared/mesh/polyhedral_cell_location.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include <Eigen/Geometry>
+
+namespace altfem {
+
+namespace {
+
+// The solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee 1983).
+double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const double la = a.norm(), lb = b.norm(), lc = c.norm();
+  const double numerator = a.dot(b.cross(c));
+  const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
+  return 2 * std::atan2(numerator, denominator);
+}
+
+double distance_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (a + t * ab - x).norm();
+}
+
+// Distance from x to a planar simple polygon (loop of mesh nodes, convex or not): to
+// its plane when the projection falls inside (even-odd rule in the plane), else to the
+// nearest edge.
+double distance_to_polygon(const Eigen::MatrixXd& nodes, const std::vector<int>& loop, const Eigen::Vector3d& normal,
+                           const Eigen::Vector3d& x) {
+  const auto n = loop.size();
+  const Eigen::Vector3d origin = nodes.row(loop[0]).transpose();
+  const Eigen::Vector3d u = (nodes.row(loop[1]).transpose() - origin).normalized();
+  const Eigen::Vector3d v = normal.cross(u);
+  const Eigen::Vector2d p((x - origin).dot(u), (x - origin).dot(v));
+  bool inside = false;
+  double edge_distance = std::numeric_limits<double>::infinity();
+  for (size_t k = 0; k < n; ++k) {
+    const Eigen::Vector3d a3 = nodes.row(loop[k]).transpose(), b3 = nodes.row(loop[(k + 1) % n]).transpose();
+    const Eigen::Vector2d a((a3 - origin).dot(u), (a3 - origin).dot(v)), b((b3 - origin).dot(u), (b3 - origin).dot(v));
+    if ((a.y() > p.y()) != (b.y() > p.y()) && p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+      inside = !inside;
+    edge_distance = std::min(edge_distance, distance_to_segment(x, a3, b3));
+  }
+  return inside ? std::abs((x - origin).dot(normal)) : edge_distance;
+}
+
+}  // namespace
+
+double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x) {
+  double total = 0;
+  for (const auto& face : polyhedron.faces) {
+    const Eigen::Vector3d first = polyhedron.vertices.row(face[0]).transpose() - x;
+    for (size_t k = 1; k + 1 < face.size(); ++k)
+      total += solid_angle(first, polyhedron.vertices.row(face[k]).transpose() - x,
+                           polyhedron.vertices.row(face[k + 1]).transpose() - x);
+  }
+  return total / (4 * std::numbers::pi);
+}
+
+double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x) {
+  double distance = std::numeric_limits<double>::infinity();
+  for (int face : mesh.cell_faces[cell])
+    distance = std::min(distance, distance_to_polygon(mesh.nodes, mesh.faces[face], mesh.face_normals.row(face).transpose(), x));
+  return distance;
+}
+
+bool cell_holds(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x, double tolerance) {
+  return winding_number(cell_polyhedron(mesh, cell), x) > 0.5 || distance_to_cell_boundary(mesh, cell, x) <= tolerance;
+}
+
+}  // namespace altfem
