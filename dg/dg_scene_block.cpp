@@ -53,6 +53,10 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
     penalty["value"] = convention == PenaltyConvention::kaufmann ? 20.0
                        : convention == PenaltyConvention::mfem   ? double((degree + 1) * (degree + 1))
                                                                  : 1.0;
+  if (dg["warping"].get<bool>() && !linear)
+    validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" +
+                                             scene["material"]["model"].get<std::string>() +
+                                             "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite"))
     penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;
 }
@@ -75,6 +79,7 @@ const scene_schema::ObjectRule& dg_rule() {
       {{.key = "degree", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one,
         .upper = scene_schema::Bound{3.0, true}},
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
+       {.key = "warping", .type = ValueType::boolean, .default_value = false},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = scene_schema::names(fem_mesh_names)},
@@ -100,6 +105,7 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.warping = dg["warping"].get<bool>();
   spec.mesh.pointer = "/discretization/dg";
   spec.mesh.element = *element_type_from_name(dg["element"].get<std::string>());
   spec.mesh.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));

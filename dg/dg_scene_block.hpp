@@ -34,6 +34,8 @@ struct DgSpec {
   PenaltyConvention convention = PenaltyConvention::kaufmann;
   double penalty_value = 20;
   bool double_until_definite = true;
+  /// Corotated stiffness warping (Kaufmann et al. 2009 §6), linear material only.
+  bool warping = false;
   /// The volume mesh converted into polyhedra: element, mesh kind, resolution and
   /// max_cell_size as the `fem` block means them (quadrature_order and curved unused).
   FemSpec mesh;
