@@ -29,7 +29,7 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
   const auto n = static_cast<int>(values.size());
   FaceMatrixParts parts;
   parts.penalty = Eigen::MatrixXd::Zero(3 * n, 3 * n);
-  parts.strain = {parts.penalty, parts.penalty};
+  parts.consistency = {parts.penalty, parts.penalty};
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       // Penalty (26): η_f ∫ [[φ_a e_i]]·[[φ_b e_k]] = η_f s_a s_b δ_ik ∫ φ_a φ_b.
@@ -42,14 +42,13 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
       Eigen::Vector3d value_times_gradient;  // ∫ φ_a ∂_d φ_b
       for (int d = 0; d < 3; ++d) value_times_gradient[d] = integrate(values[a], gradients[b][d]);
       const double factor = -jump_sign[a] * average;
-      Eigen::MatrixXd& strain = parts.strain[jump_sign[b] > 0 ? 0 : 1];  // σ(u) of b's side
+      Eigen::MatrixXd& consistency = parts.consistency[jump_sign[b] > 0 ? 0 : 1];  // σ(u) of b's side
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
           if (!components[i]) continue;  // P v = 0 for an unprescribed test component
           const double traction = (i == k ? mu * value_times_gradient.dot(normal) : 0.0) +
                                   mu * normal[k] * value_times_gradient[i] + lambda * normal[i] * value_times_gradient[k];
-          strain(3 * a + i, 3 * b + k) += factor * traction;
-          strain(3 * b + k, 3 * a + i) += factor * traction;  // symmetry (25) = (24)ᵀ
+          consistency(3 * a + i, 3 * b + k) += factor * traction;  // (24); (25) is its transpose
         }
     }
   return parts;
@@ -60,7 +59,8 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
                                   double penalty, Flux flux, const std::array<bool, 3>& components) {
   const FaceMatrixParts parts =
       exact_face_matrix_parts(polygon, normal, minus, plus, lambda, mu, penalty, flux, components);
-  return parts.penalty + parts.strain[0] + parts.strain[1];
+  return parts.penalty + parts.consistency[0] + parts.consistency[0].transpose() + parts.consistency[1] +
+         parts.consistency[1].transpose();
 }
 
 }  // namespace altfem::dg

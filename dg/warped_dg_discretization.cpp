@@ -129,9 +129,15 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
       for (size_t j = 0; j < dofs.size(); ++j)
         if (matrices.penalty(i, j) != 0) penalty.emplace_back(dofs[i], dofs[j], matrices.penalty(i, j));
     if (settings.flux != Flux::interior_penalty) continue;
+    if (face.plus < 0) {
+      add(ranges, face.minus, std::move(matrices.consistency[0]));
+      parts.blocks.back().dirichlet = true;
+      continue;
+    }
     // §6.1: K_f1^± + K_f2^± warped with R_f^±, the rotation of the element whose strain they hold.
-    add(ranges, face.minus, std::move(matrices.strain[0]));
-    if (face.plus >= 0) add(ranges, face.plus, std::move(matrices.strain[1]));
+    for (int side : {0, 1})
+      add(ranges, side == 0 ? face.minus : face.plus,
+          matrices.consistency[side] + matrices.consistency[side].transpose());
   }
   const int size = system.dof_count();
   parts.penalty.resize(size, size);
@@ -167,20 +173,30 @@ Eigen::VectorXd WarpedDgDiscretization::gather(const Block& block, const Eigen::
 }
 
 Eigen::VectorXd WarpedDgDiscretization::corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation,
-                                                               const Eigen::VectorXd& u) const {
-  const Eigen::VectorXd rest = gather(block, rest_state_);
+                                                               const Eigen::VectorXd& u, bool displacement_only) const {
+  const Eigen::VectorXd rest = displacement_only ? Eigen::VectorXd::Zero(block.matrix.rows()).eval() : gather(block, rest_state_);
   Eigen::VectorXd z = gather(block, u) + rest;
   for (Eigen::Index a = 0; a < z.size(); a += 3) z.segment<3>(a) = rotation.transpose() * z.segment<3>(a);
   return z - rest;
 }
 
+Eigen::VectorXd WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
+                                                    const Eigen::VectorXd& u, double* energy) const {
+  const Eigen::VectorXd z = corotated_displacement(block, rotation, u);
+  if (!block.dirichlet) {
+    Eigen::VectorXd force = block.matrix * z;
+    if (energy) *energy += 0.5 * z.dot(force);
+    return force;
+  }
+  const Eigen::VectorXd jump = corotated_displacement(block, rotation, u, true);
+  if (energy) *energy += jump.dot(block.matrix * z);
+  return block.matrix * z + block.matrix.transpose() * jump;
+}
+
 double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
   double energy = 0.5 * u.dot(penalty_ * u);
-  for (const Block& block : blocks_) {
-    const Eigen::VectorXd z = corotated_displacement(block, rotation[block.element], u);
-    energy += 0.5 * z.dot(block.matrix * z);
-  }
+  for (const Block& block : blocks_) block_force(block, rotation[block.element], u, &energy);
   return energy;
 }
 
@@ -189,7 +205,7 @@ void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd&
   gradient = penalty_ * u;
   for (const Block& block : blocks_) {
     const Eigen::Matrix3d& R = rotation[block.element];
-    const Eigen::VectorXd force = block.matrix * corotated_displacement(block, R, u);  // K_S z_S
+    const Eigen::VectorXd force = block_force(block, R, u, nullptr);  // K_S z_S
     Eigen::Index position = 0;
     for (const DofRange& range : block.ranges)
       for (int k = 0; k < range.count; k += 3, position += 3)
@@ -203,7 +219,10 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
   Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
   values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
   for (const Block& block : blocks_) {
-    const Eigen::MatrixXd warped = rotate_blocks(block.matrix, rotation[block.element]);  // §6.3
+    const Eigen::MatrixXd symmetric =
+        block.dirichlet ? (block.matrix + block.matrix.transpose()).eval() : Eigen::MatrixXd();
+    const Eigen::MatrixXd warped =
+        rotate_blocks(block.dirichlet ? symmetric : block.matrix, rotation[block.element]);  // §6.3
     const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
     for (Eigen::Index column = 0; column < warped.cols(); ++column) {
       Eigen::Index row = 0;

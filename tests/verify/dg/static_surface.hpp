@@ -15,6 +15,7 @@ struct StaticSurface {
   int dofs;
   Eigen::MatrixXd vertices;      ///< #vertices × 3, at rest
   Eigen::MatrixXd displacement;  ///< #vertices × 3
+  Eigen::MatrixXi triangles;     ///< #triangles × 3
 };
 
 inline StaticSurface static_surface(const std::filesystem::path& scene_file, const MethodFactory& factory,
@@ -33,7 +34,8 @@ inline StaticSurface static_surface(const std::filesystem::path& scene_file, con
   State state{Eigen::VectorXd::Zero(discretization.dof_count()), Eigen::VectorXd::Zero(discretization.dof_count())};
   integrator.apply_constraints(state);
   integrator.step(state);
-  return {discretization.dof_count(), method->embedded_surface().vertices, method->embedded_displacement(state.displacement)};
+  return {discretization.dof_count(), method->embedded_surface().vertices, method->embedded_displacement(state.displacement),
+          method->embedded_surface().triangles};
 }
 
 /// The mean of displacement component `component` over the vertices whose coordinate
