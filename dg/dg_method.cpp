@@ -11,9 +11,12 @@
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/simulation/mls_embedding.hpp"
+#include "shared/simulation/stitched_embedding.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem::dg {
@@ -47,6 +50,20 @@ std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scen
   return faces;
 }
 
+// Per node the longest mesh edge at it: the MLS sample spacing (Kaufmann et al. 2009 §7,
+// "support radius proportional to the local sampling density at x_i").
+Eigen::VectorXd node_spacing(const PolyhedralMesh& mesh) {
+  Eigen::VectorXd spacing = Eigen::VectorXd::Zero(mesh.nodes.rows());
+  for (const auto& loop : mesh.faces)
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      const double length = (mesh.nodes.row(a) - mesh.nodes.row(b)).norm();
+      spacing[a] = std::max(spacing[a], length);
+      spacing[b] = std::max(spacing[b], length);
+    }
+  return spacing;
+}
+
 // K positive definite, up to its rigid motions when no condition holds the body: K + δM
 // with δ = 1e-10 · max K_ii / max M_ii admits a Cholesky factor (CHOLMOD).
 bool positive_definite(const DgLinearSystem& system) {
@@ -74,8 +91,8 @@ public:
                                          std::to_string(scene.materials.size()) + " (use fem, fcm or harmonic)"));
     material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
                               scene.material.poisson_ratio, scene.material.density);
-    const VolumeMesh volume_mesh = build_fem_mesh(spec_.mesh, geometry);
-    mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh);
+    volume_mesh_ = build_fem_mesh(spec_.mesh, geometry);
+    mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh_);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
     // Warping rotates Nitsche's consistency terms with the boundary element, which the
@@ -122,9 +139,18 @@ public:
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh_).surface;
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
-    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+    switch (spec_.embedding) {
+      case Embedding::element: embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices); break;
+      case Embedding::stitched:
+        lagrange_ = std::make_unique<LagrangeBasisEvaluator>(volume_mesh_);
+        stitched_ = std::make_unique<StitchedEmbedding>(*evaluator_, volume_mesh_.nodes, *lagrange_, surface_.vertices);
+        break;
+      case Embedding::mls:
+        mls_ = std::make_unique<MlsEmbedding>(*evaluator_, mesh_.nodes, node_spacing(mesh_), surface_.vertices);
+        break;
+    }
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -140,7 +166,9 @@ public:
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
+    return mls_ ? mls_->displacement(u) : stitched_ ? stitched_->displacement(u) : embedding_->displacement(u);
+  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return system_->interpolate(field);
   }
@@ -155,7 +183,7 @@ public:
     return quadrature;
   }
   nlohmann::json facts() const override {
-    return {{"degree", spec_.degree},
+    nlohmann::json facts = {{"degree", spec_.degree},
             {"flux", flux_names[static_cast<int>(spec_.flux)]},
             {"penalty",
              {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
@@ -164,8 +192,15 @@ public:
               {"eta_pa", settings_.penalty}}},
             {"warping", spec_.warping},
             {"surface_vertices", surface_.vertices.rows()},
-            {"surface_vertices_outside_mesh", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}};
+            {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}};
+    const BasisEmbedding* located = embedding_ ? embedding_.get() : stitched_ ? &stitched_->interpolation() : nullptr;
+    if (located) {
+      facts["surface_vertices_outside_mesh"] = located->outside_count();
+      facts["max_outside_distance"] = located->max_outside_distance();
+    } else {
+      facts["mls_max_samples_per_vertex"] = mls_->max_samples_per_point();
+    }
+    return facts;
   }
 
 private:
@@ -182,6 +217,7 @@ private:
   DgSpec spec_;
   DgSettings settings_;
   int doublings_ = 0;
+  VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
@@ -191,7 +227,11 @@ private:
   const Discretization* discretization_ = nullptr;
   SurfaceMesh surface_;
   std::unique_ptr<MonomialBasisEvaluator> evaluator_;
+  // One of the three embeddings of §7, as spec_.embedding says.
   std::unique_ptr<BasisEmbedding> embedding_;
+  std::unique_ptr<LagrangeBasisEvaluator> lagrange_;  // over volume_mesh_
+  std::unique_ptr<StitchedEmbedding> stitched_;
+  std::unique_ptr<MlsEmbedding> mls_;
   double integration_seconds_ = 0;
 };
 

@@ -80,6 +80,8 @@ const scene_schema::ObjectRule& dg_rule() {
         .upper = scene_schema::Bound{3.0, true}},
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
+       {.key = "embedding", .type = ValueType::string, .default_value = "mls",
+        .choices = scene_schema::names(embedding_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = scene_schema::names(fem_mesh_names)},
@@ -106,6 +108,7 @@ DgSpec dg_spec(const Scene& scene) {
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
   spec.warping = dg["warping"].get<bool>();
+  spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   spec.mesh.pointer = "/discretization/dg";
   spec.mesh.element = *element_type_from_name(dg["element"].get<std::string>());
   spec.mesh.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
