@@ -50,20 +50,6 @@ std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scen
   return faces;
 }
 
-// Per node the longest mesh edge at it: the MLS sample spacing (Kaufmann et al. 2009 §7,
-// "support radius proportional to the local sampling density at x_i").
-Eigen::VectorXd node_spacing(const PolyhedralMesh& mesh) {
-  Eigen::VectorXd spacing = Eigen::VectorXd::Zero(mesh.nodes.rows());
-  for (const auto& loop : mesh.faces)
-    for (size_t k = 0; k < loop.size(); ++k) {
-      const int a = loop[k], b = loop[(k + 1) % loop.size()];
-      const double length = (mesh.nodes.row(a) - mesh.nodes.row(b)).norm();
-      spacing[a] = std::max(spacing[a], length);
-      spacing[b] = std::max(spacing[b], length);
-    }
-  return spacing;
-}
-
 // K positive definite, up to its rigid motions when no condition holds the body: K + δM
 // with δ = 1e-10 · max K_ii / max M_ii admits a Cholesky factor (CHOLMOD).
 bool positive_definite(const DgLinearSystem& system) {
@@ -148,7 +134,7 @@ public:
         stitched_ = std::make_unique<StitchedEmbedding>(*evaluator_, volume_mesh_.nodes, *lagrange_, surface_.vertices);
         break;
       case Embedding::mls:
-        mls_ = std::make_unique<MlsEmbedding>(*evaluator_, mesh_.nodes, node_spacing(mesh_), surface_.vertices);
+        mls_ = std::make_unique<MlsEmbedding>(*evaluator_, mesh_.nodes, longest_edge_at_nodes(mesh_), surface_.vertices);
         break;
     }
   }

@@ -96,6 +96,18 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
   }
 }
 
+Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh) {
+  Eigen::VectorXd spacing = Eigen::VectorXd::Zero(mesh.nodes.rows());
+  for (const auto& loop : mesh.faces)
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      const double length = (mesh.nodes.row(a) - mesh.nodes.row(b)).norm();
+      spacing[a] = std::max(spacing[a], length);
+      spacing[b] = std::max(spacing[b], length);
+    }
+  return spacing;
+}
+
 Eigen::MatrixXd MlsEmbedding::displacement(const Eigen::VectorXd& u) const {
   const Eigen::MatrixXd stitched = stitched_.displacement(u);
   const auto count = static_cast<Eigen::Index>(offsets_.size() - 1);

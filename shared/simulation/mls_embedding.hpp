@@ -12,6 +12,7 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 
 namespace altfem {
@@ -47,5 +48,9 @@ private:
   std::vector<double> weights_;
   int max_samples_per_point_ = 0;
 };
+
+/// Per node of a polyhedral mesh the longest mesh edge at it (#nodes): the MLS sample
+/// spacing at the mesh nodes.
+Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh);
 
 }  // namespace altfem
