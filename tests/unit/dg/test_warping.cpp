@@ -7,8 +7,13 @@
 
 #include <Eigen/Geometry>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 
+#include "dg/dg_method.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
+#include "shared/common/error.hpp"
+#include "shared/scene/scene_geometry.hpp"
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
@@ -102,6 +107,38 @@ TEST(DgWarping, ARotatedAffineStretchGivesTheStretchForcesRotated) {
     for (Eigen::Index a = 0; a < expected.size(); a += 3) expected.segment<3>(a) = quarter_turn * expected.segment<3>(a);
     EXPECT_LE((force - expected).norm(), 1e-10 * expected.norm()) << mesh.name;
   }
+}
+
+// What warping does not cover in this build is refused with the key named: a moving
+// Dirichlet condition (its data load would have to follow the rotation) and a nonlinear
+// material (already rotation-invariant).
+TEST(DgWarping, MovingConditionsAndNonlinearMaterialsAreRefused) {
+  const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
+  std::filesystem::create_directories(folder);
+  const auto write = [&](const std::string& name, const std::string& model, const std::string& motion) {
+    const auto file = folder / (name + ".json");
+    std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
+      "material": { "model": ")" << model << R"(", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+      "boundary_conditions": [ { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } },
+        "motion": )" << motion << R"( } ],
+      "time": { "static": true },
+      "discretization": { "dg": { "warping": true, "flux": "babuska_zlamal", "resolution": [2, 1, 1] } } })";
+    return file;
+  };
+  const auto message = [](const std::filesystem::path& file) -> std::string {
+    try {
+      const Scene scene = load_scene(file);
+      make_dg_method(scene, load_scene_geometry(scene));
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  const std::string moving =
+      message(write("warping_moving", "linear", R"({ "kind": "translate", "displacement": [0.1, 0, 0], "duration": 1 })"));
+  EXPECT_NE(moving.find("/boundary_conditions/0/motion"), std::string::npos) << moving;
+  const std::string nonlinear = message(write("warping_nonlinear", "neo_hookean", R"({ "kind": "fixed" })"));
+  EXPECT_NE(nonlinear.find("/discretization/dg/warping"), std::string::npos) << nonlinear;
 }
 
 }  // namespace
