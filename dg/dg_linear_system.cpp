@@ -2,6 +2,8 @@
 
 #include <Eigen/QR>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include "dg/exact_element_matrices.hpp"
 #include "shared/geometry/polygon_moments.hpp"
@@ -32,13 +34,25 @@ void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::Matri
 
 }  // namespace
 
-DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings)
-    : cells_(std::move(cells)), faces_(std::move(faces)), settings_(settings) {
+DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
+                               DgCellMaterials cell_materials)
+    : cells_(std::move(cells)), faces_(std::move(faces)), settings_(settings), cell_materials_(std::move(cell_materials)) {
+  if (cell_materials_.ids.size() != (cell_materials_.materials.empty() ? 0 : cells_.size()))
+    throw std::invalid_argument("DgLinearSystem: " + std::to_string(cell_materials_.ids.size()) +
+                                " material ids for " + std::to_string(cell_materials_.materials.size()) +
+                                " materials and " + std::to_string(cells_.size()) + " cells");
+  for (int id : cell_materials_.ids)
+    if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
+      throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
+                                  std::to_string(cell_materials_.materials.size()) + " materials");
   offsets_.push_back(0);
   std::vector<Eigen::Triplet<double>> triplets;
-  for (const Polyhedron& cell : cells_) {
+  for (size_t c = 0; c < cells_.size(); ++c) {
+    const Polyhedron& cell = cells_[c];
+    const DgMaterial cell_material = material(static_cast<int>(c));
     bases_.push_back(cell_basis(cell, settings.degree));
-    ElementMatrices matrices = exact_element_matrices(cell, bases_.back(), settings.lambda, settings.mu, settings.density);
+    ElementMatrices matrices =
+        exact_element_matrices(cell, bases_.back(), cell_material.lambda, cell_material.mu, cell_material.density);
     volumes_.push_back(matrices.integrals[0]);
     masses_.push_back(std::move(matrices.mass));
     integrals_.conservativeResize(offsets_.back() + bases_.back().size());
@@ -51,9 +65,11 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   for (const DgFace& face : faces_) {
     if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
     const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
-    const Eigen::MatrixXd matrix = exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
-                                                     settings.lambda, settings.mu, face_penalty(face), settings.flux,
-                                                     face.components);
+    const DgMaterial minus_material = material(face.minus);
+    const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
+    const Eigen::MatrixXd matrix = exact_face_matrix(
+        face.polygon, face.normal, bases_[face.minus], plus, {minus_material.lambda, minus_material.mu},
+        {plus_material.lambda, plus_material.mu}, face_penalty(face), settings.flux, face.components);
     std::vector<int> dofs;
     for (int side : {face.minus, face.plus}) {
       if (side < 0) continue;
@@ -67,10 +83,16 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
 
 double DgLinearSystem::face_penalty(const DgFace& face) const {
   const double area = (face.polygon.rows() >= 3) ? polygon_area_vector(face.polygon).norm() : 0.0;
-  double inverse_volumes = 1.0 / volumes_[face.minus];
-  if (face.plus >= 0) inverse_volumes += 1.0 / volumes_[face.plus];
+  // Eq. (20) with each side's own η (one material: η · (1/vol(K⁻) + 1/vol(K⁺))).
+  double penalty_over_volumes = material(face.minus).penalty / volumes_[face.minus];
+  if (face.plus >= 0) penalty_over_volumes += material(face.plus).penalty / volumes_[face.plus];
   const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
-  return factor * settings_.penalty * area * inverse_volumes;  // eq. (20)
+  return factor * area * penalty_over_volumes;
+}
+
+DgMaterial DgLinearSystem::material(int cell) const {
+  if (cell_materials_.materials.empty()) return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty};
+  return cell_materials_.materials[material_id(cell)];
 }
 
 Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
@@ -153,6 +175,7 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const 
   for (const DgFace& face : faces_) {
     if (face.plus >= 0 || face.condition < 0) continue;
     const MonomialBasis& basis = bases_[face.minus];
+    const DgMaterial side = material(face.minus);
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
     const double penalty = face_penalty(face);
     const Eigen::Vector3d& n = face.normal;
@@ -168,7 +191,7 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const 
         const Eigen::Vector3d grad = gradients.row(a).transpose();
         Eigen::Vector3d entry = penalty * phi[a] * g;
         if (settings_.flux == Flux::interior_penalty)
-          entry -= settings_.mu * (grad.dot(n) * g + g.dot(grad) * n) + settings_.lambda * g.dot(n) * grad;
+          entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
         load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
       }
     }

@@ -26,6 +26,13 @@ struct DgFace {
   std::array<bool, 3> components{true, true, true};
 };
 
+/// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ).
+struct DgMaterial {
+  double lambda = 1, mu = 1;
+  double density = 1;
+  double penalty = 20;
+};
+
 struct DgSettings {
   int degree = 2;
   Flux flux = Flux::interior_penalty;
@@ -37,13 +44,24 @@ struct DgSettings {
   double boundary_penalty_factor = 1;
 };
 
+/// Several materials (a piecewise-constant elasticity tensor): cell c takes
+/// materials[ids[c]]; a face's consistency terms take each side's own λ, μ and its
+/// penalty each side's η: η_f = c_f · area(f) · (η⁻/vol(K⁻) + η⁺/vol(K⁺)), eq. (20) with η
+/// inside the sum (MFEM's DGElasticityIntegrator sums its κ(λ+2μ) over the sides the same
+/// way). Empty: every cell has the settings' penalty, lambda, mu and density.
+struct DgCellMaterials {
+  std::vector<DgMaterial> materials;
+  std::vector<int> ids;  ///< #cells, each < materials.size()
+};
+
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 /// Dirichlet data g(condition, x): the displacement condition `condition` prescribes at x.
 using ConditionData = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&)>;
 
 class DgLinearSystem {
 public:
-  DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings);
+  DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
+                 DgCellMaterials cell_materials = {});
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
@@ -57,6 +75,10 @@ public:
   /// η_f of eq. (20) for one of faces() (× boundary_penalty_factor on a boundary face).
   double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
+  /// The index into cell_materials.materials of a cell's material (0 with a single material).
+  int material_id(int cell) const { return cell_materials_.ids.empty() ? 0 : cell_materials_.ids[cell]; }
+  /// A cell's material: cell_materials.materials[material_id(cell)], or the settings' one.
+  DgMaterial material(int cell) const;
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
 
@@ -81,6 +103,7 @@ private:
   std::vector<Polyhedron> cells_;
   std::vector<DgFace> faces_;
   DgSettings settings_;
+  DgCellMaterials cell_materials_;
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
   std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square

@@ -16,6 +16,7 @@
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/simulation/mls_embedding.hpp"
+#include "shared/simulation/scene_materials.hpp"
 #include "shared/simulation/stitched_embedding.hpp"
 #include "shared/solve/linear_solver.hpp"
 
@@ -68,15 +69,7 @@ bool positive_definite(const DgLinearSystem& system) {
 
 class DgMethod final : public MethodInstance {
 public:
-  DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)) {
-    // The exact integration has one λ, μ for all cells; material regions are fem's,
-    // fcm's and harmonic's so far.
-    if (scene.materials.size() > 1)
-      throw InputError(input_message(scene.file.string(), "/materials",
-                                     "dg supports one material in this build, got " +
-                                         std::to_string(scene.materials.size()) + " (use fem, fcm or harmonic)"));
-    material_ = make_material(*material_model_from_name(scene.material.model), scene.material.youngs_modulus,
-                              scene.material.poisson_ratio, scene.material.density);
+  DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)), materials_(scene) {
     volume_mesh_ = build_fem_mesh(spec_.mesh, geometry);
     mesh_ = polyhedral_mesh_from_volume_mesh(volume_mesh_);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
@@ -89,20 +82,20 @@ public:
                                        "discretization.dg.warping needs 'fixed' Dirichlet conditions in this build"));
 
     const auto start = std::chrono::steady_clock::now();
-    const auto lame = material_->lame();
-    const FacePenalty penalty = face_penalty(spec_, scene.material.youngs_modulus, lame.lambda, lame.mu);
-    settings_ = {spec_.degree, spec_.flux, penalty.eta, lame.lambda, lame.mu, scene.material.density,
-                 penalty.boundary_factor};
+    cell_materials_ = cell_materials(scene, corner_centroids(volume_mesh_));
+    const DgMaterial& first = cell_materials_.materials.front();
+    settings_ = {spec_.degree, spec_.flux, first.penalty, first.lambda, first.mu, first.density, boundary_factor(scene)};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
-    system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_);
+    system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
     // definite" (K of the linear material; Babuška–Zlámal is definite for any η).
-    while (spec_.double_until_definite && material_->is_linear() && !positive_definite(*system_)) {
+    while (spec_.double_until_definite && linear() && !positive_definite(*system_)) {
       if (++doublings_ > max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");
       settings_.penalty *= 2;
-      system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_);
+      for (DgMaterial& material : cell_materials_.materials) material.penalty *= 2;
+      system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     }
     std::vector<std::vector<int>> element_dofs(mesh_.cell_count());
     for (int cell = 0; cell < mesh_.cell_count(); ++cell)
@@ -110,22 +103,23 @@ public:
         element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
     if (spec_.warping) {
-      linear_ = std::make_unique<WarpedDgDiscretization>(*system_, settings_,
-                                                         scene.material.density * system_->function_integrals(),
+      linear_ = std::make_unique<WarpedDgDiscretization>(*system_, settings_, density_integrals(),
                                                          std::move(element_dofs), external_force);
       discretization_ = linear_.get();
-    } else if (material_->is_linear()) {
-      linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(),
-                                                         scene.material.density * system_->function_integrals(),
+    } else if (linear()) {
+      linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
                                                          std::move(element_dofs), external_force);
       discretization_ = linear_.get();
     } else {
-      tabulated_ = make_tabulated_dg(*system_, *material_, external_force, block_jacobi_factory(std::move(element_dofs)));
+      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(), external_force,
+                                     block_jacobi_factory(std::move(element_dofs)));
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume_mesh_).surface;
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = boundary_surface(volume_mesh_).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
     switch (spec_.embedding) {
       case Embedding::element: embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices); break;
@@ -151,6 +145,7 @@ public:
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
     return mls_ ? mls_->displacement(u) : stitched_ ? stitched_->displacement(u) : embedding_->displacement(u);
@@ -190,6 +185,42 @@ public:
   }
 
 private:
+  // Every material of the scene linear: the exact integration (else the tabulated one).
+  bool linear() const {
+    for (const Material* material : materials_.pointers())
+      if (!material->is_linear()) return false;
+    return true;
+  }
+
+  // The scene's materials as the system's: λ, μ, ρ and the convention's η of each
+  // (docs/scene-schema.md, "Several materials"), each cell's by the centroid of its
+  // corners (#cells × 3), as every method assigns them.
+  DgCellMaterials cell_materials(const Scene& scene, const Eigen::MatrixX3d& centroids) const {
+    DgCellMaterials result;
+    for (size_t m = 0; m < scene.materials.size(); ++m) {
+      const LameParameters lame = materials_.pointers()[m]->lame();
+      const double eta = face_penalty(spec_, scene.materials[m].youngs_modulus, lame.lambda, lame.mu).eta;
+      result.materials.push_back({lame.lambda, lame.mu, scene.materials[m].density, eta});
+    }
+    result.ids = materials_.ids_of(centroids);
+    return result;
+  }
+
+  // c_f of Dirichlet faces: the convention's, the same for every material.
+  double boundary_factor(const Scene& scene) const {
+    const LameParameters lame = materials_.pointers().front()->lame();
+    return face_penalty(spec_, scene.material.youngs_modulus, lame.lambda, lame.mu).boundary_factor;
+  }
+
+  // ∫ ρ φ_a dV of every function, with its cell's density.
+  Eigen::VectorXd density_integrals() const {
+    Eigen::VectorXd integrals = system_->function_integrals();
+    for (int cell = 0; cell < mesh_.cell_count(); ++cell)
+      integrals.segment(system_->offset(cell), system_->offset(cell + 1) - system_->offset(cell)) *=
+          system_->material(cell).density;
+    return integrals;
+  }
+
   // The data part of the weakly imposed conditions at a time (§4.2): zero while every
   // motion is `fixed`.
   Eigen::VectorXd weak_condition_load(double time) const {
@@ -201,17 +232,18 @@ private:
   }
 
   DgSpec spec_;
-  DgSettings settings_;
+  DgSettings settings_;  // with the first material's λ, μ, ρ, η
+  DgCellMaterials cell_materials_;
   int doublings_ = 0;
   VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
-  std::unique_ptr<Material> material_;
+  SceneMaterials materials_;
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<MonomialBasisEvaluator> evaluator_;
   // One of the three embeddings of §7, as spec_.embedding says.
   std::unique_ptr<BasisEmbedding> embedding_;

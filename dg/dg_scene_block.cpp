@@ -38,11 +38,16 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
 
   // Interior penalty's consistency terms are linear-elastic in this build
   // (dg/tabulated_dg.hpp): other materials default to, and need, Babuška–Zlámal.
-  const bool linear = scene["material"]["model"] == "linear";
+  // With `materials`, every one of them must be linear (an absent model is the default, not linear).
+  std::string nonlinear_model;
+  for (const json& material : scene.contains("materials") ? scene["materials"] : json::array({scene["material"]}))
+    if (nonlinear_model.empty() && !(material.contains("model") && material["model"] == "linear"))
+      nonlinear_model = material.contains("model") ? material["model"].get<std::string>() : "the default model";
+  const bool linear = nonlinear_model.empty();
   if (!dg.contains("flux")) dg["flux"] = linear ? "interior_penalty" : "babuska_zlamal";
   if (!linear && dg["flux"] == "interior_penalty")
     validator.fail(pointer + "/flux", "'interior_penalty' needs material model 'linear' in this build, got '" +
-                                          scene["material"]["model"].get<std::string>() + "' (use 'babuska_zlamal')");
+                                          nonlinear_model + "' (use 'babuska_zlamal')");
 
   json& penalty = dg["penalty"];
   if (!penalty.contains("convention")) penalty["convention"] = "kaufmann";
@@ -54,8 +59,7 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
                        : convention == PenaltyConvention::mfem   ? double((degree + 1) * (degree + 1))
                                                                  : 1.0;
   if (dg["warping"].get<bool>() && !linear)
-    validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" +
-                                             scene["material"]["model"].get<std::string>() +
+    validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite"))
     penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;

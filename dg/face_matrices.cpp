@@ -5,7 +5,8 @@
 namespace altfem::dg {
 
 FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                        const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
+                                        const MonomialBasis& minus, const MonomialBasis* plus,
+                                        const LameParameters& minus_lame, const LameParameters& plus_lame,
                                         double penalty, Flux flux, const std::array<bool, 3>& components) {
   const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
   const Eigen::Vector3d centre = minus.centre();
@@ -18,6 +19,7 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
   std::vector<Polynomial> values;
   std::vector<std::array<Polynomial, 3>> gradients;
   std::vector<double> jump_sign;
+  std::vector<LameParameters> lame;  // of each function's side
   const double average = plus ? 0.5 : 1.0;
   for (const MonomialBasis* side : {&minus, plus}) {
     if (side == nullptr) continue;
@@ -25,6 +27,7 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
     values.insert(values.end(), functions.values.begin(), functions.values.end());
     gradients.insert(gradients.end(), functions.gradients.begin(), functions.gradients.end());
     jump_sign.insert(jump_sign.end(), functions.values.size(), side == &minus ? 1.0 : -1.0);
+    lame.insert(lame.end(), functions.values.size(), side == &minus ? minus_lame : plus_lame);
   }
   const auto n = static_cast<int>(values.size());
   FaceMatrixParts parts;
@@ -38,10 +41,11 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
         if (components[i]) parts.penalty(3 * a + i, 3 * b + i) += jumps;
       if (flux != Flux::interior_penalty) continue;
       // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
-      //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b.
+      //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b, with u's side's λ, μ.
       Eigen::Vector3d value_times_gradient;  // ∫ φ_a ∂_d φ_b
       for (int d = 0; d < 3; ++d) value_times_gradient[d] = integrate(values[a], gradients[b][d]);
       const double factor = -jump_sign[a] * average;
+      const double lambda = lame[b].lambda, mu = lame[b].mu;
       Eigen::MatrixXd& consistency = parts.consistency[jump_sign[b] > 0 ? 0 : 1];  // σ(u) of b's side
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
@@ -55,10 +59,11 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
 }
 
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                  const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
-                                  double penalty, Flux flux, const std::array<bool, 3>& components) {
+                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
+                                  const LameParameters& plus_lame, double penalty, Flux flux,
+                                  const std::array<bool, 3>& components) {
   const FaceMatrixParts parts =
-      exact_face_matrix_parts(polygon, normal, minus, plus, lambda, mu, penalty, flux, components);
+      exact_face_matrix_parts(polygon, normal, minus, plus, minus_lame, plus_lame, penalty, flux, components);
   return parts.penalty + parts.consistency[0] + parts.consistency[0].transpose() + parts.consistency[1] +
          parts.consistency[1].transpose();
 }

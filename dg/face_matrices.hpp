@@ -12,6 +12,7 @@
 #include <array>
 
 #include "dg/monomial_basis.hpp"
+#include "shared/material/lame_parameters.hpp"
 
 namespace altfem::dg {
 
@@ -22,9 +23,20 @@ enum class Flux { interior_penalty, babuska_zlamal };
 /// planar; normal: unit, minus → plus; penalty: η_f of eq. (20). components: on a
 /// boundary face, the components the condition prescribes — with P = diag(components)
 /// the terms become −∫ Pv·σ(u)n − ∫ Pu·σ(v)n + η_f ∫ Pu·Pv (all three on interior faces).
+/// minus_lame, plus_lame: each side's Lamé parameters; the stress of a side's functions
+/// in {σ} takes that side's (a material interface: ½(σ⁻(u⁻) + σ⁺(u⁺)) with σ^± = C^± ε).
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                  const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
-                                  double penalty, Flux flux, const std::array<bool, 3>& components = {true, true, true});
+                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
+                                  const LameParameters& plus_lame, double penalty, Flux flux,
+                                  const std::array<bool, 3>& components = {true, true, true});
+
+/// One material on both sides.
+inline Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                         const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
+                                         double penalty, Flux flux,
+                                         const std::array<bool, 3>& components = {true, true, true}) {
+  return exact_face_matrix(polygon, normal, minus, plus, {lambda, mu}, {lambda, mu}, penalty, flux, components);
+}
 
 /// exact_face_matrix split for stiffness warping (Kaufmann et al. 2009 §6.1): the
 /// penalty term K_f3 (26), and per side s (0 minus, 1 plus) K_f1^s = −½∫[[v]]·σ^s(u)n
@@ -37,7 +49,8 @@ struct FaceMatrixParts {
   std::array<Eigen::MatrixXd, 2> consistency;
 };
 FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                        const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
+                                        const MonomialBasis& minus, const MonomialBasis* plus,
+                                        const LameParameters& minus_lame, const LameParameters& plus_lame,
                                         double penalty, Flux flux,
                                         const std::array<bool, 3>& components = {true, true, true});
 

@@ -72,7 +72,7 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
     Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
     tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
     elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()), values,
-                 gradients);
+                 gradients, system.material_id(cell));
     if (points) cell_points.push_back(rule.points);
   }
   if (points) {
@@ -83,13 +83,13 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
   return elements;
 }
 
-TabulatedDg make_tabulated_dg(const DgLinearSystem& system, const Material& material,
+TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
                               PreconditionerFactory preconditioner) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
   parts.elements = tabulate_dg_cells(system, strength);
-  parts.materials = {&material};
+  parts.materials = std::move(materials);
   TabulatedDg result;
   FaceTerms terms = tabulate_faces(system, strength);
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));

@@ -20,14 +20,16 @@ struct TabulatedDg {
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 
-/// Every cell's monomials at the points of polyhedron_rule(cell, strength); the points'
-/// positions (#points × 3, in packed order) into `points` when it is given.
+/// Every cell's monomials at the points of polyhedron_rule(cell, strength), each cell with
+/// its system.material_id; the points' positions (#points × 3, in packed order) into
+/// `points` when it is given.
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points = nullptr);
 
 /// The discretization of `system`'s cells and faces (its bases, penalties and Dirichlet
-/// faces) with `material` (not owned); the rule strength is 2k (mass and body-force loads
-/// exact). external_force: the weak conditions' data load at a time; preconditioner: block Jacobi.
-TabulatedDg make_tabulated_dg(const DgLinearSystem& system, const Material& material,
+/// faces) with `materials` (not owned; cell c takes materials[system.material_id(c)]); the
+/// rule strength is 2k (mass and body-force loads exact). external_force: the weak
+/// conditions' data load at a time; preconditioner: block Jacobi.
+TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
                               PreconditionerFactory preconditioner);
 

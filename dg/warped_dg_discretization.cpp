@@ -111,17 +111,19 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
     return Range{3 * system.offset(cell), 3 * (system.offset(cell + 1) - system.offset(cell))};
   };
   for (int cell = 0; cell < system.cell_count(); ++cell) {
-    ElementMatrices matrices =
-        exact_element_matrices(system.cell(cell), system.basis(cell), settings.lambda, settings.mu, 1.0);
+    const DgMaterial material = system.material(cell);
+    ElementMatrices matrices = exact_element_matrices(system.cell(cell), system.basis(cell), material.lambda, material.mu, 1.0);
     parts.affine_fit.push_back(affine_fit_gradients(matrices.mass, system.basis(cell)));
     add({range_of(cell)}, cell, std::move(matrices.stiffness));  // eq. (29)
   }
   for (const DgFace& face : system.faces()) {
     if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
     const MonomialBasis* plus = face.plus >= 0 ? &system.basis(face.plus) : nullptr;
-    FaceMatrixParts matrices =
-        exact_face_matrix_parts(face.polygon, face.normal, system.basis(face.minus), plus, settings.lambda, settings.mu,
-                                system.face_penalty(face), settings.flux, face.components);
+    const DgMaterial minus_material = system.material(face.minus);
+    const DgMaterial plus_material = face.plus >= 0 ? system.material(face.plus) : minus_material;
+    FaceMatrixParts matrices = exact_face_matrix_parts(
+        face.polygon, face.normal, system.basis(face.minus), plus, {minus_material.lambda, minus_material.mu},
+        {plus_material.lambda, plus_material.mu}, system.face_penalty(face), settings.flux, face.components);
     std::vector<Range> ranges{range_of(face.minus)};
     if (face.plus >= 0) ranges.push_back(range_of(face.plus));
     const std::vector<int> dofs = dofs_of(ranges);

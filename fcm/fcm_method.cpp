@@ -29,10 +29,11 @@ public:
     const FcmSpec spec = fcm_spec(scene);
     quadrature_strength_ = spec.options.quadrature_strength;
     const std::string file = scene.file.string();
-    // The background grid over the geometry's bounds (§3.2).
-    const Eigen::AlignedBox3d box = background_box(geometry.bounds, spec.margin);
-    resolution_ = spec.resolution.value_or(default_grid_resolution(box.sizes()));
-    VolumeMesh background = structured_grid(box, resolution_, spec.cell);
+    // The background grid over the geometry's bounds, or the user's mesh (§3.2).
+    BackgroundMesh generated = background_mesh(spec, geometry.bounds);
+    VolumeMesh background = std::move(generated.mesh);
+    resolution_ = generated.resolution;
+    background_cells_ = background.cells.rows();
 
     // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
     // or shape at the same default size as fem's, so both deform the same surface.
@@ -63,7 +64,9 @@ public:
 
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(embedded_).surface;
+    // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
+    load_surface_ = boundary_surface(embedded_).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     if (pieces_) evaluator_ = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
     else evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
@@ -92,6 +95,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
@@ -108,7 +112,9 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
-    facts.update({{"background_resolution", {resolution_.x(), resolution_.y(), resolution_.z()}},
+    facts.update({{"background_cells", background_cells_},
+                   {"background_resolution", resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()}
+                                                         : nlohmann::json("file")},
             {"cells", {{"inside", fcm_.counts.inside},
                        {"cut", fcm_.counts.cut},
                        {"discarded", fcm_.counts.discarded},
@@ -127,7 +133,8 @@ public:
 
 private:
   SceneMaterials materials_;
-  Eigen::Vector3i resolution_;
+  std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
+  Eigen::Index background_cells_ = 0;
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
   VolumeMesh embedded_;
@@ -135,7 +142,7 @@ private:
   int split_cells_ = 0;
   double topology_seconds_ = 0;
   FcmDiscretization fcm_;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<ElementBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   std::vector<std::string> warnings_;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "shared/mesh/structured_grid.hpp"
+#include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem::fcm {
 
@@ -35,16 +36,37 @@ std::vector<std::string_view> cell_names() {
 constexpr std::array<std::string_view, 4> simplifier_names{"caratheodory", "nnls", "lp", "none"};
 constexpr std::array<std::string_view, 2> stabilized_names{"mass_and_stiffness", "mass"};
 
-void complete_fcm(const scene_schema::Validator&, const json&, json& fcm, const std::string&) {
+// The background's size comes from one of `resolution`, `cell_size` or the `background`
+// file; a file also names the cell (docs/scene-schema.md, "fcm").
+void complete_fcm(const scene_schema::Validator& validator, const json&, json& fcm, const std::string& pointer) {
+  if (fcm.contains("resolution") && fcm.contains("cell_size"))
+    validator.fail(pointer + "/cell_size", "give resolution or cell_size, not both");
+  if (fcm.contains("background")) {
+    for (const char* key : {"resolution", "cell_size", "margin"})
+      if (fcm.contains(key))
+        validator.fail(pointer + "/" + key, "applies only to the generated grid, not to a background mesh file");
+    const std::string name(element_name(read_volume_mesh(fcm["background"].get<std::string>()).element_type));
+    if (!cell_defaults.contains(name))
+      validator.fail(pointer + "/background", "the mesh file's element '" + name +
+                                                  "' is not an fcm cell (tet4, tet10, hex8, hex20, hex27)");
+    if (!fcm.contains("cell")) fcm["cell"] = name;
+    if (fcm["cell"] != name)
+      validator.fail(pointer + "/cell", "must match the background mesh file's element '" + name + "', got '" +
+                                            fcm["cell"].get<std::string>() + "'");
+  }
+  if (!fcm.contains("cell")) fcm["cell"] = "hex20";
+  if (!fcm.contains("margin") && !fcm.contains("background")) fcm["margin"] = 0.0;
   const CellDefaults& defaults = cell_defaults.find(fcm["cell"].get<std::string>())->second;
   if (!fcm.contains("quadrature_order")) fcm["quadrature_order"] = defaults.stiffness;
   if (!fcm.contains("mass_quadrature_order")) fcm["mass_quadrature_order"] = defaults.mass;
 }
 
 const scene_schema::ObjectRule fcm_rule{
-    {{.key = "cell", .type = ValueType::string, .default_value = "hex20", .choices = cell_names()},
+    {{.key = "cell", .type = ValueType::string, .choices = cell_names()},
      {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
-     {.key = "margin", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative,
+     {.key = "cell_size", .type = ValueType::number, .lower = scene_schema::positive},
+     {.key = "background", .type = ValueType::path, .choices = {".msh", ".mesh"}},
+     {.key = "margin", .type = ValueType::number, .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, false}},
      {.key = "embedded_cell_size", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
@@ -78,7 +100,9 @@ FcmSpec fcm_spec(const Scene& scene) {
   if (fcm.contains("resolution"))
     spec.resolution = Eigen::Vector3i(fcm["resolution"][0].get<int>(), fcm["resolution"][1].get<int>(),
                                       fcm["resolution"][2].get<int>());
-  spec.margin = fcm["margin"].get<double>();
+  if (fcm.contains("cell_size")) spec.cell_size = fcm["cell_size"].get<double>();
+  if (fcm.contains("background")) spec.background = fcm["background"].get<std::string>();
+  else spec.margin = fcm["margin"].get<double>();
   if (fcm.contains("embedded_cell_size")) spec.embedded_cell_size = fcm["embedded_cell_size"].get<double>();
   const std::string simplifier = fcm["simplifier"];
   if (simplifier == "none") spec.simplifier.reset();
@@ -105,6 +129,18 @@ FcmSpec fcm_spec(const Scene& scene) {
 Eigen::AlignedBox3d background_box(const Eigen::AlignedBox3d& bounds, double margin) {
   const Eigen::Vector3d grow = margin * bounds.sizes();
   return {bounds.min() - grow, bounds.max() + grow};
+}
+
+BackgroundMesh background_mesh(const FcmSpec& spec, const Eigen::AlignedBox3d& bounds) {
+  if (spec.background) return {read_volume_mesh(*spec.background), std::nullopt};
+  Eigen::AlignedBox3d box = background_box(bounds, spec.margin);
+  Eigen::Vector3i resolution = spec.resolution.value_or(default_grid_resolution(box.sizes()));
+  if (spec.cell_size) {
+    // Whole cubic cells from the box's lower corner, the last layer reaching past its top.
+    resolution = (box.sizes() / *spec.cell_size).array().ceil().cast<int>().max(1);
+    box.max() = box.min() + *spec.cell_size * resolution.cast<double>();
+  }
+  return {structured_grid(box, resolution, spec.cell), resolution};
 }
 
 }  // namespace altfem::fcm

@@ -38,7 +38,9 @@ public:
     parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
     parts.explicit_mass = ExplicitMassKind::lumped;
     discretization_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(volume).surface;
+    // Surface loads act on the boundary of the domain integrated: the mesh's.
+    load_surface_ = boundary_surface(volume).surface;
+    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
     evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
   }
@@ -74,6 +76,7 @@ public:
     return grid;
   }
   const SurfaceMesh& embedded_surface() const override { return surface_; }
+  const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return embedding_->displacement(displacement);
@@ -92,7 +95,7 @@ private:
   PolyhedralMesh mesh_;
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
-  SurfaceMesh surface_;
+  SurfaceMesh surface_, load_surface_;
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;

@@ -33,7 +33,8 @@ def read_rows(path):
         for key in ("dofs", "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations",
                     "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
             row[key] = number(row[key])
-        row["report_error"] = number(row.get("report_error"))
+        for key in ("report_error", "field_l2_error", "field_h1_error"):  # absent from older tables
+            row[key] = number(row.get(key))
         row["series"] = f"{row['method']} {row['element']}".strip()
     return rows
 
@@ -60,10 +61,13 @@ def series_of(rows):
     return groups
 
 
-def finish_error_plot(fig, ax, path, xlabel, title, legend_title):
+SURFACE_ERROR = "RMS surface error / bounding-box diagonal [-]"
+
+
+def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel=SURFACE_ERROR):
     """Labels, grid and legend (outside, so it hides no point) of a log-log error plot; saves it."""
     ax.set_xlabel(xlabel)
-    ax.set_ylabel("RMS surface error / bounding-box diagonal [-]")
+    ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(title=legend_title, loc="upper left", bbox_to_anchor=(1.01, 1.0))
@@ -86,27 +90,51 @@ def plot_error_vs_time(rows, path):
                       "method, element")
 
 
-def fitted_rate(group):
+def fitted_rate(group, key="rms_error"):
     """Slope of log(error) against log(DOFs^(1/3)) (error ~ h^rate, h ~ DOFs^(-1/3))."""
     if len(group) < 2:
         return None
     h = np.array([r["dofs"] for r in group]) ** (-1.0 / 3.0)
-    e = np.array([r["rms_error"] for r in group])
+    e = np.array([r[key] for r in group])
     return float(np.polyfit(np.log(h), np.log(e), 1)[0])
 
 
-def plot_error_vs_dofs(rows, path):
+def plot_error_vs_dofs(rows, path, key="rms_error", ylabel=SURFACE_ERROR,
+                       title="Convergence: error against DOFs (h ~ DOFs^(-1/3))"):
     fig, ax = plt.subplots(figsize=(9, 5))
     rates = {}
     for name, group in sorted(series_of(rows).items()):
         group = sorted(group, key=lambda r: r["dofs"])
-        rate = fitted_rate(group)
+        rate = fitted_rate(group, key)
         rates[name] = rate
         label = name + (f" (rate {rate:.2f} in h)" if rate is not None else "")
-        ax.loglog([r["dofs"] for r in group], [r["rms_error"] for r in group], "o-", label=label)
-    finish_error_plot(fig, ax, path, "degrees of freedom [-]", "Convergence: error against DOFs (h ~ DOFs^(-1/3))",
-                      "method, element (fitted rate)")
+        ax.loglog([r["dofs"] for r in group], [r[key] for r in group], "o-", label=label)
+    finish_error_plot(fig, ax, path, "degrees of freedom [-]", title, "method, element (fitted rate)", ylabel)
     return rates
+
+
+def field_error_section(rows, out):
+    """Errors against the scene's exact_displacement (every successful run, the reference too)."""
+    exact = [r for r in rows if r["status"] == "ok" and r["field_l2_error"] > 0 and r["field_h1_error"] > 0]
+    if not exact:
+        return []
+    l2_rates = plot_error_vs_dofs(exact, os.path.join(out, "field_l2_vs_dofs.png"), "field_l2_error",
+                                  "relative L2 error ||u_h - u|| / ||u|| [-]",
+                                  "Exact solution: L2 error against DOFs (h ~ DOFs^(-1/3))")
+    h1_rates = plot_error_vs_dofs(exact, os.path.join(out, "field_h1_vs_dofs.png"), "field_h1_error",
+                                  "relative H1-seminorm error |u_h - u| / |u| [-]",
+                                  "Exact solution: H1-seminorm error against DOFs (h ~ DOFs^(-1/3))")
+    lines = ["| run | DOFs | L2 error | H1 error | total [s] |", "|---|---|---|---|---|"]
+    for r in sorted(exact, key=lambda r: (r["series"], r["dofs"])):
+        lines.append(f"| {r['label']} | {r['dofs']:.0f} | {r['field_l2_error']:.3g} | {r['field_h1_error']:.3g} | "
+                     f"{r['total_s']:.3g} |")
+    rates = ", ".join(f"{name} L2 {l2_rates[name]:.2f}, H1 {h1_rates[name]:.2f}"
+                      for name in sorted(l2_rates) if l2_rates[name] is not None)
+    return ["## Field errors against the exact solution", "",
+            "Relative errors of each run's displacement field against the scene's `exact_displacement`, "
+            "by the method's own basis and quadrature (summary.json's `field_errors`).", "",
+            "![L2 error against DOFs](field_l2_vs_dofs.png)", "", "![H1 error against DOFs](field_h1_vs_dofs.png)", "",
+            "\n".join(lines), "", "Fitted rates (error ~ h^rate): " + (rates or "one run per series"), ""]
 
 
 def phase_times(row):
@@ -225,6 +253,7 @@ def write_report(rows, out, target_arg):
                  "## Error against DOFs", "", "![error against DOFs](error_vs_dofs.png)", "",
                  "Fitted rates (error ~ h^rate): " +
                  ", ".join(f"{name} {rate:.2f}" for name, rate in sorted(rates.items()) if rate is not None), ""]
+    text += field_error_section(rows, out)
     if any(r["status"] == "ok" for r in rows):
         plot_time_breakdown(rows, os.path.join(out, "time_breakdown.png"))
         text += ["## Time per phase", "", "![time breakdown](time_breakdown.png)", ""]

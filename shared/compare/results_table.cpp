@@ -45,7 +45,8 @@ const std::vector<std::pair<std::string, Member>>& columns() {
       {"factorisation_s", &PhaseTimings::factorisation}, {"solve_s", &PhaseTimings::solve},
       {"total_s", &PhaseTimings::total}, {"wall_s", &RunRecord::wall_seconds},
       {"peak_memory_mib", &RunRecord::peak_memory_mib}, {"rms_error", &RunRecord::rms_error},
-      {"max_error", &RunRecord::max_error}, {"report_error", &RunRecord::report_error}, {"scene", &RunRecord::scene}, {"date", &RunRecord::date},
+      {"max_error", &RunRecord::max_error}, {"report_error", &RunRecord::report_error},
+      {"field_l2_error", &RunRecord::field_l2_error}, {"field_h1_error", &RunRecord::field_h1_error}, {"scene", &RunRecord::scene}, {"date", &RunRecord::date},
       {"cpu", &RunRecord::cpu}, {"cores", &RunRecord::cores}, {"threads", &RunRecord::threads},
       {"blas", &RunRecord::blas}};
   return table;
@@ -158,8 +159,9 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
     RunRecord record;
     for (const auto& [name, member] : columns()) {
       const auto found = std::find(header.begin(), header.end(), name);
-      // report_error came later: a cached record.csv from before it has none (NaN).
-      if (found == header.end() && name == "report_error") continue;
+      // These came later: a cached record.csv from before them has none (NaN).
+      const bool later = name == "report_error" || name == "field_l2_error" || name == "field_h1_error";
+      if (found == header.end() && later) continue;
       if (found == header.end()) throw InputError(input_message(where, "", "missing column '" + name + "'"));
       set_field(record, member, fields[found - header.begin()], where, name);
     }

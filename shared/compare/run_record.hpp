@@ -36,6 +36,10 @@ struct RunRecord {
   /// The scene's compare/error: the equal-accuracy table's target, kept in every row so
   /// that the report regenerates from results.csv alone (NaN: the report's default).
   double report_error = std::numeric_limits<double>::quiet_NaN();
+  /// Against the scene's exact_displacement, when it has one (summary.json's
+  /// field_errors): ‖u_h − u‖_L2 / ‖u‖_L2 and |u_h − u|_H1 / |u|_H1; NaN without.
+  double field_l2_error = std::numeric_limits<double>::quiet_NaN();
+  double field_h1_error = std::numeric_limits<double>::quiet_NaN();
   // Where it ran.
   std::string scene, date, cpu, blas;
   int cores = 0, threads = 0;

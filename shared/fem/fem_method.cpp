@@ -29,15 +29,11 @@ public:
                                                    scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms (SceneGeometry::common_surface), else the mesh's
-    // boundary. Surface loads act on the scene's surface when it has one, else on the
-    // mesh's own boundary lifted to the cells' curved faces: the domain fem solves on.
+    // boundary. Surface loads act on the mesh's own boundary lifted to the cells' curved
+    // faces: the domain fem solves on.
     const BoundarySurface boundary = boundary_surface(mesh_);
-    if (geometry.surface) {
-      load_surface_ = *geometry.surface;
-    } else {
-      load_surface_ = boundary.surface;
-      lift_ = lagrange_surface_lift(mesh_, boundary);
-    }
+    load_surface_ = boundary.surface;
+    lift_ = lagrange_surface_lift(mesh_, boundary);
     surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
     evaluator_ = std::make_unique<LagrangeBasisEvaluator>(mesh_);
     embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);

@@ -139,10 +139,11 @@ RegionSelector region_from_json(const json& region, const std::string& pointer) 
 
 // The three components of an expression key (validated: strings or numbers).
 VectorExpression expression_from_json(const json& value, const ExpressionConstants& constants, const std::string& file,
-                                      const std::string& pointer) {
+                                      const std::string& pointer,
+                                      ExpressionVariables variables = ExpressionVariables::position_and_time) {
   std::array<std::string, 3> components;
   for (int i = 0; i < 3; ++i) components[i] = value[i].is_string() ? value[i].get<std::string>() : value[i].dump();
-  return VectorExpression(components, constants, file, pointer);
+  return VectorExpression(components, constants, file, pointer, variables);
 }
 
 Motion motion_from_json(const json& value, const ExpressionConstants& constants, const std::string& file,
@@ -220,8 +221,15 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
     SurfaceTraction load;
     load.pointer = "/loads/traction/" + std::to_string(i);
     load.region = region_from_json(tractions[i]["region"], load.pointer + "/region");
-    if (tractions[i].contains("traction")) load.traction = vector3_from_json(tractions[i]["traction"]);
-    else load.pressure = tractions[i]["pressure"].get<double>();
+    if (!tractions[i].contains("traction")) {
+      load.pressure = tractions[i]["pressure"].get<double>();
+    } else if (const json& traction = tractions[i]["traction"];
+               std::all_of(traction.begin(), traction.end(), [](const json& v) { return v.is_number(); })) {
+      load.traction = vector3_from_json(traction);
+    } else {  // expressions, which may use the surface's normal
+      load.traction_field = expression_from_json(traction, constants, file_name, load.pointer + "/traction",
+                                                 ExpressionVariables::surface);
+    }
     load.ramp = tractions[i]["ramp"].get<double>();
     scene.tractions.push_back(load);
   }

@@ -97,10 +97,12 @@ struct DirichletCondition {
 /// centroid the region holds.
 struct SurfaceTraction {
   RegionSelector region;
-  /// Force per reference area [Pa]: the traction vector, or −pressure × the outward
-  /// unit normal of each triangle (a positive pressure pushes into the body).
+  /// Force per reference area [Pa]: the traction vector, or the traction field (an
+  /// expression of x, y, z, t and the outward unit normal nx, ny, nz), or −pressure ×
+  /// the outward unit normal of each triangle (a positive pressure pushes into the body).
   std::optional<Eigen::Vector3d> traction;
-  double pressure = 0.0;  ///< used when `traction` is empty
+  VectorExpression traction_field;
+  double pressure = 0.0;  ///< used when neither `traction` nor `traction_field` is given
   double ramp = 0.0;      ///< T [s]: the load is scaled by min(t/T, 1); 0 means no ramp
   std::string pointer;    ///< "/loads/traction/i", for messages
 

@@ -170,7 +170,7 @@ const ObjectRule dirichlet{
 
 // `loads.traction` entries: a region and exactly one of a traction vector or a pressure.
 const ObjectRule traction{{{.key = "region", .type = ValueType::object, .required = true, .object = &region},
-                           {.key = "traction", .type = ValueType::vector3},
+                           {.key = "traction", .type = ValueType::expression3},
                            {.key = "pressure", .type = ValueType::number},
                            {.key = "ramp", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}},
                           {{"traction", "pressure"}}};

@@ -18,18 +18,26 @@ namespace altfem {
 
 namespace {
 
-// Three parsers bound to this object's own variables (so it must not move).
+// Three parsers bound to this object's own variables (so it must not move). The normal
+// is defined only for surface expressions, so nx in a body force is a parse error.
 struct ParserSet {
   double x = 0, y = 0, z = 0, t = 0;
+  double nx = 0, ny = 0, nz = 0;
   std::array<mu::Parser, 3> parsers;
 
-  ParserSet(const std::array<std::string, 3>& components, const ExpressionConstants& constants) {
+  ParserSet(const std::array<std::string, 3>& components, const ExpressionConstants& constants,
+            ExpressionVariables variables) {
     for (int i = 0; i < 3; ++i) {
       mu::Parser& parser = parsers[i];
       parser.DefineVar("x", &x);
       parser.DefineVar("y", &y);
       parser.DefineVar("z", &z);
       parser.DefineVar("t", &t);
+      if (variables == ExpressionVariables::surface) {
+        parser.DefineVar("nx", &nx);
+        parser.DefineVar("ny", &ny);
+        parser.DefineVar("nz", &nz);
+      }
       parser.DefineConst("pi", 3.14159265358979323846);
       for (const auto& [name, value] : constants) parser.DefineConst(name, value);
       parser.SetExpr(components[i]);
@@ -59,6 +67,7 @@ std::string parse_message(const mu::Parser::exception_type& error, const std::st
 struct VectorExpression::Shared {
   std::array<std::string, 3> components;
   ExpressionConstants constants;
+  ExpressionVariables variables = ExpressionVariables::position_and_time;
   std::string pointer;
   bool time_dependent = false;
   std::mutex mutex;
@@ -74,7 +83,7 @@ struct VectorExpression::Shared {
         return set;
       }
     }
-    return std::make_unique<ParserSet>(components, constants);
+    return std::make_unique<ParserSet>(components, constants, variables);
   }
   void give_back(std::unique_ptr<ParserSet> set) {
     const std::lock_guard lock(mutex);
@@ -90,12 +99,13 @@ struct VectorExpression::Shared {
 };
 
 VectorExpression::VectorExpression(const std::array<std::string, 3>& components, const ExpressionConstants& constants,
-                                   const std::string& file, const std::string& pointer)
+                                   const std::string& file, const std::string& pointer, ExpressionVariables variables)
     : shared_(std::make_shared<Shared>()) {
   shared_->components = components;
   shared_->constants = constants;
+  shared_->variables = variables;
   shared_->pointer = pointer;
-  auto set = std::make_unique<ParserSet>(components, constants);
+  auto set = std::make_unique<ParserSet>(components, constants, variables);
   for (int i = 0; i < 3; ++i) {
     mu::Parser& parser = set->parsers[i];
     const std::string component_pointer = pointer + "/" + std::to_string(i);
@@ -122,14 +132,28 @@ Eigen::Vector3d VectorExpression::operator()(const Eigen::Vector3d& x, double t)
 }
 
 Eigen::MatrixXd VectorExpression::evaluate(const Eigen::MatrixXd& points, double t) const {
+  return evaluate_at(points, nullptr, t);
+}
+
+Eigen::MatrixXd VectorExpression::evaluate(const Eigen::MatrixXd& points, const Eigen::MatrixXd& normals,
+                                           double t) const {
+  return evaluate_at(points, &normals, t);
+}
+
+Eigen::MatrixXd VectorExpression::evaluate_at(const Eigen::MatrixXd& points, const Eigen::MatrixXd* normals,
+                                              double t) const {
   Eigen::MatrixXd values(points.rows(), 3);
   std::unique_ptr<ParserSet> set = shared_->borrow();
-  for (Eigen::Index p = 0; p < points.rows(); ++p) values.row(p) = set->evaluate(points.row(p).transpose(), t);
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    if (normals) set->nx = (*normals)(p, 0), set->ny = (*normals)(p, 1), set->nz = (*normals)(p, 2);
+    values.row(p) = set->evaluate(points.row(p).transpose(), t);
+  }
   shared_->give_back(std::move(set));
   for (Eigen::Index p = 0; p < points.rows(); ++p)
     if (!values.row(p).allFinite()) shared_->not_finite(points.row(p).transpose(), t, values.row(p).transpose());
   return values;
 }
+
 
 bool VectorExpression::depends_on_time() const { return shared_->time_dependent; }
 

@@ -39,9 +39,10 @@ public:
   /// The basis of the method's elements at any point: what the embedded surface and the
   /// surface loads (surface_traction.hpp) are evaluated through.
   virtual const ElementBasisEvaluator& basis_evaluator() const = 0;
-  /// The surface that surface loads act on: the embedded surface unless the method
-  /// solves on a domain of its own whose boundary it knows better (fem: its mesh's
-  /// boundary, lifted to the curved faces).
+  /// The surface that surface loads act on: the boundary of the domain the method
+  /// integrates (fem: its mesh's, lifted to the curved faces; fcm: its embedded
+  /// tetrahedra's; dg, harmonic: their mesh's), so that a traction σ(u*)·n written with
+  /// the surface's normals makes u* exact on that domain; the embedded surface by default.
   virtual const SurfaceMesh& load_surface() const { return embedded_surface(); }
   /// The curved surface the load surface's triangles stand for, when they only
   /// approximate the method's boundary (fem on a curved Lagrange mesh); empty when the

@@ -80,9 +80,9 @@ std::vector<Polygon> cell_pieces(const Polygon& triangle, const PointLocator& lo
 
 }  // namespace
 
-SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const SurfaceTraction& load,
-                                        const ElementBasisEvaluator& evaluator, double tolerance,
-                                        const std::string& file, const SurfaceLift& lift) {
+SurfacePoints surface_load_points(const SurfaceMesh& surface, const SurfaceTraction& load,
+                                  const ElementBasisEvaluator& evaluator, double tolerance, const std::string& file,
+                                  const SurfaceLift& lift) {
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(evaluator.element_count()));
   for (int e = 0; e < evaluator.element_count(); ++e) boxes[e] = evaluator.element_bounds(e);
   const PointLocator locator(std::move(boxes));
@@ -91,7 +91,8 @@ SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const Surfac
   // Weights sum to 1/2.
   const QuadratureRule rule = triangle_rule(lift ? lifted_triangle_strength : triangle_strength);
 
-  std::vector<Eigen::Vector3d> points, forces;
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<double> weights;
   std::vector<int> candidates;
   int selected = 0;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
@@ -100,27 +101,26 @@ SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const Surfac
                            surface.vertices.row(surface.triangles(t, 2)).transpose()};
     if (!load.region.contains((triangle[0] + triangle[1] + triangle[2]) / 3, tolerance)) continue;
     ++selected;
-    // docs/conventions.md, "Surface loads": a pressure acts along the inward normal.
     if (lift) {
       Eigen::Vector3d point, area_vector;
       for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
         const double xi = rule.points(q, 0), eta = rule.points(q, 1);
         lift(static_cast<int>(t), Eigen::Vector3d(1 - xi - eta, xi, eta), point, area_vector);
         points.push_back(point);
-        forces.push_back(rule.weights[q] * (load.traction ? Eigen::Vector3d(*load.traction * area_vector.norm())
-                                                          : Eigen::Vector3d(-load.pressure * area_vector)));
+        normals.push_back(area_vector.normalized());
+        weights.push_back(rule.weights[q] * area_vector.norm());
       }
       continue;
     }
     const Eigen::Vector3d normal = (triangle[1] - triangle[0]).cross(triangle[2] - triangle[0]).normalized();
-    const Eigen::Vector3d traction = load.traction ? *load.traction : Eigen::Vector3d(-load.pressure * normal);
     for (const Polygon& piece : cell_pieces(triangle, locator, slack, candidates))
       for (size_t i = 1; i + 1 < piece.size(); ++i) {  // a fan over the convex piece
         const Eigen::Vector3d edge1 = piece[i] - piece[0], edge2 = piece[i + 1] - piece[0];
         const double jacobian = edge1.cross(edge2).norm();  // twice the area: the rule's weights sum to 1/2
         for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
           points.push_back(piece[0] + rule.points(q, 0) * edge1 + rule.points(q, 1) * edge2);
-          forces.push_back(rule.weights[q] * jacobian * traction);
+          normals.push_back(normal);
+          weights.push_back(rule.weights[q] * jacobian);
         }
       }
   }
@@ -129,28 +129,45 @@ SurfaceForcePoints surface_force_points(const SurfaceMesh& surface, const Surfac
                                    "holds the centroid of no triangle of the loaded surface (" +
                                        std::to_string(surface.triangles.rows()) +
                                        " triangles: the scene's surface, else the method's mesh boundary)"));
-  SurfaceForcePoints result{Eigen::MatrixXd(static_cast<Eigen::Index>(points.size()), 3),
-                            Eigen::MatrixXd(static_cast<Eigen::Index>(points.size()), 3)};
-  for (size_t q = 0; q < points.size(); ++q) {
-    result.points.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
-    result.forces.row(static_cast<Eigen::Index>(q)) = forces[q].transpose();
+  const auto count = static_cast<Eigen::Index>(points.size());
+  SurfacePoints result{Eigen::MatrixXd(count, 3), Eigen::MatrixXd(count, 3), Eigen::VectorXd(count)};
+  for (Eigen::Index q = 0; q < count; ++q) {
+    result.points.row(q) = points[q].transpose();
+    result.normals.row(q) = normals[q].transpose();
+    result.weights[q] = weights[q];
   }
   return result;
+}
+
+Eigen::MatrixXd surface_forces(const SurfaceTraction& load, const SurfacePoints& points, double time) {
+  // docs/conventions.md, "Surface loads": a pressure acts along the inward normal.
+  Eigen::MatrixXd tractions;
+  if (load.traction) tractions = load.traction->transpose().replicate(points.points.rows(), 1);
+  else if (load.traction_field.has_value()) tractions = load.traction_field.evaluate(points.points, points.normals, time);
+  else tractions = -load.pressure * points.normals;
+  return points.weights.asDiagonal() * tractions;
 }
 
 SurfaceTractionLoad::SurfaceTractionLoad(const std::vector<SurfaceTraction>& loads, const SurfaceMesh& surface,
                                          const ElementBasisEvaluator& evaluator, int dof_count, double tolerance,
                                          const std::string& file, const SurfaceLift& lift)
-    : loads_(loads), vectors_(dof_count, static_cast<Eigen::Index>(loads.size())) {
+    : loads_(loads), vectors_(Eigen::MatrixXd::Zero(dof_count, static_cast<Eigen::Index>(loads.size()))) {
   for (size_t i = 0; i < loads.size(); ++i) {
-    const SurfaceForcePoints points = surface_force_points(surface, loads[i], evaluator, tolerance, file, lift);
-    vectors_.col(static_cast<Eigen::Index>(i)) = BasisEmbedding(evaluator, points.points).load(points.forces, dof_count);
+    SurfacePoints points = surface_load_points(surface, loads[i], evaluator, tolerance, file, lift);
+    auto embedding = std::make_shared<const BasisEmbedding>(evaluator, points.points);
+    if (loads[i].traction_field.has_value() && loads[i].traction_field.depends_on_time())
+      time_dependent_.push_back({static_cast<int>(i), std::move(points), std::move(embedding)});
+    else
+      vectors_.col(static_cast<Eigen::Index>(i)) = embedding->load(surface_forces(loads[i], points, 0.0), dof_count);
   }
 }
 
 Eigen::VectorXd SurfaceTractionLoad::operator()(double time) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(vectors_.rows());
   for (size_t i = 0; i < loads_.size(); ++i) load += loads_[i].factor(time) * vectors_.col(static_cast<Eigen::Index>(i));
+  for (const TimeDependentLoad& entry : time_dependent_)
+    load += loads_[entry.load].factor(time) *
+            entry.embedding->load(surface_forces(loads_[entry.load], entry.points, time), static_cast<int>(load.size()));
   return load;
 }
 

@@ -30,6 +30,8 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   ok.peak_memory_mib = 28.5;
   ok.rms_error = 1.2345678901234567e-7;
   ok.max_error = 3e-6;
+  ok.field_l2_error = 2.5e-4;
+  ok.field_h1_error = 1.0 / 7.0;
   ok.scene = "cantilever";
   ok.date = "2026-11-23 07:00 UTC";
   ok.cpu = "AMD EPYC, \"quoted\"";
@@ -65,6 +67,8 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
     EXPECT_EQ(back.threads, written.threads);
   }
   EXPECT_EQ(read[0].rms_error, ok.rms_error);
+  EXPECT_EQ(read[0].field_l2_error, ok.field_l2_error);
+  EXPECT_EQ(read[0].field_h1_error, ok.field_h1_error);
   EXPECT_TRUE(std::isnan(read[1].rms_error));
   std::filesystem::remove(file);
 }

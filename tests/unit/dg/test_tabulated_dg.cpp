@@ -26,7 +26,7 @@ TEST_P(TabulatedDgOfDegree, LinearBabuskaZlamalEqualsTheExactMatrices) {
                             material->density(), 1.0};
   const DgLinearSystem system(grid.cells, grid.faces, settings);
   const TabulatedDg tabulated =
-      make_tabulated_dg(system, *material, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+      make_tabulated_dg(system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
   const Discretization& discretization = *tabulated.discretization;
   ASSERT_EQ(discretization.dof_count(), system.dof_count());
   Eigen::SparseMatrix<double> hessian = discretization.hessian_pattern();

@@ -195,6 +195,30 @@ TEST(FcmSceneBlock, DefaultsAreTheAuthors) {
   EXPECT_EQ(fcm_spec(scene).options.mass_quadrature_strength, 5);
 }
 
+// A user's background mesh (§3.2 allows any cells): the sphere inside the unit cube's
+// 24 Tet10 of data/volume; the cell type is the file's.
+TEST(FcmBackground, MeshFileCellsIntegrateTheEmbeddedVolume) {
+  const Built built = build(load_scene(scenes / "sphere_in_background_file.json"));
+  const double exact = tetrahedra_volume(embedded_tetrahedra(built.geometry, 0.2, "sphere_in_background_file.json"));
+  EXPECT_NEAR(mass_volume(built), exact, 1e-11 * exact);
+  const nlohmann::json facts = built.method->facts();
+  EXPECT_EQ(facts["background_cells"], 24);
+  EXPECT_EQ(facts["background_resolution"], "file");
+  EXPECT_EQ(built.method->element_counts().begin().key(), "tet10");
+}
+
+// cell_size: whole cubic cells from the box's lower corner. The sphere's box grown by
+// 10% is 1.2 wide: ⌈1.2 / 0.35⌉ = 4 cells per axis, reaching 0.2 past its top.
+TEST(FcmBackground, CellSizeGivesCubicCells) {
+  Scene scene = sphere_scene("hex8");
+  scene.resolved["discretization"]["fcm"].erase("resolution");
+  scene.resolved["discretization"]["fcm"]["cell_size"] = 0.35;
+  const Built built = build(scene);
+  EXPECT_EQ(built.method->facts()["background_resolution"], nlohmann::json({4, 4, 4}));
+  const double exact = tetrahedra_volume(embedded_tetrahedra(built.geometry, 0.2, "cut_sphere.json"));
+  EXPECT_NEAR(mass_volume(built), exact, 1e-11 * exact);
+}
+
 TEST(FcmSceneBlock, BadValuesNameTheKey) {
   Scene scene = sphere_scene("hex20");
   const auto message = [&](const nlohmann::json& block) {
@@ -209,6 +233,13 @@ TEST(FcmSceneBlock, BadValuesNameTheKey) {
   EXPECT_NE(message({{"cell", "tet20"}}).find("/discretization/fcm/cell"), std::string::npos);
   EXPECT_NE(message({{"discard_fraction", 1.0}}).find("/discretization/fcm/discard_fraction"), std::string::npos);
   EXPECT_NE(message({{"simplifer", "lp"}}).find("did you mean 'simplifier'"), std::string::npos);
+  EXPECT_NE(message({{"resolution", {2, 2, 2}}, {"cell_size", 0.1}}).find("/discretization/fcm/cell_size: give resolution or cell_size"),
+            std::string::npos);
+  const std::string file = (std::filesystem::path(ALTFEM_SOURCE_DIR) / "data/volume/cube_tet10_24.msh").string();
+  EXPECT_NE(message({{"background", file}, {"cell", "hex8"}}).find("/discretization/fcm/cell: must match the background mesh file's element 'tet10'"),
+            std::string::npos);
+  EXPECT_NE(message({{"background", file}, {"margin", 0.1}}).find("/discretization/fcm/margin: applies only to the generated grid"),
+            std::string::npos);
 }
 
 }  // namespace

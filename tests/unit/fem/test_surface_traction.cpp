@@ -88,6 +88,38 @@ TEST_P(SurfaceTractionOnGrid, RampScalesTheLoad) {
   EXPECT_LT((ramped(2.0) - full).cwiseAbs().maxCoeff(), 1e-14);
 }
 
+// The normal field −p n written as expressions is the pressure p; a field in t is
+// integrated again at each time.
+TEST_P(SurfaceTractionOnGrid, TractionFieldOfTheNormalIsThePressure) {
+  SurfaceTraction pressure = load_on(everything());
+  pressure.pressure = 7.0;
+  SurfaceTraction field = load_on(everything());
+  field.traction_field = VectorExpression({"-p*nx", "-p*ny", "-p*nz"}, {{"p", 7.0}}, "s.json", "/loads/traction/0/traction",
+                                          ExpressionVariables::surface);
+  const Eigen::VectorXd expected = load_vector(pressure);
+  EXPECT_LT((load_vector(field) - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff());
+
+  field.traction_field = VectorExpression({"-p*t*nx", "-p*t*ny", "-p*t*nz"}, {{"p", 7.0}}, "s.json",
+                                          "/loads/traction/0/traction", ExpressionVariables::surface);
+  const SurfaceTractionLoad timed({field}, surface_, evaluator_, static_cast<int>(expected.size()), 1e-9, "s.json");
+  EXPECT_LT((timed(0.5) - 0.5 * expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff());
+  EXPECT_LT((timed(3.0) - 3.0 * expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff());
+}
+
+// A position-dependent field t = (0, 0, x) on the face z = 0.5 (outward normal +z, area 2,
+// x from 0 to 2): its work on u = (0, 0, 1) is ∫ x dA = 2, on u = (0, 0, x) it is ∫ x² dA = 8/3.
+TEST_P(SurfaceTractionOnGrid, TractionFieldOfPositionDoesItsExactWork) {
+  RegionSelector top;
+  top.box = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, 0.5), Eigen::Vector3d(3, 2, 1));
+  SurfaceTraction field = load_on(top);
+  field.traction_field =
+      VectorExpression({"0", "0", "x*nz"}, {}, "s.json", "/loads/traction/0/traction", ExpressionVariables::surface);
+  const Eigen::VectorXd load = load_vector(field);
+  EXPECT_NEAR(work(load, [](const Eigen::Vector3d&) { return Eigen::Vector3d(0, 0, 1); }), 2.0, 1e-12);
+  if (GetParam() != ElementType::tet4 && GetParam() != ElementType::hex8)  // x² is interpolated exactly
+    EXPECT_NEAR(work(load, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(0, 0, x.x()); }), 8.0 / 3.0, 1e-12);
+}
+
 TEST_P(SurfaceTractionOnGrid, RegionHoldingNoTriangleNamesTheKey) {
   RegionSelector corner;
   corner.kind = RegionKind::sphere;

@@ -70,5 +70,26 @@ TEST(VectorExpression, FieldMotionPrescribesTheExpression) {
   EXPECT_EQ(scene.resolved["constants"]["c"], 0.5);
 }
 
+// A traction may use the outward normal; a body force may not (nx is unknown there).
+TEST(VectorExpression, OnlySurfaceExpressionsKnowTheNormal) {
+  const std::string head = R"({"geometry": {"shape": {"box": {"min": [0,0,0], "max": [1,1,1]}}},
+    "material": {"youngs_modulus": 1e6, "poisson_ratio": 0.3}, "loads": )";
+  const Scene scene = parse_scene(
+      head + R"({"traction": [{"region": {"box": {"min": [1,0,0], "max": [1,1,1]}}, "traction": ["2*nx", "y", 0]}]}})",
+      "scene.json");
+  ASSERT_TRUE(scene.tractions[0].traction_field.has_value());
+  EXPECT_FALSE(scene.tractions[0].traction.has_value());
+  const Eigen::MatrixXd value = scene.tractions[0].traction_field.evaluate(
+      Eigen::RowVector3d(1, 0.5, 0), Eigen::RowVector3d(1, 0, 0), 0.0);
+  EXPECT_EQ(value, Eigen::RowVector3d(2, 0.5, 0));
+  try {
+    parse_scene(head + R"({"body_force": ["nx", 0, 0]}})", "scene.json");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("scene.json: /loads/body_force/0: cannot parse"), std::string::npos)
+        << error.what();
+  }
+}
+
 }  // namespace
 }  // namespace altfem

@@ -1,7 +1,9 @@
 #pragma once
 // A test helper: the static equilibrium of a scene (with --set style overrides) by one
-// method, as the displacement of the method's embedded surface vertices.
+// method, as its coefficients (static_run) or as the displacement of the method's
+// embedded surface vertices (static_surface).
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,24 +20,42 @@ struct StaticSurface {
   Eigen::MatrixXi triangles;     ///< #triangles × 3
 };
 
-inline StaticSurface static_surface(const std::filesystem::path& scene_file, const MethodFactory& factory,
-                                    const std::vector<std::string>& assignments) {
+/// A static solve kept with what it was computed from (the method may refer to its scene
+/// and geometry, so each lives at a fixed address).
+struct StaticRun {
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<SceneGeometry> geometry;
+  std::unique_ptr<MethodInstance> method;
+  Eigen::VectorXd displacement;  ///< #dofs, at t = 1 s as `altfem run` solves statics
+};
+
+inline StaticRun static_run(const std::filesystem::path& scene_file, const MethodFactory& factory,
+                            const std::vector<std::string>& assignments) {
   std::vector<SceneOverride> overrides;
   for (const auto& assignment : assignments) overrides.push_back(parse_scene_override(assignment));
-  const Scene scene = load_scene(scene_file, overrides);
-  const SceneGeometry geometry = load_scene_geometry(scene);
-  const auto method = factory(scene, geometry);
-  const Discretization& discretization = method->discretization();
+  StaticRun run;
+  run.scene = std::make_unique<Scene>(load_scene(scene_file, overrides));
+  run.geometry = std::make_unique<SceneGeometry>(load_scene_geometry(*run.scene));
+  run.method = factory(*run.scene, *run.geometry);
+  const Discretization& discretization = run.method->discretization();
   const auto solver = make_linear_solver({});
   IntegratorOptions options;
   options.kind = IntegrationScheme::static_equilibrium;
-  options.gravity = scene.gravity;
+  options.gravity = run.scene->gravity;
   TimeIntegrator integrator(discretization, *solver, options);
   State state{Eigen::VectorXd::Zero(discretization.dof_count()), Eigen::VectorXd::Zero(discretization.dof_count())};
+  state.time = 1;
   integrator.apply_constraints(state);
   integrator.step(state);
-  return {discretization.dof_count(), method->embedded_surface().vertices, method->embedded_displacement(state.displacement),
-          method->embedded_surface().triangles};
+  run.displacement = std::move(state.displacement);
+  return run;
+}
+
+inline StaticSurface static_surface(const std::filesystem::path& scene_file, const MethodFactory& factory,
+                                    const std::vector<std::string>& assignments) {
+  const StaticRun run = static_run(scene_file, factory, assignments);
+  return {run.method->discretization().dof_count(), run.method->embedded_surface().vertices,
+          run.method->embedded_displacement(run.displacement), run.method->embedded_surface().triangles};
 }
 
 /// The mean of displacement component `component` over the vertices whose coordinate

@@ -11,7 +11,9 @@
 //     Where the clamped face meets the free sphere at 90° the solution is singular
 //     (an edge between Dirichlet and Neumann parts): measured rates Hex8 1.45, 1.72 and
 //     Hex20 1.36, 1.66, limited by it for Hex20 (the paper's "hemisphere-like" geometry
-//     is described only in its supplement);
+//     is described only in its supplement). The same half-ball with a smooth
+//     manufactured solution (scenes/manufactured_half_ball.json, tested in
+//     tests/verify/manufactured) has no singularity and shows the optimal rates 2 and 3;
 //   - one backward-Euler step of a free ball set in motion by a smooth non-affine
 //     velocity, (M/Δt² + K) u = M v₀/Δt (scenes/ball.json): no boundary condition at all.
 // Prints the tables.
