@@ -1,90 +1,172 @@
 // Per-element set-up cost of the polyhedral methods on one core: the harmonic basis of
-// an element (MFS fit, Martin et al. 2008 §5), its tabulation with the consistency
-// correction, both with the element stiffness (the paper's Table 1), and DG's exact
-// element and face matrices (Kaufmann et al. 2009 §5), for a hex-like cell and a
-// non-convex L-shaped prism. Medians on one core with
-//   OMP_NUM_THREADS=1 build-bench/bin/bench_polyhedral_element --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-// (one thread: Eigen's products would otherwise spawn an OpenMP team per factorisation,
-// which the method never does — it builds the bases inside a parallel loop over cells).
-// Target (issue #19): basis + stiffness integration ≤ 2 ms per element.
+// an element (MFS fit, Martin et al. 2008 §5) and, separately, its stiffness integration
+// (tabulation with the consistency correction at the order-2 rule, then K_e), both
+// together (the paper's Table 1), and DG's exact element and face matrices (Kaufmann et
+// al. 2009 §5). Cells: a hexahedron (8 nodes), an octree-coarse hexahedron with its
+// finer neighbours' edge midpoints (20 nodes, octagonal faces), a non-convex L-shaped
+// prism (12), and 40 cut cells of the bunny sliced at 16³ (each iteration takes the
+// next cut cell, so the time is the mean over them). Medians on one core with
+//   OMP_NUM_THREADS=1 build/bin/bench_polyhedral_element --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+// (configure with -DALTFEM_BENCHMARKS=ON; one thread: Eigen's products would otherwise
+// spawn an OpenMP team per factorisation, which the method never does — it builds the
+// bases inside a parallel loop over cells). Read the CPU column on a shared machine.
+// Target (issue #19): basis and stiffness integration each ≤ 2 ms per element.
 #include <benchmark/benchmark.h>
+
+#include <map>
 
 #include "dg/exact_element_matrices.hpp"
 #include "polyhedral/harmonic_tabulation.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
 #include "tests/unit/polyhedra.hpp"
 
 namespace {
 
 using namespace altfem;
 
-Polyhedron cell(int kind) {
-  return kind == 0 ? test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1.2, 0.9)) : test::l_prism();
-}
-const char* cell_name(int kind) { return kind == 0 ? "hexahedron" : "l_prism"; }
+enum CellKind { hexahedron, hexahedron20, l_prism, bunny_cut };
 
-// Args: cell kind, MFS samples per edge (5: MfsOptions' and discretization.harmonic's default).
+// The box with a node in the middle of each of its 12 edges: an octree cell whose
+// neighbours are one level finer on every side (Martin et al. 2008, Fig. 4).
+Polyhedron hexahedron_with_edge_nodes() {
+  Polyhedron box = test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1.2, 0.9));
+  std::map<std::pair<int, int>, int> midpoints;
+  std::vector<Eigen::RowVector3d> vertices;
+  for (Eigen::Index v = 0; v < box.vertices.rows(); ++v) vertices.push_back(box.vertices.row(v));
+  for (auto& face : box.faces) {
+    std::vector<int> loop;
+    for (size_t k = 0; k < face.size(); ++k) {
+      const int a = face[k], b = face[(k + 1) % face.size()];
+      const auto [it, added] = midpoints.try_emplace({std::min(a, b), std::max(a, b)}, static_cast<int>(vertices.size()));
+      if (added) vertices.push_back(0.5 * (box.vertices.row(a) + box.vertices.row(b)));
+      loop.push_back(a);
+      loop.push_back(it->second);
+    }
+    face = loop;
+  }
+  box.vertices.resize(static_cast<Eigen::Index>(vertices.size()), 3);
+  for (size_t v = 0; v < vertices.size(); ++v) box.vertices.row(static_cast<Eigen::Index>(v)) = vertices[v];
+  return box;
+}
+
+// 40 cut cells of the bunny sliced at 16³ (sliced once).
+const std::vector<Polyhedron>& bunny_cut_cells() {
+  static const std::vector<Polyhedron> cells = [] {
+    const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
+    SlicingOptions options;
+    options.resolution = 16;
+    const PolyhedralMesh mesh = slice_into_polyhedra(bunny, options).mesh;
+    std::vector<int> cut;
+    for (int cell = 0; cell < mesh.cell_count(); ++cell)
+      if (mesh.cell_kinds[cell] != PolyhedralCellKind::hexahedron) cut.push_back(cell);
+    // 40 of them, evenly spaced in cell order (all of them take minutes per benchmark).
+    std::vector<Polyhedron> sample;
+    for (size_t k = 0; k < 40 && k < cut.size(); ++k) sample.push_back(cell_polyhedron(mesh, cut[k * cut.size() / 40]));
+    return sample;
+  }();
+  return cells;
+}
+
+// The cells a benchmark cycles through: one, or every bunny cut cell.
+std::vector<Polyhedron> cells(int kind) {
+  switch (kind) {
+    case hexahedron: return {test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1.2, 0.9))};
+    case hexahedron20: return {hexahedron_with_edge_nodes()};
+    case l_prism: return {test::l_prism()};
+    default: return bunny_cut_cells();
+  }
+}
+std::string cell_name(int kind) {
+  const char* names[] = {"hexahedron (8 nodes)", "octree hexahedron (20 nodes)", "l_prism (12 nodes)", "bunny 16^3 cut cells"};
+  std::string name = names[kind];
+  if (kind == bunny_cut) {
+    double nodes = 0;
+    for (const Polyhedron& cell : bunny_cut_cells()) nodes += static_cast<double>(cell.vertices.rows());
+    name += " (" + std::to_string(bunny_cut_cells().size()) + ", mean " +
+            std::to_string(static_cast<int>(nodes / static_cast<double>(bunny_cut_cells().size()) + 0.5)) + " nodes)";
+  }
+  return name;
+}
+
+// K_ab = Σ_q w_q (λ ∇N_a ∇N_bᵀ + μ ∇N_b ∇N_aᵀ + μ ∇N_a·∇N_b I): the linear-elastic
+// element stiffness (3n × 3n) from a tabulation.
+void element_stiffness(const harmonic::HarmonicTabulation& table, int n, Eigen::MatrixXd& stiffness) {
+  const double lambda = 1.5, mu = 1.0;
+  stiffness.setZero(3 * n, 3 * n);
+  for (Eigen::Index q = 0; q < table.weights.size(); ++q)
+    for (int a = 0; a < n; ++a)
+      for (int b = 0; b < n; ++b) {
+        const Eigen::RowVector3d ga = table.gradients.row(q * n + a), gb = table.gradients.row(q * n + b);
+        stiffness.block<3, 3>(3 * a, 3 * b) += table.weights[q] * (lambda * ga.transpose() * gb + mu * gb.transpose() * ga +
+                                                                    mu * ga.dot(gb) * Eigen::Matrix3d::Identity());
+      }
+}
+
+// Phase 1, the basis. Args: cell kind, MFS samples per edge (5: the default).
 void harmonic_basis(benchmark::State& state) {
-  const Polyhedron element = cell(static_cast<int>(state.range(0)));
+  const std::vector<Polyhedron> elements = cells(static_cast<int>(state.range(0)));
   harmonic::MfsOptions options;
   options.edge_samples = static_cast<int>(state.range(1));
+  size_t next = 0;
   for (auto _ : state) {
-    harmonic::ElementHarmonicBasis basis(element, options);
+    harmonic::ElementHarmonicBasis basis(elements[next++ % elements.size()], options);
     benchmark::DoNotOptimize(basis);
   }
-  state.SetLabel(std::string(cell_name(static_cast<int>(state.range(0)))) + ", " + std::to_string(state.range(1)) +
-                 " samples/edge");
+  state.SetLabel(cell_name(static_cast<int>(state.range(0))) + ", " + std::to_string(state.range(1)) + " samples/edge");
 }
 
-void harmonic_tabulation(benchmark::State& state) {
-  const Polyhedron element = cell(static_cast<int>(state.range(0)));
-  const harmonic::ElementHarmonicBasis basis(element, {});
-  const PolyhedronRule rule = polyhedron_rule(element, 2);
-  for (auto _ : state) benchmark::DoNotOptimize(harmonic::tabulate_harmonic_element(basis, rule, true));
-  state.counters["points"] = static_cast<double>(rule.weights.size());
+// Phase 2, the stiffness integration with a given basis: the order-2 rule of the
+// polyhedron, the tabulation with the consistency correction, and K_e. Arg: cell kind.
+void harmonic_stiffness(benchmark::State& state) {
+  const std::vector<Polyhedron> elements = cells(static_cast<int>(state.range(0)));
+  std::vector<harmonic::ElementHarmonicBasis> bases;
+  for (const Polyhedron& element : elements) bases.emplace_back(element, harmonic::MfsOptions{});
+  Eigen::MatrixXd stiffness;
+  double points = 0;
+  size_t next = 0;
+  for (auto _ : state) {
+    const size_t e = next++ % elements.size();
+    const PolyhedronRule rule = polyhedron_rule(elements[e], 2);
+    const harmonic::HarmonicTabulation table = harmonic::tabulate_harmonic_element(bases[e], rule, true);
+    element_stiffness(table, static_cast<int>(elements[e].vertices.rows()), stiffness);
+    benchmark::DoNotOptimize(stiffness.data());
+    points += static_cast<double>(rule.weights.size());
+  }
+  state.counters["points"] = benchmark::Counter(points, benchmark::Counter::kAvgIterations);
   state.SetLabel(cell_name(static_cast<int>(state.range(0))));
 }
 
-// What the paper's Table 1 times per polyhedral element (48–688 ms there): the basis, and
-// the element's linear-elastic stiffness K_e (3n × 3n) integrated with it — here the whole
-// per-element set-up of the harmonic method at its defaults (5 samples per edge, an
-// order-2 rule, the consistency correction), then K_ab = Σ_q w_q (λ ∇N_a ∇N_bᵀ +
-// μ ∇N_b ∇N_aᵀ + μ ∇N_a·∇N_b I). Arg: cell kind.
+// Both phases at the defaults: what the paper's Table 1 times per polyhedral element
+// (48–688 ms there, Core 2 Duo 2.4 GHz). Arg: cell kind.
 void harmonic_element_setup(benchmark::State& state) {
-  const Polyhedron element = cell(static_cast<int>(state.range(0)));
-  const double lambda = 1.5, mu = 1.0;
-  const auto n = static_cast<int>(element.vertices.rows());
-  Eigen::MatrixXd stiffness(3 * n, 3 * n);
-  long long points = 0;
+  const std::vector<Polyhedron> elements = cells(static_cast<int>(state.range(0)));
+  Eigen::MatrixXd stiffness;
+  double points = 0;
+  size_t next = 0;
   for (auto _ : state) {
+    const Polyhedron& element = elements[next++ % elements.size()];
     const harmonic::ElementHarmonicBasis basis(element, {});
     const PolyhedronRule rule = polyhedron_rule(element, 2);
     const harmonic::HarmonicTabulation table = harmonic::tabulate_harmonic_element(basis, rule, true);
-    stiffness.setZero();
-    for (Eigen::Index q = 0; q < table.weights.size(); ++q)
-      for (int a = 0; a < n; ++a)
-        for (int b = 0; b < n; ++b) {
-          const Eigen::RowVector3d ga = table.gradients.row(q * n + a), gb = table.gradients.row(q * n + b);
-          stiffness.block<3, 3>(3 * a, 3 * b) += table.weights[q] * (lambda * ga.transpose() * gb + mu * gb.transpose() * ga +
-                                                                      mu * ga.dot(gb) * Eigen::Matrix3d::Identity());
-        }
+    element_stiffness(table, static_cast<int>(element.vertices.rows()), stiffness);
     benchmark::DoNotOptimize(stiffness.data());
-    points = table.weights.size();
+    points += static_cast<double>(rule.weights.size());
   }
-  state.counters["points"] = static_cast<double>(points);
+  state.counters["points"] = benchmark::Counter(points, benchmark::Counter::kAvgIterations);
   state.SetLabel(cell_name(static_cast<int>(state.range(0))));
 }
 
 void dg_element_matrices(benchmark::State& state) {
-  const Polyhedron element = cell(static_cast<int>(state.range(0)));
+  const Polyhedron element = cells(static_cast<int>(state.range(0))).front();
   const dg::MonomialBasis basis(static_cast<int>(state.range(1)), Eigen::Vector3d(0.5, 0.6, 0.45), 1.8);
   for (auto _ : state) benchmark::DoNotOptimize(dg::exact_element_matrices(element, basis, 2.0, 1.5, 1000));
-  state.SetLabel(std::string(cell_name(static_cast<int>(state.range(0)))) + ", degree " + std::to_string(state.range(1)));
+  state.SetLabel(cell_name(static_cast<int>(state.range(0))) + ", degree " + std::to_string(state.range(1)));
 }
 
-BENCHMARK(harmonic_basis)->ArgsProduct({{0, 1}, {4, 5}})->Unit(benchmark::kMillisecond);
-BENCHMARK(harmonic_tabulation)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(harmonic_element_setup)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
-BENCHMARK(dg_element_matrices)->ArgsProduct({{0, 1}, {1, 2, 3}})->Unit(benchmark::kMillisecond);
+BENCHMARK(harmonic_basis)->ArgsProduct({{hexahedron, hexahedron20, l_prism, bunny_cut}, {4, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(harmonic_stiffness)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);
+BENCHMARK(harmonic_element_setup)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);
+BENCHMARK(dg_element_matrices)->ArgsProduct({{hexahedron, l_prism}, {1, 2, 3}})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -170,7 +170,7 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
     if (std::abs(winding_number(element, centre)) > 0.5) continue;
     bool too_close = false;
     for (const auto& point : collocation.points)
-      if ((point - centre).norm() < 0.5 * offset) {
+      if ((point - centre).squaredNorm() < 0.25 * offset * offset) {
         too_close = true;
         break;
       }
@@ -188,13 +188,18 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   system_storage.resize(std::max(system_storage.size(), static_cast<size_t>(m * (c + 4))));
   data_storage.resize(std::max(data_storage.size(), static_cast<size_t>(m * nodes)));
   Eigen::Map<Eigen::MatrixXd> system(system_storage.data(), m, c + 4), data(data_storage.data(), m, nodes);
+  // Column by column: the system is column-major, so each kernel column is written
+  // contiguously (row by row it was a stride-m scatter, 15% of the basis' time).
+  Eigen::Matrix3Xd local(3, m);
+  for (Eigen::Index i = 0; i < m; ++i) local.col(i) = (collocation.points[i] - origin_) / scale_;
   const auto fill_system = [&] {
-    for (Eigen::Index i = 0; i < m; ++i) {
-      const Eigen::Vector3d x = (collocation.points[i] - origin_) / scale_;
-      for (Eigen::Index j = 0; j < c; ++j) system(i, j) = 1.0 / (x - centres_.row(j).transpose()).norm();
-      system.block(i, c, 1, 4) << x.x(), x.y(), x.z(), 1.0;
-      data.row(i) = collocation.data[i].transpose();
+    for (Eigen::Index j = 0; j < c; ++j) {
+      const Eigen::Vector3d centre = centres_.row(j).transpose();
+      for (Eigen::Index i = 0; i < m; ++i) system(i, j) = 1.0 / (local.col(i) - centre).norm();
     }
+    system.middleCols(c, 3) = local.transpose();
+    system.col(c + 3).setOnes();
+    for (Eigen::Index i = 0; i < m; ++i) data.row(i) = collocation.data[i].transpose();
   };
   fill_system();
   // One factorisation for every node's right-hand side: blocked Householder QR in place

@@ -135,4 +135,19 @@ Eigen::MatrixXd FaceHarmonicCoordinates::evaluate(const Eigen::MatrixXd& points)
   return rows * coefficients_;
 }
 
+Eigen::MatrixX3d FaceHarmonicCoordinates::gradients(const Eigen::Vector3d& point) const {
+  const Eigen::Vector2d x = to_plane(point.transpose()).row(0).transpose();
+  const Eigen::Index c = centres_.rows();
+  // d/dx of one row of evaluate()'s matrix, in the local scaled frame (2 × (#centres + 3)).
+  Eigen::MatrixXd row_derivatives(2, c + 3);
+  for (Eigen::Index j = 0; j < c; ++j) {
+    const Eigen::Vector2d offset = x - centres_.row(j).transpose();
+    row_derivatives.col(j) = offset / offset.squaredNorm();
+  }
+  row_derivatives.rightCols(3) << 1, 0, 0, 0, 1, 0;
+  const Eigen::MatrixX2d local = (row_derivatives * coefficients_).transpose();  // #nodes × 2
+  // Back to space: local = ((x − origin)·u, (x − origin)·v) / scale.
+  return (local.col(0) * axis_u_.transpose() + local.col(1) * axis_v_.transpose()) / scale_;
+}
+
 }  // namespace altfem::harmonic

@@ -24,6 +24,9 @@ public:
   int node_count() const { return static_cast<int>(polygon_.rows()); }
   /// The coordinates at points of the face's plane: #points × #nodes (points: #points × 3).
   Eigen::MatrixXd evaluate(const Eigen::MatrixXd& points) const;
+  /// Their gradients at one point of the plane, in the plane: #nodes × 3 (row i: ∇N_i),
+  /// from ∇ log‖x − k‖ = (x − k)/‖x − k‖² (the 2D Poisson example's stiffness).
+  Eigen::MatrixX3d gradients(const Eigen::Vector3d& point) const;
 
 private:
   Eigen::MatrixX2d to_plane(const Eigen::MatrixXd& points) const;  // local, scaled coordinates

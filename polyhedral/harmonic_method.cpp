@@ -6,6 +6,8 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 #include "polyhedral/harmonic_scene_block.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/assembly/warped_linear_discretization.hpp"
+#include "shared/common/error.hpp"
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
@@ -37,7 +39,16 @@ public:
     // the nodes, as in fem; the lumped mass suits its partition of unity.
     parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
     parts.explicit_mass = ExplicitMassKind::lumped;
-    discretization_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
+    if (spec.warping) {
+      check_warped_materials(scene);
+      auto warped = std::make_unique<WarpedLinearDiscretization>(std::move(parts), mesh_.nodes);
+      elements_ = &warped->elements();
+      discretization_ = std::move(warped);
+    } else {
+      auto linear = std::make_unique<TabulatedDiscretization>(std::move(parts));
+      elements_ = &linear->elements();
+      discretization_ = std::move(linear);
+    }
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     load_surface_ = boundary_surface(volume).surface;
     surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
@@ -50,7 +61,7 @@ public:
   /// points from the basis' linear precision (exact on plain cells, to the MFS fit elsewhere).
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
     if (added_strength == 0)
-      return nodal_field_quadrature(borrowed(discretization_->elements()), mesh_.nodes, quadrature_order_);
+      return nodal_field_quadrature(borrowed(*elements_), mesh_.nodes, quadrature_order_);
     const int strength = quadrature_order_ + added_strength;
     return nodal_field_quadrature(std::make_shared<TabulatedElements>(bases_->tabulate(strength)), mesh_.nodes,
                                   strength);
@@ -68,7 +79,7 @@ public:
     if (mfs > 0) counts["mfs_polyhedron"] = mfs;
     return counts;
   }
-  long long quadrature_points() const override { return discretization_->elements().point_count(); }
+  long long quadrature_points() const override { return elements_->point_count(); }
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_polyhedral_mesh(mesh_);
@@ -91,10 +102,21 @@ public:
   }
 
 private:
+  // Martin et al. 2008 §6 warp the linear stiffness; the nonlinear models are already
+  // rotation-invariant (and corotated_linear is the warping's own continuum model).
+  static void check_warped_materials(const Scene& scene) {
+    for (const MaterialSpec& material : scene.materials)
+      if (material.model != "linear")
+        throw InputError(input_message(scene.file.string(), "/discretization/harmonic/warping",
+                                       "stiffness warping corotates the 'linear' material, but " + material.pointer +
+                                           "/model is '" + material.model + "' (use warping false)"));
+  }
+
   SceneMaterials materials_;
   PolyhedralMesh mesh_;
   std::unique_ptr<HarmonicElementBases> bases_;
-  std::unique_ptr<TabulatedDiscretization> discretization_;
+  std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
+  const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation
   SurfaceMesh surface_, load_surface_;
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;

@@ -39,7 +39,8 @@ const scene_schema::ObjectRule& harmonic_rule() {
         .lower = scene_schema::positive, .upper = scene_schema::Bound{1.0, true}},
        {.key = "quadrature_order", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one},
        {.key = "basis", .type = ValueType::string, .default_value = "auto",
-        .choices = scene_schema::names(harmonic_basis_names)}}};
+        .choices = scene_schema::names(harmonic_basis_names)},
+       {.key = "warping", .type = ValueType::boolean, .default_value = false}}};
   return rule;
 }
 
@@ -65,6 +66,7 @@ HarmonicSpec harmonic_spec(const Scene& scene) {
   spec.mfs.offset = harmonic["kernel_offset"].get<double>();
   spec.quadrature_order = harmonic["quadrature_order"].get<int>();
   spec.basis = enum_from_name<HarmonicBasisKind>(harmonic_basis_names, harmonic["basis"]);
+  spec.warping = harmonic["warping"].get<bool>();
   return spec;
 }
 

@@ -28,6 +28,8 @@ struct HarmonicSpec {
   MfsOptions mfs;           ///< edge_samples and offset from the block
   int quadrature_order = 2; ///< strength of each cell's rule (polyhedron_rule, tet_rule, hex_rule)
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;
+  /// Corotated stiffness warping of the linear material by shape matching (§6).
+  bool warping = false;
 };
 
 const MethodSceneBlock& harmonic_scene_block();

@@ -5,6 +5,8 @@
 // the values — and the C0 mismatch across a shared face shrinking with more samples.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <Eigen/LU>
 #include <cstdio>
 #include <vector>
@@ -152,6 +154,29 @@ TEST(HarmonicBasis, FaceCoordinatesReproduceLinearFieldsOnANonConvexPolygon) {
   const Eigen::MatrixXd values = face.evaluate(points);
   EXPECT_LT((values.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-10);
   EXPECT_LT((values * polygon - points).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+// gradients() against central differences of evaluate(), on a tilted non-convex polygon
+// (so the plane's frame and scale matter), and Σ_i x_i ⊗ ∇N_i is the in-plane projector.
+TEST(HarmonicBasis, FaceCoordinateGradientsMatchFiniteDifferences) {
+  const Polyhedron prism = l_prism();
+  const Eigen::Matrix3d tilt = Eigen::AngleAxisd(0.6, Eigen::Vector3d(1, 2, 0.3).normalized()).toRotationMatrix();
+  Eigen::MatrixXd polygon(6, 3);
+  for (int k = 0; k < 6; ++k) polygon.row(k) = 1.7 * prism.vertices.row(k) * tilt.transpose();
+  const FaceHarmonicCoordinates face(polygon, {});
+  const Eigen::Vector3d point = tilt * Eigen::Vector3d(1.7 * 0.6, 1.7 * 1.3, 0);
+  const Eigen::Vector3d along[2] = {tilt.col(0), tilt.col(1)};
+  const Eigen::MatrixX3d gradients = face.gradients(point);
+  const double step = 1e-6;
+  for (const Eigen::Vector3d& direction : along) {
+    const Eigen::VectorXd difference = (face.evaluate((point + step * direction).transpose()) -
+                                        face.evaluate((point - step * direction).transpose()))
+                                           .transpose() / (2 * step);
+    EXPECT_LT((gradients * direction - difference).cwiseAbs().maxCoeff(), 1e-7);
+  }
+  const Eigen::Vector3d normal = tilt.col(2);
+  const Eigen::Matrix3d projector = Eigen::Matrix3d::Identity() - normal * normal.transpose();
+  EXPECT_LT((polygon.transpose() * gradients - projector).cwiseAbs().maxCoeff(), 1e-9);
 }
 
 // Two wedges sharing the diagonal face of a sheared cube: the C0 mismatch on that face
