@@ -15,7 +15,7 @@ namespace altfem::dg {
 /// with disjoint blocks). element_dofs: each element's DOFs.
 PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element_dofs);
 
-class LinearDgDiscretization final : public Discretization {
+class LinearDgDiscretization : public Discretization {
 public:
   /// stiffness, mass: #dofs square, symmetric; function_integrals: ∫ ρ φ_a dV per basis
   /// function (#dofs / 3); element_dofs: each element's DOFs (disjoint, covering all);

@@ -8,9 +8,13 @@
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
+#include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/material/material.hpp"
+#include "shared/simulation/mls_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
+#include "shared/simulation/stitched_embedding.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem::dg {
@@ -69,8 +73,16 @@ public:
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     load_surface_ = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
+    // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
+    if (built.converted) volume_mesh_ = std::move(*built.converted);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
+    // Warping rotates Nitsche's consistency terms with the boundary element, which the
+    // data load of a moving condition would have to follow: not in this build.
+    for (size_t c = 0; c < scene.dirichlet.size() && spec_.warping; ++c)
+      if (scene.dirichlet[c].motion.kind != MotionKind::fixed)
+        throw InputError(input_message(scene.file.string(), scene.dirichlet[c].pointer + "/motion",
+                                       "discretization.dg.warping needs 'fixed' Dirichlet conditions in this build"));
 
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
@@ -93,7 +105,11 @@ public:
       for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
         element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
-    if (linear()) {
+    if (spec_.warping) {
+      linear_ = std::make_unique<WarpedDgDiscretization>(*system_, settings_, density_integrals(),
+                                                         std::move(element_dofs), external_force);
+      discretization_ = linear_.get();
+    } else if (linear()) {
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
                                                          std::move(element_dofs), external_force);
       discretization_ = linear_.get();
@@ -105,7 +121,16 @@ public:
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
-    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+    switch (spec_.embedding) {
+      case Embedding::element: embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices); break;
+      case Embedding::stitched:
+        lagrange_ = std::make_unique<LagrangeBasisEvaluator>(volume_mesh_);
+        stitched_ = std::make_unique<StitchedEmbedding>(*evaluator_, volume_mesh_.nodes, *lagrange_, surface_.vertices);
+        break;
+      case Embedding::mls:
+        mls_ = std::make_unique<MlsEmbedding>(*evaluator_, mesh_.nodes, longest_edge_at_nodes(mesh_), surface_.vertices);
+        break;
+    }
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -122,7 +147,9 @@ public:
   const SurfaceMesh& embedded_surface() const override { return surface_; }
   const SurfaceMesh& load_surface() const override { return load_surface_; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override { return embedding_->displacement(u); }
+  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
+    return mls_ ? mls_->displacement(u) : stitched_ ? stitched_->displacement(u) : embedding_->displacement(u);
+  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return system_->interpolate(field);
   }
@@ -145,9 +172,16 @@ public:
               {"value", spec_.penalty_value * (1 << doublings_)},
               {"doublings", doublings_},
               {"eta_pa", settings_.penalty}}},
+            {"warping", spec_.warping},
             {"surface_vertices", surface_.vertices.rows()},
-            {"surface_vertices_outside_mesh", embedding_->outside_count()},
-            {"max_outside_distance", embedding_->max_outside_distance()}});
+            {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
+    const BasisEmbedding* located = embedding_ ? embedding_.get() : stitched_ ? &stitched_->interpolation() : nullptr;
+    if (located) {
+      facts["surface_vertices_outside_mesh"] = located->outside_count();
+      facts["max_outside_distance"] = located->max_outside_distance();
+    } else {
+      facts["mls_max_samples_per_vertex"] = mls_->max_samples_per_point();
+    }
     return facts;
   }
 
@@ -202,17 +236,22 @@ private:
   DgSettings settings_;  // with the first material's λ, μ, ρ, η
   DgCellMaterials cell_materials_;
   int doublings_ = 0;
+  VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;
-  std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material
+  std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
   SurfaceMesh surface_, load_surface_;
   std::unique_ptr<MonomialBasisEvaluator> evaluator_;
+  // One of the three embeddings of §7, as spec_.embedding says.
   std::unique_ptr<BasisEmbedding> embedding_;
+  std::unique_ptr<LagrangeBasisEvaluator> lagrange_;  // over volume_mesh_
+  std::unique_ptr<StitchedEmbedding> stitched_;
+  std::unique_ptr<MlsEmbedding> mls_;
   double integration_seconds_ = 0;
 };
 

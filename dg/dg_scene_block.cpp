@@ -37,6 +37,9 @@ void complete_dg_mesh(const Validator& validator, const json& scene, json& dg, c
                  : names_converted_mesh    ? "tetrahedralize"
                                            : "slice";
   complete_slice_key(validator, dg, pointer);
+  if (dg["mesh"] == "slice" && dg.value("embedding", "mls") == "stitched")  // it interpolates with the converted mesh's basis
+    validator.fail(pointer + "/embedding", "'stitched' needs a converted mesh (grid, tetrahedralize or file), not mesh "
+                                           "'slice'; use 'mls' or 'element'");
   if (dg["mesh"] == "slice") {
     for (std::string_view key : mesh_keys)
       if (key != "mesh" && dg.contains(key))
@@ -81,6 +84,9 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
     penalty["value"] = convention == PenaltyConvention::kaufmann ? 20.0
                        : convention == PenaltyConvention::mfem   ? double((degree + 1) * (degree + 1))
                                                                  : 1.0;
+  if (dg["warping"].get<bool>() && !linear)
+    validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
+                                             "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite"))
     penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;
 }
@@ -110,6 +116,9 @@ const scene_schema::ObjectRule& dg_rule() {
       {{.key = "degree", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one,
         .upper = scene_schema::Bound{3.0, true}},
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
+       {.key = "warping", .type = ValueType::boolean, .default_value = false},
+       {.key = "embedding", .type = ValueType::string, .default_value = "mls",
+        .choices = scene_schema::names(embedding_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = mesh_names()},
@@ -136,6 +145,8 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.warping = dg["warping"].get<bool>();
+  spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
     return spec;

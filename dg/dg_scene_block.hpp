@@ -28,6 +28,11 @@ namespace altfem::dg {
 enum class PenaltyConvention { kaufmann, mfem, dealii };
 inline constexpr std::array<std::string_view, 3> penalty_convention_names{"kaufmann", "mfem", "dealii"};
 inline constexpr std::array<std::string_view, 2> flux_names{"interior_penalty", "babuska_zlamal"};
+/// How the scene surface follows the discontinuous field (Kaufmann et al. 2009 §7): each
+/// vertex by its own element's polynomial (the mean on shared faces), nodal averages
+/// (eq. (30)) interpolated by the converted mesh's C⁰ basis, or MLS (eqs. (31)-(32)).
+enum class Embedding { element, stitched, mls };
+inline constexpr std::array<std::string_view, 3> embedding_names{"element", "stitched", "mls"};
 
 struct DgSpec {
   int degree = 2;
@@ -35,6 +40,9 @@ struct DgSpec {
   PenaltyConvention convention = PenaltyConvention::kaufmann;
   double penalty_value = 20;
   bool double_until_definite = true;
+  /// Corotated stiffness warping (Kaufmann et al. 2009 §6), linear material only.
+  bool warping = false;
+  Embedding embedding = Embedding::mls;
   /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
   /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
   /// (quadrature_order and curved unused).

@@ -4,10 +4,10 @@
 
 namespace altfem::dg {
 
-Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
-                                  const LameParameters& plus_lame, double penalty, Flux flux,
-                                  const std::array<bool, 3>& components) {
+FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                        const MonomialBasis& minus, const MonomialBasis* plus,
+                                        const LameParameters& minus_lame, const LameParameters& plus_lame,
+                                        double penalty, Flux flux, const std::array<bool, 3>& components) {
   const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
   const Eigen::Vector3d centre = minus.centre();
   const double scale = minus.scale();
@@ -30,13 +30,15 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
     lame.insert(lame.end(), functions.values.size(), side == &minus ? minus_lame : plus_lame);
   }
   const auto n = static_cast<int>(values.size());
-  Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  FaceMatrixParts parts;
+  parts.penalty = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  parts.consistency = {parts.penalty, parts.penalty};
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       // Penalty (26): η_f ∫ [[φ_a e_i]]·[[φ_b e_k]] = η_f s_a s_b δ_ik ∫ φ_a φ_b.
       const double jumps = penalty * jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
       for (int i = 0; i < 3; ++i)
-        if (components[i]) matrix(3 * a + i, 3 * b + i) += jumps;
+        if (components[i]) parts.penalty(3 * a + i, 3 * b + i) += jumps;
       if (flux != Flux::interior_penalty) continue;
       // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
       //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b, with u's side's λ, μ.
@@ -44,16 +46,26 @@ Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::V
       for (int d = 0; d < 3; ++d) value_times_gradient[d] = integrate(values[a], gradients[b][d]);
       const double factor = -jump_sign[a] * average;
       const double lambda = lame[b].lambda, mu = lame[b].mu;
+      Eigen::MatrixXd& consistency = parts.consistency[jump_sign[b] > 0 ? 0 : 1];  // σ(u) of b's side
       for (int i = 0; i < 3; ++i)
         for (int k = 0; k < 3; ++k) {
           if (!components[i]) continue;  // P v = 0 for an unprescribed test component
           const double traction = (i == k ? mu * value_times_gradient.dot(normal) : 0.0) +
                                   mu * normal[k] * value_times_gradient[i] + lambda * normal[i] * value_times_gradient[k];
-          matrix(3 * a + i, 3 * b + k) += factor * traction;
-          matrix(3 * b + k, 3 * a + i) += factor * traction;  // symmetry (25) = (24)ᵀ
+          consistency(3 * a + i, 3 * b + k) += factor * traction;  // (24); (25) is its transpose
         }
     }
-  return matrix;
+  return parts;
+}
+
+Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
+                                  const LameParameters& plus_lame, double penalty, Flux flux,
+                                  const std::array<bool, 3>& components) {
+  const FaceMatrixParts parts =
+      exact_face_matrix_parts(polygon, normal, minus, plus, minus_lame, plus_lame, penalty, flux, components);
+  return parts.penalty + parts.consistency[0] + parts.consistency[0].transpose() + parts.consistency[1] +
+         parts.consistency[1].transpose();
 }
 
 }  // namespace altfem::dg

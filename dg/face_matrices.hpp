@@ -38,4 +38,20 @@ inline Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const E
   return exact_face_matrix(polygon, normal, minus, plus, {lambda, mu}, {lambda, mu}, penalty, flux, components);
 }
 
+/// exact_face_matrix split for stiffness warping (Kaufmann et al. 2009 §6.1): the
+/// penalty term K_f3 (26), and per side s (0 minus, 1 plus) K_f1^s = −½∫[[v]]·σ^s(u)n
+/// (−∫ v·σ(u)n on a boundary face), rows the jump of the test functions of both sides,
+/// columns the strain of side s only; K_f2^s = K_f1^sᵀ. Over the face's whole local DOF
+/// set; zero for BZ and for a missing plus side.
+/// exact_face_matrix = penalty + Σ_s (consistency[s] + consistency[s]ᵀ).
+struct FaceMatrixParts {
+  Eigen::MatrixXd penalty;
+  std::array<Eigen::MatrixXd, 2> consistency;
+};
+FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
+                                        const MonomialBasis& minus, const MonomialBasis* plus,
+                                        const LameParameters& minus_lame, const LameParameters& plus_lame,
+                                        double penalty, Flux flux,
+                                        const std::array<bool, 3>& components = {true, true, true});
+
 }  // namespace altfem::dg

@@ -44,6 +44,8 @@ public:
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return linear_->hessian_pattern(); }
   bool hessian_is_constant() const override { return false; }
+  /// A force model: the "energy" is a line-search merit only (see the class comment).
+  bool forces_have_potential() const override { return false; }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return linear_->mass_matrix(); }
   const ExplicitMass& explicit_mass() const override { return linear_->explicit_mass(); }
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {

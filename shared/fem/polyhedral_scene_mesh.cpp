@@ -49,9 +49,9 @@ PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& sour
     result.facts = {{"source", "slice"}, {"slicing", slicing_facts(result.sliced)}};
     return result;
   }
-  const VolumeMesh volume = build_fem_mesh(source.convert, geometry);
-  result.sliced.mesh = polyhedral_mesh_from_volume_mesh(volume);
-  result.load_surface = boundary_surface(volume).surface;
+  result.converted = build_fem_mesh(source.convert, geometry);
+  result.sliced.mesh = polyhedral_mesh_from_volume_mesh(*result.converted);
+  result.load_surface = boundary_surface(*result.converted).surface;
   result.surface = geometry.common_surface() ? *geometry.common_surface() : result.load_surface;
   result.facts = {{"source", "convert"}};
   return result;

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "shared/fem/fem_scene_block.hpp"
+#include "shared/mesh/volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -29,6 +30,9 @@ struct PolyhedralSceneMesh {
   SurfaceMesh load_surface;
   /// {"source": "convert" | "slice"} and, when sliced, "slicing": slicing_facts.
   nlohmann::json facts;
+  /// The tet or hex mesh that was converted (its conforming basis serves dg's stitched
+  /// embedding); unset when sliced.
+  std::optional<VolumeMesh> converted;
 };
 
 /// Builds the mesh `source` describes for the scene's geometry. Throws InputError and

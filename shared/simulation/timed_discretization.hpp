@@ -36,6 +36,7 @@ public:
   }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return inner_.hessian_pattern(); }
   bool hessian_is_constant() const override { return inner_.hessian_is_constant(); }
+  bool forces_have_potential() const override { return inner_.forces_have_potential(); }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return inner_.mass_matrix(); }
   const ExplicitMass& explicit_mass() const override { return inner_.explicit_mass(); }
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {

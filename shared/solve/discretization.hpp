@@ -32,6 +32,10 @@ public:
   virtual const Eigen::SparseMatrix<double>& hessian_pattern() const = 0;
   /// True when the Hessian does not depend on u (linear elasticity).
   virtual bool hessian_is_constant() const = 0;
+  /// False for a force model whose gradient() is not the derivative of energy() (DG
+  /// stiffness warping, Kaufmann et al. 2009 §6): Newton then judges its steps by the
+  /// residual instead of the energy, and L-BFGS (which needs a potential) is refused.
+  virtual bool forces_have_potential() const { return true; }
 
   /// Consistent mass matrix, with hessian_pattern().
   virtual const Eigen::SparseMatrix<double>& mass_matrix() const = 0;

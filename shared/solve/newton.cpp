@@ -117,10 +117,13 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
       if (accepted) break;
       // Near the minimum the decrease Armijo asks for falls below the round-off of the
       // energy (a sum of terms of order μ·V): judge the full step by the gradient
-      // instead, and accept it when it halves the residual.
-      if (constraints_met && backtrack == 0 && std::isfinite(trial_value)) {
+      // instead, and accept it when it halves the residual. A force model's energy is
+      // only a merit function (its gradient is not the force), and its tangent may
+      // converge linearly: there any step that lowers the residual is taken.
+      const bool potential = objective.gradient_has_potential();
+      if (constraints_met && (backtrack == 0 || !potential) && std::isfinite(trial_value)) {
         objective.gradient(trial_, trial_gradient_);
-        if (elimination_.free_norm(trial_gradient_) <= 0.5 * residual) break;
+        if (elimination_.free_norm(trial_gradient_) <= (potential ? 0.5 : 1.0) * residual) break;
       }
       if (backtrack >= options.max_backtracks)
         throw NumericalError(where(step, iteration) + ": line search failed (no decrease after " +

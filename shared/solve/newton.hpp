@@ -17,6 +17,10 @@ public:
   /// Into a matrix with the pattern given to NewtonSolver.
   virtual void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const = 0;
   virtual bool hessian_is_constant() const = 0;
+  /// False when gradient() is not the derivative of value() (a force model): the line
+  /// search then takes value() as a merit function only, and also accepts any step that
+  /// lowers the residual.
+  virtual bool gradient_has_potential() const { return true; }
 };
 
 struct NewtonOptions {

@@ -39,6 +39,7 @@ public:
     discretization_.hessian(u, hessian, project_spd);
   }
   bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
+  bool gradient_has_potential() const override { return discretization_.forces_have_potential(); }
 
 private:
   const Discretization& discretization_;
@@ -83,6 +84,7 @@ public:
     if (damping_) values += Eigen::Map<const Eigen::VectorXd>(damping_->valuePtr(), hessian.nonZeros()) / h_;
   }
   bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
+  bool gradient_has_potential() const override { return discretization_.forces_have_potential(); }
 
 private:
   const Discretization& discretization_;
@@ -216,6 +218,9 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
 StepReport TimeIntegrator::step_lbfgs(State& state) {
   // The same potentials as Newton, minimised over the free DOFs by L-BFGS with the
   // constrained DOFs set to their prescribed values first.
+  if (!discretization_.forces_have_potential())
+    throw InputError("solver: 'lbfgs' minimises an energy, and this discretization is a force model (dg warping): "
+                     "use the 'newton' nonlinear solver");
   const bool is_static = options_.kind == IntegrationScheme::static_equilibrium;
   const double h = options_.time_step;
   const double time = is_static ? state.time : state.time + h;

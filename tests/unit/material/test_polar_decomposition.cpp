@@ -1,5 +1,7 @@
 #include "shared/material/polar_decomposition.hpp"
 
+#include "shared/material/best_fit_rotation.hpp"
+
 #include <gtest/gtest.h>
 
 #include "tests/unit/material/deformation_samples.hpp"
@@ -7,10 +9,7 @@
 namespace altfem {
 namespace {
 
-Eigen::Matrix3d rotation_of(const Eigen::Matrix3d& F) {
-  const RotationVariantSvd svd = rotation_variant_svd(F);
-  return svd.U * svd.V.transpose();
-}
+Eigen::Matrix3d rotation_of(const Eigen::Matrix3d& F) { return polar_rotation(F); }
 
 TEST(PolarDecomposition, RotationVariantSvdReconstructsWithProperRotations) {
   std::mt19937 random(17);

@@ -17,6 +17,7 @@ struct StaticSurface {
   int dofs;
   Eigen::MatrixXd vertices;      ///< #vertices × 3, at rest
   Eigen::MatrixXd displacement;  ///< #vertices × 3
+  Eigen::MatrixXi triangles;     ///< #triangles × 3
 };
 
 /// A static solve kept with what it was computed from (the method may refer to its scene
@@ -54,7 +55,7 @@ inline StaticSurface static_surface(const std::filesystem::path& scene_file, con
                                     const std::vector<std::string>& assignments) {
   const StaticRun run = static_run(scene_file, factory, assignments);
   return {run.method->discretization().dof_count(), run.method->embedded_surface().vertices,
-          run.method->embedded_displacement(run.displacement)};
+          run.method->embedded_displacement(run.displacement), run.method->embedded_surface().triangles};
 }
 
 /// The mean of displacement component `component` over the vertices whose coordinate

@@ -1,0 +1,240 @@
+#include "dg/warped_dg_discretization.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+
+#include "dg/exact_element_matrices.hpp"
+#include "shared/material/best_fit_rotation.hpp"
+
+namespace altfem::dg {
+
+struct WarpedDgDiscretization::Parts {
+  std::vector<Block> blocks;
+  Eigen::SparseMatrix<double> penalty;
+  Eigen::SparseMatrix<double> stiffness;  // K on the union of the blocks' and K_3's patterns
+  std::vector<Eigen::MatrixXd> affine_fit;
+};
+
+namespace {
+
+// 3 × n: row d holds ∂/∂x_d of the L2(K) projection of each φ_a onto the affine fields
+// {1, ξ, η, ζ} (ξ = (x − c)/s, the basis's own linear monomials): P = M₁₁⁻¹ M₁ with M the
+// element mass matrix, so ∇(fit of u) = Σ_a u_a ⊗ row(P)/s (Kaufmann et al. 2009 §6.1,
+// "fitting an affine transformation ... in the least squares sense").
+Eigen::MatrixXd affine_fit_gradients(const Eigen::MatrixXd& mass, const MonomialBasis& basis) {
+  const int affine[4] = {0, monomial_index(1, 0, 0), monomial_index(0, 1, 0), monomial_index(0, 0, 1)};
+  Eigen::Matrix4d affine_mass;
+  Eigen::MatrixXd mixed(4, mass.cols());
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) affine_mass(i, j) = mass(affine[i], affine[j]);
+    mixed.row(i) = mass.row(affine[i]);
+  }
+  const Eigen::MatrixXd projection = affine_mass.inverse() * mixed;  // 4 × n
+  return projection.bottomRows(3) / basis.scale();
+}
+
+// The block's DOFs as a list.
+template <typename Ranges>
+std::vector<int> dofs_of(const Ranges& ranges) {
+  std::vector<int> dofs;
+  for (const auto& range : ranges)
+    for (int k = 0; k < range.count; ++k) dofs.push_back(range.first + k);
+  return dofs;
+}
+
+// R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
+Eigen::MatrixXd rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation) {
+  Eigen::MatrixXd rotated(matrix.rows(), matrix.cols());
+  for (Eigen::Index a = 0; a < matrix.rows(); a += 3)
+    for (Eigen::Index b = 0; b < matrix.cols(); b += 3)
+      rotated.block<3, 3>(a, b) = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
+  return rotated;
+}
+
+}  // namespace
+
+WarpedDgDiscretization::WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings,
+                                               Eigen::VectorXd function_integrals,
+                                               std::vector<std::vector<int>> element_dofs,
+                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+    : WarpedDgDiscretization(warped_parts(system, settings), system, std::move(function_integrals),
+                             std::move(element_dofs), std::move(weak_condition_load)) {}
+
+WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem& system,
+                                               Eigen::VectorXd function_integrals,
+                                               std::vector<std::vector<int>> element_dofs,
+                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+    : LinearDgDiscretization(parts.stiffness, system.mass(), std::move(function_integrals), std::move(element_dofs),
+                             std::move(weak_condition_load)),
+      blocks_(std::move(parts.blocks)),
+      affine_fit_(std::move(parts.affine_fit)) {
+  const Eigen::SparseMatrix<double>& pattern = hessian_pattern();
+  penalty_ = parts.penalty + 0.0 * pattern;  // on the pattern (explicit zeros kept)
+  penalty_.makeCompressed();
+  // Where each block column's ranges start in the pattern's value array: the block's
+  // rows are all stored (its dense pattern is part of K's), so a range is contiguous.
+  for (Block& block : blocks_) {
+    for (int column : dofs_of(block.ranges))
+      for (const DofRange& range : block.ranges) {
+        const int* begin = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column];
+        const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column + 1];
+        block.value_index.push_back(static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
+      }
+  }
+  // X⁰ (§6.2): x = c·1 + s·ξ e_x + s·η e_y + s·ζ e_z in the centred, scaled monomials.
+  rest_state_ = Eigen::VectorXd::Zero(dof_count());
+  cell_offsets_.push_back(0);
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    const MonomialBasis& basis = system.basis(cell);
+    const int first = 3 * system.offset(cell);
+    rest_state_.segment<3>(first) = basis.centre();
+    for (int d = 0; d < 3; ++d) {
+      const Eigen::Vector3i exponent = Eigen::Vector3i::Unit(d);
+      rest_state_[first + 3 * monomial_index(exponent[0], exponent[1], exponent[2]) + d] = basis.scale();
+    }
+    cell_offsets_.push_back(system.offset(cell + 1));
+  }
+}
+
+WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinearSystem& system,
+                                                                  const DgSettings& settings) {
+  using Range = DofRange;
+  Parts parts;
+  std::vector<Eigen::Triplet<double>> penalty, pattern;
+  const auto add = [&](std::vector<Range> ranges, int element, Eigen::MatrixXd matrix) {
+    const std::vector<int> dofs = dofs_of(ranges);
+    for (int row : dofs)
+      for (int column : dofs) pattern.emplace_back(row, column, 0.0);
+    parts.blocks.push_back({std::move(ranges), element, std::move(matrix), {}});
+  };
+  const auto range_of = [&](int cell) {
+    return Range{3 * system.offset(cell), 3 * (system.offset(cell + 1) - system.offset(cell))};
+  };
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    const DgMaterial material = system.material(cell);
+    ElementMatrices matrices = exact_element_matrices(system.cell(cell), system.basis(cell), material.lambda, material.mu, 1.0);
+    parts.affine_fit.push_back(affine_fit_gradients(matrices.mass, system.basis(cell)));
+    add({range_of(cell)}, cell, std::move(matrices.stiffness));  // eq. (29)
+  }
+  for (const DgFace& face : system.faces()) {
+    if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
+    const MonomialBasis* plus = face.plus >= 0 ? &system.basis(face.plus) : nullptr;
+    const DgMaterial minus_material = system.material(face.minus);
+    const DgMaterial plus_material = face.plus >= 0 ? system.material(face.plus) : minus_material;
+    FaceMatrixParts matrices = exact_face_matrix_parts(
+        face.polygon, face.normal, system.basis(face.minus), plus, {minus_material.lambda, minus_material.mu},
+        {plus_material.lambda, plus_material.mu}, system.face_penalty(face), settings.flux, face.components);
+    std::vector<Range> ranges{range_of(face.minus)};
+    if (face.plus >= 0) ranges.push_back(range_of(face.plus));
+    const std::vector<int> dofs = dofs_of(ranges);
+    for (size_t i = 0; i < dofs.size(); ++i)
+      for (size_t j = 0; j < dofs.size(); ++j)
+        if (matrices.penalty(i, j) != 0) penalty.emplace_back(dofs[i], dofs[j], matrices.penalty(i, j));
+    if (settings.flux != Flux::interior_penalty) continue;
+    if (face.plus < 0) {
+      add(ranges, face.minus, std::move(matrices.consistency[0]));
+      parts.blocks.back().dirichlet = true;
+      continue;
+    }
+    // §6.1: K_f1^± + K_f2^± warped with R_f^±, the rotation of the element whose strain they hold.
+    for (int side : {0, 1})
+      add(ranges, side == 0 ? face.minus : face.plus,
+          matrices.consistency[side] + matrices.consistency[side].transpose());
+  }
+  const int size = system.dof_count();
+  parts.penalty.resize(size, size);
+  parts.penalty.setFromTriplets(penalty.begin(), penalty.end());
+  Eigen::SparseMatrix<double> blocks_pattern(size, size);
+  blocks_pattern.setFromTriplets(pattern.begin(), pattern.end());
+  parts.stiffness = system.stiffness() + blocks_pattern + 0.0 * parts.penalty;
+  parts.stiffness.makeCompressed();
+  return parts;
+}
+
+std::vector<Eigen::Matrix3d> WarpedDgDiscretization::rotations(const Eigen::VectorXd& u) const {
+  std::vector<Eigen::Matrix3d> result(affine_fit_.size());
+#pragma omp parallel for schedule(static)
+  for (int cell = 0; cell < static_cast<int>(affine_fit_.size()); ++cell) {
+    const int first = cell_offsets_[cell], count = cell_offsets_[cell + 1] - first;
+    // u's coefficients of this cell as 3 × #functions (column a = u_a).
+    const Eigen::Map<const Eigen::MatrixXd> coefficients(u.data() + 3 * first, 3, count);
+    const Eigen::Matrix3d deformation_gradient = Eigen::Matrix3d::Identity() + coefficients * affine_fit_[cell].transpose();
+    result[cell] = polar_rotation(deformation_gradient);
+  }
+  return result;
+}
+
+Eigen::VectorXd WarpedDgDiscretization::gather(const Block& block, const Eigen::VectorXd& global) const {
+  Eigen::VectorXd local(block.matrix.rows());
+  Eigen::Index position = 0;
+  for (const DofRange& range : block.ranges) {
+    local.segment(position, range.count) = global.segment(range.first, range.count);
+    position += range.count;
+  }
+  return local;
+}
+
+Eigen::VectorXd WarpedDgDiscretization::corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation,
+                                                               const Eigen::VectorXd& u, bool displacement_only) const {
+  const Eigen::VectorXd rest = displacement_only ? Eigen::VectorXd::Zero(block.matrix.rows()).eval() : gather(block, rest_state_);
+  Eigen::VectorXd z = gather(block, u) + rest;
+  for (Eigen::Index a = 0; a < z.size(); a += 3) z.segment<3>(a) = rotation.transpose() * z.segment<3>(a);
+  return z - rest;
+}
+
+Eigen::VectorXd WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
+                                                    const Eigen::VectorXd& u, double* energy) const {
+  const Eigen::VectorXd z = corotated_displacement(block, rotation, u);
+  if (!block.dirichlet) {
+    Eigen::VectorXd force = block.matrix * z;
+    if (energy) *energy += 0.5 * z.dot(force);
+    return force;
+  }
+  const Eigen::VectorXd jump = corotated_displacement(block, rotation, u, true);
+  if (energy) *energy += jump.dot(block.matrix * z);
+  return block.matrix * z + block.matrix.transpose() * jump;
+}
+
+double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
+  const std::vector<Eigen::Matrix3d> rotation = rotations(u);
+  double energy = 0.5 * u.dot(penalty_ * u);
+  for (const Block& block : blocks_) block_force(block, rotation[block.element], u, &energy);
+  return energy;
+}
+
+void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
+  const std::vector<Eigen::Matrix3d> rotation = rotations(u);
+  gradient = penalty_ * u;
+  for (const Block& block : blocks_) {
+    const Eigen::Matrix3d& R = rotation[block.element];
+    const Eigen::VectorXd force = block_force(block, R, u, nullptr);  // K_S z_S
+    Eigen::Index position = 0;
+    for (const DofRange& range : block.ranges)
+      for (int k = 0; k < range.count; k += 3, position += 3)
+        gradient.segment<3>(range.first + k) += R * force.segment<3>(position);  // eq. (29)
+  }
+}
+
+void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool) const {
+  const std::vector<Eigen::Matrix3d> rotation = rotations(u);
+  if (hessian.nonZeros() != penalty_.nonZeros()) hessian = penalty_;
+  Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
+  values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
+  for (const Block& block : blocks_) {
+    const Eigen::MatrixXd symmetric =
+        block.dirichlet ? (block.matrix + block.matrix.transpose()).eval() : Eigen::MatrixXd();
+    const Eigen::MatrixXd warped =
+        rotate_blocks(block.dirichlet ? symmetric : block.matrix, rotation[block.element]);  // §6.3
+    const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
+    for (Eigen::Index column = 0; column < warped.cols(); ++column) {
+      Eigen::Index row = 0;
+      for (Eigen::Index r = 0; r < ranges; ++r) {
+        const int start = block.value_index[column * ranges + r];
+        values.segment(start, block.ranges[r].count) += warped.col(column).segment(row, block.ranges[r].count);
+        row += block.ranges[r].count;
+      }
+    }
+  }
+}
+
+}  // namespace altfem::dg

@@ -1,0 +1,96 @@
+#pragma once
+// Corotated linear DG, "stiffness warping" (Kaufmann et al. 2009 §6): the linear DG
+// stiffness evaluated in each element's rotated frame, so that large rotations give no
+// spurious strain.
+//
+// Blocks S (each a dense symmetric matrix K_S over a list of DOF ranges, warped by the
+// rotation R_S of one element):
+//   - every element's K_K (eq. (23)), warped with R_K (eq. (29));
+//   - on every interior face f and side ± the consistency terms whose strain is that
+//     side's, K_f1^± + K_f2^± (§6.1), over both sides' DOFs, warped with R_f^± — the
+//     element's rotation, never the face's (§6.1: a face rotation gives ghost forces);
+//   - on a Dirichlet face with the IP flux, Nitsche's consistency terms K_f1 + K_f1ᵀ,
+//     warped with the boundary element's rotation; there the jump u − g (g = 0: fixed
+//     conditions only) is rotated as R_Kᵀ u, not as R_Kᵀ X − X⁰, which would read the
+//     wall's unrotated position as a jump of (R_Kᵀ − I) x.
+// The penalty terms K_f3 (26) measure jumps only and are not warped (§6.1).
+// With X = X⁰ + U the warped internal force is Σ_S R_S K_S (R_Sᵀ X − X⁰) + K_3 U
+// (eq. (29), the five contributions of §6.1), X⁰ the coefficients of the identity map
+// x ↦ x in the monomial basis (§6.2). R_K is the polar rotation of the element's least-
+// squares affine fit: the L2(K) projection of x + u onto affine fields (§6.1).
+//
+// Warping is a force model, not an energy: the Discretization interface is met with
+//   energy(u)   = Σ_S ½ z_Sᵀ K_S z_S + ½ uᵀ K_3 u,  z_S = R_Sᵀ X − X⁰ (R_S from u)
+//                 (a Dirichlet face's term: (R_Kᵀ u)ᵀ K_f1 z_S),
+//   gradient(u) = the warped force above (the energy's gradient with R frozen),
+//   hessian(u)  = Σ_S R_S K_S R_Sᵀ + K_3 (rotations frozen; symmetric).
+// The gradient drops ∂R/∂u terms of order |strain|·|rotation change|, so the energy
+// serves Newton's line search as a merit function, and Newton with the frozen-rotation
+// tangent converges linearly with a small rate; hessian() of the rest state is K, and
+// in the semi-implicit step (one Newton iteration) this is Kaufmann et al.'s §6.3
+// assembly exactly.
+#include <vector>
+
+#include "dg/dg_discretization.hpp"
+#include "dg/dg_linear_system.hpp"
+
+namespace altfem::dg {
+
+class WarpedDgDiscretization final : public LinearDgDiscretization {
+public:
+  /// Re-integrates the system's element and face matrices (exactly, as DgLinearSystem
+  /// does) and keeps their warped parts; `system` need not outlive this object.
+  WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings, Eigen::VectorXd function_integrals,
+                         std::vector<std::vector<int>> element_dofs,
+                         std::function<Eigen::VectorXd(double)> weak_condition_load);
+
+  double energy(const Eigen::VectorXd& u) const override;
+  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
+  void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
+  bool hessian_is_constant() const override { return false; }
+  bool forces_have_potential() const override { return false; }
+
+  /// R_K of every element for coefficients u (#cells).
+  std::vector<Eigen::Matrix3d> rotations(const Eigen::VectorXd& u) const;
+  /// X⁰ of §6.2 (#dofs).
+  const Eigen::VectorXd& rest_state() const { return rest_state_; }
+
+private:
+  struct Parts;
+  // The element and face terms of DgLinearSystem, integrated again and kept apart.
+  static Parts warped_parts(const DgLinearSystem& system, const DgSettings& settings);
+  WarpedDgDiscretization(Parts parts, const DgLinearSystem& system, Eigen::VectorXd function_integrals,
+                         std::vector<std::vector<int>> element_dofs,
+                         std::function<Eigen::VectorXd(double)> weak_condition_load);
+
+public:
+  struct DofRange {
+    int first, count;
+  };
+  struct Block {
+    std::vector<DofRange> ranges;  // the DOFs of the local rows/columns, in order
+    int element;                   // whose rotation warps it
+    Eigen::MatrixXd matrix;        // K_S, symmetric, Σ counts square (K_f1 on a Dirichlet face)
+    bool dirichlet = false;        // a Dirichlet face's K_f1: rows the jump u − g, columns the strain
+    std::vector<int> value_index;  // per local column and range: the position in the pattern's values of its first row
+  };
+
+private:
+  // x_S gathered from a global vector (size of the block).
+  Eigen::VectorXd gather(const Block& block, const Eigen::VectorXd& global) const;
+  // z_S = R_Sᵀ (X⁰ + u)_S − X⁰_S, or R_Sᵀ u_S with `displacement_only`.
+  Eigen::VectorXd corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
+                                         bool displacement_only = false) const;
+
+  // K_S z_S (Dirichlet face: K_f1 z_S + K_f1ᵀ R_Sᵀ u_S), adding the block's energy to *energy if given.
+  Eigen::VectorXd block_force(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
+                              double* energy) const;
+
+  std::vector<Block> blocks_;
+  Eigen::SparseMatrix<double> penalty_;  // K_3, the unwarped jump terms, on hessian_pattern()
+  Eigen::VectorXd rest_state_;
+  std::vector<int> cell_offsets_;              // #cells + 1: first basis function of each cell
+  std::vector<Eigen::MatrixXd> affine_fit_;    // per cell 3 × #functions: ∇ of the L2 affine fit of φ_a
+};
+
+}  // namespace altfem::dg

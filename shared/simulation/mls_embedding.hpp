@@ -1,0 +1,56 @@
+#pragma once
+// The moving-least-squares surface embedding of Kaufmann et al. 2009 §7 for a
+// discontinuous basis (any ElementBasisEvaluator): the displacement is first stitched at
+// sample points — the mesh nodes — by averaging the values of every element containing
+// the sample (eq. (30), BoundaryPointRule::average), then interpolated at each embedded
+// point x by the affine field a(x)ᵀ(1, x) that minimises
+//   Σ_i θ_i(‖x − x_i‖) ‖a(x)ᵀ p(x_i) − ũ_i‖²                                 (31)
+// with θ_i a truncated Gaussian. The result is ũ(x) = Σ_i w_i(x) ũ_i (eq. (32)); the
+// weights w_i(x) of every embedded point are computed once. Affine fields (rigid
+// motions included) are reproduced exactly, and ũ is continuous in x however
+// discontinuous the field is across element faces.
+#include <Eigen/Core>
+#include <vector>
+
+#include "shared/mesh/polyhedral_mesh.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+
+namespace altfem {
+
+struct MlsOptions {
+  /// θ_i(d) = exp(−d²/σ_i²) − exp(−ρ_i²/σ_i²) for d < ρ_i, else 0 (shifted so that it
+  /// vanishes continuously at the truncation radius), with σ_i = spacing_i and
+  /// ρ_i = support · spacing_i (Kaufmann et al.: "support radius proportional to the
+  /// local sampling density").
+  double support = 2.0;
+};
+
+class MlsEmbedding {
+public:
+  /// samples: #samples × 3 (the mesh nodes); spacing: #samples, the local sample spacing
+  /// (e.g. the longest mesh edge at the node); points: #points × 3, the embedded points.
+  /// Where fewer than four non-coplanar samples lie within the support of a point, the
+  /// support is enlarged for that point. Throws NumericalError if it stays degenerate.
+  MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples, const Eigen::VectorXd& spacing,
+               const Eigen::MatrixXd& points, const MlsOptions& options = {});
+
+  /// Displacement at every embedded point (#points × 3) from the coefficients u.
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  /// The stitched sample displacements ũ_i of eq. (30) (#samples × 3).
+  Eigen::MatrixXd stitched(const Eigen::VectorXd& u) const { return stitched_.displacement(u); }
+  /// The largest number of samples one point's weights use.
+  int max_samples_per_point() const { return max_samples_per_point_; }
+
+private:
+  BasisEmbedding stitched_;
+  std::vector<long long> offsets_{0};  // #points + 1
+  std::vector<int> samples_;
+  std::vector<double> weights_;
+  int max_samples_per_point_ = 0;
+};
+
+/// Per node of a polyhedral mesh the longest mesh edge at it (#nodes): the MLS sample
+/// spacing at the mesh nodes.
+Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh);
+
+}  // namespace altfem
