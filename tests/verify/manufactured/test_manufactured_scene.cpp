@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,11 @@ struct Case {
   std::string scene = "manufactured";
   std::array<int, 3> divisor{1, 1, 1};  ///< the grid is n / divisor cells along each axis
 };
+
+// gtest prints a parameter in test names and failures: the case, not its bytes.
+void PrintTo(const Case& test, std::ostream* stream) {
+  *stream << test.scene << " " << test.method << " " << test.element;
+}
 
 struct Row {
   int resolution;
