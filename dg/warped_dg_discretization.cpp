@@ -105,7 +105,7 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
     const std::vector<int> dofs = dofs_of(ranges);
     for (int row : dofs)
       for (int column : dofs) pattern.emplace_back(row, column, 0.0);
-    parts.blocks.push_back({std::move(ranges), element, std::move(matrix), {}});
+    parts.blocks.push_back({std::move(ranges), element, std::move(matrix), false, {}, {}});
   };
   const auto range_of = [&](int cell) {
     return Range{3 * system.offset(cell), 3 * (system.offset(cell + 1) - system.offset(cell))};
@@ -133,7 +133,9 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
     if (settings.flux != Flux::interior_penalty) continue;
     if (face.plus < 0) {
       add(ranges, face.minus, std::move(matrices.consistency[0]));
-      parts.blocks.back().dirichlet = true;
+      Block& block = parts.blocks.back();
+      block.dirichlet = true;
+      block.symmetric = block.matrix + block.matrix.transpose();
       continue;
     }
     // §6.1: K_f1^± + K_f2^± warped with R_f^±, the rotation of the element whose strain they hold.
@@ -221,10 +223,8 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
   Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
   values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
   for (const Block& block : blocks_) {
-    const Eigen::MatrixXd symmetric =
-        block.dirichlet ? (block.matrix + block.matrix.transpose()).eval() : Eigen::MatrixXd();
     const Eigen::MatrixXd warped =
-        rotate_blocks(block.dirichlet ? symmetric : block.matrix, rotation[block.element]);  // §6.3
+        rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element]);  // §6.3
     const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
     for (Eigen::Index column = 0; column < warped.cols(); ++column) {
       Eigen::Index row = 0;

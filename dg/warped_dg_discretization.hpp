@@ -72,6 +72,7 @@ public:
     int element;                   // whose rotation warps it
     Eigen::MatrixXd matrix;        // K_S, symmetric, Σ counts square (K_f1 on a Dirichlet face)
     bool dirichlet = false;        // a Dirichlet face's K_f1: rows the jump u − g, columns the strain
+    Eigen::MatrixXd symmetric;     // on a Dirichlet face K_f1 + K_f1ᵀ, its tangent before rotation; else empty
     std::vector<int> value_index;  // per local column and range: the position in the pattern's values of its first row
   };
 
