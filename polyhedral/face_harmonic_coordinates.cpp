@@ -90,8 +90,11 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
     for (int j = i + 1; j < n; ++j) diameter = std::max(diameter, (local.row(i) - local.row(j)).norm());
 
   // The sample spacing from the face's area (a square of side a: a / (edge_samples + 1),
-  // the paper's 3-5 samples per edge, §5), so short edges add only what their length holds.
-  const double spacing = std::sqrt(std::abs(polygon_moments_2d(local, 0)[0])) / (options.edge_samples + 1);
+  // the paper's 3-5 samples per edge, §5), so short edges add only what their length
+  // holds; a sliver face (a cut cell's) from half its diameter instead, so it is not
+  // sampled more densely than a square of its size.
+  const double size = std::max(std::sqrt(std::abs(polygon_moments_2d(local, 0)[0])), diameter / 2);
+  const double spacing = size / (options.edge_samples + 1);
 
   // Kernel centres: boundary samples moved outward by ξ·size (eq. (12)); a centre that
   // lands inside a non-convex polygon, or too close to it, is dropped, and so is one
