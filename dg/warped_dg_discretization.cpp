@@ -1,9 +1,14 @@
 #include "dg/warped_dg_discretization.hpp"
 
+#include <omp.h>
+
 #include <Eigen/LU>
 #include <algorithm>
 
 #include "dg/exact_element_matrices.hpp"
+#include "shared/assembly/basis_groups.hpp"
+#include "shared/assembly/element_coloring.hpp"
+#include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
 
 namespace altfem::dg {
@@ -42,13 +47,12 @@ std::vector<int> dofs_of(const Ranges& ranges) {
   return dofs;
 }
 
-// R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
-Eigen::MatrixXd rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation) {
-  Eigen::MatrixXd rotated(matrix.rows(), matrix.cols());
+// rotated = R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
+template <typename Rotated>
+void rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation, Rotated& rotated) {
   for (Eigen::Index a = 0; a < matrix.rows(); a += 3)
     for (Eigen::Index b = 0; b < matrix.cols(); b += 3)
-      rotated.block<3, 3>(a, b) = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
-  return rotated;
+      rotated.template block<3, 3>(a, b).noalias() = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
 }
 
 }  // namespace
@@ -80,6 +84,22 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
         const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column + 1];
         block.value_index.push_back(static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
       }
+  }
+  // Scratch for as many threads as OpenMP has now; later loops never run on more.
+  BasisGroups touched;  // each block's elements, by the first DOF of their ranges
+  Eigen::Index largest = 0;
+  for (const Block& block : blocks_) {
+    std::vector<int> firsts;
+    for (const DofRange& range : block.ranges) firsts.push_back(range.first);
+    touched.add(firsts);
+    largest = std::max(largest, block.matrix.rows());
+  }
+  colors_ = color_groups(touched);
+  block_energies_.resize(blocks_.size());
+  scratch_.resize(static_cast<size_t>(omp_get_max_threads()));
+  for (Scratch& scratch : scratch_) {
+    for (Eigen::VectorXd* vector : {&scratch.rest, &scratch.z, &scratch.jump, &scratch.force}) vector->resize(largest);
+    scratch.warped.resize(largest, largest);
   }
   // X⁰ (§6.2): x = c·1 + s·ξ e_x + s·η e_y + s·ζ e_z in the centred, scaled monomials.
   rest_state_ = Eigen::VectorXd::Zero(dof_count());
@@ -166,55 +186,56 @@ std::vector<Eigen::Matrix3d> WarpedDgDiscretization::rotations(const Eigen::Vect
   return result;
 }
 
-Eigen::VectorXd WarpedDgDiscretization::gather(const Block& block, const Eigen::VectorXd& global) const {
-  Eigen::VectorXd local(block.matrix.rows());
+int WarpedDgDiscretization::threads() const {
+  return std::min(omp_get_max_threads(), static_cast<int>(scratch_.size()));
+}
+
+double WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
+                                          const Eigen::VectorXd& u, Scratch& scratch) const {
+  const auto n = block.matrix.rows();
+  auto rest = scratch.rest.head(n), z = scratch.z.head(n), jump = scratch.jump.head(n), force = scratch.force.head(n);
   Eigen::Index position = 0;
   for (const DofRange& range : block.ranges) {
-    local.segment(position, range.count) = global.segment(range.first, range.count);
+    rest.segment(position, range.count) = rest_state_.segment(range.first, range.count);
+    jump.segment(position, range.count) = u.segment(range.first, range.count);
     position += range.count;
   }
-  return local;
-}
-
-Eigen::VectorXd WarpedDgDiscretization::corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation,
-                                                               const Eigen::VectorXd& u, bool displacement_only) const {
-  const Eigen::VectorXd rest = displacement_only ? Eigen::VectorXd::Zero(block.matrix.rows()).eval() : gather(block, rest_state_);
-  Eigen::VectorXd z = gather(block, u) + rest;
-  for (Eigen::Index a = 0; a < z.size(); a += 3) z.segment<3>(a) = rotation.transpose() * z.segment<3>(a);
-  return z - rest;
-}
-
-Eigen::VectorXd WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
-                                                    const Eigen::VectorXd& u, double* energy) const {
-  const Eigen::VectorXd z = corotated_displacement(block, rotation, u);
-  if (!block.dirichlet) {
-    Eigen::VectorXd force = block.matrix * z;
-    if (energy) *energy += 0.5 * z.dot(force);
-    return force;
+  for (Eigen::Index a = 0; a < n; a += 3) {
+    const Eigen::Vector3d rotated_rest = rotation.transpose() * rest.segment<3>(a);
+    jump.segment<3>(a) = rotation.transpose() * jump.segment<3>(a);  // R_Sᵀ u_S
+    z.segment<3>(a) = jump.segment<3>(a) + rotated_rest - rest.segment<3>(a);
   }
-  const Eigen::VectorXd jump = corotated_displacement(block, rotation, u, true);
-  if (energy) *energy += jump.dot(block.matrix * z);
-  return block.matrix * z + block.matrix.transpose() * jump;
+  force.noalias() = block.matrix * z;
+  if (!block.dirichlet) return 0.5 * z.dot(force);
+  const double energy = jump.dot(force);
+  force.noalias() += block.matrix.transpose() * jump;
+  return energy;
 }
 
 double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
+  parallel::for_each_index(blocks_.size(), threads(), [&](size_t index) {
+    const Block& block = blocks_[index];
+    block_energies_[index] = block_force(block, rotation[block.element], u, scratch_[omp_get_thread_num()]);
+  });
   double energy = 0.5 * u.dot(penalty_ * u);
-  for (const Block& block : blocks_) block_force(block, rotation[block.element], u, &energy);
+  for (double block_energy : block_energies_) energy += block_energy;
   return energy;
 }
 
 void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
   gradient = penalty_ * u;
-  for (const Block& block : blocks_) {
+  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
+    const Block& block = blocks_[index];
     const Eigen::Matrix3d& R = rotation[block.element];
-    const Eigen::VectorXd force = block_force(block, R, u, nullptr);  // K_S z_S
+    Scratch& scratch = scratch_[omp_get_thread_num()];
+    block_force(block, R, u, scratch);  // K_S z_S
     Eigen::Index position = 0;
     for (const DofRange& range : block.ranges)
       for (int k = 0; k < range.count; k += 3, position += 3)
-        gradient.segment<3>(range.first + k) += R * force.segment<3>(position);  // eq. (29)
-  }
+        gradient.segment<3>(range.first + k) += R * scratch.force.segment<3>(position);  // eq. (29)
+  });
 }
 
 void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool) const {
@@ -222,11 +243,13 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
   if (hessian.nonZeros() != penalty_.nonZeros()) hessian = penalty_;
   Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
   values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
-  for (const Block& block : blocks_) {
-    const Eigen::MatrixXd warped =
-        rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element]);  // §6.3
+  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
+    const Block& block = blocks_[index];
+    const auto n = block.matrix.rows();
+    auto warped = scratch_[omp_get_thread_num()].warped.topLeftCorner(n, n);
+    rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element], warped);  // §6.3
     const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
-    for (Eigen::Index column = 0; column < warped.cols(); ++column) {
+    for (Eigen::Index column = 0; column < n; ++column) {
       Eigen::Index row = 0;
       for (Eigen::Index r = 0; r < ranges; ++r) {
         const int start = block.value_index[column * ranges + r];
@@ -234,7 +257,7 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
         row += block.ranges[r].count;
       }
     }
-  }
+  });
 }
 
 }  // namespace altfem::dg

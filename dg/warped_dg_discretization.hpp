@@ -57,6 +57,11 @@ public:
 
 private:
   struct Parts;
+  // One thread's work vectors, each as long as the largest block (blocks use their head).
+  struct Scratch {
+    Eigen::VectorXd rest, z, jump, force;
+    Eigen::MatrixXd warped;
+  };
   // The element and face terms of DgLinearSystem, integrated again and kept apart.
   static Parts warped_parts(const DgLinearSystem& system, const DgSettings& settings);
   WarpedDgDiscretization(Parts parts, const DgLinearSystem& system, Eigen::VectorXd function_integrals,
@@ -77,17 +82,20 @@ public:
   };
 
 private:
-  // x_S gathered from a global vector (size of the block).
-  Eigen::VectorXd gather(const Block& block, const Eigen::VectorXd& global) const;
-  // z_S = R_Sᵀ (X⁰ + u)_S − X⁰_S, or R_Sᵀ u_S with `displacement_only`.
-  Eigen::VectorXd corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
-                                         bool displacement_only = false) const;
+  // K_S z_S into scratch.force.head(n) (a Dirichlet face: K_f1 z_S + K_f1ᵀ R_Sᵀ u_S), with
+  // z_S = R_Sᵀ (X⁰ + u)_S − X⁰_S; returns the block's energy.
+  double block_force(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
+                     Scratch& scratch) const;
 
-  // K_S z_S (Dirichlet face: K_f1 z_S + K_f1ᵀ R_Sᵀ u_S), adding the block's energy to *energy if given.
-  Eigen::VectorXd block_force(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
-                              double* energy) const;
+  // The threads of the parallel loops: OpenMP's, at most as many as there is scratch for.
+  int threads() const;
 
   std::vector<Block> blocks_;
+  // Blocks coloured so that no two of a colour touch the same element: each colour is
+  // scattered in parallel without locks, every entry summed in the same order.
+  std::vector<std::vector<int>> colors_;
+  mutable std::vector<Scratch> scratch_;        // per thread
+  mutable std::vector<double> block_energies_;  // per block, summed in block order
   Eigen::SparseMatrix<double> penalty_;  // K_3, the unwarped jump terms, on hessian_pattern()
   Eigen::VectorXd rest_state_;
   std::vector<int> cell_offsets_;              // #cells + 1: first basis function of each cell

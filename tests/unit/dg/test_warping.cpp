@@ -4,6 +4,7 @@
 // large), and an affine deformation R(I + S) gives the forces of the stretch S rotated by
 // R — the stresses of the patch test, exact in the corotated frame.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <Eigen/Geometry>
 #include <cstdio>
@@ -112,6 +113,38 @@ TEST(DgWarping, ARotatedAffineStretchGivesTheStretchForcesRotated) {
 // What warping does not cover in this build is refused with the key named: a moving
 // Dirichlet condition (its data load would have to follow the rotation) and a nonlinear
 // material (already rotation-invariant).
+// The warped force and tangent are scattered colour by colour in parallel: 1 and 2
+// threads give bit-identical results (an 8³ grid has enough blocks for parallel loops).
+TEST(DgWarping, OneAndTwoThreadsBitIdentical) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(2);  // the discretization sizes its per-thread scratch for this
+  test::GridCells grid = test::hex_grid_cells(8);
+  for (DgFace& face : grid.faces)
+    if (face.plus < 0) face.condition = 0;
+  const DgSettings settings{1, Flux::interior_penalty, 40.0, lambda, mu};
+  const DgLinearSystem system(grid.cells, grid.faces, settings);
+  const WarpedDgDiscretization discretization = warped(system, settings);
+  const Eigen::Matrix3d map = 1.1 * quarter_turn - Eigen::Matrix3d::Identity();
+  const Eigen::VectorXd u = system.interpolate([&](const Eigen::Vector3d& x) {
+    return (map * x + 0.01 * Eigen::Vector3d(std::sin(3 * x.y()), x.x() * x.z(), std::cos(2 * x.x()))).eval();
+  });
+  const auto evaluate = [&](int threads) {
+    omp_set_num_threads(threads);
+    Eigen::VectorXd gradient;
+    discretization.gradient(u, gradient);
+    Eigen::SparseMatrix<double> hessian = discretization.hessian_pattern();
+    discretization.hessian(u, hessian, false);
+    return std::tuple(discretization.energy(u), gradient, Eigen::VectorXd(hessian.coeffs()));
+  };
+  const auto [energy_two, gradient_two, hessian_two] = evaluate(2);
+  const auto [energy_one, gradient_one, hessian_one] = evaluate(1);
+  omp_set_num_threads(saved);
+  EXPECT_EQ(energy_one, energy_two);
+  EXPECT_TRUE(gradient_one == gradient_two);
+  EXPECT_TRUE(hessian_one == hessian_two);
+  EXPECT_GT(gradient_one.norm(), 0.0);
+}
+
 TEST(DgWarping, MovingConditionsAndNonlinearMaterialsAreRefused) {
   const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
   std::filesystem::create_directories(folder);
