@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "dg/exact_element_matrices.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 #include "shared/assembly/basis_groups.hpp"
 #include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/parallel_loops.hpp"
@@ -18,6 +19,7 @@ struct WarpedDgDiscretization::Parts {
   Eigen::SparseMatrix<double> penalty;
   Eigen::SparseMatrix<double> stiffness;  // K on the union of the blocks' and K_3's patterns
   std::vector<Eigen::MatrixXd> affine_fit;
+  std::vector<DirichletFace> dirichlet_faces;
 };
 
 namespace {
@@ -60,18 +62,26 @@ void rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotatio
 WarpedDgDiscretization::WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
-                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+                                               std::function<Eigen::VectorXd(double)> penalty_data_load,
+                                               ConditionTrajectory trajectory)
     : WarpedDgDiscretization(warped_parts(system, settings), system, std::move(function_integrals),
-                             std::move(element_dofs), std::move(weak_condition_load)) {}
+                             std::move(element_dofs), std::move(penalty_data_load), std::move(trajectory)) {}
 
 WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem& system,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
-                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+                                               std::function<Eigen::VectorXd(double)> penalty_data_load,
+                                               ConditionTrajectory trajectory)
     : LinearDgDiscretization(parts.stiffness, system.mass(), std::move(function_integrals), std::move(element_dofs),
-                             std::move(weak_condition_load)),
+                             std::move(penalty_data_load)),
       blocks_(std::move(parts.blocks)),
+      trajectory_(std::move(trajectory)),
       affine_fit_(std::move(parts.affine_fit)) {
+  if (trajectory_) {
+    dirichlet_faces_ = std::move(parts.dirichlet_faces);
+    data_moments_.resize(dirichlet_faces_.size());
+    set_time(0);
+  }
   const Eigen::SparseMatrix<double>& pattern = hessian_pattern();
   penalty_ = parts.penalty + 0.0 * pattern;  // on the pattern (explicit zeros kept)
   penalty_.makeCompressed();
@@ -152,6 +162,20 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
         if (matrices.penalty(i, j) != 0) penalty.emplace_back(dofs[i], dofs[j], matrices.penalty(i, j));
     if (settings.flux != Flux::interior_penalty) continue;
     if (face.plus < 0) {
+      DirichletFace data{face.minus,           face.condition,        3 * system.offset(face.minus), face.normal,
+                         face.components,      minus_material.lambda, minus_material.mu,           {}, {}, {}};
+      const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings.degree + 2);  // as dirichlet_load's
+      const MonomialBasis& basis = system.basis(face.minus);
+      data.points = rule.points;
+      data.weights = rule.weights;
+      data.gradients.resize(rule.weights.size() * basis.size(), 3);
+      Eigen::VectorXd phi;
+      Eigen::MatrixXd gradients;
+      for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+        basis.evaluate(rule.points.row(q).transpose(), phi, gradients);
+        data.gradients.middleRows(q * basis.size(), basis.size()) = gradients;
+      }
+      parts.dirichlet_faces.push_back(std::move(data));
       add(ranges, face.minus, std::move(matrices.consistency[0]));
       Block& block = parts.blocks.back();
       block.dirichlet = true;
@@ -212,13 +236,48 @@ double WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matr
   return energy;
 }
 
+void WarpedDgDiscretization::set_time(double time) const {
+  for (size_t f = 0; f < dirichlet_faces_.size(); ++f) {
+    const DirichletFace& face = dirichlet_faces_[f];
+    const Eigen::Index n = face.gradients.rows() / face.weights.size();
+    Eigen::MatrixXd& moments = data_moments_[f];
+    moments.setZero(3, 3 * n);
+    for (Eigen::Index q = 0; q < face.weights.size(); ++q) {
+      const Eigen::Vector3d g = face.weights[q] * trajectory_(face.condition, face.points.row(q).transpose(), time);
+      for (Eigen::Index a = 0; a < n; ++a) moments.middleCols<3>(3 * a) += g * face.gradients.row(q * n + a);
+    }
+  }
+}
+
+double WarpedDgDiscretization::add_data_forces(const std::vector<Eigen::Matrix3d>& rotation, const Eigen::VectorXd& u,
+                                               Eigen::VectorXd* gradient) const {
+  double energy = 0;
+  for (size_t f = 0; f < dirichlet_faces_.size(); ++f) {
+    const DirichletFace& face = dirichlet_faces_[f];
+    const Eigen::Matrix3d& R = rotation[face.element];
+    const Eigen::Vector3d& n = face.normal;
+    for (Eigen::Index a = 0; a < data_moments_[f].cols() / 3; ++a) {
+      // H = ∫ (P R_Kᵀ g) ⊗ ∇φ_a; −∫ h·σ(φ_a e_i) n = −(μ (H n + tr H n) + λ Hᵀ n)_i
+      // (DgLinearSystem::dirichlet_load's integrand for h = P R_Kᵀ g).
+      Eigen::Matrix3d H = R.transpose() * data_moments_[f].middleCols<3>(3 * a);
+      for (int i = 0; i < 3; ++i)
+        if (!face.components[i]) H.row(i).setZero();
+      const Eigen::Vector3d load = -R * (face.mu * (H * n + H.trace() * n) + face.lambda * H.transpose() * n);
+      const int dof = face.first_dof + 3 * static_cast<int>(a);
+      if (gradient) gradient->segment<3>(dof) -= load;
+      energy -= u.segment<3>(dof).dot(load);
+    }
+  }
+  return energy;
+}
+
 double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
   parallel::for_each_index(blocks_.size(), threads(), [&](size_t index) {
     const Block& block = blocks_[index];
     block_energies_[index] = block_force(block, rotation[block.element], u, scratch_[omp_get_thread_num()]);
   });
-  double energy = 0.5 * u.dot(penalty_ * u);
+  double energy = 0.5 * u.dot(penalty_ * u) + add_data_forces(rotation, u, nullptr);
   for (double block_energy : block_energies_) energy += block_energy;
   return energy;
 }
@@ -236,6 +295,7 @@ void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd&
       for (int k = 0; k < range.count; k += 3, position += 3)
         gradient.segment<3>(range.first + k) += R * scratch.force.segment<3>(position);  // eq. (29)
   });
+  add_data_forces(rotation, u, &gradient);
 }
 
 void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool) const {
