@@ -94,7 +94,9 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
 const scene_schema::ObjectRule penalty_rule{
     {{.key = "convention", .type = ValueType::string, .choices = scene_schema::names(penalty_convention_names)},
      {.key = "value", .type = ValueType::number, .lower = scene_schema::positive},
-     {.key = "double_until_definite", .type = ValueType::boolean}}};
+     {.key = "double_until_definite", .type = ValueType::boolean},
+     {.key = "scaling", .type = ValueType::string, .default_value = "cell_surface",
+      .choices = scene_schema::names(penalty_scaling_names)}}};
 
 // The element names the `fem` block accepts (the same volume meshes are converted).
 std::vector<std::string_view> fem_element_names() {
@@ -145,6 +147,7 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.scaling = static_cast<PenaltyScaling>(index_of(penalty_scaling_names, penalty["scaling"].get<std::string>()));
   spec.warping = dg["warping"].get<bool>();
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   if (dg["mesh"] == "slice") {
