@@ -76,7 +76,7 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
                                           nonlinear_model + "' (use 'babuska_zlamal')");
 
   json& penalty = dg["penalty"];
-  if (!penalty.contains("convention")) penalty["convention"] = "kaufmann";
+  if (!penalty.contains("convention")) penalty["convention"] = "mfem";
   const auto convention = static_cast<PenaltyConvention>(
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   const int degree = dg["degree"].get<int>();
@@ -87,8 +87,7 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
   if (dg["warping"].get<bool>() && !linear)
     validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
-  if (!penalty.contains("double_until_definite"))
-    penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;
+  if (!penalty.contains("double_until_definite")) penalty["double_until_definite"] = true;
 }
 
 const scene_schema::ObjectRule penalty_rule{
