@@ -37,11 +37,13 @@ double surface_area(const Polyhedron& cell) {
   return area;
 }
 
+// Zeros kept: K stores whole element and face blocks, so an element's 3n coefficients
+// share one pattern and the direct solver orders elements, not coefficients
+// (block_fill_reducing_ordering.hpp).
 void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
                const std::vector<int>& dofs) {
   for (Eigen::Index i = 0; i < block.rows(); ++i)
-    for (Eigen::Index j = 0; j < block.cols(); ++j)
-      if (block(i, j) != 0) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+    for (Eigen::Index j = 0; j < block.cols(); ++j) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
 }
 
 }  // namespace
@@ -183,7 +185,7 @@ Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
   return coefficients;
 }
 
-Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const {
+Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool penalty_only) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
@@ -205,7 +207,7 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const 
         // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
         const Eigen::Vector3d grad = gradients.row(a).transpose();
         Eigen::Vector3d entry = penalty * phi[a] * g;
-        if (settings_.flux == Flux::interior_penalty)
+        if (settings_.flux == Flux::interior_penalty && !penalty_only)
           entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
         load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
       }
