@@ -194,7 +194,7 @@ TEST(SlicedConvergence, DgReproducesPolynomialsOfItsDegreeOnABall) {
 // face's penalty by its own area, so the cut cells' small facets of the sphere are
 // under-penalised, K needs 1–3 doublings that differ from mesh to mesh (k = 1: η 560 Pa at
 // 6 cells, 140 at 12), and the rate is an artefact of the change (1.57); at a fixed η the
-// rate is 0.6–1.0. η = 20 E (Kaufmann's default, 520 Pa here) is several times the
+// rate is 0.5–1.0. η = 20 E (Kaufmann's default, 520 Pa here) is several times the
 // smallest definite penalty and holds complete degree-1 and -2 polynomials so nearly
 // continuous that they converge far below their rates at these sizes (k = 1 L2 0.85 at
 // 12 → 16, k = 2 2.56 at 4 → 8). slice/sliver_fraction (0.001 to 0.2) changes none of the
