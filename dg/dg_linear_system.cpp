@@ -25,6 +25,18 @@ MonomialBasis cell_basis(const Polyhedron& cell, int degree) {
   return MonomialBasis(degree, centroid, diameter);
 }
 
+// area(∂K): the sum of the face polygons' areas.
+double surface_area(const Polyhedron& cell) {
+  double area = 0;
+  Eigen::MatrixXd polygon;
+  for (const std::vector<int>& loop : cell.faces) {
+    polygon.resize(static_cast<Eigen::Index>(loop.size()), 3);
+    for (size_t v = 0; v < loop.size(); ++v) polygon.row(static_cast<Eigen::Index>(v)) = cell.vertices.row(loop[v]);
+    area += polygon_area_vector(polygon).norm();
+  }
+  return area;
+}
+
 // Zeros kept: K stores whole element and face blocks, so an element's 3n coefficients
 // share one pattern and the direct solver orders elements, not coefficients
 // (block_fill_reducing_ordering.hpp).
@@ -56,6 +68,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     ElementMatrices matrices =
         exact_element_matrices(cell, bases_.back(), cell_material.lambda, cell_material.mu, cell_material.density);
     volumes_.push_back(matrices.integrals[0]);
+    inverse_lengths_.push_back(surface_area(cell) / (6 * volumes_.back()));
     masses_.push_back(std::move(matrices.mass));
     integrals_.conservativeResize(offsets_.back() + bases_.back().size());
     integrals_.tail(bases_.back().size()) = matrices.integrals;
@@ -84,12 +97,14 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
 }
 
 double DgLinearSystem::face_penalty(const DgFace& face) const {
-  const double area = (face.polygon.rows() >= 3) ? polygon_area_vector(face.polygon).norm() : 0.0;
-  // Eq. (20) with each side's own η (one material: η · (1/vol(K⁻) + 1/vol(K⁺))).
-  double penalty_over_volumes = material(face.minus).penalty / volumes_[face.minus];
-  if (face.plus >= 0) penalty_over_volumes += material(face.plus).penalty / volumes_[face.plus];
+  // Each side's own η over its length: eq. (20)'s vol(K)/area(f), or ℓ(K) (PenaltyScaling).
+  const bool by_face = settings_.scaling == PenaltyScaling::face_area;
+  const double area = by_face && face.polygon.rows() >= 3 ? polygon_area_vector(face.polygon).norm() : 0.0;
+  double penalty = 0;
+  for (int side : {face.minus, face.plus})
+    if (side >= 0) penalty += material(side).penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
   const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
-  return factor * area * penalty_over_volumes;
+  return factor * penalty;
 }
 
 DgMaterial DgLinearSystem::material(int cell) const {

@@ -1,11 +1,13 @@
 #pragma once
 // The DG system of isotropic linear elasticity on polyhedral cells, integrated exactly
 // (Kaufmann et al. 2009 §4): K = Σ_K K_K + Σ_f K_f (eqs. (23)-(26)) with the penalty
-// η_f = η · area(f) · (1/vol(K⁻) + 1/vol(K⁺)) of eq. (20), the loads of a body force and
+// η_f of eq. (20) or its cell-surface variant (PenaltyScaling), the loads of a body force and
 // of Dirichlet data imposed weakly on boundary faces (Nitsche for interior penalty, the
 // penalty alone for Babuška–Zlámal).
 #include <Eigen/SparseCore>
+#include <array>
 #include <functional>
+#include <string_view>
 #include <vector>
 
 #include "dg/face_matrices.hpp"
@@ -26,6 +28,22 @@ struct DgFace {
   std::array<bool, 3> components{true, true, true};
 };
 
+/// How the penalty of a face depends on the sizes of its two cells. Either way η_f
+/// multiplies ∫_f [[u]]·[[v]] and equals η · 2/h on an interior face of a grid of cubes of edge h.
+///   face_area     Kaufmann et al. 2009, eq. (20): η · area(f) · (1/vol(K⁻) + 1/vol(K⁺)).
+///                 A face much smaller than its cells' other faces (a cut cell's facets of
+///                 a curved surface, a face between two cut pieces) gets a penalty per unit
+///                 area that is as much smaller, so η must grow with the faces per cell.
+///   cell_surface  η · (1/ℓ(K⁻) + 1/ℓ(K⁺)) with ℓ(K) = 6 vol(K)/area(∂K) (the edge of a cube,
+///                 the diameter of a ball): every face of a cell the same penalty per unit
+///                 area, the one the cell's trace inequality asks for — for k = 1, whose
+///                 stress is constant in a cell, Σ_f area(f)/η_f = 6 vol(K)/η on every cell
+///                 whatever its number and sizes of faces, as on a cube under eq. (20)
+///                 (cf. the polytopic interior penalty of Cangiani, Georgoulis & Houston 2014,
+///                 whose penalty per unit area grows like 1/h_⊥ of the cell, not like area(f)).
+enum class PenaltyScaling { face_area, cell_surface };
+inline constexpr std::array<std::string_view, 2> penalty_scaling_names{"face_area", "cell_surface"};
+
 /// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ).
 struct DgMaterial {
   double lambda = 1, mu = 1;
@@ -42,6 +60,7 @@ struct DgSettings {
   /// η_f of a boundary face is this factor × eq. (20) (1 in Kaufmann et al.; MFEM and
   /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
   double boundary_penalty_factor = 1;
+  PenaltyScaling scaling = PenaltyScaling::cell_surface;
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -72,9 +91,10 @@ public:
   int cell_count() const { return static_cast<int>(cells_.size()); }
   const Polyhedron& cell(int index) const { return cells_[index]; }
   const std::vector<DgFace>& faces() const { return faces_; }
-  /// η_f of eq. (20) for one of faces() (× boundary_penalty_factor on a boundary face).
+  /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary face).
   double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
+  double volume(int cell) const { return volumes_[cell]; }
   /// The index into cell_materials.materials of a cell's material (0 with a single material).
   int material_id(int cell) const { return cell_materials_.ids.empty() ? 0 : cell_materials_.ids[cell]; }
   /// A cell's material: cell_materials.materials[material_id(cell)], or the settings' one.
@@ -107,6 +127,7 @@ private:
   DgCellMaterials cell_materials_;
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
+  std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
   std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square
   Eigen::VectorXd integrals_;
   std::vector<int> offsets_;                // #cells + 1

@@ -1,6 +1,8 @@
 #include "dg/dg_method.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "dg/dg_discretization.hpp"
 #include "dg/dg_linear_system.hpp"
@@ -81,7 +83,8 @@ public:
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
     const DgMaterial& first = cell_materials_.materials.front();
-    settings_ = {spec_.degree, spec_.flux, first.penalty, first.lambda, first.mu, first.density, boundary_factor(scene)};
+    settings_ = {spec_.degree, spec_.flux, first.penalty, first.lambda, first.mu, first.density, boundary_factor(scene),
+                 spec_.scaling};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
@@ -173,7 +176,9 @@ public:
              {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
               {"value", spec_.penalty_value * (1 << doublings_)},
               {"doublings", doublings_},
-              {"eta_pa", settings_.penalty}}},
+              {"eta_pa", settings_.penalty},
+              {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]}}},
+            {"smallest_cell_volume", smallest_cell_volume()},
             {"warping", spec_.warping},
             {"surface_vertices", surface_.vertices.rows()},
             {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
@@ -213,6 +218,14 @@ private:
   double boundary_factor(const Scene& scene) const {
     const LameParameters lame = materials_.pointers().front()->lame();
     return face_penalty(spec_, scene.material.youngs_modulus, lame.lambda, lame.mu).boundary_factor;
+  }
+
+  // The cells' smallest volume: with a slice, over slicing.cell_size³ the smallest piece
+  // the sliver merging kept (the penalty grows like 1/ℓ(K) on it).
+  double smallest_cell_volume() const {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (int cell = 0; cell < system_->cell_count(); ++cell) smallest = std::min(smallest, system_->volume(cell));
+    return smallest;
   }
 
   // ∫ ρ φ_a dV of every function, with its cell's density.

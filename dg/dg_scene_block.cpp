@@ -76,7 +76,7 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
                                           nonlinear_model + "' (use 'babuska_zlamal')");
 
   json& penalty = dg["penalty"];
-  if (!penalty.contains("convention")) penalty["convention"] = "kaufmann";
+  if (!penalty.contains("convention")) penalty["convention"] = "mfem";
   const auto convention = static_cast<PenaltyConvention>(
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   const int degree = dg["degree"].get<int>();
@@ -87,14 +87,15 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
   if (dg["warping"].get<bool>() && !linear)
     validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
-  if (!penalty.contains("double_until_definite"))
-    penalty["double_until_definite"] = convention == PenaltyConvention::kaufmann;
+  if (!penalty.contains("double_until_definite")) penalty["double_until_definite"] = true;
 }
 
 const scene_schema::ObjectRule penalty_rule{
     {{.key = "convention", .type = ValueType::string, .choices = scene_schema::names(penalty_convention_names)},
      {.key = "value", .type = ValueType::number, .lower = scene_schema::positive},
-     {.key = "double_until_definite", .type = ValueType::boolean}}};
+     {.key = "double_until_definite", .type = ValueType::boolean},
+     {.key = "scaling", .type = ValueType::string, .default_value = "cell_surface",
+      .choices = scene_schema::names(penalty_scaling_names)}}};
 
 // The element names the `fem` block accepts (the same volume meshes are converted).
 std::vector<std::string_view> fem_element_names() {
@@ -145,6 +146,7 @@ DgSpec dg_spec(const Scene& scene) {
       index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
+  spec.scaling = static_cast<PenaltyScaling>(index_of(penalty_scaling_names, penalty["scaling"].get<std::string>()));
   spec.warping = dg["warping"].get<bool>();
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   if (dg["mesh"] == "slice") {

@@ -4,7 +4,9 @@
 //
 // Penalty conventions. Every convention ends as Kaufmann et al.'s face penalty
 // (2009, eq. (20)) η_f = c_f · η · area(f) · (1/vol(K⁻) + 1/vol(K⁺)), where c_f = 1 on
-// interior faces and c_f = `boundary_factor` on Dirichlet faces (the plus term is absent):
+// interior faces and c_f = `boundary_factor` on Dirichlet faces (the plus term is absent),
+// or, with `scaling` cell_surface (the default), η_f = c_f · η · (1/ℓ(K⁻) + 1/ℓ(K⁺)) with
+// ℓ(K) = 6 vol(K)/area(∂K) (PenaltyScaling; the same on cubes; 1/h below means either):
 //   kaufmann  value η̂ (default 20):  η = η̂ · E (η̂ relative to Young's modulus, so that
 //             the paper's 10¹–10² is unit-free), c_f = 1 on every face;
 //   mfem      value κ (default (k+1)², MFEM example 17): MFEM's κ·(λ+2μ)/h with
@@ -18,7 +20,7 @@
 // double it"); the η used is reported in summary.json (facts).
 #include <string>
 
-#include "dg/face_matrices.hpp"
+#include "dg/dg_linear_system.hpp"
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/method_scene_block.hpp"
@@ -40,6 +42,7 @@ struct DgSpec {
   PenaltyConvention convention = PenaltyConvention::kaufmann;
   double penalty_value = 20;
   bool double_until_definite = true;
+  PenaltyScaling scaling = PenaltyScaling::cell_surface;
   /// Corotated stiffness warping (Kaufmann et al. 2009 §6), linear material only.
   bool warping = false;
   Embedding embedding = Embedding::mls;

@@ -5,7 +5,14 @@
 // Hex20 on a 64×8×8 grid: the vertical displacement at the centre of the mid-span section
 // (4, ½, ½) and the elastic energy ½ ∫ σ:ε dV (element by element, each element's own
 // field for dg) converge; the finest dg runs agree with the reference to 1% (k = 1's
-// energy to 5%: it converges slowly, see below). Prints the table.
+// energy to 5%: see below). Prints the table.
+//
+// k = 1's energy is simply coarser, not wrong: its error against the reference falls
+// 11.0% → 3.81% → 1.11% from 32×4×4 to 64×8×8 to 128×16×16 (× 2.9, × 3.4 per halving,
+// towards h²), from below (the end displacement is imposed weakly), so the 1%
+// needs a little more than 128×16×16 (393k DOFs, 9 GB and minutes: not a test's). The reference's own error is an order smaller: fem Hex20
+// 32×4×4 is 0.25% above it, dg k = 2 on 64×8×8 0.01% below. The mid-span displacement of
+// k = 1 is within 0.32% at 64×8×8 and 0.11% at 128×16×16.
 #include <gtest/gtest.h>
 
 #include "dg/dg_method.hpp"
@@ -91,7 +98,7 @@ TEST(MfemExample17, DgConvergesToTheFineFemBeam) {
       }
     }
     EXPECT_LT(midspan_errors.back(), 0.01) << "k = " << degree;
-    // k = 1 converges slowly in energy (3.8% at 64×8×8, 49k DOFs; 1% would need ~128×16×16).
+    // k = 1's energy: 3.8% at 64×8×8 (49k DOFs), 1.11% at 128×16×16 (above).
     EXPECT_LT(energy_errors.back(), degree == 2 ? 0.01 : 0.05) << "k = " << degree;
   }
 }

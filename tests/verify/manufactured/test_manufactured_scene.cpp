@@ -7,7 +7,8 @@
 // scene runs through run_simulation with `--set`-style overrides of its resolution and
 // element, and summary.json's field_errors (L2 and H1 seminorm of the final state) must
 // fall at the element's rates between the two finest meshes: p + 1 and p within ±0.25
-// for degree-p elements (Ciarlet, The Finite Element Method for Elliptic Problems,
+// (dg's L2 rate may exceed p + 1 by more: below) for degree-p elements (Ciarlet, The
+// Finite Element Method for Elliptic Problems,
 // Thm. 3.2.2 and §3.2 for L2 by the Aubin–Nitsche argument). A deal.II-style table of
 // every run is printed.
 #include <gtest/gtest.h>
@@ -34,6 +35,9 @@ struct Case {
   double l2_rate, h1_rate;
   std::string scene = "manufactured";
   std::array<int, 3> divisor{1, 1, 1};  ///< the grid is n / divisor cells along each axis
+  /// How far the L2 rate may exceed l2_rate (it may fall short by 0.25): above 0.25 for a
+  /// method that converges faster than its degree on these meshes.
+  double l2_rate_excess = 0.25;
 };
 
 // gtest prints a parameter in test names and failures: the case, not its bytes.
@@ -100,7 +104,8 @@ TEST_P(ManufacturedScene, FieldErrorsFallAtTheElementRates) {
   ASSERT_GE(rows.size(), 2u);
   const Row& coarse = rows[rows.size() - 2];
   const Row& fine = rows.back();
-  EXPECT_NEAR(rate(coarse, fine, &Row::l2), test.l2_rate, 0.25);
+  EXPECT_GE(rate(coarse, fine, &Row::l2), test.l2_rate - 0.25);
+  EXPECT_LE(rate(coarse, fine, &Row::l2), test.l2_rate + test.l2_rate_excess);
   EXPECT_NEAR(rate(coarse, fine, &Row::h1), test.h1_rate, 0.25);
 }
 
@@ -119,11 +124,13 @@ INSTANTIATE_TEST_SUITE_P(Fem, ManufacturedScene,
 // The other methods where their rates are clean on these meshes: fcm on the cube is its
 // uncut background grid; harmonic with MFS bases on every cell (its closed-form Hex8 cells
 // would repeat fem); dg k = 2 with its default penalty (k = 1 on hexahedra is still far
-// from its asymptotic rate at 8 cells per axis: README, "Manufactured solutions").
+// from its asymptotic rate at 8 cells per axis: README, "Manufactured solutions"). dg's L2
+// error converges faster than h³ on these uniform grids with MFEM's κ = 9 (3.37 at 4 → 8,
+// 3.48 at 6 → 12, 3.49 at 8 → 12; H1 2.06), so its L2 rate may exceed 3 by 0.5.
 INSTANTIATE_TEST_SUITE_P(OtherMethods, ManufacturedScene,
                          ::testing::Values(Case{"fcm", "cell", "hex20", {4, 8}, 3, 2},
                                            Case{"harmonic", "basis", "mfs", {2, 4}, 2, 1},
-                                           Case{"dg", "degree", "2", {4, 8}, 3, 2}),
+                                           Case{"dg", "degree", "2", {4, 8}, 3, 2, "manufactured", {1, 1, 1}, 0.5}),
                          case_name);
 
 // Fig. 10 with an exact answer: the flat face lies on a grid plane (n × n × n/2 cells
