@@ -72,6 +72,7 @@ public:
   int cell_count() const { return static_cast<int>(cells_.size()); }
   const Polyhedron& cell(int index) const { return cells_[index]; }
   const std::vector<DgFace>& faces() const { return faces_; }
+  Flux flux() const { return settings_.flux; }
   /// η_f of eq. (20) for one of faces() (× boundary_penalty_factor on a boundary face).
   double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }

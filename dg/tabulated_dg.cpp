@@ -2,6 +2,7 @@
 
 #include <numeric>
 
+#include "dg/lifted_gradients.hpp"
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/jump_penalty_kernel.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
@@ -88,7 +89,8 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
                               PreconditionerFactory preconditioner) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
-  parts.elements = tabulate_dg_cells(system, strength);
+  const bool interior_penalty = system.flux() == Flux::interior_penalty;
+  parts.elements = interior_penalty ? tabulate_lifted_dg_cells(system, strength) : tabulate_dg_cells(system, strength);
   parts.materials = std::move(materials);
   TabulatedDg result;
   FaceTerms terms = tabulate_faces(system, strength);
@@ -97,6 +99,12 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
       *result.faces, JumpPenaltyKernel(std::move(terms.penalties), std::move(terms.masks))));
   parts.conditions_weakly = true;
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
+  // A lifted cell lists its neighbours' functions too (with zero values): the blocks are the cells'.
+  if (interior_penalty)
+    for (int cell = 0; cell < system.cell_count(); ++cell) {
+      parts.mass_blocks.emplace_back();
+      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof) parts.mass_blocks.back().push_back(dof);
+    }
   parts.external_force = std::move(external_force);
   parts.preconditioner = std::move(preconditioner);
   result.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));

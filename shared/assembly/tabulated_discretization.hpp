@@ -40,6 +40,11 @@ struct DiscretizationParts {
   DirichletDofs dirichlet;  ///< empty for none
   bool conditions_weakly = false;  ///< the terms impose the Dirichlet conditions
   ExplicitMassKind explicit_mass = ExplicitMassKind::lumped;
+  /// The DOF blocks of a block_per_element mass (disjoint, covering every DOF) when the
+  /// elements' function lists overlap although their masses do not (DG with lifted
+  /// gradients: a cell's element lists its neighbours' functions too). Empty: each
+  /// element's DOFs.
+  std::vector<std::vector<int>> mass_blocks;
   /// Tractions and weak boundary data at a time (#dofs); none if empty.
   std::function<Eigen::VectorXd(double time)> external_force;
   PreconditionerFactory preconditioner;

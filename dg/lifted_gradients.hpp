@@ -1,0 +1,38 @@
+#pragma once
+// The lifted DG gradient of Ten Eyck & Lew 2006 (Kaufmann et al. 2009 §9.1 points to it),
+// tabulated for the shared assembly kernel: every material model gets the consistent
+// interior-penalty DG from the discrete energy
+//   I_h(u) = Σ_K ∫_K ψ(I + ∇u_h − R(u)) dV + Σ_f η_f/2 ∫_f |[[u]]|² dA,
+// whose lifting R(u)|_K ∈ P^k(K)^{3×3} (K's own monomials) is defined by
+//   ∫_K R : τ dV = Σ_{f ⊂ ∂K} α_f ∫_f ([[u]] ⊗ n_K) : τ dA   for every τ ∈ P^k(K)^{3×3},
+// [[u]] = u_K − u_(neighbour across f) (u_K − g on a Dirichlet face), α_f = ½ on an
+// interior face (the average {τ} of the global lifting), 1 on a Dirichlet face, 0 on a
+// free one. Its Euler–Lagrange equation holds −Σ_f ∫_f {Π P(F_DG)} : [[v]] ⊗ n, the
+// average first Piola–Kirchhoff stress (Π: the L2 projection onto P^k), so the method is
+// consistent (for P ∈ P^k exactly: an affine deformation passes the patch test), and its
+// Hessian is exact and symmetric from ψ's second derivative alone. Since ψ ≥ 0 sees the
+// lifted gradient, the linearised energy at rest is positive for any η_f > 0 (unlike the
+// interior penalty of Kaufmann et al. eq. (21), which needs η large enough).
+//
+// R is linear in u, so F_DG = I + Σ_a u_a ⊗ G_a at every volume point of K, with
+// G_a = ∇φ_a − r_a over K's functions and G_a = −r_a over its face neighbours' (the
+// vector lifting r_a of function a's jump): each cell becomes one element of the shared
+// kernel whose function list holds its own and its neighbours' functions. Dirichlet data
+// enter as −R(g), a constant shift of F: only g = 0 (a `fixed` condition on all
+// components) is lifted here.
+#include "dg/dg_linear_system.hpp"
+#include "shared/assembly/tabulated_elements.hpp"
+
+namespace altfem::dg {
+
+/// Every cell as an element over its own functions (first, in order) followed by its face
+/// neighbours' (each neighbour once, in the order of system.faces()), at the points of
+/// polyhedron_rule(cell, strength): values φ_a (0 for a neighbour's function, so masses
+/// and body loads are the cell's own) and the lifted gradients G_a (#points·#functions × 3).
+/// The lifting's face integrals use polygon rules of strength 2k (exact). Dirichlet faces
+/// are lifted with g = 0. Throws std::invalid_argument for a Dirichlet face that
+/// prescribes some components only (their lifting would differ per component, which one
+/// scalar gradient per function cannot carry).
+TabulatedElements tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength);
+
+}  // namespace altfem::dg
