@@ -88,13 +88,13 @@ TEST_P(LiftedGradientsOfDegree, GradientAndHessianMatchFiniteDifferences) {
     const DgLinearSystem system(grid.cells, grid.faces, settings_of(*material, k, Flux::interior_penalty));
     const TabulatedDg dg = tabulated(system, *material);
     const Discretization& discretization = *dg.discretization;
-    const Eigen::VectorXd u = 0.02 * test::random_vector(system.dof_count(), 7);
+    const Eigen::VectorXd u = 0.02 * altfem::test::random_vector(system.dof_count(), 7);
     Eigen::VectorXd gradient, plus, minus;
     discretization.gradient(u, gradient);
     Eigen::SparseMatrix<double> hessian = discretization.hessian_pattern();
     discretization.hessian(u, hessian, false);
     for (unsigned seed : {1u, 2u, 3u}) {
-      const Eigen::VectorXd direction = test::random_vector(system.dof_count(), seed);
+      const Eigen::VectorXd direction = altfem::test::random_vector(system.dof_count(), seed);
       const double h = 1e-6;
       const double energy_difference =
           (discretization.energy(u + h * direction) - discretization.energy(u - h * direction)) / (2 * h);
