@@ -5,11 +5,15 @@
 // material forced through the lifted path is a consistent symmetric IP-family method too
 // (not Kaufmann's eq. (21)): it converges at k + 1 like the exact eq. (21) path, beside it.
 //
-// u* = a s(x) (1, x, −y) with s = sin πx sin πy sin πz vanishes on ∂[0,1]³ (a `fixed`
-// condition held weakly on every boundary face, which the lifting carries), with a = 0.05
-// strains of about 15%. The body force f = −div P(∇u*) is the shared material's own:
-// (div P)_i = Σ_jkl ∂P_ij/∂F_kl ∂²u*_k/∂x_l∂x_j from its tangent at F = I + ∇u*(x),
-// so it matches the ψ the method minimises to round-off (no hand-derived formula).
+// u* = a (sin(πx/2), sin πx, 1 − cos(πx/2)), a = 0.08 (stretch up to 13%, shear up to
+// 25%), vanishes on x = 0, held there by a `fixed` condition (weakly, which the lifting
+// carries); the other faces carry the exact nominal traction P(∇u*) N. The body force
+// f = −div P(∇u*) is the shared material's own: (div P)_i = Σ_jkl ∂P_ij/∂F_kl
+// ∂²u*_k/∂x_l∂x_j from its tangent at F = I + ∇u*(x), so it matches the ψ the method
+// minimises to round-off (no hand-derived formula). A field that varies along one axis:
+// a bubble vanishing on the whole boundary (products of sines) needs far finer grids
+// before k = 1 leaves its pre-asymptotic range, where a penalised near-continuous P1 field
+// on hexahedra locks (eq. (21) shows the same: 1.2e-2, 1.0e-2, 6.0e-3 on 2, 4, 8 cells per axis).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,44 +24,31 @@
 
 #include "dg/tabulated_dg.hpp"
 #include "shared/material/material.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 #include "shared/solve/linear_solver.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
 
 namespace altfem::dg {
 namespace {
 
-constexpr double pi = std::numbers::pi, amplitude = 0.05;
+constexpr double pi = std::numbers::pi, amplitude = 0.08;
 
 // u*, ∇u* (row i: ∂u_i/∂x) and the second derivatives ∂²u_k/∂x_l∂x_j at [k](l, j).
 struct Manufactured {
   Eigen::Vector3d value;
-  Eigen::Matrix3d gradient;
-  std::array<Eigen::Matrix3d, 3> second;
+  Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();
+  std::array<Eigen::Matrix3d, 3> second{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};
 };
 
 Manufactured manufactured(const Eigen::Vector3d& x) {
-  const Eigen::Array3d sine = (pi * x.array()).sin(), cosine = (pi * x.array()).cos();
-  const double s = sine.prod();
-  Eigen::Vector3d ds;       // ∂s/∂x_j
-  Eigen::Matrix3d dds;      // ∂²s/∂x_j∂x_l
-  for (int j = 0; j < 3; ++j) {
-    ds[j] = pi * cosine[j] * sine[(j + 1) % 3] * sine[(j + 2) % 3];
-    for (int l = 0; l < 3; ++l) {
-      double product = 1;
-      for (int m = 0; m < 3; ++m) product *= (m == j) != (m == l) ? pi * cosine[m] : m == j ? -pi * pi * sine[m] : sine[m];
-      dds(j, l) = product;
-    }
-  }
-  // u = a s v(x) with v = (1, x, −y): ∂_j u_k = a (∂_j s v_k + s ∂_j v_k), ∂_l∂_j u_k = a (∂_jl s v_k + ∂_j s ∂_l v_k + ∂_l s ∂_j v_k).
-  const Eigen::Vector3d v(1, x.x(), -x.y());
-  Eigen::Matrix3d dv = Eigen::Matrix3d::Zero();  // dv(k, j) = ∂v_k/∂x_j
-  dv(1, 0) = 1, dv(2, 1) = -1;
-  Manufactured result;
-  result.value = amplitude * s * v;
-  result.gradient = amplitude * (v * ds.transpose() + s * dv);
-  for (int k = 0; k < 3; ++k)
-    result.second[k] = amplitude * (v[k] * dds + dv.row(k).transpose() * ds.transpose() + ds * dv.row(k));
-  return result;
+  const double half = 0.5 * pi * x.x(), full = pi * x.x();
+  Manufactured u;
+  u.value = amplitude * Eigen::Vector3d(std::sin(half), std::sin(full), 1 - std::cos(half));
+  u.gradient.col(0) = amplitude * Eigen::Vector3d(0.5 * pi * std::cos(half), pi * std::cos(full), 0.5 * pi * std::sin(half));
+  const Eigen::Vector3d second = amplitude * Eigen::Vector3d(-0.25 * pi * pi * std::sin(half), -pi * pi * std::sin(full),
+                                                             0.25 * pi * pi * std::cos(half));
+  for (int k = 0; k < 3; ++k) u.second[k](0, 0) = second[k];
+  return u;
 }
 
 Eigen::Vector3d body_force(const Material& material, const Eigen::Vector3d& x) {
@@ -71,6 +62,34 @@ Eigen::Vector3d body_force(const Material& material, const Eigen::Vector3d& x) {
       for (int k = 0; k < 3; ++k)
         for (int l = 0; l < 3; ++l) divergence[i] += tangent(i + 3 * j, k + 3 * l) * u.second[k](l, j);
   return -divergence;
+}
+
+// The grid with x = 0 held (condition 0) and the other boundary faces free.
+test::GridCells held_grid(int cells_per_axis) {
+  test::GridCells grid = test::hex_grid_cells(cells_per_axis);
+  for (DgFace& face : grid.faces)
+    if (face.plus < 0) face.condition = face.normal.x() < -0.5 ? 0 : -1;
+  return grid;
+}
+
+// ∫_f P(∇u*) N · φ_a dA over the free boundary faces, by rules of strength 2k + 2.
+Eigen::VectorXd traction_load(const DgLinearSystem& system, const Material& material) {
+  Eigen::VectorXd load = Eigen::VectorXd::Zero(system.dof_count());
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd gradients;
+  for (const DgFace& face : system.faces()) {
+    if (face.plus >= 0 || face.condition >= 0) continue;
+    const MonomialBasis& basis = system.basis(face.minus);
+    const PolyhedronRule rule = polygon_rule(face.polygon, 2 * basis.degree() + 2);
+    for (Eigen::Index p = 0; p < rule.weights.size(); ++p) {
+      const Eigen::Vector3d x = rule.points.row(p).transpose();
+      const Eigen::Vector3d traction = material.pk1(Eigen::Matrix3d::Identity() + manufactured(x).gradient) * face.normal;
+      basis.evaluate(x, phi, gradients);
+      for (Eigen::Index a = 0; a < phi.size(); ++a)
+        load.segment<3>(3 * (system.offset(face.minus) + a)) += rule.weights[p] * phi[a] * traction;
+    }
+  }
+  return load;
 }
 
 // Newton from u = 0 with a residual backtracking line search.
@@ -104,23 +123,24 @@ Eigen::VectorXd solve(const Discretization& discretization, const Eigen::VectorX
 enum class Path { tabulated, exact };
 
 double l2_error(const Material& material, int cells_per_axis, int degree, Flux flux, Path path = Path::tabulated) {
-  const test::GridCells grid = test::hex_grid_cells(cells_per_axis);
+  const test::GridCells grid = held_grid(cells_per_axis);
   // η in the stiffness's units, growing like (k + 1)² (as the linear convergence test).
   const double penalty = 5.0 * (degree + 1) * (degree + 1) * (material.lame().lambda + 2 * material.lame().mu);
   const DgLinearSystem system(grid.cells, grid.faces,
                               {degree, flux, penalty, material.lame().lambda, material.lame().mu, material.density(), 1.0});
   const auto exact = [](const Eigen::Vector3d& x) { return manufactured(x).value; };
+  const Eigen::VectorXd load =
+      system.body_load([&](const Eigen::Vector3d& x) { return body_force(material, x); }) + traction_load(system, material);
   if (path == Path::exact) {
     const auto solver = make_linear_solver({});
     solver->factorize(system.stiffness());
     Eigen::VectorXd u;
-    solver->solve(system.body_load([&](const Eigen::Vector3d& x) { return body_force(material, x); }), u);
+    solver->solve(load, u);
     return system.l2_error(u, exact);
   }
   const TabulatedDg dg =
       make_tabulated_dg(system, {&material}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
-  const Eigen::VectorXd u =
-      solve(*dg.discretization, system.body_load([&](const Eigen::Vector3d& x) { return body_force(material, x); }));
+  const Eigen::VectorXd u = solve(*dg.discretization, load);
   return system.l2_error(u, exact);
 }
 
@@ -172,7 +192,8 @@ TEST(NonlinearConvergence, TheLinearMaterialLiftedConvergesLikeEquation21) {
     };
     const std::array<double, 2> rates = convergence_table(
         "linear, k = " + std::to_string(k),
-        {Column{"lifted L2", error_of(Path::tabulated)}, Column{"eq. 21 L2", error_of(Path::exact)}}, {2, 4, 8});
+        {Column{"lifted L2", error_of(Path::tabulated)}, Column{"eq. 21 L2", error_of(Path::exact)}},
+        k == 1 ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 6});
     EXPECT_GE(rates[0], k + 1 - 0.3) << "k = " << k;
     EXPECT_GE(rates[1], k + 1 - 0.3) << "k = " << k;
   }
