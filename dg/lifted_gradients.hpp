@@ -10,9 +10,11 @@
 // free one. Its Euler–Lagrange equation holds −Σ_f ∫_f {Π P(F_DG)} : [[v]] ⊗ n, the
 // average first Piola–Kirchhoff stress (Π: the L2 projection onto P^k), so the method is
 // consistent (for P ∈ P^k exactly: an affine deformation passes the patch test), and its
-// Hessian is exact and symmetric from ψ's second derivative alone. Since ψ ≥ 0 sees the
-// lifted gradient, the linearised energy at rest is positive for any η_f > 0 (unlike the
-// interior penalty of Kaufmann et al. eq. (21), which needs η large enough).
+// Hessian is exact and symmetric from ψ's second derivative alone. At rest the energy's
+// Hessian is ∫ (∇v − R(v)) : C : (∇v − R(v)) + penalty ≥ 0, definite for any η_f > 0 once a
+// condition holds the body (unlike Kaufmann et al.'s eq. (21), which needs η large enough).
+// The lifting space is the cell's own P^k (not P^(k−1)): it holds the projection of a
+// constant stress, so the patch test passes, and its mass matrix is the cell's.
 //
 // R is linear in u, so F_DG = I + Σ_a u_a ⊗ G_a at every volume point of K, with
 // G_a = ∇φ_a − r_a over K's functions and G_a = −r_a over its face neighbours' (the
