@@ -168,7 +168,7 @@ Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
   return coefficients;
 }
 
-Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const {
+Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool penalty_only) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
@@ -190,7 +190,7 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data) const 
         // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
         const Eigen::Vector3d grad = gradients.row(a).transpose();
         Eigen::Vector3d entry = penalty * phi[a] * g;
-        if (settings_.flux == Flux::interior_penalty)
+        if (settings_.flux == Flux::interior_penalty && !penalty_only)
           entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
         load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
       }

@@ -88,8 +88,9 @@ public:
   Eigen::VectorXd body_load(const VectorField& force_density) const;
   /// −∫ Pg·σ(v)n + η_f ∫ Pg·v (IP) or η_f ∫ Pg·v (BZ) over the Dirichlet faces, g = data(the
   /// face's condition, x), P = diag(the face's components), by a rule of strength 2k + 2 on each face (exact for polynomial
-  /// data of degree ≤ k + 3).
-  Eigen::VectorXd dirichlet_load(const ConditionData& data) const;
+  /// data of degree ≤ k + 3). `penalty_only`: the η_f ∫ Pg·v part alone (stiffness
+  /// warping rotates the consistency part with the boundary element, §6).
+  Eigen::VectorXd dirichlet_load(const ConditionData& data, bool penalty_only = false) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by

@@ -77,12 +77,6 @@ public:
     if (built.converted) volume_mesh_ = std::move(*built.converted);
     const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
-    // Warping rotates Nitsche's consistency terms with the boundary element, which the
-    // data load of a moving condition would have to follow: not in this build.
-    for (size_t c = 0; c < scene.dirichlet.size() && spec_.warping; ++c)
-      if (scene.dirichlet[c].motion.kind != MotionKind::fixed)
-        throw InputError(input_message(scene.file.string(), scene.dirichlet[c].pointer + "/motion",
-                                       "discretization.dg.warping needs 'fixed' Dirichlet conditions in this build"));
 
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
@@ -106,8 +100,16 @@ public:
         element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
     if (spec_.warping) {
-      linear_ = std::make_unique<WarpedDgDiscretization>(*system_, settings_, density_integrals(),
-                                                         std::move(element_dofs), external_force);
+      // The consistency part of moving data is rotated with the boundary element (§6): the
+      // discretization adds it; the load keeps the penalty's part.
+      ConditionTrajectory trajectory;
+      if (moving())
+        trajectory = [this](int condition, const Eigen::Vector3d& x, double time) {
+          return motions_[condition].displacement(x, time);
+        };
+      linear_ = std::make_unique<WarpedDgDiscretization>(
+          *system_, settings_, density_integrals(), std::move(element_dofs),
+          [this](double time) { return weak_condition_load(time, true); }, std::move(trajectory));
       discretization_ = linear_.get();
     } else if (linear()) {
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
@@ -222,14 +224,19 @@ private:
     return integrals;
   }
 
-  // The data part of the weakly imposed conditions at a time (§4.2): zero while every
-  // motion is `fixed`.
-  Eigen::VectorXd weak_condition_load(double time) const {
-    bool moving = false;
-    for (const Motion& motion : motions_) moving = moving || motion.kind != MotionKind::fixed;
-    if (!moving) return Eigen::VectorXd::Zero(system_->dof_count());
+  bool moving() const {
+    for (const Motion& motion : motions_)
+      if (motion.kind != MotionKind::fixed) return true;
+    return false;
+  }
+
+  // The data part of the weakly imposed conditions at a time (§4.2), its penalty's part
+  // alone with `penalty_only`: zero while every motion is `fixed`.
+  Eigen::VectorXd weak_condition_load(double time, bool penalty_only = false) const {
+    if (!moving()) return Eigen::VectorXd::Zero(system_->dof_count());
     return system_->dirichlet_load(
-        [&](int condition, const Eigen::Vector3d& x) { return motions_[condition].displacement(x, time); });
+        [&](int condition, const Eigen::Vector3d& x) { return motions_[condition].displacement(x, time); },
+        penalty_only);
   }
 
   DgSpec spec_;

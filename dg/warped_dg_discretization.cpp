@@ -1,9 +1,15 @@
 #include "dg/warped_dg_discretization.hpp"
 
+#include <omp.h>
+
 #include <Eigen/LU>
 #include <algorithm>
 
 #include "dg/exact_element_matrices.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
+#include "shared/assembly/basis_groups.hpp"
+#include "shared/assembly/element_coloring.hpp"
+#include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
 
 namespace altfem::dg {
@@ -13,6 +19,7 @@ struct WarpedDgDiscretization::Parts {
   Eigen::SparseMatrix<double> penalty;
   Eigen::SparseMatrix<double> stiffness;  // K on the union of the blocks' and K_3's patterns
   std::vector<Eigen::MatrixXd> affine_fit;
+  std::vector<DirichletFace> dirichlet_faces;
 };
 
 namespace {
@@ -42,13 +49,12 @@ std::vector<int> dofs_of(const Ranges& ranges) {
   return dofs;
 }
 
-// R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
-Eigen::MatrixXd rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation) {
-  Eigen::MatrixXd rotated(matrix.rows(), matrix.cols());
+// rotated = R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
+template <typename Rotated>
+void rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation, Rotated& rotated) {
   for (Eigen::Index a = 0; a < matrix.rows(); a += 3)
     for (Eigen::Index b = 0; b < matrix.cols(); b += 3)
-      rotated.block<3, 3>(a, b) = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
-  return rotated;
+      rotated.template block<3, 3>(a, b).noalias() = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
 }
 
 }  // namespace
@@ -56,18 +62,26 @@ Eigen::MatrixXd rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix
 WarpedDgDiscretization::WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
-                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+                                               std::function<Eigen::VectorXd(double)> penalty_data_load,
+                                               ConditionTrajectory trajectory)
     : WarpedDgDiscretization(warped_parts(system, settings), system, std::move(function_integrals),
-                             std::move(element_dofs), std::move(weak_condition_load)) {}
+                             std::move(element_dofs), std::move(penalty_data_load), std::move(trajectory)) {}
 
 WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem& system,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
-                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+                                               std::function<Eigen::VectorXd(double)> penalty_data_load,
+                                               ConditionTrajectory trajectory)
     : LinearDgDiscretization(parts.stiffness, system.mass(), std::move(function_integrals), std::move(element_dofs),
-                             std::move(weak_condition_load)),
+                             std::move(penalty_data_load)),
       blocks_(std::move(parts.blocks)),
+      trajectory_(std::move(trajectory)),
       affine_fit_(std::move(parts.affine_fit)) {
+  if (trajectory_) {
+    dirichlet_faces_ = std::move(parts.dirichlet_faces);
+    data_moments_.resize(dirichlet_faces_.size());
+    set_time(0);
+  }
   const Eigen::SparseMatrix<double>& pattern = hessian_pattern();
   penalty_ = parts.penalty + 0.0 * pattern;  // on the pattern (explicit zeros kept)
   penalty_.makeCompressed();
@@ -80,6 +94,22 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
         const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column + 1];
         block.value_index.push_back(static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
       }
+  }
+  // Scratch for as many threads as OpenMP has now; later loops never run on more.
+  BasisGroups touched;  // each block's elements, by the first DOF of their ranges
+  Eigen::Index largest = 0;
+  for (const Block& block : blocks_) {
+    std::vector<int> firsts;
+    for (const DofRange& range : block.ranges) firsts.push_back(range.first);
+    touched.add(firsts);
+    largest = std::max(largest, block.matrix.rows());
+  }
+  colors_ = color_groups(touched);
+  block_energies_.resize(blocks_.size());
+  scratch_.resize(static_cast<size_t>(omp_get_max_threads()));
+  for (Scratch& scratch : scratch_) {
+    for (Eigen::VectorXd* vector : {&scratch.rest, &scratch.z, &scratch.jump, &scratch.force}) vector->resize(largest);
+    scratch.warped.resize(largest, largest);
   }
   // X⁰ (§6.2): x = c·1 + s·ξ e_x + s·η e_y + s·ζ e_z in the centred, scaled monomials.
   rest_state_ = Eigen::VectorXd::Zero(dof_count());
@@ -132,6 +162,20 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
         if (matrices.penalty(i, j) != 0) penalty.emplace_back(dofs[i], dofs[j], matrices.penalty(i, j));
     if (settings.flux != Flux::interior_penalty) continue;
     if (face.plus < 0) {
+      DirichletFace data{face.minus,           face.condition,        3 * system.offset(face.minus), face.normal,
+                         face.components,      minus_material.lambda, minus_material.mu,           {}, {}, {}};
+      const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings.degree + 2);  // as dirichlet_load's
+      const MonomialBasis& basis = system.basis(face.minus);
+      data.points = rule.points;
+      data.weights = rule.weights;
+      data.gradients.resize(rule.weights.size() * basis.size(), 3);
+      Eigen::VectorXd phi;
+      Eigen::MatrixXd gradients;
+      for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+        basis.evaluate(rule.points.row(q).transpose(), phi, gradients);
+        data.gradients.middleRows(q * basis.size(), basis.size()) = gradients;
+      }
+      parts.dirichlet_faces.push_back(std::move(data));
       add(ranges, face.minus, std::move(matrices.consistency[0]));
       Block& block = parts.blocks.back();
       block.dirichlet = true;
@@ -166,55 +210,92 @@ std::vector<Eigen::Matrix3d> WarpedDgDiscretization::rotations(const Eigen::Vect
   return result;
 }
 
-Eigen::VectorXd WarpedDgDiscretization::gather(const Block& block, const Eigen::VectorXd& global) const {
-  Eigen::VectorXd local(block.matrix.rows());
+int WarpedDgDiscretization::threads() const {
+  return std::min(omp_get_max_threads(), static_cast<int>(scratch_.size()));
+}
+
+double WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
+                                          const Eigen::VectorXd& u, Scratch& scratch) const {
+  const auto n = block.matrix.rows();
+  auto rest = scratch.rest.head(n), z = scratch.z.head(n), jump = scratch.jump.head(n), force = scratch.force.head(n);
   Eigen::Index position = 0;
   for (const DofRange& range : block.ranges) {
-    local.segment(position, range.count) = global.segment(range.first, range.count);
+    rest.segment(position, range.count) = rest_state_.segment(range.first, range.count);
+    jump.segment(position, range.count) = u.segment(range.first, range.count);
     position += range.count;
   }
-  return local;
-}
-
-Eigen::VectorXd WarpedDgDiscretization::corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation,
-                                                               const Eigen::VectorXd& u, bool displacement_only) const {
-  const Eigen::VectorXd rest = displacement_only ? Eigen::VectorXd::Zero(block.matrix.rows()).eval() : gather(block, rest_state_);
-  Eigen::VectorXd z = gather(block, u) + rest;
-  for (Eigen::Index a = 0; a < z.size(); a += 3) z.segment<3>(a) = rotation.transpose() * z.segment<3>(a);
-  return z - rest;
-}
-
-Eigen::VectorXd WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
-                                                    const Eigen::VectorXd& u, double* energy) const {
-  const Eigen::VectorXd z = corotated_displacement(block, rotation, u);
-  if (!block.dirichlet) {
-    Eigen::VectorXd force = block.matrix * z;
-    if (energy) *energy += 0.5 * z.dot(force);
-    return force;
+  for (Eigen::Index a = 0; a < n; a += 3) {
+    const Eigen::Vector3d rotated_rest = rotation.transpose() * rest.segment<3>(a);
+    jump.segment<3>(a) = rotation.transpose() * jump.segment<3>(a);  // R_Sᵀ u_S
+    z.segment<3>(a) = jump.segment<3>(a) + rotated_rest - rest.segment<3>(a);
   }
-  const Eigen::VectorXd jump = corotated_displacement(block, rotation, u, true);
-  if (energy) *energy += jump.dot(block.matrix * z);
-  return block.matrix * z + block.matrix.transpose() * jump;
+  force.noalias() = block.matrix * z;
+  if (!block.dirichlet) return 0.5 * z.dot(force);
+  const double energy = jump.dot(force);
+  force.noalias() += block.matrix.transpose() * jump;
+  return energy;
+}
+
+void WarpedDgDiscretization::set_time(double time) const {
+  for (size_t f = 0; f < dirichlet_faces_.size(); ++f) {
+    const DirichletFace& face = dirichlet_faces_[f];
+    const Eigen::Index n = face.gradients.rows() / face.weights.size();
+    Eigen::MatrixXd& moments = data_moments_[f];
+    moments.setZero(3, 3 * n);
+    for (Eigen::Index q = 0; q < face.weights.size(); ++q) {
+      const Eigen::Vector3d g = face.weights[q] * trajectory_(face.condition, face.points.row(q).transpose(), time);
+      for (Eigen::Index a = 0; a < n; ++a) moments.middleCols<3>(3 * a) += g * face.gradients.row(q * n + a);
+    }
+  }
+}
+
+double WarpedDgDiscretization::add_data_forces(const std::vector<Eigen::Matrix3d>& rotation, const Eigen::VectorXd& u,
+                                               Eigen::VectorXd* gradient) const {
+  double energy = 0;
+  for (size_t f = 0; f < dirichlet_faces_.size(); ++f) {
+    const DirichletFace& face = dirichlet_faces_[f];
+    const Eigen::Matrix3d& R = rotation[face.element];
+    const Eigen::Vector3d& n = face.normal;
+    for (Eigen::Index a = 0; a < data_moments_[f].cols() / 3; ++a) {
+      // H = ∫ (P R_Kᵀ g) ⊗ ∇φ_a; −∫ h·σ(φ_a e_i) n = −(μ (H n + tr H n) + λ Hᵀ n)_i
+      // (DgLinearSystem::dirichlet_load's integrand for h = P R_Kᵀ g).
+      Eigen::Matrix3d H = R.transpose() * data_moments_[f].middleCols<3>(3 * a);
+      for (int i = 0; i < 3; ++i)
+        if (!face.components[i]) H.row(i).setZero();
+      const Eigen::Vector3d load = -R * (face.mu * (H * n + H.trace() * n) + face.lambda * H.transpose() * n);
+      const int dof = face.first_dof + 3 * static_cast<int>(a);
+      if (gradient) gradient->segment<3>(dof) -= load;
+      energy -= u.segment<3>(dof).dot(load);
+    }
+  }
+  return energy;
 }
 
 double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
-  double energy = 0.5 * u.dot(penalty_ * u);
-  for (const Block& block : blocks_) block_force(block, rotation[block.element], u, &energy);
+  parallel::for_each_index(blocks_.size(), threads(), [&](size_t index) {
+    const Block& block = blocks_[index];
+    block_energies_[index] = block_force(block, rotation[block.element], u, scratch_[omp_get_thread_num()]);
+  });
+  double energy = 0.5 * u.dot(penalty_ * u) + add_data_forces(rotation, u, nullptr);
+  for (double block_energy : block_energies_) energy += block_energy;
   return energy;
 }
 
 void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
   gradient = penalty_ * u;
-  for (const Block& block : blocks_) {
+  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
+    const Block& block = blocks_[index];
     const Eigen::Matrix3d& R = rotation[block.element];
-    const Eigen::VectorXd force = block_force(block, R, u, nullptr);  // K_S z_S
+    Scratch& scratch = scratch_[omp_get_thread_num()];
+    block_force(block, R, u, scratch);  // K_S z_S
     Eigen::Index position = 0;
     for (const DofRange& range : block.ranges)
       for (int k = 0; k < range.count; k += 3, position += 3)
-        gradient.segment<3>(range.first + k) += R * force.segment<3>(position);  // eq. (29)
-  }
+        gradient.segment<3>(range.first + k) += R * scratch.force.segment<3>(position);  // eq. (29)
+  });
+  add_data_forces(rotation, u, &gradient);
 }
 
 void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool) const {
@@ -222,11 +303,13 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
   if (hessian.nonZeros() != penalty_.nonZeros()) hessian = penalty_;
   Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
   values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
-  for (const Block& block : blocks_) {
-    const Eigen::MatrixXd warped =
-        rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element]);  // §6.3
+  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
+    const Block& block = blocks_[index];
+    const auto n = block.matrix.rows();
+    auto warped = scratch_[omp_get_thread_num()].warped.topLeftCorner(n, n);
+    rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element], warped);  // §6.3
     const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
-    for (Eigen::Index column = 0; column < warped.cols(); ++column) {
+    for (Eigen::Index column = 0; column < n; ++column) {
       Eigen::Index row = 0;
       for (Eigen::Index r = 0; r < ranges; ++r) {
         const int start = block.value_index[column * ranges + r];
@@ -234,7 +317,7 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
         row += block.ranges[r].count;
       }
     }
-  }
+  });
 }
 
 }  // namespace altfem::dg

@@ -10,9 +10,12 @@
 //     side's, K_f1^± + K_f2^± (§6.1), over both sides' DOFs, warped with R_f^± — the
 //     element's rotation, never the face's (§6.1: a face rotation gives ghost forces);
 //   - on a Dirichlet face with the IP flux, Nitsche's consistency terms K_f1 + K_f1ᵀ,
-//     warped with the boundary element's rotation; there the jump u − g (g = 0: fixed
-//     conditions only) is rotated as R_Kᵀ u, not as R_Kᵀ X − X⁰, which would read the
-//     wall's unrotated position as a jump of (R_Kᵀ − I) x.
+//     warped with the boundary element's rotation; there the jump u − g is rotated as
+//     R_Kᵀ (u − g), not as R_Kᵀ X − X⁰, which would read the wall's unrotated position
+//     as a jump of (R_Kᵀ − I) x. The data part −∫ P R_Kᵀ g · σ(v) n of a moving
+//     condition depends on R_K and so on u: gradient() adds it, rotated back by R_K,
+//     for the time of the last set_time(); external_force() carries only the
+//     penalty's data η_f ∫ P g · v, unwarped like the penalty.
 // The penalty terms K_f3 (26) measure jumps only and are not warped (§6.1).
 // With X = X⁰ + U the warped internal force is Σ_S R_S K_S (R_Sᵀ X − X⁰) + K_3 U
 // (eq. (29), the five contributions of §6.1), X⁰ the coefficients of the identity map
@@ -36,19 +39,28 @@
 
 namespace altfem::dg {
 
+/// The displacement g(x, t) a Dirichlet condition prescribes: (condition, x, time).
+using ConditionTrajectory = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&, double time)>;
+
 class WarpedDgDiscretization final : public LinearDgDiscretization {
 public:
   /// Re-integrates the system's element and face matrices (exactly, as DgLinearSystem
   /// does) and keeps their warped parts; `system` need not outlive this object.
+  /// penalty_data_load: the Dirichlet data's load through the penalty alone at a time
+  /// (DgLinearSystem::dirichlet_load with penalty_only); trajectory: the conditions'
+  /// data, empty when every condition is fixed (g = 0).
   WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings, Eigen::VectorXd function_integrals,
                          std::vector<std::vector<int>> element_dofs,
-                         std::function<Eigen::VectorXd(double)> weak_condition_load);
+                         std::function<Eigen::VectorXd(double)> penalty_data_load,
+                         ConditionTrajectory trajectory = {});
 
   double energy(const Eigen::VectorXd& u) const override;
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
   bool hessian_is_constant() const override { return false; }
   bool forces_have_potential() const override { return false; }
+  /// Evaluates the moving conditions' data on the Dirichlet faces at `time`.
+  void set_time(double time) const override;
 
   /// R_K of every element for coefficients u (#cells).
   std::vector<Eigen::Matrix3d> rotations(const Eigen::VectorXd& u) const;
@@ -57,11 +69,16 @@ public:
 
 private:
   struct Parts;
+  // One thread's work vectors, each as long as the largest block (blocks use their head).
+  struct Scratch {
+    Eigen::VectorXd rest, z, jump, force;
+    Eigen::MatrixXd warped;
+  };
   // The element and face terms of DgLinearSystem, integrated again and kept apart.
   static Parts warped_parts(const DgLinearSystem& system, const DgSettings& settings);
   WarpedDgDiscretization(Parts parts, const DgLinearSystem& system, Eigen::VectorXd function_integrals,
                          std::vector<std::vector<int>> element_dofs,
-                         std::function<Eigen::VectorXd(double)> weak_condition_load);
+                         std::function<Eigen::VectorXd(double)> penalty_data_load, ConditionTrajectory trajectory);
 
 public:
   struct DofRange {
@@ -75,19 +92,39 @@ public:
     Eigen::MatrixXd symmetric;     // on a Dirichlet face K_f1 + K_f1ᵀ, its tangent before rotation; else empty
     std::vector<int> value_index;  // per local column and range: the position in the pattern's values of its first row
   };
+  // A Dirichlet face with the IP flux, for the data part of its Nitsche terms.
+  struct DirichletFace {
+    int element, condition, first_dof;  // first_dof: the element's first DOF
+    Eigen::Vector3d normal;
+    std::array<bool, 3> components;
+    double lambda, mu;
+    Eigen::MatrixXd points;     // #points × 3, a rule exact for g of degree ≤ k + 3 times ∇φ
+    Eigen::VectorXd weights;    // #points
+    Eigen::MatrixXd gradients;  // (#points · n) × 3: ∇φ_a at point q in row q·n + a
+  };
 
 private:
-  // x_S gathered from a global vector (size of the block).
-  Eigen::VectorXd gather(const Block& block, const Eigen::VectorXd& global) const;
-  // z_S = R_Sᵀ (X⁰ + u)_S − X⁰_S, or R_Sᵀ u_S with `displacement_only`.
-  Eigen::VectorXd corotated_displacement(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
-                                         bool displacement_only = false) const;
+  // Adds −R_K c_a(P R_Kᵀ G_a) of every moving Dirichlet face to `gradient` (G_a = ∫ g ⊗ ∇φ_a
+  // at the set time) and returns −Σ u_a · R_K c_a, its energy with R frozen.
+  double add_data_forces(const std::vector<Eigen::Matrix3d>& rotation, const Eigen::VectorXd& u,
+                         Eigen::VectorXd* gradient) const;
+  // K_S z_S into scratch.force.head(n) (a Dirichlet face: K_f1 z_S + K_f1ᵀ R_Sᵀ u_S), with
+  // z_S = R_Sᵀ (X⁰ + u)_S − X⁰_S; returns the block's energy.
+  double block_force(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
+                     Scratch& scratch) const;
 
-  // K_S z_S (Dirichlet face: K_f1 z_S + K_f1ᵀ R_Sᵀ u_S), adding the block's energy to *energy if given.
-  Eigen::VectorXd block_force(const Block& block, const Eigen::Matrix3d& rotation, const Eigen::VectorXd& u,
-                              double* energy) const;
+  // The threads of the parallel loops: OpenMP's, at most as many as there is scratch for.
+  int threads() const;
 
   std::vector<Block> blocks_;
+  std::vector<DirichletFace> dirichlet_faces_;  // empty unless some condition moves
+  ConditionTrajectory trajectory_;
+  mutable std::vector<Eigen::MatrixXd> data_moments_;  // per Dirichlet face 3 × 3n: G_a side by side
+  // Blocks coloured so that no two of a colour touch the same element: each colour is
+  // scattered in parallel without locks, every entry summed in the same order.
+  std::vector<std::vector<int>> colors_;
+  mutable std::vector<Scratch> scratch_;        // per thread
+  mutable std::vector<double> block_energies_;  // per block, summed in block order
   Eigen::SparseMatrix<double> penalty_;  // K_3, the unwarped jump terms, on hessian_pattern()
   Eigen::VectorXd rest_state_;
   std::vector<int> cell_offsets_;              // #cells + 1: first basis function of each cell

@@ -45,6 +45,7 @@ public:
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override {
     return inner_.explicit_body_force(acceleration);
   }
+  void set_time(double time) const override { inner_.set_time(time); }
   Eigen::VectorXd external_force(double time) const override {
     Eigen::VectorXd force = inner_.external_force(time);
     for (const TimeDependentLoad& load : scene_loads_) force += load(time);

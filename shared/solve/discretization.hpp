@@ -54,6 +54,12 @@ public:
   virtual Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const {
     return body_force(acceleration);
   }
+  /// The time the integrators evaluate energy(), gradient() and hessian() at next: every
+  /// integrator calls it before it solves at a new time. A force model whose internal
+  /// forces hold time-dependent boundary data reads the data here (DG stiffness warping
+  /// rotates the Nitsche terms of a moving condition with the boundary element, Kaufmann
+  /// et al. 2009 §6). Nothing by default.
+  virtual void set_time(double /*time*/) const {}
   /// External forces other than body forces at a time (tractions; the boundary data
   /// of weakly imposed conditions). Zero by default.
   virtual Eigen::VectorXd external_force(double /*time*/) const { return Eigen::VectorXd::Zero(dof_count()); }

@@ -156,6 +156,7 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
   NewtonOptions newton{absolute_tolerance_, options_.max_iterations, options_.line_search, options_.project_spd};
   NewtonReport report;
   if (options_.kind == IntegrationScheme::static_equilibrium) {
+    discretization_.set_time(state.time);
     const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(state.time);
     StaticPotential potential(discretization_, force);
     // Static equilibrium is one load step: messages call it step 1.
@@ -166,6 +167,7 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     const double next_time = state.time + h;
     const Eigen::VectorXd previous = state.displacement;
     const Eigen::VectorXd target = previous + h * state.velocity;
+    discretization_.set_time(next_time);
     const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(next_time);
     Eigen::SparseMatrix<double> damping;
     const bool damped = options_.rayleigh_mass > 0 || options_.rayleigh_stiffness > 0;
@@ -195,6 +197,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
   // constrained DOFs follow their prescribed motion.
   const double h = options_.time_step;
   Eigen::VectorXd internal;
+  discretization_.set_time(state.time);
   discretization_.gradient(state.displacement, internal);
   const ExplicitMass& mass = discretization_.explicit_mass();
   Eigen::VectorXd force =
@@ -226,6 +229,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   const double time = is_static ? state.time : state.time + h;
   const Eigen::VectorXd previous = state.displacement;
   const Eigen::VectorXd target = previous + h * state.velocity;
+  discretization_.set_time(time);
   const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(time);
   StaticPotential static_potential(discretization_, force);
   IncrementalPotential incremental(discretization_, h, target, previous, nullptr, force);
