@@ -116,8 +116,16 @@ public:
                                                          std::move(element_dofs), external_force);
       discretization_ = linear_.get();
     } else {
-      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(), external_force,
-                                     block_jacobi_factory(std::move(element_dofs)));
+      // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
+      const bool lifted = spec_.flux == Flux::interior_penalty;
+      DataAtTime data;
+      if (lifted && moving())
+        data = [this](int condition, const Eigen::Vector3d& x, double time) {
+          return motions_[condition].displacement(x, time);
+        };
+      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(),
+                                     [this, lifted](double time) { return weak_condition_load(time, lifted); },
+                                     block_jacobi_factory(std::move(element_dofs)), std::move(data));
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -17,6 +17,7 @@ struct LiftedCell {
   Eigen::VectorXd weights;
   Eigen::MatrixXd values;     // #points × #functions
   Eigen::MatrixXd gradients;  // (#points·#functions) × 3
+  LiftedDirichletData::Cell dirichlet;  // no face points when the cell has no Dirichlet face
 };
 
 // The faces each cell bounds (indices into system.faces()), in face order.
@@ -56,6 +57,9 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
   // The lifting's right-hand sides: b(m, 3a + j) = Σ_f α_f ∫_f φ_m j_a n_K,j dA with the
   // jump j_a = φ_a on K's own functions and −φ_a on the neighbour's across f.
   Eigen::MatrixXd right_hand_sides = Eigen::MatrixXd::Zero(own, 3 * n);
+  // The data's right-hand sides, one column per Dirichlet face point p: α_f w_p φ_m(x_p).
+  std::vector<Eigen::VectorXd> data_columns;
+  std::vector<Eigen::Vector3d> data_points, data_normals;
   Eigen::VectorXd phi, neighbour_phi;
   Eigen::MatrixXd gradients, neighbour_gradients;
   for (int f : faces) {
@@ -75,6 +79,12 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
       const Eigen::VectorXd scaled = alpha * rule.weights[p] * phi;  // α w φ_m
       for (int a = 0; a < own; ++a)
         for (int j = 0; j < 3; ++j) right_hand_sides.col(3 * a + j) += (phi[a] * normal[j]) * scaled;
+      if (face.plus < 0) {
+        data_columns.push_back(scaled);
+        data_points.push_back(x);
+        data_normals.push_back(normal);
+        lifted.dirichlet.conditions.push_back(face.condition);
+      }
       if (neighbour < 0) continue;
       system.basis(neighbour).evaluate(x, neighbour_phi, neighbour_gradients);
       for (Eigen::Index a = 0; a < neighbour_phi.size(); ++a)
@@ -95,8 +105,20 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
   }
   // The lifting's coefficients c(m, 3a + j): r_a,j = Σ_m c(m, 3a + j) φ_m, from
   // Σ_m' ∫_K φ_m φ_m' c(m', ·) = b(m, ·) (the mass of K's monomials: rule strength ≥ 2k).
-  const Eigen::MatrixXd coefficients = mass.llt().solve(right_hand_sides);
-  const Eigen::MatrixXd lifting_at_points = own_values * coefficients;  // #points × 3n: r_a,j(x_q)
+  const Eigen::LLT<Eigen::MatrixXd> mass_factor(mass);
+  const Eigen::MatrixXd lifting_at_points = own_values * mass_factor.solve(right_hand_sides);  // #points × 3n: r_a,j(x_q)
+  if (!data_columns.empty()) {
+    const auto count = static_cast<Eigen::Index>(data_columns.size());
+    Eigen::MatrixXd columns(own, count);
+    lifted.dirichlet.face_points.resize(count, 3);
+    lifted.dirichlet.normals.resize(count, 3);
+    for (Eigen::Index p = 0; p < count; ++p) {
+      columns.col(p) = data_columns[p];
+      lifted.dirichlet.face_points.row(p) = data_points[p].transpose();
+      lifted.dirichlet.normals.row(p) = data_normals[p].transpose();
+    }
+    lifted.dirichlet.coefficients = own_values * mass_factor.solve(columns);
+  }
 
   lifted.weights = rule.weights;
   lifted.values = Eigen::MatrixXd::Zero(points, n);
@@ -112,7 +134,21 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
 
 }  // namespace
 
-TabulatedElements tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength) {
+void LiftedDirichletData::shifts(const ConditionData& data, std::span<double> shifts) const {
+  std::fill(shifts.begin(), shifts.end(), 0.0);
+  for (const Cell& cell : cells_) {
+    Eigen::MatrixXd data_at_points(cell.face_points.rows(), 3);
+    for (Eigen::Index p = 0; p < data_at_points.rows(); ++p)
+      data_at_points.row(p) = data(cell.conditions[p], cell.face_points.row(p).transpose()).transpose();
+    for (Eigen::Index q = 0; q < cell.coefficients.rows(); ++q) {
+      Eigen::Map<Eigen::Matrix3d> shift(shifts.data() + 9 * (cell.first_point + q));
+      for (Eigen::Index p = 0; p < data_at_points.rows(); ++p)
+        shift.noalias() += cell.coefficients(q, p) * data_at_points.row(p).transpose() * cell.normals.row(p);
+    }
+  }
+}
+
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength) {
   const std::vector<std::vector<int>> cell_faces = faces_of_cells(system);
   for (size_t f = 0; f < system.faces().size(); ++f) {
     const DgFace& face = system.faces()[f];
@@ -124,13 +160,17 @@ TabulatedElements tabulate_lifted_dg_cells(const DgLinearSystem& system, int str
   // A cell's lifting costs a few face and volume rules and one small solve: parallel over cells.
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < system.cell_count(); ++cell) cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
-  TabulatedElements elements;
+  LiftedDgCells result;
   for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const LiftedCell& lifted = cells[cell];
-    elements.add(lifted.functions, std::span<const double>(lifted.weights.data(), lifted.weights.size()), lifted.values,
-                 lifted.gradients, system.material_id(cell));
+    LiftedCell& lifted = cells[cell];
+    if (lifted.dirichlet.face_points.rows() > 0) {
+      lifted.dirichlet.first_point = result.elements.point_count();
+      result.dirichlet.add(std::move(lifted.dirichlet));
+    }
+    result.elements.add(lifted.functions, std::span<const double>(lifted.weights.data(), lifted.weights.size()),
+                        lifted.values, lifted.gradients, system.material_id(cell));
   }
-  return elements;
+  return result;
 }
 
 }  // namespace altfem::dg

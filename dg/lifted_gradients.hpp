@@ -20,21 +20,52 @@
 // G_a = ∇φ_a − r_a over K's functions and G_a = −r_a over its face neighbours' (the
 // vector lifting r_a of function a's jump): each cell becomes one element of the shared
 // kernel whose function list holds its own and its neighbours' functions. Dirichlet data
-// enter as −R(g), a constant shift of F: only g = 0 (a `fixed` condition on all
-// components) is lifted here.
+// g enter through [[u]] = u − g as +R(g), a shift of F at every point that changes with
+// the data (ElasticAssembler::set_deformation_shifts), and through the penalty's load
+// η_f ∫ g·v (DgLinearSystem::dirichlet_load with penalty_only).
+#include <span>
+
 #include "dg/dg_linear_system.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 
 namespace altfem::dg {
 
+/// The Dirichlet data's share of the lifted gradient: R(g) at every volume point of the
+/// lifted cells, R(g)(x_q) = Σ_p c_qp g(x_p) ⊗ n_p over the points p of the cell's Dirichlet
+/// faces (c_qp = Σ_mm' φ_m(x_q) (M⁻¹)_mm' α_f w_p φ_m'(x_p), fixed: only g changes).
+class LiftedDirichletData {
+public:
+  struct Cell {
+    long long first_point = 0;           ///< the cell's first volume point in the elements' order
+    Eigen::MatrixXd face_points;         ///< #face points × 3
+    Eigen::MatrixXd normals;             ///< #face points × 3, out of the cell
+    std::vector<int> conditions;         ///< #face points: the face's condition
+    Eigen::MatrixXd coefficients;        ///< #volume points × #face points: c_qp
+  };
+
+  void add(Cell cell) { cells_.push_back(std::move(cell)); }
+  bool empty() const { return cells_.empty(); }
+  /// R(g) for data g(condition, x) into `shifts` (9 per volume point, column-major, every
+  /// point's; points of cells without Dirichlet faces are set to zero).
+  void shifts(const ConditionData& data, std::span<double> shifts) const;
+
+private:
+  std::vector<Cell> cells_;  // the cells with Dirichlet faces
+};
+
+struct LiftedDgCells {
+  TabulatedElements elements;
+  LiftedDirichletData dirichlet;
+};
+
 /// Every cell as an element over its own functions (first, in order) followed by its face
 /// neighbours' (each neighbour once, in the order of system.faces()), at the points of
 /// polyhedron_rule(cell, strength): values φ_a (0 for a neighbour's function, so masses
 /// and body loads are the cell's own) and the lifted gradients G_a (#points·#functions × 3).
-/// The lifting's face integrals use polygon rules of strength 2k (exact). Dirichlet faces
-/// are lifted with g = 0. Throws std::invalid_argument for a Dirichlet face that
-/// prescribes some components only (their lifting would differ per component, which one
-/// scalar gradient per function cannot carry).
-TabulatedElements tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength);
+/// The lifting's face integrals use polygon rules of strength 2k (exact for the
+/// functions' jumps; the data's share is exact for g of degree ≤ k). Throws
+/// std::invalid_argument for a Dirichlet face that prescribes some components only (their
+/// lifting would differ per component, which one scalar gradient per function cannot carry).
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength);
 
 }  // namespace altfem::dg

@@ -86,13 +86,25 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner) {
+                              PreconditionerFactory preconditioner, DataAtTime data) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
-  const bool interior_penalty = system.flux() == Flux::interior_penalty;
-  parts.elements = interior_penalty ? tabulate_lifted_dg_cells(system, strength) : tabulate_dg_cells(system, strength);
-  parts.materials = std::move(materials);
   TabulatedDg result;
+  const bool interior_penalty = system.flux() == Flux::interior_penalty;
+  if (interior_penalty) {
+    LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength);
+    parts.elements = std::move(lifted.elements);
+    if (data && !lifted.dirichlet.empty()) {
+      result.lifted_data = std::make_unique<LiftedDirichletData>(std::move(lifted.dirichlet));
+      parts.deformation_shifts = [lifted_data = result.lifted_data.get(), data = std::move(data)](
+                                     double time, std::span<double> shifts) {
+        lifted_data->shifts([&](int condition, const Eigen::Vector3d& x) { return data(condition, x, time); }, shifts);
+      };
+    }
+  } else {
+    parts.elements = tabulate_dg_cells(system, strength);
+  }
+  parts.materials = std::move(materials);
   FaceTerms terms = tabulate_faces(system, strength);
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
   parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(

@@ -12,13 +12,19 @@
 #include <memory>
 
 #include "dg/dg_linear_system.hpp"
+#include "dg/lifted_gradients.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/tabulated_faces.hpp"
 
 namespace altfem::dg {
 
+/// Dirichlet data g(condition, x, time) (the ConditionTrajectory of warped_dg_discretization.hpp).
+using DataAtTime = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&, double time)>;
+
 struct TabulatedDg {
   std::unique_ptr<TabulatedFaces> faces;  ///< the face assembler keeps a reference: declared first, freed last
+  /// The interior-penalty flux's lifted Dirichlet data (read at every set_time): before the discretization.
+  std::unique_ptr<LiftedDirichletData> lifted_data;
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 
@@ -30,10 +36,12 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 /// The discretization of `system`'s cells and faces (its bases, flux, penalties and
 /// Dirichlet faces) with `materials` (not owned; cell c takes materials[system.material_id(c)]);
 /// the rule strength is 2k (mass and body-force loads exact). external_force: the weak
-/// conditions' data load at a time (with the interior-penalty flux the lifting carries
-/// g = 0 only: the caller refuses other data); preconditioner: block Jacobi.
+/// conditions' data load at a time (with the interior-penalty flux: the penalty's part
+/// alone, DgLinearSystem::dirichlet_load with penalty_only); data: with the
+/// interior-penalty flux, the Dirichlet data the lifting shifts F by at each set_time
+/// (empty: g = 0); preconditioner: block Jacobi.
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner);
+                              PreconditionerFactory preconditioner, DataAtTime data = {});
 
 }  // namespace altfem::dg

@@ -8,6 +8,7 @@
 // tabulated elements, so any basis gets the right ones.
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "shared/assembly/elastic_assembler.hpp"
@@ -47,6 +48,10 @@ struct DiscretizationParts {
   std::vector<std::vector<int>> mass_blocks;
   /// Tractions and weak boundary data at a time (#dofs); none if empty.
   std::function<Eigen::VectorXd(double time)> external_force;
+  /// A constant shift of F at every quadrature point at a time (writes 9 values per
+  /// point, column-major, into its span; ElasticAssembler::set_deformation_shifts): boundary
+  /// data inside the energy (DG's lifted Dirichlet data). Read at set_time; none if empty.
+  std::function<void(double time, std::span<double> shifts)> deformation_shifts;
   PreconditionerFactory preconditioner;
 };
 
@@ -68,6 +73,8 @@ public:
   }
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override;
+  /// Evaluates parts.deformation_shifts at `time` (from time 0 at construction).
+  void set_time(double time) const override;
   const std::vector<int>& constrained_dofs() const override { return parts_.dirichlet.dofs; }
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
@@ -87,6 +94,7 @@ private:
   Eigen::VectorXd lumped_mass_;
   std::unique_ptr<ExplicitMass> explicit_mass_;
   bool constant_hessian_ = false;
+  mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)
 };
 
 }  // namespace altfem

@@ -2,9 +2,9 @@
 // moving conditions (Kaufmann et al. 2009 §4.2) reproduce an exact affine solution,
 // the automatic penalty doubling (§8) ends at the first definite K, the block-Jacobi
 // preconditioner solves the system with PCG, the volume output is per element, a
-// nonlinear material runs through the shared assembly (with the lifted interior penalty
-// when its conditions are `fixed`, else Babuška–Zlámal), and material regions give each
-// cell its own material.
+// nonlinear material runs through the shared assembly (by default with the lifted interior
+// penalty when its conditions are `fixed`, else Babuška–Zlámal), and material regions give
+// each cell its own material.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -170,21 +170,36 @@ TEST(DgMethod, VolumeOutputGivesEachElementItsOwnField) {
   }
 }
 
-TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAMovingConditionIsBadInputNamingTheFlux) {
-  const std::string neo_hookean = R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
-  const auto file = write_bar_scene("neo_hookean_ip_bar", neo_hookean, R"({ "flux": "interior_penalty" })");
+TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInputNamingBoth) {
+  const auto file = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg" / "neo_hookean_roller_bar.json";
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
+    "material": { "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+    "boundary_conditions": [
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } },
+      { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"] } ],
+    "time": { "static": true },
+    "discretization": { "dg": { "flux": "interior_penalty", "resolution": [2, 1, 1] } } })";
   try {
     (void)build(file);
-    FAIL() << "accepted interior_penalty with neo_hookean and a moving condition";
+    FAIL() << "accepted interior_penalty with neo_hookean and a condition on one component";
   } catch (const InputError& error) {
     const std::string message = error.what();
     EXPECT_NE(message.find("/discretization/dg/flux"), std::string::npos) << message;
-    EXPECT_NE(message.find("/boundary_conditions/1/motion"), std::string::npos) << message;
+    EXPECT_NE(message.find("/boundary_conditions/1/components"), std::string::npos) << message;
   }
-  // Its default flux is then Babuška–Zlámal, through the shared assembly.
-  const Built built = build(write_bar_scene("neo_hookean_bar", neo_hookean, R"({ "resolution": [2, 1, 1] })"));
-  EXPECT_EQ(built.method->facts()["flux"], "babuska_zlamal");
-  EXPECT_GT(built.method->quadrature_points(), 0);
+}
+
+// A moving condition: Babuška–Zlámal by default, interior penalty (its data lifted into F
+// at every set_time) on request.
+TEST(DgMethod, ANonlinearMaterialWithAMovingConditionTakesEitherFlux) {
+  const std::string neo_hookean = R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
+  const Built by_default = build(write_bar_scene("neo_hookean_bar", neo_hookean, R"({ "resolution": [2, 1, 1] })"));
+  EXPECT_EQ(by_default.method->facts()["flux"], "babuska_zlamal");
+  EXPECT_GT(by_default.method->quadrature_points(), 0);
+  const Built lifted = build(
+      write_bar_scene("neo_hookean_ip_bar", neo_hookean, R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })"));
+  EXPECT_EQ(lifted.method->facts()["flux"], "interior_penalty");
 }
 
 // With `fixed` conditions only, a nonlinear material defaults to the consistent interior
