@@ -25,11 +25,13 @@ MonomialBasis cell_basis(const Polyhedron& cell, int degree) {
   return MonomialBasis(degree, centroid, diameter);
 }
 
+// Zeros kept: K stores whole element and face blocks, so an element's 3n coefficients
+// share one pattern and the direct solver orders elements, not coefficients
+// (block_fill_reducing_ordering.hpp).
 void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
                const std::vector<int>& dofs) {
   for (Eigen::Index i = 0; i < block.rows(); ++i)
-    for (Eigen::Index j = 0; j < block.cols(); ++j)
-      if (block(i, j) != 0) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+    for (Eigen::Index j = 0; j < block.cols(); ++j) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
 }
 
 }  // namespace

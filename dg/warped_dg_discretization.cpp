@@ -7,8 +7,6 @@
 
 #include "dg/exact_element_matrices.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
-#include "shared/assembly/basis_groups.hpp"
-#include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
 
@@ -49,14 +47,6 @@ std::vector<int> dofs_of(const Ranges& ranges) {
   return dofs;
 }
 
-// rotated = R_blk A R_blkᵀ with R_blk = diag(R, …, R): every 3 × 3 block rotated.
-template <typename Rotated>
-void rotate_blocks(const Eigen::MatrixXd& matrix, const Eigen::Matrix3d& rotation, Rotated& rotated) {
-  for (Eigen::Index a = 0; a < matrix.rows(); a += 3)
-    for (Eigen::Index b = 0; b < matrix.cols(); b += 3)
-      rotated.template block<3, 3>(a, b).noalias() = rotation * matrix.block<3, 3>(a, b) * rotation.transpose();
-}
-
 }  // namespace
 
 WarpedDgDiscretization::WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings,
@@ -95,22 +85,29 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
         block.value_index.push_back(static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
       }
   }
+  std::vector<int> cell_dofs;  // each element's first DOF
+  for (int cell = 0; cell < system.cell_count(); ++cell) cell_dofs.push_back(3 * system.offset(cell));
   // Scratch for as many threads as OpenMP has now; later loops never run on more.
-  BasisGroups touched;  // each block's elements, by the first DOF of their ranges
+  element_blocks_.resize(static_cast<size_t>(system.cell_count()));
+  force_offsets_.push_back(0);
   Eigen::Index largest = 0;
-  for (const Block& block : blocks_) {
-    std::vector<int> firsts;
-    for (const DofRange& range : block.ranges) firsts.push_back(range.first);
-    touched.add(firsts);
-    largest = std::max(largest, block.matrix.rows());
+  for (int b = 0; b < static_cast<int>(blocks_.size()); ++b) {
+    int position = 0;
+    for (int r = 0; r < static_cast<int>(blocks_[b].ranges.size()); ++r) {
+      const DofRange& range = blocks_[b].ranges[r];
+      const int element = static_cast<int>(std::upper_bound(cell_dofs.begin(), cell_dofs.end(), range.first) -
+                                           cell_dofs.begin()) - 1;
+      element_blocks_[element].push_back({b, r, position});
+      position += range.count;
+    }
+    force_offsets_.push_back(force_offsets_.back() + position);
+    largest = std::max(largest, blocks_[b].matrix.rows());
   }
-  colors_ = color_groups(touched);
   block_energies_.resize(blocks_.size());
+  block_forces_.resize(force_offsets_.back());
   scratch_.resize(static_cast<size_t>(omp_get_max_threads()));
-  for (Scratch& scratch : scratch_) {
+  for (Scratch& scratch : scratch_)
     for (Eigen::VectorXd* vector : {&scratch.rest, &scratch.z, &scratch.jump, &scratch.force}) vector->resize(largest);
-    scratch.warped.resize(largest, largest);
-  }
   // X⁰ (§6.2): x = c·1 + s·ξ e_x + s·η e_y + s·ζ e_z in the centred, scaled monomials.
   rest_state_ = Eigen::VectorXd::Zero(dof_count());
   cell_offsets_.push_back(0);
@@ -285,16 +282,25 @@ double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
 void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
   const std::vector<Eigen::Matrix3d> rotation = rotations(u);
   gradient = penalty_ * u;
-  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
-    const Block& block = blocks_[index];
-    const Eigen::Matrix3d& R = rotation[block.element];
-    Scratch& scratch = scratch_[omp_get_thread_num()];
-    block_force(block, R, u, scratch);  // K_S z_S
-    Eigen::Index position = 0;
-    for (const DofRange& range : block.ranges)
-      for (int k = 0; k < range.count; k += 3, position += 3)
-        gradient.segment<3>(range.first + k) += R * scratch.force.segment<3>(position);  // eq. (29)
-  });
+  parallel::for_each_index_in_two_passes(
+      blocks_.size(),
+      [&](size_t index) {
+        const Block& block = blocks_[index];
+        const Eigen::Matrix3d& R = rotation[block.element];
+        Scratch& scratch = scratch_[omp_get_thread_num()];
+        block_force(block, R, u, scratch);  // K_S z_S
+        for (Eigen::Index a = 0; a < block.matrix.rows(); a += 3)
+          block_forces_.segment<3>(force_offsets_[index] + a) = R * scratch.force.segment<3>(a);  // eq. (29)
+      },
+      element_blocks_.size(),
+      [&](size_t element) {
+        for (const BlockSide& side : element_blocks_[element]) {
+          const DofRange& range = blocks_[side.block].ranges[side.range];
+          gradient.segment(range.first, range.count) +=
+              block_forces_.segment(force_offsets_[side.block] + side.position, range.count);
+        }
+      },
+      threads());
   add_data_forces(rotation, u, &gradient);
 }
 
@@ -303,18 +309,23 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
   if (hessian.nonZeros() != penalty_.nonZeros()) hessian = penalty_;
   Eigen::Map<Eigen::VectorXd> values(hessian.valuePtr(), hessian.nonZeros());
   values = Eigen::Map<const Eigen::VectorXd>(penalty_.valuePtr(), penalty_.nonZeros());
-  parallel::for_each_colored(colors_, blocks_.size(), threads(), [&](int index) {
-    const Block& block = blocks_[index];
-    const auto n = block.matrix.rows();
-    auto warped = scratch_[omp_get_thread_num()].warped.topLeftCorner(n, n);
-    rotate_blocks(block.dirichlet ? block.symmetric : block.matrix, rotation[block.element], warped);  // §6.3
-    const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
-    for (Eigen::Index column = 0; column < n; ++column) {
-      Eigen::Index row = 0;
-      for (Eigen::Index r = 0; r < ranges; ++r) {
-        const int start = block.value_index[column * ranges + r];
-        values.segment(start, block.ranges[r].count) += warped.col(column).segment(row, block.ranges[r].count);
-        row += block.ranges[r].count;
+  // Each element fills its own columns: R_S K_S R_Sᵀ of every block on its side, 3 × 3
+  // block by 3 × 3 block (§6.3).
+  parallel::for_each_index(element_blocks_.size(), threads(), [&](size_t element) {
+    for (const BlockSide& side : element_blocks_[element]) {
+      const Block& block = blocks_[side.block];
+      const Eigen::MatrixXd& matrix = block.dirichlet ? block.symmetric : block.matrix;
+      const Eigen::Matrix3d& R = rotation[block.element];
+      const auto ranges = static_cast<Eigen::Index>(block.ranges.size());
+      const int columns_end = side.position + block.ranges[side.range].count;
+      for (Eigen::Index column = side.position; column < columns_end; column += 3) {
+        Eigen::Index row = 0;
+        for (Eigen::Index r = 0; r < ranges; ++r)
+          for (int k = 0; k < block.ranges[r].count; k += 3, row += 3) {
+            const Eigen::Matrix3d rotated = R * matrix.block<3, 3>(row, column) * R.transpose();
+            for (int j = 0; j < 3; ++j)
+              values.segment<3>(block.value_index[(column + j) * ranges + r] + k) += rotated.col(j);
+          }
       }
     }
   });

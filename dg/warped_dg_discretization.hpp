@@ -72,7 +72,6 @@ private:
   // One thread's work vectors, each as long as the largest block (blocks use their head).
   struct Scratch {
     Eigen::VectorXd rest, z, jump, force;
-    Eigen::MatrixXd warped;
   };
   // The element and face terms of DgLinearSystem, integrated again and kept apart.
   static Parts warped_parts(const DgLinearSystem& system, const DgSettings& settings);
@@ -120,11 +119,17 @@ private:
   std::vector<DirichletFace> dirichlet_faces_;  // empty unless some condition moves
   ConditionTrajectory trajectory_;
   mutable std::vector<Eigen::MatrixXd> data_moments_;  // per Dirichlet face 3 × 3n: G_a side by side
-  // Blocks coloured so that no two of a colour touch the same element: each colour is
-  // scattered in parallel without locks, every entry summed in the same order.
-  std::vector<std::vector<int>> colors_;
-  mutable std::vector<Scratch> scratch_;        // per thread
-  mutable std::vector<double> block_energies_;  // per block, summed in block order
+  // Parallel without locks, and the same sums on any number of threads: each element
+  // owns its rows and columns and gathers what its blocks put there, in block order.
+  struct BlockSide {
+    int block, range;  // blocks_[block].ranges[range] is the element's
+    int position;      // where that range starts among the block's rows
+  };
+  std::vector<std::vector<BlockSide>> element_blocks_;  // per element
+  std::vector<int> force_offsets_;                      // per block + 1: its rows in block_forces_
+  mutable std::vector<Scratch> scratch_;                // per thread
+  mutable std::vector<double> block_energies_;          // per block, summed in block order
+  mutable Eigen::VectorXd block_forces_;                // each block's R_S K_S z_S
   Eigen::SparseMatrix<double> penalty_;  // K_3, the unwarped jump terms, on hessian_pattern()
   Eigen::VectorXd rest_state_;
   std::vector<int> cell_offsets_;              // #cells + 1: first basis function of each cell

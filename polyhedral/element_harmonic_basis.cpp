@@ -1,13 +1,15 @@
 #include "polyhedral/element_harmonic_basis.hpp"
 
 #include <Eigen/Geometry>
-#include <Eigen/QR>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
 #include <vector>
 
 #include "polyhedral/face_harmonic_coordinates.hpp"
+#include "polyhedral/mfs_least_squares.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
@@ -21,6 +23,11 @@ Eigen::MatrixXd face_polygon(const Polyhedron& polyhedron, const std::vector<int
   return polygon;
 }
 
+// Points strictly inside a segment of `length` at about `spacing` apart.
+int interior_samples(double length, double spacing) {
+  return std::max(0, static_cast<int>(std::lround(length / spacing)) - 1);
+}
+
 // Boundary points with their outward normal and the boundary data of every node there
 // (#nodes values: δ at a vertex, linear along an edge, the face's harmonic coordinates
 // inside a face).
@@ -29,10 +36,12 @@ struct BoundarySamples {
   std::vector<Eigen::VectorXd> data;
 };
 
-// Nodes; `per_edge` points inside each edge; inside each face a grid of about the
-// edges' spacing, kept half a spacing away from the face's edges.
+// Nodes; points inside each edge at about `edge_spacing` (as many as its length
+// holds: a short edge of a cut cell gets none, its linear data is fitted through its
+// nodes); inside each face a grid of `face_spacing`, kept half a spacing away from the
+// face's edges.
 BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<FaceHarmonicCoordinates>& faces,
-                                int per_edge, double spacing) {
+                                double edge_spacing, double face_spacing) {
   const auto nodes = static_cast<int>(polyhedron.vertices.rows());
   std::vector<Eigen::Vector3d> face_normals;
   std::vector<Eigen::Vector3d> vertex_normals(nodes, Eigen::Vector3d::Zero());
@@ -53,7 +62,9 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
     samples.normals.push_back(vertex_normals[v].normalized());
     samples.data.push_back(Eigen::VectorXd::Unit(nodes, v));
   }
-  for (const auto& [edge, normal] : edge_normals)
+  for (const auto& [edge, normal] : edge_normals) {
+    const int per_edge = interior_samples(
+        (polyhedron.vertices.row(edge.first) - polyhedron.vertices.row(edge.second)).norm(), edge_spacing);
     for (int j = 1; j <= per_edge; ++j) {
       const double t = static_cast<double>(j) / (per_edge + 1);
       samples.points.push_back((1 - t) * polyhedron.vertices.row(edge.first).transpose() +
@@ -64,6 +75,7 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
       data[edge.second] = t;
       samples.data.push_back(data);
     }
+  }
   for (size_t f = 0; f < polyhedron.faces.size(); ++f) {
     const auto& face = polyhedron.faces[f];
     const Eigen::MatrixXd polygon = face_polygon(polyhedron, face);
@@ -80,8 +92,8 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
     }
     const Eigen::Vector2d low = local.colwise().minCoeff(), high = local.colwise().maxCoeff();
     std::vector<Eigen::Vector3d> inside;
-    for (double s = low.x() + spacing / 2; s < high.x(); s += spacing)
-      for (double r = low.y() + spacing / 2; r < high.y(); r += spacing) {
+    for (double s = low.x() + face_spacing / 2; s < high.x(); s += face_spacing)
+      for (double r = low.y() + face_spacing / 2; r < high.y(); r += face_spacing) {
         bool in = false;
         double distance = INFINITY;
         for (Eigen::Index k = 0; k < local.rows(); ++k) {
@@ -91,7 +103,7 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
           const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
           distance = std::min(distance, (a + t * ab - x).norm());
         }
-        if (in && distance >= spacing / 2) inside.push_back(origin + s * u + r * v);
+        if (in && distance >= face_spacing / 2) inside.push_back(origin + s * u + r * v);
       }
     if (inside.empty()) continue;
     Eigen::MatrixXd points(static_cast<Eigen::Index>(inside.size()), 3);
@@ -115,14 +127,17 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   const auto nodes = static_cast<int>(element.vertices.rows());
   origin_ = element.vertices.colwise().mean().transpose();
   scale_ = (element.vertices.rowwise() - origin_.transpose()).rowwise().norm().maxCoeff();
-  double diameter = 0, edge_length = 0;
-  int edges = 0;
+  double diameter = 0;
   for (int i = 0; i < nodes; ++i)
     for (int j = i + 1; j < nodes; ++j) diameter = std::max(diameter, (element.vertices.row(i) - element.vertices.row(j)).norm());
-  for (const auto& face : element.faces)
-    for (size_t k = 0; k < face.size(); ++k, ++edges)
-      edge_length += (element.vertices.row(face[k]) - element.vertices.row(face[(k + 1) % face.size()])).norm();
-  const double spacing = edge_length / edges / (options.edge_samples + 1);
+  // The sample spacing from the element's surface area, not from its edges: a box of
+  // side a gets a / (edge_samples + 1), the paper's 3-5 samples per edge (§5), and any
+  // element about the same number of face samples, 6 (edge_samples + 1)². A cut cell's
+  // many short edges and a finer neighbour's extra nodes add only what their length holds
+  // (tying the spacing to the mean edge length gave cut cells of the bunny ~1000 kernels).
+  double area = 0;
+  for (const auto& face : element.faces) area += polygon_area_vector(face_polygon(element, face)).norm();
+  const double spacing = std::sqrt(area / 6) / (options.edge_samples + 1);
 
   std::vector<FaceHarmonicCoordinates> faces;
   faces.reserve(element.faces.size());
@@ -138,32 +153,37 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   }
 
   // Kernel centres (eq. (12)), dropped where they land inside the element or closer
-  // than half the offset to its boundary (non-convex elements).
-  const BoundarySamples samples = sample_boundary(element, faces, options.edge_samples, spacing);
-  const int dense_per_edge = options.collocation_factor * (options.edge_samples + 1) - 1;
+  // than half the offset to its boundary (non-convex elements), or closer than half a
+  // spacing to a centre kept before (a cut cell's nodes can be much closer than the
+  // spacing; nearly coincident kernels only make the system rank-deficient). Collocation
+  // points m ≈ 3n (eq. (13)): the same sampling, 3 times denser along edges and in area.
+  const BoundarySamples samples = sample_boundary(element, faces, spacing, spacing);
   const BoundarySamples collocation =
-      sample_boundary(element, faces, dense_per_edge, spacing / std::sqrt(static_cast<double>(options.collocation_factor)));
+      sample_boundary(element, faces, spacing / options.collocation_factor,
+                      spacing / std::sqrt(static_cast<double>(options.collocation_factor)));
   std::vector<Eigen::Vector3d> centres;
   const double offset = options.offset * diameter;
   for (size_t s = 0; s < samples.points.size(); ++s) {
     const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
+    const auto closer_than = [&centre](const Eigen::Vector3d& point, double distance) {
+      return (point - centre).squaredNorm() < distance * distance;
+    };
+    if (std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& kept) { return closer_than(kept, spacing / 2); }))
+      continue;
+    if (std::any_of(collocation.points.begin(), collocation.points.end(),
+                    [&](const Eigen::Vector3d& point) { return closer_than(point, offset / 2); }))
+      continue;
     if (std::abs(winding_number(element, centre)) > 0.5) continue;
-    bool too_close = false;
-    for (const auto& point : collocation.points)
-      if ((point - centre).squaredNorm() < 0.25 * offset * offset) {
-        too_close = true;
-        break;
-      }
-    if (!too_close) centres.push_back((centre - origin_) / scale_);
+    centres.push_back(centre);
   }
   centres_.resize(static_cast<Eigen::Index>(centres.size()), 3);
-  for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = centres[j].transpose();
+  for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();
 
   const auto m = static_cast<Eigen::Index>(collocation.points.size());
   const Eigen::Index c = centres_.rows();
-  // The m × (c + 4) system and m × #nodes data (about 1 MB for a hexahedron) live in
-  // per-thread buffers that only grow: building bases cell after cell does not return
-  // them to the system and fault their pages in again each time.
+  // The m × (c + 4) system and m × #nodes data live in per-thread buffers that only
+  // grow: building bases cell after cell does not return them to the system and fault
+  // their pages in again each time.
   thread_local std::vector<double> system_storage, data_storage;
   system_storage.resize(std::max(system_storage.size(), static_cast<size_t>(m * (c + 4))));
   data_storage.resize(std::max(data_storage.size(), static_cast<size_t>(m * nodes)));
@@ -182,22 +202,7 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
     for (Eigen::Index i = 0; i < m; ++i) data.row(i) = collocation.data[i].transpose();
   };
   fill_system();
-  // One factorisation for every node's right-hand side: blocked Householder QR in place
-  // (level-3, several times faster than column pivoting). Qᵀ·data gives the coefficients
-  // from its top rows and the misfit from the rest. When R's diagonal shows the kernel
-  // columns (nearly) dependent, the complete orthogonal decomposition gives the
-  // minimum-norm least-squares solution instead (the pseudo-inverse, §5).
-  const Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(system);
-  const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
-  if (diagonal.minCoeff() > 1e-12 * diagonal.maxCoeff()) {
-    data.applyOnTheLeft(qr.householderQ().transpose());
-    coefficients_ = qr.matrixQR().topRows(c + 4).triangularView<Eigen::Upper>().solve(data.topRows(c + 4));
-    boundary_residual_ = std::sqrt(data.bottomRows(m - c - 4).squaredNorm() / static_cast<double>(data.size()));
-  } else {
-    fill_system();
-    coefficients_ = system.completeOrthogonalDecomposition().solve(data);
-    boundary_residual_ = std::sqrt((system * coefficients_ - data).squaredNorm() / static_cast<double>(data.size()));
-  }
+  boundary_residual_ = solve_mfs_least_squares(system, data, fill_system, coefficients_);
 }
 
 void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorXd& values,
@@ -217,14 +222,38 @@ void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorX
   gradients /= scale_;  // d/dx = (1/scale) d/dx_local
 }
 
-Eigen::MatrixXd ElementHarmonicBasis::values(const Eigen::MatrixXd& points) const {
-  Eigen::MatrixXd result(points.rows(), node_count());
-  Eigen::VectorXd values;
-  Eigen::MatrixXd gradients;
-  for (Eigen::Index p = 0; p < points.rows(); ++p) {
-    evaluate(points.row(p).transpose(), values, gradients);
-    result.row(p) = values.transpose();
+void ElementHarmonicBasis::evaluate(const Eigen::MatrixXd& points, Eigen::MatrixXd& values,
+                                    Eigen::MatrixXd& gradients) const {
+  const Eigen::Index count = points.rows(), c = centres_.rows(), n = coefficients_.cols();
+  // kernels (#points × (#centres + 4)): 1/r, then the linear polynomial x, y, z, 1;
+  // derivatives[d] (#points × #centres): ∂(1/r)/∂x_d = −(x_d − k_d)/r³, local coordinates.
+  Eigen::MatrixXd kernels(count, c + 4);
+  std::array<Eigen::MatrixXd, 3> derivatives;
+  for (auto& derivative : derivatives) derivative.resize(count, c);
+  const Eigen::MatrixX3d local = (points.rowwise() - origin_.transpose()) / scale_;
+  for (Eigen::Index j = 0; j < c; ++j)
+    for (Eigen::Index p = 0; p < count; ++p) {
+      const Eigen::RowVector3d offset = local.row(p) - centres_.row(j);
+      const double inverse = 1.0 / offset.norm();
+      kernels(p, j) = inverse;
+      for (int d = 0; d < 3; ++d) derivatives[d](p, j) = -offset[d] * inverse * inverse * inverse;
+    }
+  kernels.middleCols(c, 3) = local;
+  kernels.col(c + 3).setOnes();
+  values.noalias() = kernels * coefficients_;
+  gradients.resize(count * n, 3);
+  Eigen::MatrixXd component(count, n);
+  for (int d = 0; d < 3; ++d) {
+    component.noalias() = derivatives[d] * coefficients_.topRows(c);
+    component.rowwise() += coefficients_.row(c + d);
+    // d/dx = (1/scale) d/dx_local; point-major rows.
+    for (Eigen::Index p = 0; p < count; ++p) gradients.col(d).segment(p * n, n) = component.row(p).transpose() / scale_;
   }
+}
+
+Eigen::MatrixXd ElementHarmonicBasis::values(const Eigen::MatrixXd& points) const {
+  Eigen::MatrixXd result, gradients;
+  evaluate(points, result, gradients);
   return result;
 }
 

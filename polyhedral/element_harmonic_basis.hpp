@@ -24,6 +24,10 @@ public:
   int node_count() const { return static_cast<int>(coefficients_.cols()); }
   /// N_i(x) (#nodes) and ∇N_i(x) (#nodes × 3).
   void evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, Eigen::MatrixXd& gradients) const;
+  /// N_i and ∇N_i at many points (#points × 3) at once, by products of the kernel matrices
+  /// with the coefficients: values #points × #nodes, gradients (#points·#nodes) × 3,
+  /// point-major (row q·#nodes + i: ∇N_i(x_q)), as a tabulation stores them.
+  void evaluate(const Eigen::MatrixXd& points, Eigen::MatrixXd& values, Eigen::MatrixXd& gradients) const;
   /// N_i at each point: #points × #nodes.
   Eigen::MatrixXd values(const Eigen::MatrixXd& points) const;
   /// The kernel centres k_j (#centres × 3, physical coordinates), all outside the element.

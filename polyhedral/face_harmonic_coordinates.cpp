@@ -1,11 +1,12 @@
 #include "polyhedral/face_harmonic_coordinates.hpp"
 
 #include <Eigen/Geometry>
-#include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
+#include "polyhedral/mfs_least_squares.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 
 namespace altfem::harmonic {
@@ -13,7 +14,8 @@ namespace altfem::harmonic {
 namespace {
 
 // Points along the boundary of a counter-clockwise polygon (#nodes × 2): each node, then
-// `per_edge` evenly spaced points inside each edge. For each point: the edge it lies on,
+// evenly spaced points inside each edge about `spacing` apart (none on an edge shorter
+// than 1.5 spacings: its data is linear between its nodes). For each point: the edge it lies on,
 // the parameter t along it (0 at its first node), and the outward unit normal (at a node:
 // the mean of its two edges' normals).
 struct BoundarySamples {
@@ -23,21 +25,24 @@ struct BoundarySamples {
   std::vector<double> parameters;
 };
 
-BoundarySamples sample_boundary(const Eigen::MatrixX2d& polygon, int per_edge) {
+BoundarySamples sample_boundary(const Eigen::MatrixX2d& polygon, double spacing) {
   const auto n = static_cast<int>(polygon.rows());
   std::vector<Eigen::Vector2d> edge_normals(n);
+  std::vector<int> per_edge(n);
+  int count = 0;
   for (int k = 0; k < n; ++k) {
     const Eigen::Vector2d along = polygon.row((k + 1) % n) - polygon.row(k);
     edge_normals[k] = Eigen::Vector2d(along.y(), -along.x()).normalized();
+    per_edge[k] = std::max(0, static_cast<int>(std::lround(along.norm() / spacing)) - 1);
+    count += per_edge[k] + 1;
   }
   BoundarySamples samples;
-  const int count = n * (per_edge + 1);
   samples.points.resize(count, 2);
   samples.normals.resize(count, 2);
   int row = 0;
   for (int k = 0; k < n; ++k)
-    for (int j = 0; j <= per_edge; ++j, ++row) {
-      const double t = static_cast<double>(j) / (per_edge + 1);
+    for (int j = 0; j <= per_edge[k]; ++j, ++row) {
+      const double t = static_cast<double>(j) / (per_edge[k] + 1);
       samples.points.row(row) = (1 - t) * polygon.row(k) + t * polygon.row((k + 1) % n);
       const Eigen::Vector2d normal = j == 0 ? (edge_normals[k] + edge_normals[(k + n - 1) % n]).normalized().eval()
                                             : edge_normals[k];
@@ -84,12 +89,23 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) diameter = std::max(diameter, (local.row(i) - local.row(j)).norm());
 
+  // The sample spacing from the face's area (a square of side a: a / (edge_samples + 1),
+  // the paper's 3-5 samples per edge, §5), so short edges add only what their length
+  // holds; a sliver face (a cut cell's) from half its diameter instead, so it is not
+  // sampled more densely than a square of its size.
+  const double size = std::max(std::sqrt(std::abs(polygon_moments_2d(local, 0)[0])), diameter / 2);
+  const double spacing = size / (options.edge_samples + 1);
+
   // Kernel centres: boundary samples moved outward by ξ·size (eq. (12)); a centre that
-  // lands inside a non-convex polygon, or too close to it, is dropped.
-  const BoundarySamples samples = sample_boundary(local, options.edge_samples);
+  // lands inside a non-convex polygon, or too close to it, is dropped, and so is one
+  // closer than half a spacing to a centre kept before (close nodes of a cut face).
+  const BoundarySamples samples = sample_boundary(local, spacing);
   std::vector<Eigen::Vector2d> centres;
   for (Eigen::Index s = 0; s < samples.points.rows(); ++s) {
     const Eigen::Vector2d centre = samples.points.row(s) + options.offset * diameter * samples.normals.row(s);
+    if (std::any_of(centres.begin(), centres.end(),
+                    [&](const Eigen::Vector2d& kept) { return (kept - centre).norm() < spacing / 2; }))
+      continue;
     const auto [inside, distance] = locate(local, centre);
     if (!inside && distance >= 0.5 * options.offset * diameter) centres.push_back(centre);
   }
@@ -97,21 +113,23 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
   for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = centres[j].transpose();
 
   // Least squares against the boundary data at m ≈ 3n collocation points (eqs. (13)-(14)).
-  const BoundarySamples collocation =
-      sample_boundary(local, options.collocation_factor * (options.edge_samples + 1) - 1);
+  const BoundarySamples collocation = sample_boundary(local, spacing / options.collocation_factor);
   const Eigen::Index m = collocation.points.rows(), c = centres_.rows();
-  Eigen::MatrixXd system(m, c + 3);
-  Eigen::MatrixXd data = Eigen::MatrixXd::Zero(m, n);
-  for (Eigen::Index i = 0; i < m; ++i) {
-    const Eigen::Vector2d x = collocation.points.row(i);
-    for (Eigen::Index j = 0; j < c; ++j) system(i, j) = std::log((x - centres_.row(j).transpose()).norm());
-    system.block(i, c, 1, 3) << x.x(), x.y(), 1.0;
-    const int edge = collocation.edges[i];
-    const double t = collocation.parameters[i];
-    data(i, edge) += 1 - t;  // linear along the edge between its two nodes
-    data(i, (edge + 1) % n) += t;
-  }
-  coefficients_ = system.completeOrthogonalDecomposition().solve(data);
+  Eigen::MatrixXd system(m, c + 3), data(m, n);
+  const auto fill_system = [&] {
+    data.setZero();
+    for (Eigen::Index i = 0; i < m; ++i) {
+      const Eigen::Vector2d x = collocation.points.row(i);
+      for (Eigen::Index j = 0; j < c; ++j) system(i, j) = std::log((x - centres_.row(j).transpose()).norm());
+      system.block(i, c, 1, 3) << x.x(), x.y(), 1.0;
+      const int edge = collocation.edges[i];
+      const double t = collocation.parameters[i];
+      data(i, edge) += 1 - t;  // linear along the edge between its two nodes
+      data(i, (edge + 1) % n) += t;
+    }
+  };
+  fill_system();
+  solve_mfs_least_squares(system, data, fill_system, coefficients_);
 }
 
 Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points) const {

@@ -4,11 +4,12 @@
 namespace altfem::harmonic {
 
 struct MfsOptions {
-  /// Kernel centres per edge besides its end nodes (the paper: about 3-5). Faces are
-  /// sampled at about the same spacing. 5: on a non-convex L-prism 4 leave N_i(x_j) off
-  /// δ_ij by 0.105 at the re-entrant edge, 5 by 0.083 (ex5_harmonic_basis, unit_harmonic);
-  /// on boxes 4 already give the trilinear basis to 9e-4 at half the cost (verify_harmonic,
-  /// bench_polyhedral_element).
+  /// Kernel centres per edge of a box besides its end nodes (the paper: about 3-5). The
+  /// spacing this gives a box of the element's surface area is used everywhere: edges get
+  /// as many samples as their length holds (a cut cell's short edges none), faces a grid
+  /// of the same spacing. 5: on a non-convex L-prism 3 leave N_i(x_j) off δ_ij by 0.25 at
+  /// the re-entrant edge, 5 by 0.13, 10 by 0.075 (unit_harmonic); on boxes 4 already give
+  /// the trilinear basis to 7e-4 at half the cost (verify_harmonic, bench_polyhedral_element).
   int edge_samples = 5;
   /// Collocation points per kernel centre (m ≈ 3n, eq. (13)): a denser sampling of
   /// the same kind.

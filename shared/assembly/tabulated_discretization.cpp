@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+
+#include "shared/common/error.hpp"
 
 namespace altfem {
 
@@ -24,6 +27,26 @@ std::vector<std::vector<int>> element_dof_groups(const TabulatedElements& elemen
   return groups;
 }
 
+// A lumped mass that is not positive would give a division by zero or an unstable
+// explicit step: NumericalError naming the basis function and its elements.
+void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const TabulatedElements& elements) {
+  Eigen::Index dof = 0;
+  if (lumped_mass.size() == 0 || lumped_mass.minCoeff(&dof) > 0) return;
+  // HRZ lumping scales the consistent mass' diagonal Σ_q w_q φ_a(x_q)², which only a
+  // negative quadrature weight (a rule on a cell that is not star-shaped) makes ≤ 0.
+  const int basis = static_cast<int>(dof / 3);
+  std::string holders;
+  for (int e = 0; e < elements.size(); ++e) {
+    const ElementView element = elements[e];
+    if (std::find(element.basis.begin(), element.basis.end(), basis) == element.basis.end()) continue;
+    const double lightest = *std::min_element(element.weights.begin(), element.weights.end());
+    holders += (holders.empty() ? "" : ", ") + std::to_string(e) + (lightest < 0 ? " (a negative weight)" : "");
+  }
+  throw NumericalError("lumped mass of basis function " + std::to_string(basis) + " is " +
+                       std::to_string(lumped_mass[dof]) + ", not positive; its elements: " +
+                       (holders.empty() ? "none" : holders));
+}
+
 }  // namespace
 
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
@@ -38,8 +61,10 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   }
   assembler_->mass_matrix(masses_, mass_);
   lumped_mass_ = assembler_->lumped_mass(masses_);
-  if (parts_.explicit_mass == ExplicitMassKind::lumped)
+  if (parts_.explicit_mass == ExplicitMassKind::lumped) {
+    check_lumped_mass_positive(lumped_mass_, parts_.elements);
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
+  }
   else
     explicit_mass_ = std::make_unique<BlockDiagonalMass>(
         mass_, parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);

@@ -4,10 +4,14 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/geometry/monomial_index.hpp"
+#include "shared/quadrature/basic_feasible_point.hpp"
+#include "shared/quadrature/polyhedron_kernel_point.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem {
@@ -77,21 +81,96 @@ PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength) {
   return rule;
 }
 
+namespace {
+
+// A positive rule for a polyhedron that is not star-shaped: candidate points are those of
+// the signed cone rule of strength 2·strength + 2 (strength + 2 left the moment equations
+// of a U-prism infeasible at strength 5) that lie inside the cell (inverted tetrahedra
+// reach outside it; x is inside when the signs of the cone tetrahedra holding it add up
+// to 1), and weights w ≥ 0 solve the moment equations Σ_q w_q m_α(x_q) = ∫_P m_α for
+// every monomial of degree ≤ strength (a basic feasible point, Clp: at most that many
+// points, as the simplified rules of Longva et al. 2020 §4.4). Nullopt when infeasible.
+std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron, int strength,
+                                                   const Eigen::Vector3d& apex,
+                                                   const std::vector<Eigen::Matrix3d>& jacobians, double size) {
+  const QuadratureRule tet = tet_rule(2 * strength + 2);
+  std::vector<Eigen::Matrix3d> inverses;
+  std::vector<int> signs;
+  for (const Eigen::Matrix3d& jacobian : jacobians) {
+    inverses.push_back(jacobian.inverse());
+    signs.push_back(jacobian.determinant() > 0 ? 1 : -1);
+  }
+  const auto inside = [&](const Eigen::Vector3d& x) {
+    int winding = 0;
+    for (size_t t = 0; t < inverses.size(); ++t) {
+      const Eigen::Vector3d lambda = inverses[t] * (x - apex);
+      if (lambda.minCoeff() >= 0 && lambda.sum() <= 1) winding += signs[t];
+    }
+    return winding == 1;
+  };
+  std::vector<Eigen::Vector3d> candidates;
+  for (const Eigen::Matrix3d& jacobian : jacobians)
+    for (Eigen::Index q = 0; q < tet.weights.size(); ++q) {
+      const Eigen::Vector3d x = apex + jacobian * tet.points.row(q).transpose();
+      if (inside(x)) candidates.push_back(x);
+    }
+  // Monomials about the apex scaled by the size, so every entry is O(1).
+  const Eigen::Matrix<int, Eigen::Dynamic, 3> exponents = monomial_exponents(strength);
+  Eigen::MatrixXd monomials(exponents.rows(), static_cast<Eigen::Index>(candidates.size()));
+  for (size_t q = 0; q < candidates.size(); ++q) {
+    const Eigen::Vector3d x = (candidates[q] - apex) / size;
+    for (Eigen::Index i = 0; i < exponents.rows(); ++i)
+      monomials(i, static_cast<Eigen::Index>(q)) =
+          std::pow(x.x(), exponents(i, 0)) * std::pow(x.y(), exponents(i, 1)) * std::pow(x.z(), exponents(i, 2));
+  }
+  const Eigen::VectorXd moments = polyhedron_moments(polyhedron, strength, apex, size);
+  const std::optional<Eigen::VectorXd> weights = basic_feasible_point(monomials, moments);
+  if (!weights || (monomials * *weights - moments).cwiseAbs().maxCoeff() > 1e-10 * moments[0]) return std::nullopt;
+  PolyhedronRule rule;
+  const auto count = static_cast<Eigen::Index>((weights->array() > 0).count());
+  rule.points.resize(count, 3);
+  rule.weights.resize(count);
+  for (Eigen::Index q = 0, row = 0; q < weights->size(); ++q)
+    if ((*weights)[q] > 0) {
+      rule.points.row(row) = candidates[q].transpose();
+      rule.weights[row++] = (*weights)[q];
+    }
+  return rule;
+}
+
+}  // namespace
+
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
   if (polyhedron.faces.empty()) throw std::invalid_argument("polyhedron_rule: the polyhedron has no face");
   const QuadratureRule tet = tet_rule(strength);
   // The centroid as apex: it sees the whole cell whenever the cell is convex, and the
   // mean of the vertices can sit on a re-entrant edge (an L-shaped cell's is its corner).
+  // When it does not see every face from inside (inverted tetrahedra: negative weights,
+  // which can make a lumped mass negative), the kernel's centre does if the cell is
+  // star-shaped at all.
   const Eigen::VectorXd first_moments = polyhedron_moments(polyhedron, 1);
-  const Eigen::Vector3d apex = first_moments.segment<3>(1) / first_moments[0];
+  Eigen::Vector3d apex = first_moments.segment<3>(1) / first_moments[0];
   const double size = (polyhedron.vertices.colwise().maxCoeff() - polyhedron.vertices.colwise().minCoeff()).norm();
+  const double degenerate = 1e-13 * size * size * size;
   std::vector<Eigen::Matrix3d> jacobians;
-  for (const auto& face : polyhedron.faces)
-    for (const auto& triangle : triangulate_face(polyhedron.vertices, face)) {
-      Eigen::Matrix3d jacobian;
-      for (int c = 0; c < 3; ++c) jacobian.col(c) = polyhedron.vertices.row(face[triangle[c]]).transpose() - apex;
-      // A face through the apex spans no volume (round-off aside).
-      if (std::abs(jacobian.determinant()) > 1e-13 * size * size * size) jacobians.push_back(jacobian);
+  const auto cone = [&] {
+    jacobians.clear();
+    bool positive = true;
+    for (const auto& face : polyhedron.faces)
+      for (const auto& triangle : triangulate_face(polyhedron.vertices, face)) {
+        Eigen::Matrix3d jacobian;
+        for (int c = 0; c < 3; ++c) jacobian.col(c) = polyhedron.vertices.row(face[triangle[c]]).transpose() - apex;
+        // A face through the apex spans no volume (round-off aside).
+        const double determinant = jacobian.determinant();
+        if (std::abs(determinant) > degenerate) jacobians.push_back(jacobian);
+        positive = positive && determinant > -degenerate;
+      }
+    return positive;
+  };
+  if (!cone())
+    if (const auto kernel_point = polyhedron_kernel_point(polyhedron)) {
+      apex = *kernel_point;
+      cone();
     }
   const auto per_tet = tet.weights.size();
   PolyhedronRule rule{Eigen::MatrixXd(jacobians.size() * per_tet, 3), Eigen::VectorXd(jacobians.size() * per_tet), true};
@@ -104,6 +183,8 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
     }
     rule.positive = rule.positive && determinant > 0;
   }
+  if (!rule.positive)
+    if (auto positive = positive_moment_rule(polyhedron, strength, apex, jacobians, size)) return std::move(*positive);
   return rule;
 }
 

@@ -3,10 +3,12 @@
 // elements): a cone decomposition from an apex — each face cut into triangles (ear clipping), each
 // triangle with the apex a tetrahedron carrying a tet rule — exact to the requested
 // strength for every closed polyhedron, because the signed tetrahedra add up to the
-// polyhedron as a chain (divergence theorem). When the polyhedron is star-shaped about
-// the apex (every convex cell, and many non-convex ones) all weights are positive;
-// otherwise some tetrahedra are inverted and carry negative weights, which integrate
-// exactly but are no rule a positive-weight simplifier may start from.
+// polyhedron as a chain (divergence theorem). The apex is the centroid, or when that does
+// not see every face from inside, the centre of the polyhedron's kernel
+// (polyhedron_kernel_point): so every star-shaped cell (every convex cell, and most cut
+// cells) gets positive weights. Otherwise some tetrahedra are inverted and carry negative
+// weights, which integrate exactly but are no rule a positive-weight simplifier may start
+// from, nor one that keeps a lumped mass positive.
 #include <Eigen/Core>
 #include <array>
 #include <vector>
@@ -30,7 +32,7 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
 /// strength; weights positive (they sum to the area).
 PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
 
-/// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid. Throws std::invalid_argument for a polyhedron without faces.
+/// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid (or the kernel point). Throws std::invalid_argument for a polyhedron without faces.
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
 
 }  // namespace altfem

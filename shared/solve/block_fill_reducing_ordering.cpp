@@ -1,40 +1,48 @@
 #include "shared/solve/block_fill_reducing_ordering.hpp"
 
-#include "shared/common/error.hpp"
-
 #include <cholmod.h>
 
-namespace altfem {
-namespace {
+#include <algorithm>
 
-// Whether every column's row indices come in runs of `block_size` aligned to
-// multiples of it, and the columns of each block share one pattern.
-bool has_block_structure(const Eigen::SparseMatrix<double>& matrix, int block_size) {
-  if (matrix.rows() % block_size != 0) return false;
+#include "shared/common/error.hpp"
+
+namespace altfem {
+
+std::vector<int> supervariable_starts(const Eigen::SparseMatrix<double>& matrix) {
   const int* starts = matrix.outerIndexPtr();
   const int* rows = matrix.innerIndexPtr();
-  for (int column = 0; column < matrix.cols(); ++column) {
-    const int first_column = column - column % block_size;
-    const int count = starts[column + 1] - starts[column];
-    if (count % block_size != 0 || count != starts[first_column + 1] - starts[first_column]) return false;
-    for (int k = 0; k < count; ++k) {
-      const int row = rows[starts[column] + k];
-      if (row != rows[starts[first_column] + k] || row % block_size != k % block_size) return false;
-    }
+  std::vector<int> runs{0};
+  for (int column = 1; column < matrix.cols(); ++column) {
+    const bool same = std::equal(rows + starts[column], rows + starts[column + 1], rows + starts[column - 1],
+                                 rows + starts[column]);
+    if (!same) runs.push_back(column);
   }
-  return true;
+  runs.push_back(static_cast<int>(matrix.cols()));
+  return runs;
 }
 
-}  // namespace
+std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>& matrix) {
+  const std::vector<int> runs = supervariable_starts(matrix);
+  const int group_count = static_cast<int>(runs.size()) - 1;
+  std::vector<int> group_of(matrix.rows());
+  for (int group = 0; group < group_count; ++group)
+    std::fill(group_of.begin() + runs[group], group_of.begin() + runs[group + 1], group);
 
-int sparsity_block_size(const Eigen::SparseMatrix<double>& matrix) {
-  for (int block_size : {3, 2})
-    if (has_block_structure(matrix, block_size)) return block_size;
-  return 1;
-}
+  // The group graph's upper triangle (stype 1), one column per group, built from the
+  // group's first column: its rows are sorted, so a group's rows are consecutive.
+  std::vector<int> column_starts(group_count + 1, 0);
+  std::vector<int> group_rows;
+  group_rows.reserve(static_cast<std::size_t>(group_count) * 8);
+  for (int group = 0; group < group_count; ++group) {
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, runs[group]); entry; ++entry) {
+      const int row_group = group_of[entry.row()];
+      if (row_group <= group && (group_rows.size() == static_cast<std::size_t>(column_starts[group]) ||
+                                 group_rows.back() != row_group))
+        group_rows.push_back(row_group);
+    }
+    column_starts[group + 1] = static_cast<int>(group_rows.size());
+  }
 
-std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>& matrix, int block_size) {
-  const int node_count = static_cast<int>(matrix.rows()) / block_size;
   cholmod_common common;
   cholmod_start(&common);
   common.print = 0;
@@ -42,24 +50,11 @@ std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>&
   common.nmethods = 2;
   common.method[0].ordering = CHOLMOD_AMD;
   common.method[1].ordering = CHOLMOD_METIS;
-
-  // The block graph's upper triangle (stype 1), one column per node, built from
-  // the first column of each block.
-  std::vector<int> column_starts(node_count + 1, 0);
-  std::vector<int> node_rows;
-  node_rows.reserve(static_cast<std::size_t>(matrix.nonZeros() / (block_size * block_size) + node_count));
-  for (int node = 0; node < node_count; ++node) {
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, node * block_size); entry; ++entry) {
-      const int row = static_cast<int>(entry.row());
-      if (row % block_size == 0 && row / block_size <= node) node_rows.push_back(row / block_size);
-    }
-    column_starts[node + 1] = static_cast<int>(node_rows.size());
-  }
   cholmod_sparse graph{};
-  graph.nrow = graph.ncol = static_cast<std::size_t>(node_count);
-  graph.nzmax = node_rows.size();
+  graph.nrow = graph.ncol = static_cast<std::size_t>(group_count);
+  graph.nzmax = group_rows.size();
   graph.p = column_starts.data();
-  graph.i = node_rows.data();
+  graph.i = group_rows.data();
   graph.stype = 1;
   graph.itype = CHOLMOD_INT;
   graph.xtype = CHOLMOD_PATTERN;
@@ -71,13 +66,14 @@ std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>&
   if (symbolic == nullptr) {
     const int status = common.status;
     cholmod_finish(&common);
-    throw NumericalError("CHOLMOD could not order the block graph (CHOLMOD status " + std::to_string(status) + ")");
+    throw NumericalError("CHOLMOD could not order the supervariable graph (CHOLMOD status " + std::to_string(status) +
+                         ")");
   }
-  const int* node_order = static_cast<const int*>(symbolic->Perm);
-  std::vector<int> order(matrix.rows());
-  for (int k = 0; k < node_count; ++k)
-    for (int component = 0; component < block_size; ++component)
-      order[k * block_size + component] = node_order[k] * block_size + component;
+  const int* group_order = static_cast<const int*>(symbolic->Perm);
+  std::vector<int> order;
+  order.reserve(matrix.rows());
+  for (int k = 0; k < group_count; ++k)
+    for (int unknown = runs[group_order[k]]; unknown < runs[group_order[k] + 1]; ++unknown) order.push_back(unknown);
   cholmod_free_factor(&symbolic, &common);
   cholmod_finish(&common);
   return order;

@@ -50,7 +50,7 @@ public:
     allocate_suitesparse_memory_with_huge_pages();
     cholmod_start(&common_);
     common_.print = 0;  // failures are reported as NumericalError, not printed
-    // The ordering is computed on the graph of 3 × 3 node blocks
+    // The ordering is computed on the graph of supervariables
     // (block_fill_reducing_ordering.hpp); CHOLMOD only postorders it and computes
     // the symbolic factor.
     common_.nmethods = 1;
@@ -91,7 +91,7 @@ protected:
   void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
     cholmod_free_factor(&factor_, &common_);
     cholmod_sparse view = lower_triangle_view(matrix);
-    std::vector<int> order = block_fill_reducing_ordering(matrix, sparsity_block_size(matrix));
+    std::vector<int> order = block_fill_reducing_ordering(matrix);
     factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
     if (factor_ == nullptr) throw NumericalError("CHOLMOD analysis failed (CHOLMOD status " + status() + ")");
     record_factor_size(common_.lnz, common_.fl);

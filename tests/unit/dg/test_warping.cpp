@@ -8,8 +8,6 @@
 
 #include <Eigen/Geometry>
 #include <cstdio>
-#include <filesystem>
-#include <fstream>
 
 #include "dg/dg_method.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
@@ -18,6 +16,7 @@
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
+#include "tests/unit/dg/scene_file.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem::dg {
@@ -186,15 +185,13 @@ TEST(DgWarping, AMovingConditionsDataIsRotatedWithTheBoundaryElement) {
 }
 
 TEST(DgWarping, NonlinearMaterialsAreRefused) {
-  const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
-  std::filesystem::create_directories(folder);
-  const auto file = folder / "warping_nonlinear.json";
-  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
+  const auto file = test::write_scene_file("warping_nonlinear", R"({
+    "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
     "material": { "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
     "boundary_conditions": [ { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } },
       "motion": { "kind": "fixed" } } ],
     "time": { "static": true },
-    "discretization": { "dg": { "warping": true, "flux": "babuska_zlamal", "resolution": [2, 1, 1] } } })";
+    "discretization": { "dg": { "warping": true, "flux": "babuska_zlamal", "resolution": [2, 1, 1] } } })");
   std::string message;
   try {
     const Scene scene = load_scene(file);

@@ -10,6 +10,7 @@
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/jump_penalty_kernel.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/common/error.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/solve/time_integrator.hpp"
 #include "tests/unit/assembly/face_fixture.hpp"
@@ -73,6 +74,31 @@ TEST(TabulatedDiscretization, LumpedExplicitBodyForceIsLumpedMassTimesAccelerati
   ASSERT_EQ(force.size(), lumped.size());
   for (Eigen::Index dof = 0; dof < force.size(); ++dof) EXPECT_EQ(force[dof], lumped[dof] * gravity[dof % 3]);
   EXPECT_NEAR(force.sum(), 1000 * gravity.sum(), 1e-9);  // the lumped mass keeps ρV
+}
+
+// A rule with a negative weight (a cone rule on a cell that is not star-shaped) can make
+// the HRZ-lumped mass of a basis function negative: a NumericalError (exit 3) naming the
+// basis function and its element, not an invalid_argument from the diagonal mass.
+TEST(TabulatedDiscretization, NonPositiveLumpedMassIsANumericalErrorNamingTheElement) {
+  const auto material = make_material(MaterialModel::linear, 1e5, 0.3, 1000);
+  DiscretizationParts parts;
+  // Two points, N_0 = 1 at the first and N_1 = 1 at the second of weight −0.6: the mass
+  // diagonal is (1, −0.6), the volume 0.4.
+  const std::vector<int> basis{0, 1};
+  const std::vector<double> weights{1.0, -0.6};
+  const Eigen::Matrix2d values = Eigen::Matrix2d::Identity();
+  Eigen::MatrixXd gradients(4, 3);
+  gradients << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0;
+  parts.elements.add(basis, weights, values, gradients);
+  parts.materials = {material.get()};
+  try {
+    TabulatedDiscretization discretization(std::move(parts));
+    FAIL() << "no error";
+  } catch (const NumericalError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("basis function 1"), std::string::npos) << message;
+    EXPECT_NE(message.find("0 (a negative weight)"), std::string::npos) << message;
+  }
 }
 
 TEST(TabulatedDiscretization, WeakClampHoldsTheCubesUnderGravity) {

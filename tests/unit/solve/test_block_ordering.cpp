@@ -23,34 +23,45 @@ Eigen::SparseMatrix<double> scalar_laplacian(int n) {
   return scalar;
 }
 
-TEST(BlockOrdering, DetectsTheBlockSizeOfThePattern) {
-  EXPECT_EQ(sparsity_block_size(testing::elasticity_like_laplacian(4)), 3);
-  EXPECT_EQ(sparsity_block_size(scalar_laplacian(4)), 1);
-  // Two coupled unknowns per node: 2 × 2 blocks.
-  const Eigen::SparseMatrix<double> scalar = scalar_laplacian(4);
-  Eigen::SparseMatrix<double> pairs(2 * scalar.rows(), 2 * scalar.cols());
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int column = 0; column < scalar.cols(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(scalar, column); entry; ++entry)
-      for (int a = 0; a < 2; ++a)
-        for (int b = 0; b < 2; ++b)
-          entries.emplace_back(2 * entry.row() + a, 2 * column + b, entry.value() * (a == b ? 2.0 : 1.0));
-  pairs.setFromTriplets(entries.begin(), entries.end());
-  EXPECT_EQ(sparsity_block_size(pairs), 2);
+// Runs of `size` consecutive unknowns: starts 0, size, 2 size, …, count.
+std::vector<int> runs_of(int size, int count) {
+  std::vector<int> starts;
+  for (int start = 0; start <= count; start += size) starts.push_back(start);
+  return starts;
 }
 
-TEST(BlockOrdering, AMissingEntryInsideABlockBreaksTheBlocks) {
+TEST(BlockOrdering, SupervariablesAreTheNodesOrElementsOfThePattern) {
+  const Eigen::SparseMatrix<double> elasticity = testing::elasticity_like_laplacian(4);
+  EXPECT_EQ(supervariable_starts(elasticity), runs_of(3, static_cast<int>(elasticity.cols())));
+  const Eigen::SparseMatrix<double> scalar = scalar_laplacian(4);
+  EXPECT_EQ(supervariable_starts(scalar), runs_of(1, static_cast<int>(scalar.cols())));
+  // A DG-like matrix: 12 coefficients per element, dense element blocks coupling each
+  // element of a chain of 5 with its neighbours.
+  const int elements = 5, size = 12;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int element = 0; element < elements; ++element)
+    for (int neighbour = std::max(element - 1, 0); neighbour <= std::min(element + 1, elements - 1); ++neighbour)
+      for (int i = 0; i < size; ++i)
+        for (int j = 0; j < size; ++j) entries.emplace_back(size * element + i, size * neighbour + j, 1.0);
+  Eigen::SparseMatrix<double> chain(size * elements, size * elements);
+  chain.setFromTriplets(entries.begin(), entries.end());
+  EXPECT_EQ(supervariable_starts(chain), runs_of(size, size * elements));
+}
+
+TEST(BlockOrdering, AMissingEntryInsideABlockSplitsItsSupervariable) {
   Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(3);
   // Drop the coupling between unknowns 0 and 1 of node 0 (both triangles).
   matrix.coeffRef(0, 1) = 0;
   matrix.coeffRef(1, 0) = 0;
   matrix.prune(0.0);
-  EXPECT_EQ(sparsity_block_size(matrix), 1);
+  const std::vector<int> starts = supervariable_starts(matrix);
+  ASSERT_GE(starts.size(), 4u);
+  EXPECT_EQ(std::vector<int>(starts.begin(), starts.begin() + 4), (std::vector<int>{0, 1, 2, 3}));
 }
 
 TEST(BlockOrdering, KeepsTheUnknownsOfANodeTogether) {
   const Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(6);
-  const std::vector<int> order = block_fill_reducing_ordering(matrix, 3);
+  const std::vector<int> order = block_fill_reducing_ordering(matrix);
   ASSERT_EQ(order.size(), static_cast<std::size_t>(matrix.rows()));
   std::vector<int> sorted = order;
   std::sort(sorted.begin(), sorted.end());
