@@ -170,16 +170,28 @@ TEST(DgMethod, VolumeOutputGivesEachElementItsOwnField) {
   }
 }
 
-TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInputNamingBoth) {
-  const auto file = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg" / "neo_hookean_roller_bar.json";
+// A static Neo-Hookean 2 × 1 × 1 bar held at x = 0, with `more_conditions` (JSON to append
+// to the conditions, from ",") and the dg block `dg`.
+std::filesystem::path write_static_neo_hookean_bar(const std::string& name, const std::string& more_conditions,
+                                                   const std::string& dg) {
+  const auto file = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg" / (name + ".json");
   std::filesystem::create_directories(file.parent_path());
   std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
     "material": { "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
     "boundary_conditions": [
-      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } },
-      { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"] } ],
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } })"
+                      << more_conditions << R"( ],
     "time": { "static": true },
-    "discretization": { "dg": { "flux": "interior_penalty", "resolution": [2, 1, 1] } } })";
+    "discretization": { "dg": )" << dg << R"( } })";
+  return file;
+}
+
+TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInputNamingBoth) {
+  const auto file = write_static_neo_hookean_bar(
+      "neo_hookean_roller_bar",
+      R"(,
+      { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"] })",
+      R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })");
   try {
     (void)build(file);
     FAIL() << "accepted interior_penalty with neo_hookean and a condition on one component";
@@ -206,14 +218,7 @@ TEST(DgMethod, ANonlinearMaterialWithAMovingConditionTakesEitherFlux) {
 // penalty of the lifted DG gradient (dg/lifted_gradients.hpp): each cell's element lists
 // its face neighbours' functions too, so its Hessian couples them.
 TEST(DgMethod, ANonlinearMaterialWithFixedConditionsDefaultsToTheLiftedInteriorPenalty) {
-  const auto file = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg" / "neo_hookean_hanging_bar.json";
-  std::filesystem::create_directories(file.parent_path());
-  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
-    "material": { "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
-    "boundary_conditions": [
-      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } } ],
-    "time": { "static": true },
-    "discretization": { "dg": { "degree": 1, "resolution": [2, 1, 1] } } })";
+  const auto file = write_static_neo_hookean_bar("neo_hookean_hanging_bar", "", R"({ "degree": 1, "resolution": [2, 1, 1] })");
   const Built built = build(file);
   EXPECT_EQ(built.method->facts()["flux"], "interior_penalty");
   const Discretization& discretization = built.method->discretization();
