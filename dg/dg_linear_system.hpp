@@ -76,6 +76,9 @@ struct DgCellMaterials {
 using VectorField = std::function<Eigen::Vector3d(const Eigen::Vector3d&)>;
 /// Dirichlet data g(condition, x): the displacement condition `condition` prescribes at x.
 using ConditionData = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&)>;
+/// Moving Dirichlet data g(condition, x, t): the displacement condition `condition` prescribes
+/// at x at time t.
+using ConditionTrajectory = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&, double time)>;
 
 class DgLinearSystem {
 public:
@@ -91,6 +94,7 @@ public:
   int cell_count() const { return static_cast<int>(cells_.size()); }
   const Polyhedron& cell(int index) const { return cells_[index]; }
   const std::vector<DgFace>& faces() const { return faces_; }
+  Flux flux() const { return settings_.flux; }
   /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary face).
   double face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }

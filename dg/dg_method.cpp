@@ -105,22 +105,21 @@ public:
     if (spec_.warping) {
       // The consistency part of moving data is rotated with the boundary element (§6): the
       // discretization adds it; the load keeps the penalty's part.
-      ConditionTrajectory trajectory;
-      if (moving())
-        trajectory = [this](int condition, const Eigen::Vector3d& x, double time) {
-          return motions_[condition].displacement(x, time);
-        };
       linear_ = std::make_unique<WarpedDgDiscretization>(
           *system_, settings_, density_integrals(), std::move(element_dofs),
-          [this](double time) { return weak_condition_load(time, true); }, std::move(trajectory));
+          [this](double time) { return weak_condition_load(time, true); }, moving_data());
       discretization_ = linear_.get();
     } else if (linear()) {
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
                                                          std::move(element_dofs), external_force);
       discretization_ = linear_.get();
     } else {
-      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(), external_force,
-                                     block_jacobi_factory(std::move(element_dofs)));
+      // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
+      const bool lifted = spec_.flux == Flux::interior_penalty;
+      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(),
+                                     [this, lifted](double time) { return weak_condition_load(time, lifted); },
+                                     block_jacobi_factory(std::move(element_dofs)),
+                                     lifted ? moving_data() : ConditionTrajectory{});
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -235,6 +234,14 @@ private:
       integrals.segment(system_->offset(cell), system_->offset(cell + 1) - system_->offset(cell)) *=
           system_->material(cell).density;
     return integrals;
+  }
+
+  // The conditions' data g(condition, x, t); empty while every motion is `fixed`.
+  ConditionTrajectory moving_data() const {
+    if (!moving()) return {};
+    return [this](int condition, const Eigen::Vector3d& x, double time) {
+      return motions_[condition].displacement(x, time);
+    };
   }
 
   bool moving() const {

@@ -58,22 +58,48 @@ void complete_dg_mesh(const Validator& validator, const json& scene, json& dg, c
     if (mesh.contains(key)) dg[std::string(key)] = mesh[std::string(key)];
 }
 
+// The first boundary condition the lifted gradient of a nonlinear material cannot carry
+// (dg/lifted_gradients.hpp: conditions on all components only), as "pointer: why"; empty if none.
+std::string condition_the_lifting_cannot_carry(const json& scene) {
+  if (!scene.contains("boundary_conditions")) return {};
+  const json& conditions = scene["boundary_conditions"];
+  for (size_t c = 0; c < conditions.size(); ++c)
+    if (conditions[c].contains("components") && conditions[c]["components"].size() < 3)
+      return "/boundary_conditions/" + std::to_string(c) + "/components prescribes " +
+             std::to_string(conditions[c]["components"].size()) + " of 3";
+  return {};
+}
+
+// Whether a condition moves (its data shift F at every time step with the lifted gradient).
+bool has_moving_condition(const json& scene) {
+  if (!scene.contains("boundary_conditions")) return false;
+  for (const json& condition : scene["boundary_conditions"])
+    if (condition.contains("motion") && condition["motion"].value("kind", "fixed") != "fixed") return true;
+  return false;
+}
+
 // The defaults that depend on the geometry and on the penalty convention.
 void complete_dg(const Validator& validator, const json& scene, json& dg, const std::string& pointer) {
   complete_dg_mesh(validator, scene, dg, pointer);
 
-  // Interior penalty's consistency terms are linear-elastic in this build
-  // (dg/tabulated_dg.hpp): other materials default to, and need, Babuška–Zlámal.
+  // Other materials than the linear one take interior penalty through the lifted DG
+  // gradient (dg/lifted_gradients.hpp), which lifts conditions on all components only.
+  // They default to it when every condition is also `fixed`, else to Babuška–Zlámal as
+  // before: a moving scene keeps its cheaper default (the lifted cells couple their
+  // neighbours, a denser Hessian) and takes interior penalty on request.
   // With `materials`, every one of them must be linear (an absent model is the default, not linear).
   std::string nonlinear_model;
   for (const json& material : scene.contains("materials") ? scene["materials"] : json::array({scene["material"]}))
     if (nonlinear_model.empty() && !(material.contains("model") && material["model"] == "linear"))
       nonlinear_model = material.contains("model") ? material["model"].get<std::string>() : "the default model";
   const bool linear = nonlinear_model.empty();
-  if (!dg.contains("flux")) dg["flux"] = linear ? "interior_penalty" : "babuska_zlamal";
-  if (!linear && dg["flux"] == "interior_penalty")
-    validator.fail(pointer + "/flux", "'interior_penalty' needs material model 'linear' in this build, got '" +
-                                          nonlinear_model + "' (use 'babuska_zlamal')");
+  const std::string unliftable = linear ? std::string() : condition_the_lifting_cannot_carry(scene);
+  if (!dg.contains("flux"))
+    dg["flux"] = linear || (unliftable.empty() && !has_moving_condition(scene)) ? "interior_penalty" : "babuska_zlamal";
+  if (!unliftable.empty() && dg["flux"] == "interior_penalty")
+    validator.fail(pointer + "/flux", "'interior_penalty' with material model '" + nonlinear_model +
+                                          "' needs conditions on all components in this build, but " + unliftable +
+                                          " (use 'babuska_zlamal')");
 
   json& penalty = dg["penalty"];
   if (!penalty.contains("convention")) penalty["convention"] = "mfem";

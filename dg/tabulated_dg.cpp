@@ -2,6 +2,7 @@
 
 #include <numeric>
 
+#include "dg/lifted_gradients.hpp"
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/jump_penalty_kernel.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
@@ -85,18 +86,37 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner) {
+                              PreconditionerFactory preconditioner, ConditionTrajectory data) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
-  parts.elements = tabulate_dg_cells(system, strength);
-  parts.materials = std::move(materials);
   TabulatedDg result;
+  const bool interior_penalty = system.flux() == Flux::interior_penalty;
+  if (interior_penalty) {
+    LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength);
+    parts.elements = std::move(lifted.elements);
+    if (data && !lifted.dirichlet.empty()) {
+      result.lifted_data = std::make_unique<LiftedDirichletData>(std::move(lifted.dirichlet));
+      parts.deformation_shifts = [lifted_data = result.lifted_data.get(), data = std::move(data)](
+                                     double time, std::span<double> shifts) {
+        lifted_data->shifts([&](int condition, const Eigen::Vector3d& x) { return data(condition, x, time); }, shifts);
+      };
+    }
+  } else {
+    parts.elements = tabulate_dg_cells(system, strength);
+  }
+  parts.materials = std::move(materials);
   FaceTerms terms = tabulate_faces(system, strength);
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
   parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
       *result.faces, JumpPenaltyKernel(std::move(terms.penalties), std::move(terms.masks))));
   parts.conditions_weakly = true;
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
+  // A lifted cell lists its neighbours' functions too (with zero values): the blocks are the cells'.
+  if (interior_penalty)
+    for (int cell = 0; cell < system.cell_count(); ++cell) {
+      parts.mass_blocks.emplace_back();
+      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof) parts.mass_blocks.back().push_back(dof);
+    }
   parts.external_force = std::move(external_force);
   parts.preconditioner = std::move(preconditioner);
   result.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));

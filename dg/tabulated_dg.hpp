@@ -2,14 +2,17 @@
 // DG for every material model (beyond Kaufmann et al. 2009, whose §4 is linear): the
 // monomials of a DgLinearSystem tabulated at points of a rule on each polyhedron
 // (polyhedron_rule: exact for polynomials up to its strength) for the shared assembly,
-// which evaluates any hyperelastic ψ(F); the faces carry the Babuška–Zlámal jump penalty
-// η_f/2 ∫ |[[u]]|² (eq. (19), shared JumpPenaltyKernel), interior and Dirichlet faces
-// alike. The interior-penalty consistency terms of a nonlinear material (the average
-// first Piola–Kirchhoff stress of Ten Eyck & Lew 2006 and its symmetric partner) need
-// the third derivative of ψ for an exact Hessian and are not in this build.
+// which evaluates any hyperelastic ψ(F). The faces carry the jump penalty
+// η_f/2 ∫ |[[u]]|² (eq. (19), shared JumpPenaltyKernel), interior and Dirichlet faces alike.
+// With the Babuška–Zlámal flux that is all (eq. (19): inconsistent, its error does not
+// vanish with h at a fixed η). With the interior-penalty flux, each cell's volume points
+// see the lifted DG gradient of Ten Eyck & Lew 2006 (dg/lifted_gradients.hpp), whose
+// Euler–Lagrange equation holds the average first Piola–Kirchhoff stress on every face:
+// the consistent interior-penalty method of any material, with an exact symmetric Hessian.
 #include <memory>
 
 #include "dg/dg_linear_system.hpp"
+#include "dg/lifted_gradients.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/tabulated_faces.hpp"
 
@@ -17,6 +20,8 @@ namespace altfem::dg {
 
 struct TabulatedDg {
   std::unique_ptr<TabulatedFaces> faces;  ///< the face assembler keeps a reference: declared first, freed last
+  /// The interior-penalty flux's lifted Dirichlet data (read at every set_time): before the discretization.
+  std::unique_ptr<LiftedDirichletData> lifted_data;
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 
@@ -25,12 +30,15 @@ struct TabulatedDg {
 /// `points` when it is given.
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points = nullptr);
 
-/// The discretization of `system`'s cells and faces (its bases, penalties and Dirichlet
-/// faces) with `materials` (not owned; cell c takes materials[system.material_id(c)]); the
-/// rule strength is 2k (mass and body-force loads exact). external_force: the weak
-/// conditions' data load at a time; preconditioner: block Jacobi.
+/// The discretization of `system`'s cells and faces (its bases, flux, penalties and
+/// Dirichlet faces) with `materials` (not owned; cell c takes materials[system.material_id(c)]);
+/// the rule strength is 2k (mass and body-force loads exact). external_force: the weak
+/// conditions' data load at a time (with the interior-penalty flux: the penalty's part
+/// alone, DgLinearSystem::dirichlet_load with penalty_only); data: with the
+/// interior-penalty flux, the Dirichlet data the lifting shifts F by at each set_time
+/// (empty: g = 0); preconditioner: block Jacobi.
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner);
+                              PreconditionerFactory preconditioner, ConditionTrajectory data = {});
 
 }  // namespace altfem::dg

@@ -39,8 +39,6 @@
 
 namespace altfem::dg {
 
-/// The displacement g(x, t) a Dirichlet condition prescribes: (condition, x, time).
-using ConditionTrajectory = std::function<Eigen::Vector3d(int condition, const Eigen::Vector3d&, double time)>;
 
 class WarpedDgDiscretization final : public LinearDgDiscretization {
 public:

@@ -68,6 +68,9 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
       element_energies_(static_cast<std::size_t>(elements.size())) {
   check_materials();
+  point_offsets_.reserve(static_cast<size_t>(elements.size()) + 1);
+  point_offsets_.push_back(0);
+  for (int e = 0; e < elements.size(); ++e) point_offsets_.push_back(point_offsets_.back() + elements[e].point_count());
   threads_ = omp_get_max_threads();
   scratch_ = std::make_unique<Scratch[]>(threads_);
   const int n = elements.max_element_basis();
@@ -98,6 +101,16 @@ void ElasticAssembler::for_each_colored_element(Body&& body) const {
   parallel::for_each_colored(colors_, static_cast<size_t>(elements_.size()), active_threads(), body);
 }
 
+void ElasticAssembler::set_deformation_shifts(std::span<const double> shifts) {
+  if (!shifts.empty() && static_cast<long long>(shifts.size()) != 9 * elements_.point_count())
+    throw std::invalid_argument("ElasticAssembler: deformation shifts must hold 9 values per quadrature point");
+  shifts_ = shifts.empty() ? nullptr : shifts.data();
+}
+
+const double* ElasticAssembler::element_shifts(int element) const {
+  return shifts_ ? shifts_ + 9 * point_offsets_[element] : nullptr;
+}
+
 bool ElasticAssembler::is_linear() const {
   for (const Material* material : materials_)
     if (!material->is_linear()) return false;
@@ -116,11 +129,11 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
       if constexpr (N == Eigen::Dynamic) {
         scratch.u.conservativeResize(element.basis_count(), 3);
         kernel::gather<N>(element, displacement, scratch.u);
-        per_element[e] = kernel::energy<N>(element, *materials_[element.material], scratch.u);
+        per_element[e] = kernel::energy<N>(element, *materials_[element.material], scratch.u, element_shifts(e));
       } else {
         kernel::NodeMatrix<N> u;
         kernel::gather<N>(element, displacement, u);
-        per_element[e] = kernel::energy<N>(element, *materials_[element.material], u);
+        per_element[e] = kernel::energy<N>(element, *materials_[element.material], u, element_shifts(e));
       }
     });
   });
@@ -151,7 +164,7 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
       const int n = element.basis_count();
       auto run = [&](kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) {
         kernel::gather<N>(element, displacement, u);
-        kernel::forces<N>(element, *materials_[element.material], u, forces);
+        kernel::forces<N>(element, *materials_[element.material], u, forces, element_shifts(e));
         if (!forces.allFinite()) failure.record(e);
         Eigen::Map<Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(slots, n, 3) = forces;
       };
@@ -192,7 +205,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
         const int n = element.basis_count();
         auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
           kernel::gather<N>(element, displacement, u);
-          kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows);
+          kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows, element_shifts(e));
           if (!stiffness.allFinite()) {
             failure.record(e);
             return;
@@ -291,8 +304,10 @@ Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& disp
     for (int a = 0; a < element.basis_count(); ++a) u.row(a) = displacement.segment<3>(3 * element.basis[a]).transpose();
     Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
     double volume = 0;
+    const double* shifts = element_shifts(e);
     for (int q = 0; q < element.point_count(); ++q) {
-      const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + u.transpose() * element.gradients_at(q);
+      Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + u.transpose() * element.gradients_at(q);
+      if (shifts) F += Eigen::Map<const Eigen::Matrix3d>(shifts + 9 * q);
       sum += element.weights[q] * material.pk1(F) * F.transpose() / F.determinant();
       volume += element.weights[q];
     }

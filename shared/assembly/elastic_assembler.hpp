@@ -8,6 +8,7 @@
 //   ∂²Ψ/∂u_ai∂u_bk = Σ_q w_q Σ_jl (∂P_ij/∂F_kl) ∂_j N_a ∂_l N_b.
 #include <Eigen/Core>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "shared/assembly/basis_incidence.hpp"
@@ -63,9 +64,15 @@ public:
   /// Whether every material's tangent is independent of F (linear elasticity): then
   /// the Hessian needs assembling and factorising only once.
   bool is_linear() const;
+  /// A constant shift of F at every quadrature point (9 values per point, column-major,
+  /// in the elements' point order; not owned, read at every assembly), or an empty span for
+  /// none: F = I + Σ_a u_a ⊗ ∇N_a + shift. DG's lifted Dirichlet data (dg/lifted_gradients.hpp).
+  void set_deformation_shifts(std::span<const double> shifts);
 
 private:
   struct Scratch;
+  /// Element e's first point's deformation shift, or nullptr when there are none.
+  const double* element_shifts(int element) const;
   void check_materials() const;
   void check_masses(const ElementMasses& masses) const;
   /// OpenMP's current thread count, at most the number of scratch blocks.
@@ -79,6 +86,8 @@ private:
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
   BasisIncidence incidence_;
+  std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start
+  const double* shifts_ = nullptr;        // set_deformation_shifts', or null
   // Per-element results kept between calls, so that assembly does not allocate: the
   // gradient's forces (3 per incidence slot) and the energy's element energies.
   // Like the scratch, they make concurrent calls on one assembler unsafe.

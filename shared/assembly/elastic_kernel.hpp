@@ -32,29 +32,33 @@ auto gradients_at(const ElementView& element, int q) {
     return Eigen::Map<const Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(element.gradients + q * N * 3);
 }
 
+/// F_ij = δ_ij + Σ_a u_ai ∂_j N_a, plus shifts[q] (9 values, column-major) when the
+/// element's points carry a constant shift (`shifts` non-null: DG's lifted Dirichlet data).
 template <int N, typename Gradients>
-Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u, const Gradients& g) {
-  // F_ij = δ_ij + Σ_a u_ai ∂_j N_a
+Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u, const Gradients& g, const double* shifts, int q) {
   Eigen::Matrix3d F = u.transpose() * g;
   F.diagonal().array() += 1.0;
+  if (shifts) F += Eigen::Map<const Eigen::Matrix3d>(shifts + 9 * q);
   return F;
 }
 
+/// `shifts`: the element's first point's shift of F (9 per point) or nullptr for none.
 template <int N>
-double energy(const ElementView& element, const Material& material, const NodeMatrix<N>& u) {
+double energy(const ElementView& element, const Material& material, const NodeMatrix<N>& u, const double* shifts) {
   double total = 0;
   for (int q = 0; q < element.point_count(); ++q)
-    total += element.weights[q] * material.energy(deformation_gradient<N>(u, gradients_at<N>(element, q)));
+    total += element.weights[q] * material.energy(deformation_gradient<N>(u, gradients_at<N>(element, q), shifts, q));
   return total;
 }
 
 /// Element forces f_ai = Σ_q w_q Σ_j P_ij ∂_j N_a into `forces` (#basis × 3).
 template <int N>
-void forces(const ElementView& element, const Material& material, const NodeMatrix<N>& u, NodeMatrix<N>& forces) {
+void forces(const ElementView& element, const Material& material, const NodeMatrix<N>& u, NodeMatrix<N>& forces,
+            const double* shifts) {
   forces.setZero();
   for (int q = 0; q < element.point_count(); ++q) {
     const auto g = gradients_at<N>(element, q);
-    const Eigen::Matrix3d P = material.pk1(deformation_gradient<N>(u, g));
+    const Eigen::Matrix3d P = material.pk1(deformation_gradient<N>(u, g, shifts, q));
     forces.noalias() += element.weights[q] * g * P.transpose();
   }
 }
@@ -66,14 +70,14 @@ void forces(const ElementView& element, const Material& material, const NodeMatr
 /// ∂F/∂u is used instead of a dense Bᵀ C B (which costs three times more).
 template <int N>
 void stiffness(const ElementView& element, const Material& material, const NodeMatrix<N>& u,
-               LocalMatrix<N>& stiffness, TangentRows<N>& t) {
+               LocalMatrix<N>& stiffness, TangentRows<N>& t, const double* shifts = nullptr) {
   const int n = element.basis_count();
   stiffness.setZero();
   Eigen::Matrix3d P;
   Matrix9d C;
   for (int q = 0; q < element.point_count(); ++q) {
     const auto g = gradients_at<N>(element, q);
-    material.pk1_and_tangent(deformation_gradient<N>(u, g), P, C);
+    material.pk1_and_tangent(deformation_gradient<N>(u, g, shifts, q), P, C);
     C *= element.weights[q];
     for (int b = 0; b < n; ++b)
       for (int k = 0; k < 3; ++k)

@@ -66,9 +66,19 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
   }
   else
-    explicit_mass_ = std::make_unique<BlockDiagonalMass>(mass_, element_dof_groups(parts_.elements));
+    explicit_mass_ = std::make_unique<BlockDiagonalMass>(
+        mass_, parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);
   constant_hessian_ = assembler_->is_linear();
   for (const auto& term : parts_.terms) constant_hessian_ = constant_hessian_ && term->is_quadratic();
+  if (parts_.deformation_shifts) {
+    shifts_.assign(static_cast<size_t>(9 * parts_.elements.point_count()), 0.0);
+    assembler_->set_deformation_shifts(shifts_);
+    set_time(0);
+  }
+}
+
+void TabulatedDiscretization::set_time(double time) const {
+  if (parts_.deformation_shifts) parts_.deformation_shifts(time, shifts_);
 }
 
 TabulatedDiscretization::~TabulatedDiscretization() = default;

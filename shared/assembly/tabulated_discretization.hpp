@@ -8,6 +8,7 @@
 // tabulated elements, so any basis gets the right ones.
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "shared/assembly/elastic_assembler.hpp"
@@ -40,8 +41,17 @@ struct DiscretizationParts {
   DirichletDofs dirichlet;  ///< empty for none
   bool conditions_weakly = false;  ///< the terms impose the Dirichlet conditions
   ExplicitMassKind explicit_mass = ExplicitMassKind::lumped;
+  /// The DOF blocks of a block_per_element mass (disjoint, covering every DOF) when the
+  /// elements' function lists overlap although their masses do not (DG with lifted
+  /// gradients: a cell's element lists its neighbours' functions too). Empty: each
+  /// element's DOFs.
+  std::vector<std::vector<int>> mass_blocks;
   /// Tractions and weak boundary data at a time (#dofs); none if empty.
   std::function<Eigen::VectorXd(double time)> external_force;
+  /// A constant shift of F at every quadrature point at a time (writes 9 values per
+  /// point, column-major, into its span; ElasticAssembler::set_deformation_shifts): boundary
+  /// data inside the energy (DG's lifted Dirichlet data). Read at set_time; none if empty.
+  std::function<void(double time, std::span<double> shifts)> deformation_shifts;
   PreconditionerFactory preconditioner;
 };
 
@@ -63,6 +73,8 @@ public:
   }
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override;
+  /// Evaluates parts.deformation_shifts at `time` (from time 0 at construction).
+  void set_time(double time) const override;
   const std::vector<int>& constrained_dofs() const override { return parts_.dirichlet.dofs; }
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
@@ -82,6 +94,7 @@ private:
   Eigen::VectorXd lumped_mass_;
   std::unique_ptr<ExplicitMass> explicit_mass_;
   bool constant_hessian_ = false;
+  mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)
 };
 
 }  // namespace altfem

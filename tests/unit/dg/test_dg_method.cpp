@@ -1,9 +1,10 @@
 // The dg method through the MethodInstance / Discretization interfaces: weakly imposed
 // moving conditions (Kaufmann et al. 2009 §4.2) reproduce an exact affine solution,
 // the automatic penalty doubling (§8) ends at the first definite K, the block-Jacobi
-// preconditioner solves the system with PCG, the volume output is per element, and a
-// nonlinear material runs through the shared assembly with the Babuška–Zlámal flux, and
-// material regions give each cell its own material.
+// preconditioner solves the system with PCG, the volume output is per element, a
+// nonlinear material runs through the shared assembly (by default with the lifted interior
+// penalty when its conditions are `fixed`, else Babuška–Zlámal), and material regions give
+// each cell its own material.
 #include <gtest/gtest.h>
 
 #include <Eigen/SparseCholesky>
@@ -169,19 +170,61 @@ TEST(DgMethod, VolumeOutputGivesEachElementItsOwnField) {
   }
 }
 
-TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialIsBadInputNamingTheFlux) {
-  const std::string neo_hookean = R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
-  const auto file = write_bar_scene("neo_hookean_ip_bar", neo_hookean, R"({ "flux": "interior_penalty" })");
+// A static Neo-Hookean 2 × 1 × 1 bar held at x = 0, with `more_conditions` (JSON to append
+// to the conditions, from ",") and the dg block `dg`.
+std::filesystem::path write_static_neo_hookean_bar(const std::string& name, const std::string& more_conditions,
+                                                   const std::string& dg) {
+  const auto file = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg" / (name + ".json");
+  std::filesystem::create_directories(file.parent_path());
+  std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
+    "material": { "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
+    "boundary_conditions": [
+      { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } })"
+                      << more_conditions << R"( ],
+    "time": { "static": true },
+    "discretization": { "dg": )" << dg << R"( } })";
+  return file;
+}
+
+TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInputNamingBoth) {
+  const auto file = write_static_neo_hookean_bar(
+      "neo_hookean_roller_bar",
+      R"(,
+      { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"] })",
+      R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })");
   try {
     (void)build(file);
-    FAIL() << "accepted interior_penalty with neo_hookean";
+    FAIL() << "accepted interior_penalty with neo_hookean and a condition on one component";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("/discretization/dg/flux"), std::string::npos) << error.what();
+    const std::string message = error.what();
+    EXPECT_NE(message.find("/discretization/dg/flux"), std::string::npos) << message;
+    EXPECT_NE(message.find("/boundary_conditions/1/components"), std::string::npos) << message;
   }
-  // The default flux of a nonlinear material is Babuška–Zlámal, through the shared assembly.
-  const Built built = build(write_bar_scene("neo_hookean_bar", neo_hookean, R"({ "resolution": [2, 1, 1] })"));
-  EXPECT_EQ(built.method->facts()["flux"], "babuska_zlamal");
-  EXPECT_GT(built.method->quadrature_points(), 0);
+}
+
+// A moving condition: Babuška–Zlámal by default, interior penalty (its data lifted into F
+// at every set_time) on request.
+TEST(DgMethod, ANonlinearMaterialWithAMovingConditionTakesEitherFlux) {
+  const std::string neo_hookean = R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
+  const Built by_default = build(write_bar_scene("neo_hookean_bar", neo_hookean, R"({ "resolution": [2, 1, 1] })"));
+  EXPECT_EQ(by_default.method->facts()["flux"], "babuska_zlamal");
+  EXPECT_GT(by_default.method->quadrature_points(), 0);
+  const Built lifted = build(
+      write_bar_scene("neo_hookean_ip_bar", neo_hookean, R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })"));
+  EXPECT_EQ(lifted.method->facts()["flux"], "interior_penalty");
+}
+
+// With `fixed` conditions only, a nonlinear material defaults to the consistent interior
+// penalty of the lifted DG gradient (dg/lifted_gradients.hpp): each cell's element lists
+// its face neighbours' functions too, so its Hessian couples them.
+TEST(DgMethod, ANonlinearMaterialWithFixedConditionsDefaultsToTheLiftedInteriorPenalty) {
+  const auto file = write_static_neo_hookean_bar("neo_hookean_hanging_bar", "", R"({ "degree": 1, "resolution": [2, 1, 1] })");
+  const Built built = build(file);
+  EXPECT_EQ(built.method->facts()["flux"], "interior_penalty");
+  const Discretization& discretization = built.method->discretization();
+  // The two cells' 4 + 4 functions couple through the lifting: a dense 24 × 24 pattern.
+  EXPECT_EQ(discretization.hessian_pattern().nonZeros(), 24 * 24);
+  EXPECT_TRUE(discretization.forces_have_potential());
 }
 
 // `materials` with regions: the pulled bar of E = 1e6 for x < 1 and 3e6 for x > 1 (ν = 0)
