@@ -64,10 +64,10 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   if (parts_.explicit_mass == ExplicitMassKind::lumped) {
     check_lumped_mass_positive(lumped_mass_, parts_.elements);
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
-  }
-  else
+  } else {
     explicit_mass_ = std::make_unique<BlockDiagonalMass>(
         mass_, parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);
+  }
   constant_hessian_ = assembler_->is_linear();
   for (const auto& term : parts_.terms) constant_hessian_ = constant_hessian_ && term->is_quadratic();
   if (parts_.deformation_shifts) {
