@@ -1,10 +1,13 @@
 #include "dg/dg_linear_system.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
 
+#include "dg/cell_block_pattern.hpp"
+#include "dg/cell_similarity.hpp"
 #include "dg/exact_element_matrices.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
@@ -37,13 +40,41 @@ double surface_area(const Polyhedron& cell) {
   return area;
 }
 
-// Zeros kept: K stores whole element and face blocks, so an element's 3n coefficients
-// share one pattern and the direct solver orders elements, not coefficients
-// (block_fill_reducing_ordering.hpp).
-void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
-               const std::vector<int>& dofs) {
-  for (Eigen::Index i = 0; i < block.rows(); ++i)
-    for (Eigen::Index j = 0; j < block.cols(); ++j) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+// Cells and faces whose translation-invariant geometry agrees to this fraction of the
+// cell's diameter share their matrices (dg/cell_similarity.hpp).
+constexpr double similarity_relative_tolerance = 1e-12;
+// Items whose classes' matrices are computed in parallel before they are added into K:
+// bounds the matrices held at once (a cut cell's faces are mostly classes of one).
+constexpr int batch_size = 256;
+
+// use(item, matrix) for every item in order whose class (classes[item]) is not -1, the
+// matrix of a class computed once by compute(representative item) — in parallel for the
+// classes first met in a batch of items — and freed after the class's last item.
+template <typename Compute, typename Use>
+void for_each_item_by_class(const std::vector<int>& classes, int class_count, Compute&& compute, Use&& use) {
+  const int items = static_cast<int>(classes.size());
+  std::vector<int> representative(class_count, -1), last(class_count, -1);
+  for (int item = 0; item < items; ++item) {
+    if (classes[item] < 0) continue;
+    if (representative[classes[item]] < 0) representative[classes[item]] = item;
+    last[classes[item]] = item;
+  }
+  std::vector<Eigen::MatrixXd> matrices(class_count);
+  std::vector<int> first_met;
+  for (int start = 0; start < items; start += batch_size) {
+    const int end = std::min(items, start + batch_size);
+    first_met.clear();
+    for (int item = start; item < end; ++item)
+      if (classes[item] >= 0 && representative[classes[item]] == item) first_met.push_back(item);
+#pragma omp parallel for schedule(dynamic, 4) if (first_met.size() > 8)
+    for (size_t k = 0; k < first_met.size(); ++k) matrices[classes[first_met[k]]] = compute(first_met[k]);
+    for (int item = start; item < end; ++item) {
+      if (classes[item] < 0) continue;
+      Eigen::MatrixXd& matrix = matrices[classes[item]];
+      use(item, matrix);
+      if (last[classes[item]] == item) matrix = Eigen::MatrixXd();
+    }
+  }
 }
 
 }  // namespace
@@ -59,41 +90,87 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
                                   std::to_string(cell_materials_.materials.size()) + " materials");
+  const int cell_count = static_cast<int>(cells_.size());
+  for (const Polyhedron& cell : cells_) bases_.push_back(cell_basis(cell, settings.degree));
+
+  // Classes of translates of the same material (deal.II's CellSimilarity::translation).
+  SimilarityClasses cell_similarity(settings.reuse_similar_cells);
+  for (int c = 0; c < cell_count; ++c)
+    cell_classes_.push_back(cell_similarity
+                                .classify(cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(),
+                                                              {material_id(c)}, similarity_relative_tolerance))
+                                .index);
+  const int class_count = cell_similarity.class_count();
+  masses_.resize(class_count);
+  std::vector<Eigen::VectorXd> class_integrals(class_count);
+  std::vector<double> class_inverse_lengths(class_count);
+  // Stiffness, mass and ∫ φ_a once per class; the offsets need only the basis sizes.
   offsets_.push_back(0);
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    const Polyhedron& cell = cells_[c];
-    const DgMaterial cell_material = material(static_cast<int>(c));
-    bases_.push_back(cell_basis(cell, settings.degree));
-    ElementMatrices matrices =
-        exact_element_matrices(cell, bases_.back(), cell_material.lambda, cell_material.mu, cell_material.density);
-    volumes_.push_back(matrices.integrals[0]);
-    inverse_lengths_.push_back(surface_area(cell) / (6 * volumes_.back()));
-    masses_.push_back(std::move(matrices.mass));
-    integrals_.conservativeResize(offsets_.back() + bases_.back().size());
-    integrals_.tail(bases_.back().size()) = matrices.integrals;
-    std::vector<int> dofs;
-    for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
-    add_block(triplets, matrices.stiffness, dofs);
-    offsets_.push_back(offsets_.back() + bases_.back().size());
-  }
-  for (const DgFace& face : faces_) {
+  for (int c = 0; c < cell_count; ++c) offsets_.push_back(offsets_.back() + bases_[c].size());
+  std::vector<std::array<int, 2>> couplings;
+  for (const DgFace& face : faces_)
+    if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
+  const CellBlockPattern pattern(offsets_, couplings);
+  pattern.make_zero_matrix(stiffness_);
+  integrals_.resize(offsets_.back());
+  for_each_item_by_class(
+      cell_classes_, class_count,
+      [&](int c) {
+        const DgMaterial cell_material = material(c);
+        ElementMatrices matrices =
+            exact_element_matrices(cells_[c], bases_[c], cell_material.lambda, cell_material.mu, cell_material.density);
+        const int k = cell_classes_[c];
+        class_inverse_lengths[k] = surface_area(cells_[c]) / (6 * matrices.integrals[0]);
+        class_integrals[k] = std::move(matrices.integrals);
+        masses_[k] = std::move(matrices.mass);
+        return std::move(matrices.stiffness);
+      },
+      [&](int c, const Eigen::MatrixXd& stiffness) {
+        const int k = cell_classes_[c];
+        volumes_.push_back(class_integrals[k][0]);
+        inverse_lengths_.push_back(class_inverse_lengths[k]);
+        integrals_.segment(offsets_[c], bases_[c].size()) = class_integrals[k];
+        pattern.add_block(stiffness_, c, c, stiffness);
+      });
+
+  // Face matrices once per class of faces between the same classes of cells at the same
+  // relative position (their penalty η_f follows from the cells' classes and the face).
+  SimilarityClasses face_similarity(settings.reuse_similar_cells);
+  std::vector<int> face_classes(faces_.size(), -1);
+  for (size_t f = 0; f < faces_.size(); ++f) {
+    const DgFace& face = faces_[f];
     if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
-    const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
-    const DgMaterial minus_material = material(face.minus);
-    const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
-    const Eigen::MatrixXd matrix = exact_face_matrix(
-        face.polygon, face.normal, bases_[face.minus], plus, {minus_material.lambda, minus_material.mu},
-        {plus_material.lambda, plus_material.mu}, face_penalty(face), settings.flux, face.components);
-    std::vector<int> dofs;
-    for (int side : {face.minus, face.plus}) {
-      if (side < 0) continue;
-      for (int k = 0; k < 3 * bases_[side].size(); ++k) dofs.push_back(3 * offsets_[side] + k);
-    }
-    add_block(triplets, matrix, dofs);
+    const MonomialBasis& minus = bases_[face.minus];
+    std::vector<int> structure{cell_classes_[face.minus], face.plus >= 0 ? cell_classes_[face.plus] : -1};
+    structure.insert(structure.end(), face.components.begin(), face.components.end());
+    face_classes[f] = face_similarity
+                          .classify(face_similarity_key(face.polygon, face.normal, minus.centre(), minus.scale(),
+                                                        face.plus >= 0 ? &bases_[face.plus].centre() : nullptr,
+                                                        std::move(structure), similarity_relative_tolerance))
+                          .index;
   }
-  stiffness_.resize(dof_count(), dof_count());
-  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+  for_each_item_by_class(
+      face_classes, face_similarity.class_count(),
+      [&](int f) {
+        const DgFace& face = faces_[f];
+        const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
+        const DgMaterial minus_material = material(face.minus);
+        const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
+        return exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
+                                 {minus_material.lambda, minus_material.mu}, {plus_material.lambda, plus_material.mu},
+                                 face_penalty(face), settings.flux, face.components);
+      },
+      [&](int f, const Eigen::MatrixXd& matrix) {
+        const DgFace& face = faces_[f];
+        const Eigen::Index minus_size = 3 * bases_[face.minus].size();
+        pattern.add_block(stiffness_, face.minus, face.minus, matrix.topLeftCorner(minus_size, minus_size));
+        if (face.plus < 0) return;
+        const Eigen::Index plus_size = matrix.rows() - minus_size;
+        pattern.add_block(stiffness_, face.plus, face.minus, matrix.bottomLeftCorner(plus_size, minus_size));
+        pattern.add_block(stiffness_, face.minus, face.plus, matrix.topRightCorner(minus_size, plus_size));
+        pattern.add_block(stiffness_, face.plus, face.plus, matrix.bottomRightCorner(plus_size, plus_size));
+      });
+  similarity_ = {cell_count, class_count, face_similarity.key_count(), face_similarity.class_count()};
 }
 
 double DgLinearSystem::face_penalty(const DgFace& face) const {
@@ -116,10 +193,10 @@ Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
   std::vector<Eigen::Triplet<double>> triplets;
   for (size_t c = 0; c < cells_.size(); ++c) {
     const int first = offsets_[c];
-    for (Eigen::Index a = 0; a < masses_[c].rows(); ++a)
-      for (Eigen::Index b = 0; b < masses_[c].cols(); ++b)
-        for (int i = 0; i < 3; ++i)
-          triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, masses_[c](a, b));
+    const Eigen::MatrixXd& cell_mass = masses_[cell_classes_[c]];
+    for (Eigen::Index a = 0; a < cell_mass.rows(); ++a)
+      for (Eigen::Index b = 0; b < cell_mass.cols(); ++b)
+        for (int i = 0; i < 3; ++i) triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, cell_mass(a, b));
   }
   Eigen::SparseMatrix<double> matrix(dof_count(), dof_count());
   matrix.setFromTriplets(triplets.begin(), triplets.end());

@@ -61,6 +61,18 @@ struct DgSettings {
   /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
   double boundary_penalty_factor = 1;
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
+  /// Compute the element matrices once per class of cells that are translates of each
+  /// other (same material), the face matrices once per class of faces between such cells
+  /// (dg/cell_similarity.hpp). The matrices equal the recomputed ones up to round-off
+  /// (≤ 1e-12 relative); false recomputes every cell and face, for comparison.
+  bool reuse_similar_cells = true;
+};
+
+/// How many cells and faces a DgLinearSystem integrated, and how many distinct classes
+/// of translates among them it computed matrices for (the rest reused them).
+struct SimilarityStatistics {
+  int cells = 0, cell_classes = 0;
+  int faces = 0, face_classes = 0;  ///< faces with a term (a free boundary face has none)
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -105,6 +117,7 @@ public:
   DgMaterial material(int cell) const;
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
+  const SimilarityStatistics& similarity() const { return similarity_; }
 
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
@@ -132,10 +145,12 @@ private:
   std::vector<MonomialBasis> bases_;
   std::vector<double> volumes_;
   std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
-  std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square
+  std::vector<int> cell_classes_;           // per cell, its class of translates
+  std::vector<Eigen::MatrixXd> masses_;     // per class of cells, #functions square
   Eigen::VectorXd integrals_;
   std::vector<int> offsets_;                // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
+  SimilarityStatistics similarity_;
 };
 
 }  // namespace altfem::dg
