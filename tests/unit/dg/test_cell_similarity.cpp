@@ -1,0 +1,138 @@
+// Issue #18, Table 1's integration phase: DgLinearSystem computes element and face
+// matrices once per class of translated cells (dg/cell_similarity.hpp). The reused
+// matrices must equal the recomputed ones (≤ 1e-12 relative) on a sliced mesh with cut
+// cells, a cell moved by far less than its size must not be taken for a translate, and
+// translates far from the origin must still be recognised.
+#include <gtest/gtest.h>
+
+#include "dg/cell_similarity.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "tests/unit/dg/hex_grid_cells.hpp"
+#include "tests/unit/surfaces.hpp"
+
+namespace altfem::dg {
+namespace {
+
+// max |A − B| / max |B|, over the union of the patterns.
+double relative_difference(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b) {
+  const Eigen::SparseMatrix<double> difference = a - b;
+  double largest = 0, scale = 0;
+  for (int k = 0; k < difference.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(difference, k); it; ++it) largest = std::max(largest, std::abs(it.value()));
+  for (int k = 0; k < b.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(b, k); it; ++it) scale = std::max(scale, std::abs(it.value()));
+  return largest / scale;
+}
+
+DgSettings settings(int degree, Flux flux, bool reuse) {
+  DgSettings result{degree, flux, 20, 2.0, 1.5};
+  result.reuse_similar_cells = reuse;
+  return result;
+}
+
+// The sphere sliced on a 6³ grid: cut cells, merged slivers and whole hexahedra; the
+// lower half clamped, the rest free; two materials split at z = 0.
+struct SlicedSphere {
+  std::vector<Polyhedron> cells;
+  std::vector<DgFace> faces;
+  DgCellMaterials materials;
+};
+
+SlicedSphere sliced_sphere() {
+  SlicingOptions options;
+  options.resolution = 6;
+  const SlicedMesh sliced =
+      slice_into_polyhedra(altfem::test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  SlicedSphere sphere{mesh_cells(sliced.mesh), mesh_faces(sliced.mesh), {}};
+  for (size_t f = 0; f < sphere.faces.size(); ++f)
+    if (sphere.faces[f].plus < 0 && sliced.mesh.face_centroids(static_cast<Eigen::Index>(f), 2) < 0) {
+      sphere.faces[f].condition = 0;
+      sphere.faces[f].components = {true, false, true};
+    }
+  sphere.materials.materials = {{2.0, 1.5, 1.0, 20}, {20.0, 15.0, 3.0, 30}};
+  for (int c = 0; c < sliced.mesh.cell_count(); ++c)
+    sphere.materials.ids.push_back(sliced.mesh.cell_centroids(c, 2) > 0 ? 1 : 0);
+  return sphere;
+}
+
+TEST(CellSimilarity, ReusedMatricesEqualRecomputedOnesOnASlicedSphere) {
+  const SlicedSphere sphere = sliced_sphere();
+  for (const auto& [degree, flux] : {std::pair{1, Flux::babuska_zlamal}, std::pair{2, Flux::interior_penalty}}) {
+    const DgLinearSystem reused(sphere.cells, sphere.faces, settings(degree, flux, true), sphere.materials);
+    const DgLinearSystem recomputed(sphere.cells, sphere.faces, settings(degree, flux, false), sphere.materials);
+    const SimilarityStatistics& statistics = reused.similarity();
+    std::printf("  k=%d: %d cells in %d classes, %d faces in %d classes\n", degree, statistics.cells,
+                statistics.cell_classes, statistics.faces, statistics.face_classes);
+    // The whole hexahedra inside are translates: classes were shared...
+    EXPECT_LT(statistics.cell_classes, statistics.cells);
+    EXPECT_LT(statistics.face_classes, statistics.faces);
+    EXPECT_EQ(recomputed.similarity().cell_classes, recomputed.similarity().cells);
+    // ...and give what recomputation gives.
+    EXPECT_LE(relative_difference(reused.stiffness(), recomputed.stiffness()), 1e-12) << "k = " << degree;
+    EXPECT_LE(relative_difference(reused.mass(), recomputed.mass()), 1e-12);
+    EXPECT_LE((reused.function_integrals() - recomputed.function_integrals()).cwiseAbs().maxCoeff(),
+              1e-12 * recomputed.function_integrals().cwiseAbs().maxCoeff());
+  }
+}
+
+// Moves the grid point `point` by `offset` in every cell and face that holds it.
+void move_point(test::GridCells& grid, const Eigen::Vector3d& point, const Eigen::Vector3d& offset) {
+  const auto move_rows = [&](Eigen::MatrixXd& rows) {
+    for (Eigen::Index r = 0; r < rows.rows(); ++r)
+      if ((rows.row(r).transpose() - point).norm() < 1e-12) rows.row(r) += offset.transpose();
+  };
+  for (Polyhedron& cell : grid.cells) move_rows(cell.vertices);
+  for (DgFace& face : grid.faces) move_rows(face.polygon);
+}
+
+TEST(CellSimilarity, AVertexMovedByOneMillionthIsNoFalseHit) {
+  const test::GridCells cube = test::hex_grid_cells(4);
+  test::GridCells perturbed = cube;
+  move_point(perturbed, Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(1e-6, 0, 0));
+  const DgSettings reuse = settings(2, Flux::interior_penalty, true);
+  const DgLinearSystem cube_system(cube.cells, cube.faces, reuse);
+  const DgLinearSystem perturbed_system(perturbed.cells, perturbed.faces, reuse);
+  const DgLinearSystem recomputed(perturbed.cells, perturbed.faces, settings(2, Flux::interior_penalty, false));
+  // One class of cube cells; the 8 cells around the moved vertex each a class of its own.
+  EXPECT_EQ(cube_system.similarity().cell_classes, 1);
+  EXPECT_EQ(perturbed_system.similarity().cell_classes, 9);
+  EXPECT_LE(relative_difference(perturbed_system.stiffness(), recomputed.stiffness()), 1e-12);
+  // The move changes K by ~1e-6 relative, far above what reuse is allowed to differ by.
+  EXPECT_GT(relative_difference(perturbed_system.stiffness(), cube_system.stiffness()), 1e-8);
+}
+
+TEST(CellSimilarity, TranslatesFarFromTheOriginShareTheirClasses) {
+  const test::GridCells cube = test::hex_grid_cells(3);
+  test::GridCells far = cube;
+  const Eigen::RowVector3d shift(1e4, -2e4, 3e4);
+  for (Polyhedron& cell : far.cells) cell.vertices.rowwise() += shift;
+  for (DgFace& face : far.faces) face.polygon.rowwise() += shift;
+  const DgLinearSystem near_system(cube.cells, cube.faces, settings(1, Flux::interior_penalty, true));
+  const DgLinearSystem far_system(far.cells, far.faces, settings(1, Flux::interior_penalty, true));
+  const DgLinearSystem recomputed(far.cells, far.faces, settings(1, Flux::interior_penalty, false));
+  EXPECT_EQ(far_system.similarity().cell_classes, near_system.similarity().cell_classes);
+  EXPECT_EQ(far_system.similarity().face_classes, near_system.similarity().face_classes);
+  // Positions 1e5 cell sizes from the origin carry round-off that the exact integration
+  // amplifies (~1e-8 relative between the near and the far grid): reuse stays within it.
+  const double round_off = relative_difference(recomputed.stiffness(), near_system.stiffness());
+  std::printf("  far from the origin: recomputed vs near %.2g, reused vs recomputed %.2g\n", round_off,
+              relative_difference(far_system.stiffness(), recomputed.stiffness()));
+  EXPECT_LE(relative_difference(far_system.stiffness(), recomputed.stiffness()), 2 * round_off);
+}
+
+TEST(CellSimilarity, KeysDifferingBeyondTheToleranceOpenNewClasses) {
+  SimilarityClasses classes;
+  const auto key = [](double x, int material) {
+    return SimilarityKey{{material}, {x, 0.25, -0.5}, 1.0, similarity_tolerance(1.0, 1.0, 1e-12)};
+  };
+  EXPECT_TRUE(classes.classify(key(0.125, 0)).created);
+  EXPECT_EQ(classes.classify(key(0.125 + 1e-13, 0)).index, 0);  // within tolerance
+  EXPECT_TRUE(classes.classify(key(0.125 + 1e-10, 0)).created);  // beyond it
+  EXPECT_TRUE(classes.classify(key(0.125, 1)).created);          // another structure
+  EXPECT_EQ(classes.class_count(), 3);
+  EXPECT_EQ(classes.key_count(), 4);
+}
+
+}  // namespace
+}  // namespace altfem::dg
