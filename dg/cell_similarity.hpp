@@ -43,17 +43,21 @@ struct SimilarityKey {
 /// origin are still recognised. relative_tolerance: e.g. 1e-12.
 double similarity_tolerance(double length, double magnitude, double relative_tolerance);
 
-/// The key of a cell's geometry relative to `centre` (its centroid): structure = vertex
-/// count, then each face's size and vertex indices, then `extra` (a material id, say);
-/// coordinates = vertices − centre (row by row); length = `diameter`.
+/// The key of a cell's geometry relative to `centre` (its centroid), independent of how
+/// the cell numbers its vertices and orders its faces: vertices sorted by their position
+/// relative to the centre (on the hash's grid), each face loop from its lowest vertex,
+/// loops sorted. structure = vertex count, then each face's size and vertex indices, then
+/// `extra` (a material id, say); coordinates = the sorted vertices − centre; length =
+/// `diameter`.
 SimilarityKey cell_similarity_key(const Polyhedron& cell, const Eigen::Vector3d& centre, double diameter,
                                   const std::vector<int>& extra, double relative_tolerance);
 
 /// The key of a face between cells (or on a cell's boundary) relative to `centre` (the
 /// minus cell's centroid): structure = `structure` (the classes of the cells it joins and
 /// whatever else its matrix depends on exactly), then the vertex count; coordinates =
-/// polygon − centre (row by row), normal · length, and other_centre − centre if given
-/// (the plus cell's centroid); length: the minus cell's diameter.
+/// polygon − centre (the loop from its lowest vertex relative to the centre, orientation
+/// kept), normal · length, and other_centre − centre if given (the plus cell's centroid);
+/// length: the minus cell's diameter.
 SimilarityKey face_similarity_key(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                   const Eigen::Vector3d& centre, double length, const Eigen::Vector3d* other_centre,
                                   std::vector<int> structure, double relative_tolerance);

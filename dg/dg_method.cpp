@@ -178,6 +178,12 @@ public:
               {"eta_pa", settings_.penalty},
               {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]}}},
             {"smallest_cell_volume", smallest_cell_volume()},
+            // Element and face matrices computed once per class of translates (cell_similarity.hpp).
+            {"similar_cells",
+             {{"cells", system_->similarity().cells},
+              {"cell_classes", system_->similarity().cell_classes},
+              {"faces", system_->similarity().faces},
+              {"face_classes", system_->similarity().face_classes}}},
             {"warping", spec_.warping},
             {"surface_vertices", surface_.vertices.rows()},
             {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});

@@ -121,6 +121,30 @@ TEST(CellSimilarity, TranslatesFarFromTheOriginShareTheirClasses) {
   EXPECT_LE(relative_difference(far_system.stiffness(), recomputed.stiffness()), 2 * round_off);
 }
 
+TEST(CellSimilarity, ACellNumberedOtherwiseIsTheSameClass) {
+  // An irregular hexahedron, then the same one with its vertices permuted, its faces in
+  // reverse order and each loop starting at another vertex (orientation kept): the key
+  // must not see the numbering, which differs between the cells of a mesh.
+  Polyhedron cell = test::hex_grid_cells(1).cells.front();
+  cell.vertices(7, 0) += 0.1;
+  cell.vertices(6, 2) -= 0.05;
+  const std::vector<int> permutation{5, 2, 7, 0, 3, 6, 1, 4};  // old vertex → new vertex
+  Polyhedron renumbered;
+  renumbered.vertices.resize(8, 3);
+  for (int v = 0; v < 8; ++v) renumbered.vertices.row(permutation[v]) = cell.vertices.row(v);
+  for (auto face = cell.faces.rbegin(); face != cell.faces.rend(); ++face) {
+    std::vector<int> loop;
+    for (size_t k = 0; k < face->size(); ++k) loop.push_back(permutation[(*face)[(k + 1) % face->size()]]);
+    renumbered.faces.push_back(loop);
+  }
+  const Eigen::Vector3d centre(0.52, 0.49, 0.5);
+  SimilarityClasses classes;
+  EXPECT_TRUE(classes.classify(cell_similarity_key(cell, centre, 1.8, {0}, 1e-12)).created);
+  EXPECT_EQ(classes.classify(cell_similarity_key(renumbered, centre, 1.8, {0}, 1e-12)).index, 0);
+  // The same cell of another material is another class.
+  EXPECT_TRUE(classes.classify(cell_similarity_key(renumbered, centre, 1.8, {1}, 1e-12)).created);
+}
+
 TEST(CellSimilarity, KeysDifferingBeyondTheToleranceOpenNewClasses) {
   SimilarityClasses classes;
   const auto key = [](double x, int material) {
