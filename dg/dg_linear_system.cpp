@@ -3,6 +3,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -66,8 +67,17 @@ void for_each_item_by_class(const std::vector<int>& classes, int class_count, Co
     first_met.clear();
     for (int item = start; item < end; ++item)
       if (classes[item] >= 0 && representative[classes[item]] == item) first_met.push_back(item);
+    std::exception_ptr failure;  // bad input (a face of < 3 vertices, say) must not leave the region
 #pragma omp parallel for schedule(dynamic, 4) if (first_met.size() > 8)
-    for (size_t k = 0; k < first_met.size(); ++k) matrices[classes[first_met[k]]] = compute(first_met[k]);
+    for (size_t k = 0; k < first_met.size(); ++k) {
+      try {
+        matrices[classes[first_met[k]]] = compute(first_met[k]);
+      } catch (...) {
+#pragma omp critical(dg_linear_system_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
     for (int item = start; item < end; ++item) {
       if (classes[item] < 0) continue;
       Eigen::MatrixXd& matrix = matrices[classes[item]];

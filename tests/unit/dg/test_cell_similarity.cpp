@@ -145,6 +145,15 @@ TEST(CellSimilarity, ACellNumberedOtherwiseIsTheSameClass) {
   EXPECT_TRUE(classes.classify(cell_similarity_key(renumbered, centre, 1.8, {1}, 1e-12)).created);
 }
 
+TEST(CellSimilarity, BadInputThrowsFromTheParallelComputation) {
+  // Every face its own class: the face matrices are computed in an OpenMP loop, whose
+  // exceptions must reach the caller.
+  test::GridCells grid = test::hex_grid_cells(3);
+  grid.faces[40].polygon.conservativeResize(2, 3);
+  EXPECT_THROW(DgLinearSystem(grid.cells, grid.faces, settings(1, Flux::interior_penalty, false)),
+               std::invalid_argument);
+}
+
 TEST(CellSimilarity, KeysDifferingBeyondTheToleranceOpenNewClasses) {
   SimilarityClasses classes;
   const auto key = [](double x, int material) {
