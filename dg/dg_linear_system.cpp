@@ -100,11 +100,23 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
                                   std::to_string(cell_materials_.materials.size()) + " materials");
-  const int cell_count = static_cast<int>(cells_.size());
   for (const Polyhedron& cell : cells_) bases_.push_back(cell_basis(cell, settings.degree));
+  offsets_.push_back(0);
+  for (const MonomialBasis& basis : bases_) offsets_.push_back(offsets_.back() + basis.size());
+  std::vector<std::array<int, 2>> couplings;
+  for (const DgFace& face : faces_)
+    if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
+  const CellBlockPattern pattern(offsets_, couplings);
+  pattern.make_zero_matrix(stiffness_);
+  add_element_matrices(pattern);
+  add_face_matrices(pattern);
+}
+
+void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
+  const int cell_count = static_cast<int>(cells_.size());
 
   // Classes of translates of the same material (deal.II's CellSimilarity::translation).
-  SimilarityClasses cell_similarity(settings.reuse_similar_cells);
+  SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
   for (int c = 0; c < cell_count; ++c)
     cell_classes_.push_back(cell_similarity
                                 .classify(cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(),
@@ -114,14 +126,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   masses_.resize(class_count);
   std::vector<Eigen::VectorXd> class_integrals(class_count);
   std::vector<double> class_inverse_lengths(class_count);
-  // Stiffness, mass and ∫ φ_a once per class; the offsets need only the basis sizes.
-  offsets_.push_back(0);
-  for (int c = 0; c < cell_count; ++c) offsets_.push_back(offsets_.back() + bases_[c].size());
-  std::vector<std::array<int, 2>> couplings;
-  for (const DgFace& face : faces_)
-    if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
-  const CellBlockPattern pattern(offsets_, couplings);
-  pattern.make_zero_matrix(stiffness_);
+  // Stiffness, mass and ∫ φ_a once per class.
   integrals_.resize(offsets_.back());
   for_each_item_by_class(
       cell_classes_, class_count,
@@ -142,10 +147,14 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
         integrals_.segment(offsets_[c], bases_[c].size()) = class_integrals[k];
         pattern.add_block(stiffness_, c, c, stiffness);
       });
+  similarity_.cells = cell_count;
+  similarity_.cell_classes = class_count;
+}
 
+void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
   // Face matrices once per class of faces between the same classes of cells at the same
   // relative position (their penalty η_f follows from the cells' classes and the face).
-  SimilarityClasses face_similarity(settings.reuse_similar_cells);
+  SimilarityClasses face_similarity(settings_.reuse_similar_cells);
   std::vector<int> face_classes(faces_.size(), -1);
   for (size_t f = 0; f < faces_.size(); ++f) {
     const DgFace& face = faces_[f];
@@ -168,7 +177,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
         const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
         return exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
                                  {minus_material.lambda, minus_material.mu}, {plus_material.lambda, plus_material.mu},
-                                 face_penalty(face), settings.flux, face.components);
+                                 face_penalty(face), settings_.flux, face.components);
       },
       [&](int f, const Eigen::MatrixXd& matrix) {
         const DgFace& face = faces_[f];
@@ -180,7 +189,8 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
         pattern.add_block(stiffness_, face.minus, face.plus, matrix.topRightCorner(minus_size, plus_size));
         pattern.add_block(stiffness_, face.plus, face.plus, matrix.bottomRightCorner(plus_size, plus_size));
       });
-  similarity_ = {cell_count, class_count, face_similarity.key_count(), face_similarity.class_count()};
+  similarity_.faces = face_similarity.key_count();
+  similarity_.face_classes = face_similarity.class_count();
 }
 
 double DgLinearSystem::face_penalty(const DgFace& face) const {

@@ -16,6 +16,8 @@
 
 namespace altfem::dg {
 
+class CellBlockPattern;
+
 struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
   Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
@@ -134,6 +136,10 @@ public:
   Eigen::VectorXd interpolate(const VectorField& field) const;
 
 private:
+  // K's element blocks (and the per-cell volumes, lengths, integrals and masses) and its
+  // face blocks, each computed once per class of translates (dg/cell_similarity.hpp).
+  void add_element_matrices(const CellBlockPattern& pattern);
+  void add_face_matrices(const CellBlockPattern& pattern);
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>
   void for_each_cell_point(int strength, Body&& body) const;
