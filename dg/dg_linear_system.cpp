@@ -10,6 +10,7 @@
 #include "dg/cell_block_pattern.hpp"
 #include "dg/cell_similarity.hpp"
 #include "dg/exact_element_matrices.hpp"
+#include "dg/strong_conditions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
@@ -103,6 +104,20 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   for (const Polyhedron& cell : cells_) bases_.push_back(cell_basis(cell, settings.degree));
   offsets_.push_back(0);
   for (const MonomialBasis& basis : bases_) offsets_.push_back(offsets_.back() + basis.size());
+  std::vector<std::vector<int>> strong_faces(cells_.size());
+  for (size_t f = 0; f < faces_.size(); ++f)
+    if (faces_[f].strong && faces_[f].plus < 0 && faces_[f].condition >= 0)
+      strong_faces[faces_[f].minus].push_back(static_cast<int>(f));
+  for (int c = 0; c < static_cast<int>(cells_.size()); ++c) {
+    if (strong_faces[c].empty()) continue;
+    // The constrained and free combinations of the monomials as the cell's functions.
+    strong_cells_.push_back(strong_cell(c, bases_[c], faces_, strong_faces[c]));
+    const StrongCell& strong = strong_cells_.back();
+    for (int j = 0; j < strong.constrained; ++j)
+      for (int i = 0; i < 3; ++i)
+        if (strong.components[i]) constrained_dofs_.push_back(3 * (offsets_[c] + j) + i);
+    bases_[c].combine(strong.combination);
+  }
   std::vector<std::array<int, 2>> couplings;
   for (const DgFace& face : faces_)
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
@@ -115,17 +130,21 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
 void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
   const int cell_count = static_cast<int>(cells_.size());
 
-  // Classes of translates of the same material (deal.II's CellSimilarity::translation).
+  // Classes of translates of the same material (deal.II's CellSimilarity::translation);
+  // a cell whose functions are combinations for its strongly held faces is a class of
+  // its own.
   SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
-  for (int c = 0; c < cell_count; ++c)
+  for (int c = 0; c < cell_count; ++c) {
+    const int own = bases_[c].combination().size() == 0 ? -1 : c;
     cell_classes_.push_back(cell_similarity
                                 .classify(cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(),
-                                                              {material_id(c)}, similarity_relative_tolerance))
+                                                              {material_id(c), own}, similarity_relative_tolerance))
                                 .index);
+  }
   const int class_count = cell_similarity.class_count();
   masses_.resize(class_count);
   std::vector<Eigen::VectorXd> class_integrals(class_count);
-  std::vector<double> class_inverse_lengths(class_count);
+  std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
   // Stiffness, mass and ∫ φ_a once per class.
   integrals_.resize(offsets_.back());
   for_each_item_by_class(
@@ -135,14 +154,17 @@ void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
         ElementMatrices matrices =
             exact_element_matrices(cells_[c], bases_[c], cell_material.lambda, cell_material.mu, cell_material.density);
         const int k = cell_classes_[c];
-        class_inverse_lengths[k] = surface_area(cells_[c]) / (6 * matrices.integrals[0]);
+        // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
+        const Eigen::MatrixXd& combination = bases_[c].combination();
+        class_volumes[k] = combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals);
+        class_inverse_lengths[k] = surface_area(cells_[c]) / (6 * class_volumes[k]);
         class_integrals[k] = std::move(matrices.integrals);
         masses_[k] = std::move(matrices.mass);
         return std::move(matrices.stiffness);
       },
       [&](int c, const Eigen::MatrixXd& stiffness) {
         const int k = cell_classes_[c];
-        volumes_.push_back(class_integrals[k][0]);
+        volumes_.push_back(class_volumes[k]);
         inverse_lengths_.push_back(class_inverse_lengths[k]);
         integrals_.segment(offsets_[c], bases_[c].size()) = class_integrals[k];
         pattern.add_block(stiffness_, c, c, stiffness);
@@ -158,7 +180,7 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
   std::vector<int> face_classes(faces_.size(), -1);
   for (size_t f = 0; f < faces_.size(); ++f) {
     const DgFace& face = faces_[f];
-    if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
+    if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
     const MonomialBasis& minus = bases_[face.minus];
     std::vector<int> structure{cell_classes_[face.minus], face.plus >= 0 ? cell_classes_[face.plus] : -1};
     structure.insert(structure.end(), face.components.begin(), face.components.end());
@@ -193,19 +215,41 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
   similarity_.face_classes = face_similarity.class_count();
 }
 
-double DgLinearSystem::face_penalty(const DgFace& face) const {
+DgLinearSystem::~DgLinearSystem() = default;
+
+Eigen::VectorXd DgLinearSystem::constrained_values(const ConditionData& data) const {
+  Eigen::VectorXd values(static_cast<Eigen::Index>(constrained_dofs_.size()));
+  Eigen::Index next = 0;
+  for (const StrongCell& strong : strong_cells_) {
+    const MonomialBasis& basis = bases_[strong.cell];
+    const MonomialBasis monomials(basis.degree(), basis.centre(), basis.scale());
+    const Eigen::MatrixXd cell_values = dg::constrained_values(strong, monomials, faces_, data);
+    // In constrained_dofs_ order: combination j, then component.
+    for (int j = 0; j < strong.constrained; ++j)
+      for (Eigen::Index row = 0; row < cell_values.rows(); ++row) values[next++] = cell_values(row, j);
+  }
+  return values;
+}
+
+JumpPenalty DgLinearSystem::face_penalty(const DgFace& face) const {
   // Each side's own η over its length: eq. (20)'s vol(K)/area(f), or ℓ(K) (PenaltyScaling).
   const bool by_face = settings_.scaling == PenaltyScaling::face_area;
   const double area = by_face && face.polygon.rows() >= 3 ? polygon_area_vector(face.polygon).norm() : 0.0;
-  double penalty = 0;
-  for (int side : {face.minus, face.plus})
-    if (side >= 0) penalty += material(side).penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
   const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
-  return factor * penalty;
+  JumpPenalty penalty{0.0, 0.0};
+  for (int side : {face.minus, face.plus}) {
+    if (side < 0) continue;
+    const DgMaterial side_material = material(side);
+    const double eta = factor * side_material.penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
+    penalty.normal += eta;
+    penalty.tangential += side_material.tangential_fraction * eta;
+  }
+  return penalty;
 }
 
 DgMaterial DgLinearSystem::material(int cell) const {
-  if (cell_materials_.materials.empty()) return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty};
+  if (cell_materials_.materials.empty())
+    return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty, settings_.tangential_fraction};
   return cell_materials_.materials[material_id(cell)];
 }
 
@@ -287,12 +331,12 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool p
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
   for (const DgFace& face : faces_) {
-    if (face.plus >= 0 || face.condition < 0) continue;
+    if (face.plus >= 0 || face.condition < 0 || face.strong) continue;
     const MonomialBasis& basis = bases_[face.minus];
     const DgMaterial side = material(face.minus);
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
-    const double penalty = face_penalty(face);
     const Eigen::Vector3d& n = face.normal;
+    const Eigen::Matrix3d penalty = face_penalty(face).tensor(n);
     for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
       const Eigen::Vector3d x = rule.points.row(q).transpose();
       Eigen::Vector3d g = data(face.condition, x);
@@ -300,10 +344,12 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool p
         if (!face.components[i]) g[i] = 0;  // P g
       basis.evaluate(x, phi, gradients);
       for (int a = 0; a < basis.size(); ++a) {
-        // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
+        // η_f (T Pg)·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
         // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
         const Eigen::Vector3d grad = gradients.row(a).transpose();
-        Eigen::Vector3d entry = penalty * phi[a] * g;
+        Eigen::Vector3d entry = phi[a] * (penalty * g);
+        for (int i = 0; i < 3; ++i)
+          if (!face.components[i]) entry[i] = 0;  // P T P g
         if (settings_.flux == Flux::interior_penalty && !penalty_only)
           entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
         load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;

@@ -16,7 +16,8 @@
 
 namespace altfem::dg {
 
-class CellBlockPattern;
+class CellBlockPattern;  // dg/cell_block_pattern.hpp
+struct StrongCell;       // dg/strong_conditions.hpp
 
 struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
@@ -28,6 +29,9 @@ struct DgFace {
   int condition = -1;
   /// The components that condition prescribes (the others are free on this face).
   std::array<bool, 3> components{true, true, true};
+  /// The condition imposed strongly (dg/strong_conditions.hpp): no face term; the cell's
+  /// constrained coefficients are DOFs with prescribed values.
+  bool strong = false;
 };
 
 /// How the penalty of a face depends on the sizes of its two cells. Either way η_f
@@ -46,11 +50,14 @@ struct DgFace {
 enum class PenaltyScaling { face_area, cell_surface };
 inline constexpr std::array<std::string_view, 2> penalty_scaling_names{"face_area", "cell_surface"};
 
-/// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ).
+/// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ),
+/// of which the fraction `tangential_fraction` penalises tangential jumps (JumpPenalty;
+/// 1: isotropic, 2μ/(λ + 2μ): Hansbo & Larson's split of a (λ + 2μ)-scaled η).
 struct DgMaterial {
   double lambda = 1, mu = 1;
   double density = 1;
   double penalty = 20;
+  double tangential_fraction = 1;
 };
 
 struct DgSettings {
@@ -63,6 +70,7 @@ struct DgSettings {
   /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
   double boundary_penalty_factor = 1;
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
+  double tangential_fraction = 1;  ///< DgMaterial::tangential_fraction
   /// Compute the element matrices once per class of cells that are translates of each
   /// other (same material), the face matrices once per class of faces between such cells
   /// (dg/cell_similarity.hpp). The matrices equal the recomputed ones up to round-off
@@ -74,7 +82,7 @@ struct DgSettings {
 /// of translates among them it computed matrices for (the rest reused them).
 struct SimilarityStatistics {
   int cells = 0, cell_classes = 0;
-  int faces = 0, face_classes = 0;  ///< faces with a term (a free boundary face has none)
+  int faces = 0, face_classes = 0;  ///< faces with a term (free or strong boundary faces have none)
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -98,6 +106,7 @@ class DgLinearSystem {
 public:
   DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
                  DgCellMaterials cell_materials = {});
+  ~DgLinearSystem();
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
@@ -109,8 +118,9 @@ public:
   const Polyhedron& cell(int index) const { return cells_[index]; }
   const std::vector<DgFace>& faces() const { return faces_; }
   Flux flux() const { return settings_.flux; }
-  /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary face).
-  double face_penalty(const DgFace& face) const;
+  /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary
+  /// face), its normal and tangential parts (each side's η times its tangential_fraction).
+  JumpPenalty face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
   double volume(int cell) const { return volumes_[cell]; }
   /// The index into cell_materials.materials of a cell's material (0 with a single material).
@@ -129,6 +139,11 @@ public:
   /// data of degree ≤ k + 3). `penalty_only`: the η_f ∫ Pg·v part alone (stiffness
   /// warping rotates the consistency part with the boundary element, §6).
   Eigen::VectorXd dirichlet_load(const ConditionData& data, bool penalty_only = false) const;
+  /// The DOFs that strongly imposed conditions fix (sorted), and their values for the
+  /// data g = data(condition, x) (in the same order): the constrained coefficients of the
+  /// prescribed components of each cell with strong faces (dg/strong_conditions.hpp).
+  const std::vector<int>& constrained_dofs() const { return constrained_dofs_; }
+  Eigen::VectorXd constrained_values(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
@@ -149,6 +164,8 @@ private:
   DgSettings settings_;
   DgCellMaterials cell_materials_;
   std::vector<MonomialBasis> bases_;
+  std::vector<StrongCell> strong_cells_;  // the cells with strongly constrained faces
+  std::vector<int> constrained_dofs_;
   std::vector<double> volumes_;
   std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
   std::vector<int> cell_classes_;           // per cell, its class of translates

@@ -34,6 +34,11 @@ FunctionsInFrame in_frame(const MonomialBasis& basis, const Eigen::Vector3d& cen
       functions.gradients[d].col(a) = exponents(a, d) / basis.scale() * S.row(monomial_index(lowered)).transpose();
     }
   }
+  // Combined functions φ_j = Σ_a C_aj m_a (dg/strong_conditions.hpp), and so their gradients.
+  const Eigen::MatrixXd& combination = basis.combination();
+  if (combination.size() == 0) return functions;
+  functions.values *= combination;
+  for (Eigen::MatrixXd& gradient : functions.gradients) gradient *= combination;
   return functions;
 }
 

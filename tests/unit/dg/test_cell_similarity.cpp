@@ -32,7 +32,9 @@ DgSettings settings(int degree, Flux flux, bool reuse) {
 }
 
 // The sphere sliced on a 6³ grid: cut cells, merged slivers and whole hexahedra; the
-// lower half clamped, the rest free; two materials split at z = 0.
+// lower half's boundary held in x and z, weakly, strongly below z = −0.5 (those cells'
+// functions recombined, dg/strong_conditions.hpp); two materials split at z = 0, with
+// split penalties.
 struct SlicedSphere {
   std::vector<Polyhedron> cells;
   std::vector<DgFace> faces;
@@ -49,8 +51,9 @@ SlicedSphere sliced_sphere() {
     if (sphere.faces[f].plus < 0 && sliced.mesh.face_centroids(static_cast<Eigen::Index>(f), 2) < 0) {
       sphere.faces[f].condition = 0;
       sphere.faces[f].components = {true, false, true};
+      sphere.faces[f].strong = sliced.mesh.face_centroids(static_cast<Eigen::Index>(f), 2) < -0.5;
     }
-  sphere.materials.materials = {{2.0, 1.5, 1.0, 20}, {20.0, 15.0, 3.0, 30}};
+  sphere.materials.materials = {{2.0, 1.5, 1.0, 20, 0.6}, {20.0, 15.0, 3.0, 30, 1.0}};
   for (int c = 0; c < sliced.mesh.cell_count(); ++c)
     sphere.materials.ids.push_back(sliced.mesh.cell_centroids(c, 2) > 0 ? 1 : 0);
   return sphere;
@@ -68,6 +71,8 @@ TEST(CellSimilarity, ReusedMatricesEqualRecomputedOnesOnASlicedSphere) {
     EXPECT_LT(statistics.cell_classes, statistics.cells);
     EXPECT_LT(statistics.face_classes, statistics.faces);
     EXPECT_EQ(recomputed.similarity().cell_classes, recomputed.similarity().cells);
+    EXPECT_FALSE(reused.constrained_dofs().empty());  // strongly held cells are among them
+    EXPECT_EQ(reused.constrained_dofs(), recomputed.constrained_dofs());
     // ...and give what recomputation gives.
     EXPECT_LE(relative_difference(reused.stiffness(), recomputed.stiffness()), 1e-12) << "k = " << degree;
     EXPECT_LE(relative_difference(reused.mass(), recomputed.mass()), 1e-12);
