@@ -146,6 +146,8 @@ const scene_schema::ObjectRule& dg_rule() {
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
        {.key = "embedding", .type = ValueType::string, .default_value = "mls",
         .choices = scene_schema::names(embedding_names)},
+       {.key = "preconditioner", .type = ValueType::string, .default_value = "two_level",
+        .choices = scene_schema::names(dg_preconditioner_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = mesh_names()},
@@ -175,6 +177,8 @@ DgSpec dg_spec(const Scene& scene) {
   spec.scaling = static_cast<PenaltyScaling>(index_of(penalty_scaling_names, penalty["scaling"].get<std::string>()));
   spec.warping = dg["warping"].get<bool>();
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
+  spec.preconditioner = static_cast<DgPreconditioner>(
+      index_of(dg_preconditioner_names, dg["preconditioner"].get<std::string>()));
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
     return spec;
