@@ -52,14 +52,12 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
     coarse.coeffRef(j, j) += coarse_shift * (diagonal[j] > 0 ? diagonal[j] : largest);
   galerkin_seconds_ = seconds_since(start);
 
-  start = std::chrono::steady_clock::now();
   try {
     coarse_solver_->factorize(coarse);
   } catch (const NumericalError& error) {
     throw NumericalError(std::string("two-level preconditioner: the coarse matrix PᵀAP is not positive definite (") +
                          error.what() + ")");
   }
-  factorisation_seconds_ = seconds_since(start);
 
   coarse_residual_.resize(prolongation_.cols());
   coarse_correction_.resize(prolongation_.cols());

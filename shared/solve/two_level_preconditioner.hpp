@@ -40,11 +40,11 @@ public:
   void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
 
   int coarse_size() const { return static_cast<int>(prolongation_.cols()); }
-  /// Wall seconds of the last compute(): the smoother's set-up, the Galerkin product and the
-  /// coarse factorisation.
+  /// Wall seconds of the last compute()'s smoother set-up and Galerkin product.
   double smoother_seconds() const { return smoother_seconds_; }
   double galerkin_seconds() const { return galerkin_seconds_; }
-  double factorisation_seconds() const { return factorisation_seconds_; }
+  /// The coarse CHOLMOD solver's analyses, factorisations and solves so far.
+  const LinearSolverStatistics& coarse_statistics() const { return coarse_solver_->statistics(); }
 
 private:
   std::unique_ptr<Preconditioner> smoother_;
@@ -53,7 +53,7 @@ private:
   double damping_;
   const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   std::unique_ptr<LinearSolver> coarse_solver_;
-  double smoother_seconds_ = 0, galerkin_seconds_ = 0, factorisation_seconds_ = 0;
+  double smoother_seconds_ = 0, galerkin_seconds_ = 0;
   // Scratch of apply(), sized by compute(): apply() must not allocate.
   mutable Eigen::VectorXd coarse_residual_, coarse_correction_, fine_residual_, smoothed_;
 };
