@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <string>
 
 #include "dg/dg_discretization.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
@@ -50,7 +51,8 @@ Iterations pcg_iterations(const PolyhedralMesh& mesh, int degree, double x_clamp
 }
 
 void print_row(const char* mesh, int cells, const Iterations& iterations) {
-  std::printf("  %-14s %7d %8d %14d %11d\n", mesh, cells, iterations.dofs, iterations.block_jacobi,
+  const std::string block_jacobi = iterations.block_jacobi > 0 ? std::to_string(iterations.block_jacobi) : "-";
+  std::printf("  %-14s %7d %8d %14s %11d\n", mesh, cells, iterations.dofs, block_jacobi.c_str(),
               iterations.two_level);
 }
 
