@@ -64,7 +64,10 @@ TEST_P(TwoLevelCycles, CoarseCorrectionIsExactOnTheCoarseSpace) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TwoLevelPreconditioner, TwoLevelCycles,
-                         ::testing::Values(TwoLevelCycle::additive, TwoLevelCycle::multiplicative));
+                         ::testing::Values(TwoLevelCycle::additive, TwoLevelCycle::multiplicative),
+                         [](const ::testing::TestParamInfo<TwoLevelCycle>& info) {
+                           return info.param == TwoLevelCycle::additive ? "additive" : "multiplicative";
+                         });
 
 }  // namespace
 }  // namespace altfem
