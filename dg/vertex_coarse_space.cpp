@@ -1,6 +1,7 @@
 #include "dg/vertex_coarse_space.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/LU>
 #include <algorithm>
 #include <string>
 
@@ -58,11 +59,18 @@ VertexCoarseSpace vertex_coarse_space(const PolyhedralMesh& mesh, const DgLinear
                            " lie in a plane (no affine fit)");
     const Eigen::MatrixXd fit =
         svd.matrixV() * singular.cwiseInverse().asDiagonal() * svd.matrixU().transpose();  // 4 × #nodes
+    // The monomial coefficients of the fit (#functions × #nodes), or, for a cell whose functions
+    // are combinations φ_j = Σ_a C_aj m_a (strong conditions), their coefficients C⁻¹ μ.
+    Eigen::MatrixXd coefficients = Eigen::MatrixXd::Zero(basis.size(), static_cast<Eigen::Index>(nodes.size()));
+    for (int m = 0; m < 4; ++m) coefficients.row(affine[m]) = fit.row(m);
+    if (basis.combination().size() > 0) coefficients = basis.combination().partialPivLu().solve(coefficients).eval();
     const int first_function = system.offset(cell);
-    for (int m = 0; m < 4; ++m)
+    for (Eigen::Index a = 0; a < coefficients.rows(); ++a)
       for (size_t v = 0; v < nodes.size(); ++v)
-        for (int i = 0; i < 3; ++i)
-          entries.emplace_back(3 * (first_function + affine[m]) + i, 3 * vertex_of_node[nodes[v]] + i, fit(m, v));
+        if (coefficients(a, v) != 0)
+          for (int i = 0; i < 3; ++i)
+            entries.emplace_back(3 * (first_function + static_cast<int>(a)) + i, 3 * vertex_of_node[nodes[v]] + i,
+                                 coefficients(a, v));
   }
   space.prolongation.resize(system.dof_count(), 3 * static_cast<Eigen::Index>(space.nodes.size()));
   space.prolongation.setFromTriplets(entries.begin(), entries.end());

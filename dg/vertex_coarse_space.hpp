@@ -23,7 +23,8 @@ namespace altfem::dg {
 struct VertexCoarseSpace {
   /// P: #dofs × 3 · #vertices; column 3v + i is the unit value of component i at vertex v;
   /// row 3a + i the coefficient of component i of function a (its cell's numbering as in
-  /// DgLinearSystem). Only the constant and linear monomials have non-zero rows.
+  /// DgLinearSystem). Only the constant and linear monomials have non-zero rows, except in
+  /// cells whose functions are combinations of monomials (strong conditions).
   Eigen::SparseMatrix<double> prolongation;
   /// The mesh node of each coarse vertex (#vertices): the nodes of at least one cell.
   std::vector<int> nodes;
