@@ -1,10 +1,14 @@
 #include "dg/dg_linear_system.hpp"
 
 #include <Eigen/QR>
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
+#include "dg/cell_block_pattern.hpp"
+#include "dg/cell_similarity.hpp"
 #include "dg/exact_element_matrices.hpp"
 #include "dg/strong_conditions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
@@ -38,13 +42,50 @@ double surface_area(const Polyhedron& cell) {
   return area;
 }
 
-// Zeros kept: K stores whole element and face blocks, so an element's 3n coefficients
-// share one pattern and the direct solver orders elements, not coefficients
-// (block_fill_reducing_ordering.hpp).
-void add_block(std::vector<Eigen::Triplet<double>>& triplets, const Eigen::MatrixXd& block,
-               const std::vector<int>& dofs) {
-  for (Eigen::Index i = 0; i < block.rows(); ++i)
-    for (Eigen::Index j = 0; j < block.cols(); ++j) triplets.emplace_back(dofs[i], dofs[j], block(i, j));
+// Cells and faces whose translation-invariant geometry agrees to this fraction of the
+// cell's diameter share their matrices (dg/cell_similarity.hpp).
+constexpr double similarity_relative_tolerance = 1e-12;
+// Items whose classes' matrices are computed in parallel before they are added into K:
+// bounds the matrices held at once (a cut cell's faces are mostly classes of one).
+constexpr int batch_size = 256;
+
+// use(item, matrix) for every item in order whose class (classes[item]) is not -1, the
+// matrix of a class computed once by compute(representative item) — in parallel for the
+// classes first met in a batch of items — and freed after the class's last item.
+template <typename Compute, typename Use>
+void for_each_item_by_class(const std::vector<int>& classes, int class_count, Compute&& compute, Use&& use) {
+  const int items = static_cast<int>(classes.size());
+  std::vector<int> representative(class_count, -1), last(class_count, -1);
+  for (int item = 0; item < items; ++item) {
+    if (classes[item] < 0) continue;
+    if (representative[classes[item]] < 0) representative[classes[item]] = item;
+    last[classes[item]] = item;
+  }
+  std::vector<Eigen::MatrixXd> matrices(class_count);
+  std::vector<int> first_met;
+  for (int start = 0; start < items; start += batch_size) {
+    const int end = std::min(items, start + batch_size);
+    first_met.clear();
+    for (int item = start; item < end; ++item)
+      if (classes[item] >= 0 && representative[classes[item]] == item) first_met.push_back(item);
+    std::exception_ptr failure;  // bad input (a face of < 3 vertices, say) must not leave the region
+#pragma omp parallel for schedule(dynamic, 4) if (first_met.size() > 8)
+    for (size_t k = 0; k < first_met.size(); ++k) {
+      try {
+        matrices[classes[first_met[k]]] = compute(first_met[k]);
+      } catch (...) {
+#pragma omp critical(dg_linear_system_failure)
+        if (!failure) failure = std::current_exception();
+      }
+    }
+    if (failure) std::rethrow_exception(failure);
+    for (int item = start; item < end; ++item) {
+      if (classes[item] < 0) continue;
+      Eigen::MatrixXd& matrix = matrices[classes[item]];
+      use(item, matrix);
+      if (last[classes[item]] == item) matrix = Eigen::MatrixXd();
+    }
+  }
 }
 
 }  // namespace
@@ -60,56 +101,118 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
                                   std::to_string(cell_materials_.materials.size()) + " materials");
+  for (const Polyhedron& cell : cells_) bases_.push_back(cell_basis(cell, settings.degree));
   offsets_.push_back(0);
+  for (const MonomialBasis& basis : bases_) offsets_.push_back(offsets_.back() + basis.size());
   std::vector<std::vector<int>> strong_faces(cells_.size());
   for (size_t f = 0; f < faces_.size(); ++f)
     if (faces_[f].strong && faces_[f].plus < 0 && faces_[f].condition >= 0)
       strong_faces[faces_[f].minus].push_back(static_cast<int>(f));
-  std::vector<Eigen::Triplet<double>> triplets;
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    const Polyhedron& cell = cells_[c];
-    const DgMaterial cell_material = material(static_cast<int>(c));
-    bases_.push_back(cell_basis(cell, settings.degree));
-    if (!strong_faces[c].empty()) {
-      // The constrained and free combinations of the monomials as the cell's functions.
-      strong_cells_.push_back(strong_cell(static_cast<int>(c), bases_.back(), faces_, strong_faces[c]));
-      const StrongCell& strong = strong_cells_.back();
-      for (int j = 0; j < strong.constrained; ++j)
-        for (int i = 0; i < 3; ++i)
-          if (strong.components[i]) constrained_dofs_.push_back(3 * (offsets_.back() + j) + i);
-      bases_.back().combine(strong.combination);
-    }
-    ElementMatrices matrices =
-        exact_element_matrices(cell, bases_.back(), cell_material.lambda, cell_material.mu, cell_material.density);
-    // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
-    const Eigen::MatrixXd& combination = bases_.back().combination();
-    volumes_.push_back(combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals));
-    inverse_lengths_.push_back(surface_area(cell) / (6 * volumes_.back()));
-    masses_.push_back(std::move(matrices.mass));
-    integrals_.conservativeResize(offsets_.back() + bases_.back().size());
-    integrals_.tail(bases_.back().size()) = matrices.integrals;
-    std::vector<int> dofs;
-    for (int k = 0; k < 3 * bases_.back().size(); ++k) dofs.push_back(3 * offsets_.back() + k);
-    add_block(triplets, matrices.stiffness, dofs);
-    offsets_.push_back(offsets_.back() + bases_.back().size());
+  for (int c = 0; c < static_cast<int>(cells_.size()); ++c) {
+    if (strong_faces[c].empty()) continue;
+    // The constrained and free combinations of the monomials as the cell's functions.
+    strong_cells_.push_back(strong_cell(c, bases_[c], faces_, strong_faces[c]));
+    const StrongCell& strong = strong_cells_.back();
+    for (int j = 0; j < strong.constrained; ++j)
+      for (int i = 0; i < 3; ++i)
+        if (strong.components[i]) constrained_dofs_.push_back(3 * (offsets_[c] + j) + i);
+    bases_[c].combine(strong.combination);
   }
-  for (const DgFace& face : faces_) {
+  std::vector<std::array<int, 2>> couplings;
+  for (const DgFace& face : faces_)
+    if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
+  const CellBlockPattern pattern(offsets_, couplings);
+  pattern.make_zero_matrix(stiffness_);
+  add_element_matrices(pattern);
+  add_face_matrices(pattern);
+}
+
+void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
+  const int cell_count = static_cast<int>(cells_.size());
+
+  // Classes of translates of the same material (deal.II's CellSimilarity::translation);
+  // a cell whose functions are combinations for its strongly held faces is a class of
+  // its own.
+  SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
+  for (int c = 0; c < cell_count; ++c) {
+    const int own = bases_[c].combination().size() == 0 ? -1 : c;
+    cell_classes_.push_back(cell_similarity
+                                .classify(cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(),
+                                                              {material_id(c), own}, similarity_relative_tolerance))
+                                .index);
+  }
+  const int class_count = cell_similarity.class_count();
+  masses_.resize(class_count);
+  std::vector<Eigen::VectorXd> class_integrals(class_count);
+  std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
+  // Stiffness, mass and ∫ φ_a once per class.
+  integrals_.resize(offsets_.back());
+  for_each_item_by_class(
+      cell_classes_, class_count,
+      [&](int c) {
+        const DgMaterial cell_material = material(c);
+        ElementMatrices matrices =
+            exact_element_matrices(cells_[c], bases_[c], cell_material.lambda, cell_material.mu, cell_material.density);
+        const int k = cell_classes_[c];
+        // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
+        const Eigen::MatrixXd& combination = bases_[c].combination();
+        class_volumes[k] = combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals);
+        class_inverse_lengths[k] = surface_area(cells_[c]) / (6 * class_volumes[k]);
+        class_integrals[k] = std::move(matrices.integrals);
+        masses_[k] = std::move(matrices.mass);
+        return std::move(matrices.stiffness);
+      },
+      [&](int c, const Eigen::MatrixXd& stiffness) {
+        const int k = cell_classes_[c];
+        volumes_.push_back(class_volumes[k]);
+        inverse_lengths_.push_back(class_inverse_lengths[k]);
+        integrals_.segment(offsets_[c], bases_[c].size()) = class_integrals[k];
+        pattern.add_block(stiffness_, c, c, stiffness);
+      });
+  similarity_.cells = cell_count;
+  similarity_.cell_classes = class_count;
+}
+
+void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
+  // Face matrices once per class of faces between the same classes of cells at the same
+  // relative position (their penalty η_f follows from the cells' classes and the face).
+  SimilarityClasses face_similarity(settings_.reuse_similar_cells);
+  std::vector<int> face_classes(faces_.size(), -1);
+  for (size_t f = 0; f < faces_.size(); ++f) {
+    const DgFace& face = faces_[f];
     if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
-    const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
-    const DgMaterial minus_material = material(face.minus);
-    const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
-    const Eigen::MatrixXd matrix = exact_face_matrix(
-        face.polygon, face.normal, bases_[face.minus], plus, {minus_material.lambda, minus_material.mu},
-        {plus_material.lambda, plus_material.mu}, face_penalty(face), settings.flux, face.components);
-    std::vector<int> dofs;
-    for (int side : {face.minus, face.plus}) {
-      if (side < 0) continue;
-      for (int k = 0; k < 3 * bases_[side].size(); ++k) dofs.push_back(3 * offsets_[side] + k);
-    }
-    add_block(triplets, matrix, dofs);
+    const MonomialBasis& minus = bases_[face.minus];
+    std::vector<int> structure{cell_classes_[face.minus], face.plus >= 0 ? cell_classes_[face.plus] : -1};
+    structure.insert(structure.end(), face.components.begin(), face.components.end());
+    face_classes[f] = face_similarity
+                          .classify(face_similarity_key(face.polygon, face.normal, minus.centre(), minus.scale(),
+                                                        face.plus >= 0 ? &bases_[face.plus].centre() : nullptr,
+                                                        std::move(structure), similarity_relative_tolerance))
+                          .index;
   }
-  stiffness_.resize(dof_count(), dof_count());
-  stiffness_.setFromTriplets(triplets.begin(), triplets.end());
+  for_each_item_by_class(
+      face_classes, face_similarity.class_count(),
+      [&](int f) {
+        const DgFace& face = faces_[f];
+        const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
+        const DgMaterial minus_material = material(face.minus);
+        const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
+        return exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
+                                 {minus_material.lambda, minus_material.mu}, {plus_material.lambda, plus_material.mu},
+                                 face_penalty(face), settings_.flux, face.components);
+      },
+      [&](int f, const Eigen::MatrixXd& matrix) {
+        const DgFace& face = faces_[f];
+        const Eigen::Index minus_size = 3 * bases_[face.minus].size();
+        pattern.add_block(stiffness_, face.minus, face.minus, matrix.topLeftCorner(minus_size, minus_size));
+        if (face.plus < 0) return;
+        const Eigen::Index plus_size = matrix.rows() - minus_size;
+        pattern.add_block(stiffness_, face.plus, face.minus, matrix.bottomLeftCorner(plus_size, minus_size));
+        pattern.add_block(stiffness_, face.minus, face.plus, matrix.topRightCorner(minus_size, plus_size));
+        pattern.add_block(stiffness_, face.plus, face.plus, matrix.bottomRightCorner(plus_size, plus_size));
+      });
+  similarity_.faces = face_similarity.key_count();
+  similarity_.face_classes = face_similarity.class_count();
 }
 
 DgLinearSystem::~DgLinearSystem() = default;
@@ -154,10 +257,10 @@ Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
   std::vector<Eigen::Triplet<double>> triplets;
   for (size_t c = 0; c < cells_.size(); ++c) {
     const int first = offsets_[c];
-    for (Eigen::Index a = 0; a < masses_[c].rows(); ++a)
-      for (Eigen::Index b = 0; b < masses_[c].cols(); ++b)
-        for (int i = 0; i < 3; ++i)
-          triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, masses_[c](a, b));
+    const Eigen::MatrixXd& cell_mass = masses_[cell_classes_[c]];
+    for (Eigen::Index a = 0; a < cell_mass.rows(); ++a)
+      for (Eigen::Index b = 0; b < cell_mass.cols(); ++b)
+        for (int i = 0; i < 3; ++i) triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, cell_mass(a, b));
   }
   Eigen::SparseMatrix<double> matrix(dof_count(), dof_count());
   matrix.setFromTriplets(triplets.begin(), triplets.end());

@@ -16,7 +16,8 @@
 
 namespace altfem::dg {
 
-struct StrongCell;  // dg/strong_conditions.hpp
+class CellBlockPattern;  // dg/cell_block_pattern.hpp
+struct StrongCell;       // dg/strong_conditions.hpp
 
 struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
@@ -70,6 +71,18 @@ struct DgSettings {
   double boundary_penalty_factor = 1;
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
   double tangential_fraction = 1;  ///< DgMaterial::tangential_fraction
+  /// Compute the element matrices once per class of cells that are translates of each
+  /// other (same material), the face matrices once per class of faces between such cells
+  /// (dg/cell_similarity.hpp). The matrices equal the recomputed ones up to round-off
+  /// (≤ 1e-12 relative); false recomputes every cell and face, for comparison.
+  bool reuse_similar_cells = true;
+};
+
+/// How many cells and faces a DgLinearSystem integrated, and how many distinct classes
+/// of translates among them it computed matrices for (the rest reused them).
+struct SimilarityStatistics {
+  int cells = 0, cell_classes = 0;
+  int faces = 0, face_classes = 0;  ///< faces with a term (free or strong boundary faces have none)
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -116,6 +129,7 @@ public:
   DgMaterial material(int cell) const;
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
+  const SimilarityStatistics& similarity() const { return similarity_; }
 
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
@@ -137,6 +151,10 @@ public:
   Eigen::VectorXd interpolate(const VectorField& field) const;
 
 private:
+  // K's element blocks (and the per-cell volumes, lengths, integrals and masses) and its
+  // face blocks, each computed once per class of translates (dg/cell_similarity.hpp).
+  void add_element_matrices(const CellBlockPattern& pattern);
+  void add_face_matrices(const CellBlockPattern& pattern);
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>
   void for_each_cell_point(int strength, Body&& body) const;
@@ -150,10 +168,12 @@ private:
   std::vector<int> constrained_dofs_;
   std::vector<double> volumes_;
   std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
-  std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square
+  std::vector<int> cell_classes_;           // per cell, its class of translates
+  std::vector<Eigen::MatrixXd> masses_;     // per class of cells, #functions square
   Eigen::VectorXd integrals_;
   std::vector<int> offsets_;                // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
+  SimilarityStatistics similarity_;
 };
 
 }  // namespace altfem::dg

@@ -193,6 +193,12 @@ public:
               {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
               {"lame_split", spec_.lame_split}}},
             {"smallest_cell_volume", smallest_cell_volume()},
+            // Element and face matrices computed once per class of translates (cell_similarity.hpp).
+            {"similar_cells",
+             {{"cells", system_->similarity().cells},
+              {"cell_classes", system_->similarity().cell_classes},
+              {"faces", system_->similarity().faces},
+              {"face_classes", system_->similarity().face_classes}}},
             {"warping", spec_.warping},
             {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
             {"surface_vertices", surface_.vertices.rows()},

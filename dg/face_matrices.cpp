@@ -12,24 +12,31 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
   const Eigen::Vector3d centre = minus.centre();
   const double scale = minus.scale();
   const FaceIntegrals face(polygon, degree, centre, scale);  // in the minus element's frame
-  const auto integrate = [&](const Polynomial& p, const Polynomial& q) { return face.product(p, q); };
 
-  // The face's functions: the minus element's, then the plus element's, with the sign
-  // of their jump (+1 minus, −1 plus) and the weight of their stress in the average.
-  std::vector<Polynomial> values;
-  std::vector<std::array<Polynomial, 3>> gradients;
+  // The face's functions: the minus element's, then the plus element's (columns), with the
+  // sign of their jump (+1 minus, −1 plus) and the weight of their stress in the average.
+  const int n = minus.size() + (plus ? plus->size() : 0);
+  const Eigen::Index count = monomial_count(degree);
+  Eigen::MatrixXd values(count, n);
+  std::array<Eigen::MatrixXd, 3> gradients{Eigen::MatrixXd(count, n), Eigen::MatrixXd(count, n),
+                                           Eigen::MatrixXd(count, n)};
   std::vector<double> jump_sign;
   std::vector<LameParameters> lame;  // of each function's side
   const double average = plus ? 0.5 : 1.0;
   for (const MonomialBasis* side : {&minus, plus}) {
     if (side == nullptr) continue;
     const FunctionsInFrame functions = in_frame(*side, centre, scale, degree);
-    values.insert(values.end(), functions.values.begin(), functions.values.end());
-    gradients.insert(gradients.end(), functions.gradients.begin(), functions.gradients.end());
-    jump_sign.insert(jump_sign.end(), functions.values.size(), side == &minus ? 1.0 : -1.0);
-    lame.insert(lame.end(), functions.values.size(), side == &minus ? minus_lame : plus_lame);
+    const auto first = static_cast<Eigen::Index>(jump_sign.size()), size = functions.values.cols();
+    values.middleCols(first, size) = functions.values;
+    for (int d = 0; d < 3; ++d) gradients[d].middleCols(first, size) = functions.gradients[d];
+    jump_sign.insert(jump_sign.end(), size, side == &minus ? 1.0 : -1.0);
+    lame.insert(lame.end(), size, side == &minus ? minus_lame : plus_lame);
   }
-  const auto n = static_cast<int>(values.size());
+  // ∫ φ_a φ_b and ∫ φ_a ∂_d φ_b of every pair (n × n each).
+  const Eigen::MatrixXd value_products = face.products(values, values);
+  std::array<Eigen::MatrixXd, 3> gradient_products;
+  if (flux == Flux::interior_penalty)
+    for (int d = 0; d < 3; ++d) gradient_products[d] = face.products(values, gradients[d]);
   Eigen::Matrix3d jump_tensor = penalty.tensor(normal);  // P T P
   for (int i = 0; i < 3; ++i)
     if (!components[i]) jump_tensor.row(i).setZero(), jump_tensor.col(i).setZero();
@@ -39,13 +46,13 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       // Penalty (26): η_f ∫ [[φ_a e_i]]ᵀ T [[φ_b e_k]] = s_a s_b T_ik ∫ φ_a φ_b (T = η_f I unsplit).
-      const double jumps = jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
+      const double jumps = jump_sign[a] * jump_sign[b] * value_products(a, b);
       parts.penalty.block<3, 3>(3 * a, 3 * b) += jumps * jump_tensor;
       if (flux != Flux::interior_penalty) continue;
       // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
       //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b, with u's side's λ, μ.
       Eigen::Vector3d value_times_gradient;  // ∫ φ_a ∂_d φ_b
-      for (int d = 0; d < 3; ++d) value_times_gradient[d] = integrate(values[a], gradients[b][d]);
+      for (int d = 0; d < 3; ++d) value_times_gradient[d] = gradient_products[d](a, b);
       const double factor = -jump_sign[a] * average;
       const double lambda = lame[b].lambda, mu = lame[b].mu;
       Eigen::MatrixXd& consistency = parts.consistency[jump_sign[b] > 0 ? 0 : 1];  // σ(u) of b's side

@@ -16,50 +16,39 @@ FunctionsInFrame in_frame(const MonomialBasis& basis, const Eigen::Vector3d& cen
   const Eigen::Vector3d offset = (centre - basis.centre()) / basis.scale();
   const double ratio = scale / basis.scale();
   Eigen::MatrixXd S(count, count);  // S(α, β): row α = basis monomial, column β = frame monomial
-  for (int beta = 0; beta < count; ++beta)
-    S.col(beta) = shift_moments(Eigen::VectorXd::Unit(count, beta), degree, offset, ratio);
-  FunctionsInFrame functions;
+  if (offset.isZero(0) && ratio == 1) {
+    S.setIdentity();  // the basis's own frame (a face's minus side)
+  } else {
+    for (int beta = 0; beta < count; ++beta)
+      S.col(beta) = shift_moments(Eigen::VectorXd::Unit(count, beta), degree, offset, ratio);
+  }
   const auto& exponents = basis.exponents();
+  FunctionsInFrame functions{Eigen::MatrixXd(count, basis.size()), {}};
+  for (int d = 0; d < 3; ++d) functions.gradients[d] = Eigen::MatrixXd::Zero(count, basis.size());
   for (int a = 0; a < basis.size(); ++a) {
-    functions.values.push_back(S.row(monomial_index(Exponent(exponents.row(a)))).transpose());
-    std::array<Polynomial, 3> gradient;
+    functions.values.col(a) = S.row(monomial_index(Exponent(exponents.row(a)))).transpose();
     for (int d = 0; d < 3; ++d) {
-      gradient[d] = Polynomial::Zero(count);
       if (exponents(a, d) == 0) continue;
       Exponent lowered = exponents.row(a);
       --lowered(d);
-      gradient[d] = exponents(a, d) / basis.scale() * S.row(monomial_index(lowered)).transpose();
+      functions.gradients[d].col(a) = exponents(a, d) / basis.scale() * S.row(monomial_index(lowered)).transpose();
     }
-    functions.gradients.push_back(gradient);
   }
+  // Combined functions φ_j = Σ_a C_aj m_a (dg/strong_conditions.hpp), and so their gradients.
   const Eigen::MatrixXd& combination = basis.combination();
   if (combination.size() == 0) return functions;
-  FunctionsInFrame combined;  // φ_j = Σ_a C_aj m_a, and so their gradients
-  for (int j = 0; j < basis.size(); ++j) {
-    Polynomial value = Polynomial::Zero(count);
-    std::array<Polynomial, 3> gradient{value, value, value};
-    for (int a = 0; a < basis.size(); ++a) {
-      value += combination(a, j) * functions.values[a];
-      for (int d = 0; d < 3; ++d) gradient[d] += combination(a, j) * functions.gradients[a][d];
-    }
-    combined.values.push_back(std::move(value));
-    combined.gradients.push_back(std::move(gradient));
-  }
-  return combined;
+  functions.values *= combination;
+  for (Eigen::MatrixXd& gradient : functions.gradients) gradient *= combination;
+  return functions;
 }
 
-
-FaceIntegrals::FaceIntegrals(const Eigen::MatrixXd& polygon, int degree, const Eigen::Vector3d& centre, double scale)
-    : moments_(planar_polygon_moments(polygon, 2 * degree, centre, scale)), exponents_(monomial_exponents(degree)) {}
-
-double FaceIntegrals::product(const Polynomial& p, const Polynomial& q) const {
-  double total = 0;
-  for (Eigen::Index i = 0; i < p.size(); ++i) {
-    if (p[i] == 0) continue;
-    for (Eigen::Index j = 0; j < q.size(); ++j)
-      if (q[j] != 0) total += p[i] * q[j] * moments_[monomial_index(Exponent(exponents_.row(i) + exponents_.row(j)))];
-  }
-  return total;
+FaceIntegrals::FaceIntegrals(const Eigen::MatrixXd& polygon, int degree, const Eigen::Vector3d& centre, double scale) {
+  const Eigen::VectorXd moments = planar_polygon_moments(polygon, 2 * degree, centre, scale);
+  const Eigen::Matrix<int, Eigen::Dynamic, 3> exponents = monomial_exponents(degree);
+  monomial_products_.resize(exponents.rows(), exponents.rows());
+  for (Eigen::Index i = 0; i < exponents.rows(); ++i)
+    for (Eigen::Index j = 0; j < exponents.rows(); ++j)
+      monomial_products_(i, j) = moments[monomial_index(Exponent(exponents.row(i) + exponents.row(j)))];
 }
 
 }  // namespace altfem::dg

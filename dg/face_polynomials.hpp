@@ -4,18 +4,16 @@
 // integrated exactly from the face's moments (Kaufmann et al. 2009 §5).
 #include <Eigen/Core>
 #include <array>
-#include <vector>
 
 #include "dg/monomial_basis.hpp"
 
 namespace altfem::dg {
 
-/// Coefficients over the frame's monomials up to a degree, in monomial_index order.
-using Polynomial = Eigen::VectorXd;
-
+/// Polynomials are coefficient columns over the frame's monomials up to a degree, in
+/// monomial_index order.
 struct FunctionsInFrame {
-  std::vector<Polynomial> values;                    ///< #functions
-  std::vector<std::array<Polynomial, 3>> gradients;  ///< #functions × 3: ∂/∂x_d (physical)
+  Eigen::MatrixXd values;                    ///< #frame monomials × #functions: each function's coefficients
+  std::array<Eigen::MatrixXd, 3> gradients;  ///< each #frame monomials × #functions: ∂/∂x_d (physical)
 };
 
 /// Each function of `basis` and its gradient as polynomials of degree ≤ `degree` in the
@@ -28,12 +26,14 @@ class FaceIntegrals {
 public:
   /// polygon: #vertices × 3, planar.
   FaceIntegrals(const Eigen::MatrixXd& polygon, int degree, const Eigen::Vector3d& centre, double scale);
-  /// ∫_f p q dA.
-  double product(const Polynomial& p, const Polynomial& q) const;
+  /// ∫_f p_a q_b dA for every column p_a of p and q_b of q (polynomial coefficients,
+  /// #frame monomials × #a and × #b): #a × #b, as pᵀ M q with M_ij = ∫ ξ^(α_i + α_j) dA.
+  Eigen::MatrixXd products(const Eigen::MatrixXd& p, const Eigen::MatrixXd& q) const {
+    return p.transpose() * (monomial_products_ * q);
+  }
 
 private:
-  Eigen::VectorXd moments_;
-  Eigen::Matrix<int, Eigen::Dynamic, 3> exponents_;
+  Eigen::MatrixXd monomial_products_;  // #frame monomials square: M
 };
 
 }  // namespace altfem::dg

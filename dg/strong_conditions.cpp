@@ -34,10 +34,8 @@ StrongCell strong_cell(int cell, const MonomialBasis& monomials, const std::vect
   Eigen::MatrixXd constraints_transposed(n, n * static_cast<Eigen::Index>(face_indices.size()));
   for (size_t k = 0; k < face_indices.size(); ++k) {
     const FaceIntegrals face(faces[face_indices[k]].polygon, monomials.degree(), monomials.centre(), monomials.scale());
-    for (int a = 0; a < n; ++a)
-      for (int b = 0; b < n; ++b)
-        constraints_transposed(a, static_cast<Eigen::Index>(k) * n + b) =
-            face.product(Polynomial::Unit(n, a), Polynomial::Unit(n, b));
+    const Eigen::MatrixXd unit = Eigen::MatrixXd::Identity(n, n);  // the monomials' coefficients
+    constraints_transposed.middleCols(static_cast<Eigen::Index>(k) * n, n) = face.products(unit, unit);
   }
   Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(constraints_transposed);
   qr.setThreshold(rank_tolerance);

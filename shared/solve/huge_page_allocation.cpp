@@ -2,6 +2,7 @@
 
 #include <sys/mman.h>
 
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <limits>
@@ -29,6 +30,14 @@ void* allocate_zeroed_with_huge_pages(std::size_t count, std::size_t size) {
   void* block = allocate_with_huge_pages(bytes);
   if (block != nullptr) std::memset(block, 0, bytes);
   return block;
+}
+
+void advise_huge_pages(void* block, std::size_t bytes) {
+  if (bytes < huge_page_threshold_bytes) return;
+  const auto first = reinterpret_cast<std::uintptr_t>(block);
+  const std::uintptr_t start = (first + huge_page_bytes - 1) / huge_page_bytes * huge_page_bytes;
+  const std::uintptr_t end = (first + bytes) / huge_page_bytes * huge_page_bytes;
+  if (start < end) madvise(reinterpret_cast<void*>(start), end - start, MADV_HUGEPAGE);
 }
 
 }  // namespace altfem

@@ -22,4 +22,10 @@ void* allocate_with_huge_pages(std::size_t bytes);
 /// Like std::calloc(count, size); release with std::free.
 void* allocate_zeroed_with_huge_pages(std::size_t count, std::size_t size);
 
+/// Asks for huge pages behind the whole 2 MiB pages inside an allocated block that is not
+/// touched yet (memory another allocator owns, such as Eigen's sparse storage), so that
+/// its first touch faults once per huge page. Blocks below huge_page_threshold_bytes are
+/// left alone; advice only.
+void advise_huge_pages(void* block, std::size_t bytes);
+
 }  // namespace altfem

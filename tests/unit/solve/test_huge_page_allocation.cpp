@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -46,18 +47,17 @@ TEST(HugePageAllocation, OverflowingSizeIsRefused) {
   EXPECT_EQ(allocate_zeroed_with_huge_pages(std::numeric_limits<std::size_t>::max() / 2, 4), nullptr);
 }
 
-// The point of the allocator: where the kernel grants huge pages on request, a
-// touched large block is backed by them (AnonHugePages in /proc/self/smaps).
-TEST(HugePageAllocation, KernelBacksLargeBlocksWithHugePages) {
+// The kernel's THP policy ("always [madvise] never"); empty when unknown.
+std::string huge_page_policy() {
   std::ifstream policy_file("/sys/kernel/mm/transparent_hugepage/enabled");
   std::string policy;
   std::getline(policy_file, policy);
-  if (policy.find("[never]") != std::string::npos || policy.empty())
-    GTEST_SKIP() << "transparent huge pages are disabled on this machine";
-  const std::size_t bytes = std::size_t{16} << 20;
-  auto* block = static_cast<char*>(allocate_with_huge_pages(bytes));
-  ASSERT_NE(block, nullptr);
-  std::memset(block, 1, bytes);
+  return policy;
+}
+
+// KiB of huge pages backing the mappings that overlap [block, block + bytes)
+// (AnonHugePages in /proc/self/smaps).
+long huge_page_kib(const void* block, std::size_t bytes) {
   const auto start = reinterpret_cast<std::uintptr_t>(block);
   std::ifstream smaps("/proc/self/smaps");
   std::string line;
@@ -74,8 +74,40 @@ TEST(HugePageAllocation, KernelBacksLargeBlocksWithHugePages) {
     long kib = 0;
     if (inside && std::sscanf(line.c_str(), "AnonHugePages: %ld kB", &kib) == 1) huge_kib += kib;
   }
+  return huge_kib;
+}
+
+// The point of the allocator: where the kernel grants huge pages on request, a
+// touched large block is backed by them.
+TEST(HugePageAllocation, KernelBacksLargeBlocksWithHugePages) {
+  const std::string policy = huge_page_policy();
+  if (policy.find("[never]") != std::string::npos || policy.empty())
+    GTEST_SKIP() << "transparent huge pages are disabled on this machine";
+  const std::size_t bytes = std::size_t{16} << 20;
+  auto* block = static_cast<char*>(allocate_with_huge_pages(bytes));
+  ASSERT_NE(block, nullptr);
+  std::memset(block, 1, bytes);
+  const long huge_kib = huge_page_kib(block, bytes);
   std::free(block);
   EXPECT_GE(huge_kib, 2048) << "no huge page backs a touched 16 MiB block (policy: " << policy << ")";
+}
+
+// Advice on memory another allocator owns (DG's sparse K): its whole huge pages inside
+// the block are backed by huge pages once touched.
+TEST(HugePageAllocation, AdvisedMallocBlocksGetHugePages) {
+  const std::string policy = huge_page_policy();
+  if (policy.find("[never]") != std::string::npos || policy.empty())
+    GTEST_SKIP() << "transparent huge pages are disabled on this machine";
+  const std::size_t bytes = std::size_t{16} << 20;
+  auto* block = static_cast<char*>(std::malloc(bytes));  // not aligned to a huge page
+  ASSERT_NE(block, nullptr);
+  advise_huge_pages(block, bytes);
+  std::memset(block, 1, bytes);
+  const long huge_kib = huge_page_kib(block, bytes);
+  EXPECT_EQ(block[bytes - 1], 1);
+  std::free(block);
+  EXPECT_GE(huge_kib, 2048) << "no huge page backs an advised 16 MiB block (policy: " << policy << ")";
+  advise_huge_pages(nullptr, 100);  // below the threshold: nothing to do
 }
 
 }  // namespace
