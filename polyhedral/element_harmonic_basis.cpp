@@ -40,7 +40,7 @@ struct BoundarySamples {
 // holds: a short edge of a cut cell gets none, its linear data is fitted through its
 // nodes); inside each face a grid of `face_spacing`, kept half a spacing away from the
 // face's edges.
-BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<FaceHarmonicCoordinates>& faces,
+BoundarySamples sample_boundary(const Polyhedron& polyhedron, std::span<const ElementFace> faces,
                                 double edge_spacing, double face_spacing) {
   const auto nodes = static_cast<int>(polyhedron.vertices.rows());
   std::vector<Eigen::Vector3d> face_normals;
@@ -108,12 +108,13 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
     if (inside.empty()) continue;
     Eigen::MatrixXd points(static_cast<Eigen::Index>(inside.size()), 3);
     for (size_t p = 0; p < inside.size(); ++p) points.row(static_cast<Eigen::Index>(p)) = inside[p].transpose();
-    const Eigen::MatrixXd coordinates = faces[f].evaluate(points);  // #points × #face nodes
+    const Eigen::MatrixXd coordinates = faces[f].coordinates->evaluate(points);  // #points × #face nodes
     for (size_t p = 0; p < inside.size(); ++p) {
       samples.points.push_back(inside[p]);
       samples.normals.push_back(normal);
       Eigen::VectorXd data = Eigen::VectorXd::Zero(nodes);
-      for (size_t k = 0; k < face.size(); ++k) data[face[k]] += coordinates(static_cast<Eigen::Index>(p), k);
+      for (size_t k = 0; k < face.size(); ++k)
+        data[faces[f].nodes[k]] += coordinates(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k));
       samples.data.push_back(data);
     }
   }
@@ -122,8 +123,32 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
 
 }  // namespace
 
-ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options) {
+namespace {
+
+// The element's own face coordinates, fitted on its loops: a temporary that outlives the
+// delegated constructor's call.
+struct OwnFaces {
+  std::vector<FaceHarmonicCoordinates> storage;
+  std::vector<ElementFace> faces;
+  OwnFaces(const Polyhedron& element, const MfsOptions& options) {
+    storage.reserve(element.faces.size());
+    for (const auto& face : element.faces) {
+      storage.emplace_back(face_polygon(element, face), options);
+      faces.push_back({&storage.back(), face});
+    }
+  }
+};
+
+}  // namespace
+
+ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options)
+    : ElementHarmonicBasis(element, OwnFaces(element, options).faces, options) {}
+
+ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<const ElementFace> faces,
+                                           const MfsOptions& options) {
   if (element.faces.empty()) throw std::invalid_argument("ElementHarmonicBasis: the polyhedron has no face");
+  if (faces.size() != element.faces.size())
+    throw std::invalid_argument("ElementHarmonicBasis: one face coordinate set per face expected");
   const auto nodes = static_cast<int>(element.vertices.rows());
   origin_ = element.vertices.colwise().mean().transpose();
   scale_ = (element.vertices.rowwise() - origin_.transpose()).rowwise().norm().maxCoeff();
@@ -139,17 +164,14 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   for (const auto& face : element.faces) area += polygon_area_vector(face_polygon(element, face)).norm();
   const double spacing = std::sqrt(area / 6) / (options.edge_samples + 1);
 
-  std::vector<FaceHarmonicCoordinates> faces;
-  faces.reserve(element.faces.size());
-  for (const auto& face : element.faces) faces.emplace_back(face_polygon(element, face), options);
   boundary_integrals_ = Eigen::MatrixXd::Zero(nodes, 3);
   for (size_t f = 0; f < element.faces.size(); ++f) {
     const Eigen::MatrixXd polygon = face_polygon(element, element.faces[f]);
     const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
     const PolyhedronRule rule = polygon_rule(polygon, 6);
-    const Eigen::VectorXd integrals = faces[f].evaluate(rule.points).transpose() * rule.weights;  // #face nodes
-    for (size_t k = 0; k < element.faces[f].size(); ++k)
-      boundary_integrals_.row(element.faces[f][k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
+    const Eigen::VectorXd integrals = faces[f].coordinates->evaluate(rule.points).transpose() * rule.weights;
+    for (size_t k = 0; k < element.faces[f].size(); ++k)  // #face nodes
+      boundary_integrals_.row(faces[f].nodes[k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
   }
 
   // Kernel centres (eq. (12)), dropped where they land inside the element or closer

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "polyhedral/harmonic_tabulation.hpp"
+#include "polyhedral/mesh_face_coordinates.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -17,10 +18,7 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
                                            const MfsOptions& options)
     : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
   const int cells = mesh.cell_count();
-  // An exception must not leave the OpenMP region: a cell whose basis fails is
-  // recorded (the first in cell order is reported) and its basis left empty.
-  std::atomic<int> failed_cell{cells};
-#pragma omp parallel for schedule(dynamic, 4)
+  std::vector<int> mfs_cells;
   for (int cell = 0; cell < cells; ++cell) {
     Cell& entry = cells_[cell];
     if (kind == HarmonicBasisKind::automatic) {
@@ -31,8 +29,20 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       }
     }
     entry.nodes = cell_nodes(mesh, cell);
+    mfs_cells.push_back(cell);
+  }
+  // Each face's coordinates once, shared by its two cells; then the cells.
+  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, mfs_cells, options);
+  // An exception must not leave the OpenMP region: a cell whose basis fails is
+  // recorded (the first in cell order is reported) and its basis left empty.
+  std::atomic<int> failed_cell{cells};
+  const auto count = static_cast<int>(mfs_cells.size());
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int k = 0; k < count; ++k) {
+    const int cell = mfs_cells[k];
+    Cell& entry = cells_[cell];
     try {
-      entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+      entry.mfs.emplace(cell_harmonic_basis(mesh, cell, faces, options));
       if (std::isfinite(entry.mfs->boundary_residual())) continue;
     } catch (const std::exception&) {
     }
