@@ -2,19 +2,33 @@
 
 #include <Eigen/QR>
 #include <cmath>
+#include <vector>
 
 namespace altfem::harmonic {
+
+namespace {
+
+// Columns per block of the blocked Householder QR. Eigen's HouseholderQR uses 48; on
+// the MFS systems (m ≈ 850, k ≈ 250) 16 is ~15% faster on one core, since the level-2
+// panel factorisation touches fewer columns at a time while the level-3 trailing
+// updates stay large (bench_polyhedral_element, harmonic_basis).
+constexpr Eigen::Index qr_block_columns = 16;
+
+}  // namespace
 
 double solve_mfs_least_squares(Eigen::Ref<Eigen::MatrixXd> system, Eigen::Ref<Eigen::MatrixXd> data,
                                const std::function<void()>& refill, Eigen::MatrixXd& coefficients) {
   const Eigen::Index m = system.rows(), k = system.cols();
   const auto entries = static_cast<double>(data.size());
-  // Qᵀ·data gives the coefficients from its top rows and the misfit from the rest.
-  const Eigen::HouseholderQR<Eigen::Ref<Eigen::MatrixXd>> qr(system);
-  const auto diagonal = qr.matrixQR().diagonal().cwiseAbs();
+  // Householder QR in place; Qᵀ·data gives the coefficients from its top rows and the
+  // misfit from the rest.
+  Eigen::VectorXd householder(k), workspace(k);
+  Eigen::internal::householder_qr_inplace_blocked<Eigen::Ref<Eigen::MatrixXd>, Eigen::VectorXd>::run(
+      system, householder, qr_block_columns, workspace.data());
+  const auto diagonal = system.diagonal().cwiseAbs();
   if (diagonal.minCoeff() > 1e-12 * diagonal.maxCoeff()) {
-    data.applyOnTheLeft(qr.householderQ().transpose());
-    coefficients = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>().solve(data.topRows(k));
+    data.applyOnTheLeft(Eigen::householderSequence(system, householder).transpose());
+    coefficients = system.topRows(k).triangularView<Eigen::Upper>().solve(data.topRows(k));
     return std::sqrt(data.bottomRows(m - k).squaredNorm() / entries);
   }
   refill();
