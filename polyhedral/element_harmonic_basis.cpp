@@ -295,4 +295,29 @@ Eigen::MatrixXd ElementHarmonicBasis::centres() const {
   return (centres_ * scale_).rowwise() + origin_.transpose();
 }
 
+void ElementHarmonicBasis::write(BinaryWriter& out) const {
+  out.matrix(origin_);
+  out.put<double>(scale_);
+  out.matrix(centres_);
+  out.matrix(coefficients_);
+  out.put<double>(boundary_residual_);
+  out.matrix(boundary_integrals_);
+}
+
+std::optional<ElementHarmonicBasis> ElementHarmonicBasis::read(BinaryReader& in) {
+  ElementHarmonicBasis basis;
+  if (!in.matrix(basis.origin_)) return std::nullopt;
+  const auto scale = in.get<double>();
+  if (!scale || !in.matrix(basis.centres_) || !in.matrix(basis.coefficients_)) return std::nullopt;
+  const auto residual = in.get<double>();
+  if (!residual || !in.matrix(basis.boundary_integrals_)) return std::nullopt;
+  basis.scale_ = *scale;
+  basis.boundary_residual_ = *residual;
+  const auto nodes = basis.coefficients_.cols();
+  if (basis.coefficients_.rows() != basis.centres_.rows() + 4 || basis.boundary_integrals_.rows() != nodes ||
+      basis.boundary_integrals_.cols() != 3)
+    return std::nullopt;
+  return basis;
+}
+
 }  // namespace altfem::harmonic

@@ -8,12 +8,14 @@
 // one factorisation serves every node. The linear polynomial makes the basis a partition
 // of unity that reproduces linear fields exactly, which is what rules out ghost forces.
 #include <Eigen/Core>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "polyhedral/face_harmonic_coordinates.hpp"
 #include "polyhedral/mfs_options.hpp"
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/mesh/polyhedral_cell_location.hpp"
 
 namespace altfem::harmonic {
@@ -56,7 +58,14 @@ public:
   /// harmonic_tabulation makes the quadrature of the gradients give.
   const Eigen::MatrixXd& boundary_integrals() const { return boundary_integrals_; }
 
+  /// Everything the basis evaluates from, bit for bit (harmonic_basis_cache).
+  void write(BinaryWriter& out) const;
+  /// What write wrote, or nullopt when it does not read back whole and consistent.
+  static std::optional<ElementHarmonicBasis> read(BinaryReader& in);
+
 private:
+  ElementHarmonicBasis() = default;
+
   Eigen::Vector3d origin_;
   double scale_ = 1;
   Eigen::MatrixX3d centres_;      // #centres × 3, local (x − origin) / scale

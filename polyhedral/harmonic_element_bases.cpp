@@ -122,4 +122,37 @@ bool HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::V
   return true;
 }
 
+void HarmonicElementBases::write(BinaryWriter& out) const {
+  out.put<std::int64_t>(static_cast<std::int64_t>(cells_.size()));
+  for (const Cell& cell : cells_) {
+    out.matrix(Eigen::Map<const Eigen::VectorXi>(cell.nodes.data(), static_cast<Eigen::Index>(cell.nodes.size())));
+    out.put<std::int32_t>(cell.plain ? static_cast<std::int32_t>(*cell.plain) : -1);
+    if (cell.mfs) cell.mfs->write(out);
+  }
+}
+
+std::optional<HarmonicElementBases> HarmonicElementBases::read(const PolyhedralMesh& mesh, BinaryReader& in) {
+  const auto count = in.get<std::int64_t>();
+  if (!count || *count != mesh.cell_count()) return std::nullopt;
+  std::vector<Cell> cells(static_cast<size_t>(*count));
+  for (Cell& cell : cells) {
+    Eigen::VectorXi nodes;
+    if (!in.matrix(nodes) || (nodes.size() > 0 && (nodes.minCoeff() < 0 || nodes.maxCoeff() >= mesh.nodes.rows())))
+      return std::nullopt;
+    cell.nodes.assign(nodes.begin(), nodes.end());
+    const auto plain = in.get<std::int32_t>();
+    if (!plain) return std::nullopt;
+    if (*plain == static_cast<std::int32_t>(ElementType::tet4) || *plain == static_cast<std::int32_t>(ElementType::hex8)) {
+      cell.plain = static_cast<ElementType>(*plain);
+      if (static_cast<int>(cell.nodes.size()) != element_corner_count(*cell.plain)) return std::nullopt;
+      continue;
+    }
+    if (*plain != -1) return std::nullopt;
+    cell.mfs = ElementHarmonicBasis::read(in);
+    if (!cell.mfs || cell.mfs->node_count() != static_cast<int>(cell.nodes.size())) return std::nullopt;
+  }
+  if (!in.at_end()) return std::nullopt;
+  return HarmonicElementBases(mesh, std::move(cells));
+}
+
 }  // namespace altfem::harmonic
