@@ -44,7 +44,9 @@ std::optional<CellRules> deserialise(const std::string& text, Eigen::Index cell_
     cell.residual = *residual;
     cell.simplification_failed = *failed != 0;
     cell.rule.strength = *strength;
-    if (!reader.matrix(cell.rule.points) || !reader.matrix(cell.rule.weights) || cell.rule.points.cols() != 3 ||
+    // An empty rule may keep 0 × 0 points.
+    if (!reader.matrix(cell.rule.points) || !reader.matrix(cell.rule.weights) ||
+        (cell.rule.points.size() > 0 && cell.rule.points.cols() != 3) ||
         cell.rule.weights.size() != cell.rule.points.rows())
       return std::nullopt;
   }
