@@ -204,6 +204,8 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   };
   std::vector<Eigen::Vector3d> centres;
   const double offset = options.offset * diameter;
+  const Eigen::AlignedBox3d bounds(element.vertices.colwise().minCoeff().transpose(),
+                                   element.vertices.colwise().maxCoeff().transpose());
   for (size_t s = 0; s < samples.points.size(); ++s) {
     const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
     if (std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& kept) {
@@ -211,7 +213,8 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
         }))
       continue;
     if (squared_distances(centre).minCoeff() < offset * offset / 4) continue;
-    if (std::abs(winding_number(element, centre)) > 0.5) continue;
+    // Outside the bounding box is outside; only the others need the winding number.
+    if (bounds.contains(centre) && std::abs(winding_number(element, centre)) > 0.5) continue;
     centres.push_back(centre);
   }
   centres_.resize(static_cast<Eigen::Index>(centres.size()), 3);
