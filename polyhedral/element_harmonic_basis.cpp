@@ -223,8 +223,10 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   const Eigen::Index c = centres_.rows();
   // The m × (c + 4) system and m × #nodes data live in per-thread buffers that only
   // grow: building bases cell after cell does not return them to the system and fault
-  // their pages in again each time.
-  thread_local std::vector<double> system_storage, data_storage;
+  // their pages in again each time. Aligned like Eigen's own matrices, so the products
+  // take the same path whatever the buffer's address: the same cell gives the same bits
+  // on any thread (what a cached basis is compared with).
+  thread_local std::vector<double, Eigen::aligned_allocator<double>> system_storage, data_storage;
   system_storage.resize(std::max(system_storage.size(), static_cast<size_t>(m * (c + 4))));
   data_storage.resize(std::max(data_storage.size(), static_cast<size_t>(m * nodes)));
   Eigen::Map<Eigen::MatrixXd> system(system_storage.data(), m, c + 4), data(data_storage.data(), m, nodes);
