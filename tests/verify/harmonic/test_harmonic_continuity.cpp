@@ -4,7 +4,7 @@
 // function, over every interior face between two cut cells of the bunny sliced at 8³.
 // The face functions are fitted once per mesh face and shared (mesh_face_coordinates),
 // so the boundary data agree exactly and what is left is each cell's 3D fit error; the
-// column "own faces" fits each cell on its own copy of its faces' functions instead (as
+// column "own faces" (at the default 5 samples) fits each cell on its own copy of its faces' functions instead (as
 // before sharing: the same polygon, but kernel centres kept in the order of each cell's
 // loop, so slightly different functions).
 #include <gtest/gtest.h>
@@ -70,16 +70,22 @@ TEST(HarmonicContinuity, MismatchAcrossSharedFacesOfCutCellsShrinksWithSamples) 
     options.edge_samples = samples;
     const HarmonicElementBases bases(mesh, HarmonicBasisKind::automatic, options);
     const Mismatch shared = shared_face_mismatch(mesh, bases, [&](int cell) { return bases.mfs_basis(cell); });
+    mismatch[samples] = shared.relative;
+    ASSERT_GT(shared.faces, 0);
+    if (samples != 5) {
+      std::printf("[ C0       ] %12d  %6d   %16.3e   %9s   %23.3e\n", samples, shared.faces, shared.relative, "",
+                  bases.max_boundary_residual());
+      continue;
+    }
+    // At the default samples, also each cell fitted on its own copy of its faces' functions.
     std::vector<std::optional<ElementHarmonicBasis>> own(static_cast<size_t>(mesh.cell_count()));
 #pragma omp parallel for schedule(dynamic, 4)
     for (int cell = 0; cell < mesh.cell_count(); ++cell)
       if (bases.mfs_basis(cell)) own[cell].emplace(cell_polyhedron(mesh, cell), options);
     const Mismatch separate =
         shared_face_mismatch(mesh, bases, [&](int cell) { return own[cell] ? &*own[cell] : nullptr; });
-    mismatch[samples] = shared.relative;
     std::printf("[ C0       ] %12d  %6d   %16.3e   %9.3e   %23.3e\n", samples, shared.faces, shared.relative,
                 separate.relative, bases.max_boundary_residual());
-    ASSERT_GT(shared.faces, 0);
     // Cells fitting their own copy drop kernel centres in the order of their own loop
     // (the neighbour's is reversed), so their face functions differ slightly; shared
     // ones are the same function on both sides.
