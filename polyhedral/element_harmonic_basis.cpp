@@ -221,15 +221,16 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();
 
   const Eigen::Index c = centres_.rows();
-  // The m × (c + 4) system and m × #nodes data live in per-thread buffers that only
-  // grow: building bases cell after cell does not return them to the system and fault
-  // their pages in again each time. Aligned like Eigen's own matrices, so the products
+  // The m × (c + 4) system and m × #nodes data live side by side in a per-thread buffer
+  // that only grows: building bases cell after cell does not return it to the system and
+  // fault its pages in again each time. Aligned like Eigen's own matrices, so the products
   // take the same path whatever the buffer's address: the same cell gives the same bits
   // on any thread (what a cached basis is compared with).
-  thread_local std::vector<double, Eigen::aligned_allocator<double>> system_storage, data_storage;
-  system_storage.resize(std::max(system_storage.size(), static_cast<size_t>(m * (c + 4))));
-  data_storage.resize(std::max(data_storage.size(), static_cast<size_t>(m * nodes)));
-  Eigen::Map<Eigen::MatrixXd> system(system_storage.data(), m, c + 4), data(data_storage.data(), m, nodes);
+  thread_local std::vector<double, Eigen::aligned_allocator<double>> storage;
+  storage.resize(std::max(storage.size(), static_cast<size_t>(m * (c + 4 + nodes))));
+  Eigen::Map<Eigen::MatrixXd> augmented(storage.data(), m, c + 4 + nodes);  // [system | data]
+  auto system = augmented.leftCols(c + 4);
+  auto data = augmented.rightCols(nodes);
   for (int d = 0; d < 3; ++d) collocation_coordinates[d] = (collocation_coordinates[d] - origin_[d]) / scale_;
   // Column by column: the system is column-major, so each kernel column is one
   // contiguous vectorised expression (row by row it was a stride-m scatter).
@@ -241,7 +242,7 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
         collocation.data.data(), m, nodes);
   };
   fill_system();
-  boundary_residual_ = solve_mfs_least_squares(system, data, fill_system, coefficients_);
+  boundary_residual_ = solve_mfs_least_squares(augmented, c + 4, fill_system, coefficients_);
 }
 
 void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorXd& values,

@@ -115,7 +115,9 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
   // Least squares against the boundary data at m ≈ 3n collocation points (eqs. (13)-(14)).
   const BoundarySamples collocation = sample_boundary(local, spacing / options.collocation_factor);
   const Eigen::Index m = collocation.points.rows(), c = centres_.rows();
-  Eigen::MatrixXd system(m, c + 3), data(m, n);
+  Eigen::MatrixXd augmented(m, c + 3 + n);  // [system | data]
+  auto system = augmented.leftCols(c + 3);
+  auto data = augmented.rightCols(n);
   const auto fill_system = [&] {
     kernel_rows(collocation.points, system);
     data.setZero();
@@ -127,7 +129,7 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
     }
   };
   fill_system();
-  solve_mfs_least_squares(system, data, fill_system, coefficients_);
+  solve_mfs_least_squares(augmented, c + 3, fill_system, coefficients_);
 }
 
 Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points) const {
