@@ -21,13 +21,15 @@ LinearDgDiscretization::LinearDgDiscretization(const Eigen::SparseMatrix<double>
                                                const Eigen::SparseMatrix<double>& mass,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
-                                               std::function<Eigen::VectorXd(double)> weak_condition_load)
+                                               std::function<Eigen::VectorXd(double)> weak_condition_load,
+                                               DirichletDofs strong)
     : stiffness_(on_union_pattern(stiffness, mass)),
       mass_(on_union_pattern(mass, stiffness)),
       function_integrals_(std::move(function_integrals)),
       element_dofs_(std::move(element_dofs)),
       explicit_mass_(mass_, element_dofs_),
-      weak_condition_load_(std::move(weak_condition_load)) {}
+      weak_condition_load_(std::move(weak_condition_load)),
+      strong_(std::move(strong)) {}
 
 Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& acceleration) const {
   Eigen::VectorXd load(dof_count());

@@ -3,10 +3,12 @@
 // ½ uᵀ K u with the exactly integrated stiffness K of volume and face terms (weak
 // Dirichlet conditions included), the exact consistent mass — block-diagonal by element,
 // so explicit steps invert it block by block (§4.3) — exact body-force loads, and the
-// boundary data of the weak conditions as a time-dependent load. No DOF is constrained.
+// boundary data of the weak conditions as a time-dependent load. Strongly imposed
+// conditions (dg/strong_conditions.hpp) constrain DOFs, as fem's nodal ones do.
 #include <functional>
 #include <vector>
 
+#include "shared/solve/dirichlet_dofs.hpp"
 #include "shared/solve/discretization.hpp"
 
 namespace altfem::dg {
@@ -19,10 +21,11 @@ class LinearDgDiscretization : public Discretization {
 public:
   /// stiffness, mass: #dofs square, symmetric; function_integrals: ∫ ρ φ_a dV per basis
   /// function (#dofs / 3); element_dofs: each element's DOFs (disjoint, covering all);
-  /// weak_condition_load: the Dirichlet data's load at a time (#dofs).
+  /// weak_condition_load: the Dirichlet data's load at a time (#dofs); strong: the DOFs
+  /// that strongly imposed conditions fix, and their values over time (none by default).
   LinearDgDiscretization(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
                          Eigen::VectorXd function_integrals, std::vector<std::vector<int>> element_dofs,
-                         std::function<Eigen::VectorXd(double)> weak_condition_load);
+                         std::function<Eigen::VectorXd(double)> weak_condition_load, DirichletDofs strong = {});
 
   int dof_count() const override { return static_cast<int>(stiffness_.rows()); }
   double energy(const Eigen::VectorXd& u) const override { return 0.5 * u.dot(stiffness_ * u); }
@@ -37,9 +40,11 @@ public:
   /// f_(3a+i) = a_i ∫ ρ φ_a dV.
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override { return weak_condition_load_(time); }
-  const std::vector<int>& constrained_dofs() const override { return no_dofs_; }
-  Eigen::VectorXd prescribed_displacement(double) const override { return {}; }
-  bool imposes_conditions_weakly() const override { return true; }
+  const std::vector<int>& constrained_dofs() const override { return strong_.dofs; }
+  Eigen::VectorXd prescribed_displacement(double time) const override {
+    return strong_.dofs.empty() ? Eigen::VectorXd() : strong_.prescribed(time);
+  }
+  bool imposes_conditions_weakly() const override { return strong_.dofs.empty(); }
   PreconditionerFactory preconditioner_factory() const override { return block_jacobi_factory(element_dofs_); }
 
 private:
@@ -48,7 +53,7 @@ private:
   std::vector<std::vector<int>> element_dofs_;
   BlockDiagonalMass explicit_mass_;
   std::function<Eigen::VectorXd(double)> weak_condition_load_;
-  std::vector<int> no_dofs_;
+  DirichletDofs strong_;
 };
 
 }  // namespace altfem::dg

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "dg/exact_element_matrices.hpp"
+#include "dg/strong_conditions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
@@ -60,14 +61,29 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
                                   std::to_string(cell_materials_.materials.size()) + " materials");
   offsets_.push_back(0);
+  std::vector<std::vector<int>> strong_faces(cells_.size());
+  for (size_t f = 0; f < faces_.size(); ++f)
+    if (faces_[f].strong && faces_[f].plus < 0 && faces_[f].condition >= 0)
+      strong_faces[faces_[f].minus].push_back(static_cast<int>(f));
   std::vector<Eigen::Triplet<double>> triplets;
   for (size_t c = 0; c < cells_.size(); ++c) {
     const Polyhedron& cell = cells_[c];
     const DgMaterial cell_material = material(static_cast<int>(c));
     bases_.push_back(cell_basis(cell, settings.degree));
+    if (!strong_faces[c].empty()) {
+      // The constrained and free combinations of the monomials as the cell's functions.
+      strong_cells_.push_back(strong_cell(static_cast<int>(c), bases_.back(), faces_, strong_faces[c]));
+      const StrongCell& strong = strong_cells_.back();
+      for (int j = 0; j < strong.constrained; ++j)
+        for (int i = 0; i < 3; ++i)
+          if (strong.components[i]) constrained_dofs_.push_back(3 * (offsets_.back() + j) + i);
+      bases_.back().combine(strong.combination);
+    }
     ElementMatrices matrices =
         exact_element_matrices(cell, bases_.back(), cell_material.lambda, cell_material.mu, cell_material.density);
-    volumes_.push_back(matrices.integrals[0]);
+    // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
+    const Eigen::MatrixXd& combination = bases_.back().combination();
+    volumes_.push_back(combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals));
     inverse_lengths_.push_back(surface_area(cell) / (6 * volumes_.back()));
     masses_.push_back(std::move(matrices.mass));
     integrals_.conservativeResize(offsets_.back() + bases_.back().size());
@@ -78,7 +94,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     offsets_.push_back(offsets_.back() + bases_.back().size());
   }
   for (const DgFace& face : faces_) {
-    if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
+    if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
     const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
     const DgMaterial minus_material = material(face.minus);
     const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
@@ -96,19 +112,41 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   stiffness_.setFromTriplets(triplets.begin(), triplets.end());
 }
 
-double DgLinearSystem::face_penalty(const DgFace& face) const {
+DgLinearSystem::~DgLinearSystem() = default;
+
+Eigen::VectorXd DgLinearSystem::constrained_values(const ConditionData& data) const {
+  Eigen::VectorXd values(static_cast<Eigen::Index>(constrained_dofs_.size()));
+  Eigen::Index next = 0;
+  for (const StrongCell& strong : strong_cells_) {
+    const MonomialBasis& basis = bases_[strong.cell];
+    const MonomialBasis monomials(basis.degree(), basis.centre(), basis.scale());
+    const Eigen::MatrixXd cell_values = dg::constrained_values(strong, monomials, faces_, data);
+    // In constrained_dofs_ order: combination j, then component.
+    for (int j = 0; j < strong.constrained; ++j)
+      for (Eigen::Index row = 0; row < cell_values.rows(); ++row) values[next++] = cell_values(row, j);
+  }
+  return values;
+}
+
+JumpPenalty DgLinearSystem::face_penalty(const DgFace& face) const {
   // Each side's own η over its length: eq. (20)'s vol(K)/area(f), or ℓ(K) (PenaltyScaling).
   const bool by_face = settings_.scaling == PenaltyScaling::face_area;
   const double area = by_face && face.polygon.rows() >= 3 ? polygon_area_vector(face.polygon).norm() : 0.0;
-  double penalty = 0;
-  for (int side : {face.minus, face.plus})
-    if (side >= 0) penalty += material(side).penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
   const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
-  return factor * penalty;
+  JumpPenalty penalty{0.0, 0.0};
+  for (int side : {face.minus, face.plus}) {
+    if (side < 0) continue;
+    const DgMaterial side_material = material(side);
+    const double eta = factor * side_material.penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
+    penalty.normal += eta;
+    penalty.tangential += side_material.tangential_fraction * eta;
+  }
+  return penalty;
 }
 
 DgMaterial DgLinearSystem::material(int cell) const {
-  if (cell_materials_.materials.empty()) return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty};
+  if (cell_materials_.materials.empty())
+    return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty, settings_.tangential_fraction};
   return cell_materials_.materials[material_id(cell)];
 }
 
@@ -190,12 +228,12 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool p
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
   for (const DgFace& face : faces_) {
-    if (face.plus >= 0 || face.condition < 0) continue;
+    if (face.plus >= 0 || face.condition < 0 || face.strong) continue;
     const MonomialBasis& basis = bases_[face.minus];
     const DgMaterial side = material(face.minus);
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
-    const double penalty = face_penalty(face);
     const Eigen::Vector3d& n = face.normal;
+    const Eigen::Matrix3d penalty = face_penalty(face).tensor(n);
     for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
       const Eigen::Vector3d x = rule.points.row(q).transpose();
       Eigen::Vector3d g = data(face.condition, x);
@@ -203,10 +241,12 @@ Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool p
         if (!face.components[i]) g[i] = 0;  // P g
       basis.evaluate(x, phi, gradients);
       for (int a = 0; a < basis.size(); ++a) {
-        // η_f g·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
+        // η_f (T Pg)·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
         // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
         const Eigen::Vector3d grad = gradients.row(a).transpose();
-        Eigen::Vector3d entry = penalty * phi[a] * g;
+        Eigen::Vector3d entry = phi[a] * (penalty * g);
+        for (int i = 0; i < 3; ++i)
+          if (!face.components[i]) entry[i] = 0;  // P T P g
         if (settings_.flux == Flux::interior_penalty && !penalty_only)
           entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
         load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;

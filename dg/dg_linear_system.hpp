@@ -16,6 +16,8 @@
 
 namespace altfem::dg {
 
+struct StrongCell;  // dg/strong_conditions.hpp
+
 struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
   Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
@@ -26,6 +28,9 @@ struct DgFace {
   int condition = -1;
   /// The components that condition prescribes (the others are free on this face).
   std::array<bool, 3> components{true, true, true};
+  /// The condition imposed strongly (dg/strong_conditions.hpp): no face term; the cell's
+  /// constrained coefficients are DOFs with prescribed values.
+  bool strong = false;
 };
 
 /// How the penalty of a face depends on the sizes of its two cells. Either way η_f
@@ -44,11 +49,14 @@ struct DgFace {
 enum class PenaltyScaling { face_area, cell_surface };
 inline constexpr std::array<std::string_view, 2> penalty_scaling_names{"face_area", "cell_surface"};
 
-/// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ).
+/// The material of a cell: Lamé parameters, density and η of eq. (20) (units of λ, μ),
+/// of which the fraction `tangential_fraction` penalises tangential jumps (JumpPenalty;
+/// 1: isotropic, 2μ/(λ + 2μ): Hansbo & Larson's split of a (λ + 2μ)-scaled η).
 struct DgMaterial {
   double lambda = 1, mu = 1;
   double density = 1;
   double penalty = 20;
+  double tangential_fraction = 1;
 };
 
 struct DgSettings {
@@ -61,6 +69,7 @@ struct DgSettings {
   /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
   double boundary_penalty_factor = 1;
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
+  double tangential_fraction = 1;  ///< DgMaterial::tangential_fraction
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -84,6 +93,7 @@ class DgLinearSystem {
 public:
   DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
                  DgCellMaterials cell_materials = {});
+  ~DgLinearSystem();
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
@@ -95,8 +105,9 @@ public:
   const Polyhedron& cell(int index) const { return cells_[index]; }
   const std::vector<DgFace>& faces() const { return faces_; }
   Flux flux() const { return settings_.flux; }
-  /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary face).
-  double face_penalty(const DgFace& face) const;
+  /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary
+  /// face), its normal and tangential parts (each side's η times its tangential_fraction).
+  JumpPenalty face_penalty(const DgFace& face) const;
   int offset(int cell) const { return offsets_[cell]; }
   double volume(int cell) const { return volumes_[cell]; }
   /// The index into cell_materials.materials of a cell's material (0 with a single material).
@@ -114,6 +125,11 @@ public:
   /// data of degree ≤ k + 3). `penalty_only`: the η_f ∫ Pg·v part alone (stiffness
   /// warping rotates the consistency part with the boundary element, §6).
   Eigen::VectorXd dirichlet_load(const ConditionData& data, bool penalty_only = false) const;
+  /// The DOFs that strongly imposed conditions fix (sorted), and their values for the
+  /// data g = data(condition, x) (in the same order): the constrained coefficients of the
+  /// prescribed components of each cell with strong faces (dg/strong_conditions.hpp).
+  const std::vector<int>& constrained_dofs() const { return constrained_dofs_; }
+  Eigen::VectorXd constrained_values(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
   /// The coefficients of a polynomial field of degree ≤ the basis degree (exact), by
@@ -130,6 +146,8 @@ private:
   DgSettings settings_;
   DgCellMaterials cell_materials_;
   std::vector<MonomialBasis> bases_;
+  std::vector<StrongCell> strong_cells_;  // the cells with strongly constrained faces
+  std::vector<int> constrained_dofs_;
   std::vector<double> volumes_;
   std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
   std::vector<Eigen::MatrixXd> masses_;     // per cell, #functions square

@@ -77,14 +77,15 @@ public:
     mesh_facts_ = std::move(built.facts);
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
-    const std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
+    std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
+    if (spec_.strong_conditions) hold_strongly(scene, faces);
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
     const DgMaterial& first = cell_materials_.materials.front();
-    settings_ = {spec_.degree, spec_.flux, first.penalty, first.lambda, first.mu, first.density, boundary_factor(scene),
-                 spec_.scaling};
+    settings_ = {spec_.degree, spec_.flux,    first.penalty, first.lambda, first.mu,
+                 first.density, boundary_factor(scene), spec_.scaling, first.tangential_fraction};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
@@ -110,8 +111,13 @@ public:
           [this](double time) { return weak_condition_load(time, true); }, moving_data());
       discretization_ = linear_.get();
     } else if (linear()) {
+      DirichletDofs strong{system_->constrained_dofs(), [this](double time) {
+                             return system_->constrained_values([&](int condition, const Eigen::Vector3d& x) {
+                               return motions_[condition].displacement(x, time);
+                             });
+                           }};
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
-                                                         std::move(element_dofs), external_force);
+                                                         std::move(element_dofs), external_force, std::move(strong));
       discretization_ = linear_.get();
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
@@ -176,9 +182,11 @@ public:
               {"value", spec_.penalty_value * (1 << doublings_)},
               {"doublings", doublings_},
               {"eta_pa", settings_.penalty},
-              {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]}}},
+              {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
+              {"lame_split", spec_.lame_split}}},
             {"smallest_cell_volume", smallest_cell_volume()},
             {"warping", spec_.warping},
+            {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
             {"surface_vertices", surface_.vertices.rows()},
             {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
     const BasisEmbedding* located = embedding_ ? embedding_.get() : stitched_ ? &stitched_->interpolation() : nullptr;
@@ -206,11 +214,30 @@ private:
     DgCellMaterials result;
     for (size_t m = 0; m < scene.materials.size(); ++m) {
       const LameParameters lame = materials_.pointers()[m]->lame();
-      const double eta = face_penalty(spec_, scene.materials[m].youngs_modulus, lame.lambda, lame.mu).eta;
-      result.materials.push_back({lame.lambda, lame.mu, scene.materials[m].density, eta});
+      const FacePenalty penalty = face_penalty(spec_, scene.materials[m].youngs_modulus, lame.lambda, lame.mu);
+      result.materials.push_back(
+          {lame.lambda, lame.mu, scene.materials[m].density, penalty.eta, penalty.tangential_fraction});
     }
     result.ids = materials_.ids_of(centroids);
     return result;
+  }
+
+  // Marks the Dirichlet faces strong; a cell's strong faces must prescribe the same
+  // components (one change of basis per cell, dg/strong_conditions.hpp).
+  void hold_strongly(const Scene& scene, std::vector<DgFace>& faces) const {
+    std::vector<int> first_condition(mesh_.cell_count(), -1);
+    for (DgFace& face : faces) {
+      if (face.plus >= 0 || face.condition < 0) continue;
+      face.strong = true;
+      int& first = first_condition[face.minus];
+      if (first < 0) first = face.condition;
+      if (scene.dirichlet[first].components != face.components)
+        throw InputError(input_message(
+            scene.file.string(), "/discretization/dg/conditions",
+            "'strong' needs the conditions on one cell's faces to prescribe the same components, but cell " +
+                std::to_string(face.minus) + " touches " + scene.dirichlet[first].pointer + " and " +
+                scene.dirichlet[face.condition].pointer + " (use 'weak')"));
+    }
   }
 
   // c_f of Dirichlet faces: the convention's, the same for every material.

@@ -114,6 +114,16 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
     validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite")) penalty["double_until_definite"] = true;
+  if (dg["conditions"] == "strong" && (!linear || dg["warping"].get<bool>()))
+    validator.fail(pointer + "/conditions", std::string("'strong' constrains the exact linear system's coefficients: ") +
+                                                (linear ? "not with warping" : "material 'linear' only, got '" + nonlinear_model + "'") +
+                                                " (use 'weak')");
+  // Hansbo & Larson's split by default where the penalty is (λ + 2μ)-scaled: without it,
+  // k = 1 locks at ν = 0.499 (tests/verify/dg/test_locking.cpp).
+  if (!penalty.contains("lame_split")) penalty["lame_split"] = convention != PenaltyConvention::kaufmann;
+  if (penalty["lame_split"].get<bool>() && convention == PenaltyConvention::kaufmann)
+    validator.fail(pointer + "/penalty/lame_split",
+                   "splits a (λ + 2μ)-scaled penalty, but convention 'kaufmann' scales with E (use 'mfem' or 'dealii')");
 }
 
 const scene_schema::ObjectRule penalty_rule{
@@ -121,7 +131,8 @@ const scene_schema::ObjectRule penalty_rule{
      {.key = "value", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "double_until_definite", .type = ValueType::boolean},
      {.key = "scaling", .type = ValueType::string, .default_value = "cell_surface",
-      .choices = scene_schema::names(penalty_scaling_names)}}};
+      .choices = scene_schema::names(penalty_scaling_names)},
+     {.key = "lame_split", .type = ValueType::boolean}}};
 
 // The element names the `fem` block accepts (the same volume meshes are converted).
 std::vector<std::string_view> fem_element_names() {
@@ -144,6 +155,8 @@ const scene_schema::ObjectRule& dg_rule() {
         .upper = scene_schema::Bound{3.0, true}},
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
+       {.key = "conditions", .type = ValueType::string, .default_value = "weak",
+        .choices = scene_schema::names(condition_imposition_names)},
        {.key = "embedding", .type = ValueType::string, .default_value = "mls",
         .choices = scene_schema::names(embedding_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
@@ -173,7 +186,9 @@ DgSpec dg_spec(const Scene& scene) {
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
   spec.scaling = static_cast<PenaltyScaling>(index_of(penalty_scaling_names, penalty["scaling"].get<std::string>()));
+  spec.lame_split = penalty["lame_split"].get<bool>();
   spec.warping = dg["warping"].get<bool>();
+  spec.strong_conditions = dg["conditions"] == "strong";
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
@@ -191,12 +206,14 @@ DgSpec dg_spec(const Scene& scene) {
 
 FacePenalty face_penalty(const DgSpec& spec, double youngs_modulus, double lambda, double mu) {
   const double k = spec.degree, stiffness = lambda + 2 * mu;
+  // Hansbo & Larson 2002: of κ(λ + 2μ), the 2μ part on the whole jump, λ on its normal part.
+  const double tangential_fraction = spec.lame_split ? 2 * mu / stiffness : 1.0;
   switch (spec.convention) {
-    case PenaltyConvention::kaufmann: return {spec.penalty_value * youngs_modulus, 1.0};
-    case PenaltyConvention::mfem: return {spec.penalty_value * stiffness / 2, 2.0};
-    case PenaltyConvention::dealii: return {spec.penalty_value * k * (k + 1) * stiffness / 2, 2.0};
+    case PenaltyConvention::kaufmann: return {spec.penalty_value * youngs_modulus, 1.0, 1.0};
+    case PenaltyConvention::mfem: return {spec.penalty_value * stiffness / 2, 2.0, tangential_fraction};
+    case PenaltyConvention::dealii: return {spec.penalty_value * k * (k + 1) * stiffness / 2, 2.0, tangential_fraction};
   }
-  return {spec.penalty_value * youngs_modulus, 1.0};
+  return {spec.penalty_value * youngs_modulus, 1.0, 1.0};
 }
 
 }  // namespace altfem::dg

@@ -15,6 +15,8 @@
 //   dealii    value γ (default 1, deal.II step-74): γ·k(k+1)·(λ+2μ)·½(1/h⁻ + 1/h⁺) with the
 //             cell extent h = vol(K)/area(f) (1/h on a boundary face), i.e.
 //             η = γ·k(k+1)(λ+2μ)/2, c_f = 2.
+// With `lame_split` (mfem and dealii) the λ part of that (λ + 2μ)-scaled η penalises the
+// normal jump only and 2μ the whole jump (Hansbo & Larson 2002): locking-free as ν → ½.
 // With `double_until_definite` (default for kaufmann only) η is doubled until K is
 // positive definite, as Kaufmann et al. do (§8, "we simply start with a low value and
 // double it"); the η used is reported in summary.json (facts).
@@ -30,6 +32,9 @@ namespace altfem::dg {
 enum class PenaltyConvention { kaufmann, mfem, dealii };
 inline constexpr std::array<std::string_view, 3> penalty_convention_names{"kaufmann", "mfem", "dealii"};
 inline constexpr std::array<std::string_view, 2> flux_names{"interior_penalty", "babuska_zlamal"};
+/// Dirichlet conditions through the boundary faces' flux terms (§4.2), or as constraints on
+/// the coefficients of the cells they touch (dg/strong_conditions.hpp).
+inline constexpr std::array<std::string_view, 2> condition_imposition_names{"weak", "strong"};
 /// How the scene surface follows the discontinuous field (Kaufmann et al. 2009 §7): each
 /// vertex by its own element's polynomial (the mean on shared faces), nodal averages
 /// (eq. (30)) interpolated by the converted mesh's C⁰ basis, or MLS (eqs. (31)-(32)).
@@ -43,8 +48,12 @@ struct DgSpec {
   double penalty_value = 20;
   bool double_until_definite = true;
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
+  /// The λ part of a (λ + 2μ)-scaled penalty on normal jumps only (Hansbo & Larson 2002).
+  bool lame_split = false;
   /// Corotated stiffness warping (Kaufmann et al. 2009 §6), linear material only.
   bool warping = false;
+  /// Dirichlet conditions imposed strongly (linear material without warping only).
+  bool strong_conditions = false;
   Embedding embedding = Embedding::mls;
   /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
   /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
@@ -58,8 +67,9 @@ const MethodSceneBlock& dg_scene_block();
 DgSpec dg_spec(const Scene& scene);
 
 struct FacePenalty {
-  double eta;              ///< η of eq. (20) in the units of the stiffness (Pa)
-  double boundary_factor;  ///< c_f on Dirichlet faces
+  double eta;                  ///< η of eq. (20) in the units of the stiffness (Pa)
+  double boundary_factor;      ///< c_f on Dirichlet faces
+  double tangential_fraction;  ///< of η on tangential jumps: 2μ/(λ + 2μ) with lame_split, else 1
 };
 
 /// The penalty of `spec`'s convention for a material (E, λ, μ), before any doubling.

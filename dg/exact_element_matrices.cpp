@@ -34,6 +34,16 @@ ElementMatrices exact_element_matrices(const Polyhedron& element, const Monomial
           matrices.stiffness(3 * a + i, 3 * b + k) = (i == k ? mu * G.trace() : 0.0) + mu * G(k, i) + lambda * G(i, k);
     }
   }
+  const Eigen::MatrixXd& combination = basis.combination();
+  if (combination.size() == 0) return matrices;
+  // Functions φ_j = Σ_a C_aj m_a: each matrix transforms as Cᵀ A C, the stiffness per component.
+  Eigen::MatrixXd vector_combination = Eigen::MatrixXd::Zero(3 * n, 3 * n);
+  for (int a = 0; a < n; ++a)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < 3; ++i) vector_combination(3 * a + i, 3 * j + i) = combination(a, j);
+  matrices.stiffness = vector_combination.transpose() * matrices.stiffness * vector_combination;
+  matrices.mass = combination.transpose() * matrices.mass * combination;
+  matrices.integrals = combination.transpose() * matrices.integrals;
   return matrices;
 }
 

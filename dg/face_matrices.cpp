@@ -7,7 +7,7 @@ namespace altfem::dg {
 FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                         const MonomialBasis& minus, const MonomialBasis* plus,
                                         const LameParameters& minus_lame, const LameParameters& plus_lame,
-                                        double penalty, Flux flux, const std::array<bool, 3>& components) {
+                                        const JumpPenalty& penalty, Flux flux, const std::array<bool, 3>& components) {
   const int degree = std::max(minus.degree(), plus ? plus->degree() : 0);
   const Eigen::Vector3d centre = minus.centre();
   const double scale = minus.scale();
@@ -30,15 +30,17 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
     lame.insert(lame.end(), functions.values.size(), side == &minus ? minus_lame : plus_lame);
   }
   const auto n = static_cast<int>(values.size());
+  Eigen::Matrix3d jump_tensor = penalty.tensor(normal);  // P T P
+  for (int i = 0; i < 3; ++i)
+    if (!components[i]) jump_tensor.row(i).setZero(), jump_tensor.col(i).setZero();
   FaceMatrixParts parts;
   parts.penalty = Eigen::MatrixXd::Zero(3 * n, 3 * n);
   parts.consistency = {parts.penalty, parts.penalty};
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
-      // Penalty (26): η_f ∫ [[φ_a e_i]]·[[φ_b e_k]] = η_f s_a s_b δ_ik ∫ φ_a φ_b.
-      const double jumps = penalty * jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
-      for (int i = 0; i < 3; ++i)
-        if (components[i]) parts.penalty(3 * a + i, 3 * b + i) += jumps;
+      // Penalty (26): η_f ∫ [[φ_a e_i]]ᵀ T [[φ_b e_k]] = s_a s_b T_ik ∫ φ_a φ_b (T = η_f I unsplit).
+      const double jumps = jump_sign[a] * jump_sign[b] * integrate(values[a], values[b]);
+      parts.penalty.block<3, 3>(3 * a, 3 * b) += jumps * jump_tensor;
       if (flux != Flux::interior_penalty) continue;
       // Consistency (24): −∫ [[v]]·{σ(u)}n with v = φ_a e_i, u = φ_b e_k:
       //   (σ(u)n)_i = μ(δ_ik ∇φ_b·n + n_k ∂_iφ_b) + λ n_i ∂_kφ_b, with u's side's λ, μ.
@@ -60,7 +62,7 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
 
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
                                   const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
-                                  const LameParameters& plus_lame, double penalty, Flux flux,
+                                  const LameParameters& plus_lame, const JumpPenalty& penalty, Flux flux,
                                   const std::array<bool, 3>& components) {
   const FaceMatrixParts parts =
       exact_face_matrix_parts(polygon, normal, minus, plus, minus_lame, plus_lame, penalty, flux, components);

@@ -32,7 +32,20 @@ FunctionsInFrame in_frame(const MonomialBasis& basis, const Eigen::Vector3d& cen
     }
     functions.gradients.push_back(gradient);
   }
-  return functions;
+  const Eigen::MatrixXd& combination = basis.combination();
+  if (combination.size() == 0) return functions;
+  FunctionsInFrame combined;  // φ_j = Σ_a C_aj m_a, and so their gradients
+  for (int j = 0; j < basis.size(); ++j) {
+    Polynomial value = Polynomial::Zero(count);
+    std::array<Polynomial, 3> gradient{value, value, value};
+    for (int a = 0; a < basis.size(); ++a) {
+      value += combination(a, j) * functions.values[a];
+      for (int d = 0; d < 3; ++d) gradient[d] += combination(a, j) * functions.gradients[a][d];
+    }
+    combined.values.push_back(std::move(value));
+    combined.gradients.push_back(std::move(gradient));
+  }
+  return combined;
 }
 
 

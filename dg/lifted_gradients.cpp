@@ -2,6 +2,7 @@
 
 #include <Eigen/Cholesky>
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 #include <string>
 
@@ -158,8 +159,17 @@ LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strengt
   }
   std::vector<LiftedCell> cells(static_cast<size_t>(system.cell_count()));
   // A cell's lifting costs a few face and volume rules and one small solve: parallel over cells.
+  std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 16)
-  for (int cell = 0; cell < system.cell_count(); ++cell) cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    try {
+      cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
+    } catch (...) {
+#pragma omp critical(altfem_lift_cells)
+      if (!failure) failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
   LiftedDgCells result;
   for (int cell = 0; cell < system.cell_count(); ++cell) {
     LiftedCell& lifted = cells[cell];

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace altfem::dg {
 
@@ -31,6 +32,17 @@ void MonomialBasis::evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, 
       gradients(a, d) = derivative;
     }
   }
+  if (combination_.size() == 0) return;
+  values = combination_.transpose() * values;
+  gradients = combination_.transpose() * gradients;
+}
+
+void MonomialBasis::combine(Eigen::MatrixXd combination) {
+  if (combination.rows() != size() || combination.cols() != size())
+    throw std::invalid_argument("MonomialBasis::combine: the combination must be " + std::to_string(size()) +
+                                " square, got " + std::to_string(combination.rows()) + " x " +
+                                std::to_string(combination.cols()));
+  combination_ = std::move(combination);
 }
 
 }  // namespace altfem::dg

@@ -22,11 +22,20 @@ public:
   /// φ_a(x) (#functions) and ∇φ_a(x) (#functions × 3).
   void evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, Eigen::MatrixXd& gradients) const;
 
+  /// Replaces the functions by combinations of the monomials m: φ_j = Σ_a C_aj m_a
+  /// (C: #functions square, invertible), e.g. the constrained and free directions of a
+  /// strongly imposed condition (dg/strong_conditions.hpp). evaluate() and the exact
+  /// integrals then refer to the φ_j; exponents() still lists the monomials m_a.
+  void combine(Eigen::MatrixXd combination);
+  /// C, or empty while the functions are the monomials themselves.
+  const Eigen::MatrixXd& combination() const { return combination_; }
+
 private:
   int degree_;
   Eigen::Vector3d centre_;
   double scale_;
   Eigen::Matrix<int, Eigen::Dynamic, 3> exponents_;
+  Eigen::MatrixXd combination_;
 };
 
 }  // namespace altfem::dg

@@ -31,18 +31,17 @@ void tabulate_basis(const MonomialBasis& basis, const Eigen::MatrixXd& points, E
   }
 }
 
-// The faces that carry a term (interior, or with a Dirichlet condition), their η_f and
-// the components each penalises.
+// The faces that carry a term (interior, or with a Dirichlet condition) and their
+// penalty tensors P T P (JumpPenalty, P the components a condition prescribes).
 struct FaceTerms {
   TabulatedFaces faces;
-  std::vector<double> penalties;            // η_f per face
-  std::vector<Eigen::RowVector3d> masks;    // the penalised components per face
+  std::vector<Eigen::Matrix3d> penalties;
 };
 
 FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
   FaceTerms terms;
   for (const DgFace& face : system.faces()) {
-    if (face.plus < 0 && face.condition < 0) continue;
+    if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;
     const PolyhedronRule rule = polygon_rule(face.polygon, strength);
     std::vector<int> functions = cell_functions(system, face.minus);
     const Eigen::Index minus_count = static_cast<Eigen::Index>(functions.size());
@@ -56,8 +55,8 @@ FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
     const Eigen::MatrixXd normals = face.normal.transpose().replicate(points, 1);
     terms.faces.add(functions, std::span<const double>(rule.weights.data(), points), normals, values_minus,
                     values_plus, gradients_minus, gradients_plus, face.minus, face.plus);
-    terms.penalties.push_back(system.face_penalty(face));
-    terms.masks.emplace_back(face.components[0], face.components[1], face.components[2]);
+    const Eigen::Matrix3d mask = Eigen::Vector3d(face.components[0], face.components[1], face.components[2]).asDiagonal();
+    terms.penalties.push_back(mask * system.face_penalty(face).tensor(face.normal) * mask);
   }
   return terms;
 }
@@ -108,7 +107,7 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   FaceTerms terms = tabulate_faces(system, strength);
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
   parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
-      *result.faces, JumpPenaltyKernel(std::move(terms.penalties), std::move(terms.masks))));
+      *result.faces, JumpPenaltyKernel(std::move(terms.penalties))));
   parts.conditions_weakly = true;
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
   // A lifted cell lists its neighbours' functions too (with zero values): the blocks are the cells'.

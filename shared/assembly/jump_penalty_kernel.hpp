@@ -7,6 +7,9 @@
 // part of a weakly imposed homogeneous Dirichlet condition; its data part
 // η_f ∫_f g·v dA is a load (Discretization::external_force). A condition on some
 // components only penalises those: E_f = η_f / 2 ∫_f |P [[u]]|² with P = diag(mask_f).
+// In general the penalty is a symmetric 3 × 3 tensor per face, E_f = ½ ∫_f [[u]]ᵀ T_f [[u]]
+// (DG's penalty split into normal and tangential parts, dg/face_matrices.hpp JumpPenalty);
+// η_f with a mask is T_f = η_f P.
 #include <vector>
 
 #include "shared/assembly/local_matrices.hpp"
@@ -16,46 +19,55 @@ namespace altfem {
 
 class JumpPenaltyKernel {
 public:
-  /// penalties: η_f per face of the TabulatedFaces this kernel is assembled over;
-  /// masks: per face, 1 for each penalised component and 0 for the others (empty: all 1).
-  explicit JumpPenaltyKernel(std::vector<double> penalties, std::vector<Eigen::RowVector3d> masks = {})
-      : penalties_(std::move(penalties)), masks_(std::move(masks)) {}
+  /// tensors: T_f per face of the TabulatedFaces this kernel is assembled over (symmetric).
+  explicit JumpPenaltyKernel(std::vector<Eigen::Matrix3d> tensors) : tensors_(std::move(tensors)) {}
+
+  /// penalties: η_f per face; masks: per face, 1 for each penalised component and 0 for
+  /// the others (empty: all 1).
+  explicit JumpPenaltyKernel(const std::vector<double>& penalties, const std::vector<Eigen::RowVector3d>& masks = {}) {
+    for (size_t f = 0; f < penalties.size(); ++f)
+      tensors_.push_back(penalties[f] *
+                         (masks.empty() ? Eigen::Matrix3d::Identity() : Eigen::Matrix3d(masks[f].asDiagonal())));
+  }
 
   bool is_quadratic() const { return true; }
 
   template <int N>
   double energy(const FaceView& face, const kernel::NodeMatrix<N>& u) const {
     double total = 0;
-    const Eigen::RowVector3d m = mask(face);
-    for (int q = 0; q < face.point_count(); ++q) total += face.weights[q] * jump(face, u, q).cwiseProduct(m).squaredNorm();
-    return 0.5 * penalties_[face.index] * total;
+    const Eigen::Matrix3d& tensor = tensors_[face.index];
+    for (int q = 0; q < face.point_count(); ++q) {
+      const Eigen::RowVector3d j = jump(face, u, q);
+      total += face.weights[q] * j.dot(j * tensor);
+    }
+    return 0.5 * total;
   }
 
-  /// f_a = η_f Σ_q w_q j_a(q) P[[u]]_q with j_a = φ_a⁻ − φ_a⁺.
+  /// f_a = Σ_q w_q j_a(q) T_f [[u]]_q with j_a = φ_a⁻ − φ_a⁺.
   template <int N>
   void forces(const FaceView& face, const kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) const {
     forces.setZero();
-    const Eigen::RowVector3d m = mask(face);
+    const Eigen::Matrix3d& tensor = tensors_[face.index];
     for (int q = 0; q < face.point_count(); ++q) {
-      const Eigen::RowVector3d scaled = penalties_[face.index] * face.weights[q] * jump(face, u, q).cwiseProduct(m);
+      const Eigen::RowVector3d scaled = face.weights[q] * (jump(face, u, q) * tensor);
       for (int a = 0; a < face.basis_count(); ++a)
         forces.row(a) += (face.values_minus(q, a) - face.values_plus(q, a)) * scaled;
     }
   }
 
-  /// K_(3a+i)(3b+k) = η_f Σ_q w_q j_a(q) j_b(q) δ_ik P_ii.
+  /// K_(3a+i)(3b+k) = Σ_q w_q j_a(q) j_b(q) (T_f)_ik.
   template <int N>
   void stiffness(const FaceView& face, const kernel::NodeMatrix<N>&, kernel::LocalMatrix<N>& stiffness) const {
     stiffness.setZero();
     const int n = face.basis_count();
-    const Eigen::RowVector3d m = mask(face);
+    const Eigen::Matrix3d& tensor = tensors_[face.index];
     for (int q = 0; q < face.point_count(); ++q) {
-      const double scale = penalties_[face.index] * face.weights[q];
+      const double scale = face.weights[q];
       for (int b = 0; b < n; ++b) {
         const double jump_b = face.values_minus(q, b) - face.values_plus(q, b);
         for (int a = 0; a < n; ++a) {
           const double entry = scale * (face.values_minus(q, a) - face.values_plus(q, a)) * jump_b;
-          for (int i = 0; i < 3; ++i) stiffness(3 * a + i, 3 * b + i) += entry * m[i];
+          stiffness.template block<3, 3>(3 * a, 3 * b) += entry * tensor;
         }
       }
     }
@@ -71,12 +83,7 @@ private:
     return value;
   }
 
-  Eigen::RowVector3d mask(const FaceView& face) const {
-    return masks_.empty() ? Eigen::RowVector3d::Ones() : masks_[face.index];
-  }
-
-  std::vector<double> penalties_;
-  std::vector<Eigen::RowVector3d> masks_;
+  std::vector<Eigen::Matrix3d> tensors_;
 };
 
 }  // namespace altfem

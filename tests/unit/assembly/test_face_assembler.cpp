@@ -34,7 +34,7 @@ using test::random_vector;
 
 TEST(FaceAssembler, JumpPenaltyBetweenTwoCubesMatchesHandComputation) {
   const TabulatedFaces faces = test::two_cube_face(3);
-  const test::FaceTerm<JumpPenaltyKernel> term(faces, JumpPenaltyKernel({penalty}));
+  const test::FaceTerm<JumpPenaltyKernel> term(faces, JumpPenaltyKernel(std::vector<double>{penalty}));
   ASSERT_EQ(term.dof_count(), 24);
   const Eigen::VectorXd u = random_vector(24, 5);
 
@@ -124,13 +124,23 @@ TEST(FaceAssembler, JumpPenaltyDerivativesMatchFiniteDifferencesOnMixedSizes) {
   expect_derivatives_match_finite_differences(JumpPenaltyKernel(std::vector<double>{1.0, 2.0, 3.0, 0.5, 4.0, 1.5}));
 }
 
+TEST(FaceAssembler, TensorJumpPenaltyDerivativesMatchFiniteDifferencesOnMixedSizes) {
+  // A symmetric, not diagonal T_f per face (a split DG penalty's η_t I + (η_n − η_t) n nᵀ).
+  std::vector<Eigen::Matrix3d> tensors;
+  for (int f = 0; f < 6; ++f) {
+    const Eigen::Vector3d n = Eigen::Vector3d(1.0, 0.3 * f, -0.2).normalized();
+    tensors.push_back((0.5 + f) * Eigen::Matrix3d::Identity() + (2.0 + f) * n * n.transpose());
+  }
+  expect_derivatives_match_finite_differences(JumpPenaltyKernel(std::move(tensors)));
+}
+
 TEST(FaceAssembler, QuarticKernelDerivativesMatchFiniteDifferencesOnMixedSizes) {
   expect_derivatives_match_finite_differences(test::QuarticJumpKernel());
 }
 
 TEST(FaceAssembler, HessianBeforeBindThrows) {
   const TabulatedFaces faces = test::two_cube_face(3);
-  const FaceAssembler<JumpPenaltyKernel> assembler(faces, JumpPenaltyKernel({penalty}));
+  const FaceAssembler<JumpPenaltyKernel> assembler(faces, JumpPenaltyKernel(std::vector<double>{penalty}));
   SparseMatrix hessian(24, 24);
   EXPECT_THROW(assembler.add_hessian(Eigen::VectorXd::Zero(24), hessian), std::logic_error);
 }

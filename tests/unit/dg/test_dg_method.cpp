@@ -16,6 +16,7 @@
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/linear_solver.hpp"
+#include "tests/verify/dg/static_surface.hpp"
 
 namespace altfem::dg {
 namespace {
@@ -75,6 +76,34 @@ TEST(DgMethod, WeakMovingConditionsReproduceTheAffineSolution) {
   }
 }
 
+// The same bar with the conditions imposed strongly (dg/strong_conditions.hpp): the static
+// solve of the shared integrator eliminates the constrained coefficients at their values
+// for the translation at t = 1, and the solution is again the affine field.
+TEST(DgMethod, StrongMovingConditionsReproduceTheAffineSolution) {
+  for (int degree : {1, 2}) {
+    const test::StaticRun run = test::static_run(
+        write_bar_scene("pulled_bar_strong_" + std::to_string(degree), linear_no_contraction,
+                        R"({ "degree": )" + std::to_string(degree) + R"(, "resolution": [2, 1, 1], "conditions": "strong" })"),
+        make_dg_method, {});
+    const Discretization& discretization = run.method->discretization();
+    EXPECT_FALSE(discretization.imposes_conditions_weakly());
+    EXPECT_FALSE(discretization.constrained_dofs().empty());
+    const Eigen::VectorXd exact =
+        run.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.01 * x.x(), 0, 0); });
+    EXPECT_LT((run.displacement - exact).cwiseAbs().maxCoeff(), 1e-10) << "degree " << degree;
+  }
+}
+
+TEST(DgMethod, StrongConditionsWithWarpingAreBadInputNamingTheKey) {
+  try {
+    (void)build(write_bar_scene("strong_warped_bar", linear_no_contraction,
+                                R"({ "resolution": [2, 1, 1], "conditions": "strong", "warping": true })"));
+    FAIL() << "accepted strong conditions with warping";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/discretization/dg/conditions"), std::string::npos) << error.what();
+  }
+}
+
 // Uniaxial tension with lateral contraction (ν = 0.3): rollers prescribe only u_x on the
 // x faces, u_y on y = 0 and u_z on z = 0; the exact u = ε(x, −νy, −νz) is affine, and the
 // projected Nitsche terms reproduce it.
@@ -98,6 +127,19 @@ TEST(DgMethod, ConditionsOnSomeComponentsReproduceUniaxialTension) {
   const Eigen::VectorXd exact =
       built.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.01 * x.x(), -0.003 * x.y(), -0.003 * x.z()); });
   EXPECT_LT((u - exact).cwiseAbs().maxCoeff(), 1e-10);
+  // Strongly, a corner cell would need one change of basis for an x and a y condition.
+  std::ifstream input(file);
+  std::string text((std::istreambuf_iterator<char>(input)), std::istreambuf_iterator<char>());
+  text.replace(text.find(R"("degree": 2)"), 11, R"("degree": 2, "conditions": "strong")");
+  std::ofstream(folder / "rollers_strong.json") << text;
+  try {
+    (void)build(folder / "rollers_strong.json");
+    FAIL() << "accepted strong conditions on a cell with x and y rollers";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("/discretization/dg/conditions"), std::string::npos) << message;
+    EXPECT_NE(message.find("/boundary_conditions/"), std::string::npos) << message;
+  }
 }
 
 // Babuška–Zlámal is inconsistent (§4.1): the same bar is only approximated.
@@ -199,6 +241,18 @@ TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInp
     const std::string message = error.what();
     EXPECT_NE(message.find("/discretization/dg/flux"), std::string::npos) << message;
     EXPECT_NE(message.find("/boundary_conditions/1/components"), std::string::npos) << message;
+  }
+}
+
+TEST(DgMethod, ASplitPenaltyUnderKaufmannsConventionIsBadInputNamingTheKey) {
+  const auto file = write_static_neo_hookean_bar(
+      "kaufmann_split_bar", "",
+      R"({ "resolution": [2, 1, 1], "penalty": { "convention": "kaufmann", "lame_split": true } })");
+  try {
+    (void)build(file);
+    FAIL() << "accepted lame_split with the kaufmann convention";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/discretization/dg/penalty/lame_split"), std::string::npos) << error.what();
   }
 }
 

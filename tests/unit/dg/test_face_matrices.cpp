@@ -111,6 +111,22 @@ TEST_P(BabuskaZlamalOfDegree, AContinuousFieldPaysNoPenalty) {
   EXPECT_LT((matrix * u).cwiseAbs().maxCoeff(), 1e-12 * matrix.cwiseAbs().maxCoeff());
 }
 
+// Hansbo & Larson's split penalty (JumpPenalty): a constant jump c across the face costs
+// ∫ cᵀ T c = area · (normal c_n² + tangential |c_t|²), each part by its own η.
+TEST(JumpPenalty, SplitPenalisesNormalAndTangentialJumpsApart) {
+  const MonomialBasis minus(1, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(1, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
+  const JumpPenalty split{5.0, 2.0};
+  const Eigen::MatrixXd matrix = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,
+                                                   split, Flux::babuska_zlamal);
+  const double area = polygon_area_vector(face_polygon()).norm();
+  for (int direction = 0; direction < 3; ++direction) {
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(matrix.rows());
+    u[direction] = 1;  // the minus side's constant function, component `direction`; the plus side 0
+    const double expected = (direction == 0 ? split.normal : split.tangential) * area;
+    EXPECT_NEAR(u.dot(matrix * u), expected, 1e-12 * expected) << "component " << direction;
+  }
+}
+
 // Consistency of interior penalty (the reason for its face terms, Kaufmann et al. §3.3):
 // for an affine field u, the same on both elements, and a test function v on the minus
 // element only, the DG form a(u, v) = ∫_K⁻ σ:ε(v) − ∫_f v·σn equals the traction work

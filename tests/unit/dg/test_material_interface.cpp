@@ -68,7 +68,7 @@ TEST(DgMaterialInterface, FacePenaltyTakesEachSidesEta) {
   const DgLinearSystem system(grid.cells, grid.faces, {1, Flux::interior_penalty}, materials);
   for (const DgFace& face : system.faces()) {
     if (face.plus < 0 || face.normal.x() != 1.0) continue;  // the faces across x = ½
-    EXPECT_NEAR(system.face_penalty(face), 0.25 * (stiff.penalty + soft.penalty) / 0.125, 1e-9 * stiff.penalty);
+    EXPECT_NEAR(system.face_penalty(face).normal, 0.25 * (stiff.penalty + soft.penalty) / 0.125, 1e-9 * stiff.penalty);
   }
 }
 

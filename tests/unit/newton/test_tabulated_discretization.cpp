@@ -36,7 +36,7 @@ struct TwoCubes {
     if (clamped) {
       faces = test::two_cube_face(3);
       test::add_clamped_face(faces, 3);
-      parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(faces, JumpPenaltyKernel({1e6, 1e6})));
+      parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(faces, JumpPenaltyKernel(std::vector<double>{1e6, 1e6})));
       parts.conditions_weakly = true;
     }
     discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
