@@ -17,6 +17,13 @@ namespace altfem::dg {
 /// with disjoint blocks). element_dofs: each element's DOFs.
 PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element_dofs);
 
+/// The two-level preconditioner for PCG (shared/solve/two_level_preconditioner.hpp; Dobrev,
+/// Lazarov, Vassilevski & Zikatanov 2006): the symmetric V-cycle of the damped block Jacobi
+/// smoother on element_dofs and the coarse space `prolongation` (#dofs × #coarse, e.g.
+/// vertex_coarse_space's), whose iterations stay bounded under refinement.
+PreconditionerFactory two_level_factory(std::vector<std::vector<int>> element_dofs,
+                                        Eigen::SparseMatrix<double> prolongation);
+
 class LinearDgDiscretization : public Discretization {
 public:
   /// stiffness, mass: #dofs square, symmetric; function_integrals: ∫ ρ φ_a dV per basis
@@ -45,7 +52,9 @@ public:
     return strong_.dofs.empty() ? Eigen::VectorXd() : strong_.prescribed(time);
   }
   bool imposes_conditions_weakly() const override { return strong_.dofs.empty(); }
-  PreconditionerFactory preconditioner_factory() const override { return block_jacobi_factory(element_dofs_); }
+  PreconditionerFactory preconditioner_factory() const override { return preconditioner_; }
+  /// Replaces the block Jacobi of iterative solvers (e.g. by two_level_factory).
+  void use_preconditioner(PreconditionerFactory factory) { preconditioner_ = std::move(factory); }
 
 private:
   Eigen::SparseMatrix<double> stiffness_, mass_;  // the same pattern (their union)
@@ -54,6 +63,7 @@ private:
   BlockDiagonalMass explicit_mass_;
   std::function<Eigen::VectorXd(double)> weak_condition_load_;
   DirichletDofs strong_;
+  PreconditionerFactory preconditioner_;
 };
 
 }  // namespace altfem::dg

@@ -10,6 +10,7 @@
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
+#include "dg/vertex_coarse_space.hpp"
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
@@ -103,13 +104,17 @@ public:
       for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
         element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
+    // Used only when the scene's solver/linear is iterative (the direct solvers ignore it).
+    PreconditionerFactory preconditioner =
+        spec_.preconditioner == DgPreconditioner::two_level
+            ? two_level_factory(element_dofs, vertex_coarse_space(mesh_, *system_).prolongation)
+            : block_jacobi_factory(element_dofs);
     if (spec_.warping) {
       // The consistency part of moving data is rotated with the boundary element (§6): the
       // discretization adds it; the load keeps the penalty's part.
       linear_ = std::make_unique<WarpedDgDiscretization>(
           *system_, settings_, density_integrals(), std::move(element_dofs),
           [this](double time) { return weak_condition_load(time, true); }, moving_data());
-      discretization_ = linear_.get();
     } else if (linear()) {
       DirichletDofs strong{system_->constrained_dofs(), [this](double time) {
                              return system_->constrained_values([&](int condition, const Eigen::Vector3d& x) {
@@ -118,13 +123,16 @@ public:
                            }};
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
                                                          std::move(element_dofs), external_force, std::move(strong));
+    }
+    if (linear_) {
+      linear_->use_preconditioner(std::move(preconditioner));
       discretization_ = linear_.get();
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
       const bool lifted = spec_.flux == Flux::interior_penalty;
       tabulated_ = make_tabulated_dg(*system_, materials_.pointers(),
                                      [this, lifted](double time) { return weak_condition_load(time, lifted); },
-                                     block_jacobi_factory(std::move(element_dofs)),
+                                     std::move(preconditioner),
                                      lifted ? moving_data() : ConditionTrajectory{});
       discretization_ = tabulated_.discretization.get();
     }

@@ -159,6 +159,8 @@ const scene_schema::ObjectRule& dg_rule() {
         .choices = scene_schema::names(condition_imposition_names)},
        {.key = "embedding", .type = ValueType::string, .default_value = "mls",
         .choices = scene_schema::names(embedding_names)},
+       {.key = "preconditioner", .type = ValueType::string, .default_value = "two_level",
+        .choices = scene_schema::names(dg_preconditioner_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = mesh_names()},
@@ -190,6 +192,8 @@ DgSpec dg_spec(const Scene& scene) {
   spec.warping = dg["warping"].get<bool>();
   spec.strong_conditions = dg["conditions"] == "strong";
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
+  spec.preconditioner = static_cast<DgPreconditioner>(
+      index_of(dg_preconditioner_names, dg["preconditioner"].get<std::string>()));
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
     return spec;

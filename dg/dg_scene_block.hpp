@@ -41,6 +41,13 @@ inline constexpr std::array<std::string_view, 2> condition_imposition_names{"wea
 enum class Embedding { element, stitched, mls };
 inline constexpr std::array<std::string_view, 3> embedding_names{"element", "stitched", "mls"};
 
+/// The preconditioner of iterative linear solvers (solver/linear pcg, minres,
+/// conjugate_residual): block Jacobi (one block per element) or the two-level V-cycle of that
+/// smoother with the vertex coarse space (dg/vertex_coarse_space.hpp), whose iterations stay
+/// bounded under refinement.
+enum class DgPreconditioner { block_jacobi, two_level };
+inline constexpr std::array<std::string_view, 2> dg_preconditioner_names{"block_jacobi", "two_level"};
+
 struct DgSpec {
   int degree = 2;
   Flux flux = Flux::interior_penalty;
@@ -55,6 +62,7 @@ struct DgSpec {
   /// Dirichlet conditions imposed strongly (linear material without warping only).
   bool strong_conditions = false;
   Embedding embedding = Embedding::mls;
+  DgPreconditioner preconditioner = DgPreconditioner::two_level;
   /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
   /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
   /// (quadrature_order and curved unused).

@@ -14,6 +14,8 @@
 #include "tests/unit/assembly/assembly_fixture.hpp"
 #include "tests/unit/assembly/face_fixture.hpp"
 #include "tests/unit/assembly/face_term.hpp"
+#include "shared/solve/additive_schwarz_preconditioner.hpp"
+#include "shared/solve/two_level_preconditioner.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t size);
@@ -181,6 +183,33 @@ TEST(FaceAssembler, SecondAssemblyAllocatesNothing) {
                        });
   EXPECT_GT(gradient.norm(), 0.0);
   EXPECT_GT(energy, 0.0);
+}
+
+// The two-level preconditioner's apply() runs every Krylov iteration (issue #18): once its
+// coarse solver has sized its workspace (the first apply), it must not allocate.
+TEST(TwoLevelPreconditioner, SecondApplyAllocatesNothing) {
+  const int size = 60;  // a 1D Laplacian, blocks of 3 unknowns, piecewise constants on them
+  std::vector<Eigen::Triplet<double>> entries, prolongation_entries;
+  std::vector<std::vector<int>> blocks(size / 3);
+  for (int i = 0; i < size; ++i) {
+    entries.emplace_back(i, i, 2.0);
+    if (i > 0) entries.emplace_back(i, i - 1, -1.0);
+    if (i + 1 < size) entries.emplace_back(i, i + 1, -1.0);
+    blocks[i / 3].push_back(i);
+    prolongation_entries.emplace_back(i, i / 3, 1.0);
+  }
+  Eigen::SparseMatrix<double> matrix(size, size), prolongation(size, size / 3);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  prolongation.setFromTriplets(prolongation_entries.begin(), prolongation_entries.end());
+  for (TwoLevelCycle cycle : {TwoLevelCycle::additive, TwoLevelCycle::multiplicative}) {
+    TwoLevelPreconditioner preconditioner(std::make_unique<AdditiveSchwarzPreconditioner>(blocks), prolongation, cycle,
+                                          0.8);
+    preconditioner.compute(matrix);
+    const Eigen::VectorXd residual = Eigen::VectorXd::LinSpaced(size, -1.0, 2.0);
+    Eigen::VectorXd result(size);
+    preconditioner.apply(residual, result);  // warm-up: CHOLMOD's solve workspace
+    expect_no_allocation([&] { preconditioner.apply(residual, result); }, [] {});
+  }
 }
 
 }  // namespace
