@@ -5,7 +5,10 @@
 // al. 2009 §5). Cells: a hexahedron (8 nodes), an octree-coarse hexahedron with its
 // finer neighbours' edge midpoints (20 nodes, octagonal faces), a non-convex L-shaped
 // prism (12), and 40 cut cells of the bunny sliced at 16³ (each iteration takes the
-// next cut cell, so the time is the mean over them). Medians on one core with
+// next cut cell, so the time is the mean over them); each of these fits its own face
+// functions. harmonic_mesh_bases builds every cut cell of the bunny the way the method
+// does, each face once, and reports the cost per element with the face fits amortised.
+// Medians on one core with
 //   OMP_NUM_THREADS=1 build/bin/bench_polyhedral_element --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 // (configure with -DALTFEM_BENCHMARKS=ON; one thread: Eigen's products would otherwise
 // spawn an OpenMP team per factorisation, which the method never does — it builds the
@@ -13,10 +16,13 @@
 // Target (issue #19): basis and stiffness integration each ≤ 2 ms per element.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <ctime>
 #include <map>
 
 #include "dg/exact_element_matrices.hpp"
 #include "polyhedral/harmonic_tabulation.hpp"
+#include "polyhedral/mesh_face_coordinates.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "tests/unit/polyhedra.hpp"
 
@@ -49,13 +55,21 @@ Polyhedron hexahedron_with_edge_nodes() {
   return box;
 }
 
-// 40 cut cells of the bunny sliced at 16³ (sliced once).
-const std::vector<Polyhedron>& bunny_cut_cells() {
-  static const std::vector<Polyhedron> cells = [] {
+// The bunny sliced at 16³ (sliced once).
+const PolyhedralMesh& bunny_mesh() {
+  static const PolyhedralMesh mesh = [] {
     const SurfaceMesh bunny = read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off");
     SlicingOptions options;
     options.resolution = 16;
-    const PolyhedralMesh mesh = slice_into_polyhedra(bunny, options).mesh;
+    return slice_into_polyhedra(bunny, options).mesh;
+  }();
+  return mesh;
+}
+
+// 40 of its cut cells.
+const std::vector<Polyhedron>& bunny_cut_cells() {
+  static const std::vector<Polyhedron> cells = [] {
+    const PolyhedralMesh& mesh = bunny_mesh();
     std::vector<int> cut;
     for (int cell = 0; cell < mesh.cell_count(); ++cell)
       if (mesh.cell_kinds[cell] != PolyhedralCellKind::hexahedron) cut.push_back(cell);
@@ -156,6 +170,39 @@ void harmonic_element_setup(benchmark::State& state) {
   state.SetLabel(cell_name(static_cast<int>(state.range(0))));
 }
 
+// Phase 1 over a whole mesh, as the method builds it: every face of the bunny's cut
+// cells fitted once (shared by its two cells), then every cut cell's element fit on
+// them. The honest per-element cost amortises the face fits: per_element = (all face
+// fits + all element fits) / cells; per_face is one face fit. Arg: MFS samples per edge.
+void harmonic_mesh_bases(benchmark::State& state) {
+  const PolyhedralMesh& mesh = bunny_mesh();
+  harmonic::MfsOptions options;
+  options.edge_samples = static_cast<int>(state.range(0));
+  std::vector<int> cut;
+  for (int cell = 0; cell < mesh.cell_count(); ++cell)
+    if (mesh.cell_kinds[cell] != PolyhedralCellKind::hexahedron) cut.push_back(cell);
+  // Processor time, like the CPU column (one thread; the wall time of a shared machine
+  // counts the neighbours' work too).
+  const auto processor_seconds = [] { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; };
+  double face_seconds = 0, cell_seconds = 0, faces = 0;
+  for (auto _ : state) {
+    const double start = processor_seconds();
+    const auto coordinates = harmonic::mesh_face_coordinates(mesh, cut, options);
+    const double middle = processor_seconds();
+    for (int cell : cut) benchmark::DoNotOptimize(harmonic::cell_harmonic_basis(mesh, cell, coordinates, options));
+    face_seconds += middle - start;
+    cell_seconds += processor_seconds() - middle;
+    faces = static_cast<double>(std::count_if(coordinates.begin(), coordinates.end(), [](const auto& face) { return face.has_value(); }));
+  }
+  const double iterations = static_cast<double>(state.iterations()), cells = static_cast<double>(cut.size());
+  state.counters["cells"] = cells;
+  state.counters["faces"] = faces;
+  state.counters["per_element_ms"] = 1e3 * (face_seconds + cell_seconds) / iterations / cells;
+  state.counters["element_fit_ms"] = 1e3 * cell_seconds / iterations / cells;
+  state.counters["per_face_ms"] = 1e3 * face_seconds / iterations / faces;
+  state.SetLabel("bunny 16^3, every cut cell, " + std::to_string(state.range(0)) + " samples/edge");
+}
+
 void dg_element_matrices(benchmark::State& state) {
   const Polyhedron element = cells(static_cast<int>(state.range(0))).front();
   const dg::MonomialBasis basis(static_cast<int>(state.range(1)), Eigen::Vector3d(0.5, 0.6, 0.45), 1.8);
@@ -164,6 +211,7 @@ void dg_element_matrices(benchmark::State& state) {
 }
 
 BENCHMARK(harmonic_basis)->ArgsProduct({{hexahedron, hexahedron20, l_prism, bunny_cut}, {4, 5}})->Unit(benchmark::kMillisecond);
+BENCHMARK(harmonic_mesh_bases)->Arg(5)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(harmonic_stiffness)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);
 BENCHMARK(harmonic_element_setup)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);
 BENCHMARK(dg_element_matrices)->ArgsProduct({{hexahedron, l_prism}, {1, 2, 3}})->Unit(benchmark::kMillisecond);

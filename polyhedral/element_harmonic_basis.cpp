@@ -28,20 +28,28 @@ int interior_samples(double length, double spacing) {
   return std::max(0, static_cast<int>(std::lround(length / spacing)) - 1);
 }
 
-// Boundary points with their outward normal and the boundary data of every node there
-// (#nodes values: δ at a vertex, linear along an edge, the face's harmonic coordinates
-// inside a face).
+// Boundary points with their outward normal and, when asked for, the boundary data of
+// every node there (#nodes values per point, flattened point by point: δ at a vertex,
+// linear along an edge, the face's harmonic coordinates inside a face). The kernel
+// centres' samples need no data: evaluating the face coordinates there was a third of
+// a cut cell's face work.
 struct BoundarySamples {
   std::vector<Eigen::Vector3d> points, normals;
-  std::vector<Eigen::VectorXd> data;
+  std::vector<double> data;  // #points · #nodes when with_data, else empty
 };
+
+// Appends one point's data, zero: its #nodes values.
+double* add_data(BoundarySamples& samples, int nodes) {
+  samples.data.resize(samples.data.size() + static_cast<size_t>(nodes), 0.0);
+  return samples.data.data() + samples.data.size() - nodes;
+}
 
 // Nodes; points inside each edge at about `edge_spacing` (as many as its length
 // holds: a short edge of a cut cell gets none, its linear data is fitted through its
 // nodes); inside each face a grid of `face_spacing`, kept half a spacing away from the
 // face's edges.
-BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<FaceHarmonicCoordinates>& faces,
-                                double edge_spacing, double face_spacing) {
+BoundarySamples sample_boundary(const Polyhedron& polyhedron, std::span<const ElementFace> faces,
+                                double edge_spacing, double face_spacing, bool with_data) {
   const auto nodes = static_cast<int>(polyhedron.vertices.rows());
   std::vector<Eigen::Vector3d> face_normals;
   std::vector<Eigen::Vector3d> vertex_normals(nodes, Eigen::Vector3d::Zero());
@@ -60,7 +68,7 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
   for (int v = 0; v < nodes; ++v) {
     samples.points.push_back(polyhedron.vertices.row(v).transpose());
     samples.normals.push_back(vertex_normals[v].normalized());
-    samples.data.push_back(Eigen::VectorXd::Unit(nodes, v));
+    if (with_data) add_data(samples, nodes)[v] = 1;
   }
   for (const auto& [edge, normal] : edge_normals) {
     const int per_edge = interior_samples(
@@ -70,10 +78,10 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
       samples.points.push_back((1 - t) * polyhedron.vertices.row(edge.first).transpose() +
                                t * polyhedron.vertices.row(edge.second).transpose());
       samples.normals.push_back(normal.normalized());
-      Eigen::VectorXd data = Eigen::VectorXd::Zero(nodes);
+      if (!with_data) continue;
+      double* data = add_data(samples, nodes);
       data[edge.first] = 1 - t;
       data[edge.second] = t;
-      samples.data.push_back(data);
     }
   }
   for (size_t f = 0; f < polyhedron.faces.size(); ++f) {
@@ -105,16 +113,16 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
         }
         if (in && distance >= face_spacing / 2) inside.push_back(origin + s * u + r * v);
       }
-    if (inside.empty()) continue;
+    samples.points.insert(samples.points.end(), inside.begin(), inside.end());
+    samples.normals.insert(samples.normals.end(), inside.size(), normal);
+    if (inside.empty() || !with_data) continue;
     Eigen::MatrixXd points(static_cast<Eigen::Index>(inside.size()), 3);
     for (size_t p = 0; p < inside.size(); ++p) points.row(static_cast<Eigen::Index>(p)) = inside[p].transpose();
-    const Eigen::MatrixXd coordinates = faces[f].evaluate(points);  // #points × #face nodes
+    const Eigen::MatrixXd coordinates = faces[f].coordinates->evaluate(points);  // #points × #face nodes
     for (size_t p = 0; p < inside.size(); ++p) {
-      samples.points.push_back(inside[p]);
-      samples.normals.push_back(normal);
-      Eigen::VectorXd data = Eigen::VectorXd::Zero(nodes);
-      for (size_t k = 0; k < face.size(); ++k) data[face[k]] += coordinates(static_cast<Eigen::Index>(p), k);
-      samples.data.push_back(data);
+      double* data = add_data(samples, nodes);
+      for (size_t k = 0; k < face.size(); ++k)
+        data[faces[f].nodes[k]] += coordinates(static_cast<Eigen::Index>(p), static_cast<Eigen::Index>(k));
     }
   }
   return samples;
@@ -122,8 +130,32 @@ BoundarySamples sample_boundary(const Polyhedron& polyhedron, const std::vector<
 
 }  // namespace
 
-ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options) {
+namespace {
+
+// The element's own face coordinates, fitted on its loops: a temporary that outlives the
+// delegated constructor's call.
+struct OwnFaces {
+  std::vector<FaceHarmonicCoordinates> storage;
+  std::vector<ElementFace> faces;
+  OwnFaces(const Polyhedron& element, const MfsOptions& options) {
+    storage.reserve(element.faces.size());
+    for (const auto& face : element.faces) {
+      storage.emplace_back(face_polygon(element, face), options);
+      faces.push_back({&storage.back(), face});
+    }
+  }
+};
+
+}  // namespace
+
+ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options)
+    : ElementHarmonicBasis(element, OwnFaces(element, options).faces, options) {}
+
+ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<const ElementFace> faces,
+                                           const MfsOptions& options) {
   if (element.faces.empty()) throw std::invalid_argument("ElementHarmonicBasis: the polyhedron has no face");
+  if (faces.size() != element.faces.size())
+    throw std::invalid_argument("ElementHarmonicBasis: one face coordinate set per face expected");
   const auto nodes = static_cast<int>(element.vertices.rows());
   origin_ = element.vertices.colwise().mean().transpose();
   scale_ = (element.vertices.rowwise() - origin_.transpose()).rowwise().norm().maxCoeff();
@@ -139,17 +171,14 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   for (const auto& face : element.faces) area += polygon_area_vector(face_polygon(element, face)).norm();
   const double spacing = std::sqrt(area / 6) / (options.edge_samples + 1);
 
-  std::vector<FaceHarmonicCoordinates> faces;
-  faces.reserve(element.faces.size());
-  for (const auto& face : element.faces) faces.emplace_back(face_polygon(element, face), options);
   boundary_integrals_ = Eigen::MatrixXd::Zero(nodes, 3);
   for (size_t f = 0; f < element.faces.size(); ++f) {
     const Eigen::MatrixXd polygon = face_polygon(element, element.faces[f]);
     const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
     const PolyhedronRule rule = polygon_rule(polygon, 6);
-    const Eigen::VectorXd integrals = faces[f].evaluate(rule.points).transpose() * rule.weights;  // #face nodes
-    for (size_t k = 0; k < element.faces[f].size(); ++k)
-      boundary_integrals_.row(element.faces[f][k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
+    const Eigen::VectorXd integrals = faces[f].coordinates->evaluate(rule.points).transpose() * rule.weights;
+    for (size_t k = 0; k < element.faces[f].size(); ++k)  // #face nodes
+      boundary_integrals_.row(faces[f].nodes[k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
   }
 
   // Kernel centres (eq. (12)), dropped where they land inside the element or closer
@@ -157,52 +186,63 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsO
   // spacing to a centre kept before (a cut cell's nodes can be much closer than the
   // spacing; nearly coincident kernels only make the system rank-deficient). Collocation
   // points m ≈ 3n (eq. (13)): the same sampling, 3 times denser along edges and in area.
-  const BoundarySamples samples = sample_boundary(element, faces, spacing, spacing);
+  const BoundarySamples samples = sample_boundary(element, faces, spacing, spacing, false);
   const BoundarySamples collocation =
       sample_boundary(element, faces, spacing / options.collocation_factor,
-                      spacing / std::sqrt(static_cast<double>(options.collocation_factor)));
+                      spacing / std::sqrt(static_cast<double>(options.collocation_factor)), true);
+  const auto m = static_cast<Eigen::Index>(collocation.points.size());
+  // The collocation points by coordinate (x, y, z: m each), physical, then local: every
+  // distance test and kernel column below is one vectorised expression over them.
+  std::array<Eigen::ArrayXd, 3> collocation_coordinates;
+  for (int d = 0; d < 3; ++d) {
+    collocation_coordinates[d].resize(m);
+    for (Eigen::Index i = 0; i < m; ++i) collocation_coordinates[d][i] = collocation.points[i][d];
+  }
+  const auto squared_distances = [&](const Eigen::Vector3d& centre) {
+    return (collocation_coordinates[0] - centre.x()).square() + (collocation_coordinates[1] - centre.y()).square() +
+           (collocation_coordinates[2] - centre.z()).square();
+  };
   std::vector<Eigen::Vector3d> centres;
   const double offset = options.offset * diameter;
+  const Eigen::AlignedBox3d bounds(element.vertices.colwise().minCoeff().transpose(),
+                                   element.vertices.colwise().maxCoeff().transpose());
   for (size_t s = 0; s < samples.points.size(); ++s) {
     const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
-    const auto closer_than = [&centre](const Eigen::Vector3d& point, double distance) {
-      return (point - centre).squaredNorm() < distance * distance;
-    };
-    if (std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& kept) { return closer_than(kept, spacing / 2); }))
+    if (std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& kept) {
+          return (kept - centre).squaredNorm() < spacing * spacing / 4;
+        }))
       continue;
-    if (std::any_of(collocation.points.begin(), collocation.points.end(),
-                    [&](const Eigen::Vector3d& point) { return closer_than(point, offset / 2); }))
-      continue;
-    if (std::abs(winding_number(element, centre)) > 0.5) continue;
+    if (squared_distances(centre).minCoeff() < offset * offset / 4) continue;
+    // Outside the bounding box is outside; only the others need the winding number.
+    if (bounds.contains(centre) && std::abs(winding_number(element, centre)) > 0.5) continue;
     centres.push_back(centre);
   }
   centres_.resize(static_cast<Eigen::Index>(centres.size()), 3);
   for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();
 
-  const auto m = static_cast<Eigen::Index>(collocation.points.size());
   const Eigen::Index c = centres_.rows();
-  // The m × (c + 4) system and m × #nodes data live in per-thread buffers that only
-  // grow: building bases cell after cell does not return them to the system and fault
-  // their pages in again each time.
-  thread_local std::vector<double> system_storage, data_storage;
-  system_storage.resize(std::max(system_storage.size(), static_cast<size_t>(m * (c + 4))));
-  data_storage.resize(std::max(data_storage.size(), static_cast<size_t>(m * nodes)));
-  Eigen::Map<Eigen::MatrixXd> system(system_storage.data(), m, c + 4), data(data_storage.data(), m, nodes);
-  // Column by column: the system is column-major, so each kernel column is written
-  // contiguously (row by row it was a stride-m scatter, 15% of the basis' time).
-  Eigen::Matrix3Xd local(3, m);
-  for (Eigen::Index i = 0; i < m; ++i) local.col(i) = (collocation.points[i] - origin_) / scale_;
+  // The m × (c + 4) system and m × #nodes data live side by side in a per-thread buffer
+  // that only grows: building bases cell after cell does not return it to the system and
+  // fault its pages in again each time. Aligned like Eigen's own matrices, so the products
+  // take the same path whatever the buffer's address: the same cell gives the same bits
+  // on any thread (what a cached basis is compared with).
+  thread_local std::vector<double, Eigen::aligned_allocator<double>> storage;
+  storage.resize(std::max(storage.size(), static_cast<size_t>(m * (c + 4 + nodes))));
+  Eigen::Map<Eigen::MatrixXd> augmented(storage.data(), m, c + 4 + nodes);  // [system | data]
+  auto system = augmented.leftCols(c + 4);
+  auto data = augmented.rightCols(nodes);
+  for (int d = 0; d < 3; ++d) collocation_coordinates[d] = (collocation_coordinates[d] - origin_[d]) / scale_;
+  // Column by column: the system is column-major, so each kernel column is one
+  // contiguous vectorised expression (row by row it was a stride-m scatter).
   const auto fill_system = [&] {
-    for (Eigen::Index j = 0; j < c; ++j) {
-      const Eigen::Vector3d centre = centres_.row(j).transpose();
-      for (Eigen::Index i = 0; i < m; ++i) system(i, j) = 1.0 / (local.col(i) - centre).norm();
-    }
-    system.middleCols(c, 3) = local.transpose();
+    for (Eigen::Index j = 0; j < c; ++j) system.col(j) = squared_distances(centres_.row(j).transpose()).rsqrt();
+    for (int d = 0; d < 3; ++d) system.col(c + d) = collocation_coordinates[d];
     system.col(c + 3).setOnes();
-    for (Eigen::Index i = 0; i < m; ++i) data.row(i) = collocation.data[i].transpose();
+    data = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
+        collocation.data.data(), m, nodes);
   };
   fill_system();
-  boundary_residual_ = solve_mfs_least_squares(system, data, fill_system, coefficients_);
+  boundary_residual_ = solve_mfs_least_squares(augmented, c + 4, fill_system, coefficients_);
 }
 
 void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorXd& values,
@@ -259,6 +299,31 @@ Eigen::MatrixXd ElementHarmonicBasis::values(const Eigen::MatrixXd& points) cons
 
 Eigen::MatrixXd ElementHarmonicBasis::centres() const {
   return (centres_ * scale_).rowwise() + origin_.transpose();
+}
+
+void ElementHarmonicBasis::write(BinaryWriter& out) const {
+  out.matrix(origin_);
+  out.put<double>(scale_);
+  out.matrix(centres_);
+  out.matrix(coefficients_);
+  out.put<double>(boundary_residual_);
+  out.matrix(boundary_integrals_);
+}
+
+std::optional<ElementHarmonicBasis> ElementHarmonicBasis::read(BinaryReader& in) {
+  ElementHarmonicBasis basis;
+  if (!in.matrix(basis.origin_)) return std::nullopt;
+  const auto scale = in.get<double>();
+  if (!scale || !in.matrix(basis.centres_) || !in.matrix(basis.coefficients_)) return std::nullopt;
+  const auto residual = in.get<double>();
+  if (!residual || !in.matrix(basis.boundary_integrals_)) return std::nullopt;
+  basis.scale_ = *scale;
+  basis.boundary_residual_ = *residual;
+  const auto nodes = basis.coefficients_.cols();
+  if (basis.coefficients_.rows() != basis.centres_.rows() + 4 || basis.boundary_integrals_.rows() != nodes ||
+      basis.boundary_integrals_.cols() != 3)
+    return std::nullopt;
+  return basis;
 }
 
 }  // namespace altfem::harmonic

@@ -8,18 +8,36 @@
 // one factorisation serves every node. The linear polynomial makes the basis a partition
 // of unity that reproduces linear fields exactly, which is what rules out ghost forces.
 #include <Eigen/Core>
+#include <optional>
+#include <span>
+#include <vector>
 
+#include "polyhedral/face_harmonic_coordinates.hpp"
 #include "polyhedral/mfs_options.hpp"
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/mesh/polyhedral_cell_location.hpp"
 
 namespace altfem::harmonic {
 
+/// One face's 2D harmonic coordinates as an element sees them: column k of
+/// `coordinates` is the element's node nodes[k] (the face's loop in whichever order the
+/// coordinates were fitted, e.g. the mesh face's stored loop, which one neighbour sees
+/// reversed).
+struct ElementFace {
+  const FaceHarmonicCoordinates* coordinates = nullptr;
+  std::vector<int> nodes;
+};
+
 class ElementHarmonicBasis {
 public:
   /// The element's nodes are its vertices. Convex or not; faces planar, counter-clockwise
-  /// seen from outside. Throws std::invalid_argument for a polyhedron with no face.
+  /// seen from outside. Fits its own face coordinates. Throws std::invalid_argument for a
+  /// polyhedron with no face.
   ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options);
+  /// On face coordinates fitted once per mesh face and shared with the neighbour
+  /// (faces[f] for element.faces[f]), so both cells interpolate the same boundary data.
+  ElementHarmonicBasis(const Polyhedron& element, std::span<const ElementFace> faces, const MfsOptions& options);
 
   int node_count() const { return static_cast<int>(coefficients_.cols()); }
   /// N_i(x) (#nodes) and ∇N_i(x) (#nodes × 3).
@@ -40,7 +58,14 @@ public:
   /// harmonic_tabulation makes the quadrature of the gradients give.
   const Eigen::MatrixXd& boundary_integrals() const { return boundary_integrals_; }
 
+  /// Everything the basis evaluates from, bit for bit (harmonic_basis_cache).
+  void write(BinaryWriter& out) const;
+  /// What write wrote, or nullopt when it does not read back whole and consistent.
+  static std::optional<ElementHarmonicBasis> read(BinaryReader& in);
+
 private:
+  ElementHarmonicBasis() = default;
+
   Eigen::Vector3d origin_;
   double scale_ = 1;
   Eigen::MatrixX3d centres_;      // #centres × 3, local (x − origin) / scale

@@ -115,13 +115,13 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
   // Least squares against the boundary data at m ≈ 3n collocation points (eqs. (13)-(14)).
   const BoundarySamples collocation = sample_boundary(local, spacing / options.collocation_factor);
   const Eigen::Index m = collocation.points.rows(), c = centres_.rows();
-  Eigen::MatrixXd system(m, c + 3), data(m, n);
+  Eigen::MatrixXd augmented(m, c + 3 + n);  // [system | data]
+  auto system = augmented.leftCols(c + 3);
+  auto data = augmented.rightCols(n);
   const auto fill_system = [&] {
+    kernel_rows(collocation.points, system);
     data.setZero();
     for (Eigen::Index i = 0; i < m; ++i) {
-      const Eigen::Vector2d x = collocation.points.row(i);
-      for (Eigen::Index j = 0; j < c; ++j) system(i, j) = std::log((x - centres_.row(j).transpose()).norm());
-      system.block(i, c, 1, 3) << x.x(), x.y(), 1.0;
       const int edge = collocation.edges[i];
       const double t = collocation.parameters[i];
       data(i, edge) += 1 - t;  // linear along the edge between its two nodes
@@ -129,7 +129,7 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
     }
   };
   fill_system();
-  solve_mfs_least_squares(system, data, fill_system, coefficients_);
+  solve_mfs_least_squares(augmented, c + 3, fill_system, coefficients_);
 }
 
 Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points) const {
@@ -141,15 +141,18 @@ Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points
   return local;
 }
 
-Eigen::MatrixXd FaceHarmonicCoordinates::evaluate(const Eigen::MatrixXd& points) const {
-  const Eigen::MatrixX2d local = to_plane(points);
+void FaceHarmonicCoordinates::kernel_rows(const Eigen::MatrixX2d& local, Eigen::Ref<Eigen::MatrixXd> rows) const {
   const Eigen::Index c = centres_.rows();
-  Eigen::MatrixXd rows(points.rows(), c + 3);
-  for (Eigen::Index p = 0; p < points.rows(); ++p) {
-    const Eigen::Vector2d x = local.row(p);
-    for (Eigen::Index j = 0; j < c; ++j) rows(p, j) = std::log((x - centres_.row(j).transpose()).norm());
-    rows.block(p, c, 1, 3) << x.x(), x.y(), 1.0;
-  }
+  // Column by column, vectorised over the points: log‖x − k‖ = ½ log‖x − k‖².
+  for (Eigen::Index j = 0; j < c; ++j)
+    rows.col(j) = 0.5 * ((local.col(0).array() - centres_(j, 0)).square() + (local.col(1).array() - centres_(j, 1)).square()).log();
+  rows.middleCols(c, 2) = local;
+  rows.col(c + 2).setOnes();
+}
+
+Eigen::MatrixXd FaceHarmonicCoordinates::evaluate(const Eigen::MatrixXd& points) const {
+  Eigen::MatrixXd rows(points.rows(), centres_.rows() + 3);
+  kernel_rows(to_plane(points), rows);
   return rows * coefficients_;
 }
 

@@ -30,6 +30,9 @@ public:
 
 private:
   Eigen::MatrixX2d to_plane(const Eigen::MatrixXd& points) const;  // local, scaled coordinates
+  // The MFS functions at local points (#points × 2): rows (#points × (#centres + 3)) of
+  // log‖x − k_j‖, then x, y, 1.
+  void kernel_rows(const Eigen::MatrixX2d& local, Eigen::Ref<Eigen::MatrixXd> rows) const;
 
   Eigen::MatrixXd polygon_;
   Eigen::Vector3d origin_, axis_u_, axis_v_;

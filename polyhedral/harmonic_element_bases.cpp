@@ -6,6 +6,7 @@
 #include <string>
 
 #include "polyhedral/harmonic_tabulation.hpp"
+#include "polyhedral/mesh_face_coordinates.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -17,10 +18,7 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
                                            const MfsOptions& options)
     : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
   const int cells = mesh.cell_count();
-  // An exception must not leave the OpenMP region: a cell whose basis fails is
-  // recorded (the first in cell order is reported) and its basis left empty.
-  std::atomic<int> failed_cell{cells};
-#pragma omp parallel for schedule(dynamic, 4)
+  std::vector<int> mfs_cells;
   for (int cell = 0; cell < cells; ++cell) {
     Cell& entry = cells_[cell];
     if (kind == HarmonicBasisKind::automatic) {
@@ -31,8 +29,20 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       }
     }
     entry.nodes = cell_nodes(mesh, cell);
+    mfs_cells.push_back(cell);
+  }
+  // Each face's coordinates once, shared by its two cells; then the cells.
+  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, mfs_cells, options);
+  // An exception must not leave the OpenMP region: a cell whose basis fails is
+  // recorded (the first in cell order is reported) and its basis left empty.
+  std::atomic<int> failed_cell{cells};
+  const auto count = static_cast<int>(mfs_cells.size());
+#pragma omp parallel for schedule(dynamic, 4)
+  for (int k = 0; k < count; ++k) {
+    const int cell = mfs_cells[k];
+    Cell& entry = cells_[cell];
     try {
-      entry.mfs.emplace(cell_polyhedron(mesh, cell), options);
+      entry.mfs.emplace(cell_harmonic_basis(mesh, cell, faces, options));
       if (std::isfinite(entry.mfs->boundary_residual())) continue;
     } catch (const std::exception&) {
     }
@@ -110,6 +120,39 @@ bool HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::V
   values.resize(element.node_count());
   element.evaluate(inverse.xi, values);
   return true;
+}
+
+void HarmonicElementBases::write(BinaryWriter& out) const {
+  out.put<std::int64_t>(static_cast<std::int64_t>(cells_.size()));
+  for (const Cell& cell : cells_) {
+    out.matrix(Eigen::Map<const Eigen::VectorXi>(cell.nodes.data(), static_cast<Eigen::Index>(cell.nodes.size())));
+    out.put<std::int32_t>(cell.plain ? static_cast<std::int32_t>(*cell.plain) : -1);
+    if (cell.mfs) cell.mfs->write(out);
+  }
+}
+
+std::optional<HarmonicElementBases> HarmonicElementBases::read(const PolyhedralMesh& mesh, BinaryReader& in) {
+  const auto count = in.get<std::int64_t>();
+  if (!count || *count != mesh.cell_count()) return std::nullopt;
+  std::vector<Cell> cells(static_cast<size_t>(*count));
+  for (Cell& cell : cells) {
+    Eigen::VectorXi nodes;
+    if (!in.matrix(nodes) || (nodes.size() > 0 && (nodes.minCoeff() < 0 || nodes.maxCoeff() >= mesh.nodes.rows())))
+      return std::nullopt;
+    cell.nodes.assign(nodes.begin(), nodes.end());
+    const auto plain = in.get<std::int32_t>();
+    if (!plain) return std::nullopt;
+    if (*plain == static_cast<std::int32_t>(ElementType::tet4) || *plain == static_cast<std::int32_t>(ElementType::hex8)) {
+      cell.plain = static_cast<ElementType>(*plain);
+      if (static_cast<int>(cell.nodes.size()) != element_corner_count(*cell.plain)) return std::nullopt;
+      continue;
+    }
+    if (*plain != -1) return std::nullopt;
+    cell.mfs = ElementHarmonicBasis::read(in);
+    if (!cell.mfs || cell.mfs->node_count() != static_cast<int>(cell.nodes.size())) return std::nullopt;
+  }
+  if (!in.at_end()) return std::nullopt;
+  return HarmonicElementBases(mesh, std::move(cells));
 }
 
 }  // namespace altfem::harmonic

@@ -45,12 +45,20 @@ public:
   /// degenerate cell: Mesh_3 leaves slivers).
   bool evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const;
 
+  /// Every cell's nodes and basis, bit for bit (harmonic_basis_cache).
+  void write(BinaryWriter& out) const;
+  /// What write wrote for `mesh`, or nullopt when it does not read back whole, or not for
+  /// as many cells and nodes as `mesh` has.
+  static std::optional<HarmonicElementBases> read(const PolyhedralMesh& mesh, BinaryReader& in);
+
 private:
   struct Cell {
     std::vector<int> nodes;
     std::optional<ElementType> plain;
     std::optional<ElementHarmonicBasis> mfs;
   };
+  HarmonicElementBases(const PolyhedralMesh& mesh, std::vector<Cell> cells) : mesh_(mesh), cells_(std::move(cells)) {}
+
   const PolyhedralMesh& mesh_;
   std::vector<Cell> cells_;
 };

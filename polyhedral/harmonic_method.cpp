@@ -1,7 +1,9 @@
 #include "polyhedral/harmonic_method.hpp"
 
 #include <chrono>
+#include <string>
 
+#include "polyhedral/harmonic_basis_cache.hpp"
 #include "polyhedral/harmonic_basis_evaluator.hpp"
 #include "polyhedral/harmonic_element_bases.hpp"
 #include "polyhedral/harmonic_scene_block.hpp"
@@ -31,7 +33,20 @@ public:
     load_surface_ = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     const auto start = std::chrono::steady_clock::now();
-    bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
+    if (spec.cache.empty()) {
+      bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
+    } else {
+      bool reused = false;
+      try {
+        bases_ = std::make_unique<HarmonicElementBases>(
+            cached_harmonic_bases(mesh_, spec.basis, spec.mfs, spec.cache, &reused));
+      } catch (const NumericalError&) {
+        throw;
+      } catch (const std::runtime_error& error) {  // the cache file cannot be written
+        throw InputError(input_message(scene.file.string(), "/discretization/harmonic/cache", error.what()));
+      }
+      basis_cache_ = reused ? "reused" : "written";
+    }
     DiscretizationParts parts;
     quadrature_order_ = spec.quadrature_order;
     parts.elements = bases_->tabulate(spec.quadrature_order, materials_.ids_of(mesh_.cell_centroids));
@@ -98,6 +113,7 @@ public:
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
     facts.update(mesh_facts_);
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
+    if (!basis_cache_.empty()) facts["harmonic_basis_cache"] = basis_cache_;
     return facts;
   }
 
@@ -122,6 +138,7 @@ private:
   std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
   std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
+  std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
 };
 

@@ -52,7 +52,8 @@ const scene_schema::ObjectRule& harmonic_rule() {
        {.key = "quadrature_order", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one},
        {.key = "basis", .type = ValueType::string, .default_value = "auto",
         .choices = scene_schema::names(harmonic_basis_names)},
-       {.key = "warping", .type = ValueType::boolean, .default_value = false}}};
+       {.key = "warping", .type = ValueType::boolean, .default_value = false},
+       {.key = "cache", .type = ValueType::string}}};
   return rule;
 }
 
@@ -82,6 +83,14 @@ HarmonicSpec harmonic_spec(const Scene& scene) {
   spec.quadrature_order = harmonic["quadrature_order"].get<int>();
   spec.basis = enum_from_name<HarmonicBasisKind>(harmonic_basis_names, harmonic["basis"]);
   spec.warping = harmonic["warping"].get<bool>();
+  if (harmonic.contains("cache")) {
+    // A folder, relative to the scene's folder like the scene's file paths.
+    const std::filesystem::path cache = harmonic["cache"].get<std::string>();
+    const std::filesystem::path& file = scene.file;
+    const std::filesystem::path folder =
+        file.has_parent_path() ? std::filesystem::absolute(file).parent_path() : std::filesystem::current_path();
+    spec.cache = (cache.is_absolute() ? cache : folder / cache).lexically_normal();
+  }
   return spec;
 }
 

@@ -2,6 +2,7 @@
 // The `harmonic` block of a scene (docs/scene-schema.md, "harmonic"): its rules, the
 // defaults that depend on the geometry, and the plain options the harmonic method reads.
 #include <array>
+#include <filesystem>
 #include <string_view>
 
 #include "polyhedral/mfs_options.hpp"
@@ -28,6 +29,8 @@ struct HarmonicSpec {
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;
   /// Corotated stiffness warping of the linear material by shape matching (§6).
   bool warping = false;
+  /// Folder of the on-disk basis cache (harmonic_basis_cache.hpp), absolute; empty: no cache.
+  std::filesystem::path cache;
 };
 
 const MethodSceneBlock& harmonic_scene_block();

@@ -1,0 +1,125 @@
+// The on-disk basis cache (polyhedral/harmonic_basis_cache.hpp): a second run reuses the
+// file and gets bit-identical bases; other options or another mesh miss; a truncated or
+// corrupted file is ignored, recomputed and rewritten; the harmonic method reports
+// whether it wrote or reused its cache (facts: harmonic_basis_cache).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "polyhedral/harmonic_basis_cache.hpp"
+#include "polyhedral/harmonic_method.hpp"
+#include "shared/common/error.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/mesh/structured_grid.hpp"
+#include "shared/scene/scene_geometry.hpp"
+
+namespace altfem::harmonic {
+namespace {
+
+std::filesystem::path fresh_directory(const std::string& name) {
+  const auto directory = std::filesystem::path(ALTFEM_BINARY_DIR) / "test_output" / "unit_harmonic" / name;
+  std::filesystem::remove_all(directory);
+  return directory;
+}
+
+PolyhedralMesh hexahedra() {
+  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1.2, 0.8));
+  return polyhedral_mesh_from_volume_mesh(structured_grid(box, {2, 2, 1}, ElementType::hex8));
+}
+
+// Every cell's nodes and basis, compared bit for bit (tolerance 0), or to `tolerance`
+// relative to the largest entry (a recomputation: the fits' summation order may depend
+// on the thread and buffer they ran in).
+void expect_identical(const HarmonicElementBases& a, const HarmonicElementBases& b, double tolerance = 0) {
+  const auto expect_equal = [tolerance](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+    ASSERT_EQ(x.rows(), y.rows());
+    ASSERT_EQ(x.cols(), y.cols());
+    if (tolerance == 0)
+      EXPECT_EQ(x, y);
+    else
+      EXPECT_LE((x - y).cwiseAbs().maxCoeff(), tolerance * std::max(1.0, x.cwiseAbs().maxCoeff()));
+  };
+  ASSERT_EQ(a.cell_count(), b.cell_count());
+  for (int cell = 0; cell < a.cell_count(); ++cell) {
+    EXPECT_EQ(a.nodes(cell), b.nodes(cell));
+    EXPECT_EQ(a.plain_type(cell), b.plain_type(cell));
+    ASSERT_EQ(a.mfs_basis(cell) != nullptr, b.mfs_basis(cell) != nullptr);
+    if (!a.mfs_basis(cell)) continue;
+    const ElementHarmonicBasis &left = *a.mfs_basis(cell), &right = *b.mfs_basis(cell);
+    expect_equal(left.centres(), right.centres());
+    expect_equal(left.boundary_integrals(), right.boundary_integrals());
+    EXPECT_NEAR(left.boundary_residual(), right.boundary_residual(), tolerance);
+    const Eigen::MatrixXd points = Eigen::MatrixXd::Random(5, 3);
+    expect_equal(left.values(points), right.values(points));
+  }
+}
+
+TEST(HarmonicBasisCache, SecondRunReusesIdenticalBasesAndBrokenFilesAreRewritten) {
+  const auto directory = fresh_directory("basis_cache");
+  const PolyhedralMesh mesh = hexahedra();
+  const MfsOptions options;
+  bool reused = true;
+  const HarmonicElementBases computed = cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
+  EXPECT_FALSE(reused);
+  expect_identical(computed, HarmonicElementBases(mesh, HarmonicBasisKind::mfs, options), 1e-10);
+  const HarmonicElementBases read = cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
+  EXPECT_TRUE(reused);
+  expect_identical(computed, read);
+
+  MfsOptions other = options;
+  other.edge_samples = 4;
+  cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, other, directory, &reused);
+  EXPECT_FALSE(reused);  // other options: another key
+  cached_harmonic_bases(mesh, HarmonicBasisKind::automatic, options, directory, &reused);
+  EXPECT_FALSE(reused);  // closed-form cells: another key
+  PolyhedralMesh moved = mesh;
+  moved.nodes(0, 0) -= 1e-3;
+  cached_harmonic_bases(moved, HarmonicBasisKind::mfs, options, directory, &reused);
+  EXPECT_FALSE(reused);  // another mesh: another key
+
+  const auto path = directory / cache_file_path({}, harmonic_bases_key(mesh, HarmonicBasisKind::mfs, options), ".harmonic");
+  ASSERT_TRUE(std::filesystem::exists(path));
+  const auto size = std::filesystem::file_size(path);
+  std::filesystem::resize_file(path, size / 2);  // an interrupted writer without the atomic rename
+  expect_identical(computed, cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused), 1e-10);
+  EXPECT_FALSE(reused);
+  EXPECT_EQ(std::filesystem::file_size(path), size);  // rewritten whole
+  {
+    std::fstream file(path, std::ios::binary | std::ios::in | std::ios::out);
+    file.seekp(3);
+    file.put('#');  // the format's magic no longer matches
+  }
+  expect_identical(computed, cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused), 1e-10);
+  EXPECT_FALSE(reused);
+  cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
+  EXPECT_TRUE(reused);
+}
+
+TEST(HarmonicBasisCache, TheMethodReportsWritingThenReusingItsCache) {
+  const auto directory = fresh_directory("method_cache");
+  Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json");
+  scene.resolved["discretization"]["harmonic"] = {
+      {"convert", {{"mesh", "grid"}, {"resolution", {4, 1, 1}}}}, {"basis", "mfs"}, {"cache", directory.string()}};
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const auto first = make_harmonic_method(scene, geometry);
+  EXPECT_EQ(first->facts()["harmonic_basis_cache"], "written");
+  const auto second = make_harmonic_method(scene, geometry);
+  EXPECT_EQ(second->facts()["harmonic_basis_cache"], "reused");
+  EXPECT_EQ(first->facts()["max_mfs_boundary_residual"], second->facts()["max_mfs_boundary_residual"]);
+  EXPECT_EQ(first->discretization().dof_count(), second->discretization().dof_count());
+
+  // A cache folder that cannot be created (a file is in the way): bad input naming the key.
+  std::ofstream(directory / "file") << "in the way";
+  scene.resolved["discretization"]["harmonic"]["cache"] = (directory / "file" / "cache").string();
+  try {
+    make_harmonic_method(scene, geometry);
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/discretization/harmonic/cache"), std::string::npos) << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace altfem::harmonic
