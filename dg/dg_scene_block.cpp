@@ -159,7 +159,7 @@ const scene_schema::ObjectRule& dg_rule() {
         .choices = scene_schema::names(condition_imposition_names)},
        {.key = "embedding", .type = ValueType::string, .default_value = "mls",
         .choices = scene_schema::names(embedding_names)},
-       {.key = "preconditioner", .type = ValueType::string, .default_value = "two_level",
+       {.key = "preconditioner", .type = ValueType::string, .default_value = "block_jacobi",
         .choices = scene_schema::names(dg_preconditioner_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},

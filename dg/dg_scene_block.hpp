@@ -62,7 +62,7 @@ struct DgSpec {
   /// Dirichlet conditions imposed strongly (linear material without warping only).
   bool strong_conditions = false;
   Embedding embedding = Embedding::mls;
-  DgPreconditioner preconditioner = DgPreconditioner::two_level;
+  DgPreconditioner preconditioner = DgPreconditioner::block_jacobi;
   /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
   /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
   /// (quadrature_order and curved unused).

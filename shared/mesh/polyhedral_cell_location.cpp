@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 #include <Eigen/Geometry>
 
@@ -47,16 +48,31 @@ double distance_to_polygon(const Eigen::MatrixXd& nodes, const std::vector<int>&
   return inside ? std::abs((x - origin).dot(normal)) : edge_distance;
 }
 
+// The solid angle of a planar face loop (rows of `points`) seen from x, by its fan triangles.
+double fan_solid_angle(const Eigen::MatrixXd& points, const std::vector<int>& loop, const Eigen::Vector3d& x) {
+  double total = 0;
+  const Eigen::Vector3d first = points.row(loop[0]).transpose() - x;
+  for (size_t k = 1; k + 1 < loop.size(); ++k)
+    total += solid_angle(first, points.row(loop[k]).transpose() - x, points.row(loop[k + 1]).transpose() - x);
+  return total;
+}
+
+// winding_number of cell_polyhedron(mesh, cell), read from the mesh's faces in place:
+// copying a cut cell of thousands of facets for every located point cost more than the
+// solid angles themselves. A stored loop is outward for face_cells(f, 0), so the other
+// cell sees its solid angle negated.
+double cell_winding_number(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x) {
+  double total = 0;
+  for (int face : mesh.cell_faces[cell])
+    total += (mesh.face_cells(face, 0) == cell ? 1.0 : -1.0) * fan_solid_angle(mesh.nodes, mesh.faces[face], x);
+  return total / (4 * std::numbers::pi);
+}
+
 }  // namespace
 
 double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x) {
   double total = 0;
-  for (const auto& face : polyhedron.faces) {
-    const Eigen::Vector3d first = polyhedron.vertices.row(face[0]).transpose() - x;
-    for (size_t k = 1; k + 1 < face.size(); ++k)
-      total += solid_angle(first, polyhedron.vertices.row(face[k]).transpose() - x,
-                           polyhedron.vertices.row(face[k + 1]).transpose() - x);
-  }
+  for (const auto& face : polyhedron.faces) total += fan_solid_angle(polyhedron.vertices, face, x);
   return total / (4 * std::numbers::pi);
 }
 
@@ -68,7 +84,7 @@ double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eig
 }
 
 bool cell_holds(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x, double tolerance) {
-  return winding_number(cell_polyhedron(mesh, cell), x) > 0.5 || distance_to_cell_boundary(mesh, cell, x) <= tolerance;
+  return cell_winding_number(mesh, cell, x) > 0.5 || distance_to_cell_boundary(mesh, cell, x) <= tolerance;
 }
 
 }  // namespace altfem
