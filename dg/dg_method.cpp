@@ -116,7 +116,9 @@ public:
           *system_, settings_, density_integrals(), std::move(element_dofs),
           [this](double time) { return weak_condition_load(time, true); }, moving_data());
     } else if (linear()) {
-      DirichletDofs strong{system_->constrained_dofs(), [this](double time) {
+      // The data's projection at every step, none while every motion is `fixed` (then 0).
+      DirichletDofs strong{system_->constrained_dofs(), [this](double time) -> Eigen::VectorXd {
+                             if (!moving()) return Eigen::VectorXd::Zero(system_->constrained_dofs().size());
                              return system_->constrained_values([&](int condition, const Eigen::Vector3d& x) {
                                return motions_[condition].displacement(x, time);
                              });
