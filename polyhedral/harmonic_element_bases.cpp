@@ -10,9 +10,18 @@
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
-#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::harmonic {
+
+namespace {
+
+// Keeps the smallest cell index any thread records: an exception must not leave an
+// OpenMP region, so failures are reported after it, the first in cell order.
+void record_first(std::atomic<int>& first, int cell) {
+  for (int current = first.load(); cell < current && !first.compare_exchange_weak(current, cell);) {}
+}
+
+}  // namespace
 
 HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind,
                                            const MfsOptions& options)
@@ -33,8 +42,7 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   }
   // Each face's coordinates once, shared by its two cells; then the cells.
   const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, mfs_cells, options);
-  // An exception must not leave the OpenMP region: a cell whose basis fails is
-  // recorded (the first in cell order is reported) and its basis left empty.
+  // A cell whose basis fails is recorded and its basis left empty.
   std::atomic<int> failed_cell{cells};
   const auto count = static_cast<int>(mfs_cells.size());
 #pragma omp parallel for schedule(dynamic, 4)
@@ -46,7 +54,7 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       if (std::isfinite(entry.mfs->boundary_residual())) continue;
     } catch (const std::exception&) {
     }
-    for (int current = failed_cell.load(); cell < current && !failed_cell.compare_exchange_weak(current, cell);) {}
+    record_first(failed_cell, cell);
   }
   if (failed_cell < cells)
     throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
@@ -60,7 +68,8 @@ double HarmonicElementBases::max_boundary_residual() const {
   return largest;
 }
 
-TabulatedElements HarmonicElementBases::tabulate(int strength, const std::vector<int>& materials) const {
+TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQuadrature& quadrature,
+                                                 const std::vector<int>& materials) const {
   const int cells = cell_count();
   // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
   // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
@@ -83,13 +92,24 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const std::vector
         volume.cells(static_cast<Eigen::Index>(row), corner) = cells_[rows[row]].nodes[corner];
     plain_tables[t] = tabulate_lagrange(volume, strength);
   }
-  // MFS cells: an exact rule on the polyhedron and the consistency correction.
+  // MFS cells: the chosen rule on the polyhedron and the consistency correction. A rule
+  // without points would leave the cell unintegrated (the correction divides by its
+  // volume): the first such cell is reported after the loop.
   std::vector<HarmonicTabulation> mfs_tables(cells);
+  std::atomic<int> empty_cell{cells};
 #pragma omp parallel for schedule(dynamic, 4)
-  for (int cell = 0; cell < cells; ++cell)
-    if (cells_[cell].mfs)
-      mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, polyhedron_rule(cell_polyhedron(mesh_, cell), strength),
-                                                   true);
+  for (int cell = 0; cell < cells; ++cell) {
+    if (!cells_[cell].mfs) continue;
+    const PolyhedronRule rule = harmonic_cell_rule(cell_polyhedron(mesh_, cell), strength, quadrature, cell);
+    if (rule.weights.size() == 0) {
+      record_first(empty_cell, cell);
+      continue;
+    }
+    mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, rule, quadrature.consistent);
+  }
+  if (empty_cell < cells)
+    throw NumericalError("harmonic quadrature of cell " + std::to_string(empty_cell.load()) +
+                         ": its rule has no point inside the cell (raise subdivision_levels or monte_carlo_points)");
   TabulatedElements elements;
   for (int cell = 0; cell < cells; ++cell) {
     if (const auto& type = cells_[cell].plain) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "polyhedral/element_harmonic_basis.hpp"
+#include "polyhedral/harmonic_cell_rule.hpp"
 #include "polyhedral/harmonic_scene_block.hpp"
 #include "polyhedral/plain_cells.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
@@ -34,10 +35,13 @@ public:
   /// The largest RMS boundary misfit of the MFS fits (0 without MFS cells).
   double max_boundary_residual() const;
 
-  /// Every cell with an exact rule of `strength`: tet_rule/hex_rule on plain cells,
-  /// polyhedron_rule with harmonic_tabulation's consistency correction on MFS cells.
-  /// Element e is cell e, of material materials[e] (empty: all 0). Parallel over cells.
-  TabulatedElements tabulate(int strength, const std::vector<int>& materials = {}) const;
+  /// Every cell tabulated with a rule of `strength`: tet_rule/hex_rule on plain cells,
+  /// harmonic_cell_rule(quadrature) with harmonic_tabulation's consistency correction
+  /// (when quadrature.consistent) on MFS cells. Element e is cell e, of material
+  /// materials[e] (empty: all 0). Parallel over cells. Throws NumericalError naming the
+  /// first MFS cell whose rule has no point (a cell thinner than a subdivision box).
+  TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature,
+                             const std::vector<int>& materials = {}) const;
 
   /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
   /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an

@@ -49,7 +49,9 @@ public:
     }
     DiscretizationParts parts;
     quadrature_order_ = spec.quadrature_order;
-    parts.elements = bases_->tabulate(spec.quadrature_order, materials_.ids_of(mesh_.cell_centroids));
+    parts.elements = bases_->tabulate(spec.quadrature_order, spec.quadrature, materials_.ids_of(mesh_.cell_centroids));
+    for (int cell = 0; cell < bases_->cell_count(); ++cell)
+      if (bases_->mfs_basis(cell)) mfs_quadrature_points_ += parts.elements[cell].point_count();
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     parts.materials = materials_.pointers();
     // The basis is nodal (N_i(x_j) = δ_ij up to the fit), so conditions are strong on
@@ -73,12 +75,15 @@ public:
   const Discretization& discretization() const override { return *discretization_; }
   /// The stiffness tabulation, or every cell re-tabulated at the stronger rule; the
   /// points from the basis' linear precision (exact on plain cells, to the MFS fit elsewhere).
+  /// The stronger rule (errors, energies) is the full cone rule whatever `rule` says, so
+  /// the solutions of every rule kind are measured alike and exactly to its strength.
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
     if (added_strength == 0)
       return nodal_field_quadrature(borrowed(*elements_), mesh_.nodes, quadrature_order_);
     const int strength = quadrature_order_ + added_strength;
-    return nodal_field_quadrature(std::make_shared<TabulatedElements>(bases_->tabulate(strength)), mesh_.nodes,
-                                  strength);
+    const HarmonicQuadrature full_cone{.kind = HarmonicRuleKind::cone, .simplifier = std::nullopt};
+    return nodal_field_quadrature(std::make_shared<TabulatedElements>(bases_->tabulate(strength, full_cone)),
+                                  mesh_.nodes, strength);
   }
   nlohmann::json element_counts() const override {
     long long tet4 = 0, hex8 = 0, mfs = 0;
@@ -113,6 +118,7 @@ public:
     nlohmann::json facts = embedding_facts(surface_, *embedding_);
     facts.update(mesh_facts_);
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
+    facts["mfs_quadrature_points"] = mfs_quadrature_points_;
     if (!basis_cache_.empty()) facts["harmonic_basis_cache"] = basis_cache_;
     return facts;
   }
@@ -140,6 +146,7 @@ private:
   double quadrature_seconds_ = 0;
   std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
+  long long mfs_quadrature_points_ = 0;  // the stiffness rule's points on MFS cells
 };
 
 }  // namespace

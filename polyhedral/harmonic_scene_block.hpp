@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string_view>
 
+#include "polyhedral/harmonic_cell_rule.hpp"
 #include "polyhedral/mfs_options.hpp"
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/method_scene_block.hpp"
@@ -25,7 +26,9 @@ inline constexpr std::array<std::string_view, 2> harmonic_basis_names{"auto", "m
 struct HarmonicSpec {
   PolyhedralMeshSource mesh;  ///< `slice` (slicing set) or `convert` (the resolved fem block)
   MfsOptions mfs;           ///< edge_samples and offset from the block
-  int quadrature_order = 2; ///< strength of each cell's rule (polyhedron_rule, tet_rule, hex_rule)
+  int quadrature_order = 2; ///< strength of each cell's rule (harmonic_cell_rule, tet_rule, hex_rule)
+  /// The MFS cells' rule: `rule`, `simplifier`, `subdivision_levels`, `monte_carlo_points`.
+  HarmonicQuadrature quadrature;
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;
   /// Corotated stiffness warping of the linear material by shape matching (§6).
   bool warping = false;

@@ -12,14 +12,6 @@ namespace altfem {
 
 namespace {
 
-// The solid angle of triangle (a, b, c) seen from the origin (Van Oosterom & Strackee 1983).
-double solid_angle(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const double la = a.norm(), lb = b.norm(), lc = c.norm();
-  const double numerator = a.dot(b.cross(c));
-  const double denominator = la * lb * lc + a.dot(b) * lc + a.dot(c) * lb + b.dot(c) * la;
-  return 2 * std::atan2(numerator, denominator);
-}
-
 double distance_to_segment(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
   const Eigen::Vector3d ab = b - a;
   const double t = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
@@ -48,15 +40,6 @@ double distance_to_polygon(const Eigen::MatrixXd& nodes, const std::vector<int>&
   return inside ? std::abs((x - origin).dot(normal)) : edge_distance;
 }
 
-// The solid angle of a planar face loop (rows of `points`) seen from x, by its fan triangles.
-double fan_solid_angle(const Eigen::MatrixXd& points, const std::vector<int>& loop, const Eigen::Vector3d& x) {
-  double total = 0;
-  const Eigen::Vector3d first = points.row(loop[0]).transpose() - x;
-  for (size_t k = 1; k + 1 < loop.size(); ++k)
-    total += solid_angle(first, points.row(loop[k]).transpose() - x, points.row(loop[k + 1]).transpose() - x);
-  return total;
-}
-
 // winding_number of cell_polyhedron(mesh, cell), read from the mesh's faces in place:
 // copying a cut cell of thousands of facets for every located point cost more than the
 // solid angles themselves. A stored loop is outward for face_cells(f, 0), so the other
@@ -69,12 +52,6 @@ double cell_winding_number(const PolyhedralMesh& mesh, int cell, const Eigen::Ve
 }
 
 }  // namespace
-
-double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x) {
-  double total = 0;
-  for (const auto& face : polyhedron.faces) total += fan_solid_angle(polyhedron.vertices, face, x);
-  return total / (4 * std::numbers::pi);
-}
 
 double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x) {
   double distance = std::numeric_limits<double>::infinity();

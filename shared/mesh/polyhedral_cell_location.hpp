@@ -1,18 +1,16 @@
 #pragma once
 // Where a point lies with respect to the cells of a polyhedral mesh, convex or not (cut
 // cells of a sliced mesh, merged slivers): the generalised winding number of a closed
-// polyhedron and the distance to a cell's boundary. What the polyhedral methods'
-// embedding evaluators locate the embedded surface's points with.
+// polyhedron (shared/geometry/polyhedron_winding_number) and the distance to a cell's
+// boundary. What the polyhedral methods' embedding evaluators locate the embedded
+// surface's points with.
 #include <Eigen/Core>
 
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/geometry/polyhedron_winding_number.hpp"  // winding_number
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 namespace altfem {
-
-/// Generalised winding number of a closed polyhedron about x (1 inside, 0 outside; by
-/// the signed solid angles of each face's fan triangles, exact for non-convex faces).
-double winding_number(const Polyhedron& polyhedron, const Eigen::Vector3d& x);
 
 /// Distance from x to the boundary of `cell`: to the nearest of its planar face polygons
 /// (convex or not).

@@ -1,0 +1,24 @@
+#include "polyhedral/harmonic_cell_rule.hpp"
+
+#include "shared/quadrature/polyhedron_monte_carlo_rule.hpp"
+#include "shared/quadrature/polyhedron_subdivision_rule.hpp"
+
+namespace altfem::harmonic {
+
+PolyhedronRule harmonic_cell_rule(const Polyhedron& polyhedron, int strength, const HarmonicQuadrature& quadrature,
+                                  std::uint64_t seed) {
+  switch (quadrature.kind) {
+    case HarmonicRuleKind::subdivision:
+      return polyhedron_subdivision_rule(polyhedron, strength, quadrature.subdivision_levels);
+    case HarmonicRuleKind::monte_carlo:
+      return polyhedron_monte_carlo_rule(polyhedron, quadrature.monte_carlo_points, seed);
+    case HarmonicRuleKind::cone:
+      break;
+  }
+  if (!quadrature.simplifier) return polyhedron_rule(polyhedron, strength);
+  SimplificationOptions options;
+  options.method = *quadrature.simplifier;
+  return simplified_polyhedron_rule(polyhedron, strength, options);
+}
+
+}  // namespace altfem::harmonic
