@@ -8,24 +8,20 @@
 // u* imposed weakly on every boundary face, §4.2), interior penalty: polynomials of degree
 // k = 1, 2 reproduced exactly, and L2 and H1 rates k + 1 and k (± 0.3) for k = 1, 2, 3.
 //
-// harmonic (issue 19): a 48-sided prism of radius 1/2 and height 2 (a cylinder whose
-// side facets are exactly vertical) in pure bending (Timoshenko & Goodier, §103):
-// u* = (−κ/2 (z² + ν(x² − y²)), −κνxy, κxz) has σ = Eκx e_z⊗e_z, no body force and no
-// traction on the sides, so u* on the two end faces is the whole problem; u* is
+// harmonic (issue 19): the prism in pure bending of bending_prism_scene.hpp; u* is
 // quadratic, so the trilinear and MFS bases converge at L2 ≥ 1.8 and H1 ≥ 0.9.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include "app/method_registry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
+#include "tests/verify/manufactured/bending_prism_scene.hpp"
 
 namespace altfem {
 namespace {
@@ -42,52 +38,6 @@ struct Row {
 const std::filesystem::path& output_folder() {
   static const std::filesystem::path folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_sliced_convergence";
   return folder;
-}
-
-// The prism's closed, outward surface as OFF: `sides` vertical rectangles (two triangles
-// each) and two triangle fans closing the ends at z = 0 and z = height.
-std::filesystem::path write_prism(int sides, double radius, double height) {
-  std::filesystem::create_directories(output_folder());
-  const std::filesystem::path file = output_folder() / "bending_prism.off";
-  std::ofstream out(file);
-  out.precision(17);
-  out << "OFF\n" << 2 * sides + 2 << " " << 4 * sides << " 0\n";
-  for (int level = 0; level < 2; ++level)
-    for (int i = 0; i < sides; ++i) {
-      const double angle = 2 * std::numbers::pi * i / sides;
-      out << radius * std::cos(angle) << " " << radius * std::sin(angle) << " " << level * height << "\n";
-    }
-  const int bottom_centre = 2 * sides, top_centre = 2 * sides + 1;
-  out << "0 0 0\n0 0 " << height << "\n";
-  for (int i = 0; i < sides; ++i) {
-    const int next = (i + 1) % sides;
-    out << "3 " << i << " " << next << " " << sides + next << "\n";
-    out << "3 " << i << " " << sides + next << " " << sides + i << "\n";
-    out << "3 " << bottom_centre << " " << next << " " << i << "\n";
-    out << "3 " << top_centre << " " << sides + i << " " << sides + next << "\n";
-  }
-  return file;
-}
-
-std::filesystem::path write_bending_scene() {
-  const std::filesystem::path surface = write_prism(48, 0.5, 2.0);
-  const std::filesystem::path file = output_folder() / "bending_prism.json";
-  const std::string field = R"json("motion": { "kind": "field", "displacement": ["-kappa/2*(z^2 + nu*(x^2 - y^2))", "-kappa*nu*x*y", "kappa*x*z"] })json";
-  std::ofstream(file) << R"json({
-  "name": "bending_prism",
-  "geometry": { "surface": ")json" << surface.string() << R"json(" },
-  "material": { "model": "linear", "youngs_modulus": 26, "poisson_ratio": 0.3, "density": 1 },
-  "constants": { "kappa": 0.01, "nu": 0.3 },
-  "boundary_conditions": [
-    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 0], "normal": [0, 0, 1] } }, )json" << field << R"json( },
-    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 2], "normal": [0, 0, -1] } }, )json" << field << R"json( }
-  ],
-  "exact_displacement": ["-kappa/2*(z^2 + nu*(x^2 - y^2))", "-kappa*nu*x*y", "kappa*x*z"],
-  "solver": { "tolerance": 1e-10 },
-  "discretization": { "harmonic": { "mesh": "slice" } },
-  "output": { "volume": false, "surface": false }
-})json";
-  return file;
 }
 
 struct Case {
@@ -229,7 +179,7 @@ TEST(SlicedConvergence, HarmonicOnABendingPrism) {
   // The default 5 samples per edge: a cut cell of the 48-gon has up to ~40 edges, but
   // the samples' spacing comes from the cell's area, not its edge count (both meshes:
   // 3.8 s CPU; 40 s for the 6-cell mesh alone when every edge got 5 centres).
-  expect_rates({"harmonic", "harmonic", {}, {6, 12}}, write_bending_scene(), 1.8, 0.9);
+  expect_rates({"harmonic", "harmonic", {}, {6, 12}}, test::write_bending_scene(output_folder()), 1.8, 0.9);
 }
 
 }  // namespace
