@@ -13,76 +13,62 @@ namespace altfem {
 
 namespace {
 
-// Samples bucketed in a uniform grid of cubes of side `cell`.
-class SampleGrid {
+// Sample indices listed under the cubes of a uniform grid of side `cell`.
+class CubeBuckets {
 public:
-  SampleGrid(const Eigen::MatrixXd& samples, double cell) : cell_(cell), origin_(samples.colwise().minCoeff()) {
-    for (Eigen::Index i = 0; i < samples.rows(); ++i) buckets_[key(cell_of(samples.row(i)))].push_back(static_cast<int>(i));
+  CubeBuckets(double cell, const Eigen::RowVector3d& origin) : cell_(cell), origin_(origin) {}
+  /// Lists `sample` under every cube that the box [low, high] overlaps.
+  void insert(int sample, const Eigen::RowVector3d& low, const Eigen::RowVector3d& high) {
+    for_each_cube(low, high, [&](long long cube) { buckets_[cube].push_back(sample); });
   }
-  /// Every sample within `radius` cells' reach of x (a superset of those within radius).
+  /// Visits the samples listed under every cube that the box [low, high] overlaps.
   template <typename Visit>
-  void for_each_near(const Eigen::Vector3d& x, double radius, Visit&& visit) const {
-    const Eigen::Vector3i low = cell_of((x.array() - radius).matrix().transpose());
-    const Eigen::Vector3i high = cell_of((x.array() + radius).matrix().transpose());
-    for (int i = low.x(); i <= high.x(); ++i)
-      for (int j = low.y(); j <= high.y(); ++j)
-        for (int k = low.z(); k <= high.z(); ++k) {
-          const auto found = buckets_.find(key({i, j, k}));
-          if (found == buckets_.end()) continue;
-          for (int sample : found->second) visit(sample);
-        }
+  void for_each_in(const Eigen::RowVector3d& low, const Eigen::RowVector3d& high, Visit&& visit) const {
+    for_each_cube(low, high, [&](long long cube) {
+      const auto found = buckets_.find(cube);
+      if (found != buckets_.end())
+        for (int sample : found->second) visit(sample);
+    });
   }
 
 private:
+  template <typename Body>
+  void for_each_cube(const Eigen::RowVector3d& low, const Eigen::RowVector3d& high, Body&& body) const {
+    const Eigen::Vector3i first = cell_of(low), last = cell_of(high);
+    for (int i = first.x(); i <= last.x(); ++i)
+      for (int j = first.y(); j <= last.y(); ++j)
+        for (int k = first.z(); k <= last.z(); ++k)
+          body((static_cast<long long>(i) * 2097152 + j) * 2097152 + k);
+  }
   Eigen::Vector3i cell_of(const Eigen::RowVector3d& x) const {
     return ((x - origin_) / cell_).array().floor().cast<int>().transpose();
-  }
-  static long long key(const Eigen::Vector3i& cell) {
-    return (static_cast<long long>(cell.x()) * 2097152 + cell.y()) * 2097152 + cell.z();
   }
   double cell_;
   Eigen::RowVector3d origin_;
   std::unordered_map<long long, std::vector<int>> buckets_;
 };
 
-// Samples listed under every cube of a uniform grid that their own support ball reaches
-// (its bounding box): a point's candidates are those of its cube. On a sliced mesh the
-// spacings range from a grid cell's edge to a surface facet's, and a query reaching as far
-// as the largest support visited every surface node near a point; the cube's side is the
-// median support, so a point sees few candidates and a large ball is listed in few cubes.
-class SupportGrid {
-public:
-  SupportGrid(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii) {
-    std::vector<double> sorted(radii.data(), radii.data() + radii.size());
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-    cell_ = std::max(sorted[sorted.size() / 2], 1e-12 * radii.maxCoeff());
-    origin_ = samples.colwise().minCoeff();
-    for (Eigen::Index i = 0; i < samples.rows(); ++i) {
-      const Eigen::Vector3i low = cell_of(samples.row(i).array() - radii[i]);
-      const Eigen::Vector3i high = cell_of(samples.row(i).array() + radii[i]);
-      for (int a = low.x(); a <= high.x(); ++a)
-        for (int b = low.y(); b <= high.y(); ++b)
-          for (int c = low.z(); c <= high.z(); ++c) buckets_[key({a, b, c})].push_back(static_cast<int>(i));
-    }
-  }
-  /// The samples whose support may hold x (a superset of those that do).
-  const std::vector<int>& at(const Eigen::Vector3d& x) const {
-    static const std::vector<int> none;
-    const auto found = buckets_.find(key(cell_of(x.transpose())));
-    return found == buckets_.end() ? none : found->second;
-  }
+// Each sample under the cube that holds it (cubes of the largest support): a point's
+// samples within a reach are among those of the cubes its box of that reach overlaps.
+CubeBuckets sample_cubes(const Eigen::MatrixXd& samples, double largest_radius) {
+  CubeBuckets cubes(largest_radius, samples.colwise().minCoeff());
+  for (Eigen::Index i = 0; i < samples.rows(); ++i) cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
+  return cubes;
+}
 
-private:
-  Eigen::Vector3i cell_of(const Eigen::RowVector3d& x) const {
-    return ((x - origin_) / cell_).array().floor().cast<int>().transpose();
-  }
-  static long long key(const Eigen::Vector3i& cell) {
-    return (static_cast<long long>(cell.x()) * 2097152 + cell.y()) * 2097152 + cell.z();
-  }
-  double cell_;
-  Eigen::RowVector3d origin_;
-  std::unordered_map<long long, std::vector<int>> buckets_;
-};
+// Each sample under every cube its own support ball reaches (its bounding box): a point's
+// candidates are those of its own cube. On a sliced mesh the spacings range from a grid
+// cell's edge to a surface facet's, and a query reaching as far as the largest support
+// visited every surface node near a point; cubes of the median support's side give a point
+// few candidates and list a large ball in few cubes.
+CubeBuckets support_cubes(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii) {
+  std::vector<double> sorted(radii.data(), radii.data() + radii.size());
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  CubeBuckets cubes(std::max(sorted[sorted.size() / 2], 1e-12 * radii.maxCoeff()), samples.colwise().minCoeff());
+  for (Eigen::Index i = 0; i < samples.rows(); ++i)
+    cubes.insert(static_cast<int>(i), samples.row(i).array() - radii[i], samples.row(i).array() + radii[i]);
+  return cubes;
+}
 
 // One embedded point's samples and weights w_i(x) (eq. (32)).
 struct PointWeights {
@@ -96,8 +82,8 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
                            const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options)
     : stitched_(basis, samples) {
   const double largest_radius = options.support * spacing.maxCoeff();
-  const SupportGrid supports(samples, options.support * spacing);
-  const SampleGrid grid(samples, largest_radius);  // for enlarged supports (rare)
+  const CubeBuckets supports = support_cubes(samples, options.support * spacing);
+  const CubeBuckets reachable = sample_cubes(samples, largest_radius);  // for enlarged supports (rare)
   std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 256)
@@ -128,9 +114,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           theta.push_back(weight);
         };
         if (enlarge == 1.0)
-          for (int sample : supports.at(x)) add(sample);
+          supports.for_each_in(x.transpose(), x.transpose(), add);
         else
-          grid.for_each_near(x, reach, add);
+          reachable.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
         if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
         const Eigen::Vector4d row = eigen.eigenvectors() *
