@@ -17,14 +17,8 @@
 namespace altfem {
 namespace {
 
-// A tetrahedron with no face parallel to an axis plane (faces outward).
-Polyhedron skewed_tetrahedron() {
-  Polyhedron tet;
-  tet.vertices.resize(4, 3);
-  tet.vertices << 0, 0, 0, 1, 0.1, 0, 0.2, 1, 0.1, 0.1, 0.3, 1;
-  tet.faces = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  return tet;
-}
+// A triangular prism whose sides are at angles to the x and y axes: they cut the boxes.
+Polyhedron skewed_prism() { return test::prism({{0, 0}, {1, 0.1}, {0.2, 1}}, 0.9, {0.05, -0.1, 0.2}); }
 
 // Σ w_q m(x_q) − ∫ m for the monomials m of degree ≤ `degree` (polyhedron_moments' order).
 Eigen::VectorXd moment_errors(const PolyhedronRule& rule, const Polyhedron& polyhedron, int degree) {
@@ -57,28 +51,26 @@ TEST(PolyhedronSubdivisionRule, ExactWhenTheFacesLieOnBoxFaces) {
 
 TEST(PolyhedronSubdivisionRule, FirstOrderInTheBoxSizeWhereFacesCutTheBoxes) {
   // Boxes the faces cut are kept or dropped whole: a layer of thickness O(h) around the
-  // boundary in error, so the rate is at least 1. A planar face cancels much of it (each
-  // column of boxes errs on both sides of the face): measured 0.28, 0.047, 0.012, 3.3e-3,
-  // 7.3e-4 relative volume error at levels 2 to 6, about second order.
-  const Polyhedron tet = skewed_tetrahedron();
-  const double volume = polyhedron_moments(tet, 0)[0];
+  // boundary in error, so error ≤ C h. Its signs partly cancel, and by how much varies
+  // with how the faces meet the grid, so the error is not monotone in h (measured: largest
+  // relative moment error 8.2e-2, 1.7e-2, 3.0e-3, 8.8e-4, 2.2e-3 at levels 2 to 6); checked
+  // against C h with C from level 2 and twice its size of slack.
+  const Polyhedron cell = skewed_prism();
+  const double volume = polyhedron_moments(cell, 0)[0];
   std::printf("  levels  points   volume error   first-moment error\n");
-  double previous = 0, first = 0, last = 0;
+  double first = 0, last = 0;
   for (int levels = 2; levels <= 6; ++levels) {
-    const PolyhedronRule rule = polyhedron_subdivision_rule(tet, 1, levels);
-    const Eigen::VectorXd errors = moment_errors(rule, tet, 1) / volume;
+    const PolyhedronRule rule = polyhedron_subdivision_rule(cell, 1, levels);
+    const Eigen::VectorXd errors = moment_errors(rule, cell, 1) / volume;
     const double error = errors.cwiseAbs().maxCoeff();
     std::printf("  %6d %7ld  %13.3e  %13.3e\n", levels, static_cast<long>(rule.weights.size()), std::abs(errors[0]),
                 errors.tail(3).cwiseAbs().maxCoeff());
     if (levels == 2) first = error;
-    if (levels > 2) {
-      EXPECT_LT(error, 0.8 * previous) << levels << " levels";  // shrinks at every halving
-    }
-    previous = last = error;
+    EXPECT_LE(error, 2 * first / (1 << (levels - 2))) << levels << " levels";
+    last = error;
   }
-  // Four halvings of h: at least first order overall (2⁴ = 16).
-  EXPECT_LT(last, first / 12);
-  EXPECT_GT(last, 1e-8);  // and not exact: the test would not see a rule that ignored the cut
+  EXPECT_LT(last, first / 12);  // four halvings of h: at least first order overall
+  EXPECT_GT(last, 1e-8);        // and not exact: the test would not see a rule that ignored the cut
 }
 
 TEST(PolyhedronMonteCarloRule, ErrorFollowsItsStandardDeviation) {
@@ -86,16 +78,16 @@ TEST(PolyhedronMonteCarloRule, ErrorFollowsItsStandardDeviation) {
   // vol(P)/vol(B). Over 32 seeds the RMS error must lie within a factor 2 of that sd (a
   // χ² with 32 degrees of freedom leaves it within [0.73, 1.25] at 99.9%), at every N,
   // so the error falls as 1/√N.
-  const Polyhedron tet = skewed_tetrahedron();
-  const double volume = polyhedron_moments(tet, 0)[0];
-  const Eigen::Vector3d extent = tet.vertices.colwise().maxCoeff() - tet.vertices.colwise().minCoeff();
+  const Polyhedron cell = skewed_prism();
+  const double volume = polyhedron_moments(cell, 0)[0];
+  const Eigen::Vector3d extent = cell.vertices.colwise().maxCoeff() - cell.vertices.colwise().minCoeff();
   const double box_volume = extent.prod(), p = volume / box_volume;
   std::printf("  points  rms volume error  predicted sd  rms first-moment error\n");
   for (int count : {100, 1000, 10000}) {
     double squared = 0, moment_squared = 0;
     const int seeds = 32;
     for (int seed = 0; seed < seeds; ++seed) {
-      const Eigen::VectorXd errors = moment_errors(polyhedron_monte_carlo_rule(tet, count, seed), tet, 1);
+      const Eigen::VectorXd errors = moment_errors(polyhedron_monte_carlo_rule(cell, count, seed), cell, 1);
       squared += errors[0] * errors[0];
       moment_squared += errors.tail(3).squaredNorm() / 3;
     }
