@@ -25,8 +25,8 @@ inline constexpr std::array<std::string_view, 3> harmonic_rule_names{"cone", "su
 // per MFS cell and H1 error 9.18e-4; simplified to 10 points (any simplifier) H1 grows to
 // 1.6–2.1e-3, because 10 points give a cell of 14–30 nodes a rank-deficient stiffness (on
 // the sliced hollow ball, neo-Hookean, Newton then meets an indefinite tangent and fails);
-// subdivision (422 / 3303 points) and Monte Carlo (797 / 3185) give errors within 0.5% of
-// the cone rule's for 3–20× its points. So: the cone rule, not simplified.
+// subdivision (422 / 3303 points) and Monte Carlo (797 with 1000 samples) give errors
+// within 1% of the cone rule's for 3–20× its points. So: the cone rule, not simplified.
 struct HarmonicQuadrature {
   HarmonicRuleKind kind = HarmonicRuleKind::cone;
   /// `cone` only: the simplifier of simplified_polyhedron_rule, nullopt for the full cone rule.

@@ -97,9 +97,7 @@ TEST(HarmonicQuadrature, RulesComparedOnASlicedPrism) {
       {"subdivision, 3 levels", {"rule=subdivision", "subdivision_levels=3"},
        {.kind = HarmonicRuleKind::subdivision, .subdivision_levels = 3}},
       {"monte_carlo, 1000", {"rule=monte_carlo", "monte_carlo_points=1000"},
-       {.kind = HarmonicRuleKind::monte_carlo, .monte_carlo_points = 1000}},
-      {"monte_carlo, 4000", {"rule=monte_carlo", "monte_carlo_points=4000"},
-       {.kind = HarmonicRuleKind::monte_carlo, .monte_carlo_points = 4000}}};
+       {.kind = HarmonicRuleKind::monte_carlo, .monte_carlo_points = 1000}}};
 
   // The patch test's mesh (the method's) and MFS bases on every cell, once.
   const Scene scene = sliced_prism({"basis=mfs"});
