@@ -267,6 +267,13 @@ Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
   return matrix;
 }
 
+PolyhedronRule DgLinearSystem::cell_rule(int cell, int strength) const {
+  if (!settings_.rule_simplification) return polyhedron_rule(cells_[cell], strength);
+  SimplificationOptions options;
+  options.method = *settings_.rule_simplification;
+  return simplified_polyhedron_rule(cells_[cell], strength, options);
+}
+
 template <typename Body>
 void DgLinearSystem::for_each_cell_point(int strength, Body&& body) const {
   Eigen::VectorXd phi;

@@ -7,12 +7,14 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <functional>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "dg/face_matrices.hpp"
 #include "dg/monomial_basis.hpp"
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
 
@@ -76,6 +78,10 @@ struct DgSettings {
   /// (dg/cell_similarity.hpp). The matrices equal the recomputed ones up to round-off
   /// (≤ 1e-12 relative); false recomputes every cell and face, for comparison.
   bool reuse_similar_cells = true;
+  /// The volume rules of the tabulated paths (nonlinear materials, field quadrature)
+  /// simplified to at most C(s + 3, 3) points of strength s (simplified_polyhedron_rule),
+  /// or the cone rules as they are (nullopt). The exact linear path has no rule.
+  std::optional<SimplificationMethod> rule_simplification = std::nullopt;
 };
 
 /// How many cells and faces a DgLinearSystem integrated, and how many distinct classes
@@ -116,6 +122,9 @@ public:
   const Eigen::VectorXd& function_integrals() const { return integrals_; }
   int cell_count() const { return static_cast<int>(cells_.size()); }
   const Polyhedron& cell(int index) const { return cells_[index]; }
+  /// The volume rule of a cell at a strength for the tabulated paths: the cone rule
+  /// (polyhedron_rule), simplified as the settings' rule_simplification says.
+  PolyhedronRule cell_rule(int cell, int strength) const;
   const std::vector<DgFace>& faces() const { return faces_; }
   Flux flux() const { return settings_.flux; }
   /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary

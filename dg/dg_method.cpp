@@ -85,13 +85,18 @@ public:
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
     const DgMaterial& first = cell_materials_.materials.front();
-    settings_ = {spec_.degree, spec_.flux,    first.penalty, first.lambda, first.mu,
-                 first.density, boundary_factor(scene), spec_.scaling, first.tangential_fraction};
+    settings_ = {spec_.degree,         spec_.flux,    first.penalty,
+                 first.lambda,         first.mu,      first.density,
+                 boundary_factor(scene), spec_.scaling, first.tangential_fraction,
+                 true,                 spec_.rule_simplification};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
-    // definite" (K of the linear material; Babuška–Zlámal is definite for any η).
-    while (spec_.double_until_definite && linear() && !positive_definite(*system_)) {
+    // definite" (K of the linear material). Babuška–Zlámal is definite for any η > 0
+    // (§9.1): its K is a sum of semidefinite volume terms and positive jump penalties, so
+    // only interior penalty pays for the test factorisation.
+    while (spec_.double_until_definite && linear() && spec_.flux == Flux::interior_penalty &&
+           !positive_definite(*system_)) {
       if (++doublings_ > max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");

@@ -161,6 +161,8 @@ const scene_schema::ObjectRule& dg_rule() {
         .choices = scene_schema::names(embedding_names)},
        {.key = "preconditioner", .type = ValueType::string, .default_value = "block_jacobi",
         .choices = scene_schema::names(dg_preconditioner_names)},
+       {.key = "simplifier", .type = ValueType::string, .default_value = "caratheodory",
+        .choices = scene_schema::names(simplifier_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
        {.key = "mesh", .type = ValueType::string, .choices = mesh_names()},
@@ -194,6 +196,7 @@ DgSpec dg_spec(const Scene& scene) {
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
   spec.preconditioner = static_cast<DgPreconditioner>(
       index_of(dg_preconditioner_names, dg["preconditioner"].get<std::string>()));
+  spec.rule_simplification = simplifier_from_name(dg["simplifier"].get<std::string>());
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
     return spec;

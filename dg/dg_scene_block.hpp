@@ -63,6 +63,8 @@ struct DgSpec {
   bool strong_conditions = false;
   Embedding embedding = Embedding::mls;
   DgPreconditioner preconditioner = DgPreconditioner::block_jacobi;
+  /// The nonlinear path's volume rules simplified (DgSettings::rule_simplification).
+  std::optional<SimplificationMethod> rule_simplification = SimplificationMethod::caratheodory;
   /// The geometry sliced (mesh "slice"), or the volume mesh converted into polyhedra:
   /// element, mesh kind, resolution and max_cell_size as the `fem` block means them
   /// (quadrature_order and curved unused).

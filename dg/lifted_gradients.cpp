@@ -94,7 +94,7 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
     }
   }
 
-  const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
+  const PolyhedronRule rule = system.cell_rule(cell, strength);
   const Eigen::Index points = rule.weights.size();
   Eigen::MatrixXd own_values(points, own);
   std::vector<Eigen::MatrixXd> own_gradients(static_cast<size_t>(points));

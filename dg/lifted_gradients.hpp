@@ -60,7 +60,7 @@ struct LiftedDgCells {
 
 /// Every cell as an element over its own functions (first, in order) followed by its face
 /// neighbours' (each neighbour once, in the order of system.faces()), at the points of
-/// polyhedron_rule(cell, strength): values φ_a (0 for a neighbour's function, so masses
+/// system.cell_rule(cell, strength): values φ_a (0 for a neighbour's function, so masses
 /// and body loads are the cell's own) and the lifted gradients G_a (#points·#functions × 3).
 /// The lifting's face integrals use polygon rules of strength 2k (exact for the
 /// functions' jumps; the data's share is exact for g of degree ≤ k). Throws

@@ -67,7 +67,7 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
   TabulatedElements elements;
   std::vector<Eigen::MatrixXd> cell_points;
   for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
+    const PolyhedronRule rule = system.cell_rule(cell, strength);
     const int n = system.basis(cell).size();
     Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
     tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);

@@ -1,7 +1,7 @@
 #pragma once
 // DG for every material model (beyond Kaufmann et al. 2009, whose §4 is linear): the
 // monomials of a DgLinearSystem tabulated at points of a rule on each polyhedron
-// (polyhedron_rule: exact for polynomials up to its strength) for the shared assembly,
+// (DgLinearSystem::cell_rule: exact for polynomials up to its strength) for the shared assembly,
 // which evaluates any hyperelastic ψ(F). The faces carry the jump penalty
 // η_f/2 ∫ |[[u]]|² (eq. (19), shared JumpPenaltyKernel), interior and Dirichlet faces alike.
 // With the Babuška–Zlámal flux that is all (eq. (19): inconsistent, its error does not
@@ -25,7 +25,7 @@ struct TabulatedDg {
   std::unique_ptr<TabulatedDiscretization> discretization;
 };
 
-/// Every cell's monomials at the points of polyhedron_rule(cell, strength), each cell with
+/// Every cell's monomials at the points of system.cell_rule(cell, strength), each cell with
 /// its system.material_id; the points' positions (#points × 3, in packed order) into
 /// `points` when it is given.
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points = nullptr);

@@ -33,7 +33,6 @@ std::vector<std::string_view> cell_names() {
   return names;
 }
 
-constexpr std::array<std::string_view, 4> simplifier_names{"caratheodory", "nnls", "lp", "none"};
 constexpr std::array<std::string_view, 2> stabilized_names{"mass_and_stiffness", "mass"};
 
 // The background's size comes from one of `resolution`, `cell_size` or the `background`
@@ -104,11 +103,7 @@ FcmSpec fcm_spec(const Scene& scene) {
   if (fcm.contains("background")) spec.background = fcm["background"].get<std::string>();
   else spec.margin = fcm["margin"].get<double>();
   if (fcm.contains("embedded_cell_size")) spec.embedded_cell_size = fcm["embedded_cell_size"].get<double>();
-  const std::string simplifier = fcm["simplifier"];
-  if (simplifier == "none") spec.simplifier.reset();
-  else if (simplifier == "lp") spec.simplifier = SimplificationMethod::linear_program;
-  else if (simplifier == "nnls") spec.simplifier = SimplificationMethod::nonnegative_least_squares;
-  else spec.simplifier = SimplificationMethod::caratheodory;
+  spec.simplifier = simplifier_from_name(fcm["simplifier"].get<std::string>());
   spec.simplification_tolerance = fcm["simplification_tolerance"].get<double>();
   spec.topology_aware = fcm["topology_aware"].get<bool>();
   FcmOptions& options = spec.options;

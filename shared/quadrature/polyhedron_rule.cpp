@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -90,6 +91,12 @@ namespace {
 // to 1), and weights w ≥ 0 solve the moment equations Σ_q w_q m_α(x_q) = ∫_P m_α for
 // every monomial of degree ≤ strength (a basic feasible point, Clp: at most that many
 // points, as the simplified rules of Longva et al. 2020 §4.4). Nullopt when infeasible.
+//
+// A cut cell of a detailed surface has thousands of cone tetrahedra, so testing every
+// candidate (one pass over the tetrahedra each) and handing all of them to the LP cost
+// minutes per cell. Far fewer suffice: the candidates are visited in an order that strides
+// across all tetrahedra, and the LP first gets the first 20 × #moments inside ones, then
+// twice as many, until it is feasible or every candidate has been offered.
 std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron, int strength,
                                                    const Eigen::Vector3d& apex,
                                                    const std::vector<Eigen::Matrix3d>& jacobians, double size) {
@@ -108,34 +115,44 @@ std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron,
     }
     return winding == 1;
   };
+  const Eigen::Matrix<int, Eigen::Dynamic, 3> exponents = monomial_exponents(strength);
+  const Eigen::VectorXd moments = polyhedron_moments(polyhedron, strength, apex, size);
+  const auto per_tet = static_cast<long>(tet.weights.size());
+  const long candidate_count = static_cast<long>(jacobians.size()) * per_tet;
+  // A stride coprime to the count visits every candidate once, hopping across tetrahedra.
+  long stride = 7919;
+  while (std::gcd(stride, candidate_count) != 1) stride += 2;
   std::vector<Eigen::Vector3d> candidates;
-  for (const Eigen::Matrix3d& jacobian : jacobians)
-    for (Eigen::Index q = 0; q < tet.weights.size(); ++q) {
-      const Eigen::Vector3d x = apex + jacobian * tet.points.row(q).transpose();
+  long visited = 0;
+  for (auto batch = static_cast<size_t>(20 * exponents.rows());; batch *= 2) {
+    for (; visited < candidate_count && candidates.size() < batch; ++visited) {
+      const long index = (visited * stride) % candidate_count;
+      const Eigen::Vector3d x = apex + jacobians[index / per_tet] * tet.points.row(index % per_tet).transpose();
       if (inside(x)) candidates.push_back(x);
     }
-  // Monomials about the apex scaled by the size, so every entry is O(1).
-  const Eigen::Matrix<int, Eigen::Dynamic, 3> exponents = monomial_exponents(strength);
-  Eigen::MatrixXd monomials(exponents.rows(), static_cast<Eigen::Index>(candidates.size()));
-  for (size_t q = 0; q < candidates.size(); ++q) {
-    const Eigen::Vector3d x = (candidates[q] - apex) / size;
-    for (Eigen::Index i = 0; i < exponents.rows(); ++i)
-      monomials(i, static_cast<Eigen::Index>(q)) =
-          std::pow(x.x(), exponents(i, 0)) * std::pow(x.y(), exponents(i, 1)) * std::pow(x.z(), exponents(i, 2));
-  }
-  const Eigen::VectorXd moments = polyhedron_moments(polyhedron, strength, apex, size);
-  const std::optional<Eigen::VectorXd> weights = basic_feasible_point(monomials, moments);
-  if (!weights || (monomials * *weights - moments).cwiseAbs().maxCoeff() > 1e-10 * moments[0]) return std::nullopt;
-  PolyhedronRule rule;
-  const auto count = static_cast<Eigen::Index>((weights->array() > 0).count());
-  rule.points.resize(count, 3);
-  rule.weights.resize(count);
-  for (Eigen::Index q = 0, row = 0; q < weights->size(); ++q)
-    if ((*weights)[q] > 0) {
-      rule.points.row(row) = candidates[q].transpose();
-      rule.weights[row++] = (*weights)[q];
+    // Monomials about the apex scaled by the size, so every entry is O(1).
+    Eigen::MatrixXd monomials(exponents.rows(), static_cast<Eigen::Index>(candidates.size()));
+    for (size_t q = 0; q < candidates.size(); ++q) {
+      const Eigen::Vector3d x = (candidates[q] - apex) / size;
+      for (Eigen::Index i = 0; i < exponents.rows(); ++i)
+        monomials(i, static_cast<Eigen::Index>(q)) =
+            std::pow(x.x(), exponents(i, 0)) * std::pow(x.y(), exponents(i, 1)) * std::pow(x.z(), exponents(i, 2));
     }
-  return rule;
+    const std::optional<Eigen::VectorXd> weights = basic_feasible_point(monomials, moments);
+    if (weights && (monomials * *weights - moments).cwiseAbs().maxCoeff() <= 1e-10 * moments[0]) {
+      PolyhedronRule rule;
+      const auto count = static_cast<Eigen::Index>((weights->array() > 0).count());
+      rule.points.resize(count, 3);
+      rule.weights.resize(count);
+      for (Eigen::Index q = 0, row = 0; q < weights->size(); ++q)
+        if ((*weights)[q] > 0) {
+          rule.points.row(row) = candidates[q].transpose();
+          rule.weights[row++] = (*weights)[q];
+        }
+      return rule;
+    }
+    if (visited == candidate_count) return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -185,6 +202,18 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
   }
   if (!rule.positive)
     if (auto positive = positive_moment_rule(polyhedron, strength, apex, jacobians, size)) return std::move(*positive);
+  return rule;
+}
+
+PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
+                                          SimplificationOptions options) {
+  PolyhedronRule rule = polyhedron_rule(polyhedron, strength);
+  if (!rule.positive) return rule;  // no positive-weight simplifier starts from it
+  options.degree = strength;
+  SimplificationResult simplified = simplify_quadrature({rule.points, rule.weights, strength}, options);
+  if (!simplified.simplified) return rule;
+  rule.points = std::move(simplified.rule.points);
+  rule.weights = std::move(simplified.rule.weights);
   return rule;
 }
 

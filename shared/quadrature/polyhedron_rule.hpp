@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "shared/geometry/polyhedron.hpp"
+#include "shared/quadrature/simplify_quadrature.hpp"
 
 namespace altfem {
 
@@ -34,5 +35,14 @@ PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
 
 /// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid (or the kernel point). Throws std::invalid_argument for a polyhedron without faces.
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
+
+/// polyhedron_rule(polyhedron, strength) with at most C(strength + 3, 3) points: the cone
+/// rule of a cell bounded by many facets (a cut cell of a detailed surface carries one
+/// tetrahedron per facet triangle) simplified by simplify_quadrature at degree `strength`
+/// (options.degree is ignored), so it integrates every polynomial of that degree as the
+/// cone rule does, to options.tolerance (Longva et al. 2020 §4.4, the FCM's cut-cell
+/// rules). A rule with negative weights, or one the simplifier fails on, stays as it is.
+PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
+                                          SimplificationOptions options);
 
 }  // namespace altfem

@@ -4,6 +4,7 @@
 #include <Eigen/QR>
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "shared/quadrature/basic_feasible_point.hpp"
@@ -54,6 +55,14 @@ Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd
 }
 
 }  // namespace
+
+std::optional<SimplificationMethod> simplifier_from_name(std::string_view name) {
+  if (name == "none") return std::nullopt;
+  for (const SimplificationMethod method : {SimplificationMethod::caratheodory, SimplificationMethod::nonnegative_least_squares,
+                                            SimplificationMethod::linear_program})
+    if (simplification_method_name(method) == name) return method;
+  throw std::invalid_argument("unknown quadrature simplifier '" + std::string(name) + "'");
+}
 
 std::string_view simplification_method_name(SimplificationMethod method) {
   switch (method) {

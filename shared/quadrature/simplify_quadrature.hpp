@@ -4,6 +4,8 @@
 // integrate every polynomial of total degree <= degree as the original rule does.
 // Points stay where they were, so they stay inside whatever domain the original
 // covered. Generic: nothing here knows about cells or embeddings.
+#include <array>
+#include <optional>
 #include <string_view>
 
 #include "shared/quadrature/quadrature_rule.hpp"
@@ -18,6 +20,12 @@ enum class SimplificationMethod {
 
 /// "lp", "nnls" or "caratheodory".
 std::string_view simplification_method_name(SimplificationMethod method);
+
+/// The values of a scene's `simplifier` key (fcm, dg, harmonic): a method, or no simplification.
+inline constexpr std::array<std::string_view, 4> simplifier_names{"caratheodory", "nnls", "lp", "none"};
+/// The method a simplifier_names entry names, nullopt for "none". Throws
+/// std::invalid_argument for any other name (the scene schema has checked the choice).
+std::optional<SimplificationMethod> simplifier_from_name(std::string_view name);
 
 struct SimplificationOptions {
   int degree = 2;

@@ -1,7 +1,9 @@
 #include "shared/simulation/mls_embedding.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <unordered_map>
 
@@ -11,36 +13,67 @@ namespace altfem {
 
 namespace {
 
-// Samples bucketed in a uniform grid of cubes of side `cell`.
-class SampleGrid {
+// Sample indices listed under the cubes of a uniform grid of side `cell`.
+class CubeBuckets {
 public:
-  SampleGrid(const Eigen::MatrixXd& samples, double cell) : cell_(cell), origin_(samples.colwise().minCoeff()) {
-    for (Eigen::Index i = 0; i < samples.rows(); ++i) buckets_[key(cell_of(samples.row(i)))].push_back(static_cast<int>(i));
+  CubeBuckets(double cell, const Eigen::RowVector3d& origin) : cell_(cell), origin_(origin) {}
+  /// Lists `sample` under every cube that the box [low, high] overlaps.
+  void insert(int sample, const Eigen::RowVector3d& low, const Eigen::RowVector3d& high) {
+    for_each_cube(low, high, [&](long long cube) { buckets_[cube].push_back(sample); });
   }
-  /// Every sample within `radius` cells' reach of x (a superset of those within radius).
+  /// Visits the samples listed under every cube that the box [low, high] overlaps.
   template <typename Visit>
-  void for_each_near(const Eigen::Vector3d& x, double radius, Visit&& visit) const {
-    const Eigen::Vector3i low = cell_of((x.array() - radius).matrix().transpose());
-    const Eigen::Vector3i high = cell_of((x.array() + radius).matrix().transpose());
-    for (int i = low.x(); i <= high.x(); ++i)
-      for (int j = low.y(); j <= high.y(); ++j)
-        for (int k = low.z(); k <= high.z(); ++k) {
-          const auto found = buckets_.find(key({i, j, k}));
-          if (found == buckets_.end()) continue;
-          for (int sample : found->second) visit(sample);
-        }
+  void for_each_in(const Eigen::RowVector3d& low, const Eigen::RowVector3d& high, Visit&& visit) const {
+    for_each_cube(low, high, [&](long long cube) {
+      const auto found = buckets_.find(cube);
+      if (found != buckets_.end())
+        for (int sample : found->second) visit(sample);
+    });
   }
 
 private:
+  template <typename Body>
+  void for_each_cube(const Eigen::RowVector3d& low, const Eigen::RowVector3d& high, Body&& body) const {
+    const Eigen::Vector3i first = cell_of(low), last = cell_of(high);
+    for (int i = first.x(); i <= last.x(); ++i)
+      for (int j = first.y(); j <= last.y(); ++j)
+        for (int k = first.z(); k <= last.z(); ++k)
+          body((static_cast<long long>(i) * 2097152 + j) * 2097152 + k);
+  }
   Eigen::Vector3i cell_of(const Eigen::RowVector3d& x) const {
     return ((x - origin_) / cell_).array().floor().cast<int>().transpose();
-  }
-  static long long key(const Eigen::Vector3i& cell) {
-    return (static_cast<long long>(cell.x()) * 2097152 + cell.y()) * 2097152 + cell.z();
   }
   double cell_;
   Eigen::RowVector3d origin_;
   std::unordered_map<long long, std::vector<int>> buckets_;
+};
+
+// Each sample under the cube that holds it (cubes of the largest support): a point's
+// samples within a reach are among those of the cubes its box of that reach overlaps.
+CubeBuckets sample_cubes(const Eigen::MatrixXd& samples, double largest_radius) {
+  CubeBuckets cubes(largest_radius, samples.colwise().minCoeff());
+  for (Eigen::Index i = 0; i < samples.rows(); ++i) cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
+  return cubes;
+}
+
+// Each sample under every cube its own support ball reaches (its bounding box): a point's
+// candidates are those of its own cube. On a sliced mesh the spacings range from a grid
+// cell's edge to a surface facet's, and a query reaching as far as the largest support
+// visited every surface node near a point; cubes of the median support's side give a point
+// few candidates and list a large ball in few cubes.
+CubeBuckets support_cubes(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii) {
+  std::vector<double> sorted(radii.data(), radii.data() + radii.size());
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
+  CubeBuckets cubes(std::max(sorted[sorted.size() / 2], 1e-12 * radii.maxCoeff()), samples.colwise().minCoeff());
+  for (Eigen::Index i = 0; i < samples.rows(); ++i)
+    cubes.insert(static_cast<int>(i), samples.row(i).array() - radii[i], samples.row(i).array() + radii[i]);
+  return cubes;
+}
+
+// One embedded point's samples and weights w_i(x) (eq. (32)).
+struct PointWeights {
+  std::vector<int> samples;
+  std::vector<double> weights;
 };
 
 }  // namespace
@@ -49,49 +82,68 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
                            const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options)
     : stitched_(basis, samples) {
   const double largest_radius = options.support * spacing.maxCoeff();
-  const SampleGrid grid(samples, largest_radius);
-  std::vector<int> near;
-  std::vector<double> theta;
+  const CubeBuckets supports = support_cubes(samples, options.support * spacing);
+  const CubeBuckets reachable = sample_cubes(samples, largest_radius);  // for enlarged supports (rare)
+  std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
+  std::exception_ptr failure;  // an exception must not leave the OpenMP region
+#pragma omp parallel for schedule(dynamic, 256)
   for (Eigen::Index point = 0; point < points.rows(); ++point) {
-    const Eigen::Vector3d x = points.row(point).transpose();
-    // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
-    // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
-    // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)).
-    bool solved = false;
-    for (double enlarge = 1.0; enlarge <= 8.0 && !solved; enlarge *= 1.5) {
-      near.clear();
-      theta.clear();
-      Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
-      const double reach = enlarge * largest_radius;
-      grid.for_each_near(x, reach, [&](int sample) {
-        const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
-        const double distance = (samples.row(sample).transpose() - x).norm();
-        if (distance >= radius) return;
-        const double weight = std::exp(-distance * distance / (sigma * sigma)) -
-                              std::exp(-radius * radius / (sigma * sigma));
-        Eigen::Vector4d p;
-        p << 1.0, (samples.row(sample).transpose() - x) / reach;
-        moments += weight * p * p.transpose();
-        near.push_back(sample);
-        theta.push_back(weight);
-      });
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
-      if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
-      const Eigen::Vector4d row = eigen.eigenvectors() *
-                                  eigen.eigenvalues().cwiseInverse().asDiagonal() *
-                                  eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
-      for (size_t n = 0; n < near.size(); ++n) {
-        Eigen::Vector4d p;
-        p << 1.0, (samples.row(near[n]).transpose() - x) / reach;
-        samples_.push_back(near[n]);
-        weights_.push_back(theta[n] * row.dot(p));
+    try {
+      const Eigen::Vector3d x = points.row(point).transpose();
+      std::vector<int> near;
+      std::vector<double> theta;
+      // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
+      // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
+      // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)).
+      bool solved = false;
+      for (double enlarge = 1.0; enlarge <= 8.0 && !solved; enlarge *= 1.5) {
+        near.clear();
+        theta.clear();
+        Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
+        const double reach = enlarge * largest_radius;
+        const auto add = [&](int sample) {
+          const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
+          const double distance = (samples.row(sample).transpose() - x).norm();
+          if (distance >= radius) return;
+          const double weight = std::exp(-distance * distance / (sigma * sigma)) -
+                                std::exp(-radius * radius / (sigma * sigma));
+          Eigen::Vector4d p;
+          p << 1.0, (samples.row(sample).transpose() - x) / reach;
+          moments += weight * p * p.transpose();
+          near.push_back(sample);
+          theta.push_back(weight);
+        };
+        if (enlarge == 1.0)
+          supports.for_each_in(x.transpose(), x.transpose(), add);
+        else
+          reachable.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
+        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
+        if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
+        const Eigen::Vector4d row = eigen.eigenvectors() *
+                                    eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                                    eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
+        PointWeights& result = found[static_cast<size_t>(point)];
+        for (size_t n = 0; n < near.size(); ++n) {
+          Eigen::Vector4d p;
+          p << 1.0, (samples.row(near[n]).transpose() - x) / reach;
+          result.samples.push_back(near[n]);
+          result.weights.push_back(theta[n] * row.dot(p));
+        }
+        solved = true;
       }
-      solved = true;
+      if (!solved)
+        throw NumericalError("MLS embedding: embedded point " + std::to_string(point) +
+                             " has fewer than four non-coplanar mesh nodes within 8 times its support");
+    } catch (...) {
+#pragma omp critical(mls_embedding_failure)
+      if (!failure) failure = std::current_exception();
     }
-    if (!solved)
-      throw NumericalError("MLS embedding: embedded point " + std::to_string(point) +
-                           " has fewer than four non-coplanar mesh nodes within 8 times its support");
-    max_samples_per_point_ = std::max(max_samples_per_point_, static_cast<int>(near.size()));
+  }
+  if (failure) std::rethrow_exception(failure);
+  for (const PointWeights& point : found) {
+    samples_.insert(samples_.end(), point.samples.begin(), point.samples.end());
+    weights_.insert(weights_.end(), point.weights.begin(), point.weights.end());
+    max_samples_per_point_ = std::max(max_samples_per_point_, static_cast<int>(point.samples.size()));
     offsets_.push_back(static_cast<long long>(samples_.size()));
   }
 }

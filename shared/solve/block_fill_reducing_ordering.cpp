@@ -49,7 +49,7 @@ std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>&
   common.supernodal = CHOLMOD_SIMPLICIAL;  // only the ordering is wanted, not a supernodal structure
   common.nmethods = 2;
   common.method[0].ordering = CHOLMOD_AMD;
-  common.method[1].ordering = CHOLMOD_METIS;
+  common.method[1].ordering = CHOLMOD_NESDIS;
   cholmod_sparse graph{};
   graph.nrow = graph.ncol = static_cast<std::size_t>(group_count);
   graph.nzmax = group_rows.size();

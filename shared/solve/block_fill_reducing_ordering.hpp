@@ -21,8 +21,13 @@ std::vector<int> supervariable_starts(const Eigen::SparseMatrix<double>& matrix)
 
 /// A fill-reducing permutation of `matrix`'s unknowns (#rows; entry k is the unknown
 /// eliminated k-th) computed on the graph of its supervariables. CHOLMOD computes both an
-/// approximate minimum degree and a METIS nested dissection ordering of that graph and
-/// keeps the one whose factor has fewer entries (CHOLMOD's criterion).
+/// approximate minimum degree and a nested dissection ordering of that graph and keeps the
+/// one whose factor has fewer entries (CHOLMOD's criterion). The nested dissection is
+/// CHOLMOD's own (NESDIS: METIS node separators, constrained minimum degree within and
+/// separators of the pieces' components), not plain METIS_NodeND: on the 10³ DG grid of
+/// Kaufmann et al.'s Table 1 (1,000 groups of 12 unknowns) its factor takes 2.97 GFlop
+/// against METIS's 3.66, on bench_factorisation's Tet10 cube 15.71 against 15.76, in the
+/// same analysis time.
 std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>& matrix);
 
 }  // namespace altfem

@@ -3,14 +3,19 @@
 // 2k integrate every product exactly, so its Hessian, mass and body force equal the
 // exact ones (Kaufmann et al. 2009 §5) to round-off, for k = 1, 2, 3 — with Dirichlet
 // faces on all components and on some, and with the penalty isotropic or split into
-// normal and tangential parts (Hansbo & Larson 2002).
+// normal and tangential parts (Hansbo & Larson 2002); and so do its simplified rules
+// on the cut cells of a sliced sphere, with at most C(2k + 3, 3) points per cell.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "dg/tabulated_dg.hpp"
 #include "shared/material/material.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/geometry/monomial_index.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
+#include "tests/unit/surfaces.hpp"
 
 namespace altfem::dg {
 namespace {
@@ -48,6 +53,36 @@ TEST_P(TabulatedDgOfDegree, LinearBabuskaZlamalEqualsTheExactMatrices) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Degrees, TabulatedDgOfDegree, ::testing::Values(1, 2, 3));
+
+TEST(TabulatedDg, SimplifiedRulesOfCutCellsGiveTheExactMatrices) {
+  const auto material = make_material(MaterialModel::linear, 1e3, 0.3, 7.0);
+  SlicingOptions options;
+  options.resolution = 3;
+  const SlicedMesh sliced = slice_into_polyhedra(altfem::test::sphere(0.8, 24, 48, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  std::vector<DgFace> faces = mesh_faces(sliced.mesh);
+  for (DgFace& face : faces)
+    if (face.plus < 0 && face.normal.z() < -0.5) face.condition = 0;
+  const int degree = 2;
+  DgSettings settings{degree, Flux::babuska_zlamal, 20 * 1e3, material->lame().lambda, material->lame().mu,
+                      material->density()};
+  settings.rule_simplification = SimplificationMethod::caratheodory;
+  const DgLinearSystem system(mesh_cells(sliced.mesh), faces, settings);
+  const TabulatedDg tabulated =
+      make_tabulated_dg(system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+  Eigen::SparseMatrix<double> hessian = tabulated.discretization->hessian_pattern();
+  tabulated.discretization->hessian(Eigen::VectorXd::Zero(system.dof_count()), hessian, false);
+  const double scale = Eigen::MatrixXd(system.stiffness()).cwiseAbs().maxCoeff();
+  EXPECT_LT(Eigen::MatrixXd(hessian - system.stiffness()).cwiseAbs().maxCoeff(), 1e-9 * scale);
+  const Eigen::SparseMatrix<double> mass = system.mass();
+  EXPECT_LT(Eigen::MatrixXd(tabulated.discretization->mass_matrix() - mass).cwiseAbs().maxCoeff(),
+            1e-10 * Eigen::MatrixXd(mass).cwiseAbs().maxCoeff());
+  // The cone rules of the cut cells hold many more points than the simplified ones.
+  const long simplified = tabulate_dg_cells(system, 2 * degree).point_count();
+  settings.rule_simplification.reset();
+  const long cone = tabulate_dg_cells(DgLinearSystem(mesh_cells(sliced.mesh), faces, settings), 2 * degree).point_count();
+  EXPECT_LE(simplified, system.cell_count() * monomial_count(2 * degree));
+  EXPECT_GT(cone, 5 * simplified);
+}
 
 }  // namespace
 }  // namespace altfem::dg

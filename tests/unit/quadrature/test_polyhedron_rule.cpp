@@ -2,8 +2,13 @@
 // exact moments (shared/geometry/polyhedron_moments), on a convex cell, a star-shaped
 // non-convex one (positive weights), one star-shaped only about points away from its
 // centroid (the kernel point as apex: positive) and one that is not star-shaped at all
-// (the moment-fitted rule on its inside points: positive and exact all the same).
+// (the moment-fitted rule on its inside points: positive and exact all the same), also
+// when its faces are many; and the simplified rules of cells of many facets (at most one
+// point per moment, exact all the same).
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
 
 #include "shared/geometry/monomial_index.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
@@ -14,8 +19,7 @@ namespace altfem {
 namespace {
 
 
-void expect_exact(const Polyhedron& polyhedron, int strength, double tolerance = 1e-13) {
-  const PolyhedronRule rule = polyhedron_rule(polyhedron, strength);
+void expect_exact(const PolyhedronRule& rule, const Polyhedron& polyhedron, int strength, double tolerance = 1e-13) {
   const Eigen::VectorXd exact = polyhedron_moments(polyhedron, strength);
   const auto exponents = monomial_exponents(strength);
   for (Eigen::Index m = 0; m < exponents.rows(); ++m) {
@@ -29,6 +33,22 @@ void expect_exact(const Polyhedron& polyhedron, int strength, double tolerance =
     EXPECT_NEAR(sum, exact[m], tolerance * std::max(magnitude, 1.0)) << "monomial " << exponents.row(m);
   }
 }
+
+void expect_exact(const Polyhedron& polyhedron, int strength, double tolerance = 1e-13) {
+  expect_exact(polyhedron_rule(polyhedron, strength), polyhedron, strength, tolerance);
+}
+
+// The outline with every edge split into `pieces` collinear segments: as many side faces
+// as a cut cell of a detailed surface has facets.
+std::vector<Eigen::Vector2d> refined(const std::vector<Eigen::Vector2d>& outline, int pieces) {
+  std::vector<Eigen::Vector2d> result;
+  for (size_t k = 0; k < outline.size(); ++k)
+    for (int piece = 0; piece < pieces; ++piece)
+      result.push_back(outline[k] + (outline[(k + 1) % outline.size()] - outline[k]) * piece / pieces);
+  return result;
+}
+
+const std::vector<Eigen::Vector2d> u_outline{{0, 0}, {3, 0}, {3, 3}, {2.8, 3}, {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}};
 
 TEST(PolyhedronRule, ConvexCellIsExactWithPositiveWeights) {
   const Polyhedron cube = test::prism({{0, 0}, {1.3, 0}, {1.3, 1}, {0, 1}}, 0.7);
@@ -52,7 +72,7 @@ TEST(PolyhedronRule, CellStarShapedAwayFromItsCentroidGetsPositiveWeights) {
 
 TEST(PolyhedronRule, CellThatIsNotStarShapedGetsAPositiveExactRule) {
   // A thin U: no point sees both arms' inner faces.
-  const Polyhedron u_prism = test::prism({{0, 0}, {3, 0}, {3, 3}, {2.8, 3}, {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}}, 0.7);
+  const Polyhedron u_prism = test::prism(u_outline, 0.7);
   for (int strength : {2, 4}) {
     expect_exact(u_prism, strength, 1e-10);
     const PolyhedronRule rule = polyhedron_rule(u_prism, strength);
@@ -61,6 +81,34 @@ TEST(PolyhedronRule, CellThatIsNotStarShapedGetsAPositiveExactRule) {
     // A basic feasible point: at most one point per moment.
     EXPECT_LE(rule.weights.size(), monomial_count(strength));
   }
+}
+
+TEST(PolyhedronRule, CellOfManyFacesThatIsNotStarShapedGetsAPositiveExactRule) {
+  // 8 × 60 side faces: the moment fit must not need every candidate of every cone
+  // tetrahedron (it tries growing batches of them).
+  const Polyhedron u_prism = test::prism(refined(u_outline, 60), 0.7);
+  const PolyhedronRule rule = polyhedron_rule(u_prism, 4);
+  expect_exact(rule, u_prism, 4, 1e-10);
+  EXPECT_TRUE(rule.positive);
+  EXPECT_LE(rule.weights.size(), monomial_count(4));
+}
+
+TEST(PolyhedronRule, SimplifiedRuleOfACellOfManyFacetsHasOnePointPerMomentAtMost) {
+  // A 240-gon prism: 242 faces, 956 tetrahedra in the cone rule.
+  std::vector<Eigen::Vector2d> circle;
+  for (int k = 0; k < 240; ++k) circle.emplace_back(std::cos(2 * M_PI * k / 240), 0.6 * std::sin(2 * M_PI * k / 240));
+  const Polyhedron disc = test::prism(circle, 0.3, Eigen::Vector3d(0.4, -0.2, 0.1));
+  for (int strength : {2, 4}) {
+    const PolyhedronRule cone = polyhedron_rule(disc, strength);
+    const PolyhedronRule simplified = simplified_polyhedron_rule(disc, strength, {});
+    EXPECT_GT(cone.weights.size(), 100 * monomial_count(strength));
+    EXPECT_LE(simplified.weights.size(), monomial_count(strength));
+    EXPECT_GT(simplified.weights.minCoeff(), 0);
+    expect_exact(simplified, disc, strength, 1e-11);
+  }
+  // A rule of negative weights is no start for the simplifier: the U keeps its own.
+  const Polyhedron u_prism = test::prism(u_outline, 0.7);
+  EXPECT_EQ(simplified_polyhedron_rule(u_prism, 2, {}).weights.size(), polyhedron_rule(u_prism, 2).weights.size());
 }
 
 }  // namespace
