@@ -10,7 +10,11 @@ deforms the same embedded surface vertices; RMS over the vertices of |x - x_ref|
 last step, relative to the surface's bounding-box diagonal. "Equal surface error" is read
 off the table: the fem row whose error is closest to harmonic's.
 
-Usage: bench/harmonic_versus_fem.py [--altfem build/bin/altfem] [--steps 3] [--repetitions 1]
+With --samples N [N ...] it runs the harmonic row once per MFS sampling
+(/discretization/harmonic/samples_per_edge) instead of the fem rows: the surface error a
+user sees against the sampling, the accuracy half of the default's choice (mfs_options.hpp).
+
+Usage: bench/harmonic_versus_fem.py [--altfem build/bin/altfem] [--steps 3] [--repetitions 1] [--samples 3 4 5 6]
 """
 import argparse
 import json
@@ -74,16 +78,22 @@ def main():
     parser.add_argument("--altfem", default="build/bin/altfem")
     parser.add_argument("--steps", type=int, default=3)
     parser.add_argument("--repetitions", type=int, default=1)
+    parser.add_argument("--samples", type=int, nargs="+", help="harmonic only, at these samples per edge")
     args = parser.parse_args()
+    configurations = CONFIGURATIONS
+    if args.samples:
+        label, method, settings = CONFIGURATIONS[0]
+        configurations = [(f"{label}, {n} samples", method, settings + [f"discretization/harmonic/samples_per_edge={n}"])
+                          for n in args.samples]
 
     print(f"Bunny, {args.steps} steps (medians of {args.repetitions} runs); set-up = mesh + bases + integration")
     label, method, settings = REFERENCE
     summary, setup, step, _, reference = measure(args.altfem, method, settings, args.steps, 1, None)
-    print(f"  {'configuration':24s} {'DOFs':>7s} {'set-up s':>9s} {'ms/step':>9s} {'surface RMS':>12s}  elements")
-    print(f"  {label:24s} {summary['dofs']:7d} {setup:9.2f} {step:9.1f} {'-':>12s}  {summary['elements']}")
-    for label, method, settings in CONFIGURATIONS:
+    print(f"  {'configuration':32s} {'DOFs':>7s} {'set-up s':>9s} {'ms/step':>9s} {'surface RMS':>12s}  elements")
+    print(f"  {label:32s} {summary['dofs']:7d} {setup:9.2f} {step:9.1f} {'-':>12s}  {summary['elements']}")
+    for label, method, settings in configurations:
         summary, setup, step, error, _ = measure(args.altfem, method, settings, args.steps, args.repetitions, reference)
-        print(f"  {label:24s} {summary['dofs']:7d} {setup:9.2f} {step:9.1f} {error:12.3e}  {summary['elements']}")
+        print(f"  {label:32s} {summary['dofs']:7d} {setup:9.2f} {step:9.1f} {error:12.3e}  {summary['elements']}")
 
 
 if __name__ == "__main__":

@@ -104,14 +104,16 @@ int main(int argc, char** argv) {
   std::printf("wrote %s (point data N_0 ... N_11 and their sum; N_3 is the re-entrant corner's)\n", output);
 
   // Partition of unity and linear reproduction hold to round-off by construction; the
-  // rest is the MFS fit's accuracy with the default sampling (MfsOptions). Its spacing
-  // comes from the element's surface area, 1.24x coarser here than the mean edge length
-  // it came from before (which made cut cells with many short edges 50x slower): the
-  // re-entrant edge's misfit went from 0.083 to 0.13 (10 samples per edge: 0.075).
-  const bool ok = unity_error < 1e-10 && linear_error < 1e-10 && kronecker_error < 2e-2 &&
-                  reentrant_kronecker_error < 0.15 && lowest > -3e-2 && highest < 1 + 3e-2;
-  std::printf("\n%s: partition of unity and linear reproduction to 1e-10; N_i(x_j) = delta_ij to 2e-2\n"
-              "(0.15 on the re-entrant edge); 0 <= N_i <= 1 to 3e-2\n",
+  // rest is the MFS fit's accuracy with the default sampling (MfsOptions: 4 samples per
+  // edge, picked for the solutions' accuracy against time). Its spacing comes from the
+  // element's surface area, 1.24x coarser here than the mean edge length it came from
+  // before (which made cut cells with many short edges 50x slower). Measured at 4 samples:
+  // δ_ij missed by 3.0e-2 at the other vertices and 0.19 on the re-entrant edge, the N_i
+  // within [−0.030, 1.011]; at 5: 7.9e-3, 0.13 (10 samples per edge: 0.075).
+  const bool ok = unity_error < 1e-10 && linear_error < 1e-10 && kronecker_error < 4e-2 &&
+                  reentrant_kronecker_error < 0.2 && lowest > -4e-2 && highest < 1 + 4e-2;
+  std::printf("\n%s: partition of unity and linear reproduction to 1e-10; N_i(x_j) = delta_ij to 4e-2\n"
+              "(0.2 on the re-entrant edge); 0 <= N_i <= 1 to 4e-2\n",
               ok ? "verified" : "NOT verified");
   return ok ? 0 : 1;
 }

@@ -6,7 +6,8 @@ namespace altfem::harmonic {
 
 namespace {
 
-constexpr char magic[] = "altfem-harmonic-bases-v1";
+// v2: the fits by the normal equations (mfs_least_squares.hpp) give other bits than v1's QR.
+constexpr char magic[] = "altfem-harmonic-bases-v2";
 
 }  // namespace
 

@@ -7,10 +7,17 @@ struct MfsOptions {
   /// Kernel centres per edge of a box besides its end nodes (the paper: about 3-5). The
   /// spacing this gives a box of the element's surface area is used everywhere: edges get
   /// as many samples as their length holds (a cut cell's short edges none), faces a grid
-  /// of the same spacing. 5: on a non-convex L-prism 3 leave N_i(x_j) off δ_ij by 0.25 at
-  /// the re-entrant edge, 5 by 0.13, 10 by 0.075 (unit_harmonic); on boxes 4 already give
-  /// the trilinear basis to 7e-4 at half the cost (verify_harmonic, bench_polyhedral_element).
-  int edge_samples = 5;
+  /// of the same spacing. 4, from accuracy against time (README, "Performance"): the
+  /// solution a user gets does not see the sampling — the sliced bending prism's L2 and H1
+  /// errors at 3-6 samples agree within 0.2% (verify_manufactured), the whole bunny's
+  /// surface RMS against a fine reference within 1.7% (bench/harmonic_versus_fem.py
+  /// --samples) — while the basis costs 0.6-1.1 ms per element at 4 and 1.3-2.0 ms at 5
+  /// (bench_polyhedral_element). What 4 gives up against 5 is in the bases themselves:
+  /// N_i(x_j) off δ_ij by 0.19 instead of 0.13 at the L-prism's re-entrant edge
+  /// (unit_harmonic; 0.25 at 3), the C0 mismatch between the bunny's cut cells 11%
+  /// instead of 9.5% (verify_harmonic_continuity; 13% at 3), the trilinear basis of a box
+  /// to 6.6e-4 instead of 3.1e-4 (verify_harmonic); below 4 these degrade fastest.
+  int edge_samples = 4;
   /// Collocation points per kernel centre (m ≈ 3n, eq. (13)): a denser sampling of
   /// the same kind.
   int collocation_factor = 3;

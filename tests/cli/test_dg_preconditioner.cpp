@@ -1,7 +1,7 @@
 // `altfem run --method dg` with an iterative linear solver and the key
 // /discretization/dg/preconditioner (issue #18): both preconditioners run, the two-level
-// one takes fewer PCG iterations than block Jacobi alone, and a bad name exits 2 with
-// one line naming the key.
+// one takes fewer PCG iterations than block Jacobi alone, and a bad name — or a mesh
+// whose vertices outnumber the DG unknowns — exits 2 with one line naming the key.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -39,6 +39,20 @@ TEST(DgPreconditioner, AnUnknownNameExitsTwoNamingTheKey) {
   ASSERT_EQ(lines_of(result.err).size(), 1u) << result.err;
   EXPECT_NE(result.err.find("/discretization/dg/preconditioner"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("two_level"), std::string::npos) << result.err;
+}
+
+// The sphere sliced by a 2³ grid: 8 cut cells carrying every vertex of the surface mesh.
+TEST(DgPreconditioner, AVertexSpaceLargerThanTheDgSpaceExitsTwoNamingTheKey) {
+  const auto out = fresh_directory("dg_preconditioner_not_coarse");
+  const auto result = run_altfem({"run", source_path("scenes/sphere.json").string(), "--method", "dg", "--out",
+                                  (out / "run").string(), "--set", "discretization/dg/mesh=slice", "--set",
+                                  "discretization/dg/slice/resolution=2", "--set", "solver/linear=pcg", "--set",
+                                  "discretization/dg/preconditioner=two_level"});
+  EXPECT_EQ(result.exit_code, 2);
+  ASSERT_EQ(lines_of(result.err).size(), 1u) << result.err;
+  EXPECT_NE(result.err.find("/discretization/dg/preconditioner"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("block_jacobi"), std::string::npos) << result.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "run" / "summary.json"));
 }
 
 }  // namespace

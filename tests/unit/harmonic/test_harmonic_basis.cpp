@@ -95,7 +95,7 @@ TEST_P(EveryShape, InterpolatesTheNodesToTheFitsAccuracy) {
   const Polyhedron element = shape();
   const Eigen::Index n = element.vertices.rows();
   std::vector<double> errors;
-  for (int samples : {3, 5, 10}) {
+  for (int samples : {3, 4, 5, 6, 10}) {
     MfsOptions options;
     options.edge_samples = samples;
     const ElementHarmonicBasis basis(element, options);
@@ -104,10 +104,10 @@ TEST_P(EveryShape, InterpolatesTheNodesToTheFitsAccuracy) {
                 errors.back(), basis.boundary_residual());
   }
   if (GetParam() == 2) {
-    EXPECT_LT(errors[2], errors[0]);
-    EXPECT_LT(errors[2], 0.1);
+    EXPECT_LT(errors[4], errors[0]);
+    EXPECT_LT(errors[4], 0.1);
   } else {
-    EXPECT_LT(errors[1], 1e-3);
+    EXPECT_LT(errors[1], 1e-3);  // 4 samples per edge, the default (5.7e-4 on the cube)
   }
 }
 

@@ -69,7 +69,7 @@ TEST(HarmonicBasisCache, SecondRunReusesIdenticalBasesAndBrokenFilesAreRewritten
   expect_identical(computed, read);
 
   MfsOptions other = options;
-  other.edge_samples = 4;
+  other.edge_samples = options.edge_samples + 1;
   cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, other, directory, &reused);
   EXPECT_FALSE(reused);  // other options: another key
   cached_harmonic_bases(mesh, HarmonicBasisKind::automatic, options, directory, &reused);

@@ -4,7 +4,7 @@
 // function, over every interior face between two cut cells of the bunny sliced at 8³.
 // The face functions are fitted once per mesh face and shared (mesh_face_coordinates),
 // so the boundary data agree exactly and what is left is each cell's 3D fit error; the
-// column "own faces" (at the default 5 samples) fits each cell on its own copy of its faces' functions instead (as
+// column "own faces" (at the default samples) fits each cell on its own copy of its faces' functions instead (as
 // before sharing: the same polygon, but kernel centres kept in the order of each cell's
 // loop, so slightly different functions).
 #include <gtest/gtest.h>
@@ -72,7 +72,7 @@ TEST(HarmonicContinuity, MismatchAcrossSharedFacesOfCutCellsShrinksWithSamples) 
     const Mismatch shared = shared_face_mismatch(mesh, bases, [&](int cell) { return bases.mfs_basis(cell); });
     mismatch[samples] = shared.relative;
     ASSERT_GT(shared.faces, 0);
-    if (samples != 5) {
+    if (samples != MfsOptions{}.edge_samples) {
       std::printf("[ C0       ] %12d  %6d   %16.3e   %9s   %23.3e\n", samples, shared.faces, shared.relative, "",
                   bases.max_boundary_residual());
       continue;
