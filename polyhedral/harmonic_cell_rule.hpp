@@ -22,8 +22,8 @@ inline constexpr std::array<std::string_view, 3> harmonic_rule_names{"cone", "su
 
 // The defaults, measured (docs/scene-schema.md, "harmonic"): on the bending prism sliced at
 // 8 (build/bin/verify_harmonic_quadrature) the full cone rule of strength 2 has 155 points
-// per MFS cell and H1 error 9.18e-4; simplified to 10 points (any simplifier) H1 grows to
-// 1.6–2.1e-3, because 10 points give a cell of 14–30 nodes a rank-deficient stiffness (on
+// per MFS cell and H1 error 9.16e-4; simplified to 10 points (any simplifier) H1 grows to
+// 1.5–2.0e-3, because 10 points give a cell of 14–30 nodes a rank-deficient stiffness (on
 // the sliced hollow ball, neo-Hookean, Newton then meets an indefinite tangent and fails);
 // subdivision (422 / 3303 points) and Monte Carlo (797 with 1000 samples) give errors
 // within 1% of the cone rule's for 3–20× its points. So: the cone rule, not simplified.
