@@ -99,9 +99,20 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
   // Kernel centres: boundary samples moved outward by ξ·size (eq. (12)); a centre that
   // lands inside a non-convex polygon, or too close to it, is dropped, and so is one
   // closer than half a spacing to a centre kept before (close nodes of a cut face).
+  // A triangle's harmonic coordinates are its barycentric ones, a rectangle's the bilinear
+  // ones (Δ(uv) = 0 in the frame of its sides): the linear polynomial, plus uv on a
+  // rectangle, fits the boundary data exactly without kernels. They are also the traces of
+  // a neighbouring plain Tet4 / Hex8 cell's closed-form basis, so a sliced mesh's cut cells
+  // and grid hexahedra share exact boundary data (the patch test under `basis: auto`).
+  const bool triangle = n == 3;
+  bilinear_ = n == 4;
+  for (int k = 0; k < n && bilinear_; ++k) {
+    const Eigen::Vector2d in = local.row(k) - local.row((k + n - 1) % n), out = local.row((k + 1) % n) - local.row(k);
+    bilinear_ = std::abs(in.dot(out)) <= 1e-12 * in.squaredNorm() + 1e-12 * out.squaredNorm();
+  }
   const BoundarySamples samples = sample_boundary(local, spacing);
   std::vector<Eigen::Vector2d> centres;
-  for (Eigen::Index s = 0; s < samples.points.rows(); ++s) {
+  for (Eigen::Index s = 0; s < samples.points.rows() && !triangle && !bilinear_; ++s) {
     const Eigen::Vector2d centre = samples.points.row(s) + options.offset * diameter * samples.normals.row(s);
     if (std::any_of(centres.begin(), centres.end(),
                     [&](const Eigen::Vector2d& kept) { return (kept - centre).norm() < spacing / 2; }))
@@ -114,9 +125,9 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
 
   // Least squares against the boundary data at m ≈ 3n collocation points (eqs. (13)-(14)).
   const BoundarySamples collocation = sample_boundary(local, spacing / options.collocation_factor);
-  const Eigen::Index m = collocation.points.rows(), c = centres_.rows();
-  Eigen::MatrixXd augmented(m, c + 3 + n);  // [system | data]
-  auto system = augmented.leftCols(c + 3);
+  const Eigen::Index m = collocation.points.rows(), c = centres_.rows(), columns = c + polynomial_count();
+  Eigen::MatrixXd augmented(m, columns + n);  // [system | data]
+  auto system = augmented.leftCols(columns);
   auto data = augmented.rightCols(n);
   const auto fill_system = [&] {
     kernel_rows(collocation.points, system);
@@ -129,7 +140,7 @@ FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon,
     }
   };
   fill_system();
-  solve_mfs_least_squares(augmented, c + 3, fill_system, coefficients_);
+  solve_mfs_least_squares(augmented, columns, fill_system, coefficients_);
 }
 
 Eigen::MatrixX2d FaceHarmonicCoordinates::to_plane(const Eigen::MatrixXd& points) const {
@@ -148,10 +159,11 @@ void FaceHarmonicCoordinates::kernel_rows(const Eigen::MatrixX2d& local, Eigen::
     rows.col(j) = 0.5 * ((local.col(0).array() - centres_(j, 0)).square() + (local.col(1).array() - centres_(j, 1)).square()).log();
   rows.middleCols(c, 2) = local;
   rows.col(c + 2).setOnes();
+  if (bilinear_) rows.col(c + 3) = local.col(0).cwiseProduct(local.col(1));
 }
 
 Eigen::MatrixXd FaceHarmonicCoordinates::evaluate(const Eigen::MatrixXd& points) const {
-  Eigen::MatrixXd rows(points.rows(), centres_.rows() + 3);
+  Eigen::MatrixXd rows(points.rows(), centres_.rows() + polynomial_count());
   kernel_rows(to_plane(points), rows);
   return rows * coefficients_;
 }
@@ -160,12 +172,13 @@ Eigen::MatrixX3d FaceHarmonicCoordinates::gradients(const Eigen::Vector3d& point
   const Eigen::Vector2d x = to_plane(point.transpose()).row(0).transpose();
   const Eigen::Index c = centres_.rows();
   // d/dx of one row of evaluate()'s matrix, in the local scaled frame (2 × (#centres + 3)).
-  Eigen::MatrixXd row_derivatives(2, c + 3);
+  Eigen::MatrixXd row_derivatives(2, c + polynomial_count());
   for (Eigen::Index j = 0; j < c; ++j) {
     const Eigen::Vector2d offset = x - centres_.row(j).transpose();
     row_derivatives.col(j) = offset / offset.squaredNorm();
   }
-  row_derivatives.rightCols(3) << 1, 0, 0, 0, 1, 0;
+  row_derivatives.middleCols(c, 3) << 1, 0, 0, 0, 1, 0;
+  if (bilinear_) row_derivatives.col(c + 3) << x.y(), x.x();
   const Eigen::MatrixX2d local = (row_derivatives * coefficients_).transpose();  // #nodes × 2
   // Back to space: local = ((x − origin)·u, (x − origin)·v) / scale.
   return (local.col(0) * axis_u_.transpose() + local.col(1) * axis_v_.transpose()) / scale_;

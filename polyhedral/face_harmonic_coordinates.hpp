@@ -8,7 +8,8 @@
 // MFS, eq. (11) in 2D: N(x) = Σ_j w_j log‖x − k_j‖ + a·x + a₀ in a local frame of the
 // plane, fitted in the least-squares sense (eq. (14)) to the boundary data at m ≈ 3n
 // collocation points; the linear polynomial makes linear reproduction exact. One
-// factorisation serves every node's right-hand side.
+// factorisation serves every node's right-hand side. Triangles and rectangles take their
+// closed-form coordinates (barycentric, bilinear) instead, without kernels.
 #include <Eigen/Core>
 
 #include "polyhedral/mfs_options.hpp"
@@ -30,13 +31,15 @@ public:
 
 private:
   Eigen::MatrixX2d to_plane(const Eigen::MatrixXd& points) const;  // local, scaled coordinates
-  // The MFS functions at local points (#points × 2): rows (#points × (#centres + 3)) of
-  // log‖x − k_j‖, then x, y, 1.
+  // The MFS functions at local points (#points × 2): rows (#points × (#centres +
+  // polynomial_count())) of log‖x − k_j‖, then x, y, 1, and xy on a rectangle.
   void kernel_rows(const Eigen::MatrixX2d& local, Eigen::Ref<Eigen::MatrixXd> rows) const;
+  Eigen::Index polynomial_count() const { return bilinear_ ? 4 : 3; }
 
   Eigen::MatrixXd polygon_;
   Eigen::Vector3d origin_, axis_u_, axis_v_;
   double scale_ = 1;
+  bool bilinear_ = false;         // a rectangle: the bilinear coordinates, no kernels
   Eigen::MatrixX2d centres_;      // #centres × 2, local
   Eigen::MatrixXd coefficients_;  // (#centres + 3) × #nodes
 };

@@ -18,7 +18,9 @@
 #include <vector>
 
 #include "polyhedral/harmonic_element_bases.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/mesh/structured_grid.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::harmonic {
@@ -96,6 +98,42 @@ TEST(HarmonicContinuity, MismatchAcrossSharedFacesOfCutCellsShrinksWithSamples) 
   EXPECT_LT(mismatch[4], mismatch[3]);
   EXPECT_LT(mismatch[5], mismatch[4]);
   EXPECT_LT(mismatch[6], mismatch[5]);
+}
+
+// Hexahedron-like cells, the paper's (§5: "about 2-3% with 5 samples per edge"): a 4³ grid
+// with MFS bases on every cell, as boxes (rectangular faces: their exact bilinear
+// coordinates, so only the 3D fits differ) and sheared into parallelepipeds (parallelogram
+// faces, fitted by 2D MFS). Measured at 3/4/5/6 samples: boxes 2.2e-4 / 3.0e-5 / 7.1e-6 /
+// 1.7e-6, parallelepipeds 0.24 / 0.12 / 0.064 / 0.039% — below the paper's figure; checked
+// below 1% at the default.
+TEST(HarmonicContinuity, MismatchAcrossFacesOfHexahedronLikeCells) {
+  const VolumeMesh grid = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
+                                          {4, 4, 4}, ElementType::hex8);
+  Eigen::Matrix3d shear = Eigen::Matrix3d::Identity();
+  shear(0, 1) = 0.4;
+  shear(1, 2) = 0.3;
+  std::printf("[ C0       ] 4^3 hexahedra, MFS on every cell\n");
+  std::printf("[ C0       ] cells            samples/edge   faces   rel. L2 mismatch\n");
+  for (const bool sheared : {false, true}) {
+    PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(grid);
+    if (sheared) {
+      VolumeMesh moved = grid;
+      moved.nodes = (moved.nodes * shear.transpose()).eval();
+      mesh = polyhedral_mesh_from_volume_mesh(moved);
+    }
+    std::map<int, double> mismatch;
+    for (int samples : {3, 4, 5, 6}) {
+      MfsOptions options;
+      options.edge_samples = samples;
+      const HarmonicElementBases bases(mesh, HarmonicBasisKind::mfs, options);
+      const Mismatch shared = shared_face_mismatch(mesh, bases, [&](int cell) { return bases.mfs_basis(cell); });
+      mismatch[samples] = shared.relative;
+      std::printf("[ C0       ] %-16s %12d  %6d   %16.3e\n", sheared ? "parallelepipeds" : "boxes", samples,
+                  shared.faces, shared.relative);
+    }
+    EXPECT_LT(mismatch[MfsOptions{}.edge_samples], 0.01) << (sheared ? "parallelepipeds" : "boxes");
+    EXPECT_LT(mismatch[6], mismatch[3]) << (sheared ? "parallelepipeds" : "boxes");
+  }
 }
 
 }  // namespace
