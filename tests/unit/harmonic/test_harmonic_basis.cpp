@@ -8,12 +8,18 @@
 #include <Eigen/Geometry>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cstdio>
+#include <string>
 #include <vector>
 #include <random>
 
 #include "polyhedral/element_harmonic_basis.hpp"
 #include "polyhedral/face_harmonic_coordinates.hpp"
+#include "polyhedral/harmonic_element_bases.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/mesh/surface_mesh.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 #include "tests/unit/polyhedra.hpp"
 
 namespace altfem::harmonic {
@@ -58,6 +64,36 @@ TEST_P(EveryShape, PartitionOfUnityAndLinearReproductionToRoundOff) {
   const Eigen::MatrixXd values = basis.values(points);
   EXPECT_LT((values.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-10);
   EXPECT_LT((values * element.vertices - points).cwiseAbs().maxCoeff(), 1e-10);
+}
+
+// The partition of unity ≤ 1e-10 on the cut cells of the bunny sliced at 16³,
+// many-faceted and non-convex, at their rule points: measured 5.7e-11. Linear reproduction
+// there is exact in the coefficients but evaluated through large kernel weights that
+// cancel: 5.8e-10 of the cell size (checked below 1e-8; the patch test does not depend on it:
+// the consistency correction makes it exact).
+TEST(HarmonicBasis, CutCellsReproduceAffineFieldsToRoundOff) {
+  SlicingOptions slicing;
+  slicing.resolution = 16;
+  const PolyhedralMesh mesh =
+      slice_into_polyhedra(read_surface(std::string(ALTFEM_SOURCE_DIR) + "/data/surface/bunny_npm.off"), slicing).mesh;
+  const HarmonicElementBases bases(mesh, HarmonicBasisKind::automatic, {});
+  int cut_cells = 0;
+  double unity = 0, linear = 0;
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
+    const ElementHarmonicBasis* basis = bases.mfs_basis(cell);
+    if (!basis) continue;
+    ++cut_cells;
+    const Polyhedron element = cell_polyhedron(mesh, cell);
+    const Eigen::MatrixXd points = polyhedron_rule(element, 2).points;
+    const Eigen::MatrixXd values = basis->values(points);
+    const double size = (element.vertices.colwise().maxCoeff() - element.vertices.colwise().minCoeff()).norm();
+    unity = std::max(unity, (values.rowwise().sum().array() - 1.0).abs().maxCoeff());
+    linear = std::max(linear, (values * element.vertices - points).cwiseAbs().maxCoeff() / size);
+  }
+  std::printf("[ affine   ] %d cut cells: max |ΣN − 1| %.2e, max |Σ x_i N_i − x| / size %.2e\n", cut_cells, unity, linear);
+  EXPECT_GT(cut_cells, 500);
+  EXPECT_LT(unity, 1e-10);
+  EXPECT_LT(linear, 1e-8);
 }
 
 TEST_P(EveryShape, KernelCentresLieOutside) {
