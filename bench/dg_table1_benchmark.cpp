@@ -30,6 +30,7 @@
 #include "shared/mesh/structured_grid.hpp"
 #include "dg/vertex_coarse_space.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
+#include "shared/solve/blas_threads.hpp"
 #include "shared/solve/conjugate_gradient.hpp"
 #include "shared/solve/linear_solver.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
@@ -71,7 +72,8 @@ int main(int argc, char** argv) {
     if (std::strcmp(argv[i], "--repetitions") == 0 && i + 1 < argc) repetitions = std::atoi(argv[++i]);
     if (std::strcmp(argv[i], "--damping") == 0 && i + 1 < argc) damping = std::atof(argv[++i]);
   }
-  omp_set_num_threads(1);  // the paper's timings are single-core
+  omp_set_num_threads(1);  // the paper's timings are single-core: OpenMP's and
+  set_blas_threads(1);     // OpenBLAS's threads (CHOLMOD's supernodal BLAS calls) alike
 
   const VolumeMesh grid = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
                                           {10, 10, 10}, ElementType::hex8);

@@ -13,4 +13,10 @@ void park_blas_threads() {
   if (shutdown != nullptr) shutdown();
 }
 
+void set_blas_threads(int count) {
+  using SetFunction = void (*)(int);
+  static const auto set = reinterpret_cast<SetFunction>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  if (set != nullptr) set(count);
+}
+
 }  // namespace altfem

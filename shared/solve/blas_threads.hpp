@@ -19,4 +19,9 @@ namespace altfem {
 /// only from the thread that calls BLAS, between BLAS calls.
 void park_blas_threads();
 
+/// Limits the BLAS library to `count` threads (OpenBLAS's openblas_set_num_threads, looked
+/// up at run time like the above); does nothing for another BLAS. What a single-core
+/// benchmark needs besides omp_set_num_threads(1): OpenBLAS's pthread workers are its own.
+void set_blas_threads(int count);
+
 }  // namespace altfem
