@@ -268,10 +268,7 @@ Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
 }
 
 PolyhedronRule DgLinearSystem::cell_rule(int cell, int strength) const {
-  if (!settings_.rule_simplification) return polyhedron_rule(cells_[cell], strength);
-  SimplificationOptions options;
-  options.method = *settings_.rule_simplification;
-  return simplified_polyhedron_rule(cells_[cell], strength, options);
+  return simplified_polyhedron_rule(cells_[cell], strength, settings_.rule_simplification);
 }
 
 template <typename Body>

@@ -15,10 +15,7 @@ PolyhedronRule harmonic_cell_rule(const Polyhedron& polyhedron, int strength, co
     case HarmonicRuleKind::cone:
       break;
   }
-  if (!quadrature.simplifier) return polyhedron_rule(polyhedron, strength);
-  SimplificationOptions options;
-  options.method = *quadrature.simplifier;
-  return simplified_polyhedron_rule(polyhedron, strength, options);
+  return simplified_polyhedron_rule(polyhedron, strength, quadrature.simplifier);
 }
 
 }  // namespace altfem::harmonic

@@ -222,10 +222,12 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
 }
 
 PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
-                                          SimplificationOptions options) {
+                                          std::optional<SimplificationMethod> method) {
   PolyhedronRule rule = polyhedron_rule(polyhedron, strength);
-  if (!rule.positive) return rule;  // no positive-weight simplifier starts from it
+  if (!method || !rule.positive) return rule;  // no positive-weight simplifier starts from negative weights
+  SimplificationOptions options;
   options.degree = strength;
+  options.method = *method;
   SimplificationResult simplified = simplify_quadrature({rule.points, rule.weights, strength}, options);
   if (!simplified.simplified) return rule;
   rule.points = std::move(simplified.rule.points);

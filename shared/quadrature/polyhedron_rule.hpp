@@ -11,6 +11,7 @@
 // from, nor one that keeps a lumped mass positive.
 #include <Eigen/Core>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "shared/geometry/polyhedron.hpp"
@@ -38,11 +39,12 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
 
 /// polyhedron_rule(polyhedron, strength) with at most C(strength + 3, 3) points: the cone
 /// rule of a cell bounded by many facets (a cut cell of a detailed surface carries one
-/// tetrahedron per facet triangle) simplified by simplify_quadrature at degree `strength`
-/// (options.degree is ignored), so it integrates every polynomial of that degree as the
-/// cone rule does, to options.tolerance (Longva et al. 2020 §4.4, the FCM's cut-cell
-/// rules). A rule with negative weights, or one the simplifier fails on, stays as it is.
+/// tetrahedron per facet triangle) simplified by simplify_quadrature with `method` at
+/// degree `strength`, so it integrates every polynomial of that degree as the cone rule
+/// does (to simplify_quadrature's default tolerance; Longva et al. 2020 §4.4, the FCM's
+/// cut-cell rules). The cone rule as it is when `method` is nullopt (a scene's simplifier
+/// `none`), has negative weights, or the simplifier fails on it.
 PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
-                                          SimplificationOptions options);
+                                          std::optional<SimplificationMethod> method);
 
 }  // namespace altfem

@@ -100,15 +100,17 @@ TEST(PolyhedronRule, SimplifiedRuleOfACellOfManyFacetsHasOnePointPerMomentAtMost
   const Polyhedron disc = test::prism(circle, 0.3, Eigen::Vector3d(0.4, -0.2, 0.1));
   for (int strength : {2, 4}) {
     const PolyhedronRule cone = polyhedron_rule(disc, strength);
-    const PolyhedronRule simplified = simplified_polyhedron_rule(disc, strength, {});
+    const PolyhedronRule simplified = simplified_polyhedron_rule(disc, strength, SimplificationMethod::caratheodory);
     EXPECT_GT(cone.weights.size(), 100 * monomial_count(strength));
     EXPECT_LE(simplified.weights.size(), monomial_count(strength));
     EXPECT_GT(simplified.weights.minCoeff(), 0);
     expect_exact(simplified, disc, strength, 1e-11);
   }
+  // No method: the cone rule itself.
+  EXPECT_EQ(simplified_polyhedron_rule(disc, 2, std::nullopt).weights.size(), polyhedron_rule(disc, 2).weights.size());
   // A rule of negative weights is no start for the simplifier: the U keeps its own.
   const Polyhedron u_prism = test::prism(u_outline, 0.7);
-  EXPECT_EQ(simplified_polyhedron_rule(u_prism, 2, {}).weights.size(), polyhedron_rule(u_prism, 2).weights.size());
+  EXPECT_EQ(simplified_polyhedron_rule(u_prism, 2, SimplificationMethod::caratheodory).weights.size(), polyhedron_rule(u_prism, 2).weights.size());
 }
 
 }  // namespace
