@@ -10,7 +10,7 @@
 // coarse factorisations. Prints medians, the PCG solutions' distance to the direct one, and
 // the direct solve's analysis and factorisation apart, with the factor's flops.
 //
-//   bench_dg_table1 [--repetitions N]     (default 5)
+//   bench_dg_table1 [--repetitions N] [--row "BZ k=1"]     (default 5, every row)
 //
 // The paper (Core 2 Duo 2.4 GHz, ms, integration + assembly + solve):
 //   BZ k=1 12k DOFs 532 + 22 + 656; IP k=1 1,437 + 87 + 734;
@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <string>
 #include <vector>
 
 #include "bench/median.hpp"
@@ -72,8 +73,11 @@ enum class Cycle { two_level, multilevel };
 
 int main(int argc, char** argv) {
   int repetitions = 5;
-  for (int i = 1; i < argc; ++i)
+  std::string only_row;
+  for (int i = 1; i < argc; ++i) {
     if (std::strcmp(argv[i], "--repetitions") == 0 && i + 1 < argc) repetitions = std::atoi(argv[++i]);
+    if (std::strcmp(argv[i], "--row") == 0 && i + 1 < argc) only_row = argv[++i];
+  }
   omp_set_num_threads(1);  // the paper's timings are single-core: OpenMP's and
   set_blas_threads(1);     // OpenBLAS's threads (CHOLMOD's supernodal BLAS calls) alike
 
@@ -99,6 +103,7 @@ int main(int argc, char** argv) {
               "direct", "total", "speed", "PCG", "iter", "set-up", "PtKP", "iterate", "solve", "|du|/|u|", "total",
               "speed");
   for (const Row& row : rows) {
+    if (!only_row.empty() && only_row != row.name) continue;
     std::vector<double> build_ms, direct_ms, analysis_ms, factorisation_ms;
     double factorisation_flops = 0;
     PcgTimes pcg[2];

@@ -1,7 +1,9 @@
 #include "dg/vertex_coarse_space.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <algorithm>
 #include <string>
 
@@ -19,6 +21,28 @@ std::vector<int> cell_nodes(const PolyhedralMesh& mesh, int cell) {
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
   return nodes;
+}
+
+// The least-squares fit X⁺ (4 × #nodes) of a cell's design matrix X (#nodes × 4: 1 and the
+// centred, scaled coordinates of its vertices). By the normal equations XᵀX (a 4 × 4
+// eigenproblem) when they are well conditioned — κ(X) ≤ 10⁴, every reasonable cell, since
+// the coordinates are centred and scaled — else by X's SVD, which resolves slivers down to
+// σ_min/σ_max = 1e-10 (squaring κ would lose them).
+Eigen::MatrixXd affine_fit(const Eigen::MatrixXd& design, int cell) {
+  const Eigen::Matrix4d gram = design.transpose() * design;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(gram);
+  const Eigen::Vector4d& squares = eigen.eigenvalues();  // ascending
+  if (squares[0] > 1e-8 * squares[3])
+    return eigen.eigenvectors() * squares.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose() *
+           design.transpose();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(design, Eigen::ComputeThinU | Eigen::ComputeThinV);
+  const Eigen::Vector4d singular = svd.singularValues();
+  // Centred and scaled, X's singular values are O(1) on any reasonable cell; 1e-10 of the
+  // largest only on a cell flattened to a plane.
+  if (!(singular[3] > 1e-10 * singular[0]))
+    throw NumericalError("dg two-level coarse space: the vertices of cell " + std::to_string(cell) +
+                         " lie in a plane (no affine fit)");
+  return svd.matrixV() * singular.cwiseInverse().asDiagonal() * svd.matrixU().transpose();
 }
 
 }  // namespace
@@ -50,15 +74,7 @@ VertexCoarseSpace vertex_coarse_space(const PolyhedralMesh& mesh, const DgLinear
       design(v, 0) = 1;
       design.row(v).tail<3>() = (mesh.nodes.row(nodes[v]).transpose() - basis.centre()) / basis.scale();
     }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(design, Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const Eigen::Vector4d singular = svd.singularValues();
-    // Centred and scaled, X's singular values are O(1) on any reasonable cell; 1e-10 of the
-    // largest only on a cell flattened to a plane.
-    if (!(singular[3] > 1e-10 * singular[0]))
-      throw NumericalError("dg two-level coarse space: the vertices of cell " + std::to_string(cell) +
-                           " lie in a plane (no affine fit)");
-    const Eigen::MatrixXd fit =
-        svd.matrixV() * singular.cwiseInverse().asDiagonal() * svd.matrixU().transpose();  // 4 × #nodes
+    const Eigen::MatrixXd fit = affine_fit(design, cell);  // 4 × #nodes
     // The monomial coefficients of the fit (#functions × #nodes), or, for a cell whose functions
     // are combinations φ_j = Σ_a C_aj m_a (strong conditions), their coefficients C⁻¹ μ.
     Eigen::MatrixXd coefficients = Eigen::MatrixXd::Zero(basis.size(), static_cast<Eigen::Index>(nodes.size()));

@@ -1,5 +1,7 @@
 #include "shared/solve/block_relaxation_preconditioner.hpp"
 
+#include <omp.h>
+
 #include <Eigen/Cholesky>
 #include <algorithm>
 #include <atomic>
@@ -105,6 +107,11 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
   colour_starts_.assign(colours + 1, 0);
   for (int c : colour) ++colour_starts_[c + 1];
   for (int c = 0; c < colours; ++c) colour_starts_[c + 1] += colour_starts_[c];
+  // Sweeps run on one thread when every colour is small or one thread is all there is: then
+  // apply_with_defect may keep the defect current as it relaxes.
+  int largest_colour = 0;
+  for (int c = 0; c < colours; ++c) largest_colour = std::max(largest_colour, colour_starts_[c + 1] - colour_starts_[c]);
+  serial_ = largest_colour < minimum_parallel_blocks || omp_get_max_threads() == 1;
   blocks_by_colour_.resize(block_count);
   std::vector<int> next(colour_starts_.begin(), colour_starts_.end() - 1);
   for (int block = 0; block < block_count; ++block) blocks_by_colour_[next[colour[block]]++] = block;
@@ -152,6 +159,38 @@ void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& resi
   result.segment(first, size).noalias() += inverse * Eigen::Map<const Eigen::VectorXd>(defect, size);
 }
 
+void BlockRelaxationPreconditioner::relax_updating(int block, Eigen::VectorXd& defect, Eigen::VectorXd& result) const {
+  const int first = block_starts_[block], size = block_starts_[block + 1] - first;
+  const int* starts = matrix_->outerIndexPtr();
+  const int* rows = matrix_->innerIndexPtr();
+  const double* values = matrix_->valuePtr();
+  if (size == 3 && same_rows_[block]) {
+    const Eigen::Vector3d change =
+        Eigen::Map<const Eigen::Matrix3d>(inverses_.data() + inverse_offsets_[block]) * defect.segment<3>(first);
+    result.segment<3>(first) += change;
+    const int begin = starts[first], length = starts[first + 1] - begin;
+    const double* column0 = values + begin;
+    const double* column1 = values + starts[first + 1];
+    const double* column2 = values + starts[first + 2];
+    for (int k = 0; k < length; ++k)
+      defect[rows[begin + k]] -= column0[k] * change[0] + column1[k] * change[1] + column2[k] * change[2];
+    return;
+  }
+  constexpr int largest_inline = 64;
+  double change_storage[largest_inline];
+  Eigen::VectorXd heap_change;
+  double* change = change_storage;
+  if (size > largest_inline) {
+    heap_change.resize(size);
+    change = heap_change.data();
+  }
+  const Eigen::Map<const Eigen::MatrixXd> inverse(inverses_.data() + inverse_offsets_[block], size, size);
+  Eigen::Map<Eigen::VectorXd>(change, size).noalias() = inverse * defect.segment(first, size);
+  result.segment(first, size) += Eigen::Map<const Eigen::VectorXd>(change, size);
+  for (int j = 0; j < size; ++j)
+    for (int k = starts[first + j]; k < starts[first + j + 1]; ++k) defect[rows[k]] -= values[k] * change[j];
+}
+
 void BlockRelaxationPreconditioner::sweep(int first_colour, int last_colour, const Eigen::VectorXd& residual,
                                            Eigen::VectorXd& result) const {
   const int step = last_colour >= first_colour ? 1 : -1;
@@ -180,6 +219,21 @@ void BlockRelaxationPreconditioner::apply(const Eigen::VectorXd& residual, Eigen
   // The backward half: the last colour's blocks were just relaxed against their final
   // neighbours, so relaxing them again would change nothing; it starts one colour earlier.
   if (relaxation_ == BlockRelaxation::symmetric_gauss_seidel) sweep(colours - 2, -1, residual, result);
+}
+
+bool BlockRelaxationPreconditioner::apply_with_defect(const Eigen::VectorXd& residual, Eigen::VectorXd& result,
+                                                      Eigen::VectorXd& defect) const {
+  if (relaxation_ == BlockRelaxation::jacobi || !serial_ || !matrix_->isCompressed()) return false;
+  result.setZero(residual.size());
+  defect = residual;
+  const int colours = colour_count();
+  for (int c = 0; c < colours; ++c)
+    for (int k = colour_starts_[c]; k < colour_starts_[c + 1]; ++k) relax_updating(blocks_by_colour_[k], defect, result);
+  if (relaxation_ == BlockRelaxation::symmetric_gauss_seidel)
+    for (int c = colours - 2; c >= 0; --c)
+      for (int k = colour_starts_[c + 1] - 1; k >= colour_starts_[c]; --k)
+        relax_updating(blocks_by_colour_[k], defect, result);
+  return true;
 }
 
 void BlockRelaxationPreconditioner::apply_transpose(const Eigen::VectorXd& residual,

@@ -35,12 +35,20 @@ public:
   void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
   void apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
   bool symmetric() const override { return relaxation_ != BlockRelaxation::gauss_seidel; }
+  /// The Gauss–Seidel sweeps when they run on one thread (every colour smaller than the
+  /// parallel threshold, or one OpenMP thread): each relaxation updates the defect of its
+  /// neighbours from its own columns, so the defect comes at no extra pass over A.
+  bool apply_with_defect(const Eigen::VectorXd& residual, Eigen::VectorXd& result,
+                         Eigen::VectorXd& defect) const override;
 
   int colour_count() const { return static_cast<int>(colour_starts_.size()) - 1; }
 
 private:
   // Relaxes the blocks of colours [first, last) (backwards when last < first) against the current x.
   void sweep(int first_colour, int last_colour, const Eigen::VectorXd& residual, Eigen::VectorXd& result) const;
+  // δ = D_b⁻¹ d_b, x_b += δ, d −= A e_b δ: block b relaxed against the defect d = r − A x,
+  // which stays current (one thread only: two blocks of a colour may share a neighbour).
+  void relax_updating(int block, Eigen::VectorXd& defect, Eigen::VectorXd& result) const;
   // x_b ← x_b + D_b⁻¹ (r_b − (A x)_b): block b relaxed against the current x.
   void relax(int block, const Eigen::VectorXd& residual, Eigen::VectorXd& result) const;
 
@@ -49,6 +57,7 @@ private:
   const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   std::vector<double> inverses_;       // D_b⁻¹, column-major, one after another
   std::vector<long> inverse_offsets_;  // #blocks + 1
+  bool serial_ = true;                 // the sweeps run on one thread (see apply_with_defect)
   std::vector<char> same_rows_;        // per block: its columns have identical row indices
   std::vector<int> blocks_by_colour_;  // the blocks, colour after colour
   std::vector<int> colour_starts_;     // #colours + 1 offsets into blocks_by_colour_

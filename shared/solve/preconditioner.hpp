@@ -32,6 +32,14 @@ public:
   virtual void apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
     apply(residual, result);
   }
+  /// result = M⁻¹ · residual and defect = residual − A · result (A: the matrix of the last
+  /// compute()) when the preconditioner obtains the defect as it goes (a Gauss–Seidel sweep
+  /// updating it block by block), saving a cycle's product with A; false, writing nothing,
+  /// when it does not.
+  virtual bool apply_with_defect(const Eigen::VectorXd& /*residual*/, Eigen::VectorXd& /*result*/,
+                                 Eigen::VectorXd& /*defect*/) const {
+    return false;
+  }
 };
 
 /// Makes a fresh preconditioner for each solver that needs one (method-specific

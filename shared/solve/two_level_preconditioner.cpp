@@ -84,8 +84,14 @@ void TwoLevelPreconditioner::solve_coarse() const {
 }
 
 void TwoLevelPreconditioner::apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
-  smoother_->apply(residual, result);
-  result *= damping_;
+  // The pre-smoothed defect r − A x₁: from the smoother itself when it can (undamped
+  // Gauss–Seidel keeps it current as it sweeps), else by a product with A below.
+  const bool have_defect = cycle_ == TwoLevelCycle::multiplicative && damping_ == 1 &&
+                           smoother_->apply_with_defect(residual, result, fine_residual_);
+  if (!have_defect) {
+    smoother_->apply(residual, result);
+    result *= damping_;
+  }
   if (cycle_ == TwoLevelCycle::additive) {
     coarse_residual_.noalias() = restriction_ * residual;
     solve_coarse();
@@ -94,8 +100,10 @@ void TwoLevelPreconditioner::apply(const Eigen::VectorXd& residual, Eigen::Vecto
   }
   // The symmetric V-cycle: pre-smoothed above, coarse correction of the remaining residual,
   // post-smoothing with ω Sᵀ (S itself for a symmetric smoother).
-  symmetric_multiply(*matrix_, result, fine_residual_);
-  fine_residual_ = residual - fine_residual_;
+  if (!have_defect) {
+    symmetric_multiply(*matrix_, result, fine_residual_);
+    fine_residual_ = residual - fine_residual_;
+  }
   coarse_residual_.noalias() = restriction_ * fine_residual_;
   solve_coarse();
   result.noalias() += prolongation_ * coarse_correction_;

@@ -68,6 +68,29 @@ TEST(BlockRelaxation, SymmetricSweepIsSymmetricPositiveDefinite) {
   }
 }
 
+TEST(BlockRelaxation, SweepsThatKeepTheDefectMatchTheOnesThatDoNot) {
+  // Blocks of 3 (the vertex fast path) and of 6 (the general one).
+  const Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(grid);
+  for (int size : {3, 6})
+    for (BlockRelaxation relaxation : {BlockRelaxation::gauss_seidel, BlockRelaxation::symmetric_gauss_seidel}) {
+      std::vector<int> starts = node_blocks(matrix.rows() - matrix.rows() % size, size);
+      if (starts.back() != matrix.rows()) starts.push_back(static_cast<int>(matrix.rows()));
+      BlockRelaxationPreconditioner sweep(starts, relaxation);
+      sweep.compute(matrix);
+      const Eigen::VectorXd residual = test::random_vector(matrix.rows(), 4);
+      Eigen::VectorXd plain, kept, defect;
+      sweep.apply(residual, plain);
+      ASSERT_TRUE(sweep.apply_with_defect(residual, kept, defect)) << "blocks of " << size;  // few blocks: one thread
+      EXPECT_LT((kept - plain).norm(), 1e-13 * plain.norm()) << "blocks of " << size;
+      const Eigen::VectorXd expected = residual - matrix * kept;
+      EXPECT_LT((defect - expected).norm(), 1e-12 * residual.norm()) << "blocks of " << size;
+    }
+  BlockRelaxationPreconditioner jacobi(node_blocks(matrix.rows(), 3), BlockRelaxation::jacobi);
+  jacobi.compute(matrix);
+  Eigen::VectorXd result, defect;
+  EXPECT_FALSE(jacobi.apply_with_defect(Eigen::VectorXd::Ones(matrix.rows()), result, defect));
+}
+
 TEST(BlockRelaxation, ColoursAChainOfBlocksWithTwoColours) {
   // A tridiagonal chain of 2 × 2 blocks: neighbours alternate, so two colours suffice and
   // one would couple blocks of one colour.
