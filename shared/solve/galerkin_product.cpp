@@ -58,9 +58,10 @@ const SparseMatrix& compressed_sorted(const SparseMatrix& matrix, SparseMatrix& 
 std::vector<int> identical_pattern_classes(const CompressedColumns& matrix, int column_count,
                                            const std::vector<char>& kept, int& class_count) {
   std::vector<std::uint64_t> hashes(static_cast<size_t>(column_count));
-  // A sum of mixed row indices: no multiply chain through the column (sorted patterns are sets).
-#pragma omp parallel for schedule(static)
+  // A sum of mixed row indices: no multiply chain through the column; the comparison below
+  // then checks the rows as sequences (grouping needs the same order, not just the same set).
   for (int column = 0; column < column_count; ++column) {
+    if (!kept[column]) continue;
     std::uint64_t hash = static_cast<std::uint64_t>(matrix.length(column)) * 0x9e3779b97f4a7c15ull;
     for (int at = matrix.outer[column]; at < matrix.outer[column + 1]; ++at) {
       const std::uint64_t row = static_cast<std::uint64_t>(matrix.inner[at]) * 0xff51afd7ed558ccdull;
@@ -86,41 +87,72 @@ std::vector<int> identical_pattern_classes(const CompressedColumns& matrix, int 
   return classes;
 }
 
-/// A restricted to the kept rows and columns, in A's numbering (the other columns empty).
-struct RestrictedMatrix {
-  std::vector<int> outer, inner;
+/// A restricted to the rows P uses, each column's pattern reordered by the first (smallest)
+/// coarse column of its rows in P: the rows of y = A P e_j that the upper triangle's column j
+/// reads (those whose P row reaches a column ≤ j) are then a prefix of every column, whose
+/// length a binary search in the class's `first_coarse` finds. All columns of a class share
+/// one order, so runs of them still add up densely.
+struct OrderedMatrix {
+  std::vector<int> outer, inner;  // n + 1 and the kept entries: A's numbering, unused columns empty
   std::vector<double> value;
+  std::vector<int> class_outer, first_coarse;  // per class: its rows' first coarse columns, increasing
 };
 
-RestrictedMatrix restricted_to(const CompressedColumns& matrix, int size, const std::vector<char>& kept) {
-  RestrictedMatrix restricted;
-  restricted.outer.assign(static_cast<size_t>(size) + 1, 0);
-#pragma omp parallel for schedule(static)
-  for (int column = 0; column < size; ++column) {
+OrderedMatrix ordered_by_first_coarse(const CompressedColumns& matrix, const CompressedColumns& restriction,
+                                      const std::vector<int>& classes, int class_count, const std::vector<char>& used) {
+  const int size = static_cast<int>(classes.size());
+  std::vector<int> representative(static_cast<size_t>(class_count), -1);
+  for (int column = size - 1; column >= 0; --column)
+    if (classes[column] >= 0) representative[classes[column]] = column;
+  OrderedMatrix ordered;
+  ordered.class_outer.assign(static_cast<size_t>(class_count) + 1, 0);
+  for (int c = 0; c < class_count; ++c) {
+    const int column = representative[c];
+    int length = 0;
+    for (int at = matrix.outer[column]; at < matrix.outer[column + 1]; ++at) length += used[matrix.inner[at]];
+    ordered.class_outer[c + 1] = ordered.class_outer[c] + length;
+  }
+  // Per class: positions in its (unrestricted) pattern of the used rows, by first coarse column.
+  std::vector<int> positions(static_cast<size_t>(ordered.class_outer[class_count]));
+  ordered.first_coarse.resize(positions.size());
+  for (int c = 0; c < class_count; ++c) {
+    const int column = representative[c];
+    int* order = positions.data() + ordered.class_outer[c];
     int count = 0;
-    if (kept[column])
-      for (int at = matrix.outer[column]; at < matrix.outer[column + 1]; ++at) count += kept[matrix.inner[at]];
-    restricted.outer[column + 1] = count;
-  }
-  for (int column = 0; column < size; ++column) restricted.outer[column + 1] += restricted.outer[column];
-  restricted.inner.resize(static_cast<size_t>(restricted.outer[size]));
-  restricted.value.resize(static_cast<size_t>(restricted.outer[size]));
-#pragma omp parallel for schedule(static)
-  for (int column = 0; column < size; ++column) {
-    if (!kept[column]) continue;
-    int to = restricted.outer[column];
     for (int at = matrix.outer[column]; at < matrix.outer[column + 1]; ++at)
-      if (kept[matrix.inner[at]]) {
-        restricted.inner[to] = matrix.inner[at];
-        restricted.value[to++] = matrix.value[at];
-      }
+      if (used[matrix.inner[at]]) order[count++] = at - matrix.outer[column];
+    const auto first_coarse_of = [&](int position) {
+      const int row = matrix.inner[matrix.outer[column] + position];
+      return restriction.inner[restriction.outer[row]];
+    };
+    std::stable_sort(order, order + count, [&](int a, int b) { return first_coarse_of(a) < first_coarse_of(b); });
+    for (int q = 0; q < count; ++q) ordered.first_coarse[ordered.class_outer[c] + q] = first_coarse_of(order[q]);
   }
-  return restricted;
+  ordered.outer.assign(static_cast<size_t>(size) + 1, 0);
+  for (int column = 0; column < size; ++column) {
+    const int c = classes[column];
+    ordered.outer[column + 1] = ordered.outer[column] + (c >= 0 ? ordered.class_outer[c + 1] - ordered.class_outer[c] : 0);
+  }
+  ordered.inner.resize(static_cast<size_t>(ordered.outer[size]));
+  ordered.value.resize(ordered.inner.size());
+  for (int column = 0; column < size; ++column) {
+    const int c = classes[column];
+    if (c < 0) continue;
+    const int* order = positions.data() + ordered.class_outer[c];
+    const int from = matrix.outer[column], to = ordered.outer[column];
+    for (int q = 0; q < ordered.outer[column + 1] - to; ++q) {
+      ordered.inner[to + q] = matrix.inner[from + order[q]];
+      ordered.value[to + q] = matrix.value[from + order[q]];
+    }
+  }
+  return ordered;
 }
 
-/// What the column loop reads: A (restricted), P, Pᵀ, and the groups of identical patterns.
+/// What the column loop reads: A (ordered), P, Pᵀ, and the groups of identical patterns.
 struct ProductInputs {
-  CompressedColumns matrix, prolongation, restriction;
+  CompressedColumns matrix, prolongation, restriction;  // A ordered (OrderedMatrix), P, Pᵀ
+  const int* class_outer;                     // A's classes: first coarse columns, OrderedMatrix
+  const int* first_coarse;
   int fine_size, coarse_size;
   std::vector<int> matrix_class;               // per column of A: its pattern class (-1: unused)
   std::vector<int> restriction_class;          // per fine row: the class of its pattern in P (-1: empty row)
@@ -138,7 +170,8 @@ struct UpperColumns {
 
 /// Columns [begin, end) of the upper triangle. Column j of Pᵀ A P is Pᵀ (A (P e_j)): first
 /// y = A P e_j into a dense fine vector (a marker per row records whether it is set in this
-/// column, a list which rows are), then the rows i ≤ j of Pᵀ y into a dense coarse vector.
+/// column, a list which rows are), then the rows i ≤ j of Pᵀ y into a dense coarse vector;
+/// y is formed only in the rows whose P row reaches a column ≤ j (OrderedMatrix).
 /// Runs of P's column entries whose A columns share a pattern are summed densely first and
 /// scattered once; Pᵀ y is taken per class of fine rows with one pattern in P likewise.
 void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
@@ -150,7 +183,10 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
   std::vector<int> coarse_marker(coarse.size(), -1), coarse_rows(coarse.size());
   std::vector<int> class_marker(inputs.member_outer.size() - 1, -1);
   std::vector<double> dense(static_cast<size_t>(inputs.longest_column)), gathered(static_cast<size_t>(inputs.largest_class));
-  upper.outer.assign(static_cast<size_t>(upper.end - upper.begin) + 1, 0);
+  // Filled here and moved into `upper` at the end: the ranges of the threads lie side by side,
+  // and growing their vectors in place would share cache lines between the threads.
+  std::vector<int> outer(static_cast<size_t>(upper.end - upper.begin) + 1, 0), inner;
+  std::vector<double> value;
 
   for (int j = upper.begin; j < upper.end; ++j) {
     int fine_count = 0;
@@ -158,7 +194,9 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
       const int first = p.inner[run], pattern_class = inputs.matrix_class[first];
       int run_end = run + 1;
       while (run_end < p.outer[j + 1] && inputs.matrix_class[p.inner[run_end]] == pattern_class) ++run_end;
-      const int length = a.length(first);
+      const int* first_coarse = inputs.first_coarse + inputs.class_outer[pattern_class];
+      const int length = static_cast<int>(
+          std::upper_bound(first_coarse, first_coarse + a.length(first), j) - first_coarse);
       const int* rows = a.inner + a.outer[first];
       const double* values = a.value + a.outer[first];
       for (int t = 0; t < length; ++t) dense[t] = values[t] * p.value[run];
@@ -208,11 +246,14 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
     }
     // The output grows geometrically: O(log nnz) reallocations over the whole range.
     for (int t = 0; t < coarse_count; ++t) {
-      upper.inner.push_back(coarse_rows[t]);
-      upper.value.push_back(coarse[coarse_rows[t]]);
+      inner.push_back(coarse_rows[t]);
+      value.push_back(coarse[coarse_rows[t]]);
     }
-    upper.outer[j - upper.begin + 1] = static_cast<int>(upper.inner.size());
+    outer[j - upper.begin + 1] = static_cast<int>(inner.size());
   }
+  upper.outer = std::move(outer);
+  upper.inner = std::move(inner);
+  upper.value = std::move(value);
 }
 
 /// The symmetric m × m matrix whose upper triangle the ranges hold (in order, covering
@@ -282,23 +323,22 @@ SparseMatrix galerkin_product(const SparseMatrix& matrix, const SparseMatrix& pr
   inputs.restriction = columns_of(compressed_sorted(restriction, restriction_storage));
   const CompressedColumns& r = inputs.restriction;
 
-  // The fine rows P uses; A restricted to them when that drops anything (a DG vertex coarse
-  // space at k = 2 uses 12k of 30k rows, so A P e_j then reads 2.5× fewer entries).
+  // The fine rows P uses: A is restricted to them (a DG vertex coarse space at k = 2 uses 12k
+  // of 30k rows, so A P e_j then reads 2.5× fewer entries).
   std::vector<char> used(static_cast<size_t>(fine_size));
   int used_count = 0;
   for (int row = 0; row < inputs.fine_size; ++row) {
     used[row] = r.length(row) > 0;
     used_count += used[row];
   }
-  inputs.matrix = columns_of(compressed(matrix, matrix_storage));
-  RestrictedMatrix restricted;
-  if (used_count < inputs.fine_size) {
-    restricted = restricted_to(inputs.matrix, inputs.fine_size, used);
-    inputs.matrix = {restricted.outer.data(), restricted.inner.data(), restricted.value.data()};
-  }
+  const CompressedColumns unordered = columns_of(compressed(matrix, matrix_storage));
 
   int matrix_classes = 0, restriction_classes = 0;
-  inputs.matrix_class = identical_pattern_classes(inputs.matrix, inputs.fine_size, used, matrix_classes);
+  inputs.matrix_class = identical_pattern_classes(unordered, inputs.fine_size, used, matrix_classes);
+  const OrderedMatrix ordered = ordered_by_first_coarse(unordered, r, inputs.matrix_class, matrix_classes, used);
+  inputs.matrix = {ordered.outer.data(), ordered.inner.data(), ordered.value.data()};
+  inputs.class_outer = ordered.class_outer.data();
+  inputs.first_coarse = ordered.first_coarse.data();
   inputs.restriction_class = identical_pattern_classes(r, inputs.fine_size, used, restriction_classes);
   inputs.member_outer.assign(static_cast<size_t>(restriction_classes) + 1, 0);
   for (int row = 0; row < inputs.fine_size; ++row)

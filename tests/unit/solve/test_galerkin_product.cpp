@@ -6,6 +6,7 @@
 // Eigen's pattern.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <stdexcept>
 #include <vector>
@@ -65,6 +66,15 @@ SparseMatrix random_prolongation(int fine, int coarse, int per_row, int group, c
   SparseMatrix prolongation(fine, coarse);
   prolongation.setFromTriplets(entries.begin(), entries.end());
   return prolongation;
+}
+
+/// `matrix` (compressed) with the row indices of every column in decreasing order.
+SparseMatrix reversed_columns(SparseMatrix matrix) {
+  for (Eigen::Index col = 0; col < matrix.outerSize(); ++col) {
+    std::reverse(matrix.innerIndexPtr() + matrix.outerIndexPtr()[col], matrix.innerIndexPtr() + matrix.outerIndexPtr()[col + 1]);
+    std::reverse(matrix.valuePtr() + matrix.outerIndexPtr()[col], matrix.valuePtr() + matrix.outerIndexPtr()[col + 1]);
+  }
+  return matrix;
 }
 
 void expect_matches_eigen(const SparseMatrix& matrix, const SparseMatrix& prolongation) {
@@ -138,15 +148,14 @@ TEST(GalerkinProduct, UncompressedAndUnsortedInputs) {
   const SparseMatrix product = galerkin_product(uncompressed_matrix, uncompressed_prolongation, restriction);
   EXPECT_TRUE(product.isCompressed());
   EXPECT_LE((product - expected).norm(), 1e-13 * expected.norm());
-  // Pᵀ with the rows of each column reversed: sorted internally before use.
-  SparseMatrix reversed = restriction;
-  for (Eigen::Index col = 0; col < reversed.outerSize(); ++col) {
-    std::reverse(reversed.innerIndexPtr() + reversed.outerIndexPtr()[col],
-                 reversed.innerIndexPtr() + reversed.outerIndexPtr()[col + 1]);
-    std::reverse(reversed.valuePtr() + reversed.outerIndexPtr()[col],
-                 reversed.valuePtr() + reversed.outerIndexPtr()[col + 1]);
-  }
-  EXPECT_LE((galerkin_product(uncompressed_matrix, uncompressed_prolongation, reversed) - expected).norm(),
+  // Pᵀ and A with the rows of each column reversed: Pᵀ is sorted internally before use, A's
+  // order only decides which columns are grouped.
+  const SparseMatrix reversed_restriction = reversed_columns(restriction);
+  const SparseMatrix reversed_matrix = reversed_columns(matrix);
+  EXPECT_LE((galerkin_product(uncompressed_matrix, uncompressed_prolongation, reversed_restriction) - expected).norm(),
+            1e-13 * expected.norm());
+  // (the explicit zeros added above leave the product's values unchanged)
+  EXPECT_LE((galerkin_product(reversed_matrix, prolongation, SparseMatrix(prolongation.transpose())) - expected).norm(),
             1e-13 * expected.norm());
 }
 
