@@ -5,6 +5,7 @@
 // relative, be compressed, exactly symmetric, with sorted rows and no entry outside
 // Eigen's pattern.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <random>
@@ -170,6 +171,20 @@ TEST(GalerkinProduct, AggregatesOfTheElasticityLikeLaplacian) {
   SparseMatrix prolongation(3 * grid * grid * grid, 3 * aggregates * aggregates * aggregates);
   prolongation.setFromTriplets(entries.begin(), entries.end());
   expect_matches_eigen(testing::elasticity_like_laplacian(grid), prolongation);
+}
+
+TEST(GalerkinProduct, SameResultOnAnyNumberOfThreads) {
+  // Each column is formed by one thread in a fixed order: the threads change nothing, bit for bit.
+  const SparseMatrix matrix = random_symmetric(300, 12, 0.08, 11), prolongation = random_prolongation(300, 77, 8, 4, {}, {}, 11);
+  const SparseMatrix restriction = prolongation.transpose();
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const SparseMatrix serial = galerkin_product(matrix, prolongation, restriction);
+  omp_set_num_threads(3);
+  const SparseMatrix parallel = galerkin_product(matrix, prolongation, restriction);
+  omp_set_num_threads(threads);
+  ASSERT_EQ(serial.nonZeros(), parallel.nonZeros());
+  EXPECT_EQ((serial - parallel).norm(), 0.0);
 }
 
 TEST(GalerkinProduct, RejectsShapesThatDoNotFit) {
