@@ -3,14 +3,13 @@
 #include <omp.h>
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
 #include <stdexcept>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 #include "shared/solve/huge_page_allocation.hpp"
+#include "shared/solve/identical_pattern_classes.hpp"
+#include "shared/solve/symmetric_from_upper.hpp"
 
 namespace altfem {
 
@@ -61,43 +60,6 @@ const SparseMatrix& compressed_sorted(const SparseMatrix& matrix, SparseMatrix& 
   const Eigen::SparseMatrix<double, Eigen::RowMajor> transposed = matrix;
   storage = transposed;
   return storage;
-}
-
-/// A class id per column such that two kept columns share it exactly when their row
-/// patterns are identical (-1 for columns not kept); `class_count` ids in all. Patterns are
-/// bucketed by a hash of their rows and verified entry by entry against the bucket's first
-/// column; a column whose hash collides with a different pattern gets a class of its own,
-/// which costs grouping, never correctness.
-std::vector<int> identical_pattern_classes(const CompressedColumns& matrix, int column_count,
-                                           const std::vector<char>& kept, int& class_count) {
-  std::vector<std::uint64_t> hashes(static_cast<size_t>(column_count));
-  // A sum of mixed row indices: no multiply chain through the column; the comparison below
-  // then checks the rows as sequences (grouping needs the same order, not just the same set).
-  for (int column = 0; column < column_count; ++column) {
-    if (!kept[column]) continue;
-    std::uint64_t hash = static_cast<std::uint64_t>(matrix.length(column)) * 0x9e3779b97f4a7c15ull;
-    for (int at = matrix.outer[column]; at < matrix.outer[column + 1]; ++at) {
-      const std::uint64_t row = static_cast<std::uint64_t>(matrix.inner[at]) * 0xff51afd7ed558ccdull;
-      hash += row ^ (row >> 29);
-    }
-    hashes[column] = hash;
-  }
-  std::vector<int> classes(static_cast<size_t>(column_count), -1);
-  std::unordered_map<std::uint64_t, int> first_column_of_hash;
-  first_column_of_hash.reserve(static_cast<size_t>(column_count));
-  class_count = 0;
-  for (int column = 0; column < column_count; ++column) {
-    if (!kept[column]) continue;
-    const auto [found, added] = first_column_of_hash.try_emplace(hashes[column], column);
-    const int first = found->second;
-    if (!added && matrix.length(first) == matrix.length(column) &&
-        std::memcmp(matrix.inner + matrix.outer[first], matrix.inner + matrix.outer[column],
-                    sizeof(int) * static_cast<size_t>(matrix.length(column))) == 0)
-      classes[column] = classes[first];
-    else
-      classes[column] = class_count++;
-  }
-  return classes;
 }
 
 /// A restricted to the rows P uses, each column's pattern reordered by the first (smallest)
@@ -171,14 +133,6 @@ struct ProductInputs {
   std::vector<int> restriction_class;          // per fine row: the class of its pattern in P (-1: empty row)
   std::vector<int> member_outer, members;      // the fine rows of each restriction class
   int longest_column = 0, largest_class = 0;   // scratch sizes
-};
-
-/// The columns [begin, end) of the upper triangle of Pᵀ A P (row ≤ column), row indices
-/// unsorted within a column: column j holds inner[outer[j − begin] .. outer[j − begin + 1]).
-struct UpperColumns {
-  int begin = 0, end = 0;
-  std::vector<int> outer, inner;
-  std::vector<double> value;
 };
 
 /// values[index] += addend in column `column` of a dense accumulator whose entries are valid
@@ -282,54 +236,6 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
   upper.value = std::move(value);
 }
 
-/// The symmetric m × m matrix whose upper triangle the ranges hold (in order, covering
-/// 0..m), with sorted rows and no sort: the upper entries U(i, j) are first written
-/// transposed, column by column in increasing j, into the lower parts (rows ≥ i) of their
-/// columns i, which leaves those sorted; the lower parts are then read in increasing i and
-/// written transposed into the upper parts (rows < j), sorted likewise.
-SparseMatrix symmetric_from_upper(const std::vector<UpperColumns>& ranges, int size) {
-  std::vector<int> count(static_cast<size_t>(size), 0), strictly_upper(static_cast<size_t>(size), 0);
-  for (const UpperColumns& upper : ranges)
-    for (int j = upper.begin; j < upper.end; ++j)
-      for (int at = upper.outer[j - upper.begin]; at < upper.outer[j - upper.begin + 1]; ++at) {
-        const int i = upper.inner[at];
-        ++count[j];
-        if (i != j) {
-          ++count[i];
-          ++strictly_upper[j];
-        }
-      }
-  SparseMatrix result(size, size);
-  int* outer = result.outerIndexPtr();
-  outer[0] = 0;
-  for (int j = 0; j < size; ++j) outer[j + 1] = outer[j] + count[j];
-  result.resizeNonZeros(outer[size]);
-  int* inner = result.innerIndexPtr();
-  double* value = result.valuePtr();
-  advise_huge_pages(inner, sizeof(int) * static_cast<size_t>(outer[size]));  // not touched yet
-  advise_huge_pages(value, sizeof(double) * static_cast<size_t>(outer[size]));
-
-  std::vector<int> cursor(static_cast<size_t>(size)), lower_begin(static_cast<size_t>(size));
-  for (int j = 0; j < size; ++j) cursor[j] = lower_begin[j] = outer[j] + strictly_upper[j];
-  for (const UpperColumns& upper : ranges)
-    for (int j = upper.begin; j < upper.end; ++j)
-      for (int at = upper.outer[j - upper.begin]; at < upper.outer[j - upper.begin + 1]; ++at) {
-        const int to = cursor[upper.inner[at]]++;
-        inner[to] = j;
-        value[to] = upper.value[at];
-      }
-  for (int j = 0; j < size; ++j) cursor[j] = outer[j];
-  for (int i = 0; i < size; ++i)
-    for (int at = lower_begin[i]; at < outer[i + 1]; ++at) {
-      const int j = inner[at];
-      if (j == i) continue;
-      const int to = cursor[j]++;
-      inner[to] = i;
-      value[to] = value[at];
-    }
-  return result;
-}
-
 }  // namespace
 
 SparseMatrix galerkin_product(const SparseMatrix& matrix, const SparseMatrix& prolongation,
@@ -362,12 +268,12 @@ SparseMatrix galerkin_product(const SparseMatrix& matrix, const SparseMatrix& pr
   const CompressedColumns unordered = columns_of(compressed(matrix, matrix_storage));
 
   int matrix_classes = 0, restriction_classes = 0;
-  inputs.matrix_class = identical_pattern_classes(unordered, inputs.fine_size, used, matrix_classes);
+  inputs.matrix_class = identical_pattern_classes(unordered.outer, unordered.inner, used, matrix_classes);
   const OrderedMatrix ordered = ordered_by_first_coarse(unordered, r, inputs.matrix_class, matrix_classes, used);
   inputs.matrix = {ordered.outer.data(), ordered.inner.data(), ordered.value.data()};
   inputs.class_outer = ordered.class_outer.data();
   inputs.first_coarse = ordered.first_coarse.data();
-  inputs.restriction_class = identical_pattern_classes(r, inputs.fine_size, used, restriction_classes);
+  inputs.restriction_class = identical_pattern_classes(r.outer, r.inner, used, restriction_classes);
   inputs.member_outer.assign(static_cast<size_t>(restriction_classes) + 1, 0);
   for (int row = 0; row < inputs.fine_size; ++row)
     if (used[row]) ++inputs.member_outer[inputs.restriction_class[row] + 1];

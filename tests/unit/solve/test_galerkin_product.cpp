@@ -3,7 +3,8 @@
 // unknowns, rows of P sharing a pattern and columns of A sharing one, as DG's cell blocks
 // do), and on the two-level test problem's aggregates. The result must match to 1e-13
 // relative, be compressed, exactly symmetric, with sorted rows and no entry outside
-// Eigen's pattern.
+// Eigen's pattern. Its two parts on their own: identical_pattern_classes on a small pattern,
+// symmetric_from_upper on unsorted ranges.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include "shared/solve/galerkin_product.hpp"
+#include "shared/solve/identical_pattern_classes.hpp"
+#include "shared/solve/symmetric_from_upper.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
 
 namespace altfem {
@@ -192,6 +195,32 @@ TEST(GalerkinProduct, RejectsShapesThatDoNotFit) {
   EXPECT_THROW(galerkin_product(matrix, prolongation, prolongation), std::invalid_argument);
   EXPECT_THROW(galerkin_product(SparseMatrix(9, 9), prolongation, SparseMatrix(prolongation.transpose())),
                std::invalid_argument);
+}
+
+TEST(IdenticalPatternClasses, SameRowsInTheSameOrderShareAClass) {
+  // Columns: {0, 2}, {1}, {0, 2}, {2, 0} (same set, other order), {} (not kept), {1}, {}.
+  const int outer[] = {0, 2, 3, 5, 7, 7, 8, 8};
+  const int inner[] = {0, 2, 1, 0, 2, 2, 0, 1};
+  const std::vector<char> kept = {1, 1, 1, 1, 0, 1, 1};
+  int class_count = 0;
+  EXPECT_EQ(identical_pattern_classes(outer, inner, kept, class_count), (std::vector<int>{0, 1, 0, 2, -1, 1, 3}));
+  EXPECT_EQ(class_count, 4);
+}
+
+TEST(SymmetricFromUpper, MirrorsUnsortedRangesIntoSortedColumns) {
+  // The upper triangle of [[1, 2, 0], [2, 3, 4], [0, 4, 5]] in two ranges, rows unsorted.
+  std::vector<UpperColumns> ranges(2);
+  ranges[0] = {0, 2, {0, 1, 3}, {0, 1, 0}, {1.0, 3.0, 2.0}};
+  ranges[1] = {2, 3, {0, 2}, {2, 1, 99}, {5.0, 4.0, 99.0}};  // longer arrays than outer says
+  const SparseMatrix symmetric = symmetric_from_upper(ranges, 3);
+  Eigen::Matrix3d expected;
+  expected << 1, 2, 0, 2, 3, 4, 0, 4, 5;
+  EXPECT_EQ(Eigen::Matrix3d(symmetric), expected);
+  EXPECT_EQ(symmetric.nonZeros(), 7);
+  EXPECT_TRUE(symmetric.isCompressed());
+  for (Eigen::Index j = 0; j < 3; ++j)
+    for (int at = symmetric.outerIndexPtr()[j] + 1; at < symmetric.outerIndexPtr()[j + 1]; ++at)
+      EXPECT_LT(symmetric.innerIndexPtr()[at - 1], symmetric.innerIndexPtr()[at]);
 }
 
 }  // namespace
