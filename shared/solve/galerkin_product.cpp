@@ -27,9 +27,9 @@ struct CompressedColumns {
 };
 
 /// Resizes a vector that is empty so far to `size` elements, asking for huge pages behind it
-/// first: the large buffers of one product (A's ordered copy, the upper triangle, the result:
-/// megabytes each) are fresh memory on every call, and faulting them in 4 KiB at a time cost a
-/// third of the product's time in bench_galerkin_product (huge_page_allocation.hpp).
+/// first: the large buffers of one product (A's ordered copy and the upper triangle, megabytes
+/// each, like the result: symmetric_from_upper) are fresh memory on every call, and faulting
+/// them in 4 KiB at a time cost a third of the product's time in bench_galerkin_product.
 template <class Value>
 void resize_on_huge_pages(std::vector<Value>& buffer, size_t size) {
   buffer.reserve(size);

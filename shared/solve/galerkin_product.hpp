@@ -1,10 +1,12 @@
 #pragma once
-// The Galerkin coarse matrix A_c = Pᵀ A P of a two-level or multilevel method (Dobrev,
-// Lazarov, Vassilevski & Zikatanov 2006, the coarse operator of their §3), formed column by
+// The Galerkin coarse matrix A_c = Pᵀ A P of a two-level or multilevel method (the coarse
+// operator of two_level_preconditioner.hpp, after Dobrev et al. 2006), formed column by
 // column with dense accumulators instead of Eigen's two general sparse products: only the
 // upper triangle is computed (A symmetric), rows of P with identical patterns and columns of
 // A with identical patterns are processed as groups (DG's cell blocks), and A is first
-// restricted to the rows P uses (a vertex coarse space leaves DG's quadratic monomials out).
+// restricted to the rows P uses (a vertex coarse space leaves DG's quadratic monomials out),
+// each column of A P only to the rows that reach the upper triangle. On the DG Table 1
+// problem 3–5× faster than Eigen's two products on one core (bench_galerkin_product).
 #include <Eigen/SparseCore>
 
 namespace altfem {
