@@ -1,6 +1,7 @@
 #include "dg/dg_discretization.hpp"
 
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
+#include "shared/solve/block_relaxation_preconditioner.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
 
 namespace altfem::dg {
@@ -21,6 +22,25 @@ Eigen::SparseMatrix<double> on_union_pattern(const Eigen::SparseMatrix<double>& 
 // bench_dg_table1; ω = 0.5, 0.6, 0.7, 0.8, 0.9 took 13, 11, 10, 10, 15 iterations (k = 1) and
 // 66, 60, 55, 52, 50 (k = 2).
 constexpr double two_level_smoother_damping = 0.8;
+
+// The first DOF of every element and the end of the last: DG's element blocks are
+// consecutive DOF ranges (cell c's [3 offset(c), 3 offset(c + 1))), as block relaxation needs.
+std::vector<int> element_starts(const std::vector<std::vector<int>>& element_dofs) {
+  std::vector<int> starts{0};
+  for (const std::vector<int>& dofs : element_dofs) {
+    for (size_t i = 0; i < dofs.size(); ++i)
+      if (dofs[i] != starts.back() + static_cast<int>(i))
+        throw std::logic_error("dg: the element blocks are not consecutive DOF ranges in cell order");
+    starts.push_back(starts.back() + static_cast<int>(dofs.size()));
+  }
+  return starts;
+}
+
+// The fine-level smoother of the two-level and multilevel cycles: block Jacobi, each element
+// block inverted by Cholesky (K is positive definite on the linear path these serve).
+std::unique_ptr<Preconditioner> element_block_jacobi(const std::vector<int>& starts) {
+  return std::make_unique<BlockRelaxationPreconditioner>(starts, BlockRelaxation::jacobi);
+}
 
 }  // namespace
 
@@ -54,10 +74,29 @@ PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element
 
 PreconditionerFactory two_level_factory(std::vector<std::vector<int>> element_dofs,
                                         Eigen::SparseMatrix<double> prolongation) {
-  return [blocks = std::move(element_dofs), prolongation = std::move(prolongation)]() -> std::unique_ptr<Preconditioner> {
-    return std::make_unique<TwoLevelPreconditioner>(std::make_unique<AdditiveSchwarzPreconditioner>(blocks),
+  return [starts = element_starts(element_dofs), prolongation = std::move(prolongation)]() -> std::unique_ptr<Preconditioner> {
+    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts),
                                                     prolongation, TwoLevelCycle::multiplicative,
                                                     two_level_smoother_damping);
+  };
+}
+
+PreconditionerFactory multilevel_factory(std::vector<std::vector<int>> element_dofs,
+                                         Eigen::SparseMatrix<double> vertex_prolongation,
+                                         std::vector<Eigen::SparseMatrix<double>> grid_prolongations) {
+  return [starts = element_starts(element_dofs), vertex_prolongation = std::move(vertex_prolongation),
+          grid_prolongations = std::move(grid_prolongations)]() -> std::unique_ptr<Preconditioner> {
+    // From the coarsest grid up: each level's cycle is the coarse solve of the one above.
+    std::unique_ptr<Preconditioner> coarse;  // null: CHOLMOD on the coarsest level
+    for (auto level = grid_prolongations.rbegin(); level != grid_prolongations.rend(); ++level) {
+      std::vector<int> vertex_blocks(static_cast<size_t>(level->rows() / 3 + 1));
+      for (size_t v = 0; v < vertex_blocks.size(); ++v) vertex_blocks[v] = 3 * static_cast<int>(v);
+      coarse = std::make_unique<TwoLevelPreconditioner>(
+          std::make_unique<BlockRelaxationPreconditioner>(std::move(vertex_blocks), BlockRelaxation::symmetric_gauss_seidel),
+          *level, TwoLevelCycle::multiplicative, 1.0, std::move(coarse));
+    }
+    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts), vertex_prolongation, TwoLevelCycle::multiplicative,
+                                                    two_level_smoother_damping, std::move(coarse));
   };
 }
 

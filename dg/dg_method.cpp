@@ -10,6 +10,7 @@
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
+#include "dg/grid_coarse_levels.hpp"
 #include "dg/vertex_coarse_space.hpp"
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
@@ -110,9 +111,7 @@ public:
         element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
     // Used only when the scene's solver/linear is iterative (the direct solvers ignore it).
-    PreconditionerFactory preconditioner = spec_.preconditioner == DgPreconditioner::two_level
-                                               ? two_level_factory(element_dofs, coarse_space(scene))
-                                               : block_jacobi_factory(element_dofs);
+    PreconditionerFactory preconditioner = preconditioner_factory(scene, element_dofs);
     if (spec_.warping) {
       // The consistency part of moving data is rotated with the boundary element (§6): the
       // discretization adds it; the load keeps the penalty's part.
@@ -220,21 +219,27 @@ public:
   }
 
 private:
-  // The two-level preconditioner's prolongation, refused (bad input) when the vertex
-  // space would not be coarse: a cut cell of a detailed surface has far more facet vertices
-  // than DOFs, and PᵀKP of the armadillo sliced at resolution 4 (35 cells, 1,050 DOFs)
-  // exhausted 24 GB.
-  Eigen::SparseMatrix<double> coarse_space(const Scene& scene) const {
+  // The scene's preconditioner. The two-level and multilevel ones are refused (bad input)
+  // when the vertex space would not be coarse: a cut cell of a detailed surface has far more
+  // facet vertices than DOFs, and PᵀKP of the armadillo sliced at resolution 4 (35 cells,
+  // 1,050 DOFs) exhausted 24 GB.
+  PreconditionerFactory preconditioner_factory(const Scene& scene,
+                                               const std::vector<std::vector<int>>& element_dofs) const {
+    if (spec_.preconditioner == DgPreconditioner::block_jacobi) return block_jacobi_factory(element_dofs);
     VertexCoarseSpace space = vertex_coarse_space(mesh_, *system_);
     const auto coarse = static_cast<long>(space.prolongation.cols());
+    const std::string name(dg_preconditioner_names[static_cast<int>(spec_.preconditioner)]);
     if (coarse > system_->dof_count())
       throw InputError(input_message(
           scene.file.string(), "/discretization/dg/preconditioner",
-          "'two_level' needs a coarse space smaller than the DG space, but the mesh's " +
+          "'" + name + "' needs a coarse space smaller than the DG space, but the mesh's " +
               std::to_string(space.nodes.size()) + " vertices give " + std::to_string(coarse) +
               " coarse unknowns against " + std::to_string(system_->dof_count()) +
               " DOFs (cut cells of a detailed surface have many facet vertices; use 'block_jacobi')"));
-    return std::move(space.prolongation);
+    if (spec_.preconditioner == DgPreconditioner::two_level)
+      return two_level_factory(element_dofs, std::move(space.prolongation));
+    std::vector<Eigen::SparseMatrix<double>> grid_levels = grid_coarse_levels(mesh_, *system_, space);
+    return multilevel_factory(element_dofs, std::move(space.prolongation), std::move(grid_levels));
   }
 
   // Every material of the scene linear: the exact integration (else the tabulated one).

@@ -45,8 +45,8 @@ inline constexpr std::array<std::string_view, 3> embedding_names{"element", "sti
 /// conjugate_residual): block Jacobi (one block per element) or the two-level V-cycle of that
 /// smoother with the vertex coarse space (dg/vertex_coarse_space.hpp), whose iterations stay
 /// bounded under refinement.
-enum class DgPreconditioner { block_jacobi, two_level };
-inline constexpr std::array<std::string_view, 2> dg_preconditioner_names{"block_jacobi", "two_level"};
+enum class DgPreconditioner { block_jacobi, two_level, multilevel };
+inline constexpr std::array<std::string_view, 3> dg_preconditioner_names{"block_jacobi", "two_level", "multilevel"};
 
 struct DgSpec {
   int degree = 2;

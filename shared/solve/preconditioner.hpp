@@ -24,6 +24,14 @@ public:
   /// result = M⁻¹ · residual (both #dofs). Called every Krylov iteration, so it
   /// must not allocate; `result` never aliases `residual`.
   virtual void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const = 0;
+  /// Whether M is symmetric: every preconditioner but a one-way smoothing sweep. PCG and
+  /// additive cycles need a symmetric one.
+  virtual bool symmetric() const { return true; }
+  /// result = M⁻ᵀ · residual: the post-smoothing of a symmetric V-cycle whose pre-smoothing
+  /// is apply() (a Gauss–Seidel sweep run backwards); apply() itself when M is symmetric.
+  virtual void apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
+    apply(residual, result);
+  }
 };
 
 /// Makes a fresh preconditioner for each solver that needs one (method-specific

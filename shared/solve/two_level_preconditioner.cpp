@@ -23,13 +23,19 @@ constexpr double coarse_shift = 1e-10;
 
 TwoLevelPreconditioner::TwoLevelPreconditioner(std::unique_ptr<Preconditioner> smoother,
                                                Eigen::SparseMatrix<double> prolongation, TwoLevelCycle cycle,
-                                               double damping)
+                                               double damping, std::unique_ptr<Preconditioner> coarse)
     : smoother_(std::move(smoother)),
       prolongation_(std::move(prolongation)),
       restriction_(prolongation_.transpose()),
       cycle_(cycle),
       damping_(damping),
-      coarse_solver_(make_cholmod_solver(CholmodFactorisation::supernodal_llt)) {}
+      coarse_solver_(make_cholmod_solver(CholmodFactorisation::supernodal_llt)),
+      coarse_preconditioner_(std::move(coarse)) {
+  if (cycle_ == TwoLevelCycle::additive && !smoother_->symmetric())
+    throw std::logic_error("two-level preconditioner: the additive cycle needs a symmetric smoother");
+  if (coarse_preconditioner_ && !coarse_preconditioner_->symmetric())
+    throw std::logic_error("two-level preconditioner: the coarse preconditioner must be symmetric");
+}
 
 TwoLevelPreconditioner::~TwoLevelPreconditioner() = default;
 
@@ -43,7 +49,8 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
   smoother_seconds_ = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
-  Eigen::SparseMatrix<double> coarse = restriction_ * (matrix * prolongation_);
+  Eigen::SparseMatrix<double>& coarse = coarse_matrix_;
+  coarse = restriction_ * (matrix * prolongation_);
   // A coarse function P e_j that is zero (a vertex of no element) has a zero row: shift it by
   // the largest diagonal entry so that the kernel is always lifted.
   const Eigen::VectorXd diagonal = coarse.diagonal();
@@ -52,11 +59,15 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
     coarse.coeffRef(j, j) += coarse_shift * (diagonal[j] > 0 ? diagonal[j] : largest);
   galerkin_seconds_ = seconds_since(start);
 
-  try {
-    coarse_solver_->factorize(coarse);
-  } catch (const NumericalError& error) {
-    throw NumericalError(std::string("two-level preconditioner: the coarse matrix PᵀAP is not positive definite (") +
-                         error.what() + ")");
+  if (coarse_preconditioner_) {
+    coarse_preconditioner_->compute(coarse);
+  } else {
+    try {
+      coarse_solver_->factorize(coarse);
+    } catch (const NumericalError& error) {
+      throw NumericalError(std::string("two-level preconditioner: the coarse matrix PᵀAP is not positive definite (") +
+                           error.what() + ")");
+    }
   }
 
   coarse_residual_.resize(prolongation_.cols());
@@ -65,25 +76,32 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
   smoothed_.resize(prolongation_.rows());
 }
 
+void TwoLevelPreconditioner::solve_coarse() const {
+  if (coarse_preconditioner_)
+    coarse_preconditioner_->apply(coarse_residual_, coarse_correction_);
+  else
+    coarse_solver_->solve(coarse_residual_, coarse_correction_);
+}
+
 void TwoLevelPreconditioner::apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
   smoother_->apply(residual, result);
   result *= damping_;
   if (cycle_ == TwoLevelCycle::additive) {
     coarse_residual_.noalias() = restriction_ * residual;
-    coarse_solver_->solve(coarse_residual_, coarse_correction_);
+    solve_coarse();
     result.noalias() += prolongation_ * coarse_correction_;
     return;
   }
   // The symmetric V-cycle: pre-smoothed above, coarse correction of the remaining residual,
-  // post-smoothing with the same ω S.
+  // post-smoothing with ω Sᵀ (S itself for a symmetric smoother).
   symmetric_multiply(*matrix_, result, fine_residual_);
   fine_residual_ = residual - fine_residual_;
   coarse_residual_.noalias() = restriction_ * fine_residual_;
-  coarse_solver_->solve(coarse_residual_, coarse_correction_);
+  solve_coarse();
   result.noalias() += prolongation_ * coarse_correction_;
   symmetric_multiply(*matrix_, result, fine_residual_);
   fine_residual_ = residual - fine_residual_;
-  smoother_->apply(fine_residual_, smoothed_);
+  smoother_->apply_transpose(fine_residual_, smoothed_);
   result += damping_ * smoothed_;
 }
 

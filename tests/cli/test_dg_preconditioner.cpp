@@ -1,6 +1,6 @@
 // `altfem run --method dg` with an iterative linear solver and the key
-// /discretization/dg/preconditioner (issue #18): both preconditioners run, the two-level
-// one takes fewer PCG iterations than block Jacobi alone, and a bad name — or a mesh
+// /discretization/dg/preconditioner (issue #18): every preconditioner runs, the two-level and
+// multilevel ones take fewer PCG iterations than block Jacobi alone, and a bad name — or a mesh
 // whose vertices outnumber the DG unknowns — exits 2 with one line naming the key.
 #include <gtest/gtest.h>
 
@@ -24,11 +24,14 @@ long pcg_iterations(const std::filesystem::path& out, const std::string& precond
   return summary["linear_iterations"].get<long>();
 }
 
-TEST(DgPreconditioner, TwoLevelTakesFewerPcgIterationsThanBlockJacobi) {
+TEST(DgPreconditioner, TwoLevelAndMultilevelTakeFewerPcgIterationsThanBlockJacobi) {
   const auto out = fresh_directory("dg_preconditioner");
   const long two_level = pcg_iterations(out, "two_level"), block_jacobi = pcg_iterations(out, "block_jacobi");
+  const long multilevel = pcg_iterations(out, "multilevel");
   EXPECT_GT(two_level, 0);
   EXPECT_LT(two_level, block_jacobi);
+  EXPECT_GT(multilevel, 0);
+  EXPECT_LT(multilevel, block_jacobi);
 }
 
 TEST(DgPreconditioner, AnUnknownNameExitsTwoNamingTheKey) {

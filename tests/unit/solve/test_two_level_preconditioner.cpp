@@ -1,8 +1,11 @@
 // TwoLevelPreconditioner (Dobrev, Lazarov, Vassilevski & Zikatanov 2006): both cycles are
 // symmetric positive definite on random vectors, and the coarse correction alone (damping 0)
-// inverts A exactly on the coarse space, even when P has dependent columns (the shifted A_c).
+// inverts A exactly on the coarse space, even when P has dependent columns (the shifted A_c);
+// a V-cycle as coarse solve (three levels, Gauss–Seidel sweeps forward before and backward
+// after) stays symmetric positive definite; the additive cycle refuses a one-way sweep.
 #include <gtest/gtest.h>
 
+#include "shared/solve/block_relaxation_preconditioner.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
 #include "tests/unit/random_vectors.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
@@ -61,6 +64,52 @@ TEST_P(TwoLevelCycles, CoarseCorrectionIsExactOnTheCoarseSpace) {
   Eigen::VectorXd applied;
   preconditioner.apply(matrix * solution, applied);
   EXPECT_LT((applied - solution).norm(), 1e-8 * solution.norm());
+}
+
+// The aggregates' prolongation's 3 · 27 + 1 columns, 3 per aggregate, to 3 · 1: all
+// aggregates into one (per component), the extra column dropped.
+Eigen::SparseMatrix<double> single_aggregate_prolongation() {
+  const int aggregates = grid / 2;
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int a = 0; a < aggregates * aggregates * aggregates; ++a)
+    for (int c = 0; c < 3; ++c) entries.emplace_back(3 * a + c, c, 1.0);
+  Eigen::SparseMatrix<double> prolongation(3 * aggregates * aggregates * aggregates + 1, 3);
+  prolongation.setFromTriplets(entries.begin(), entries.end());
+  return prolongation;
+}
+
+std::vector<int> triples(Eigen::Index dofs) {
+  std::vector<int> starts;
+  for (int first = 0; first <= dofs; first += 3) starts.push_back(first);
+  return starts;
+}
+
+TEST(TwoLevelPreconditioner, AVCycleAsCoarseSolveIsSymmetricPositiveDefinite) {
+  const Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(grid);
+  const Eigen::SparseMatrix<double> middle = aggregate_prolongation();
+  ASSERT_THROW(TwoLevelPreconditioner(std::make_unique<BlockRelaxationPreconditioner>(triples(matrix.rows()),
+                                                                                      BlockRelaxation::gauss_seidel),
+                                      middle, TwoLevelCycle::additive),
+               std::logic_error);
+  // The middle level has 3 · 27 + 1 unknowns: the extra one makes a last block of 1.
+  std::vector<int> middle_blocks = triples(middle.cols() - 1);
+  middle_blocks.push_back(static_cast<int>(middle.cols()));
+  auto coarse = std::make_unique<TwoLevelPreconditioner>(
+      std::make_unique<BlockRelaxationPreconditioner>(middle_blocks, BlockRelaxation::gauss_seidel),
+      single_aggregate_prolongation(), TwoLevelCycle::multiplicative, 1.0);
+  TwoLevelPreconditioner three_levels(
+      std::make_unique<BlockRelaxationPreconditioner>(triples(matrix.rows()), BlockRelaxation::gauss_seidel), middle,
+      TwoLevelCycle::multiplicative, 1.0, std::move(coarse));
+  three_levels.compute(matrix);
+  EXPECT_EQ(three_levels.coarse_statistics().factorisations, 0);  // the V-cycle, not CHOLMOD, below
+  Eigen::VectorXd applied_x, applied_y;
+  for (unsigned seed = 1; seed <= 5; ++seed) {
+    const Eigen::VectorXd x = test::random_vector(matrix.rows(), seed), y = test::random_vector(matrix.rows(), 100 + seed);
+    three_levels.apply(x, applied_x);
+    three_levels.apply(y, applied_y);
+    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
+    EXPECT_GT(x.dot(applied_x), 0.0);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(TwoLevelPreconditioner, TwoLevelCycles,

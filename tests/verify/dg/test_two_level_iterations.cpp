@@ -3,7 +3,8 @@
 // smoother, κ(M⁻¹A) is bounded independently of h) on IP-DG linear elasticity: PCG's
 // iterations to a relative residual of 1e-8 stay bounded as a hexahedral grid and a sliced
 // sphere are refined, while block Jacobi alone needs about twice as many per halving of h
-// (κ ~ h⁻²). Prints the tables.
+// (κ ~ h⁻²). The multilevel cycle (its coarse solve a V-cycle over background grids,
+// dg/grid_coarse_levels.hpp) keeps them bounded too. Prints the tables.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "dg/dg_discretization.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
+#include "dg/grid_coarse_levels.hpp"
 #include "dg/vertex_coarse_space.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
@@ -22,7 +24,8 @@ namespace altfem::dg {
 namespace {
 
 struct Iterations {
-  int dofs, block_jacobi, two_level;
+  int dofs, block_jacobi, two_level, multilevel;
+  int grid_levels;  // of the multilevel cycle: 0 when the vertex space is already its coarsest level
 };
 
 // PCG iterations for K u = f, f a unit body force, the mesh clamped weakly on its boundary
@@ -44,20 +47,25 @@ Iterations pcg_iterations(const PolyhedralMesh& mesh, int degree, double x_clamp
     ConjugateGradientWorkspace workspace;
     return conjugate_gradient(system.stiffness(), *preconditioner, load, u, {1e-8, 5000}, workspace).iterations;
   };
-  Iterations result{system.dof_count(), 0, 0};
+  Iterations result{system.dof_count(), 0, 0, 0, 0};
   if (with_block_jacobi) result.block_jacobi = solve(block_jacobi_factory(blocks));
-  result.two_level = solve(two_level_factory(blocks, vertex_coarse_space(mesh, system).prolongation));
+  const VertexCoarseSpace space = vertex_coarse_space(mesh, system);
+  result.two_level = solve(two_level_factory(blocks, space.prolongation));
+  std::vector<Eigen::SparseMatrix<double>> levels = grid_coarse_levels(mesh, system, space);
+  result.grid_levels = static_cast<int>(levels.size());
+  result.multilevel = solve(multilevel_factory(blocks, space.prolongation, std::move(levels)));
   return result;
 }
 
 void print_row(const char* mesh, int cells, const Iterations& iterations) {
   const std::string block_jacobi = iterations.block_jacobi > 0 ? std::to_string(iterations.block_jacobi) : "-";
-  std::printf("  %-14s %7d %8d %14s %11d\n", mesh, cells, iterations.dofs, block_jacobi.c_str(),
-              iterations.two_level);
+  std::printf("  %-14s %7d %8d %14s %11d %11d (%d grid levels)\n", mesh, cells, iterations.dofs,
+              block_jacobi.c_str(), iterations.two_level, iterations.multilevel, iterations.grid_levels);
 }
 
 TEST(TwoLevelIterations, StayBoundedUnderRefinementOfAHexahedralGrid) {
-  std::printf("  %-14s %7s %8s %14s %11s\n", "mesh", "cells", "DOFs", "block Jacobi", "two-level");
+  std::printf("  %-14s %7s %8s %14s %11s %11s\n", "mesh", "cells", "DOFs", "block Jacobi", "two-level",
+              "multilevel");
   for (int degree : {1, 2}) {
     std::vector<Iterations> rows;
     const std::vector<int> resolutions = degree == 1 ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8};
@@ -73,6 +81,12 @@ TEST(TwoLevelIterations, StayBoundedUnderRefinementOfAHexahedralGrid) {
       EXPECT_GT(rows[r].block_jacobi, 1.6 * rows[r - 1].block_jacobi) << "k = " << degree;
       // Bounded: at most 25% more per halving of h (a constant, with PCG's mild start-up growth).
       EXPECT_LT(rows[r].two_level, 1.25 * rows[r - 1].two_level) << "k = " << degree;
+      // The multilevel cycle is the two-level one while the vertex space is coarsest (4³):
+      // bounded from the first grid with a grid level below its vertices on.
+      if (rows[r - 1].grid_levels > 0)
+        EXPECT_LT(rows[r].multilevel, 1.25 * rows[r - 1].multilevel) << "k = " << degree;
+      else
+        EXPECT_EQ(rows[r - 1].multilevel, rows[r - 1].two_level) << "k = " << degree;
     }
   }
 }
@@ -91,6 +105,8 @@ TEST(TwoLevelIterations, StayBoundedUnderRefinementOfASlicedSphere) {
   // The coarsest slice is nearly all cut cells (5 iterations): bounded from the second on,
   // as on the grid (h shrinks by 1.5 here).
   EXPECT_LT(rows[2].two_level, 1.25 * rows[1].two_level);
+  ASSERT_GT(rows[1].grid_levels, 0);
+  EXPECT_LT(rows[2].multilevel, 1.25 * rows[1].multilevel);
 }
 
 }  // namespace
