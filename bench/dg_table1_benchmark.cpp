@@ -25,11 +25,9 @@
 #include <string>
 #include <vector>
 
+#include "bench/dg_table1_problem.hpp"
 #include "bench/median.hpp"
 #include "dg/dg_linear_system.hpp"
-#include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
-#include "shared/mesh/structured_grid.hpp"
 #include "dg/dg_discretization.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/vertex_coarse_space.hpp"
@@ -81,16 +79,11 @@ int main(int argc, char** argv) {
   omp_set_num_threads(1);  // the paper's timings are single-core: OpenMP's and
   set_blas_threads(1);     // OpenBLAS's threads (CHOLMOD's supernodal BLAS calls) alike
 
-  const VolumeMesh grid = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
-                                          {10, 10, 10}, ElementType::hex8);
-  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(grid);
-  const std::vector<Polyhedron> cells = dg::mesh_cells(mesh);
-  std::vector<dg::DgFace> faces = dg::mesh_faces(mesh);
-  for (dg::DgFace& face : faces)
-    if (face.plus < 0 && face.normal.x() < -0.5) face.condition = 0;  // the clamp at x = 0
-  const double youngs_modulus = 1, poisson_ratio = 0.3;
-  const double lambda = youngs_modulus * poisson_ratio / ((1 + poisson_ratio) * (1 - 2 * poisson_ratio));
-  const double mu = youngs_modulus / (2 * (1 + poisson_ratio));
+  const bench::DgTable1Problem problem = bench::dg_table1_problem();
+  const PolyhedralMesh& mesh = problem.mesh;
+  const std::vector<Polyhedron>& cells = problem.cells;
+  const std::vector<dg::DgFace>& faces = problem.faces;
+  const double youngs_modulus = problem.youngs_modulus, lambda = problem.lambda, mu = problem.mu;
 
   const Row rows[] = {{"BZ k=1", dg::Flux::babuska_zlamal, 1, 532 + 22 + 656},
                       {"IP k=1", dg::Flux::interior_penalty, 1, 1437 + 87 + 734},

@@ -8,6 +8,12 @@
 
 namespace altfem {
 
+namespace {
+
+constexpr int small_graph_groups = 500;
+
+}  // namespace
+
 std::vector<int> supervariable_starts(const Eigen::SparseMatrix<double>& matrix) {
   const int* starts = matrix.outerIndexPtr();
   const int* rows = matrix.innerIndexPtr();
@@ -47,7 +53,9 @@ std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>&
   cholmod_start(&common);
   common.print = 0;
   common.supernodal = CHOLMOD_SIMPLICIAL;  // only the ordering is wanted, not a supernodal structure
-  common.nmethods = 2;
+  // A graph of a few hundred groups (the coarsest grid of a multilevel cycle) is ordered by
+  // AMD alone: nested dissection's METIS calls would cost more than the factorisation saves.
+  common.nmethods = group_count < small_graph_groups ? 1 : 2;
   common.method[0].ordering = CHOLMOD_AMD;
   common.method[1].ordering = CHOLMOD_NESDIS;
   cholmod_sparse graph{};

@@ -13,10 +13,12 @@ namespace altfem {
 
 namespace {
 
-// Fewer blocks than this in a colour (or in all, for Jacobi) are relaxed by one thread: a
-// vertex block costs about a microsecond, less than waking a team of threads. A vertex level
-// of the 10³ grid of bench_dg_table1 has ~40 vertices a colour.
+// Fewer blocks than this (Jacobi) are relaxed by one thread: a vertex block costs about a
+// microsecond, less than waking a team of threads.
 constexpr int minimum_parallel_blocks = 256;
+// Gauss–Seidel with fewer blocks than this sweeps on one thread: a multicolour sweep wakes the
+// team once per colour (~20 colours on a vertex level), each colour a few hundred blocks.
+constexpr int minimum_parallel_sweep_blocks = 8192;
 
 // Greedy colouring of the block graph (blocks coupled by a nonzero of A are neighbours):
 // each block, in order, takes the smallest colour none of its earlier neighbours has.
@@ -69,9 +71,16 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
   for (int block = 0; block < block_count; ++block) {
     const int first = block_starts_[block], size = block_starts_[block + 1] - first;
     Eigen::MatrixXd diagonal_block = Eigen::MatrixXd::Zero(size, size);
-    for (int j = 0; j < size; ++j)
-      for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, first + j); entry; ++entry)
-        if (entry.row() >= first && entry.row() < first + size) diagonal_block(entry.row() - first, j) = entry.value();
+    for (int j = 0; j < size; ++j) {
+      // The block's rows of column first + j: a run found by bisection (rows are sorted).
+      const int* rows = matrix.innerIndexPtr() + matrix.outerIndexPtr()[first + j];
+      const int* rows_end = rows + (matrix.isCompressed() ? matrix.outerIndexPtr()[first + j + 1] -
+                                                                 matrix.outerIndexPtr()[first + j]
+                                                           : matrix.innerNonZeroPtr()[first + j]);
+      const double* values = matrix.valuePtr() + matrix.outerIndexPtr()[first + j];
+      for (const int* row = std::lower_bound(rows, rows_end, first); row != rows_end && *row < first + size; ++row)
+        diagonal_block(*row - first, j) = values[row - rows];
+    }
     const Eigen::LLT<Eigen::MatrixXd> cholesky(diagonal_block);
     if (cholesky.info() != Eigen::Success) {
       int expected = -1;
@@ -102,16 +111,17 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
       same_rows_[block] = same;
     }
   }
+  // One thread, or too few blocks to share: lexicographic sweeps (consecutive in memory, and
+  // the stronger smoother); else multicolour ones, each colour's blocks in parallel.
+  serial_ = omp_get_max_threads() == 1 || block_count < minimum_parallel_sweep_blocks;
+  colour_starts_.assign(1, 0);
+  blocks_by_colour_.clear();
+  if (serial_) return;
   const std::vector<int> colour = colour_blocks(matrix, block_starts_);
   const int colours = block_count > 0 ? *std::max_element(colour.begin(), colour.end()) + 1 : 0;
   colour_starts_.assign(colours + 1, 0);
   for (int c : colour) ++colour_starts_[c + 1];
   for (int c = 0; c < colours; ++c) colour_starts_[c + 1] += colour_starts_[c];
-  // Sweeps run on one thread when every colour is small or one thread is all there is: then
-  // apply_with_defect may keep the defect current as it relaxes.
-  int largest_colour = 0;
-  for (int c = 0; c < colours; ++c) largest_colour = std::max(largest_colour, colour_starts_[c + 1] - colour_starts_[c]);
-  serial_ = largest_colour < minimum_parallel_blocks || omp_get_max_threads() == 1;
   blocks_by_colour_.resize(block_count);
   std::vector<int> next(colour_starts_.begin(), colour_starts_.end() - 1);
   for (int block = 0; block < block_count; ++block) blocks_by_colour_[next[colour[block]]++] = block;
@@ -191,12 +201,27 @@ void BlockRelaxationPreconditioner::relax_updating(int block, Eigen::VectorXd& d
     for (int k = starts[first + j]; k < starts[first + j + 1]; ++k) defect[rows[k]] -= values[k] * change[j];
 }
 
-void BlockRelaxationPreconditioner::sweep(int first_colour, int last_colour, const Eigen::VectorXd& residual,
-                                           Eigen::VectorXd& result) const {
-  const int step = last_colour >= first_colour ? 1 : -1;
-  for (int c = first_colour; c != last_colour; c += step) {
-    const int blocks = colour_starts_[c + 1] - colour_starts_[c];
-#pragma omp parallel for schedule(static) if (blocks >= minimum_parallel_blocks)
+void BlockRelaxationPreconditioner::sweep_forward(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
+  if (serial_) {
+    for (int block = 0; block < block_count(); ++block) relax(block, residual, result);
+    return;
+  }
+  for (int c = 0; c < colour_count(); ++c) {
+#pragma omp parallel for schedule(static)
+    for (int k = colour_starts_[c]; k < colour_starts_[c + 1]; ++k) relax(blocks_by_colour_[k], residual, result);
+  }
+}
+
+void BlockRelaxationPreconditioner::sweep_backward(bool after_forward, const Eigen::VectorXd& residual,
+                                                   Eigen::VectorXd& result) const {
+  // Right after a forward sweep, the blocks it relaxed last (the last block; in colour order
+  // the whole last colour) saw their final neighbours: relaxing them again changes nothing.
+  if (serial_) {
+    for (int block = block_count() - 1 - (after_forward ? 1 : 0); block >= 0; --block) relax(block, residual, result);
+    return;
+  }
+  for (int c = colour_count() - 1 - (after_forward ? 1 : 0); c >= 0; --c) {
+#pragma omp parallel for schedule(static)
     for (int k = colour_starts_[c]; k < colour_starts_[c + 1]; ++k) relax(blocks_by_colour_[k], residual, result);
   }
 }
@@ -214,11 +239,8 @@ void BlockRelaxationPreconditioner::apply(const Eigen::VectorXd& residual, Eigen
     return;
   }
   result.setZero();
-  const int colours = colour_count();
-  sweep(0, colours, residual, result);
-  // The backward half: the last colour's blocks were just relaxed against their final
-  // neighbours, so relaxing them again would change nothing; it starts one colour earlier.
-  if (relaxation_ == BlockRelaxation::symmetric_gauss_seidel) sweep(colours - 2, -1, residual, result);
+  sweep_forward(residual, result);
+  if (relaxation_ == BlockRelaxation::symmetric_gauss_seidel) sweep_backward(true, residual, result);
 }
 
 bool BlockRelaxationPreconditioner::apply_with_defect(const Eigen::VectorXd& residual, Eigen::VectorXd& result,
@@ -226,13 +248,9 @@ bool BlockRelaxationPreconditioner::apply_with_defect(const Eigen::VectorXd& res
   if (relaxation_ == BlockRelaxation::jacobi || !serial_ || !matrix_->isCompressed()) return false;
   result.setZero(residual.size());
   defect = residual;
-  const int colours = colour_count();
-  for (int c = 0; c < colours; ++c)
-    for (int k = colour_starts_[c]; k < colour_starts_[c + 1]; ++k) relax_updating(blocks_by_colour_[k], defect, result);
+  for (int block = 0; block < block_count(); ++block) relax_updating(block, defect, result);
   if (relaxation_ == BlockRelaxation::symmetric_gauss_seidel)
-    for (int c = colours - 2; c >= 0; --c)
-      for (int k = colour_starts_[c + 1] - 1; k >= colour_starts_[c]; --k)
-        relax_updating(blocks_by_colour_[k], defect, result);
+    for (int block = block_count() - 2; block >= 0; --block) relax_updating(block, defect, result);
   return true;
 }
 
@@ -243,7 +261,7 @@ void BlockRelaxationPreconditioner::apply_transpose(const Eigen::VectorXd& resid
     return;
   }
   result.setZero(residual.size());
-  sweep(colour_count() - 1, -1, residual, result);
+  sweep_backward(false, residual, result);
 }
 
 }  // namespace altfem

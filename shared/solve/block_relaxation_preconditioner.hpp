@@ -8,9 +8,10 @@
 //                         of a symmetric V-cycle.
 //   symmetric_gauss_seidel  M = (D + L) D⁻¹ (D + Lᵀ)  a forward and a backward sweep;
 //                         symmetric positive definite when A is, so PCG may use it alone.
-// The sweeps go in a multicolour order: the blocks are coloured greedily so that no two blocks
-// of a colour are coupled by A, a sweep visits the colours in turn and the blocks of one colour
-// in parallel (Saad 2003, §12.4).
+// On one thread, or with too few blocks to share, the sweeps go in the blocks' order
+// (lexicographic); else in a multicolour order: the blocks are coloured greedily so that no
+// two blocks of a colour are coupled by A, a sweep visits the colours in turn and the blocks of
+// one colour in parallel (Saad 2003, §12.4).
 // Where block Jacobi (D alone) ignores the coupling of neighbouring blocks, a sweep passes it
 // on: as the smoother of a vertex-space level it damps the errors that vary from vertex to
 // vertex without the damping factor Jacobi needs.
@@ -41,11 +42,16 @@ public:
   bool apply_with_defect(const Eigen::VectorXd& residual, Eigen::VectorXd& result,
                          Eigen::VectorXd& defect) const override;
 
+  /// The colours of the multicolour sweeps; 0 when they run on one thread in lexicographic
+  /// order (one OpenMP thread, or fewer blocks than are worth sharing).
   int colour_count() const { return static_cast<int>(colour_starts_.size()) - 1; }
 
 private:
-  // Relaxes the blocks of colours [first, last) (backwards when last < first) against the current x.
-  void sweep(int first_colour, int last_colour, const Eigen::VectorXd& residual, Eigen::VectorXd& result) const;
+  // One sweep over all blocks, forward or backward: lexicographic on one thread (serial_),
+  // else colour after colour. after_forward: skip what a forward sweep relaxed last.
+  void sweep_forward(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const;
+  void sweep_backward(bool after_forward, const Eigen::VectorXd& residual, Eigen::VectorXd& result) const;
+  int block_count() const { return static_cast<int>(block_starts_.size()) - 1; }
   // δ = D_b⁻¹ d_b, x_b += δ, d −= A e_b δ: block b relaxed against the defect d = r − A x,
   // which stays current (one thread only: two blocks of a colour may share a neighbour).
   void relax_updating(int block, Eigen::VectorXd& defect, Eigen::VectorXd& result) const;
@@ -57,7 +63,7 @@ private:
   const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   std::vector<double> inverses_;       // D_b⁻¹, column-major, one after another
   std::vector<long> inverse_offsets_;  // #blocks + 1
-  bool serial_ = true;                 // the sweeps run on one thread (see apply_with_defect)
+  bool serial_ = true;                 // lexicographic sweeps on one thread (see apply_with_defect)
   std::vector<char> same_rows_;        // per block: its columns have identical row indices
   std::vector<int> blocks_by_colour_;  // the blocks, colour after colour
   std::vector<int> colour_starts_;     // #colours + 1 offsets into blocks_by_colour_

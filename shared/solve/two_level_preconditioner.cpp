@@ -5,6 +5,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/solve/cholmod_solver.hpp"
+#include "shared/solve/galerkin_product.hpp"
 #include "shared/solve/krylov.hpp"
 
 namespace altfem {
@@ -50,7 +51,7 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
 
   start = std::chrono::steady_clock::now();
   Eigen::SparseMatrix<double>& coarse = coarse_matrix_;
-  coarse = restriction_ * (matrix * prolongation_);
+  coarse = galerkin_product(matrix, prolongation_, restriction_);
   // A coarse function P e_j that is zero (a vertex of no element) has a zero row: shift it by
   // the largest diagonal entry so that the kernel is always lifted.
   const Eigen::VectorXd diagonal = coarse.diagonal();

@@ -1,9 +1,11 @@
 // BlockRelaxationPreconditioner: Jacobi inverts the block diagonal exactly; a Gauss–Seidel
 // sweep's apply_transpose is its exact transpose; the symmetric sweep is symmetric positive
-// definite; the colouring never puts coupled blocks together (2 colours on a chain); iterating
-// x ← x + M⁻¹(b − Ax) converges on an SPD matrix (Gauss–Seidel's classic guarantee); and a
-// block that is not positive definite is named.
+// definite, in the blocks' order and in colours (2 on a chain, whose multicolour sweeps keep
+// that algebra); iterating x ← x + M⁻¹(b − Ax) converges on an SPD matrix (Gauss–Seidel's
+// classic guarantee); and a block that is not positive definite is named.
 #include <gtest/gtest.h>
+
+#include <omp.h>
 
 #include <Eigen/Dense>
 
@@ -91,10 +93,8 @@ TEST(BlockRelaxation, SweepsThatKeepTheDefectMatchTheOnesThatDoNot) {
   EXPECT_FALSE(jacobi.apply_with_defect(Eigen::VectorXd::Ones(matrix.rows()), result, defect));
 }
 
-TEST(BlockRelaxation, ColoursAChainOfBlocksWithTwoColours) {
-  // A tridiagonal chain of 2 × 2 blocks: neighbours alternate, so two colours suffice and
-  // one would couple blocks of one colour.
-  const int blocks = 10;
+// A tridiagonal chain of 2 × 2 blocks, long enough to be swept in parallel (multicolour).
+Eigen::SparseMatrix<double> block_chain(int blocks) {
   std::vector<Eigen::Triplet<double>> entries;
   for (int b = 0; b < blocks; ++b)
     for (int i = 0; i < 2; ++i) {
@@ -107,14 +107,47 @@ TEST(BlockRelaxation, ColoursAChainOfBlocksWithTwoColours) {
     }
   Eigen::SparseMatrix<double> chain(2 * blocks, 2 * blocks);
   chain.setFromTriplets(entries.begin(), entries.end());
-  BlockRelaxationPreconditioner sweep(node_blocks(chain.rows(), 2), BlockRelaxation::gauss_seidel);
-  sweep.compute(chain);
-  EXPECT_EQ(sweep.colour_count(), 2);
-  // The 3-D grid's nodes: the 7-point stencil is bipartite too.
-  const Eigen::SparseMatrix<double> laplacian = testing::elasticity_like_laplacian(grid);
-  BlockRelaxationPreconditioner grid_sweep(node_blocks(laplacian.rows(), 3), BlockRelaxation::gauss_seidel);
-  grid_sweep.compute(laplacian);
-  EXPECT_EQ(grid_sweep.colour_count(), 2);
+  return chain;
+}
+
+// Runs `body` with two OpenMP threads, then restores the previous count.
+template <class Body>
+void with_two_threads(Body body) {
+  const int previous = omp_get_max_threads();
+  omp_set_num_threads(2);
+  body();
+  omp_set_num_threads(previous);
+}
+
+TEST(BlockRelaxation, SweepsInColoursWhenThereAreThreadsAndBlocksToShare) {
+  with_two_threads([] {
+    // Neighbours alternate along a chain: two colours suffice, and one would couple blocks.
+    const Eigen::SparseMatrix<double> chain = block_chain(10000);
+    BlockRelaxationPreconditioner sweep(node_blocks(chain.rows(), 2), BlockRelaxation::gauss_seidel);
+    sweep.compute(chain);
+    EXPECT_EQ(sweep.colour_count(), 2);
+    // The multicolour sweeps keep their algebra: the backward one is the forward one's transpose,
+    // the symmetric one symmetric positive definite.
+    const Eigen::VectorXd x = test::random_vector(chain.rows(), 1), y = test::random_vector(chain.rows(), 2);
+    Eigen::VectorXd forward, backward;
+    sweep.apply(x, forward);
+    sweep.apply_transpose(y, backward);
+    EXPECT_NEAR(y.dot(forward), backward.dot(x), 1e-12 * y.norm() * forward.norm());
+    Eigen::VectorXd defect;
+    EXPECT_FALSE(sweep.apply_with_defect(x, forward, defect));  // two threads may share a neighbour
+    BlockRelaxationPreconditioner symmetric(node_blocks(chain.rows(), 2), BlockRelaxation::symmetric_gauss_seidel);
+    symmetric.compute(chain);
+    Eigen::VectorXd applied_x, applied_y;
+    symmetric.apply(x, applied_x);
+    symmetric.apply(y, applied_y);
+    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
+    EXPECT_GT(x.dot(applied_x), 0.0);
+  });
+  // Few blocks: one thread, in the blocks' own order.
+  const Eigen::SparseMatrix<double> short_chain = block_chain(10);
+  BlockRelaxationPreconditioner sweep(node_blocks(short_chain.rows(), 2), BlockRelaxation::gauss_seidel);
+  sweep.compute(short_chain);
+  EXPECT_EQ(sweep.colour_count(), 0);
 }
 
 TEST(BlockRelaxation, StationaryIterationConvergesOnAnSpdMatrix) {
