@@ -20,6 +20,21 @@ constexpr int minimum_parallel_blocks = 256;
 // team once per colour (~20 colours on a vertex level), each colour a few hundred blocks.
 constexpr int minimum_parallel_sweep_blocks = 8192;
 
+// Scratch for one block's values, on the stack up to 64 of them (a DG element block of
+// degree 3 has 60), else on the heap.
+class BlockScratch {
+public:
+  explicit BlockScratch(int size) {
+    if (size > inline_size) heap_.resize(size);
+  }
+  double* data() { return heap_.size() > 0 ? heap_.data() : inline_; }
+
+private:
+  static constexpr int inline_size = 64;
+  double inline_[inline_size];
+  Eigen::VectorXd heap_;
+};
+
 // Greedy colouring of the block graph (blocks coupled by a nonzero of A are neighbours):
 // each block, in order, takes the smallest colour none of its earlier neighbours has.
 // Returns the colour of every block.
@@ -129,15 +144,7 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
 
 void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& residual,
                                                     Eigen::VectorXd& result) const {
-  constexpr int largest_inline = 64;  // DG blocks: 3 × 20 functions at k = 3
   const int first = block_starts_[block], size = block_starts_[block + 1] - first;
-  double defect_storage[largest_inline];
-  Eigen::VectorXd heap_defect;
-  double* defect = defect_storage;
-  if (size > largest_inline) {
-    heap_defect.resize(size);
-    defect = heap_defect.data();
-  }
   // (r − A x)_b from A's columns of the block (A = Aᵀ: column j is row j).
   if (size == 3 && same_rows_[block]) {
     // A vertex's three components: their columns share their rows, so x of each row is read
@@ -159,6 +166,8 @@ void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& resi
     result.segment<3>(first) += Eigen::Map<const Eigen::Matrix3d>(inverses_.data() + inverse_offsets_[block]) * sums;
     return;
   }
+  BlockScratch scratch(size);
+  double* defect = scratch.data();
   for (int j = 0; j < size; ++j) {
     double sum = residual[first + j];
     for (Eigen::SparseMatrix<double>::InnerIterator entry(*matrix_, first + j); entry; ++entry)
@@ -186,14 +195,8 @@ void BlockRelaxationPreconditioner::relax_updating(int block, Eigen::VectorXd& d
       defect[rows[begin + k]] -= column0[k] * change[0] + column1[k] * change[1] + column2[k] * change[2];
     return;
   }
-  constexpr int largest_inline = 64;
-  double change_storage[largest_inline];
-  Eigen::VectorXd heap_change;
-  double* change = change_storage;
-  if (size > largest_inline) {
-    heap_change.resize(size);
-    change = heap_change.data();
-  }
+  BlockScratch scratch(size);
+  double* change = scratch.data();
   const Eigen::Map<const Eigen::MatrixXd> inverse(inverses_.data() + inverse_offsets_[block], size, size);
   Eigen::Map<Eigen::VectorXd>(change, size).noalias() = inverse * defect.segment(first, size);
   result.segment(first, size) += Eigen::Map<const Eigen::VectorXd>(change, size);

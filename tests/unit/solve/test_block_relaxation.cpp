@@ -12,6 +12,7 @@
 #include "shared/common/error.hpp"
 #include "shared/solve/block_relaxation_preconditioner.hpp"
 #include "tests/unit/random_vectors.hpp"
+#include "tests/unit/solve/preconditioner_checks.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
 
 namespace altfem {
@@ -60,14 +61,7 @@ TEST(BlockRelaxation, SymmetricSweepIsSymmetricPositiveDefinite) {
   BlockRelaxationPreconditioner sweep(node_blocks(matrix.rows(), 3), BlockRelaxation::symmetric_gauss_seidel);
   sweep.compute(matrix);
   EXPECT_TRUE(sweep.symmetric());
-  Eigen::VectorXd applied_x, applied_y;
-  for (unsigned seed = 1; seed <= 4; ++seed) {
-    const Eigen::VectorXd x = test::random_vector(matrix.rows(), seed), y = test::random_vector(matrix.rows(), 50 + seed);
-    sweep.apply(x, applied_x);
-    sweep.apply(y, applied_y);
-    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
-    EXPECT_GT(x.dot(applied_x), 0.0);
-  }
+  testing::expect_symmetric_positive_definite(sweep, matrix.rows());
 }
 
 TEST(BlockRelaxation, SweepsThatKeepTheDefectMatchTheOnesThatDoNot) {
@@ -137,11 +131,7 @@ TEST(BlockRelaxation, SweepsInColoursWhenThereAreThreadsAndBlocksToShare) {
     EXPECT_FALSE(sweep.apply_with_defect(x, forward, defect));  // two threads may share a neighbour
     BlockRelaxationPreconditioner symmetric(node_blocks(chain.rows(), 2), BlockRelaxation::symmetric_gauss_seidel);
     symmetric.compute(chain);
-    Eigen::VectorXd applied_x, applied_y;
-    symmetric.apply(x, applied_x);
-    symmetric.apply(y, applied_y);
-    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
-    EXPECT_GT(x.dot(applied_x), 0.0);
+    testing::expect_symmetric_positive_definite(symmetric, chain.rows(), 2);
   });
   // Few blocks: one thread, in the blocks' own order.
   const Eigen::SparseMatrix<double> short_chain = block_chain(10);

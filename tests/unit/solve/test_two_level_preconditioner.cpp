@@ -8,6 +8,7 @@
 #include "shared/solve/block_relaxation_preconditioner.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
 #include "tests/unit/random_vectors.hpp"
+#include "tests/unit/solve/preconditioner_checks.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
 
 namespace altfem {
@@ -44,14 +45,7 @@ TEST_P(TwoLevelCycles, IsSymmetricPositiveDefinite) {
   // Jacobi on this matrix has λ_max(D⁻¹A) < 2: ω = 0.7 makes the V-cycle's smoother convergent.
   TwoLevelPreconditioner preconditioner = two_level(GetParam(), 0.7);
   preconditioner.compute(matrix);
-  Eigen::VectorXd applied_x, applied_y;
-  for (unsigned seed = 1; seed <= 5; ++seed) {
-    const Eigen::VectorXd x = test::random_vector(matrix.rows(), seed), y = test::random_vector(matrix.rows(), 100 + seed);
-    preconditioner.apply(x, applied_x);
-    preconditioner.apply(y, applied_y);
-    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
-    EXPECT_GT(x.dot(applied_x), 0.0);
-  }
+  testing::expect_symmetric_positive_definite(preconditioner, matrix.rows());
 }
 
 TEST_P(TwoLevelCycles, CoarseCorrectionIsExactOnTheCoarseSpace) {
@@ -102,14 +96,7 @@ TEST(TwoLevelPreconditioner, AVCycleAsCoarseSolveIsSymmetricPositiveDefinite) {
       TwoLevelCycle::multiplicative, 1.0, std::move(coarse));
   three_levels.compute(matrix);
   EXPECT_EQ(three_levels.coarse_statistics().factorisations, 0);  // the V-cycle, not CHOLMOD, below
-  Eigen::VectorXd applied_x, applied_y;
-  for (unsigned seed = 1; seed <= 5; ++seed) {
-    const Eigen::VectorXd x = test::random_vector(matrix.rows(), seed), y = test::random_vector(matrix.rows(), 100 + seed);
-    three_levels.apply(x, applied_x);
-    three_levels.apply(y, applied_y);
-    EXPECT_NEAR(y.dot(applied_x), x.dot(applied_y), 1e-12 * x.norm() * applied_y.norm());
-    EXPECT_GT(x.dot(applied_x), 0.0);
-  }
+  testing::expect_symmetric_positive_definite(three_levels, matrix.rows());
 }
 
 INSTANTIATE_TEST_SUITE_P(TwoLevelPreconditioner, TwoLevelCycles,
