@@ -101,16 +101,6 @@ IntegratorOptions integrator_options(const Scene& scene) {
   return options;
 }
 
-LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization) {
-  LinearSolverOptions options;
-  options.kind = scene.solver.linear;
-  options.preconditioner = scene.solver.preconditioner;
-  options.custom_preconditioner = discretization.preconditioner_factory();
-  options.tolerance = scene.solver.linear_tolerance;
-  options.max_iterations = scene.solver.linear_max_iterations;
-  return options;
-}
-
 // The largest von Mises stress of the elements' mean Cauchy stresses (#elements × 9);
 // 0 when there are none.
 Eigen::VectorXd von_mises(const Eigen::MatrixXd& stresses) {
@@ -303,6 +293,16 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   write_json_file(output_directory / "summary.json", summary);
   if (status != "ok") throw NumericalError(status.substr(std::string("error: ").size()));
   return summary;
+}
+
+LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization) {
+  LinearSolverOptions options;
+  options.kind = scene.solver.linear;
+  options.preconditioner = scene.solver.preconditioner;
+  options.custom_preconditioner = discretization.preconditioner_factory();
+  options.tolerance = scene.solver.linear_tolerance;
+  options.max_iterations = scene.solver.linear_max_iterations;
+  return options;
 }
 
 }  // namespace altfem

@@ -6,6 +6,7 @@
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/method_instance.hpp"
+#include "shared/solve/linear_solver.hpp"
 
 namespace altfem {
 
@@ -21,5 +22,9 @@ namespace altfem {
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
                               const MethodFactory& factory, const std::filesystem::path& output_directory,
                               double setup_seconds = 0);
+
+/// The linear solver the scene's `solver` block chooses (kind, its preconditioner — the
+/// discretization's own when it has one — tolerance and iteration limit).
+LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization);
 
 }  // namespace altfem

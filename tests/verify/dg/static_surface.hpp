@@ -1,6 +1,6 @@
 #pragma once
 // A test helper: the static equilibrium of a scene (with --set style overrides) by one
-// method, as its coefficients (static_run) or as the displacement of the method's
+// method and the scene's linear solver, as its coefficients (static_run) or as the displacement of the method's
 // embedded surface vertices (static_surface).
 #include <filesystem>
 #include <memory>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "shared/scene/scene_override.hpp"
+#include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/method_instance.hpp"
 #include "shared/solve/time_integrator.hpp"
 
@@ -38,7 +39,7 @@ inline StaticRun static_run(const std::filesystem::path& scene_file, const Metho
   run.geometry = std::make_unique<SceneGeometry>(load_scene_geometry(*run.scene));
   run.method = factory(*run.scene, *run.geometry);
   const Discretization& discretization = run.method->discretization();
-  const auto solver = make_linear_solver({});
+  const auto solver = make_linear_solver(linear_solver_options(*run.scene, discretization));
   IntegratorOptions options;
   options.kind = IntegrationScheme::static_equilibrium;
   options.gravity = run.scene->gravity;
