@@ -74,10 +74,10 @@ PreconditionerFactory block_jacobi_factory(std::vector<std::vector<int>> element
 
 PreconditionerFactory two_level_factory(std::vector<std::vector<int>> element_dofs,
                                         Eigen::SparseMatrix<double> prolongation) {
-  return [starts = element_starts(element_dofs), prolongation = std::move(prolongation)]() -> std::unique_ptr<Preconditioner> {
-    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts),
-                                                    prolongation, TwoLevelCycle::multiplicative,
-                                                    two_level_smoother_damping);
+  return [starts = element_starts(element_dofs),
+          prolongation = std::move(prolongation)]() -> std::unique_ptr<Preconditioner> {
+    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts), prolongation,
+                                                    TwoLevelCycle::multiplicative, two_level_smoother_damping);
   };
 }
 
@@ -91,12 +91,14 @@ PreconditionerFactory multilevel_factory(std::vector<std::vector<int>> element_d
     for (auto level = grid_prolongations.rbegin(); level != grid_prolongations.rend(); ++level) {
       std::vector<int> vertex_blocks(static_cast<size_t>(level->rows() / 3 + 1));
       for (size_t v = 0; v < vertex_blocks.size(); ++v) vertex_blocks[v] = 3 * static_cast<int>(v);
-      coarse = std::make_unique<TwoLevelPreconditioner>(
-          std::make_unique<BlockRelaxationPreconditioner>(std::move(vertex_blocks), BlockRelaxation::symmetric_gauss_seidel),
-          *level, TwoLevelCycle::multiplicative, 1.0, std::move(coarse));
+      auto smoother = std::make_unique<BlockRelaxationPreconditioner>(std::move(vertex_blocks),
+                                                                      BlockRelaxation::symmetric_gauss_seidel);
+      coarse = std::make_unique<TwoLevelPreconditioner>(std::move(smoother), *level, TwoLevelCycle::multiplicative,
+                                                        1.0, std::move(coarse));
     }
-    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts), vertex_prolongation, TwoLevelCycle::multiplicative,
-                                                    two_level_smoother_damping, std::move(coarse));
+    return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts), vertex_prolongation,
+                                                    TwoLevelCycle::multiplicative, two_level_smoother_damping,
+                                                    std::move(coarse));
   };
 }
 

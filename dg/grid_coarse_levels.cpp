@@ -24,7 +24,9 @@ GridLevel interpolate_from_grid(const Eigen::MatrixXd& points, const Eigen::Vect
     cells[a] = std::max(1, static_cast<int>(std::ceil(extent - 1e-9)));
   }
   const Eigen::Array3i node_counts = cells + 1;
-  const auto node_index = [&](const Eigen::Array3i& n) { return n[0] + node_counts[0] * (n[1] + node_counts[1] * n[2]); };
+  const auto node_index = [&](const Eigen::Array3i& n) {
+    return n[0] + node_counts[0] * (n[1] + node_counts[1] * n[2]);
+  };
 
   std::vector<Eigen::Triplet<double>> weights;  // (point, grid node, weight)
   weights.reserve(static_cast<size_t>(8 * point_count));
@@ -99,7 +101,8 @@ std::vector<Eigen::SparseMatrix<double>> grid_coarse_levels(const PolyhedralMesh
   if (sizes.empty()) return {};
   std::nth_element(sizes.begin(), sizes.begin() + sizes.size() / 2, sizes.end());
   Eigen::MatrixXd points(static_cast<Eigen::Index>(space.nodes.size()), 3);
-  for (size_t v = 0; v < space.nodes.size(); ++v) points.row(static_cast<Eigen::Index>(v)) = mesh.nodes.row(space.nodes[v]);
+  for (size_t v = 0; v < space.nodes.size(); ++v)
+    points.row(static_cast<Eigen::Index>(v)) = mesh.nodes.row(space.nodes[v]);
   return grid_coarse_levels(points, 2 * sizes[sizes.size() / 2], coarsest_grid_nodes);
 }
 
