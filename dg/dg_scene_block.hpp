@@ -42,9 +42,10 @@ enum class Embedding { element, stitched, mls };
 inline constexpr std::array<std::string_view, 3> embedding_names{"element", "stitched", "mls"};
 
 /// The preconditioner of iterative linear solvers (solver/linear pcg, minres,
-/// conjugate_residual): block Jacobi (one block per element) or the two-level V-cycle of that
-/// smoother with the vertex coarse space (dg/vertex_coarse_space.hpp), whose iterations stay
-/// bounded under refinement.
+/// conjugate_residual): block Jacobi (one block per element), the two-level V-cycle of that
+/// smoother with the vertex coarse space (dg/vertex_coarse_space.hpp), or the multilevel one
+/// whose coarse solve is a V-cycle over background grids (dg/grid_coarse_levels.hpp); the
+/// last two keep the iterations bounded under refinement.
 enum class DgPreconditioner { block_jacobi, two_level, multilevel };
 inline constexpr std::array<std::string_view, 3> dg_preconditioner_names{"block_jacobi", "two_level", "multilevel"};
 

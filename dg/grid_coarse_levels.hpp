@@ -29,8 +29,9 @@ namespace altfem::dg {
 std::vector<Eigen::SparseMatrix<double>> grid_coarse_levels(const Eigen::MatrixXd& points, double finest_spacing,
                                                             int coarsest_nodes);
 
-/// At most this many nodes on the coarsest grid: its factorisation (a 27-point stencil,
-/// 3 DOFs a node) then costs well under a millisecond.
+/// At most this many nodes on the coarsest grid, factorised by CHOLMOD: on the 10³ grid of
+/// bench_dg_table1 its 6³ nodes (648 unknowns, ~140 nonzeros a row) take about 3 ms with the
+/// analysis; a 64-node limit (one more level) saved that and cost more in the iterations.
 inline constexpr int coarsest_grid_nodes = 512;
 
 /// The grid levels below `space` (the vertex coarse space of `mesh`, whose cells are

@@ -139,16 +139,19 @@ std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron,
   long stride = 7919;
   while (std::gcd(stride, candidate_count) != 1) stride += 2;
   std::vector<Eigen::Vector3d> candidates;
+  Eigen::MatrixXd monomials(exponents.rows(), 0);  // one column per candidate, kept across batches
   long visited = 0;
   for (auto batch = static_cast<size_t>(20 * exponents.rows());; batch *= 2) {
+    const size_t evaluated = candidates.size();
     for (; visited < candidate_count && candidates.size() < batch; ++visited) {
       const long index = (visited * stride) % candidate_count;
       const Eigen::Vector3d x = apex + jacobians[index / per_tet] * tet.points.row(index % per_tet).transpose();
       if (inside(x)) candidates.push_back(x);
     }
-    // Monomials about the apex scaled by the size, so every entry is O(1).
-    Eigen::MatrixXd monomials(exponents.rows(), static_cast<Eigen::Index>(candidates.size()));
-    for (size_t q = 0; q < candidates.size(); ++q) {
+    // Monomials about the apex scaled by the size, so every entry is O(1): only the new
+    // candidates' columns are evaluated.
+    monomials.conservativeResize(Eigen::NoChange, static_cast<Eigen::Index>(candidates.size()));
+    for (size_t q = evaluated; q < candidates.size(); ++q) {
       const Eigen::Vector3d x = (candidates[q] - apex) / size;
       for (Eigen::Index i = 0; i < exponents.rows(); ++i)
         monomials(i, static_cast<Eigen::Index>(q)) =

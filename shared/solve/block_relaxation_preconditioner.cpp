@@ -80,10 +80,10 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
     throw std::logic_error("block relaxation: matrix has " + std::to_string(matrix.rows()) + " rows, the blocks " +
                            std::to_string(block_starts_.back()));
   matrix_ = &matrix;
-  const int block_count = static_cast<int>(block_starts_.size()) - 1;
+  const int blocks = block_count();
   std::atomic<int> failed{-1};
 #pragma omp parallel for schedule(static)
-  for (int block = 0; block < block_count; ++block) {
+  for (int block = 0; block < blocks; ++block) {
     const int first = block_starts_[block], size = block_starts_[block + 1] - first;
     Eigen::MatrixXd diagonal_block = Eigen::MatrixXd::Zero(size, size);
     for (int j = 0; j < size; ++j) {
@@ -111,13 +111,14 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
                          ") is not positive definite");
 
   if (relaxation_ == BlockRelaxation::jacobi) return;
-  // Which blocks' columns have identical rows (relax() reads x once per row for them); a
-  // matrix with uncompressed storage takes the column-by-column path.
-  same_rows_.assign(block_count, 0);
+  // Which blocks' columns have identical rows (the relaxations of a vertex's 3 × 3 block read
+  // x, or update the defect, once per row for them); uncompressed storage takes the
+  // column-by-column path.
+  same_rows_.assign(blocks, 0);
   if (matrix.isCompressed()) {
     const int* starts = matrix.outerIndexPtr();
     const int* rows = matrix.innerIndexPtr();
-    for (int block = 0; block < block_count; ++block) {
+    for (int block = 0; block < blocks; ++block) {
       const int first = block_starts_[block];
       bool same = true;
       for (int column = first + 1; same && column < block_starts_[block + 1]; ++column)
@@ -128,18 +129,18 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
   }
   // One thread, or too few blocks to share: lexicographic sweeps (consecutive in memory, and
   // the stronger smoother); else multicolour ones, each colour's blocks in parallel.
-  serial_ = omp_get_max_threads() == 1 || block_count < minimum_parallel_sweep_blocks;
+  serial_ = omp_get_max_threads() == 1 || blocks < minimum_parallel_sweep_blocks;
   colour_starts_.assign(1, 0);
   blocks_by_colour_.clear();
   if (serial_) return;
   const std::vector<int> colour = colour_blocks(matrix, block_starts_);
-  const int colours = block_count > 0 ? *std::max_element(colour.begin(), colour.end()) + 1 : 0;
+  const int colours = blocks > 0 ? *std::max_element(colour.begin(), colour.end()) + 1 : 0;
   colour_starts_.assign(colours + 1, 0);
   for (int c : colour) ++colour_starts_[c + 1];
   for (int c = 0; c < colours; ++c) colour_starts_[c + 1] += colour_starts_[c];
-  blocks_by_colour_.resize(block_count);
+  blocks_by_colour_.resize(blocks);
   std::vector<int> next(colour_starts_.begin(), colour_starts_.end() - 1);
-  for (int block = 0; block < block_count; ++block) blocks_by_colour_[next[colour[block]]++] = block;
+  for (int block = 0; block < blocks; ++block) blocks_by_colour_[next[colour[block]]++] = block;
 }
 
 void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& residual,
@@ -232,9 +233,9 @@ void BlockRelaxationPreconditioner::sweep_backward(bool after_forward, const Eig
 void BlockRelaxationPreconditioner::apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
   result.resize(residual.size());
   if (relaxation_ == BlockRelaxation::jacobi) {
-    const int block_count = static_cast<int>(block_starts_.size()) - 1;
-#pragma omp parallel for schedule(static) if (block_count >= minimum_parallel_blocks)
-    for (int block = 0; block < block_count; ++block) {
+    const int blocks = block_count();
+#pragma omp parallel for schedule(static) if (blocks >= minimum_parallel_blocks)
+    for (int block = 0; block < blocks; ++block) {
       const int first = block_starts_[block], size = block_starts_[block + 1] - first;
       const Eigen::Map<const Eigen::MatrixXd> inverse(inverses_.data() + inverse_offsets_[block], size, size);
       result.segment(first, size).noalias() = inverse * residual.segment(first, size);

@@ -29,16 +29,16 @@ public:
   /// [block_starts[b], block_starts[b + 1]).
   BlockRelaxationPreconditioner(std::vector<int> block_starts, BlockRelaxation relaxation);
 
-  /// Inverts every diagonal block and (Gauss–Seidel) colours the blocks by A's pattern. `matrix` must stay
-  /// alive and unchanged until the next compute(). Throws NumericalError naming the first
-  /// block that is not positive definite.
+  /// Inverts every diagonal block and, for Gauss–Seidel on several threads, colours the blocks
+  /// by A's pattern. `matrix` must stay alive and unchanged until the next compute(). Throws
+  /// NumericalError naming the first block that is not positive definite.
   void compute(const Eigen::SparseMatrix<double>& matrix) override;
   void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
   void apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
   bool symmetric() const override { return relaxation_ != BlockRelaxation::gauss_seidel; }
-  /// The Gauss–Seidel sweeps when they run on one thread (every colour smaller than the
-  /// parallel threshold, or one OpenMP thread): each relaxation updates the defect of its
-  /// neighbours from its own columns, so the defect comes at no extra pass over A.
+  /// The Gauss–Seidel sweeps when they run on one thread (lexicographic: colour_count() 0):
+  /// each relaxation updates the defect of its neighbours from its own columns, so the defect
+  /// comes at no extra pass over A. False for Jacobi and for multicolour sweeps.
   bool apply_with_defect(const Eigen::VectorXd& residual, Eigen::VectorXd& result,
                          Eigen::VectorXd& defect) const override;
 

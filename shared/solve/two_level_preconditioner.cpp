@@ -30,8 +30,8 @@ TwoLevelPreconditioner::TwoLevelPreconditioner(std::unique_ptr<Preconditioner> s
       restriction_(prolongation_.transpose()),
       cycle_(cycle),
       damping_(damping),
-      coarse_solver_(make_cholmod_solver(CholmodFactorisation::supernodal_llt)),
       coarse_preconditioner_(std::move(coarse)) {
+  if (!coarse_preconditioner_) coarse_solver_ = make_cholmod_solver(CholmodFactorisation::supernodal_llt);
   if (cycle_ == TwoLevelCycle::additive && !smoother_->symmetric())
     throw std::logic_error("two-level preconditioner: the additive cycle needs a symmetric smoother");
   if (coarse_preconditioner_ && !coarse_preconditioner_->symmetric())
@@ -75,6 +75,11 @@ void TwoLevelPreconditioner::compute(const Eigen::SparseMatrix<double>& matrix) 
   coarse_correction_.resize(prolongation_.cols());
   fine_residual_.resize(prolongation_.rows());
   smoothed_.resize(prolongation_.rows());
+}
+
+const LinearSolverStatistics& TwoLevelPreconditioner::coarse_statistics() const {
+  static const LinearSolverStatistics none;
+  return coarse_solver_ ? coarse_solver_->statistics() : none;
 }
 
 void TwoLevelPreconditioner::solve_coarse() const {

@@ -37,10 +37,10 @@ public:
                          TwoLevelCycle cycle, double damping = 1, std::unique_ptr<Preconditioner> coarse = nullptr);
   ~TwoLevelPreconditioner() override;
 
-  /// Computes S, forms A_c = Pᵀ A P and factorises it (or computes M_c from it). The multiplicative cycle applies
-  /// `matrix` in apply(): it must stay alive and unchanged until the next compute() (the
-  /// iterative solvers keep their own copy). Throws NumericalError when A_c is not positive
-  /// definite (an indefinite A).
+  /// Computes S, forms A_c = Pᵀ A P and factorises it (or computes M_c from it). The
+  /// multiplicative cycle applies `matrix` in apply(): it must stay alive and unchanged until
+  /// the next compute() (the iterative solvers keep their own copy). Throws NumericalError
+  /// when A_c is not positive definite (an indefinite A).
   void compute(const Eigen::SparseMatrix<double>& matrix) override;
   void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
 
@@ -48,9 +48,9 @@ public:
   /// Wall seconds of the last compute()'s smoother set-up and Galerkin product.
   double smoother_seconds() const { return smoother_seconds_; }
   double galerkin_seconds() const { return galerkin_seconds_; }
-  /// The coarse CHOLMOD solver's analyses, factorisations and solves so far (all zero with
-  /// a coarse preconditioner).
-  const LinearSolverStatistics& coarse_statistics() const { return coarse_solver_->statistics(); }
+  /// The coarse CHOLMOD solver's analyses, factorisations and solves so far, and its factor's
+  /// size and flops (all zero with a coarse preconditioner, which replaces it).
+  const LinearSolverStatistics& coarse_statistics() const;
 
 private:
   void solve_coarse() const;  // coarse_correction_ = A_c⁻¹ (or M_c⁻¹) coarse_residual_
@@ -61,8 +61,8 @@ private:
   double damping_;
   const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   Eigen::SparseMatrix<double> coarse_matrix_;  // A_c: a coarse preconditioner's cycle applies it
-  std::unique_ptr<LinearSolver> coarse_solver_;
   std::unique_ptr<Preconditioner> coarse_preconditioner_;
+  std::unique_ptr<LinearSolver> coarse_solver_;  // CHOLMOD, only without a coarse preconditioner
   double smoother_seconds_ = 0, galerkin_seconds_ = 0;
   // Scratch of apply(), sized by compute(): apply() must not allocate.
   mutable Eigen::VectorXd coarse_residual_, coarse_correction_, fine_residual_, smoothed_;
