@@ -58,6 +58,7 @@ public:
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override { return weak_condition_load_(time); }
   const std::vector<int>& constrained_dofs() const override { return strong_.dofs; }
+  const std::vector<ConstraintHolders>& constraint_holders() const override { return strong_.holders; }
   Eigen::VectorXd prescribed_displacement(double time) const override {
     return strong_.dofs.empty() ? Eigen::VectorXd() : strong_.prescribed(time);
   }

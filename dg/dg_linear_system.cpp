@@ -113,9 +113,15 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     // The constrained and free combinations of the monomials as the cell's functions.
     strong_cells_.push_back(strong_cell(c, bases_[c], faces_, strong_faces[c]));
     const StrongCell& strong = strong_cells_.back();
+    // Its constrained coefficients take their values from every condition on its strong faces.
+    ConditionSet conditions = 0;
+    for (int f : strong_faces[c]) conditions |= condition_bit(faces_[f].condition);
     for (int j = 0; j < strong.constrained; ++j)
       for (int i = 0; i < 3; ++i)
-        if (strong.components[i]) constrained_dofs_.push_back(3 * (offsets_[c] + j) + i);
+        if (strong.components[i]) {
+          constrained_dofs_.push_back(3 * (offsets_[c] + j) + i);
+          constraint_holders_.push_back({conditions, conditions});
+        }
     bases_[c].combine(strong.combination);
   }
   std::vector<std::array<int, 2>> couplings;

@@ -15,6 +15,7 @@
 #include "dg/monomial_basis.hpp"
 #include "shared/geometry/polyhedron.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
+#include "shared/solve/dirichlet_dofs.hpp"
 
 namespace altfem::dg {
 
@@ -152,6 +153,8 @@ public:
   /// data g = data(condition, x) (in the same order): the constrained coefficients of the
   /// prescribed components of each cell with strong faces (dg/strong_conditions.hpp).
   const std::vector<int>& constrained_dofs() const { return constrained_dofs_; }
+  /// Per constrained DOF, the conditions of its cell's strong faces.
+  const std::vector<ConstraintHolders>& constraint_holders() const { return constraint_holders_; }
   Eigen::VectorXd constrained_values(const ConditionData& data) const;
   /// (∫ |u_h − u|² dV)^½ for coefficients u_h and a field u, by a strength 2k + 4 rule.
   double l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const;
@@ -175,6 +178,7 @@ private:
   std::vector<MonomialBasis> bases_;
   std::vector<StrongCell> strong_cells_;  // the cells with strongly constrained faces
   std::vector<int> constrained_dofs_;
+  std::vector<ConstraintHolders> constraint_holders_;
   std::vector<double> volumes_;
   std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
   std::vector<int> cell_classes_;           // per cell, its class of translates

@@ -7,6 +7,7 @@
 #include "dg/dg_discretization.hpp"
 #include "dg/dg_linear_system.hpp"
 #include "dg/dg_scene_block.hpp"
+#include "dg/dg_transfer.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
@@ -16,6 +17,7 @@
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/material/material.hpp"
+#include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/mls_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
 #include "shared/simulation/stitched_embedding.hpp"
@@ -68,14 +70,16 @@ bool positive_definite(const DgLinearSystem& system) {
   }
 }
 
-class DgMethod final : public MethodInstance {
+class DgMethod final : public EmbeddedSurfaceMethod {
 public:
-  DgMethod(const Scene& scene, const SceneGeometry& geometry) : spec_(dg_spec(scene)), materials_(scene) {
-    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec_.mesh, geometry);
+  // On the mesh of the scene, or on a mesh an event hands it.
+  DgMethod(const Scene& scene, const SceneGeometry& geometry, const PolyhedralSceneMesh* handed)
+      : spec_(dg_spec(scene)), materials_(scene) {
+    PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
-    surface_ = std::move(built.surface);
+    surface_.surface = std::move(built.surface);
     // Surface loads act on the boundary of the domain integrated: the mesh's.
-    load_surface_ = std::move(built.load_surface);
+    surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
@@ -119,15 +123,8 @@ public:
           *system_, settings_, density_integrals(), std::move(element_dofs),
           [this](double time) { return weak_condition_load(time, true); }, moving_data());
     } else if (linear()) {
-      // The data's projection at every step, none while every motion is `fixed` (then 0).
-      DirichletDofs strong{system_->constrained_dofs(), [this](double time) -> Eigen::VectorXd {
-                             if (!moving()) return Eigen::VectorXd::Zero(system_->constrained_dofs().size());
-                             return system_->constrained_values([&](int condition, const Eigen::Vector3d& x) {
-                               return motions_[condition].displacement(x, time);
-                             });
-                           }};
       linear_ = std::make_unique<LinearDgDiscretization>(system_->stiffness(), system_->mass(), density_integrals(),
-                                                         std::move(element_dofs), external_force, std::move(strong));
+                                                         std::move(element_dofs), external_force, strong_dofs());
     }
     if (linear_) {
       linear_->use_preconditioner(std::move(preconditioner));
@@ -138,20 +135,23 @@ public:
       tabulated_ = make_tabulated_dg(*system_, materials_.pointers(),
                                      [this, lifted](double time) { return weak_condition_load(time, lifted); },
                                      std::move(preconditioner),
-                                     lifted ? moving_data() : ConditionTrajectory{});
+                                     lifted ? moving_data() : ConditionTrajectory{}, strong_dofs());
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    evaluator_ = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
-    switch (spec_.embedding) {
-      case Embedding::element: embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices); break;
+    surface_.evaluator = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
+    const ElementBasisEvaluator& evaluator = *surface_.evaluator;
+    const Eigen::MatrixXd& vertices = surface_.surface.vertices;
+    switch (spec_.embedding) {  // one of the three embeddings of §7
+      case Embedding::element: surface_.embedding = std::make_unique<BasisEmbedding>(evaluator, vertices); break;
       case Embedding::stitched:
         lagrange_ = std::make_unique<LagrangeBasisEvaluator>(volume_mesh_);
-        stitched_ = std::make_unique<StitchedEmbedding>(*evaluator_, volume_mesh_.nodes, *lagrange_, surface_.vertices);
+        surface_.embedding = std::make_unique<StitchedEmbedding>(evaluator, volume_mesh_.nodes, *lagrange_, vertices);
         break;
       case Embedding::mls:
-        mls_ = std::make_unique<MlsEmbedding>(*evaluator_, mesh_.nodes, longest_edge_at_nodes(mesh_), surface_.vertices);
+        surface_.embedding =
+            std::make_unique<MlsEmbedding>(evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_), vertices);
         break;
     }
   }
@@ -167,12 +167,6 @@ public:
   }
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }
-  const SurfaceMesh& embedded_surface() const override { return surface_; }
-  const SurfaceMesh& load_surface() const override { return load_surface_; }
-  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& u) const override {
-    return mls_ ? mls_->displacement(u) : stitched_ ? stitched_->displacement(u) : embedding_->displacement(u);
-  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return system_->interpolate(field);
   }
@@ -185,6 +179,16 @@ public:
     quadrature.elements = std::make_shared<TabulatedElements>(tabulate_dg_cells(*system_, strength, &quadrature.points));
     quadrature.strength = strength;
     return quadrature;
+  }
+  std::shared_ptr<const MethodMesh> mesh() const override {
+    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_}, .surface = surface_.surface, .load_surface = surface_.load_surface,
+                             .facts = mesh_facts_, .converted = std::nullopt};
+    if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
+    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
+  }
+  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+    const auto& before = dynamic_cast<const DgMethod&>(previous);
+    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), field);
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;
@@ -206,15 +210,8 @@ public:
               {"face_classes", system_->similarity().face_classes}}},
             {"warping", spec_.warping},
             {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
-            {"surface_vertices", surface_.vertices.rows()},
             {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
-    const BasisEmbedding* located = embedding_ ? embedding_.get() : stitched_ ? &stitched_->interpolation() : nullptr;
-    if (located) {
-      facts["surface_vertices_outside_mesh"] = located->outside_count();
-      facts["max_outside_distance"] = located->max_outside_distance();
-    } else {
-      facts["mls_max_samples_per_vertex"] = mls_->max_samples_per_point();
-    }
+    facts.update(surface_.facts());
     return facts;
   }
 
@@ -240,6 +237,18 @@ private:
       return two_level_factory(element_dofs, std::move(space.prolongation));
     std::vector<Eigen::SparseMatrix<double>> grid_levels = grid_coarse_levels(mesh_, *system_, space);
     return multilevel_factory(element_dofs, std::move(space.prolongation), std::move(grid_levels));
+  }
+
+  // The coefficients the strongly imposed conditions fix (none with weak conditions) and
+  // the data's projection at every step, none while every motion is `fixed` (then 0).
+  DirichletDofs strong_dofs() const {
+    return {system_->constrained_dofs(),
+            [this](double time) -> Eigen::VectorXd {
+              if (!moving()) return Eigen::VectorXd::Zero(system_->constrained_dofs().size());
+              return system_->constrained_values(
+                  [&](int condition, const Eigen::Vector3d& x) { return motions_[condition].displacement(x, time); });
+            },
+            system_->constraint_holders()};
   }
 
   // Every material of the scene linear: the exact integration (else the tabulated one).
@@ -341,13 +350,7 @@ private:
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not
   TabulatedDg tabulated_;                           // any other
   const Discretization* discretization_ = nullptr;
-  SurfaceMesh surface_, load_surface_;
-  std::unique_ptr<MonomialBasisEvaluator> evaluator_;
-  // One of the three embeddings of §7, as spec_.embedding says.
-  std::unique_ptr<BasisEmbedding> embedding_;
-  std::unique_ptr<LagrangeBasisEvaluator> lagrange_;  // over volume_mesh_
-  std::unique_ptr<StitchedEmbedding> stitched_;
-  std::unique_ptr<MlsEmbedding> mls_;
+  std::unique_ptr<LagrangeBasisEvaluator> lagrange_;  // over volume_mesh_: the stitched embedding's interpolation
   double integration_seconds_ = 0;
 };
 
@@ -393,12 +396,15 @@ UnstructuredGrid DgMethod::volume_grid(const Eigen::VectorXd& u) const {
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_dg_method(const Scene& scene, const SceneGeometry& geometry) {
-  return std::make_unique<DgMethod>(scene, geometry);
+  return std::make_unique<DgMethod>(scene, geometry, nullptr);
 }
 
 const MethodDescription& dg_method() {
-  static const MethodDescription method{dg_scene_block(), make_dg_method,
-                                        "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra"};
+  static const MethodDescription method{
+      dg_scene_block(), make_dg_method, "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra",
+      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
+        return std::make_unique<DgMethod>(scene, geometry, &method_mesh_as<PolyhedralSceneMesh>(mesh, "dg"));
+      }};
   return method;
 }
 

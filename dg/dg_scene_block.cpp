@@ -114,10 +114,9 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
     validator.fail(pointer + "/warping", "stiffness warping corotates the 'linear' material, got '" + nonlinear_model +
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite")) penalty["double_until_definite"] = true;
-  if (dg["conditions"] == "strong" && (!linear || dg["warping"].get<bool>()))
-    validator.fail(pointer + "/conditions", std::string("'strong' constrains the exact linear system's coefficients: ") +
-                                                (linear ? "not with warping" : "material 'linear' only, got '" + nonlinear_model + "'") +
-                                                " (use 'weak')");
+  if (dg["conditions"] == "strong" && dg["warping"].get<bool>())
+    validator.fail(pointer + "/conditions", "'strong' constrains the cells' coefficients, which stiffness warping "
+                                            "rotates: not with warping (use 'weak')");
   // Hansbo & Larson's split by default where the penalty is (λ + 2μ)-scaled: without it,
   // k = 1 locks at ν = 0.499 (tests/verify/dg/test_locking.cpp).
   if (!penalty.contains("lame_split")) penalty["lame_split"] = convention != PenaltyConvention::kaufmann;

@@ -35,7 +35,7 @@ std::vector<std::vector<int>> faces_of_cells(const DgLinearSystem& system) {
 // α_f of the lifting (header): ½ interior, 1 Dirichlet, 0 free.
 double lifting_weight(const DgFace& face) {
   if (face.plus >= 0) return 0.5;
-  return face.condition >= 0 ? 1.0 : 0.0;
+  return face.condition >= 0 && !face.strong ? 1.0 : 0.0;  // a strong face carries no flux term
 }
 
 LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<int>& faces, int strength) {

@@ -85,7 +85,8 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner, ConditionTrajectory data) {
+                              PreconditionerFactory preconditioner, ConditionTrajectory data,
+                              DirichletDofs strong) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
   TabulatedDg result;
@@ -108,7 +109,8 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
   parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
       *result.faces, JumpPenaltyKernel(std::move(terms.penalties))));
-  parts.conditions_weakly = true;
+  parts.conditions_weakly = strong.dofs.empty();
+  parts.dirichlet = std::move(strong);
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
   // A lifted cell lists its neighbours' functions too (with zero values): the blocks are the cells'.
   if (interior_penalty)

@@ -36,9 +36,12 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 /// conditions' data load at a time (with the interior-penalty flux: the penalty's part
 /// alone, DgLinearSystem::dirichlet_load with penalty_only); data: with the
 /// interior-penalty flux, the Dirichlet data the lifting shifts F by at each set_time
-/// (empty: g = 0); preconditioner: block Jacobi.
+/// (empty: g = 0); preconditioner: block Jacobi; strong: the coefficients the strongly
+/// imposed conditions fix (dg/strong_conditions.hpp; their faces carry no term), empty
+/// when every condition is weak.
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner, ConditionTrajectory data = {});
+                              PreconditionerFactory preconditioner, ConditionTrajectory data = {},
+                              DirichletDofs strong = {});
 
 }  // namespace altfem::dg

@@ -15,6 +15,7 @@
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
@@ -22,23 +23,39 @@ namespace altfem::fcm {
 
 namespace {
 
-class FcmMethod final : public MethodInstance {
+// What the method is built on: the background cells (§3.2) and the object as
+// embedded tetrahedra (§4.5).
+struct FcmMesh {
+  VolumeMesh background;
+  std::optional<Eigen::Vector3i> resolution;  ///< nullopt: a background mesh file
+  VolumeMesh embedded;
+};
+
+class FcmMethod final : public EmbeddedSurfaceMethod {
 public:
-  FcmMethod(const Scene& scene, const SceneGeometry& geometry)
+  // On the meshes of the scene, or on meshes an event hands it.
+  FcmMethod(const Scene& scene, const SceneGeometry& geometry, const FcmMesh* handed)
       : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
     quadrature_strength_ = spec.options.quadrature_strength;
     const std::string file = scene.file.string();
-    // The background grid over the geometry's bounds, or the user's mesh (§3.2).
-    BackgroundMesh generated = background_mesh(spec, geometry.bounds);
-    VolumeMesh background = std::move(generated.mesh);
-    resolution_ = generated.resolution;
+    VolumeMesh background;
+    if (handed) {
+      background = handed->background;
+      resolution_ = handed->resolution;
+      embedded_ = handed->embedded;
+    } else {
+      // The background grid over the geometry's bounds, or the user's mesh (§3.2).
+      BackgroundMesh generated = background_mesh(spec, geometry.bounds);
+      background = std::move(generated.mesh);
+      resolution_ = generated.resolution;
+      // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
+      // or shape at the same default size as fem's, so both deform the same surface.
+      const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
+      embedded_ = embedded_tetrahedra(geometry, embedded_size, file);
+    }
+    background_ = background;
     background_cells_ = background.cells.rows();
-
-    // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
-    // or shape at the same default size as fem's, so both deform the same surface.
-    const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
-    embedded_ = embedded_tetrahedra(geometry, embedded_size, file);
 
     const auto start = std::chrono::steady_clock::now();
     // Topology-aware cells (§7's limitation): the grid becomes one cell per piece of
@@ -65,11 +82,11 @@ public:
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
     // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
-    load_surface_ = boundary_surface(embedded_).surface;
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : load_surface_;
-    if (pieces_) evaluator_ = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
-    else evaluator_ = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
-    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+    surface_.load_surface = boundary_surface(embedded_).surface;
+    surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
+    if (pieces_) surface_.evaluator = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
+    else surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
+    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
   }
 
   const Discretization& discretization() const override { return *fcm_.discretization; }
@@ -94,16 +111,17 @@ public:
     grid.cell_data.emplace_back("piece", piece);
     return grid;
   }
-  const SurfaceMesh& embedded_surface() const override { return surface_; }
-  const SurfaceMesh& load_surface() const override { return load_surface_; }
-  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
-    return embedding_->displacement(displacement);
-  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return interpolate_at_nodes(fcm_.mesh.nodes, field);
   }
   std::vector<std::string> warnings() const override { return warnings_; }
+  std::shared_ptr<const MethodMesh> mesh() const override {
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{background_, resolution_, embedded_});
+  }
+  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+    const auto& before = dynamic_cast<const FcmMethod&>(previous);
+    return transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), field);
+  }
   /// The stiffness rules at any requested strength: cut cells' rules are simplified to
   /// match the moments up to that strength only (§4), so no stronger rule is at hand. The
   /// stabilising points (§5.3, weights × `stabilization`) are included.
@@ -111,7 +129,7 @@ public:
     return nodal_field_quadrature(borrowed(fcm_.discretization->elements()), fcm_.mesh.nodes, quadrature_strength_);
   }
   nlohmann::json facts() const override {
-    nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    nlohmann::json facts = surface_.facts();
     facts.update({{"background_cells", background_cells_},
                    {"background_resolution", resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()}
                                                          : nlohmann::json("file")},
@@ -134,6 +152,7 @@ public:
 private:
   SceneMaterials materials_;
   std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
+  VolumeMesh background_;  ///< the background cells before topology-aware splitting
   Eigen::Index background_cells_ = 0;
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
@@ -142,9 +161,6 @@ private:
   int split_cells_ = 0;
   double topology_seconds_ = 0;
   FcmDiscretization fcm_;
-  SurfaceMesh surface_, load_surface_;
-  std::unique_ptr<ElementBasisEvaluator> evaluator_;
-  std::unique_ptr<BasisEmbedding> embedding_;
   std::vector<std::string> warnings_;
   double quadrature_seconds_ = 0;
 };
@@ -152,12 +168,15 @@ private:
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_fcm_method(const Scene& scene, const SceneGeometry& geometry) {
-  return std::make_unique<FcmMethod>(scene, geometry);
+  return std::make_unique<FcmMethod>(scene, geometry, nullptr);
 }
 
 const MethodDescription& fcm_method() {
-  static const MethodDescription method{fcm_scene_block(), make_fcm_method,
-                                        "finite cell method: Lagrange background grid, exact cut-cell quadrature"};
+  static const MethodDescription method{
+      fcm_scene_block(), make_fcm_method, "finite cell method: Lagrange background grid, exact cut-cell quadrature",
+      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
+        return std::make_unique<FcmMethod>(scene, geometry, &method_mesh_as<FcmMesh>(mesh, "fcm"));
+      }};
   return method;
 }
 

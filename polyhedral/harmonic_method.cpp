@@ -1,6 +1,7 @@
 #include "polyhedral/harmonic_method.hpp"
 
 #include <chrono>
+#include <stdexcept>
 #include <string>
 
 #include "polyhedral/harmonic_basis_cache.hpp"
@@ -12,6 +13,7 @@
 #include "shared/common/error.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
+#include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
@@ -19,18 +21,19 @@ namespace altfem::harmonic {
 
 namespace {
 
-class HarmonicMethod final : public MethodInstance {
+class HarmonicMethod final : public EmbeddedSurfaceMethod {
 public:
-  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry)
+  // On the mesh of the scene, or on a mesh an event hands it.
+  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry, const PolyhedralSceneMesh* handed)
       : materials_(scene) {
     const HarmonicSpec spec = harmonic_spec(scene);
     // fem's tet or hex mesh cell by cell, or the geometry sliced: its grid's hexahedra
     // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
-    PolyhedralSceneMesh built = build_polyhedral_scene_mesh(spec.mesh, geometry);
+    PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
-    surface_ = std::move(built.surface);
+    surface_.surface = std::move(built.surface);
     // Surface loads act on the boundary of the domain integrated: the mesh's.
-    load_surface_ = std::move(built.load_surface);
+    surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     const auto start = std::chrono::steady_clock::now();
     if (spec.cache.empty()) {
@@ -68,8 +71,8 @@ public:
       elements_ = &linear->elements();
       discretization_ = std::move(linear);
     }
-    evaluator_ = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
-    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+    surface_.evaluator = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
+    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -105,17 +108,23 @@ public:
     add_nodal_displacement(grid, displacement);
     return grid;
   }
-  const SurfaceMesh& embedded_surface() const override { return surface_; }
-  const SurfaceMesh& load_surface() const override { return load_surface_; }
-  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
-    return embedding_->displacement(displacement);
-  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return interpolate_at_nodes(mesh_.nodes, field);
   }
+  std::shared_ptr<const MethodMesh> mesh() const override {
+    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
+        PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
+                            .surface = surface_.surface,
+                            .load_surface = surface_.load_surface,
+                            .facts = mesh_facts_,
+                            .converted = std::nullopt});
+  }
+  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+    const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
+    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), field);
+  }
   nlohmann::json facts() const override {
-    nlohmann::json facts = embedding_facts(surface_, *embedding_);
+    nlohmann::json facts = surface_.facts();
     facts.update(mesh_facts_);
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
     facts["mfs_quadrature_points"] = mfs_quadrature_points_;
@@ -140,9 +149,6 @@ private:
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation
-  SurfaceMesh surface_, load_surface_;
-  std::unique_ptr<HarmonicBasisEvaluator> evaluator_;
-  std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
   std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
@@ -152,12 +158,15 @@ private:
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_harmonic_method(const Scene& scene, const SceneGeometry& geometry) {
-  return std::make_unique<HarmonicMethod>(scene, geometry);
+  return std::make_unique<HarmonicMethod>(scene, geometry, nullptr);
 }
 
 const MethodDescription& harmonic_method() {
-  static const MethodDescription method{harmonic_scene_block(), make_harmonic_method,
-                                        "harmonic-basis polyhedral FEM (MFS bases, Martin et al. 2008)"};
+  static const MethodDescription method{
+      harmonic_scene_block(), make_harmonic_method, "harmonic-basis polyhedral FEM (MFS bases, Martin et al. 2008)",
+      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
+        return std::make_unique<HarmonicMethod>(scene, geometry, &method_mesh_as<PolyhedralSceneMesh>(mesh, "harmonic"));
+      }};
   return method;
 }
 

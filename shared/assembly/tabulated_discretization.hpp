@@ -76,6 +76,7 @@ public:
   /// Evaluates parts.deformation_shifts at `time` (from time 0 at construction).
   void set_time(double time) const override;
   const std::vector<int>& constrained_dofs() const override { return parts_.dirichlet.dofs; }
+  const std::vector<ConstraintHolders>& constraint_holders() const override { return parts_.dirichlet.holders; }
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
   PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }

@@ -56,6 +56,7 @@ public:
   }
   Eigen::VectorXd external_force(double time) const override { return linear_->external_force(time); }
   const std::vector<int>& constrained_dofs() const override { return linear_->constrained_dofs(); }
+  const std::vector<ConstraintHolders>& constraint_holders() const override { return linear_->constraint_holders(); }
   Eigen::VectorXd prescribed_displacement(double time) const override {
     return linear_->prescribed_displacement(time);
   }

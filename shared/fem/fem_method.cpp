@@ -1,6 +1,7 @@
 #include "shared/fem/fem_method.hpp"
 
 #include <chrono>
+#include <stdexcept>
 
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
@@ -9,6 +10,7 @@
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
@@ -16,13 +18,14 @@ namespace altfem {
 
 namespace {
 
-class FemMethod final : public MethodInstance {
+class FemMethod final : public EmbeddedSurfaceMethod {
 public:
-  FemMethod(const Scene& scene, const SceneGeometry& geometry)
+  // On the mesh of the scene (build_fem_mesh), or on a mesh an event hands it.
+  FemMethod(const Scene& scene, const SceneGeometry& geometry, const VolumeMesh* handed)
       : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
     quadrature_order_ = fem.quadrature_order;
-    mesh_ = build_fem_mesh(fem, geometry);
+    mesh_ = handed ? *handed : build_fem_mesh(fem, geometry);
     const auto start = std::chrono::steady_clock::now();
     discretization_ = make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
                                                    scene.dirichlet, fem.quadrature_order,
@@ -32,11 +35,11 @@ public:
     // boundary. Surface loads act on the mesh's own boundary lifted to the cells' curved
     // faces: the domain fem solves on.
     const BoundarySurface boundary = boundary_surface(mesh_);
-    load_surface_ = boundary.surface;
-    lift_ = lagrange_surface_lift(mesh_, boundary);
-    surface_ = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
-    evaluator_ = std::make_unique<LagrangeBasisEvaluator>(mesh_);
-    embedding_ = std::make_unique<BasisEmbedding>(*evaluator_, surface_.vertices);
+    surface_.load_surface = boundary.surface;
+    surface_.lift = lagrange_surface_lift(mesh_, boundary);
+    surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
+    surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh_);
+    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -50,18 +53,14 @@ public:
     add_nodal_displacement(grid, displacement);
     return grid;
   }
-  const SurfaceMesh& embedded_surface() const override { return surface_; }
-  const SurfaceMesh& load_surface() const override { return load_surface_; }
-  const ElementBasisEvaluator& basis_evaluator() const override { return *evaluator_; }
-  SurfaceLift surface_lift() const override { return lift_; }
-  Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
-    return embedding_->displacement(displacement);
-  }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return interpolate_at_nodes(mesh_.nodes, field);
   }
-  nlohmann::json facts() const override {
-    return embedding_facts(surface_, *embedding_);
+  nlohmann::json facts() const override { return surface_.facts(); }
+  std::shared_ptr<const MethodMesh> mesh() const override { return std::make_shared<MeshOf<VolumeMesh>>(mesh_); }
+  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+    const auto& before = dynamic_cast<const FemMethod&>(previous);
+    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), field);
   }
   /// The stiffness rule's tabulation, or every cell re-tabulated at the stronger rule.
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
@@ -76,11 +75,6 @@ private:
   SceneMaterials materials_;
   VolumeMesh mesh_;
   std::unique_ptr<TabulatedDiscretization> discretization_;
-  SurfaceMesh surface_;
-  SurfaceMesh load_surface_;
-  SurfaceLift lift_;  // empty with the scene's own surface
-  std::unique_ptr<LagrangeBasisEvaluator> evaluator_;
-  std::unique_ptr<BasisEmbedding> embedding_;
   double quadrature_seconds_ = 0;
   int quadrature_order_ = 0;
 };
@@ -88,12 +82,15 @@ private:
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneGeometry& geometry) {
-  return std::make_unique<FemMethod>(scene, geometry);
+  return std::make_unique<FemMethod>(scene, geometry, nullptr);
 }
 
 const MethodDescription& fem_method() {
-  static const MethodDescription method{fem_scene_block(), make_fem_method,
-                                        "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)"};
+  static const MethodDescription method{
+      fem_scene_block(), make_fem_method, "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)",
+      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
+        return std::make_unique<FemMethod>(scene, geometry, &method_mesh_as<VolumeMesh>(mesh, "fem"));
+      }};
   return method;
 }
 

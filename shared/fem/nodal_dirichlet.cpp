@@ -1,6 +1,7 @@
 #include "shared/fem/nodal_dirichlet.hpp"
 
 #include <Eigen/Geometry>
+#include <bit>
 #include <map>
 #include <memory>
 
@@ -14,7 +15,7 @@ DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<Di
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < nodes.rows(); ++node) bounds.extend(nodes.row(node).transpose());
   const double tolerance = region_tolerance(bounds);
-  std::map<int, int> condition_of_dof;
+  std::map<int, ConstraintHolders> holders_of_dof;  // the last selecting condition prescribes
   for (size_t c = 0; c < conditions.size(); ++c) {
     int selected = 0;
     for (Eigen::Index node = 0; node < nodes.rows(); ++node) {
@@ -22,7 +23,11 @@ DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<Di
       if (also_requires && !also_requires(static_cast<int>(node), conditions[c].region, tolerance)) continue;
       ++selected;
       for (int k = 0; k < 3; ++k)
-        if (conditions[c].components[k]) condition_of_dof[3 * static_cast<int>(node) + k] = static_cast<int>(c);
+        if (conditions[c].components[k]) {
+          ConstraintHolders& holders = holders_of_dof[3 * static_cast<int>(node) + k];
+          holders.conditions |= condition_bit(static_cast<int>(c));
+          holders.prescribing = condition_bit(static_cast<int>(c));
+        }
     }
     if (selected == 0)
       throw InputError(input_message(scene_file, conditions[c].pointer + "/region",
@@ -40,11 +45,12 @@ DirichletDofs nodal_dirichlet(const Eigen::MatrixXd& nodes, const std::vector<Di
   auto selection = std::make_shared<Selection>();
   selection->owned = conditions;
   DirichletDofs result;
-  for (auto [dof, condition] : condition_of_dof) {
+  for (auto [dof, holders] : holders_of_dof) {
     result.dofs.push_back(dof);
+    result.holders.push_back(holders);
     selection->positions.push_back(nodes.row(dof / 3).transpose());
     selection->components.push_back(dof % 3);
-    selection->conditions.push_back(&selection->owned[condition]);
+    selection->conditions.push_back(&selection->owned[std::countr_zero(holders.prescribing)]);
   }
   result.prescribed = [selection](double time) {
     Eigen::VectorXd values(static_cast<Eigen::Index>(selection->positions.size()));

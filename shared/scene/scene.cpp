@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "shared/common/error.hpp"
+#include "shared/scene/scene_events.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/scene/scene_schema.hpp"
 #include "shared/scene/scene_shape.hpp"
@@ -212,6 +213,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
     condition.components = {false, false, false};
     for (const auto& component : conditions[i]["components"])
       condition.components[component.get<std::string>()[0] - 'x'] = true;
+    if (conditions[i].contains("name")) condition.name = conditions[i]["name"].get<std::string>();
     scene.dirichlet.push_back(condition);
   }
 
@@ -246,6 +248,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
 
   const json& time = resolved["time"];
   scene.time.is_static = time["static"].get<bool>();
+  if (scene.time.is_static) scene.time.load_steps = time["load_steps"].get<int>();
   if (!scene.time.is_static) {
     scene.time.dt = time["dt"].get<double>();
     scene.time.steps = time["steps"].get<int>();
@@ -267,6 +270,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
 
   const json& output = resolved["output"];
   scene.output = {output["every"].get<int>(), output["surface"].get<bool>(), output["volume"].get<bool>()};
+  scene.events = events_from_json(resolved);
 
   scene.resolved = std::move(resolved);
   return scene;

@@ -90,6 +90,7 @@ struct DirichletCondition {
   Motion motion;
   std::array<bool, 3> components{true, true, true};  ///< which of x, y, z are prescribed
   std::string pointer;                               ///< e.g. "/boundary_conditions/0"
+  std::string name;                                  ///< what events call it; empty: unnamed
 };
 
 /// A surface load of `loads.traction` (docs/scene-schema.md): a dead load — its direction
@@ -126,6 +127,22 @@ struct TimeSpec {
   IntegratorKind integrator = IntegratorKind::backward_euler;
   double rayleigh_mass = 0.0;       ///< α of C = α M + β K
   double rayleigh_stiffness = 0.0;  ///< β
+  /// Static scenes: equilibria at the load factors k / load_steps, k = 1 … load_steps
+  /// (docs/scene-schema.md, "time"); 1 for dynamic scenes.
+  int load_steps = 1;
+};
+
+enum class EventKind { release };
+inline constexpr std::array<std::string_view, 1> event_kind_names{"release"};
+
+/// One entry of `events` (docs/scene-schema.md, "events"): something that changes the
+/// scene while it runs. It acts at the first step boundary at or after `time` (dynamic
+/// scenes: seconds; static scenes: after load step `time`, 0 before the first).
+struct SceneEvent {
+  double time = 0.0;
+  EventKind kind = EventKind::release;
+  int condition = -1;   ///< release: the index into Scene::dirichlet
+  std::string pointer;  ///< "/events/i", for messages
 };
 
 struct SolverSpec {
@@ -165,6 +182,8 @@ struct Scene {
   TimeSpec time;
   SolverSpec solver;
   OutputSpec output;
+  /// Sorted by time (scene order among equal times).
+  std::vector<SceneEvent> events;
   /// The whole scene with defaults filled and paths absolute. Each method's block under
   /// /discretization is resolved by that method (method_scene_block.hpp): load_scene
   /// only checks that every block is an object.

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "shared/scene/scene.hpp"
+#include "shared/scene/scene_events.hpp"
 #include "shared/scene/scene_shape.hpp"
 
 namespace altfem::scene_schema {
@@ -46,15 +47,19 @@ void check_translate(const Validator& validator, const json&, json& resolved, co
                    "expected 'displacement' and 'duration' together, got only one of them");
 }
 
-// `time` is either {"static": true} alone or a dynamic run with dt and steps.
+// `time` is either {"static": true} with optional load steps, or a dynamic run with dt
+// and steps.
 void check_time(const Validator& validator, const json& input, json& resolved, const std::string& pointer) {
   if (resolved["static"].get<bool>()) {
     for (const auto& [key, value] : input.items())
-      if (key != "static")
+      if (key != "static" && key != "load_steps")
         validator.fail(pointer + "/" + pointer_token(key), "not allowed with \"static\": true, got " + describe(value));
-    resolved = json{{"static", true}};
+    resolved = json{{"static", true}, {"load_steps", resolved["load_steps"]}};
     return;
   }
+  if (input.contains("load_steps"))
+    validator.fail(pointer + "/load_steps", "only for static scenes (a dynamic run steps in time: use dt and steps)");
+  resolved.erase("load_steps");
   for (const char* key : {"dt", "steps"})
     if (!resolved.contains(key))
       validator.fail(pointer + "/" + key, std::string("missing required key '") + key + "' (or set \"static\": true)");
@@ -78,6 +83,8 @@ void check_constants(const Validator& validator, const json& constants) {
 
 void check_scene(const Validator& validator, const json&, json& resolved, const std::string&) {
   check_constants(validator, resolved["constants"]);
+  check_condition_names(validator, resolved["boundary_conditions"]);
+  check_events(validator, resolved);
   if (!resolved.contains("name")) {
     std::string stem = std::filesystem::path(validator.file()).stem().string();
     resolved["name"] = stem.empty() ? "scene" : stem;
@@ -166,7 +173,8 @@ const ObjectRule dirichlet{
     {{.key = "type", .type = ValueType::string, .required = true, .choices = {"dirichlet"}},
      {.key = "region", .type = ValueType::object, .required = true, .object = &region},
      {.key = "motion", .type = ValueType::object, .default_value = json{{"kind", "fixed"}}, .object = &motion},
-     {.key = "components", .type = ValueType::components, .default_value = json::array({"x", "y", "z"})}}};
+     {.key = "components", .type = ValueType::components, .default_value = json::array({"x", "y", "z"})},
+     {.key = "name", .type = ValueType::string}}};
 
 // `loads.traction` entries: a region and exactly one of a traction vector or a pressure.
 const ObjectRule traction{{{.key = "region", .type = ValueType::object, .required = true, .object = &region},
@@ -193,6 +201,7 @@ const ObjectRule rayleigh_damping{
 const ObjectRule time{{flag("static", false),
                        {.key = "dt", .type = ValueType::number, .lower = positive},
                        {.key = "steps", .type = ValueType::integer, .lower = at_least_one},
+                       {.key = "load_steps", .type = ValueType::integer, .default_value = 1, .lower = at_least_one},
                        {.key = "integrator", .type = ValueType::string, .default_value = "backward_euler",
                         .choices = names(integrator_names)},
                        {.key = "rayleigh_damping", .type = ValueType::object, .default_value = json::object(),
@@ -252,6 +261,11 @@ const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                           {.key = "error", .type = ValueType::number, .lower = positive}},
                          {}, {}, {}, {}, check_compare};
 
+// `events` entries: a time and exactly one kind (cross-checked by check_events).
+const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
+                        {.key = "release", .type = ValueType::string}},
+                       {{"release"}}};
+
 const ObjectRule scene{
     {{.key = "name", .type = ValueType::string},
      {.key = "geometry", .type = ValueType::object, .required = true, .object = &geometry},
@@ -266,7 +280,8 @@ const ObjectRule scene{
      {.key = "discretization", .type = ValueType::object, .default_value = json::object(), .object = &method_blocks},
      {.key = "compare", .type = ValueType::object, .object = &compare},
      {.key = "constants", .type = ValueType::any, .default_value = json::object()},
-     {.key = "exact_displacement", .type = ValueType::expression3}},
+     {.key = "exact_displacement", .type = ValueType::expression3},
+     {.key = "events", .type = ValueType::object_array, .default_value = json::array(), .object = &event}},
     {{"material", "materials"}}, {}, {}, {}, check_scene};
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// Material points embedded in any method's elements (docs/architecture.md,
+// Material points embedded in any method's elements (docs/conventions.md,
 // "Metrics"): every method deforms the same scene surface vertices, so the methods are
 // compared point by point. A method supplies only "evaluate my basis at this physical
 // point in this element" (ElementBasisEvaluator); locating points, the rule for points
@@ -7,6 +7,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vector>
+
+#include "shared/simulation/point_embedding.hpp"
 
 namespace altfem {
 
@@ -37,7 +39,7 @@ public:
   virtual BoundaryPointRule boundary_rule() const { return BoundaryPointRule::first_element; }
 };
 
-class BasisEmbedding {
+class BasisEmbedding final : public PointEmbedding {
 public:
   /// points: #points × 3. Points outside every element are extrapolated from the
   /// nearest one (Mesh_3's surface only approximates the input); none is dropped.
@@ -45,7 +47,11 @@ public:
 
   /// Displacement at every point (#points × 3) from the coefficients u (#dofs; basis
   /// function a carries DOFs 3a..3a+2).
-  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const override;
+  /// {"surface_vertices_outside_mesh", "max_outside_distance"}.
+  nlohmann::json facts() const override {
+    return {{"surface_vertices_outside_mesh", outside_count_}, {"max_outside_distance", max_outside_distance_}};
+  }
   /// The load vector (#dofs) of forces at the points (#points × 3 [N]), the transpose of
   /// displacement(): f_(3a+i) = Σ_p φ_a(x_p) F_(p,i).
   Eigen::VectorXd load(const Eigen::MatrixXd& forces, int dof_count) const;

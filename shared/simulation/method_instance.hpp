@@ -1,7 +1,7 @@
 #pragma once
 // What a method builds for one scene, and what the run driver needs from it: the
 // discretization, output of its mesh, and the embedded surface every method deforms
-// (docs/architecture.md, "Metrics": methods are compared on the same surface vertices).
+// (docs/conventions.md, "Metrics": methods are compared on the same surface vertices).
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
@@ -9,6 +9,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <stdexcept>
 
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -18,6 +19,7 @@
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/surface_lift.hpp"
 #include "shared/simulation/field_quadrature.hpp"
+#include "shared/simulation/method_mesh.hpp"
 #include "shared/solve/discretization.hpp"
 
 namespace altfem {
@@ -59,6 +61,18 @@ public:
   /// a rule of that much higher strength where the method can (field errors). nullopt
   /// when the method cannot tabulate its basis at points.
   virtual std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const { return std::nullopt; }
+  /// What the method was built on, for an event to hand back to its rebuild (the
+  /// MethodDescription's); null for a method that cannot rebuild.
+  virtual std::shared_ptr<const MethodMesh> mesh() const { return nullptr; }
+  /// A field of `previous` — an instance of the same method before an event, its
+  /// coefficients `field` (#dofs of previous: a displacement or a velocity) — as
+  /// coefficients in this basis (docs/architecture.md, "Events"): nodal bases evaluate
+  /// the old field at their nodes, and a node that did not move keeps its value bit for
+  /// bit; DG restricts each parent polynomial to its children. Only methods with a
+  /// rebuild implement it.
+  virtual Eigen::VectorXd transfer(const MethodInstance& /*previous*/, const Eigen::VectorXd& /*field*/) const {
+    throw std::logic_error("this method cannot transfer a field from an earlier discretization");
+  }
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
   /// What the user should know about this discretization of the scene (one line each),
@@ -67,13 +81,18 @@ public:
 };
 
 using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&)>;
+/// The method built on a mesh it is handed (MethodInstance::mesh(), changed or not by an
+/// event) instead of the one it would make of the scene.
+using MethodRebuilder =
+    std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&, const MethodMesh&)>;
 
-/// What a method registers (app/method_registry.cpp): its scene block, its factory
-/// and one line for `altfem info`.
+/// What a method registers (app/method_registry.cpp): its scene block, its factory,
+/// one line for `altfem info`, and its rebuild from a mesh (events that change the mesh).
 struct MethodDescription {
   MethodSceneBlock scene_block;
   MethodFactory factory;
   std::string_view summary;
+  MethodRebuilder rebuild = {};
 };
 
 }  // namespace altfem

@@ -25,7 +25,7 @@ struct MlsOptions {
   double support = 2.0;
 };
 
-class MlsEmbedding {
+class MlsEmbedding final : public PointEmbedding {
 public:
   /// samples: #samples × 3 (the mesh nodes); spacing: #samples, the local sample spacing
   /// (e.g. the longest mesh edge at the node); points: #points × 3, the embedded points.
@@ -35,7 +35,9 @@ public:
                const Eigen::MatrixXd& points, const MlsOptions& options = {});
 
   /// Displacement at every embedded point (#points × 3) from the coefficients u.
-  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const override;
+  /// {"mls_max_samples_per_vertex"}.
+  nlohmann::json facts() const override { return {{"mls_max_samples_per_vertex", max_samples_per_point_}}; }
   /// The stitched sample displacements ũ_i of eq. (30) (#samples × 3).
   Eigen::MatrixXd stitched(const Eigen::VectorXd& u) const { return stitched_.displacement(u); }
   /// The largest number of samples one point's weights use.

@@ -1,6 +1,40 @@
 #include "shared/simulation/nodal_basis.hpp"
 
+#include <array>
+#include <map>
+#include <vector>
+
 namespace altfem {
+
+Eigen::VectorXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
+                                  const ElementBasisEvaluator& previous, const Eigen::VectorXd& field) {
+  if (nodes.rows() == previous_nodes.rows() && nodes.cols() == previous_nodes.cols() && nodes == previous_nodes)
+    return field;
+  // Old nodes by exact position; a position held by several (fcm's node copies of
+  // topology-aware cells) is left to the basis, which knows the pieces.
+  std::map<std::array<double, 3>, Eigen::Index> old_node;
+  std::map<std::array<double, 3>, int> copies;
+  for (Eigen::Index node = 0; node < previous_nodes.rows(); ++node) {
+    const std::array<double, 3> position{previous_nodes(node, 0), previous_nodes(node, 1), previous_nodes(node, 2)};
+    old_node[position] = node;
+    ++copies[position];
+  }
+  Eigen::VectorXd result(3 * nodes.rows());
+  std::vector<Eigen::Index> moved;
+  for (Eigen::Index node = 0; node < nodes.rows(); ++node) {
+    const std::array<double, 3> position{nodes(node, 0), nodes(node, 1), nodes(node, 2)};
+    const auto found = old_node.find(position);
+    if (found != old_node.end() && copies[position] == 1) result.segment<3>(3 * node) = field.segment<3>(3 * found->second);
+    else moved.push_back(node);
+  }
+  if (moved.empty()) return result;
+  Eigen::MatrixXd points(static_cast<Eigen::Index>(moved.size()), 3);
+  for (std::size_t i = 0; i < moved.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = nodes.row(moved[i]);
+  const Eigen::MatrixXd values = BasisEmbedding(previous, points).displacement(field);
+  for (std::size_t i = 0; i < moved.size(); ++i)
+    result.segment<3>(3 * moved[i]) = values.row(static_cast<Eigen::Index>(i)).transpose();
+  return result;
+}
 
 Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
                                      const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) {
@@ -18,12 +52,6 @@ FieldQuadrature nodal_field_quadrature(std::shared_ptr<const TabulatedElements> 
                                        int strength) {
   Eigen::MatrixXd points = nodal_quadrature_points(*elements, nodes);
   return {std::move(elements), std::move(points), strength};
-}
-
-nlohmann::json embedding_facts(const SurfaceMesh& surface, const BasisEmbedding& embedding) {
-  return {{"surface_vertices", surface.vertices.rows()},
-          {"surface_vertices_outside_mesh", embedding.outside_count()},
-          {"max_outside_distance", embedding.max_outside_distance()}};
 }
 
 }  // namespace altfem

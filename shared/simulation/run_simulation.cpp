@@ -15,32 +15,14 @@
 #include "shared/io/json_file.hpp"
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
-#include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
-#include "shared/simulation/rigid_motion.hpp"
-#include "shared/simulation/surface_traction.hpp"
-#include "shared/simulation/timed_discretization.hpp"
+#include "shared/simulation/simulation.hpp"
 #include "shared/solve/blas_info.hpp"
-#include "shared/solve/critical_time_step.hpp"
-#include "shared/solve/time_integrator.hpp"
 
 namespace altfem {
 
 namespace {
-
-// A static problem with a load and nothing holding the body has no equilibrium: its
-// rigid-body modes move without bound. Caught before solving, as bad input.
-void check_static_supports(const Scene& scene, const Discretization& discretization) {
-  if (!scene.time.is_static || !discretization.constrained_dofs().empty() || discretization.imposes_conditions_weakly())
-    return;
-  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0;
-  if (loaded)
-    throw InputError(input_message(scene.file.string(), "/boundary_conditions",
-                                   "a static problem with a load needs Dirichlet conditions that hold the body "
-                                   "(none selects any DOF): its rigid-body modes have no equilibrium; add a "
-                                   "condition, or add a time block for a dynamic run"));
-}
 
 // The state after a step must be finite and bounded: an explicit step above the
 // stability limit, or a diverging solve, is stopped at the first such step (exit 3)
@@ -78,29 +60,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-IntegratorOptions integrator_options(const Scene& scene) {
-  IntegratorOptions options;
-  if (scene.time.is_static) {
-    options.kind = IntegrationScheme::static_equilibrium;
-  } else {
-    switch (scene.time.integrator) {
-      case IntegratorKind::backward_euler: options.kind = IntegrationScheme::backward_euler; break;
-      case IntegratorKind::symplectic_euler: options.kind = IntegrationScheme::symplectic_euler; break;
-      case IntegratorKind::semi_implicit: options.kind = IntegrationScheme::semi_implicit; break;
-    }
-    options.time_step = scene.time.dt;
-  }
-  options.nonlinear = scene.solver.nonlinear == NonlinearSolverKind::lbfgs ? Minimizer::lbfgs : Minimizer::newton;
-  options.tolerance = scene.solver.tolerance;
-  options.max_iterations = scene.solver.max_iterations;
-  options.line_search = scene.solver.line_search;
-  options.project_spd = scene.solver.project_spd;
-  options.rayleigh_mass = scene.time.rayleigh_mass;
-  options.rayleigh_stiffness = scene.time.rayleigh_stiffness;
-  options.gravity = scene.gravity;
-  return options;
-}
-
 // The largest von Mises stress of the elements' mean Cauchy stresses (#elements × 9);
 // 0 when there are none.
 Eigen::VectorXd von_mises(const Eigen::MatrixXd& stresses) {
@@ -129,15 +88,17 @@ nlohmann::json exact_solution_errors(const MethodInstance& method, const VectorE
 }
 
 // Writes the frames of one output time: the method's mesh and the embedded surface.
+// After an event the frames carry the new mesh (the method the simulation holds then);
+// the embedded surface keeps its vertices, so surface errors stay defined.
 class FrameWriter {
 public:
-  FrameWriter(const MethodInstance& method, const std::filesystem::path& directory, const OutputSpec& output)
-      : method_(method), directory_(directory), output_(output), volume_(directory / "volume.pvd"),
+  FrameWriter(const Simulation& simulation, const std::filesystem::path& directory, const OutputSpec& output)
+      : simulation_(simulation), directory_(directory), output_(output), volume_(directory / "volume.pvd"),
         surface_(directory / "surface.pvd") {}
 
   // Stress as cell data, when the discretization's elements are the volume cells.
   void add_stress(UnstructuredGrid& grid, const Eigen::VectorXd& displacement) const {
-    const Eigen::MatrixXd stresses = method_.discretization().element_cauchy_stress(displacement);
+    const Eigen::MatrixXd stresses = simulation_.discretization().element_cauchy_stress(displacement);
     if (stresses.rows() == 0 || stresses.rows() != grid.cell_count()) return;
     grid.cell_data.emplace_back("cauchy_stress", stresses);
     grid.cell_data.emplace_back("von_mises", von_mises(stresses));
@@ -147,7 +108,7 @@ public:
     char name[64];
     if (output_.volume) {
       std::snprintf(name, sizeof name, "volume_%06d.vtu", frame_);
-      UnstructuredGrid grid = method_.volume_grid(displacement);
+      UnstructuredGrid grid = simulation_.method().volume_grid(displacement);
       add_stress(grid, displacement);
       write_vtu(directory_ / name, grid);
       volume_.add(time, name);
@@ -155,8 +116,8 @@ public:
     }
     if (output_.surface) {
       std::snprintf(name, sizeof name, "surface_%06d.vtu", frame_);
-      const SurfaceMesh& surface = method_.embedded_surface();
-      const Eigen::MatrixXd moved = method_.embedded_displacement(displacement);
+      const SurfaceMesh& surface = simulation_.method().embedded_surface();
+      const Eigen::MatrixXd moved = simulation_.method().embedded_displacement(displacement);
       UnstructuredGrid grid;
       grid.points = surface.vertices + moved;
       grid.add_triangles(surface.triangles);
@@ -171,12 +132,39 @@ public:
   const std::filesystem::path& last_surface() const { return last_surface_; }
 
 private:
-  const MethodInstance& method_;
+  const Simulation& simulation_;
   std::filesystem::path directory_;
   OutputSpec output_;
   PvdCollection volume_, surface_;
   std::filesystem::path last_surface_;
   int frame_ = 0;
+};
+
+// The scene's events in time order, applied as the run reaches them: a dynamic event
+// at the first step boundary at or after its time, a static one after its load step.
+class EventSchedule {
+public:
+  EventSchedule(const Scene& scene, Simulation& simulation, std::ostringstream& log)
+      : events_(scene.events), simulation_(simulation), log_(log),
+        tolerance_(scene.time.is_static ? 0.0 : 1e-9 * scene.time.dt) {}
+
+  // Applies every event due at `now` (dynamic: the state's time; static: load steps done).
+  void apply_due(double now) {
+    while (next_ < events_.size() && events_[next_].time <= now + tolerance_) {
+      const EventRecord record = simulation_.apply(events_[next_++]);
+      log_ << record.log_line() << '\n';
+      records_.push_back(record.json());
+    }
+  }
+  const nlohmann::json& records() const { return records_; }
+
+private:
+  const std::vector<SceneEvent>& events_;
+  Simulation& simulation_;
+  std::ostringstream& log_;
+  double tolerance_;
+  std::size_t next_ = 0;
+  nlohmann::json records_ = nlohmann::json::array();
 };
 
 }  // namespace
@@ -186,20 +174,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
                               double setup_seconds) {
   const auto start = std::chrono::steady_clock::now();
   const double loading_seconds = setup_seconds;
-  const std::unique_ptr<MethodInstance> method = factory(scene, geometry);
-  // The scene's loads that every method gets the same way, each a load vector at a
-  // time, added to the method's own external force: a new kind adds its line here.
-  std::vector<TimeDependentLoad> scene_loads;
-  if (auto tractions = surface_traction_load(scene, geometry.bounds, *method)) scene_loads.push_back(std::move(tractions));
-  if (auto body_force = body_force_load(scene, *method, method_name)) scene_loads.push_back(std::move(body_force));
-  const TimedDiscretization discretization(method->discretization(), std::move(scene_loads));
-  const auto linear_solver = make_linear_solver(linear_solver_options(scene, discretization));
-  TimeIntegrator integrator(discretization, *linear_solver, integrator_options(scene));
-  check_static_supports(scene, discretization);
-  const bool explicit_steps = !scene.time.is_static && scene.time.integrator == IntegratorKind::symplectic_euler;
-  const double critical_time_step =
-      explicit_steps ? estimate_critical_time_step(discretization) : std::numeric_limits<double>::infinity();
-  if (explicit_steps && scene.time.dt > critical_time_step)
+  Simulation simulation(scene, geometry, method_name, factory);
+  const MethodInstance& method = simulation.method();
+  const double critical_time_step = simulation.critical_time_step();
+  if (simulation.explicit_steps() && scene.time.dt > critical_time_step)
     std::fprintf(stderr,
                  "altfem: warning: time.dt = %g s exceeds the explicit stability limit, about %.3g s (2/omega_max, "
                  "omega_max^2 the largest eigenvalue of M^-1 K at rest): symplectic Euler will diverge\n",
@@ -212,29 +190,24 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["scene"] = scene.name;
   summary["method"] = method_name;
   summary["options"] = scene.resolved;
-  summary["dofs"] = discretization.dof_count();
-  summary["constrained_dofs"] = discretization.constrained_dofs().size();
-  summary["elements"] = method->element_counts();
-  summary["quadrature_points"] = {{"initial", method->quadrature_points()}, {"final", method->quadrature_points()}};
+  summary["dofs"] = simulation.discretization().dof_count();
+  summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();
+  summary["elements"] = method.element_counts();
+  const long long initial_points = method.quadrature_points();
   const BlasInfo blas = loaded_blas();
   summary["environment"] = {{"threads", omp_get_max_threads()}, {"blas", blas.implementation}};
   if (is_reference_blas(blas))
     std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
                          "install libopenblas0-pthread\n", blas.library.c_str());
-  summary["facts"] = method->facts();
-  summary["warnings"] = method->warnings();
-  for (const std::string& warning : method->warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
-  if (explicit_steps) summary["facts"]["critical_time_step"] = critical_time_step;
+  summary["facts"] = method.facts();
+  summary["warnings"] = method.warnings();
+  for (const std::string& warning : method.warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
+  if (simulation.explicit_steps()) summary["facts"]["critical_time_step"] = critical_time_step;
 
-  State state;
-  state.displacement = Eigen::VectorXd::Zero(discretization.dof_count());
-  state.velocity = scene.time.is_static ? Eigen::VectorXd::Zero(discretization.dof_count()).eval()
-                                        : initial_velocity(*method, scene.initial);
-  state.time = scene.time.is_static ? 1.0 : 0.0;  // docs/scene-schema.md: statics evaluate motions at t = 1 s
-  if (!scene.time.is_static) integrator.apply_constraints(state);
-
-  FrameWriter frames(*method, output_directory, scene.output);
-  const int steps = scene.time.is_static ? 1 : scene.time.steps;
+  State& state = simulation.state();
+  FrameWriter frames(simulation, output_directory, scene.output);
+  EventSchedule events(scene, simulation, log);
+  const int steps = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
   const double size = geometry.bounds.diagonal().norm();
   std::string status = "ok";
@@ -242,14 +215,17 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   int steps_done = 0;
   try {
     frames.write(state.displacement, scene.time.is_static ? 0.0 : state.time);
-    // iterations: Newton iterations, or objective evaluations with solver.nonlinear = lbfgs.
-    log << "# step time iterations linear_iterations residual total_energy max_von_mises\n";
+    // iterations: Newton iterations, or objective evaluations with solver.nonlinear = lbfgs;
+    // time: a static run's load factor.
+    log << "# step time dofs iterations linear_iterations residual total_energy max_von_mises\n";
+    events.apply_due(scene.time.is_static ? 0.0 : state.time);
     for (int step = 1; step <= steps; ++step) {
+      if (scene.time.is_static) state.load_factor = static_cast<double>(step) / steps;
       StepReport report;
       try {
-        report = integrator.step(state);
+        report = simulation.integrator().step(state);
       } catch (const NumericalError&) {
-        const StepReport failed = integrator.failed_step_report();
+        const StepReport failed = simulation.integrator().failed_step_report();
         newton_iterations += failed.newton_iterations;
         lbfgs_evaluations += failed.lbfgs_evaluations;
         linear_iterations += failed.linear_iterations;
@@ -258,51 +234,46 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       newton_iterations += report.newton_iterations;
       lbfgs_evaluations += report.lbfgs_evaluations;
       linear_iterations += report.linear_iterations;
-      const double total_energy = integrator.total_energy(state);
-      check_state(state, total_energy, size, step, scene.time.dt, critical_time_step);
+      const double total_energy = simulation.integrator().total_energy(state);
+      check_state(state, total_energy, size, step, scene.time.dt, simulation.critical_time_step());
       steps_done = step;
-      log << step << ' ' << state.time << ' ' << report.newton_iterations + report.lbfgs_evaluations << ' '
-          << report.linear_iterations << ' ' << report.residual << ' ' << total_energy << ' '
-          << max_von_mises(method->discretization(), state.displacement) << '\n';
-      if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, state.time);
+      const double time = scene.time.is_static ? state.load_factor : state.time;
+      log << step << ' ' << time << ' ' << simulation.discretization().dof_count() << ' '
+          << report.newton_iterations + report.lbfgs_evaluations << ' ' << report.linear_iterations << ' '
+          << report.residual << ' ' << total_energy << ' '
+          << max_von_mises(simulation.discretization(), state.displacement) << '\n';
+      if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, time);
       progress.update(step, report.newton_iterations);
+      events.apply_due(scene.time.is_static ? step : state.time);
     }
   } catch (const NumericalError& error) {
     status = std::string("error: ") + error.what() + near_incompressible_hint(scene);
   }
 
-  const LinearSolverStatistics& statistics = linear_solver->statistics();
+  const LinearSolverStatistics statistics = simulation.linear_statistics();
   const double total = loading_seconds + seconds_since(start);
   summary["timings_s"] = {{"setup", setup_seconds},
-                          {"quadrature", method->quadrature_seconds()},
-                          {"assembly", discretization.assembly_seconds()},
+                          {"quadrature", simulation.quadrature_seconds()},
+                          {"assembly", simulation.assembly_seconds()},
                           {"analysis", statistics.analysis_seconds},
                           {"factorisation", statistics.factorisation_seconds},
                           {"solve", statistics.solve_seconds},
                           {"total", total}};
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
+  summary["quadrature_points"] = {{"initial", initial_points}, {"final", simulation.method().quadrature_points()}};
   summary["steps"] = steps_done;
   summary["newton_iterations"] = newton_iterations;
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;
   summary["linear_iterations"] = linear_iterations;
+  summary["events"] = events.records();
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();
   if (scene.exact_displacement.has_value() && status == "ok")
-    summary["field_errors"] = exact_solution_errors(*method, scene.exact_displacement, state);
+    summary["field_errors"] = exact_solution_errors(simulation.method(), scene.exact_displacement, state);
   write_file_atomically(output_directory / "log.txt", log.str());
   write_json_file(output_directory / "summary.json", summary);
   if (status != "ok") throw NumericalError(status.substr(std::string("error: ").size()));
   return summary;
-}
-
-LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization) {
-  LinearSolverOptions options;
-  options.kind = scene.solver.linear;
-  options.preconditioner = scene.solver.preconditioner;
-  options.custom_preconditioner = discretization.preconditioner_factory();
-  options.tolerance = scene.solver.linear_tolerance;
-  options.max_iterations = scene.solver.linear_max_iterations;
-  return options;
 }
 
 }  // namespace altfem

@@ -6,13 +6,15 @@
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/method_instance.hpp"
-#include "shared/solve/linear_solver.hpp"
+#include "shared/simulation/simulation.hpp"
 
 namespace altfem {
 
 /// Runs a scene with one method and writes into `output_directory` (docs/conventions.md,
 /// "Command line and outputs"): summary.json, log.txt, volume.pvd + volume_NNNNNN.vtu
-/// and surface.pvd + surface_NNNNNN.vtu every `output.every` steps.
+/// and surface.pvd + surface_NNNNNN.vtu every `output.every` steps. The scene's events act
+/// between steps (Simulation::apply), each a line of log.txt and an entry of summary.json's
+/// `events`.
 ///
 /// Everything that can reject the input (building the method, its mesh, its
 /// constraints) happens before the folder is created, so bad input leaves no output.
@@ -22,9 +24,5 @@ namespace altfem {
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
                               const MethodFactory& factory, const std::filesystem::path& output_directory,
                               double setup_seconds = 0);
-
-/// The linear solver the scene's `solver` block chooses (kind, its preconditioner — the
-/// discretization's own when it has one — tolerance and iteration limit).
-LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization);
 
 }  // namespace altfem

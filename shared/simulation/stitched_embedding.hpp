@@ -10,7 +10,7 @@
 
 namespace altfem {
 
-class StitchedEmbedding {
+class StitchedEmbedding final : public PointEmbedding {
 public:
   /// field: the discontinuous basis; nodes: #nodes × 3; interpolation: a conforming basis
   /// whose function i is node i; points: #points × 3.
@@ -18,9 +18,9 @@ public:
                     const ElementBasisEvaluator& interpolation, const Eigen::MatrixXd& points);
 
   /// Displacement at every point (#points × 3) from the field's coefficients u.
-  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const;
+  Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const override;
   /// The interpolation's location facts (points outside its mesh are extrapolated).
-  const BasisEmbedding& interpolation() const { return interpolation_; }
+  nlohmann::json facts() const override { return interpolation_.facts(); }
 
 private:
   BasisEmbedding nodal_, interpolation_;

@@ -8,6 +8,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
+#include "shared/solve/dirichlet_dofs.hpp"
 #include "shared/solve/explicit_mass.hpp"
 #include "shared/solve/linear_solver.hpp"
 
@@ -64,11 +65,18 @@ public:
   /// of weakly imposed conditions). Zero by default.
   virtual Eigen::VectorXd external_force(double /*time*/) const { return Eigen::VectorXd::Zero(dof_count()); }
 
-  /// The DOFs with a prescribed displacement (sorted, fixed for the whole run); empty
-  /// for a method that imposes its conditions weakly.
+  /// The DOFs with a prescribed displacement (sorted); empty for a method that imposes
+  /// its conditions weakly. Fixed for the discretization's life: an event that releases
+  /// a condition wraps the discretization (released_conditions.hpp).
   virtual const std::vector<int>& constrained_dofs() const = 0;
   /// Their prescribed displacements at a time, in constrained_dofs() order.
   virtual Eigen::VectorXd prescribed_displacement(double time) const = 0;
+  /// Which scene conditions hold each constrained DOF (constrained_dofs() order); empty
+  /// when the discretization does not record it (then no condition can be released).
+  virtual const std::vector<ConstraintHolders>& constraint_holders() const {
+    static const std::vector<ConstraintHolders> unrecorded;
+    return unrecorded;
+  }
   /// True when Dirichlet conditions act inside energy() and external_force() (weakly),
   /// so the problem can be supported with no constrained DOF.
   virtual bool imposes_conditions_weakly() const { return false; }

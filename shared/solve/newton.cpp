@@ -52,10 +52,8 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
     assemble_hessian(objective, u, project_spd, step, iteration);
     if (objective.hessian_is_constant()) constant_hessian_ = matrix_;
     elimination_.apply(matrix_, rhs_, increment);
-    if (!analysed_) {
-      linear_solver_.analyze(matrix_);
-      analysed_ = true;
-    }
+    // factorize() analyses the pattern when it differs from the solver's last one: a
+    // Newton solver made after an event with an unchanged pattern analyses nothing.
     try {
       linear_solver_.factorize(matrix_);
     } catch (const NumericalError& error) {

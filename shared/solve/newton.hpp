@@ -37,8 +37,8 @@ struct NewtonReport {
 };
 
 /// Damped Newton with Armijo backtracking (Nocedal & Wright, Alg. 3.1) and strong
-/// Dirichlet conditions by elimination. The sparsity pattern is analysed once and
-/// reused for every iteration and time step; with a constant Hessian (linear
+/// Dirichlet conditions by elimination. The sparsity pattern is analysed once (by the
+/// linear solver, per distinct pattern) and reused for every iteration and time step; with a constant Hessian (linear
 /// material) the factorisation is reused too. A failed Cholesky factorisation (an
 /// indefinite tangent) is retried once with SPD-projected element Hessians (Smith et
 /// al. 2018 §4.4; Longva et al. 2020 §6 needed it for fine Tet4 meshes).
@@ -74,7 +74,6 @@ private:
   Eigen::SparseMatrix<double> constant_hessian_;  // before elimination, for the lifting
   Eigen::VectorXd rhs_, direction_, gradient_, trial_, trial_gradient_;
   int iterations_of_last_call_ = 0;
-  bool analysed_ = false;
   bool constant_factorised_ = false;
 };
 

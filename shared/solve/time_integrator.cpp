@@ -109,31 +109,40 @@ std::string_view integration_scheme_name(IntegrationScheme kind) {
 
 TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolver& linear_solver,
                                IntegratorOptions options)
-    : discretization_(discretization), linear_solver_(linear_solver), options_(options),
-      elimination_(discretization.hessian_pattern(), discretization.constrained_dofs()),
-      newton_(linear_solver, discretization.hessian_pattern(), elimination_) {
+    : discretization_(&discretization), linear_solver_(&linear_solver), options_(options) {
+  rebind(discretization);
+}
+
+void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* linear_solver) {
   check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
-  gravity_force_ = discretization.body_force(options.gravity);
+  discretization_ = &discretization;
+  if (linear_solver) linear_solver_ = linear_solver;
+  elimination_ = std::make_unique<DirichletElimination>(discretization.hessian_pattern(), discretization.constrained_dofs());
+  newton_ = std::make_unique<NewtonSolver>(*linear_solver_, discretization.hessian_pattern(), *elimination_);
+  gravity_force_ = discretization.body_force(options_.gravity);
   const Eigen::Vector3d representative =
-      options.gravity.norm() > 0 ? options.gravity : Eigen::Vector3d::Ones().eval();
-  absolute_tolerance_ = options.tolerance * elimination_.free_norm(discretization.body_force(representative));
+      options_.gravity.norm() > 0 ? options_.gravity : Eigen::Vector3d::Ones().eval();
+  absolute_tolerance_ = options_.tolerance * elimination_->free_norm(discretization.body_force(representative));
   if (!(absolute_tolerance_ > 0))
     throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
 }
 
 void TimeIntegrator::apply_constraints(State& state) const {
-  elimination_.set_constrained(state.displacement, discretization_.prescribed_displacement(state.time));
+  elimination_->set_constrained(state.displacement, discretization_->prescribed_displacement(state.time));
+}
+
+double TimeIntegrator::kinetic_energy(const State& state) const {
+  return options_.kind == IntegrationScheme::symplectic_euler
+             ? discretization_->explicit_mass().kinetic_energy(state.velocity)
+             : 0.5 * state.velocity.dot(discretization_->mass_matrix() * state.velocity);
 }
 
 double TimeIntegrator::total_energy(const State& state) const {
-  const double kinetic = options_.kind == IntegrationScheme::symplectic_euler
-                             ? discretization_.explicit_mass().kinetic_energy(state.velocity)
-                             : 0.5 * state.velocity.dot(discretization_.mass_matrix() * state.velocity);
-  return kinetic + discretization_.energy(state.displacement) - gravity_force_.dot(state.displacement);
+  return kinetic_energy(state) + discretization_->energy(state.displacement) - gravity_force_.dot(state.displacement);
 }
 
 StepReport TimeIntegrator::step(State& state) {
-  const long long linear_before = linear_solver_.statistics().iterations;
+  const long long linear_before = linear_solver_->statistics().iterations;
   failed_step_ = StepReport{};
   try {
     if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
@@ -145,49 +154,51 @@ StepReport TimeIntegrator::step(State& state) {
       default: return step_implicit(state, false);
     }
   } catch (const NumericalError&) {
-    if (failed_step_.lbfgs_evaluations == 0) failed_step_.newton_iterations = newton_.iterations_of_last_call();
-    failed_step_.linear_iterations = linear_solver_.statistics().iterations - linear_before;
+    if (failed_step_.lbfgs_evaluations == 0) failed_step_.newton_iterations = newton_->iterations_of_last_call();
+    failed_step_.linear_iterations = linear_solver_->statistics().iterations - linear_before;
     throw;
   }
 }
 
 StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
-  const long long linear_before = linear_solver_.statistics().iterations;
+  const long long linear_before = linear_solver_->statistics().iterations;
   NewtonOptions newton{absolute_tolerance_, options_.max_iterations, options_.line_search, options_.project_spd};
   NewtonReport report;
   if (options_.kind == IntegrationScheme::static_equilibrium) {
-    discretization_.set_time(state.time);
-    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(state.time);
-    StaticPotential potential(discretization_, force);
-    // Static equilibrium is one load step: messages call it step 1.
-    report = newton_.minimize(potential, state.displacement, discretization_.prescribed_displacement(state.time),
-                              newton, state.step + 1);
+    // A load step: the fraction λ of the loads and of the prescribed displacements.
+    discretization_->set_time(state.time);
+    const double factor = state.load_factor;
+    const Eigen::VectorXd force = factor * (gravity_force_ + discretization_->external_force(state.time));
+    StaticPotential potential(*discretization_, force);
+    report = newton_->minimize(potential, state.displacement,
+                               factor * discretization_->prescribed_displacement(state.time), newton, state.step + 1);
+    ++state.step;
   } else {
     const double h = options_.time_step;
     const double next_time = state.time + h;
     const Eigen::VectorXd previous = state.displacement;
     const Eigen::VectorXd target = previous + h * state.velocity;
-    discretization_.set_time(next_time);
-    const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(next_time);
+    discretization_->set_time(next_time);
+    const Eigen::VectorXd force = gravity_force_ + discretization_->external_force(next_time);
     Eigen::SparseMatrix<double> damping;
     const bool damped = options_.rayleigh_mass > 0 || options_.rayleigh_stiffness > 0;
     if (damped) {
-      damping = discretization_.hessian_pattern();
-      if (options_.rayleigh_stiffness > 0) discretization_.hessian(previous, damping, true);
+      damping = discretization_->hessian_pattern();
+      if (options_.rayleigh_stiffness > 0) discretization_->hessian(previous, damping, true);
       auto values = Eigen::Map<Eigen::VectorXd>(damping.valuePtr(), damping.nonZeros());
       values = options_.rayleigh_stiffness * values +
-               options_.rayleigh_mass * Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(),
+               options_.rayleigh_mass * Eigen::Map<const Eigen::VectorXd>(discretization_->mass_matrix().valuePtr(),
                                                                           damping.nonZeros());
     }
-    IncrementalPotential potential(discretization_, h, target, previous, damped ? &damping : nullptr, force);
-    const Eigen::VectorXd prescribed = discretization_.prescribed_displacement(next_time);
-    report = single_step ? newton_.single_step(potential, state.displacement, prescribed, newton, state.step + 1)
-                         : newton_.minimize(potential, state.displacement, prescribed, newton, state.step + 1);
+    IncrementalPotential potential(*discretization_, h, target, previous, damped ? &damping : nullptr, force);
+    const Eigen::VectorXd prescribed = discretization_->prescribed_displacement(next_time);
+    report = single_step ? newton_->single_step(potential, state.displacement, prescribed, newton, state.step + 1)
+                         : newton_->minimize(potential, state.displacement, prescribed, newton, state.step + 1);
     state.velocity = (state.displacement - previous) / h;
     state.time = next_time;
     ++state.step;
   }
-  return StepReport{report.iterations, 0, linear_solver_.statistics().iterations - linear_before, report.residual};
+  return StepReport{report.iterations, 0, linear_solver_->statistics().iterations - linear_before, report.residual};
 }
 
 StepReport TimeIntegrator::step_symplectic(State& state) {
@@ -197,11 +208,11 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
   // constrained DOFs follow their prescribed motion.
   const double h = options_.time_step;
   Eigen::VectorXd internal;
-  discretization_.set_time(state.time);
-  discretization_.gradient(state.displacement, internal);
-  const ExplicitMass& mass = discretization_.explicit_mass();
+  discretization_->set_time(state.time);
+  discretization_->gradient(state.displacement, internal);
+  const ExplicitMass& mass = discretization_->explicit_mass();
   Eigen::VectorXd force =
-      discretization_.explicit_body_force(options_.gravity) + discretization_.external_force(state.time) - internal;
+      discretization_->explicit_body_force(options_.gravity) + discretization_->external_force(state.time) - internal;
   if (options_.rayleigh_mass > 0) force -= options_.rayleigh_mass * mass.multiply(state.velocity);
   const Eigen::VectorXd previous = state.displacement;
   state.velocity += h * mass.solve(force);
@@ -209,7 +220,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
   state.time += h;
   ++state.step;
   apply_constraints(state);
-  for (int dof : discretization_.constrained_dofs())
+  for (int dof : discretization_->constrained_dofs())
     state.velocity[dof] = (state.displacement[dof] - previous[dof]) / h;
   if (!state.displacement.allFinite())
     throw NumericalError("step " + std::to_string(state.step) +
@@ -221,7 +232,7 @@ StepReport TimeIntegrator::step_symplectic(State& state) {
 StepReport TimeIntegrator::step_lbfgs(State& state) {
   // The same potentials as Newton, minimised over the free DOFs by L-BFGS with the
   // constrained DOFs set to their prescribed values first.
-  if (!discretization_.forces_have_potential())
+  if (!discretization_->forces_have_potential())
     throw InputError("solver: 'lbfgs' minimises an energy, and this discretization is a force model (dg warping): "
                      "use the 'newton' nonlinear solver");
   const bool is_static = options_.kind == IntegrationScheme::static_equilibrium;
@@ -229,17 +240,18 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   const double time = is_static ? state.time : state.time + h;
   const Eigen::VectorXd previous = state.displacement;
   const Eigen::VectorXd target = previous + h * state.velocity;
-  discretization_.set_time(time);
-  const Eigen::VectorXd force = gravity_force_ + discretization_.external_force(time);
-  StaticPotential static_potential(discretization_, force);
-  IncrementalPotential incremental(discretization_, h, target, previous, nullptr, force);
+  discretization_->set_time(time);
+  const double factor = is_static ? state.load_factor : 1.0;  // a static load step's λ
+  const Eigen::VectorXd force = factor * (gravity_force_ + discretization_->external_force(time));
+  StaticPotential static_potential(*discretization_, force);
+  IncrementalPotential incremental(*discretization_, h, target, previous, nullptr, force);
   const Objective& objective = is_static ? static_cast<const Objective&>(static_potential) : incremental;
 
   Eigen::VectorXd u = state.displacement;
-  elimination_.set_constrained(u, discretization_.prescribed_displacement(time));
+  elimination_->set_constrained(u, factor * discretization_->prescribed_displacement(time));
   std::vector<int> free;
-  for (int dof = 0; dof < discretization_.dof_count(); ++dof)
-    if (!elimination_.is_constrained(dof)) free.push_back(dof);
+  for (int dof = 0; dof < discretization_->dof_count(); ++dof)
+    if (!elimination_->is_constrained(dof)) free.push_back(dof);
   Eigen::VectorXd x(static_cast<Eigen::Index>(free.size()));
   for (size_t i = 0; i < free.size(); ++i) x[static_cast<Eigen::Index>(i)] = u[free[i]];
   Eigen::VectorXd full_gradient;
@@ -259,7 +271,7 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   lbfgs.gradient_tolerance = absolute_tolerance_;
   // Jacobi scaling from the Hessian at the start (lbfgs.hpp: without it Luksan's line
   // search stalls on the twisting beam, issue #22).
-  Eigen::SparseMatrix<double> hessian = discretization_.hessian_pattern();
+  Eigen::SparseMatrix<double> hessian = discretization_->hessian_pattern();
   objective.hessian(u, hessian, true);
   const Eigen::VectorXd diagonal = hessian.diagonal();
   lbfgs.scale.resize(x.size());
@@ -279,8 +291,8 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   if (!is_static) {
     state.velocity = (state.displacement - previous) / h;
     state.time = time;
-    ++state.step;
   }
+  ++state.step;
   return StepReport{0, result.evaluations, 0, result.gradient_norm};
 }
 

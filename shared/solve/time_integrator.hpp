@@ -35,6 +35,9 @@ struct State {
   Eigen::VectorXd displacement, velocity;  ///< #dofs each
   double time = 0;
   int step = 0;
+  /// Static equilibrium only: the fraction λ of the loads and prescribed displacements
+  /// (at `time`) a load step applies (time.load_steps: λ = k / load_steps).
+  double load_factor = 1.0;
 };
 
 struct StepReport {
@@ -50,6 +53,15 @@ class TimeIntegrator {
 public:
   TimeIntegrator(const Discretization& discretization, LinearSolver& linear_solver, IntegratorOptions options);
 
+  /// Continues with another discretization (an event changed the constrained DOFs or the
+  /// method): rebuilds what was cached from the old one (the elimination, Newton's
+  /// pattern, the gravity load and the tolerance). The state (time, step) is the
+  /// caller's; the linear solver keeps its statistics and re-analyses only when the
+  /// pattern changed.
+  /// With `linear_solver`, solves with it from now on (a new discretization may bring
+  /// its own preconditioner).
+  void rebind(const Discretization& discretization, LinearSolver* linear_solver = nullptr);
+
   /// Prescribed displacements and velocities at the state's time.
   void apply_constraints(State& state) const;
   /// Advances the state by one time step (static equilibrium: solves once, at the
@@ -61,6 +73,8 @@ public:
   /// Kinetic (½ vᵀ M v, the explicit mass for symplectic Euler) plus elastic energy, minus
   /// the potential of gravity.
   double total_energy(const State& state) const;
+  /// ½ vᵀ M v with the mass the scheme uses (explicit for symplectic Euler, else consistent).
+  double kinetic_energy(const State& state) const;
   /// The absolute Newton tolerance: tolerance · ‖M a_rep‖ over the free DOFs.
   double absolute_tolerance() const { return absolute_tolerance_; }
 
@@ -69,11 +83,11 @@ private:
   StepReport step_symplectic(State& state);
   StepReport step_lbfgs(State& state);
 
-  const Discretization& discretization_;
-  LinearSolver& linear_solver_;
+  const Discretization* discretization_;
+  LinearSolver* linear_solver_;
   IntegratorOptions options_;
-  DirichletElimination elimination_;
-  NewtonSolver newton_;
+  std::unique_ptr<DirichletElimination> elimination_;
+  std::unique_ptr<NewtonSolver> newton_;
   Eigen::VectorXd gravity_force_;  // ∫ρ g φ
   StepReport failed_step_;
   double absolute_tolerance_ = 0;

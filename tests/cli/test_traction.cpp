@@ -18,14 +18,14 @@ void expect_finite_run(const std::string& scene, const std::string& name) {
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json, or a field is not finite";
-  // log.txt: step time iterations linear_iterations residual total_energy max_von_mises.
+  // log.txt: step time dofs iterations linear_iterations residual total_energy max_von_mises.
   std::ifstream log(out / "log.txt");
   int steps = 0;
   for (std::string line; std::getline(log, line);) {
     if (line.empty() || line[0] == '#') continue;
     std::istringstream fields(line);
     double value = 0, von_mises = 0;
-    for (int i = 0; i < 6; ++i) fields >> value;
+    for (int i = 0; i < 7; ++i) fields >> value;
     fields >> von_mises;
     EXPECT_TRUE(std::isfinite(von_mises) && von_mises > 0) << "the load stresses the body: " << line;
     ++steps;

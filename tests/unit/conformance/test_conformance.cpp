@@ -8,9 +8,13 @@
 //     the virtual work against any affine v = Bx is V P(G) : B (constant stress);
 //   - an affine field is embedded exactly on the scene surface;
 //   - a run writes a summary.json with every required key, finite values, and output
-//     files that meshio reads (tests/cli/check_run_output.py).
+//     files that meshio reads (tests/cli/check_run_output.py);
+//   - events (docs/architecture.md, "Events"): a release frees only its condition's DOFs
+//     and conserves the body exactly, and a rebuild that changes nothing leaves every DOF
+//     bit-identical and the energy unchanged.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -23,6 +27,7 @@
 #include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/run_simulation.hpp"
+#include "shared/simulation/simulation.hpp"
 #include "tests/unit/conformance/two_hex_monomial_method.hpp"
 
 namespace altfem {
@@ -31,14 +36,16 @@ namespace {
 struct MethodCase {
   std::string name;
   MethodFactory factory;
+  MethodRebuilder rebuild;  // empty for a method that cannot rebuild
 };
 void PrintTo(const MethodCase& method, std::ostream* out) { *out << method.name; }
 
 // Every method registered in the executable, and the test-only one.
 std::vector<MethodCase> methods_under_test() {
   std::vector<MethodCase> methods;
-  for (const auto& method : cli::registered_methods()) methods.push_back({std::string(method.scene_block.name), method.factory});
-  methods.push_back({"two_hex_monomial", test::make_two_hex_monomial_method});
+  for (const auto& method : cli::registered_methods())
+    methods.push_back({std::string(method.scene_block.name), method.factory, method.rebuild});
+  methods.push_back({"two_hex_monomial", test::make_two_hex_monomial_method, {}});
   return methods;
 }
 
@@ -187,7 +194,7 @@ TEST_P(Conformance, RunWritesACompleteSummaryAndReadableOutput) {
   std::filesystem::remove_all(out);
   const nlohmann::json summary = run_simulation(scene, geometry, GetParam().name, GetParam().factory, out, 0.0);
   for (const char* key : {"scene", "method", "options", "dofs", "elements", "quadrature_points", "timings_s", "counts",
-                          "steps", "newton_iterations", "linear_iterations", "status", "surface"})
+                          "steps", "newton_iterations", "linear_iterations", "events", "status", "surface"})
     EXPECT_TRUE(summary.contains(key)) << key;
   for (const char* key : {"setup", "quadrature", "assembly", "analysis", "factorisation", "solve", "total"})
     EXPECT_TRUE(summary["timings_s"].contains(key)) << key;
@@ -216,6 +223,84 @@ TEST_P(Conformance, BadDiscretizationBlockIsOneLineOfBadInput) {
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
     EXPECT_NE(message.find("/discretization/" + GetParam().name + "/no_such_key"), std::string::npos) << message;
   }
+}
+
+// The released box: a clamp at x = 0 and a pull at x = 2 moving up, released at 0.02 s.
+TEST_P(Conformance, ReleaseFreesItsDofsAndConservesTheBody) {
+  const Scene scene = load_scene(scene_path("released_box.json"));
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  if (GetParam().name == "two_hex_monomial") {
+    // It records no condition per constrained DOF: the release is refused as bad input.
+    try {
+      Simulation simulation(scene, geometry, GetParam().name, GetParam().factory);
+      FAIL() << "accepted a release it cannot carry out";
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("/events/0/release"), std::string::npos) << error.what();
+    }
+    return;
+  }
+  Simulation simulation(scene, geometry, GetParam().name, GetParam().factory);
+  Simulation held_on(scene, geometry, GetParam().name, GetParam().factory);  // never released
+  const std::vector<int> held = simulation.discretization().constrained_dofs();
+  for (int step = 0; step < 2; ++step) {
+    simulation.integrator().step(simulation.state());
+    held_on.integrator().step(held_on.state());
+  }
+  const State before = simulation.state();
+  const EventRecord record = simulation.apply(scene.events.front());
+  // Only the pull's DOFs are freed; the state, and with it everything it carries, is unchanged.
+  EXPECT_EQ(static_cast<std::size_t>(record.constrained_before), held.size());
+  EXPECT_GT(record.constrained_before, record.constrained_after);
+  EXPECT_GT(record.constrained_after, 0);  // the clamp still holds
+  EXPECT_EQ(record.dofs_before, record.dofs_after);
+  EXPECT_EQ(record.seconds.integration, 0.0);  // a release re-integrates nothing
+  EXPECT_EQ(record.seconds.transfer, 0.0);
+  EXPECT_EQ(record.conserved["mass_change"].get<double>(), 0.0);
+  EXPECT_EQ(record.conserved["momentum_change"].get<double>(), 0.0);
+  EXPECT_EQ(record.conserved["energy_jump_j"].get<double>(), 0.0);
+  EXPECT_TRUE(simulation.state().displacement == before.displacement);
+  // The freed DOFs now move by the dynamics, not by the pull's motion.
+  std::vector<int> freed;
+  const std::vector<int>& still_held = simulation.discretization().constrained_dofs();
+  std::set_difference(held.begin(), held.end(), still_held.begin(), still_held.end(), std::back_inserter(freed));
+  ASSERT_FALSE(freed.empty());
+  simulation.integrator().step(simulation.state());
+  held_on.integrator().step(held_on.state());
+  double largest_difference = 0;
+  for (int dof : freed)
+    largest_difference = std::max(largest_difference,
+                                  std::abs(simulation.state().displacement[dof] - held_on.state().displacement[dof]));
+  EXPECT_GT(largest_difference, 1e-6);
+}
+
+// A rebuild on the method's own mesh changes nothing: every DOF bit for bit, the energy,
+// and the steps after it (the same run without the rebuild).
+TEST_P(Conformance, NoOpRebuildLeavesEveryDofBitIdentical) {
+  if (!GetParam().rebuild) GTEST_SKIP() << "the method has no rebuild";
+  Scene scene = load_scene(scene_path("released_box.json"));
+  scene.events.clear();
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  Simulation rebuilt(scene, geometry, GetParam().name, GetParam().factory, GetParam().rebuild);
+  Simulation plain(scene, geometry, GetParam().name, GetParam().factory);
+  for (int step = 0; step < 2; ++step) {
+    rebuilt.integrator().step(rebuilt.state());
+    plain.integrator().step(plain.state());
+  }
+  const State before = rebuilt.state();
+  const EventRecord record = rebuilt.rebuild();
+  EXPECT_TRUE(rebuilt.state().displacement == before.displacement);
+  EXPECT_TRUE(rebuilt.state().velocity == before.velocity);
+  EXPECT_EQ(record.dofs_before, record.dofs_after);
+  EXPECT_EQ(record.constrained_before, record.constrained_after);
+  EXPECT_EQ(record.conserved["energy_jump_j"].get<double>(), 0.0);
+  EXPECT_EQ(record.conserved["mass_change"].get<double>(), 0.0);
+  EXPECT_EQ(record.conserved["momentum_change"].get<double>(), 0.0);
+  for (int step = 0; step < 2; ++step) {
+    rebuilt.integrator().step(rebuilt.state());
+    plain.integrator().step(plain.state());
+  }
+  EXPECT_LT((rebuilt.state().displacement - plain.state().displacement).cwiseAbs().maxCoeff(),
+            1e-13 * plain.state().displacement.cwiseAbs().maxCoeff());
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, Conformance, ::testing::ValuesIn(methods_under_test()),

@@ -22,7 +22,8 @@ TEST(SceneDefaults, MinimalSceneIsResolvedCompletely) {
   EXPECT_EQ(resolved["boundary_conditions"], nlohmann::json::array());
   EXPECT_EQ(resolved["loads"]["gravity"], nlohmann::json::array({0.0, 0.0, 0.0}));
   EXPECT_EQ(resolved["initial_conditions"]["centre"], "centre_of_mass");
-  EXPECT_EQ(resolved["time"], nlohmann::json({{"static", true}}));
+  EXPECT_EQ(resolved["time"], nlohmann::json({{"static", true}, {"load_steps", 1}}));
+  EXPECT_EQ(resolved["events"], nlohmann::json::array());
   EXPECT_EQ(resolved["solver"]["nonlinear"], "newton");
   EXPECT_EQ(resolved["solver"]["tolerance"], 1e-5);
   EXPECT_EQ(resolved["solver"]["max_iterations"], 50);

@@ -14,7 +14,7 @@
 
 #include "dg/dg_method.hpp"
 #include "shared/fem/fem_method.hpp"
-#include "tests/verify/dg/static_surface.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem::dg {
 namespace {

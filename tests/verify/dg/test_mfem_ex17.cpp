@@ -21,7 +21,7 @@
 #include "shared/fem/fem_method.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
-#include "tests/verify/dg/static_surface.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem::dg {
 namespace {

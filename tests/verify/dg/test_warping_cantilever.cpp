@@ -11,7 +11,10 @@
 #include "dg/dg_method.hpp"
 #include "shared/fem/fem_method.hpp"
 #include "shared/mesh/surface_mesh.hpp"
-#include "tests/verify/dg/static_surface.hpp"
+#include "shared/scene/scene_override.hpp"
+#include "shared/simulation/simulation.hpp"
+#include "shared/solve/time_integrator.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem::dg {
 namespace {

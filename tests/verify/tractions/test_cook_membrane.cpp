@@ -25,7 +25,7 @@
 
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "tests/verify/tractions/static_scene_solve.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem {
 namespace {
@@ -91,8 +91,9 @@ TEST(CookMembrane, CornerDisplacementConverges) {
 }
 
 TEST(CookMembrane, ShippedSceneMatchesTheConvergedValue) {
-  const test::StaticSolution solution =
-      test::solve_static_scene(load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cook_membrane.json"), "fem");
+  const test::StaticRun solution =
+      test::static_run(load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cook_membrane.json"),
+                       test::registered_method("fem").factory, 1e-10);
   const double corner = corner_displacement(solution.method->embedded_surface().vertices,
                                             solution.method->embedded_displacement(solution.displacement));
   std::printf("scenes/cook_membrane.json (fem): u_y(C) = %.6f, Hex20 32 x 32: %.6f\n", corner, converged_displacement());

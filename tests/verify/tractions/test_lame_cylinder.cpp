@@ -18,7 +18,7 @@
 
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
-#include "tests/verify/tractions/static_scene_solve.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem {
 namespace {

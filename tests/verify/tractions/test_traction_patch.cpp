@@ -12,7 +12,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "tests/verify/tractions/static_scene_solve.hpp"
+#include "tests/support/static_solve.hpp"
 
 namespace altfem::test {
 namespace {
@@ -50,7 +50,7 @@ std::string bar_scene(const PatchCase& patch, double stress, bool as_pressure) {
 class TractionPatch : public testing::TestWithParam<PatchCase> {
 protected:
   void check(double stress, bool as_pressure) {
-    const StaticSolution solution = solve_static_scene(bar_scene(GetParam(), stress, as_pressure), GetParam().method);
+    const StaticRun solution = static_run_text(bar_scene(GetParam(), stress, as_pressure), GetParam().method);
     const double strain = stress / youngs_modulus;
     const auto exact = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
       return {strain * x.x(), -poisson_ratio * strain * x.y(), -poisson_ratio * strain * x.z()};

@@ -1,0 +1,75 @@
+#include "dg/dg_transfer.hpp"
+
+#include <Eigen/Cholesky>
+#include <vector>
+
+namespace altfem::dg {
+
+namespace {
+
+bool same_matrix(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() && a == b;
+}
+
+// The cell and its functions as they were: the same vertices, and the same monomials
+// (centre, scale, degree) combined the same way (strong conditions change the functions).
+bool same_cell(const DgLinearSystem& system, const DgLinearSystem& previous, int cell) {
+  if (cell >= previous.cell_count()) return false;
+  const MonomialBasis& basis = system.basis(cell);
+  const MonomialBasis& before = previous.basis(cell);
+  return basis.degree() == before.degree() && basis.centre() == before.centre() && basis.scale() == before.scale() &&
+         same_matrix(basis.combination(), before.combination()) &&
+         same_matrix(system.cell(cell).vertices, previous.cell(cell).vertices);
+}
+
+}  // namespace
+
+Eigen::VectorXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSystem& previous,
+                                  const ElementBasisEvaluator& previous_basis, const Eigen::VectorXd& field) {
+  Eigen::VectorXd result = Eigen::VectorXd::Zero(system.dof_count());
+  // The cells to project, their rules, and all their points for one embedding.
+  std::vector<int> projected;
+  std::vector<PolyhedronRule> rules;
+  Eigen::Index point_count = 0;
+  const int strength = 2 * system.basis(0).degree();
+  for (int cell = 0; cell < system.cell_count(); ++cell) {
+    const int size = 3 * system.basis(cell).size();
+    if (same_cell(system, previous, cell)) {
+      result.segment(3 * system.offset(cell), size) = field.segment(3 * previous.offset(cell), size);
+      continue;
+    }
+    projected.push_back(cell);
+    rules.push_back(system.cell_rule(cell, strength));
+    point_count += rules.back().points.rows();
+  }
+  if (projected.empty()) return result;
+  Eigen::MatrixXd points(point_count, 3);
+  Eigen::Index row = 0;
+  for (const PolyhedronRule& rule : rules) {
+    points.middleRows(row, rule.points.rows()) = rule.points;
+    row += rule.points.rows();
+  }
+  const Eigen::MatrixXd old_values = BasisEmbedding(previous_basis, points).displacement(field);
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd gradients;
+  row = 0;
+  for (std::size_t i = 0; i < projected.size(); ++i) {
+    const int cell = projected[i];
+    const MonomialBasis& basis = system.basis(cell);
+    const PolyhedronRule& rule = rules[i];
+    // M c = r: M_ab = ∫ φ_a φ_b, r_a = ∫ φ_a u_old (one column per component).
+    Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(basis.size(), basis.size());
+    Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(basis.size(), 3);
+    for (Eigen::Index q = 0; q < rule.points.rows(); ++q, ++row) {
+      basis.evaluate(rule.points.row(q).transpose(), phi, gradients);
+      mass.noalias() += rule.weights[q] * phi * phi.transpose();
+      moments.noalias() += rule.weights[q] * phi * old_values.row(row);
+    }
+    const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3
+    for (int a = 0; a < basis.size(); ++a)
+      result.segment<3>(3 * (system.offset(cell) + a)) = coefficients.row(a).transpose();
+  }
+  return result;
+}
+
+}  // namespace altfem::dg

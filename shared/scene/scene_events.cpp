@@ -1,0 +1,108 @@
+#include "shared/scene/scene_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace altfem {
+
+namespace scene_schema {
+
+using nlohmann::json;
+
+void check_condition_names(const Validator& validator, const json& conditions) {
+  // Discretizations record a DOF's conditions as a 64-bit set (shared/solve/dirichlet_dofs.hpp).
+  if (conditions.size() > 64)
+    validator.fail("/boundary_conditions", "expected at most 64 conditions, got " + std::to_string(conditions.size()));
+  std::map<std::string, std::size_t> first_with_name;
+  for (std::size_t i = 0; i < conditions.size(); ++i) {
+    if (!conditions[i].contains("name")) continue;
+    const std::string name = conditions[i]["name"].get<std::string>();
+    const auto [found, inserted] = first_with_name.emplace(name, i);
+    if (!inserted)
+      validator.fail("/boundary_conditions/" + std::to_string(i) + "/name",
+                     "'" + name + "' already names /boundary_conditions/" + std::to_string(found->second) +
+                         " (events name their target: each name once)");
+  }
+}
+
+namespace {
+
+// The index of the condition called `name`, or −1.
+int condition_named(const json& conditions, const std::string& name) {
+  for (std::size_t i = 0; i < conditions.size(); ++i)
+    if (conditions[i].contains("name") && conditions[i]["name"].get<std::string>() == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string known_names(const json& conditions) {
+  std::string names;
+  for (const json& condition : conditions)
+    if (condition.contains("name")) names += (names.empty() ? "'" : ", '") + condition["name"].get<std::string>() + "'";
+  return names.empty() ? "none is named: give the condition a \"name\"" : "named: " + names;
+}
+
+void check_time_range(const Validator& validator, const json& time, double event_time, const std::string& pointer) {
+  if (time["static"].get<bool>()) {
+    const int load_steps = time["load_steps"].get<int>();
+    if (event_time != std::floor(event_time) || event_time > load_steps - 1)
+      validator.fail(pointer, "a static scene's event acts after a load step: expected an integer 0 … " +
+                                  std::to_string(load_steps - 1) + " (time.load_steps = " + std::to_string(load_steps) +
+                                  "), got " + describe(json(event_time)));
+    return;
+  }
+  const double end = time["dt"].get<double>() * time["steps"].get<int>();
+  if (!(event_time < end))
+    validator.fail(pointer, "expected a time before the run ends at steps·dt = " + describe(json(end)) + " s, got " +
+                                describe(json(event_time)));
+}
+
+}  // namespace
+
+void check_events(const Validator& validator, const json& resolved) {
+  const json& events = resolved["events"];
+  const json& conditions = resolved["boundary_conditions"];
+  std::map<int, std::size_t> released_by;  // condition → the event releasing it
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    const std::string pointer = "/events/" + std::to_string(i);
+    check_time_range(validator, resolved["time"], events[i]["time"].get<double>(), pointer + "/time");
+    const std::string name = events[i]["release"].get<std::string>();
+    const int condition = condition_named(conditions, name);
+    if (condition < 0)
+      validator.fail(pointer + "/release", "no boundary condition is named '" + name + "' (" + known_names(conditions) + ")");
+    const auto [found, inserted] = released_by.emplace(condition, i);
+    if (!inserted) {
+      const json& other = events[found->second];
+      const bool same_time = other["time"] == events[i]["time"];
+      validator.fail(pointer, same_time ? "repeats /events/" + std::to_string(found->second) + " (a release of '" + name +
+                                              "' at the same time)"
+                                        : "releases '" + name + "' again: /events/" + std::to_string(found->second) +
+                                              " already released it");
+    }
+  }
+}
+
+}  // namespace scene_schema
+
+std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
+  std::vector<SceneEvent> events;
+  const nlohmann::json& conditions = resolved["boundary_conditions"];
+  for (std::size_t i = 0; i < resolved["events"].size(); ++i) {
+    const nlohmann::json& event = resolved["events"][i];
+    SceneEvent result;
+    result.time = event["time"].get<double>();
+    result.pointer = "/events/" + std::to_string(i);
+    result.kind = EventKind::release;
+    const std::string name = event["release"].get<std::string>();
+    for (std::size_t c = 0; c < conditions.size(); ++c)
+      if (conditions[c].contains("name") && conditions[c]["name"].get<std::string>() == name)
+        result.condition = static_cast<int>(c);
+    events.push_back(std::move(result));
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const SceneEvent& a, const SceneEvent& b) { return a.time < b.time; });
+  return events;
+}
+
+}  // namespace altfem

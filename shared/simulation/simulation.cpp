@@ -1,0 +1,231 @@
+#include "shared/simulation/simulation.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <limits>
+
+#include "shared/common/error.hpp"
+#include "shared/simulation/body_force_load.hpp"
+#include "shared/simulation/rigid_motion.hpp"
+#include "shared/simulation/surface_traction.hpp"
+#include "shared/solve/critical_time_step.hpp"
+
+namespace altfem {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A static problem with a load and nothing holding the body has no equilibrium: its
+// rigid-body modes move without bound. Caught before solving, as bad input.
+void check_static_supports(const Scene& scene, const Discretization& discretization) {
+  if (!scene.time.is_static || !discretization.constrained_dofs().empty() || discretization.imposes_conditions_weakly())
+    return;
+  const bool loaded = scene.gravity.norm() > 0 || discretization.external_force(1.0).norm() > 0;
+  if (loaded)
+    throw InputError(input_message(scene.file.string(), "/boundary_conditions",
+                                   "a static problem with a load needs Dirichlet conditions that hold the body "
+                                   "(none selects any DOF): its rigid-body modes have no equilibrium; add a "
+                                   "condition, or add a time block for a dynamic run"));
+}
+
+// The scene's loads that every method gets the same way, each a load vector at a time,
+// added to the method's own external force: a new kind adds its line here.
+std::vector<TimeDependentLoad> scene_loads(const Scene& scene, const SceneGeometry& geometry,
+                                           const MethodInstance& method, const std::string& method_name) {
+  std::vector<TimeDependentLoad> loads;
+  if (auto tractions = surface_traction_load(scene, geometry.bounds, method)) loads.push_back(std::move(tractions));
+  if (auto body_force = body_force_load(scene, method, method_name)) loads.push_back(std::move(body_force));
+  return loads;
+}
+
+void add_statistics(LinearSolverStatistics& total, const LinearSolverStatistics& more) {
+  total.analyses += more.analyses;
+  total.factorisations += more.factorisations;
+  total.solves += more.solves;
+  total.iterations += more.iterations;
+  total.analysis_seconds += more.analysis_seconds;
+  total.factorisation_seconds += more.factorisation_seconds;
+  total.solve_seconds += more.solve_seconds;
+  total.factor_entries = more.factor_entries;
+  total.factorisation_flops = more.factorisation_flops;
+}
+
+}  // namespace
+
+IntegratorOptions integrator_options(const Scene& scene) {
+  IntegratorOptions options;
+  if (scene.time.is_static) {
+    options.kind = IntegrationScheme::static_equilibrium;
+  } else {
+    switch (scene.time.integrator) {
+      case IntegratorKind::backward_euler: options.kind = IntegrationScheme::backward_euler; break;
+      case IntegratorKind::symplectic_euler: options.kind = IntegrationScheme::symplectic_euler; break;
+      case IntegratorKind::semi_implicit: options.kind = IntegrationScheme::semi_implicit; break;
+    }
+    options.time_step = scene.time.dt;
+  }
+  options.nonlinear = scene.solver.nonlinear == NonlinearSolverKind::lbfgs ? Minimizer::lbfgs : Minimizer::newton;
+  options.tolerance = scene.solver.tolerance;
+  options.max_iterations = scene.solver.max_iterations;
+  options.line_search = scene.solver.line_search;
+  options.project_spd = scene.solver.project_spd;
+  options.rayleigh_mass = scene.time.rayleigh_mass;
+  options.rayleigh_stiffness = scene.time.rayleigh_stiffness;
+  options.gravity = scene.gravity;
+  return options;
+}
+
+LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization) {
+  LinearSolverOptions options;
+  options.kind = scene.solver.linear;
+  options.preconditioner = scene.solver.preconditioner;
+  options.custom_preconditioner = discretization.preconditioner_factory();
+  options.tolerance = scene.solver.linear_tolerance;
+  options.max_iterations = scene.solver.linear_max_iterations;
+  return options;
+}
+
+Simulation::Simulation(const Scene& scene, const SceneGeometry& geometry, std::string method_name,
+                       const MethodFactory& factory, MethodRebuilder rebuild)
+    : scene_(scene), geometry_(geometry), method_name_(std::move(method_name)), rebuild_(std::move(rebuild)) {
+  method_ = factory(scene, geometry);
+  quadrature_seconds_ = method_->quadrature_seconds();
+  scene_loads_ = scene_loads(scene, geometry, *method_, method_name_);
+  layer_discretization(make_linear_solver(linear_solver_options(scene, method_->discretization())));
+  integrator_ = std::make_unique<TimeIntegrator>(*timed_, *linear_solver_, integrator_options(scene));
+  check_static_supports(scene, *timed_);
+  check_events();
+  explicit_steps_ = !scene.time.is_static && scene.time.integrator == IntegratorKind::symplectic_euler;
+  critical_time_step_ =
+      explicit_steps_ ? estimate_critical_time_step(*timed_) : std::numeric_limits<double>::infinity();
+
+  state_.displacement = Eigen::VectorXd::Zero(timed_->dof_count());
+  state_.velocity = scene.time.is_static ? Eigen::VectorXd::Zero(timed_->dof_count()).eval()
+                                         : initial_velocity(*method_, scene.initial);
+  state_.time = scene.time.is_static ? 1.0 : 0.0;  // docs/scene-schema.md: statics evaluate motions at t = 1 s
+  if (!scene.time.is_static) integrator_->apply_constraints(state_);
+}
+
+Simulation::~Simulation() = default;
+
+LinearSolverStatistics Simulation::linear_statistics() const {
+  LinearSolverStatistics total = retired_statistics_;
+  add_statistics(total, linear_solver_->statistics());
+  return total;
+}
+
+void Simulation::layer_discretization(std::unique_ptr<LinearSolver> solver) {
+  // The integrator keeps pointing at the old layers (and solver) until it is rebound: build first.
+  std::unique_ptr<ReleasedConditions> released =
+      released_ ? std::make_unique<ReleasedConditions>(method_->discretization(), released_) : nullptr;
+  const Discretization& base = released ? static_cast<const Discretization&>(*released) : method_->discretization();
+  auto timed = std::make_unique<TimedDiscretization>(base, scene_loads_, assembly_seconds_);
+  if (integrator_) integrator_->rebind(*timed, solver.get());
+  if (solver) {
+    if (linear_solver_) add_statistics(retired_statistics_, linear_solver_->statistics());
+    linear_solver_ = std::move(solver);
+  }
+  released_layer_ = std::move(released);
+  timed_ = std::move(timed);
+}
+
+// Every release must name a condition this method holds strongly, and every prefix of
+// the releases must leave constraints the method can state: checked before the run
+// writes anything, so a refused event is bad input (exit 2).
+void Simulation::check_events() const {
+  ConditionSet released = 0;
+  for (const SceneEvent& event : scene_.events) {
+    const std::string key = event.pointer + "/release";
+    const DirichletCondition& condition = scene_.dirichlet[event.condition];
+    const Discretization& discretization = method_->discretization();
+    if (dofs_held_by(discretization, event.condition) == 0) {
+      const std::string why =
+          discretization.imposes_conditions_weakly()
+              ? "this method imposes it weakly (terms of its energy, no constrained DOF): only a strongly imposed "
+                "condition can be released (a method with both offers the choice in its discretization block)"
+          : discretization.constraint_holders().empty() && !discretization.constrained_dofs().empty()
+              ? "this method does not record which condition holds each constrained DOF"
+              : "it holds no DOF of this method";
+      throw InputError(input_message(scene_.file.string(), key,
+                                     "cannot release '" + condition.name + "' (" + condition.pointer + "): " + why));
+    }
+    released |= condition_bit(event.condition);
+    try {
+      const ReleasedConditions check(discretization, released);
+    } catch (const std::invalid_argument& error) {
+      throw InputError(input_message(scene_.file.string(), key, "cannot release '" + condition.name + "': " + error.what()));
+    }
+  }
+}
+
+BodyMeasures Simulation::measure() const { return measure_body(*method_, *timed_, *integrator_, state_); }
+
+EventRecord Simulation::start_record(std::string kind, std::string target, std::string pointer,
+                                     double scheduled_time) const {
+  EventRecord record;
+  record.kind = std::move(kind);
+  record.target = std::move(target);
+  record.pointer = std::move(pointer);
+  record.scheduled_time = scheduled_time;
+  record.time = state_.time;
+  record.step = state_.step;
+  record.dofs_before = timed_->dof_count();
+  record.constrained_before = static_cast<long long>(timed_->constrained_dofs().size());
+  return record;
+}
+
+void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) const {
+  record.dofs_after = timed_->dof_count();
+  record.constrained_after = static_cast<long long>(timed_->constrained_dofs().size());
+  record.conserved = conservation_json(before, measure());
+}
+
+EventRecord Simulation::apply(const SceneEvent& event) {
+  const DirichletCondition& condition = scene_.dirichlet[event.condition];
+  EventRecord record = start_record("release", condition.name, event.pointer, event.time);
+  const BodyMeasures before = measure();
+  // A release changes no basis and no integral: only the constrained set (the identity
+  // transfer), so the only phase is the new elimination and Newton's set-up.
+  const auto start = std::chrono::steady_clock::now();
+  released_ |= condition_bit(event.condition);
+  layer_discretization();
+  if (explicit_steps_) critical_time_step_ = estimate_critical_time_step(*timed_);
+  record.seconds.pattern = seconds_since(start);
+  finish_record(record, before);
+  return record;
+}
+
+EventRecord Simulation::rebuild() {
+  const std::shared_ptr<const MethodMesh> mesh = method_->mesh();
+  if (!rebuild_ || !mesh) throw std::logic_error("Simulation::rebuild: the method has no rebuild");
+  EventRecord record = start_record("rebuild", "", "", state_.time);
+  const BodyMeasures before = measure();
+  auto start = std::chrono::steady_clock::now();
+  std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, geometry_, *mesh);
+  record.seconds.integration = seconds_since(start);
+  quadrature_seconds_ += rebuilt->quadrature_seconds();
+
+  start = std::chrono::steady_clock::now();
+  State transferred = state_;
+  transferred.displacement = rebuilt->transfer(*method_, state_.displacement);
+  transferred.velocity = rebuilt->transfer(*method_, state_.velocity);
+  record.seconds.transfer = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
+  // The old method and its layers stay alive until the integrator is rebound.
+  const std::unique_ptr<MethodInstance> previous = std::move(method_);
+  method_ = std::move(rebuilt);
+  scene_loads_ = scene_loads(scene_, geometry_, *method_, method_name_);
+  std::unique_ptr<LinearSolver> solver = make_linear_solver(linear_solver_options(scene_, method_->discretization()));
+  layer_discretization(std::move(solver));
+  if (explicit_steps_) critical_time_step_ = estimate_critical_time_step(*timed_);
+  state_ = std::move(transferred);
+  record.seconds.pattern = seconds_since(start);
+  finish_record(record, before);
+  return record;
+}
+
+}  // namespace altfem

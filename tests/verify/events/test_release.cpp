@@ -1,0 +1,118 @@
+// A release event (docs/scene-schema.md, "Events") with every method, on a cantilever
+// held at its clamped end and at its tip; the tip's condition is released at 0.1 s.
+//   - Afterwards the beam oscillates about the free cantilever's static deflection: it
+//     overshoots it (a load applied suddenly to an oscillator at rest swings to twice its
+//     static response, less the damping), and the Rayleigh damping (α = 20/s, ζ ≈ 0.3 for
+//     the first bending mode) brings it to rest there, checked against the same method's
+//     static solution of the free cantilever and against fem's.
+//   - The released run equals a fresh run of the free cantilever started from the state
+//     the release acted on (transferred into the fresh method's basis).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "app/method_registry.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
+#include "shared/simulation/simulation.hpp"
+
+namespace altfem {
+namespace {
+
+const std::filesystem::path scene_file =
+    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/held_cantilever.json";
+
+const MethodDescription& method_named(const std::string& name) {
+  for (const auto& method : cli::registered_methods())
+    if (method.scene_block.name == name) return method;
+  throw std::invalid_argument("no method " + name);
+}
+
+// The mean vertical displacement of the embedded surface's vertices at the tip (x = 1).
+double tip_deflection(const Simulation& simulation) {
+  const MethodInstance& method = simulation.method();
+  const Eigen::MatrixXd moved = method.embedded_displacement(simulation.state().displacement);
+  const Eigen::MatrixXd& vertices = method.embedded_surface().vertices;
+  double sum = 0;
+  int count = 0;
+  for (Eigen::Index v = 0; v < vertices.rows(); ++v)
+    if (vertices(v, 0) > 1 - 1e-9) {
+      sum += moved(v, 2);
+      ++count;
+    }
+  return sum / count;
+}
+
+// The free cantilever (the clamp alone) at static equilibrium under gravity.
+double static_free_deflection(const std::string& method_name) {
+  Scene scene = load_scene(scene_file, {parse_scene_override("time={\"static\": true}"),
+                                        parse_scene_override("events=[]")});
+  scene.dirichlet.pop_back();  // the tip
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  Simulation simulation(scene, geometry, method_name, method_named(method_name).factory);
+  simulation.integrator().step(simulation.state());
+  return tip_deflection(simulation);
+}
+
+class Release : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Release, TheBeamOscillatesAboutTheFreeStaticDeflection) {
+  const Scene scene = load_scene(scene_file);
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  Simulation simulation(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  const double free = static_free_deflection(GetParam());
+  const double fem = GetParam() == "fem" ? free : static_free_deflection("fem");
+  ASSERT_LT(free, 0);
+  double lowest = 0, held = 0;
+  bool released = false;
+  for (int step = 1; step <= scene.time.steps; ++step) {
+    simulation.integrator().step(simulation.state());
+    if (!released && simulation.state().time >= scene.events.front().time - 1e-12) {
+      held = tip_deflection(simulation);
+      simulation.apply(scene.events.front());
+      released = true;
+    }
+    lowest = std::min(lowest, tip_deflection(simulation));
+  }
+  ASSERT_TRUE(released);
+  std::printf("%-8s tip deflection: free static %.5f m (fem %.5f), lowest after the release %.5f (%.2f x), "
+              "at the end %.5f\n",
+              GetParam().c_str(), free, fem, lowest, lowest / free, tip_deflection(simulation));
+  EXPECT_NEAR(held, 0.0, 1e-12) << "the held tip does not move";
+  EXPECT_LT(lowest, 1.15 * free) << "no overshoot past the static deflection " << free;
+  EXPECT_NEAR(tip_deflection(simulation), free, 0.02 * std::abs(free));
+  EXPECT_NEAR(free, fem, 0.1 * std::abs(fem)) << "the methods' free cantilevers disagree";
+}
+
+TEST_P(Release, EqualsAFreshRunFromTheReleasedState) {
+  const Scene scene = load_scene(scene_file);
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  Simulation released(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  const int steps_before = 25;  // 0.1 s
+  for (int step = 0; step < steps_before; ++step) released.integrator().step(released.state());
+  released.apply(scene.events.front());
+
+  Scene free_scene = scene;
+  free_scene.dirichlet.pop_back();
+  free_scene.events.clear();
+  Simulation fresh(free_scene, geometry, GetParam(), method_named(GetParam()).factory);
+  State transferred = released.state();
+  transferred.displacement = fresh.method().transfer(released.method(), released.state().displacement);
+  transferred.velocity = fresh.method().transfer(released.method(), released.state().velocity);
+  fresh.state() = transferred;
+  for (int step = 0; step < 25; ++step) {
+    released.integrator().step(released.state());
+    fresh.integrator().step(fresh.state());
+  }
+  const Eigen::MatrixXd a = released.method().embedded_displacement(released.state().displacement);
+  const Eigen::MatrixXd b = fresh.method().embedded_displacement(fresh.state().displacement);
+  EXPECT_EQ(released.state().step, fresh.state().step);
+  EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * a.cwiseAbs().maxCoeff());
+}
+
+INSTANTIATE_TEST_SUITE_P(EveryMethod, Release, ::testing::Values("fem", "fcm", "dg", "harmonic"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace altfem
