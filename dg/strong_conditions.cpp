@@ -43,7 +43,10 @@ StrongCell strong_cell(int cell, const MonomialBasis& monomials, const std::vect
   result.combination = qr.householderQ();  // its first r columns span C's rows
   const Eigen::MatrixXd constrained_part =
       constraints_transposed.transpose() * result.combination.leftCols(result.constrained);  // C Q₁
-  result.data_map = constrained_part.completeOrthogonalDecomposition().pseudoInverse();
+  // (C Q₁)⁺ = ((C Q₁)ᵀ)⁺ᵀ: the decomposition of the wide transpose solves against an r × r
+  // identity, not against one of #faces · n rows (a cut cell's hundreds of strong facets
+  // made that cost seconds per cell).
+  result.data_map = constrained_part.transpose().completeOrthogonalDecomposition().pseudoInverse().transpose();
   return result;
 }
 

@@ -7,7 +7,7 @@ struct MfsOptions {
   /// Kernel centres per edge of a box besides its end nodes (the paper: about 3-5). The
   /// spacing this gives a box of the element's surface area is used everywhere: edges get
   /// as many samples as their length holds (a cut cell's short edges none), faces a grid
-  /// of the same spacing. 4, from accuracy against time (README, "Performance"): the
+  /// of the same spacing. 4, from accuracy against time (docs/performance.md, "The default of 4 samples per edge"): the
   /// solution a user gets does not see the sampling — the sliced bending prism's L2 and H1
   /// errors at 3-6 samples agree within 0.2% (verify_manufactured), the whole bunny's
   /// surface RMS against a fine reference within 1.7% (bench/harmonic_versus_fem.py

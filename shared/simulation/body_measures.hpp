@@ -5,6 +5,7 @@
 // ∫ρ v dV, and its kinetic plus elastic energy.
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
+#include <array>
 #include <optional>
 
 #include "shared/simulation/method_instance.hpp"
@@ -19,14 +20,25 @@ struct BodyMeasures {
   double energy = 0;                 ///< kinetic + elastic [J]
 };
 
-/// The measures of `state` in `method`'s basis; `integrator` gives the kinetic energy
-/// with the mass its scheme uses, `discretization` the elastic energy.
-BodyMeasures measure_body(const MethodInstance& method, const Discretization& discretization,
+/// What the measures need that does not change while the discretization stays (so an
+/// event measures it once): the loads of unit accelerations along x, y, z, the mass and
+/// the volume (from the method's stiffness rule, which on cut cells is costly).
+struct BodyMeasureBasis {
+  std::array<Eigen::VectorXd, 3> unit_loads;  ///< body_force(e_i), #dofs each
+  double mass = 0;
+  std::optional<double> volume;
+};
+
+BodyMeasureBasis body_measure_basis(const MethodInstance& method, const Discretization& discretization);
+
+/// The measures of `state`; `integrator` gives the kinetic energy with the mass its
+/// scheme uses, `discretization` the elastic energy.
+BodyMeasures measure_body(const BodyMeasureBasis& basis, const Discretization& discretization,
                           const TimeIntegrator& integrator, const State& state);
 
 /// summary.json's record of what an event conserved: relative changes of mass, volume
-/// and momentum (momentum relative to the larger of the two), and the energy's jump
-/// (J, and relative to the energy before when it is not zero).
+/// (absent when a method has no volume rule) and momentum (relative to the larger of the
+/// two), and the energy's jump (J, and relative to the energy before when that is not 0).
 nlohmann::json conservation_json(const BodyMeasures& before, const BodyMeasures& after);
 
 }  // namespace altfem

@@ -161,7 +161,10 @@ void Simulation::check_events() const {
   }
 }
 
-BodyMeasures Simulation::measure() const { return measure_body(*method_, *timed_, *integrator_, state_); }
+BodyMeasures Simulation::measure() {
+  if (!measure_basis_) measure_basis_ = body_measure_basis(*method_, *timed_);
+  return measure_body(*measure_basis_, *timed_, *integrator_, state_);
+}
 
 EventRecord Simulation::start_record(std::string kind, std::string target, std::string pointer,
                                      double scheduled_time) const {
@@ -177,7 +180,7 @@ EventRecord Simulation::start_record(std::string kind, std::string target, std::
   return record;
 }
 
-void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) const {
+void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) {
   record.dofs_after = timed_->dof_count();
   record.constrained_after = static_cast<long long>(timed_->constrained_dofs().size());
   record.conserved = conservation_json(before, measure());
@@ -218,6 +221,7 @@ EventRecord Simulation::rebuild() {
   // The old method and its layers stay alive until the integrator is rebound.
   const std::unique_ptr<MethodInstance> previous = std::move(method_);
   method_ = std::move(rebuilt);
+  measure_basis_.reset();
   scene_loads_ = scene_loads(scene_, geometry_, *method_, method_name_);
   std::unique_ptr<LinearSolver> solver = make_linear_solver(linear_solver_options(scene_, method_->discretization()));
   layer_discretization(std::move(solver));

@@ -5,6 +5,7 @@
 // loads), the linear solver, the integrator, the explicit stability limit and the state.
 // An event changes what it must and keeps the state, the step count and the counters.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,8 +62,9 @@ private:
   // method brings its own preconditioner).
   void layer_discretization(std::unique_ptr<LinearSolver> solver = nullptr);
   EventRecord start_record(std::string kind, std::string target, std::string pointer, double scheduled_time) const;
-  BodyMeasures measure() const;
-  void finish_record(EventRecord& record, const BodyMeasures& before) const;
+  // The body's measures now; the basis of them is measured once per method.
+  BodyMeasures measure();
+  void finish_record(EventRecord& record, const BodyMeasures& before);
 
   const Scene& scene_;
   const SceneGeometry& geometry_;
@@ -80,6 +82,7 @@ private:
   double critical_time_step_ = 0;
   double assembly_seconds_ = 0;
   double quadrature_seconds_ = 0;
+  std::optional<BodyMeasureBasis> measure_basis_;  // of method_, once an event needs it
   State state_;
 };
 

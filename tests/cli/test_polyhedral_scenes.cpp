@@ -71,13 +71,18 @@ TEST_P(PolyhedralScene, RunsWithExitZeroAndFiniteOutput) {
                                      "--set", "output/volume=false"};
   const std::string block = "discretization/" + run.method + "/";
   if (run.slice) arguments.insert(arguments.end(), {"--set", block + "slice/resolution=4"});
-  if (scene.contains("time") && !scene["time"].value("static", false))
+  if (scene.contains("time") && !scene["time"].value("static", false)) {
+    // One step; the scene's events act before it, so they run too.
     arguments.insert(arguments.end(), {"--set", "time/steps=1"});
+    for (std::size_t i = 0; i < scene.value("events", nlohmann::json::array()).size(); ++i)
+      arguments.insert(arguments.end(), {"--set", "events/" + std::to_string(i) + "/time=0"});
+  }
   const CommandResult result = run_altfem(arguments);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_GT(summary["dofs"].get<long long>(), 0);
+  EXPECT_EQ(summary["events"].size(), scene.value("events", nlohmann::json::array()).size());
   EXPECT_EQ(summary["facts"]["source"], run.slice ? "slice" : "convert");
   EXPECT_EQ(summary["options"]["discretization"][run.method]["mesh"] == "slice", run.slice);
   if (run.slice) EXPECT_GT(summary["facts"]["slicing"]["cut_pieces"].get<int>(), 0);

@@ -25,7 +25,7 @@ test::StaticSurface run(const MethodFactory& factory, std::vector<std::string> a
 }
 
 // RMS over the vertices of |u − u_reference|, relative to the bounding-box diagonal
-// (the project's surface error, docs/architecture.md "Metrics").
+// (the project's surface error, docs/conventions.md "Metrics").
 double surface_difference(const test::StaticSurface& surface, const test::StaticSurface& reference) {
   const double diagonal = (surface.vertices.colwise().maxCoeff() - surface.vertices.colwise().minCoeff()).norm();
   return std::sqrt((surface.displacement - reference.displacement).rowwise().squaredNorm().mean()) / diagonal;

@@ -7,6 +7,8 @@
 //     static solution of the free cantilever and against fem's.
 //   - The released run equals a fresh run of the free cantilever started from the state
 //     the release acted on (transferred into the fresh method's basis).
+//   - Released between static load steps, the linear cantilever ends at the free one's
+//     equilibrium.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -109,6 +111,24 @@ TEST_P(Release, EqualsAFreshRunFromTheReleasedState) {
   const Eigen::MatrixXd b = fresh.method().embedded_displacement(fresh.state().displacement);
   EXPECT_EQ(released.state().step, fresh.state().step);
   EXPECT_LT((a - b).cwiseAbs().maxCoeff(), 1e-9 * a.cwiseAbs().maxCoeff());
+}
+
+// Static load steps (time.load_steps = 4) with the release after load step 2: the
+// material is linear, so the equilibrium does not depend on the path and the last step
+// is the free cantilever's static solution.
+TEST_P(Release, BetweenStaticLoadStepsGivesTheFreeCantilever) {
+  const Scene scene = load_scene(scene_file, {parse_scene_override(R"(time={"static": true, "load_steps": 4})"),
+                                              parse_scene_override("events/0/time=2")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  Simulation simulation(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  for (int step = 1; step <= 4; ++step) {
+    simulation.state().load_factor = step / 4.0;
+    simulation.integrator().step(simulation.state());
+    EXPECT_EQ(simulation.state().step, step);
+    if (step == 2) simulation.apply(scene.events.front());
+  }
+  const double free = static_free_deflection(GetParam());
+  EXPECT_NEAR(tip_deflection(simulation), free, 1e-8 * std::abs(free));
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, Release, ::testing::Values("fem", "fcm", "dg", "harmonic"),

@@ -124,7 +124,7 @@ INSTANTIATE_TEST_SUITE_P(Fem, ManufacturedScene,
 // The other methods where their rates are clean on these meshes: fcm on the cube is its
 // uncut background grid; harmonic with MFS bases on every cell (its closed-form Hex8 cells
 // would repeat fem); dg k = 2 with its default penalty (k = 1 on hexahedra is still far
-// from its asymptotic rate at 8 cells per axis: README, "Manufactured solutions"). dg's L2
+// from its asymptotic rate at 8 cells per axis: docs/verification.md, "Manufactured solutions"). dg's L2
 // error converges faster than h³ on these uniform grids with MFEM's κ = 9 (3.37 at 4 → 8,
 // 3.48 at 6 → 12, 3.49 at 8 → 12; H1 2.06), so its L2 rate may exceed 3 by 0.5.
 INSTANTIATE_TEST_SUITE_P(OtherMethods, ManufacturedScene,

@@ -191,7 +191,7 @@ TEST(SlicedConvergence, HarmonicOnABendingPrism) {
 // of 6 samples within 2%: the basis time it saves (bench_polyhedral_element) costs the
 // solution nothing measurable. Printed with the C0 mismatch and nodal-interpolation tables
 // of verify_harmonic_continuity and verify_harmonic, it is the table the default was
-// picked from (README, "Performance").
+// picked from (docs/performance.md, "The default of 4 samples per edge").
 TEST(SlicedConvergence, HarmonicErrorAgainstSamplesPerEdge) {
   const std::filesystem::path scene = test::write_bending_scene(output_folder());
   const int default_samples = harmonic::MfsOptions{}.edge_samples;

@@ -1,0 +1,87 @@
+// `altfem run` with events (docs/scene-schema.md, "Events"): a release is a line of
+// log.txt and an entry of summary.json, the frames go on after it, and a release a
+// method cannot carry out is one line of bad input before anything is written.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "tests/cli/cli_support.hpp"
+
+namespace altfem::test {
+namespace {
+
+const std::string held_cantilever = "tests/verify/events/scenes/held_cantilever.json";
+
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  std::ifstream in(folder / "summary.json");
+  return nlohmann::json::parse(in);
+}
+
+std::string read_text(const std::filesystem::path& file) {
+  std::stringstream text;
+  text << std::ifstream(file).rdbuf();
+  return text.str();
+}
+
+TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
+  const auto out = fresh_directory("events-release") / "run";
+  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(),
+                                  "--set", "time/steps=30", "--set", "output/every=10"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json summary = read_summary(out);
+  ASSERT_EQ(summary["events"].size(), 1u);
+  const nlohmann::json& event = summary["events"][0];
+  EXPECT_EQ(event["kind"], "release");
+  EXPECT_EQ(event["target"], "tip");
+  EXPECT_EQ(event["pointer"], "/events/0");
+  EXPECT_EQ(event["step"], 25);  // the first step boundary at or after 0.1 s with dt = 0.004 s
+  EXPECT_EQ(event["dofs"]["before"], event["dofs"]["after"]);
+  EXPECT_GT(event["constrained_dofs"]["before"].get<int>(), event["constrained_dofs"]["after"].get<int>());
+  EXPECT_EQ(event["seconds"]["integration"], 0.0);
+  EXPECT_EQ(event["conserved"]["mass_change"], 0.0);
+  EXPECT_EQ(event["conserved"]["energy_jump_j"], 0.0);
+  const std::string log = read_text(out / "log.txt");
+  EXPECT_NE(log.find("# event release 'tip' at t = 0.1 after step 25"), std::string::npos) << log;
+  // Frames 0, 10, 20, 30: the volume collection lists four.
+  const std::string volume = read_text(out / "volume.pvd");
+  std::size_t frames = 0;
+  for (std::size_t at = volume.find("<DataSet"); at != std::string::npos; at = volume.find("<DataSet", at + 1)) ++frames;
+  EXPECT_EQ(frames, 4u);
+  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
+  EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
+}
+
+TEST(Events, AWeakConditionCannotBeReleased) {
+  const auto out = fresh_directory("events-weak") / "run";
+  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "dg", "--out", out.string(),
+                                  "--set", "discretization/dg/conditions=weak"});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  const auto lines = lines_of(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("/events/0/release: cannot release 'tip'"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("weakly"), std::string::npos) << lines[0];
+  EXPECT_FALSE(std::filesystem::exists(out)) << "bad input wrote output";
+}
+
+TEST(Events, StaticLoadStepsWithAReleaseBetweenThem) {
+  const auto out = fresh_directory("events-static") / "run";
+  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(),
+                                  "--set", R"(time={"static": true, "load_steps": 4})", "--set", "events/0/time=2"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json summary = read_summary(out);
+  EXPECT_EQ(summary["steps"], 4);
+  ASSERT_EQ(summary["events"].size(), 1u);
+  EXPECT_EQ(summary["events"][0]["step"], 2);
+  // The load factor is the log's time: 0.25, 0.5, then the release, then 0.75 and 1.
+  std::istringstream log(read_text(out / "log.txt"));
+  std::vector<std::string> rows;
+  for (std::string line; std::getline(log, line);)
+    if (!line.empty() && line[0] != '#') rows.push_back(line.substr(0, line.find(' ', line.find(' ') + 1)));
+    else if (line.rfind("# event", 0) == 0) rows.push_back("event");
+  EXPECT_EQ(rows, (std::vector<std::string>{"1 0.25", "2 0.5", "event", "3 0.75", "4 1"}));
+}
+
+}  // namespace
+}  // namespace altfem::test
