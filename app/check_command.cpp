@@ -7,7 +7,7 @@
 #include "app/method_registry.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
-#include "shared/simulation/surface_traction.hpp"
+#include "shared/simulation/simulation.hpp"
 
 namespace altfem::cli {
 
@@ -41,10 +41,10 @@ nlohmann::json geometry_facts(const SceneGeometry& geometry) {
 // ∫ 1 dV = (interpolant of e_x)ᵀ · body_force(e_x) / ρ through its own quadrature
 // (the isoparametric volume of a curved mesh, the cut cells' volume of an embedded one).
 nlohmann::json method_facts(const Scene& scene, const SceneGeometry& geometry, const MethodDescription& method) {
-  const std::unique_ptr<MethodInstance> instance = method.factory(scene, geometry);
-  // Integrated as `run` integrates it: a load region that holds no triangle of the
-  // loaded surface is rejected here too.
-  (void)surface_traction_load(scene, geometry.bounds, *instance);
+  // Built as `run` builds it, so what `run` refuses is refused here too: a load region
+  // that holds no triangle of the loaded surface, an event the method cannot carry out.
+  const Simulation simulation(scene, geometry, std::string(method.scene_block.name), method.factory, method.rebuild);
+  const MethodInstance* instance = &simulation.method();
   const Eigen::Vector3d unit_x = Eigen::Vector3d::UnitX();
   const Eigen::VectorXd ones = instance->interpolate([&](const Eigen::Vector3d&) { return unit_x; });
   const double mass = ones.dot(instance->discretization().body_force(unit_x));

@@ -7,10 +7,13 @@
 
 #include "app/commands.hpp"
 #include "app/compare_command.hpp"
+#include "app/method_registry.hpp"
 #include "shared/common/error.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"altfem: elastic solids with alternative discretizations on identical scenes"};
+  std::string method_list;  // the registry's, so a new method needs no edit here
+  for (const std::string& name : altfem::cli::available_methods()) method_list += (method_list.empty() ? "" : ", ") + name;
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Show help for every subcommand");
 
@@ -27,7 +30,7 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "Simulate a scene with one method");
   std::string run_scene, method, output;
   run->add_option("scene", run_scene, "Scene file (JSON)")->required();
-  run->add_option("--method", method, "Discretization: fem, fcm, dg or harmonic")->required();
+  run->add_option("--method", method, "Discretization: " + method_list)->required();
   run->add_option("--out", output, "Output folder (default out/<scene>-<method>)");
   std::vector<std::string> overrides;
   run->add_option("--set", overrides, "KEY=VALUE: set the scene's JSON pointer KEY to VALUE (JSON, else a string)")
@@ -80,9 +83,10 @@ int main(int argc, char** argv) {
   std::string mesh_scene;
   altfem::cli::MeshCommandOptions mesh_options;
   mesh->add_option("scene", mesh_scene, "Scene file (JSON)")->required();
-  mesh->add_option("--method", mesh_options.method, "dg, harmonic, fem or fcm")->required();
+  mesh->add_option("--method", mesh_options.method, "Discretization: " + method_list)->required();
   mesh->add_option("--source", mesh_options.source,
-                   "dg/harmonic mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the geometry); "
+                   "polyhedral methods' mesh source: convert (the fem mesh, cell by cell) or slice (a grid cut by the "
+                   "geometry); "
                    "default: the mesh of the method's scene block, as run builds it");
   mesh->add_option("--resolution", mesh_options.resolution,
                    "--source slice: grid cells along the geometry's longest side (default 16)");

@@ -16,6 +16,7 @@
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/fem/mesh_previews.hpp"
 #include "shared/material/material.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/mls_embedding.hpp"
@@ -402,8 +403,9 @@ std::unique_ptr<MethodInstance> make_dg_method(const Scene& scene, const SceneGe
 const MethodDescription& dg_method() {
   static const MethodDescription method{
       dg_scene_block(), make_dg_method, "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra",
-      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
-        return std::make_unique<DgMethod>(scene, geometry, &method_mesh_as<PolyhedralSceneMesh>(mesh, "dg"));
+      rebuild_on_handed_mesh<DgMethod, PolyhedralSceneMesh>("dg"),
+      [](const Scene& scene, const SceneGeometry& geometry, const MeshPreviewOptions& options) {
+        return polyhedral_mesh_preview("dg", scene, geometry, dg_spec(scene).mesh, options);
       }};
   return method;
 }

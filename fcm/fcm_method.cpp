@@ -1,6 +1,7 @@
 #include "fcm/fcm_method.hpp"
 
 #include <chrono>
+#include <cstdio>
 #include <optional>
 
 #include "fcm/cell_pieces.hpp"
@@ -11,6 +12,7 @@
 #include "fcm/piece_dirichlet.hpp"
 #include "fcm/piece_mesh.hpp"
 #include "fcm/region_cut_check.hpp"
+#include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -165,6 +167,32 @@ private:
   double quadrature_seconds_ = 0;
 };
 
+// The kept background cells with their volume fractions and quadrature points, built as
+// `run` builds them (the cut-cell rules included).
+MeshPreview fcm_mesh_preview(const Scene& scene, const SceneGeometry& geometry, const MeshPreviewOptions& options) {
+  if (!options.source.empty())
+    throw InputError("--source " + options.source + ": fcm's mesh is its background grid (no --source)");
+  const FcmMethod method(scene, geometry, nullptr);
+  MeshPreview preview;
+  preview.grid = method.volume_grid(Eigen::VectorXd::Zero(method.discretization().dof_count()));
+  preview.facts = method.facts();
+  preview.facts["elements"] = method.element_counts();
+  preview.facts["quadrature_points"] = method.quadrature_points();
+  preview.warnings = method.warnings();
+  const nlohmann::json& cells = preview.facts["cells"];
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "fcm mesh of '%s': %s background grid, %d inside, %d cut, %d discarded, %d outside cells (%d split "
+                "into pieces); %lld quadrature points (cut cells: %lld -> %lld)\n",
+                scene.name.c_str(), preview.facts["background_resolution"].dump().c_str(), cells["inside"].get<int>(),
+                cells["cut"].get<int>(), cells["discarded"].get<int>(), cells["outside"].get<int>(),
+                cells["split"].get<int>(), preview.facts["quadrature_points"].get<long long>(),
+                preview.facts["cut_cell_points"]["initial"].get<long long>(),
+                preview.facts["cut_cell_points"]["final"].get<long long>());
+  preview.summary = text;
+  return preview;
+}
+
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_fcm_method(const Scene& scene, const SceneGeometry& geometry) {
@@ -174,9 +202,8 @@ std::unique_ptr<MethodInstance> make_fcm_method(const Scene& scene, const SceneG
 const MethodDescription& fcm_method() {
   static const MethodDescription method{
       fcm_scene_block(), make_fcm_method, "finite cell method: Lagrange background grid, exact cut-cell quadrature",
-      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
-        return std::make_unique<FcmMethod>(scene, geometry, &method_mesh_as<FcmMesh>(mesh, "fcm"));
-      }};
+      rebuild_on_handed_mesh<FcmMethod, FcmMesh>("fcm"),
+      fcm_mesh_preview};
   return method;
 }
 

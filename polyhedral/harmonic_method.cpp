@@ -1,7 +1,6 @@
 #include "polyhedral/harmonic_method.hpp"
 
 #include <chrono>
-#include <stdexcept>
 #include <string>
 
 #include "polyhedral/harmonic_basis_cache.hpp"
@@ -11,6 +10,7 @@
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/warped_linear_discretization.hpp"
 #include "shared/common/error.hpp"
+#include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
 #include "shared/simulation/embedded_surface.hpp"
@@ -164,8 +164,9 @@ std::unique_ptr<MethodInstance> make_harmonic_method(const Scene& scene, const S
 const MethodDescription& harmonic_method() {
   static const MethodDescription method{
       harmonic_scene_block(), make_harmonic_method, "harmonic-basis polyhedral FEM (MFS bases, Martin et al. 2008)",
-      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
-        return std::make_unique<HarmonicMethod>(scene, geometry, &method_mesh_as<PolyhedralSceneMesh>(mesh, "harmonic"));
+      rebuild_on_handed_mesh<HarmonicMethod, PolyhedralSceneMesh>("harmonic"),
+      [](const Scene& scene, const SceneGeometry& geometry, const MeshPreviewOptions& options) {
+        return polyhedral_mesh_preview("harmonic", scene, geometry, harmonic_spec(scene).mesh, options);
       }};
   return method;
 }

@@ -37,22 +37,29 @@ int threads() { return omp_get_max_threads(); }
 
 }  // namespace
 
-WarpedLinearDiscretization::WarpedLinearDiscretization(DiscretizationParts parts, Eigen::MatrixX3d rest_positions)
-    : materials_(parts.materials), rest_(std::move(rest_positions)) {
+namespace warped_linear {
+
+LinearPart::LinearPart(DiscretizationParts parts) : materials(parts.materials) {
   if (!parts.terms.empty())
     throw std::invalid_argument("WarpedLinearDiscretization: extra energy terms are not warped");
-  for (const Material* material : materials_)
+  for (const Material* material : materials)
     if (material == nullptr || !material->is_linear())
       throw std::invalid_argument("WarpedLinearDiscretization: every material must be linear");
-  if (rest_.rows() < parts.elements.basis_count())
+  linear = std::make_unique<TabulatedDiscretization>(std::move(parts));
+}
+
+}  // namespace warped_linear
+
+WarpedLinearDiscretization::WarpedLinearDiscretization(DiscretizationParts parts, Eigen::MatrixX3d rest_positions)
+    : LinearPart(std::move(parts)), ForwardingDiscretization(*linear), rest_(std::move(rest_positions)) {
+  const TabulatedElements& elements = linear->elements();
+  if (rest_.rows() < elements.basis_count())
     throw std::invalid_argument("WarpedLinearDiscretization: a rest position is needed for every basis function");
-  linear_ = std::make_unique<TabulatedDiscretization>(std::move(parts));
-  const TabulatedElements& elements = linear_->elements();
   stiffness_.resize(static_cast<size_t>(elements.size()));
   node_masses_.resize(static_cast<size_t>(elements.size()));
   parallel::for_each_index(static_cast<size_t>(elements.size()), threads(), [&](size_t e) {
     const ElementView element = elements[static_cast<int>(e)];
-    stiffness_[e] = rest_stiffness(element, *materials_[element.material]);
+    stiffness_[e] = rest_stiffness(element, *materials[element.material]);
     node_masses_[e] = node_masses(element);
   });
   colors_ = color_elements(elements);
@@ -66,7 +73,7 @@ WarpedLinearDiscretization::WarpedLinearDiscretization(DiscretizationParts parts
 WarpedLinearDiscretization::~WarpedLinearDiscretization() = default;
 
 void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u) const {
-  const TabulatedElements& elements = linear_->elements();
+  const TabulatedElements& elements = linear->elements();
   parallel::for_each_index(static_cast<size_t>(elements.size()), threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
     const ElementView element = elements[e];
@@ -95,7 +102,7 @@ void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u) const {
 
 double WarpedLinearDiscretization::energy(const Eigen::VectorXd& u) const {
   warp(u);
-  const TabulatedElements& elements = linear_->elements();
+  const TabulatedElements& elements = linear->elements();
   // In element order: the total does not depend on the thread count.
   double total = 0;
   for (long long i = 0; i < 3 * elements.basis_offset(elements.size()); ++i)
@@ -105,7 +112,7 @@ double WarpedLinearDiscretization::energy(const Eigen::VectorXd& u) const {
 
 void WarpedLinearDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
   warp(u);
-  const TabulatedElements& elements = linear_->elements();
+  const TabulatedElements& elements = linear->elements();
   gradient.setZero(dof_count());
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
@@ -119,8 +126,8 @@ void WarpedLinearDiscretization::gradient(const Eigen::VectorXd& u, Eigen::Vecto
 void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian,
                                          bool /*project_spd*/) const {
   warp(u);
-  const TabulatedElements& elements = linear_->elements();
-  const BlockSparsity& sparsity = linear_->assembler().sparsity();
+  const TabulatedElements& elements = linear->elements();
+  const BlockSparsity& sparsity = linear->assembler().sparsity();
   std::fill(hessian.valuePtr(), hessian.valuePtr() + hessian.nonZeros(), 0.0);
   const int* outer = hessian.outerIndexPtr();
   double* values = hessian.valuePtr();
@@ -144,7 +151,7 @@ void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::Sparse
 
 Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::VectorXd& u) const {
   warp(u);
-  const TabulatedElements& elements = linear_->elements();
+  const TabulatedElements& elements = linear->elements();
   Eigen::MatrixXd stresses(elements.size(), 9);
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
@@ -154,7 +161,7 @@ Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::V
     double volume = 0;
     for (int q = 0; q < element.point_count(); ++q) {
       const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + z.transpose() * element.gradients_at(q);
-      sum += element.weights[q] * materials_[element.material]->pk1(F);
+      sum += element.weights[q] * materials[element.material]->pk1(F);
       volume += element.weights[q];
     }
     const Eigen::Matrix3d mean = rotations_[e] * (sum / volume) * rotations_[e].transpose();

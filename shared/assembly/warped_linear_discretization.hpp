@@ -21,15 +21,27 @@
 // step that halves the residual). At u = 0 the Hessian is the linear stiffness K, and the
 // semi-implicit step (one Newton iteration) is Müller & Gross's warped step exactly.
 //
-// Everything else (mass, loads, Dirichlet data) is the linear discretization's.
+// Everything else (mass, loads, Dirichlet data) is the linear discretization's: the
+// forwarding base hands it on.
 #include <memory>
 #include <vector>
 
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/solve/forwarding_discretization.hpp"
 
 namespace altfem {
 
-class WarpedLinearDiscretization final : public Discretization {
+namespace warped_linear {
+// The linear discretization the warping rotates, built (and its parts checked) before
+// the forwarding base that refers to it.
+struct LinearPart {
+  explicit LinearPart(DiscretizationParts parts);
+  std::vector<const Material*> materials;
+  std::unique_ptr<TabulatedDiscretization> linear;
+};
+}  // namespace warped_linear
+
+class WarpedLinearDiscretization final : private warped_linear::LinearPart, public ForwardingDiscretization {
 public:
   /// parts: elements of a nodal basis (basis function a is the node at rest_positions.row(a)),
   /// every material linear (Material::is_linear), no extra energy terms; rest_positions:
@@ -37,43 +49,25 @@ public:
   WarpedLinearDiscretization(DiscretizationParts parts, Eigen::MatrixX3d rest_positions);
   ~WarpedLinearDiscretization() override;
 
-  int dof_count() const override { return linear_->dof_count(); }
   double energy(const Eigen::VectorXd& u) const override;
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
   /// Σ_e R_e K_e R_eᵀ; already positive semi-definite, so project_spd changes nothing.
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
-  const Eigen::SparseMatrix<double>& hessian_pattern() const override { return linear_->hessian_pattern(); }
   bool hessian_is_constant() const override { return false; }
   /// A force model: the "energy" is a line-search merit only (see the class comment).
   bool forces_have_potential() const override { return false; }
-  const Eigen::SparseMatrix<double>& mass_matrix() const override { return linear_->mass_matrix(); }
-  const ExplicitMass& explicit_mass() const override { return linear_->explicit_mass(); }
-  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
-    return linear_->body_force(acceleration);
-  }
-  Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override {
-    return linear_->explicit_body_force(acceleration);
-  }
-  Eigen::VectorXd external_force(double time) const override { return linear_->external_force(time); }
-  const std::vector<int>& constrained_dofs() const override { return linear_->constrained_dofs(); }
-  const std::vector<ConstraintHolders>& constraint_holders() const override { return linear_->constraint_holders(); }
-  Eigen::VectorXd prescribed_displacement(double time) const override {
-    return linear_->prescribed_displacement(time);
-  }
   /// Per element R_e σ̄(z_e) R_eᵀ: the linear stress of the corotated displacement averaged
   /// over the element's points, turned back into the deformed frame (#elements × 9, row-major).
   Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& u) const override;
 
   /// R_e of every element for the displacement u (#elements).
   std::vector<Eigen::Matrix3d> rotations(const Eigen::VectorXd& u) const;
-  const TabulatedElements& elements() const { return linear_->elements(); }
+  const TabulatedElements& elements() const { return linear->elements(); }
 
 private:
   // R_e into rotations_, z_e into corotated_ and K_e z_e into stiffness_forces_.
   void warp(const Eigen::VectorXd& u) const;
 
-  std::unique_ptr<TabulatedDiscretization> linear_;
-  std::vector<const Material*> materials_;
   Eigen::MatrixX3d rest_;
   std::vector<Eigen::MatrixXd> stiffness_;  // per element K_e, 3n × 3n, local DOF 3a+i
   std::vector<Eigen::VectorXd> node_masses_;  // per element the shape-matching masses (n)

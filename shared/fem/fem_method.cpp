@@ -1,12 +1,12 @@
 #include "shared/fem/fem_method.hpp"
 
 #include <chrono>
-#include <stdexcept>
 
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/lagrange_surface_lift.hpp"
+#include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
@@ -88,9 +88,8 @@ std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneG
 const MethodDescription& fem_method() {
   static const MethodDescription method{
       fem_scene_block(), make_fem_method, "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)",
-      [](const Scene& scene, const SceneGeometry& geometry, const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
-        return std::make_unique<FemMethod>(scene, geometry, &method_mesh_as<VolumeMesh>(mesh, "fem"));
-      }};
+      rebuild_on_handed_mesh<FemMethod, VolumeMesh>("fem"),
+      fem_mesh_preview};
   return method;
 }
 

@@ -19,6 +19,7 @@
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/surface_lift.hpp"
 #include "shared/simulation/field_quadrature.hpp"
+#include "shared/simulation/mesh_preview.hpp"
 #include "shared/simulation/method_mesh.hpp"
 #include "shared/solve/discretization.hpp"
 
@@ -86,13 +87,30 @@ using MethodFactory = std::function<std::unique_ptr<MethodInstance>(const Scene&
 using MethodRebuilder =
     std::function<std::unique_ptr<MethodInstance>(const Scene&, const SceneGeometry&, const MethodMesh&)>;
 
+/// The rebuild of a method whose constructor takes (scene, geometry, const Mesh* handed):
+/// the handed MethodMesh read back as its Mesh.
+template <class Method, class Mesh>
+MethodRebuilder rebuild_on_handed_mesh(const char* method_name) {
+  return [method_name](const Scene& scene, const SceneGeometry& geometry,
+                       const MethodMesh& mesh) -> std::unique_ptr<MethodInstance> {
+    return std::make_unique<Method>(scene, geometry, &method_mesh_as<Mesh>(mesh, method_name));
+  };
+}
+
+/// The method's mesh as `altfem mesh` shows it (mesh_preview.hpp); throws InputError for
+/// options the method does not have (a source it cannot build).
+using MeshPreviewBuilder =
+    std::function<MeshPreview(const Scene&, const SceneGeometry&, const MeshPreviewOptions&)>;
+
 /// What a method registers (app/method_registry.cpp): its scene block, its factory,
-/// one line for `altfem info`, and its rebuild from a mesh (events that change the mesh).
+/// one line for `altfem info`, its rebuild from a mesh (events that change the mesh) and
+/// its mesh preview.
 struct MethodDescription {
   MethodSceneBlock scene_block;
   MethodFactory factory;
   std::string_view summary;
   MethodRebuilder rebuild = {};
+  MeshPreviewBuilder mesh_preview = {};
 };
 
 }  // namespace altfem

@@ -155,6 +155,9 @@ void Simulation::check_events() const {
     released |= condition_bit(event.condition);
     try {
       const ReleasedConditions check(discretization, released);
+      if (scene_.time.is_static && check.constrained_dofs().empty())
+        throw std::invalid_argument("nothing would hold the body afterwards, and a static problem has no equilibrium "
+                                    "without a support");
     } catch (const std::invalid_argument& error) {
       throw InputError(input_message(scene_.file.string(), key, "cannot release '" + condition.name + "': " + error.what()));
     }

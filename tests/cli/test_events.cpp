@@ -65,6 +65,20 @@ TEST(Events, AWeakConditionCannotBeReleased) {
   EXPECT_FALSE(std::filesystem::exists(out)) << "bad input wrote output";
 }
 
+TEST(Events, AStaticSceneCannotReleaseItsLastSupport) {
+  const auto out = fresh_directory("events-last-support") / "run";
+  const auto result = run_altfem(
+      {"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(), "--set",
+       R"(time={"static": true, "load_steps": 2})", "--set",
+       R"(events=[{"time": 0, "release": "tip"}, {"time": 1, "release": "clamp"}])"});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  const auto lines = lines_of(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("/events/1/release: cannot release 'clamp': nothing would hold the body"), std::string::npos)
+      << lines[0];
+  EXPECT_FALSE(std::filesystem::exists(out)) << "bad input wrote output";
+}
+
 TEST(Events, StaticLoadStepsWithAReleaseBetweenThem) {
   const auto out = fresh_directory("events-static") / "run";
   const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(),

@@ -9,10 +9,12 @@
 //     the release acted on (transferred into the fresh method's basis).
 //   - Released between static load steps, the linear cantilever ends at the free one's
 //     equilibrium.
+//   - transfer() onto a finer mesh reproduces the polynomials of the basis.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include "app/method_registry.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -129,6 +131,35 @@ TEST_P(Release, BetweenStaticLoadStepsGivesTheFreeCantilever) {
   }
   const double free = static_free_deflection(GetParam());
   EXPECT_NEAR(tip_deflection(simulation), free, 1e-8 * std::abs(free));
+}
+
+// transfer() onto a finer mesh of the same box (each cell of the coarse mesh split in
+// eight) reproduces a field of the basis' polynomial degree exactly: a nodal basis
+// evaluates the old field at its new nodes (a node where an old one was keeps its value
+// bit for bit), dg restricts each parent polynomial to its children. The field is
+// quadratic for the quadratic bases (fem and fcm Hex20, dg k = 2) and affine for
+// harmonic's trilinear cells.
+TEST_P(Release, TransferToAFinerMeshReproducesTheBasisPolynomials) {
+  const std::string block = GetParam() == "harmonic" ? "discretization/harmonic/convert/" : "discretization/" + GetParam() + "/";
+  const auto build = [&](const std::string& resolution) {
+    return load_scene(scene_file, {parse_scene_override(block + "resolution=" + resolution)});
+  };
+  const Scene coarse_scene = build("[10, 1, 1]"), fine_scene = build("[20, 2, 2]");
+  const SceneGeometry geometry = load_scene_geometry(coarse_scene);
+  const MethodDescription& method = method_named(GetParam());
+  const std::unique_ptr<MethodInstance> coarse = method.factory(coarse_scene, geometry);
+  const std::unique_ptr<MethodInstance> fine = method.factory(fine_scene, geometry);
+  const bool quadratic = GetParam() != "harmonic";
+  const auto field = [quadratic](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    const Eigen::Vector3d affine(0.01 * x.x() - 0.02 * x.z(), 0.03 * x.y() + 0.001, -0.02 * x.x() + 0.01 * x.y());
+    return quadratic ? Eigen::Vector3d(affine + Eigen::Vector3d(0.05 * x.x() * x.x(), 0.02 * x.x() * x.z(), 0.04 * x.y() * x.z()))
+                     : affine;
+  };
+  const Eigen::VectorXd transferred = fine->transfer(*coarse, coarse->interpolate(field));
+  const Eigen::VectorXd expected = fine->interpolate(field);
+  ASSERT_EQ(transferred.size(), expected.size());
+  EXPECT_GT(expected.size(), coarse->interpolate(field).size());
+  EXPECT_LT((transferred - expected).cwiseAbs().maxCoeff(), 1e-12 * expected.cwiseAbs().maxCoeff());
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, Release, ::testing::Values("fem", "fcm", "dg", "harmonic"),
