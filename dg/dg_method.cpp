@@ -181,6 +181,12 @@ public:
     quadrature.strength = strength;
     return quadrature;
   }
+  /// The cells' exact volumes (polyhedron moments), without tabulating a rule.
+  std::optional<double> volume() const override {
+    double volume = 0;
+    for (int cell = 0; cell < system_->cell_count(); ++cell) volume += system_->volume(cell);
+    return volume;
+  }
   std::shared_ptr<const MethodMesh> mesh() const override {
     PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_}, .surface = surface_.surface, .load_surface = surface_.load_surface,
                              .facts = mesh_facts_, .converted = std::nullopt};

@@ -21,12 +21,7 @@ BodyMeasureBasis body_measure_basis(const MethodInstance& method, const Discreti
   for (int i = 0; i < 3; ++i) basis.unit_loads[i] = discretization.body_force(Eigen::Vector3d::Unit(i));
   const Eigen::VectorXd unit_x = method.interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX(); });
   basis.mass = unit_x.dot(basis.unit_loads[0]);
-  if (const std::optional<FieldQuadrature> quadrature = method.field_quadrature(0)) {
-    double volume = 0;
-    for (int e = 0; e < quadrature->elements->size(); ++e)
-      for (double weight : (*quadrature->elements)[e].weights) volume += weight;
-    basis.volume = volume;
-  }
+  basis.volume = method.volume();
   return basis;
 }
 

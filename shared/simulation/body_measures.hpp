@@ -22,7 +22,7 @@ struct BodyMeasures {
 
 /// What the measures need that does not change while the discretization stays (so an
 /// event measures it once): the loads of unit accelerations along x, y, z, the mass and
-/// the volume (from the method's stiffness rule, which on cut cells is costly).
+/// the volume (MethodInstance::volume).
 struct BodyMeasureBasis {
   std::array<Eigen::VectorXd, 3> unit_loads;  ///< body_force(e_i), #dofs each
   double mass = 0;

@@ -74,6 +74,9 @@ public:
   virtual Eigen::VectorXd transfer(const MethodInstance& /*previous*/, const Eigen::VectorXd& /*field*/) const {
     throw std::logic_error("this method cannot transfer a field from an earlier discretization");
   }
+  /// ∫ dV over the domain the method integrates (what events must conserve): by default
+  /// the weights of field_quadrature(0); nullopt for a method without it.
+  virtual std::optional<double> volume() const;
   /// Method-specific facts for summary.json (e.g. embedding distances).
   virtual nlohmann::json facts() const { return nlohmann::json::object(); }
   /// What the user should know about this discretization of the scene (one line each),
