@@ -42,6 +42,10 @@ TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   EXPECT_EQ(event["seconds"]["integration"], 0.0);
   EXPECT_EQ(event["conserved"]["mass_change"], 0.0);
   EXPECT_EQ(event["conserved"]["energy_jump_j"], 0.0);
+  // Counted honestly across the release: the pattern is the same (no second analysis),
+  // the eliminated matrix is not (one more factorisation of the linear material).
+  EXPECT_EQ(summary["counts"]["analyses"], 1);
+  EXPECT_EQ(summary["counts"]["factorisations"], 2);
   const std::string log = read_text(out / "log.txt");
   EXPECT_NE(log.find("# event release 'tip' at t = 0.1 after step 25"), std::string::npos) << log;
   // Frames 0, 10, 20, 30: the volume collection lists four.
