@@ -115,15 +115,6 @@ std::vector<std::string> parse_record(const std::string& text, std::size_t& at) 
 
 }  // namespace
 
-const std::vector<std::string>& result_columns() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> list;
-    for (const auto& [name, member] : columns()) list.push_back(name);
-    return list;
-  }();
-  return names;
-}
-
 void write_results_csv(const std::filesystem::path& file, const std::vector<RunRecord>& records) {
   std::string text;
   for (const auto& [name, member] : columns()) {

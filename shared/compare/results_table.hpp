@@ -9,9 +9,6 @@
 
 namespace altfem {
 
-/// The header of results.csv, in column order (docs/architecture.md, "altfem compare").
-const std::vector<std::string>& result_columns();
-
 /// Writes the table atomically. Numbers are written with 17 significant digits
 /// (a round trip is exact); an unknown error (NaN) is an empty field.
 void write_results_csv(const std::filesystem::path& file, const std::vector<RunRecord>& records);

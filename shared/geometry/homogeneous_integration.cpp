@@ -40,10 +40,6 @@ Eigen::VectorXd segment_means(const Eigen::Matrix<double, D, 1>& start, const Ei
 
 }  // namespace
 
-Eigen::VectorXd segment_moments(const Eigen::Vector3d& start, const Eigen::Vector3d& end, int degree) {
-  return segment_means<3>(start, end, monomial_exponents(degree));
-}
-
 Eigen::VectorXd segment_moments_2d(const Eigen::Vector2d& start, const Eigen::Vector2d& end, int degree) {
   return segment_means<2>(start, end, monomial_exponents_2d(degree));
 }

@@ -11,11 +11,9 @@
 
 namespace altfem {
 
-/// ∫_0^1 (start + t·(end − start))^α dt for every α of degree <= `degree`, i.e. the mean
-/// of each monomial over the segment; length monomial_count(degree), monomial_index order.
-Eigen::VectorXd segment_moments(const Eigen::Vector3d& start, const Eigen::Vector3d& end, int degree);
-
-/// The same in 2D: length monomial_count_2d(degree), monomial_index_2d order.
+/// ∫_0^1 (start + t·(end − start))^α dt for every α of degree <= `degree` in 2D, i.e. the
+/// mean of each monomial over the segment; length monomial_count_2d(degree),
+/// monomial_index_2d order.
 Eigen::VectorXd segment_moments_2d(const Eigen::Vector2d& start, const Eigen::Vector2d& end, int degree);
 
 /// ∫_F x^α dσ over the planar polygon F with vertices `face` (#vertices × 3, >= 3,
