@@ -8,6 +8,7 @@
 #include "dg/dg_linear_system.hpp"
 #include "dg/dg_scene_block.hpp"
 #include "dg/dg_transfer.hpp"
+#include "dg/dg_volume_grid.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
@@ -171,7 +172,7 @@ public:
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return system_->interpolate(field);
   }
-  UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override;
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& u) const override { return dg_volume_grid(*system_, u); }
   /// The monomials at polyhedron rules of strength 2k (+ added_strength), the strength
   /// at which a nonlinear material is tabulated (the linear one integrates exactly).
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
@@ -360,45 +361,6 @@ private:
   std::unique_ptr<LagrangeBasisEvaluator> lagrange_;  // over volume_mesh_: the stitched embedding's interpolation
   double integration_seconds_ = 0;
 };
-
-// Each cell with its own copy of its nodes, displaced by its own field: the output
-// shows DG's discontinuities. Cell data "element": the cell's index.
-UnstructuredGrid DgMethod::volume_grid(const Eigen::VectorXd& u) const {
-  UnstructuredGrid grid;
-  std::vector<Eigen::Vector3d> points, displacements;
-  Eigen::MatrixXd elements(mesh_.cell_count(), 1);
-  Eigen::VectorXd phi;
-  Eigen::MatrixXd gradients;
-  std::vector<std::vector<int64_t>> faces;
-  for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
-    const Polyhedron polyhedron = system_->cell(cell);
-    const auto first = static_cast<int64_t>(points.size());
-    for (Eigen::Index v = 0; v < polyhedron.vertices.rows(); ++v) {
-      const Eigen::Vector3d x = polyhedron.vertices.row(v).transpose();
-      system_->basis(cell).evaluate(x, phi, gradients);
-      Eigen::Vector3d value = Eigen::Vector3d::Zero();
-      for (Eigen::Index a = 0; a < phi.size(); ++a) value += phi[a] * u.segment<3>(3 * (system_->offset(cell) + a));
-      points.push_back(x);
-      displacements.push_back(value);
-    }
-    faces.clear();
-    for (const auto& loop : polyhedron.faces) {
-      faces.emplace_back();
-      for (int v : loop) faces.back().push_back(first + v);
-    }
-    grid.add_polyhedron(faces);
-    elements(cell, 0) = cell;
-  }
-  grid.points.resize(static_cast<Eigen::Index>(points.size()), 3);
-  Eigen::MatrixXd displacement(grid.points.rows(), 3);
-  for (size_t p = 0; p < points.size(); ++p) {
-    grid.points.row(p) = points[p].transpose();
-    displacement.row(p) = displacements[p].transpose();
-  }
-  grid.point_data.emplace_back("displacement", std::move(displacement));
-  grid.cell_data.emplace_back("element", std::move(elements));
-  return grid;
-}
 
 }  // namespace
 
