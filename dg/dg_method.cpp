@@ -194,9 +194,9 @@ public:
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
   }
-  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+  Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);
-    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), field);
+    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), fields);
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;

@@ -24,9 +24,10 @@ bool same_cell(const DgLinearSystem& system, const DgLinearSystem& previous, int
 
 }  // namespace
 
-Eigen::VectorXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSystem& previous,
-                                  const ElementBasisEvaluator& previous_basis, const Eigen::VectorXd& field) {
-  Eigen::VectorXd result = Eigen::VectorXd::Zero(system.dof_count());
+Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSystem& previous,
+                                  const ElementBasisEvaluator& previous_basis, const Eigen::MatrixXd& fields) {
+  const Eigen::Index field_count = fields.cols();
+  Eigen::MatrixXd result = Eigen::MatrixXd::Zero(system.dof_count(), field_count);
   // The cells to project, their rules, and all their points for one embedding.
   std::vector<int> projected;
   std::vector<PolyhedronRule> rules;
@@ -35,7 +36,7 @@ Eigen::VectorXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
   for (int cell = 0; cell < system.cell_count(); ++cell) {
     const int size = 3 * system.basis(cell).size();
     if (same_cell(system, previous, cell)) {
-      result.segment(3 * system.offset(cell), size) = field.segment(3 * previous.offset(cell), size);
+      result.middleRows(3 * system.offset(cell), size) = fields.middleRows(3 * previous.offset(cell), size);
       continue;
     }
     projected.push_back(cell);
@@ -49,7 +50,11 @@ Eigen::VectorXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
     points.middleRows(row, rule.points.rows()) = rule.points;
     row += rule.points.rows();
   }
-  const Eigen::MatrixXd old_values = BasisEmbedding(previous_basis, points).displacement(field);
+  // The old fields at every point: #points × 3 per field, side by side.
+  const BasisEmbedding embedding(previous_basis, points);
+  Eigen::MatrixXd old_values(point_count, 3 * field_count);
+  for (Eigen::Index field = 0; field < field_count; ++field)
+    old_values.middleCols<3>(3 * field) = embedding.displacement(fields.col(field));
   Eigen::VectorXd phi;
   Eigen::MatrixXd gradients;
   row = 0;
@@ -57,17 +62,18 @@ Eigen::VectorXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
     const int cell = projected[i];
     const MonomialBasis& basis = system.basis(cell);
     const PolyhedronRule& rule = rules[i];
-    // M c = r: M_ab = ∫ φ_a φ_b, r_a = ∫ φ_a u_old (one column per component).
+    // M c = r: M_ab = ∫ φ_a φ_b, r_a = ∫ φ_a u_old (a column per component of each field).
     Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(basis.size(), basis.size());
-    Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(basis.size(), 3);
+    Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(basis.size(), 3 * field_count);
     for (Eigen::Index q = 0; q < rule.points.rows(); ++q, ++row) {
       basis.evaluate(rule.points.row(q).transpose(), phi, gradients);
       mass.noalias() += rule.weights[q] * phi * phi.transpose();
       moments.noalias() += rule.weights[q] * phi * old_values.row(row);
     }
-    const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3
+    const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3·#fields
     for (int a = 0; a < basis.size(); ++a)
-      result.segment<3>(3 * (system.offset(cell) + a)) = coefficients.row(a).transpose();
+      for (Eigen::Index field = 0; field < field_count; ++field)
+        result.block<3, 1>(3 * (system.offset(cell) + a), field) = coefficients.block<1, 3>(a, 3 * field).transpose();
   }
   return result;
 }

@@ -120,9 +120,9 @@ public:
   std::shared_ptr<const MethodMesh> mesh() const override {
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{background_, resolution_, embedded_});
   }
-  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+  Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FcmMethod&>(previous);
-    return transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), field);
+    return transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
   }
   /// The stiffness rules at any requested strength: cut cells' rules are simplified to
   /// match the moments up to that strength only (§4), so no stronger rule is at hand. The

@@ -119,9 +119,9 @@ public:
                             .facts = mesh_facts_,
                             .converted = std::nullopt});
   }
-  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+  Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
-    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), field);
+    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = surface_.facts();

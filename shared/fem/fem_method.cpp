@@ -58,9 +58,9 @@ public:
   }
   nlohmann::json facts() const override { return surface_.facts(); }
   std::shared_ptr<const MethodMesh> mesh() const override { return std::make_shared<MeshOf<VolumeMesh>>(mesh_); }
-  Eigen::VectorXd transfer(const MethodInstance& previous, const Eigen::VectorXd& field) const override {
+  Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FemMethod&>(previous);
-    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), field);
+    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
   }
   /// The stiffness rule's tabulation, or every cell re-tabulated at the stronger rule.
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {

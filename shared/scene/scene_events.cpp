@@ -7,6 +7,17 @@
 
 namespace altfem {
 
+namespace {
+
+// The index of the condition called `name` among the resolved conditions, or −1.
+int condition_named(const nlohmann::json& conditions, const std::string& name) {
+  for (std::size_t i = 0; i < conditions.size(); ++i)
+    if (conditions[i].contains("name") && conditions[i]["name"].get<std::string>() == name) return static_cast<int>(i);
+  return -1;
+}
+
+}  // namespace
+
 namespace scene_schema {
 
 using nlohmann::json;
@@ -28,13 +39,6 @@ void check_condition_names(const Validator& validator, const json& conditions) {
 }
 
 namespace {
-
-// The index of the condition called `name`, or −1.
-int condition_named(const json& conditions, const std::string& name) {
-  for (std::size_t i = 0; i < conditions.size(); ++i)
-    if (conditions[i].contains("name") && conditions[i]["name"].get<std::string>() == name) return static_cast<int>(i);
-  return -1;
-}
 
 std::string known_names(const json& conditions) {
   std::string names;
@@ -94,10 +98,7 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     result.time = event["time"].get<double>();
     result.pointer = "/events/" + std::to_string(i);
     result.kind = EventKind::release;
-    const std::string name = event["release"].get<std::string>();
-    for (std::size_t c = 0; c < conditions.size(); ++c)
-      if (conditions[c].contains("name") && conditions[c]["name"].get<std::string>() == name)
-        result.condition = static_cast<int>(c);
+    result.condition = condition_named(conditions, event["release"].get<std::string>());
     events.push_back(std::move(result));
   }
   std::stable_sort(events.begin(), events.end(),

@@ -65,13 +65,14 @@ public:
   /// What the method was built on, for an event to hand back to its rebuild (the
   /// MethodDescription's); null for a method that cannot rebuild.
   virtual std::shared_ptr<const MethodMesh> mesh() const { return nullptr; }
-  /// A field of `previous` — an instance of the same method before an event, its
-  /// coefficients `field` (#dofs of previous: a displacement or a velocity) — as
-  /// coefficients in this basis (docs/architecture.md, "Events"): nodal bases evaluate
-  /// the old field at their nodes, and a node that did not move keeps its value bit for
-  /// bit; DG restricts each parent polynomial to its children. Only methods with a
-  /// rebuild implement it.
-  virtual Eigen::VectorXd transfer(const MethodInstance& /*previous*/, const Eigen::VectorXd& /*field*/) const {
+  /// Fields of `previous` — an instance of the same method before an event, their
+  /// coefficients the columns of `fields` (#dofs of previous × #fields: the displacement,
+  /// the velocity) — as coefficients in this basis (#dofs × #fields; docs/architecture.md,
+  /// "Events"): nodal bases evaluate the old fields at their nodes, and a node that did
+  /// not move keeps its values bit for bit; DG restricts each parent polynomial to its
+  /// children. The fields share one location of the new nodes or points in the old
+  /// mesh. Only methods with a rebuild implement it.
+  virtual Eigen::MatrixXd transfer(const MethodInstance& /*previous*/, const Eigen::MatrixXd& /*fields*/) const {
     throw std::logic_error("this method cannot transfer a field from an earlier discretization");
   }
   /// ∫ dV over the domain the method integrates (what events must conserve): by default

@@ -6,33 +6,34 @@
 
 namespace altfem {
 
-Eigen::VectorXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
-                                  const ElementBasisEvaluator& previous, const Eigen::VectorXd& field) {
+Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
+                                  const ElementBasisEvaluator& previous, const Eigen::MatrixXd& fields) {
   if (nodes.rows() == previous_nodes.rows() && nodes.cols() == previous_nodes.cols() && nodes == previous_nodes)
-    return field;
-  // Old nodes by exact position; a position held by several (fcm's node copies of
-  // topology-aware cells) is left to the basis, which knows the pieces.
+    return fields;
+  // Old nodes by exact position, −1 where several share one (fcm's node copies of
+  // topology-aware cells): those are left to the basis, which knows the pieces.
   std::map<std::array<double, 3>, Eigen::Index> old_node;
-  std::map<std::array<double, 3>, int> copies;
   for (Eigen::Index node = 0; node < previous_nodes.rows(); ++node) {
-    const std::array<double, 3> position{previous_nodes(node, 0), previous_nodes(node, 1), previous_nodes(node, 2)};
-    old_node[position] = node;
-    ++copies[position];
+    const auto [entry, inserted] =
+        old_node.emplace(std::array<double, 3>{previous_nodes(node, 0), previous_nodes(node, 1), previous_nodes(node, 2)}, node);
+    if (!inserted) entry->second = -1;
   }
-  Eigen::VectorXd result(3 * nodes.rows());
+  Eigen::MatrixXd result(3 * nodes.rows(), fields.cols());
   std::vector<Eigen::Index> moved;
   for (Eigen::Index node = 0; node < nodes.rows(); ++node) {
-    const std::array<double, 3> position{nodes(node, 0), nodes(node, 1), nodes(node, 2)};
-    const auto found = old_node.find(position);
-    if (found != old_node.end() && copies[position] == 1) result.segment<3>(3 * node) = field.segment<3>(3 * found->second);
+    const auto found = old_node.find({nodes(node, 0), nodes(node, 1), nodes(node, 2)});
+    if (found != old_node.end() && found->second >= 0) result.middleRows<3>(3 * node) = fields.middleRows<3>(3 * found->second);
     else moved.push_back(node);
   }
   if (moved.empty()) return result;
   Eigen::MatrixXd points(static_cast<Eigen::Index>(moved.size()), 3);
   for (std::size_t i = 0; i < moved.size(); ++i) points.row(static_cast<Eigen::Index>(i)) = nodes.row(moved[i]);
-  const Eigen::MatrixXd values = BasisEmbedding(previous, points).displacement(field);
-  for (std::size_t i = 0; i < moved.size(); ++i)
-    result.segment<3>(3 * moved[i]) = values.row(static_cast<Eigen::Index>(i)).transpose();
+  const BasisEmbedding embedding(previous, points);
+  for (Eigen::Index column = 0; column < fields.cols(); ++column) {
+    const Eigen::MatrixXd values = embedding.displacement(fields.col(column));
+    for (std::size_t i = 0; i < moved.size(); ++i)
+      result.block<3, 1>(3 * moved[i], column) = values.row(static_cast<Eigen::Index>(i)).transpose();
+  }
   return result;
 }
 

@@ -17,13 +17,13 @@ namespace altfem {
 Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
                                      const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field);
 
-/// A field of a nodal basis before an event (its nodes `previous_nodes`, #old nodes × 3,
-/// evaluated through `previous`; coefficients `field`, 3 × #old nodes) in the nodal basis
-/// of `nodes` (#nodes × 3): a node at the position of exactly one old node takes that
-/// node's values bit for bit, any other the old field at its position
-/// (docs/architecture.md, "Events").
-Eigen::VectorXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
-                                  const ElementBasisEvaluator& previous, const Eigen::VectorXd& field);
+/// Fields of a nodal basis before an event (its nodes `previous_nodes`, #old nodes × 3,
+/// evaluated through `previous`; coefficients the columns of `fields`, 3·#old nodes ×
+/// #fields) in the nodal basis of `nodes` (#nodes × 3; the result 3·#nodes × #fields): a
+/// node at the position of exactly one old node takes that node's values bit for bit,
+/// any other the old fields at its position (docs/architecture.md, "Events").
+Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
+                                  const ElementBasisEvaluator& previous, const Eigen::MatrixXd& fields);
 
 /// Adds the point data "displacement" (#points × 3) of nodal coefficients u (3 × #points).
 void add_nodal_displacement(UnstructuredGrid& grid, const Eigen::VectorXd& displacement);

@@ -215,9 +215,12 @@ EventRecord Simulation::rebuild() {
   quadrature_seconds_ += rebuilt->quadrature_seconds();
 
   start = std::chrono::steady_clock::now();
+  Eigen::MatrixXd fields(state_.displacement.size(), 2);
+  fields << state_.displacement, state_.velocity;
+  const Eigen::MatrixXd moved = rebuilt->transfer(*method_, fields);
   State transferred = state_;
-  transferred.displacement = rebuilt->transfer(*method_, state_.displacement);
-  transferred.velocity = rebuilt->transfer(*method_, state_.velocity);
+  transferred.displacement = moved.col(0);
+  transferred.velocity = moved.col(1);
   record.seconds.transfer = seconds_since(start);
 
   start = std::chrono::steady_clock::now();

@@ -109,7 +109,7 @@ std::string_view integration_scheme_name(IntegrationScheme kind) {
 
 TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolver& linear_solver,
                                IntegratorOptions options)
-    : discretization_(&discretization), linear_solver_(&linear_solver), options_(options) {
+    : linear_solver_(&linear_solver), options_(options) {
   rebind(discretization);
 }
 
@@ -120,9 +120,10 @@ void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* 
   elimination_ = std::make_unique<DirichletElimination>(discretization.hessian_pattern(), discretization.constrained_dofs());
   newton_ = std::make_unique<NewtonSolver>(*linear_solver_, discretization.hessian_pattern(), *elimination_);
   gravity_force_ = discretization.body_force(options_.gravity);
-  const Eigen::Vector3d representative =
-      options_.gravity.norm() > 0 ? options_.gravity : Eigen::Vector3d::Ones().eval();
-  absolute_tolerance_ = options_.tolerance * elimination_->free_norm(discretization.body_force(representative));
+  // The representative load: gravity's, else that of 1 m/s² along each axis.
+  const Eigen::VectorXd representative =
+      options_.gravity.norm() > 0 ? gravity_force_ : discretization.body_force(Eigen::Vector3d::Ones());
+  absolute_tolerance_ = options_.tolerance * elimination_->free_norm(representative);
   if (!(absolute_tolerance_ > 0))
     throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
 }

@@ -83,7 +83,7 @@ private:
   StepReport step_symplectic(State& state);
   StepReport step_lbfgs(State& state);
 
-  const Discretization* discretization_;
+  const Discretization* discretization_ = nullptr;
   LinearSolver* linear_solver_;
   IntegratorOptions options_;
   std::unique_ptr<DirichletElimination> elimination_;
