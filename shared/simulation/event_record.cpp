@@ -12,6 +12,7 @@ nlohmann::json EventRecord::json() const {
                         {"step", step},
                         {"dofs", {{"before", dofs_before}, {"after", dofs_after}}},
                         {"constrained_dofs", {{"before", constrained_before}, {"after", constrained_after}}},
+                        {"quadrature_points", {{"before", quadrature_points_before}, {"after", quadrature_points_after}}},
                         {"seconds",
                          {{"geometry", seconds.geometry},
                           {"integration", seconds.integration},

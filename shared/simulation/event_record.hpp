@@ -25,6 +25,7 @@ struct EventRecord {
   int step = 0;               ///< the steps done before it acted
   long long dofs_before = 0, dofs_after = 0;
   long long constrained_before = 0, constrained_after = 0;
+  long long quadrature_points_before = 0, quadrature_points_after = 0;
   EventPhases seconds;
   nlohmann::json conserved;  ///< conservation_json (body_measures.hpp)
 

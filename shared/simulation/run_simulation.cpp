@@ -193,7 +193,6 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["dofs"] = simulation.discretization().dof_count();
   summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();
   summary["elements"] = method.element_counts();
-  const long long initial_points = method.quadrature_points();
   const BlasInfo blas = loaded_blas();
   summary["environment"] = {{"threads", omp_get_max_threads()}, {"blas", blas.implementation}};
   if (is_reference_blas(blas))
@@ -260,7 +259,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
                           {"solve", statistics.solve_seconds},
                           {"total", total}};
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
-  summary["quadrature_points"] = {{"initial", initial_points}, {"final", simulation.method().quadrature_points()}};
+  summary["quadrature_points"] = simulation.method().quadrature_points();
   summary["steps"] = steps_done;
   summary["newton_iterations"] = newton_iterations;
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;

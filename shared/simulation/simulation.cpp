@@ -180,12 +180,14 @@ EventRecord Simulation::start_record(std::string kind, std::string target, std::
   record.step = state_.step;
   record.dofs_before = timed_->dof_count();
   record.constrained_before = static_cast<long long>(timed_->constrained_dofs().size());
+  record.quadrature_points_before = method_->quadrature_points();
   return record;
 }
 
 void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) {
   record.dofs_after = timed_->dof_count();
   record.constrained_after = static_cast<long long>(timed_->constrained_dofs().size());
+  record.quadrature_points_after = method_->quadrature_points();
   record.conserved = conservation_json(before, measure());
 }
 

@@ -38,6 +38,8 @@ TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   EXPECT_EQ(event["pointer"], "/events/0");
   EXPECT_EQ(event["step"], 25);  // the first step boundary at or after 0.1 s with dt = 0.004 s
   EXPECT_EQ(event["dofs"]["before"], event["dofs"]["after"]);
+  EXPECT_EQ(event["quadrature_points"]["before"], summary["quadrature_points"]);  // nothing re-integrated
+  EXPECT_EQ(event["quadrature_points"]["after"], summary["quadrature_points"]);
   EXPECT_GT(event["constrained_dofs"]["before"].get<int>(), event["constrained_dofs"]["after"].get<int>());
   for (const char* phase : {"geometry", "integration", "pattern", "transfer"})
     EXPECT_GE(event["seconds"][phase].get<double>(), 0.0) << phase;
