@@ -10,6 +10,7 @@
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/warped_linear_discretization.hpp"
 #include "shared/common/error.hpp"
+#include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 #include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
@@ -118,6 +119,10 @@ public:
                             .load_surface = surface_.load_surface,
                             .facts = mesh_facts_,
                             .converted = std::nullopt});
+  }
+  std::string cut_refusal() const override { return ""; }
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "harmonic");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);

@@ -9,16 +9,10 @@
 #include <Eigen/Core>
 #include <vector>
 
+#include "shared/mesh/cutting_plane.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 namespace altfem {
-
-/// The plane through `point` with normal `normal` (not necessarily unit, non-zero). Its
-/// positive side is where `normal` points.
-struct CuttingPlane {
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
-};
 
 struct PolyhedralCut {
   PolyhedralMesh mesh;           ///< the cut mesh, its geometry computed

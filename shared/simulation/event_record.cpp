@@ -20,6 +20,7 @@ nlohmann::json EventRecord::json() const {
                           {"transfer", seconds.transfer}}},
                         {"conserved", conserved}};
   if (!pointer.empty()) result["pointer"] = pointer;
+  if (!facts.is_null()) result["facts"] = facts;
   return result;
 }
 
@@ -31,6 +32,7 @@ std::string EventRecord::log_line() const {
        << ", constrained " << constrained_before << " -> " << constrained_after << "; seconds: geometry "
        << seconds.geometry << ", integration " << seconds.integration << ", pattern " << seconds.pattern
        << ", transfer " << seconds.transfer;
+  if (!facts.is_null()) line << "; " << facts.dump();
   if (conserved.is_object())
     line << "; mass change " << conserved.value("mass_change", 0.0) << ", energy jump "
          << conserved.value("energy_jump_j", 0.0) << " J";
