@@ -15,6 +15,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   PolyhedralSceneMesh result = mesh;
   result.sliced.mesh = std::move(cut.mesh);
   result.converted.reset();
+  result.node_sources = std::move(cut.node_sources);
   return result;
 }
 

@@ -37,6 +37,11 @@ struct Blade {
 
 // Each node of `cell` on or behind the plane of each of its faces (the plane of three
 // non-collinear nodes of the face, whose loop is counter-clockwise seen from outside).
+// Not a side decision of the cut, a check that its two-piece construction applies.
+// A piece of an earlier cut has rounded nodes, so its faces are planar only to round-off:
+// a node counts as behind a face up to this fraction of the face's size.
+constexpr double convexity_tolerance = 1e-10;
+
 bool is_convex(const PolyhedralMesh& mesh, int cell, const std::vector<int>& cell_nodes) {
   for (const int face : mesh.cell_faces[cell]) {
     std::vector<int> loop = mesh.faces[face];
@@ -45,8 +50,12 @@ bool is_convex(const PolyhedralMesh& mesh, int cell, const std::vector<int>& cel
     for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
       const Eigen::Vector3d b = mesh.nodes.row(loop[k]), c = mesh.nodes.row(loop[k + 1]);
       if (collinear(a, b, c)) continue;
+      const Eigen::Vector3d normal = (b - a).cross(c - a);
+      const double allowed = convexity_tolerance * normal.norm() * std::max((b - a).norm(), (c - a).norm());
       for (const int node : cell_nodes)
-        if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0) return false;
+        if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0 &&
+            (mesh.nodes.row(node).transpose() - a).dot(normal) > allowed)
+          return false;
       break;
     }
   }
@@ -60,7 +69,10 @@ class CutBuilder {
 public:
   CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane) : mesh_(mesh), blade_(plane) {
     nodes_.reserve(mesh.nodes.rows());
-    for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) nodes_.push_back(mesh.nodes.row(n));
+    for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
+      nodes_.push_back(mesh.nodes.row(n));
+      sources_.push_back({static_cast<int>(n), static_cast<int>(n), 0.0});
+    }
     // A node closer to the blade than this is taken on it, so no piece is thinner
     // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
     // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
@@ -141,6 +153,7 @@ private:
     // may round to 0 for a node a hair off the blade).
     const double t = dp != dq ? std::clamp(dp / (dp - dq), 0.0, 1.0) : 0.5;
     nodes_.push_back(p + t * (q - p));
+    sources_.push_back({key.first, key.second, t});
     side_.push_back(0);
     const int node = static_cast<int>(nodes_.size()) - 1;
     crossings_.emplace(key, node);
@@ -248,6 +261,7 @@ private:
       if (sides_using[node] != 3) continue;
       copy_of[node] = static_cast<int>(nodes_.size());
       nodes_.push_back(nodes_[node]);
+      sources_.push_back(sources_[node]);
       ++duplicated;
     }
     PolyhedralCut cut;
@@ -273,6 +287,7 @@ private:
     }
     compute_polyhedral_geometry(result);
     cut.parent_cell = parent_;
+    cut.node_sources = std::move(sources_);
     cut.crossed_cells = crossed_count_;
     cut.separated_faces = separated_;
     cut.duplicated_nodes = duplicated;
@@ -283,6 +298,7 @@ private:
   const PolyhedralMesh& mesh_;
   const Blade blade_;
   std::vector<Eigen::Vector3d> nodes_;  ///< the input's, then the crossing nodes, then the copies
+  std::vector<NodeSource> sources_;     ///< per node of nodes_
   std::vector<int> side_;               ///< per node of nodes_ before the copies: −1, 0, +1
   std::vector<bool> crossed_;
   std::vector<int> cell_sigma_;   ///< the side of an uncrossed cell (+1 when it has no node off the blade)

@@ -14,9 +14,20 @@
 
 namespace altfem {
 
+/// Where a node of a cut mesh comes from: (1 − weight) × input node `first` + weight ×
+/// input node `second` — an input node (itself, weight 0), the copy of one on the blade,
+/// or a crossing node on the edge (first, second). A nodal field carried through this is
+/// exact wherever the basis is linear along edges, and never confuses the copies of a
+/// node that an earlier cut duplicated (they share a position).
+struct NodeSource {
+  int first = 0, second = 0;
+  double weight = 0;
+};
+
 struct PolyhedralCut {
   PolyhedralMesh mesh;           ///< the cut mesh, its geometry computed
   std::vector<int> parent_cell;  ///< #cells of `mesh`: the cell of the input it lies in
+  std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
   int crossed_cells = 0;         ///< input cells split into two pieces
   int separated_faces = 0;       ///< interior input faces in the plane, now two boundary faces
   int duplicated_nodes = 0;      ///< nodes on the plane given a copy for the negative side

@@ -7,6 +7,9 @@
 //   - A cut through cells of a swinging cantilever splits exactly the crossed cells,
 //     conserves volume and mass to round-off, and dg's transfer (each piece keeps its
 //     parent's polynomial) conserves momentum; the run goes on.
+//   - A second cut along the faces through the first cut's blade keeps apart the node
+//     copies the first made (they share positions): harmonic's transfer follows each
+//     node's sources, so nothing moves and the energy does not jump.
 //   - The piece cut off falls freely: nothing holds it and its internal forces sum to
 //     zero, so each backward-Euler step adds exactly m g dt to its momentum.
 #include <gtest/gtest.h>
@@ -17,6 +20,7 @@
 
 #include "app/method_registry.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
 
 namespace altfem {
@@ -121,6 +125,30 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
     EXPECT_NEAR(after.momentum_z - before.momentum_z, before.mass * g * dt, 1e-6 * before.mass * std::abs(g) * dt)
         << "step " << step;
     before = after;
+  }
+}
+
+TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
+  const Scene scene = load_scene(
+      scenes / "cantilever_cut.json",
+      {parse_scene_override("events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
+                            "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named(GetParam());
+  Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
+  simulation.apply(scene.events.at(0));
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());  // the pieces move apart
+  const EventRecord second = simulation.apply(scene.events.at(1));
+  EXPECT_LE(std::abs(second.conserved["volume_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(second.conserved["mass_change"].get<double>()), 1e-12);
+  if (GetParam() == "harmonic") {  // y = 0.05 is a plane of its grid's faces: nothing is interpolated
+    EXPECT_EQ(second.facts["crossed_cells"], 0);
+    EXPECT_LE(std::abs(second.conserved["energy_jump_relative"].get<double>()), 1e-12);
+    EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
+  } else {  // it crosses every dg cell; each piece keeps its parent's polynomial
+    EXPECT_EQ(second.facts["crossed_cells"], 11);
+    EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
   }
 }
 
