@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cstdlib>
 #include <map>
 #include <random>
 
@@ -137,14 +138,17 @@ double clipped_cube_volume(const CuttingPlane& plane) {
 }
 
 // Seeded planes of every degenerate kind: through nodes with axis, diagonal and random
-// normals, nearly parallel to faces, grazing a node, and anywhere: 200 per mesh.
+// normals, nearly parallel to faces, grazing a node, and anywhere: 200 per mesh, or
+// ALTFEM_CUT_PLANES per mesh (docs/verification.md gives the full count's run).
 TEST(CutPolyhedralMesh, SeededPlanesGiveClosedPiecesOfPositiveVolumeOnEveryKindOfMesh) {
   std::mt19937_64 random(20261127);
   std::uniform_real_distribution<double> unit(0.0, 1.0), symmetric(-1.0, 1.0);
   const auto random_vector = [&] { return Eigen::Vector3d(symmetric(random), symmetric(random), symmetric(random)); };
+  const char* requested = std::getenv("ALTFEM_CUT_PLANES");
+  const int trials = requested ? std::atoi(requested) : 200;
   for (const ElementType type : {ElementType::tet4, ElementType::hex8}) {
     const PolyhedralMesh mesh = unit_cube(type, 3);
-    for (int trial = 0; trial < 200; ++trial) {
+    for (int trial = 0; trial < trials; ++trial) {
       const Eigen::Vector3d node = mesh.nodes.row(static_cast<Eigen::Index>(unit(random) * (mesh.nodes.rows() - 1)));
       const Eigen::Vector3d axis = Eigen::Vector3d::Unit(trial % 3);
       CuttingPlane plane;
