@@ -18,11 +18,15 @@ struct ConditioningRow {
   int none_iterations, jacobi_iterations, schwarz_iterations;
 };
 
-/// One row per smallest volume fraction 2^-k. The material is the paper's E = 3e6,
-/// ν = 0.4 as its published code effectively ran it (λ four times too small: E = 2.679e6,
-/// ν = 0.25; see docs). Any Lagrange cell: hexahedra get exact box rules, tetrahedra
-/// intersection rules. Dense eigenvalues: minutes for Hex20 over many k. ghost_penalty:
-/// γ of FcmOptions::ghost_penalty (0: off), the remedy compared with the paper's.
+/// The material of the experiment: the paper's E = 3e6 Pa, ν = 0.4 as its published code
+/// effectively ran it, with λ four times too small (docs/scenes.md, "Material parameters").
+inline constexpr double conditioning_youngs_modulus = 2.679e6;  ///< Pa
+inline constexpr double conditioning_poisson_ratio = 0.25;
+
+/// One row per smallest volume fraction 2^-k, for the material above. Any Lagrange cell:
+/// hexahedra get exact box rules, tetrahedra intersection rules. Three dense eigenvalue
+/// problems per row: seconds per row for Tet10's 2,000 free DOFs. ghost_penalty: γ of
+/// FcmOptions::ghost_penalty (0: off), the remedy compared with the paper's.
 std::vector<ConditioningRow> conditioning_experiment(ElementType cell, const std::vector<int>& exponents,
                                                      double stabilization, double ghost_penalty = 0);
 
