@@ -110,6 +110,7 @@ void measure_errors(std::vector<RunRecord>& records, const std::filesystem::path
         const SurfaceError error = surface_error(surface_of(record), reference_frame);
         record.rms_error = error.rms;
         record.max_error = error.max;
+        record.relative_rms_error = error.relative_rms;
       } catch (const std::exception& error) {
         record.message = std::string("no surface error: ") + error.what();
       }

@@ -25,7 +25,7 @@ int run_command(const std::filesystem::path& scene_file, const std::string& meth
       output_directory.empty() ? std::filesystem::path("out") / (scene.name + "-" + method) : output_directory;
   check_output_folder(out);  // before any work: a bad --out is bad input (exit 2), not an internal error
   const double loading = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const nlohmann::json summary = run_simulation(scene, geometry, method, description.factory, out, loading);
+  const nlohmann::json summary = run_simulation(scene, geometry, method, description, out, loading);
   std::printf("%s with %s: %lld DOFs, %d steps, %lld Newton iterations, %.3f s; results in %s\n", scene.name.c_str(),
               method.c_str(), summary["dofs"].get<long long>(), summary["steps"].get<int>(),
               summary["newton_iterations"].get<long long>(), summary["timings_s"]["total"].get<double>(), out.c_str());

@@ -16,6 +16,7 @@
 #include "dg/vertex_coarse_space.hpp"
 #include "dg/warped_dg_discretization.hpp"
 #include "shared/common/error.hpp"
+#include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/mesh_previews.hpp"
 #include "shared/material/material.hpp"
@@ -193,6 +194,14 @@ public:
                              .facts = mesh_facts_, .converted = std::nullopt};
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
+  }
+  std::string cut_refusal() const override {
+    return spec_.embedding == Embedding::stitched ? "its stitched embedding interpolates with the converted mesh, which a "
+                                                    "cut no longer matches (use embedding mls or element)"
+                                                  : "";
+  }
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "dg");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);

@@ -10,6 +10,7 @@
 #include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/warped_linear_discretization.hpp"
 #include "shared/common/error.hpp"
+#include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 #include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
@@ -35,6 +36,7 @@ public:
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
+    node_sources_ = std::move(built.node_sources);
     const auto start = std::chrono::steady_clock::now();
     if (spec.cache.empty()) {
       bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
@@ -119,9 +121,22 @@ public:
                             .facts = mesh_facts_,
                             .converted = std::nullopt});
   }
+  std::string cut_refusal() const override { return ""; }
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "harmonic");
+  }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
-    return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
+    if (node_sources_.empty()) return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
+    // Cut from `before`'s mesh: each node from its sources, linear along the cut edge
+    // (Martin et al. 2008 §4: a harmonic basis is linear on the edges).
+    Eigen::MatrixXd result(3 * mesh_.nodes.rows(), fields.cols());
+    for (Eigen::Index node = 0; node < mesh_.nodes.rows(); ++node) {
+      const NodeSource& source = node_sources_[node];
+      result.middleRows<3>(3 * node) = (1 - source.weight) * fields.middleRows<3>(3 * Eigen::Index{source.first}) +
+                                       source.weight * fields.middleRows<3>(3 * Eigen::Index{source.second});
+    }
+    return result;
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = surface_.facts();
@@ -146,6 +161,7 @@ private:
   SceneMaterials materials_;
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
+  std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation

@@ -58,6 +58,7 @@ scene = {
         "sweeps": {"discretization/fem/max_cell_size": [0.4, 0.2],
                    "discretization/fcm/cell": ["hex8", "hex20"],
                    "discretization/fcm/resolution": [[4, 4, 2], [8, 8, 4]],
+                   "discretization/dg/max_cell_size": [0.4, 0.25],
                    "discretization/harmonic/convert/max_cell_size": [0.3, 0.15]},
         "reference": {"method": "fcm", "set": {"discretization/fcm/resolution": [16, 16, 8]}},
     },

@@ -3,9 +3,14 @@
 
 Usage: scripts/plot_report.py RESULTS.csv [--out DIR] [--error E]
   --out    folder for report.md and the PNGs (default: the folder of RESULTS.csv)
-  --error  the relative RMS surface error of the equal-accuracy table (default: the
-           scene's compare/error, kept in results.csv's report_error column, else the
-           smallest error every method series reaches, i.e. the largest of their minima)
+  --error  the error of the equal-accuracy table, in the measure the report ranks by
+           (default: the scene's compare/error, kept in results.csv's report_error
+           column, else the smallest error every method series reaches, i.e. the largest
+           of their minima)
+
+The report ranks by an error relative to the solution, never to the body's size: the
+relative L2 error against the scene's exact solution when every run has one, else the RMS
+surface error over the reference's RMS displacement (docs/conventions.md, "Metrics").
 """
 import argparse
 import csv
@@ -33,24 +38,59 @@ def read_rows(path):
         for key in ("dofs", "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations",
                     "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
             row[key] = number(row[key])
-        for key in ("report_error", "field_l2_error", "field_h1_error"):  # absent from older tables
+        for key in ("report_error", "relative_rms_error", "field_l2_error", "field_h1_error"):  # absent from older tables
             row[key] = number(row.get(key))
         row["series"] = f"{row['method']} {row['element']}".strip()
     return rows
 
 
-def measured(rows):
-    """Successful, non-reference runs with a finite positive error."""
-    return [r for r in rows if r["status"] == "ok" and r["is_reference"] != "1" and r["rms_error"] > 0]
+class Measure:
+    """The error the report ranks by: a results.csv column and how the report names it."""
+
+    def __init__(self, column, name, axis, against_reference):
+        self.column, self.name, self.axis = column, name, axis
+        self.against_reference = against_reference  # the reference run's own error is 0 by definition
+
+
+FIELD_ERROR = Measure("field_l2_error", "the relative L2 error against the exact solution",
+                      "relative L2 error ||u_h - u|| / ||u|| [-]", False)
+RELATIVE_SURFACE_ERROR = Measure("relative_rms_error",
+                                 "the RMS surface error relative to the reference's RMS displacement",
+                                 "RMS surface error / RMS reference displacement [-]", True)
+DIAGONAL_SURFACE_ERROR = Measure("rms_error", "the RMS surface error relative to the bounding-box diagonal",
+                                 "RMS surface error / bounding-box diagonal [-]", True)
+
+
+def ranking_measure(rows):
+    """The field error where every successful run has one (an exact solution), else the
+    surface error relative to the solution; a table from before that column: the diagonal."""
+    ok = [r for r in rows if r["status"] == "ok"]
+    if ok and all(r["field_l2_error"] > 0 for r in ok):
+        return FIELD_ERROR
+    if any(not math.isnan(r["relative_rms_error"]) for r in ok):
+        return RELATIVE_SURFACE_ERROR
+    return DIAGONAL_SURFACE_ERROR
+
+
+def measured(rows, measure):
+    """Successful runs with a finite positive error in `measure` (kept in row["error"]);
+    the reference too when the measure does not compare against it."""
+    runs = []
+    for r in rows:
+        if r["status"] != "ok" or (measure.against_reference and r["is_reference"] == "1"):
+            continue
+        if 0 < r[measure.column] < math.inf:
+            runs.append(dict(r, error=r[measure.column]))
+    return runs
 
 
 def pareto_front(rows):
     """Runs no other run beats in both wall time and error, sorted by time."""
     front, best = [], math.inf
-    for row in sorted(rows, key=lambda r: (r["total_s"], r["rms_error"])):
-        if row["rms_error"] < best:
+    for row in sorted(rows, key=lambda r: (r["total_s"], r["error"])):
+        if row["error"] < best:
             front.append(row)
-            best = row["rms_error"]
+            best = row["error"]
     return front
 
 
@@ -61,10 +101,7 @@ def series_of(rows):
     return groups
 
 
-SURFACE_ERROR = "RMS surface error / bounding-box diagonal [-]"
-
-
-def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel=SURFACE_ERROR):
+def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel):
     """Labels, grid and legend (outside, so it hides no point) of a log-log error plot; saves it."""
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
@@ -76,21 +113,21 @@ def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel=SURFACE
     plt.close(fig)
 
 
-def plot_error_vs_time(rows, path):
+def plot_error_vs_time(rows, path, measure):
     fig, ax = plt.subplots(figsize=(9, 5))
     for name, group in sorted(series_of(rows).items()):
         group = sorted(group, key=lambda r: r["dofs"])  # the line follows refinement
-        ax.loglog([r["total_s"] for r in group], [r["rms_error"] for r in group], "o-", label=name)
+        ax.loglog([r["total_s"] for r in group], [r["error"] for r in group], "o-", label=name)
     front = pareto_front(rows)
-    ax.loglog([r["total_s"] for r in front], [r["rms_error"] for r in front], "k--", lw=1, zorder=0,
+    ax.loglog([r["total_s"] for r in front], [r["error"] for r in front], "k--", lw=1, zorder=0,
               drawstyle="steps-post", label="Pareto front (circled runs:\nnone other is both faster\nand more accurate)")
-    ax.scatter([r["total_s"] for r in front], [r["rms_error"] for r in front], s=140, facecolors="none",
+    ax.scatter([r["total_s"] for r in front], [r["error"] for r in front], s=140, facecolors="none",
                edgecolors="k", zorder=3)
     finish_error_plot(fig, ax, path, "wall time of the run, total [s]", "Accuracy against cost (lower left is better)",
-                      "method, element")
+                      "method, element", measure.axis)
 
 
-def fitted_rate(group, key="rms_error"):
+def fitted_rate(group, key):
     """Slope of log(error) against log(DOFs^(1/3)) (error ~ h^rate, h ~ DOFs^(-1/3))."""
     if len(group) < 2:
         return None
@@ -99,8 +136,7 @@ def fitted_rate(group, key="rms_error"):
     return float(np.polyfit(np.log(h), np.log(e), 1)[0])
 
 
-def plot_error_vs_dofs(rows, path, key="rms_error", ylabel=SURFACE_ERROR,
-                       title="Convergence: error against DOFs (h ~ DOFs^(-1/3))"):
+def plot_error_vs_dofs(rows, path, key, ylabel, title="Convergence: error against DOFs (h ~ DOFs^(-1/3))"):
     fig, ax = plt.subplots(figsize=(9, 5))
     rates = {}
     for name, group in sorted(series_of(rows).items()):
@@ -170,7 +206,7 @@ def plot_time_breakdown(rows, path):
 
 def default_target(rows):
     """The smallest error every series reaches: the largest of the series' minima."""
-    minima = [min(r["rms_error"] for r in group) for group in series_of(rows).values()]
+    minima = [min(r["error"] for r in group) for group in series_of(rows).values()]
     return max(minima) if minima else math.nan
 
 
@@ -188,21 +224,49 @@ def per_iteration_ms(row):
     return f"{1000 * solve_seconds(row) / iterations:.3g}" if iterations > 0 else "—"
 
 
-def equal_accuracy_table(rows, target):
-    """Per series: the cheapest run with error <= target, and its time relative to the fastest."""
+def cheapest_per_series(rows, target):
+    """Per series: the cheapest run with error <= target, sorted by time."""
     best = {}
     for name, group in series_of(rows).items():
-        good = [r for r in group if r["rms_error"] <= target]
+        good = [r for r in group if r["error"] <= target]
         if good:
             best[name] = min(good, key=lambda r: r["total_s"])
+    return dict(sorted(best.items(), key=lambda item: item[1]["total_s"]))
+
+
+def findings(rows, target, measure):
+    """The report's opening two sentences, read off the equal-accuracy table."""
+    best = cheapest_per_series(rows, target)
+    if not best:
+        return f"No run reaches {measure.name} ≤ {target:.3g}."
+    series = list(best)
+    winner = best[series[0]]
+    first = f"At {measure.name} ≤ {target:.3g}, the cheapest run is {series[0]} ({winner['label']}, " \
+            f"{winner['total_s']:.3g} s)"
+    rivals = [name for name in series if best[name]["method"] != winner["method"]]
+    if rivals:
+        rival = best[rivals[0]]
+        first += f", {rival['total_s'] / winner['total_s']:.1f}× faster than the cheapest other method, " \
+                 f"{rivals[0]} ({rival['total_s']:.3g} s)."
+    else:
+        first += "; no other method reaches that accuracy."
+    missing = sorted(set(series_of(rows)) - set(best))
+    second = f"{len(best)} of {len(best) + len(missing)} method–element series reach it"
+    second += f"; {', '.join(missing)} {'does' if len(missing) == 1 else 'do'} not." if missing else "."
+    return first + " " + second
+
+
+def equal_accuracy_table(rows, target):
+    """Per series: the cheapest run with error <= target, and its time relative to the fastest."""
+    best = cheapest_per_series(rows, target)
     fastest = min((r["total_s"] for r in best.values()), default=math.nan)
-    lines = ["| method, element | cheapest configuration | DOFs | RMS error | total time [s] | per step [ms] | "
-             "per Newton iteration [ms] | relative to the fastest |",
-             "|---|---|---|---|---|---|---|---|"]
-    for name in sorted(best, key=lambda n: best[n]["total_s"]):
-        r = best[name]
-        lines.append(f"| {name} | {r['label']} | {int(r['dofs'])} | {r['rms_error']:.3g} | {r['total_s']:.3g} | "
-                     f"{per_step_ms(r)} | {per_iteration_ms(r)} | {r['total_s'] / fastest:.1f}× |")
+    lines = ["| method, element | cheapest configuration | DOFs | error | RMS surface error / diagonal | "
+             "total time [s] | per step [ms] | per Newton iteration [ms] | relative to the fastest |",
+             "|---|---|---|---|---|---|---|---|---|"]
+    for name, r in best.items():
+        lines.append(f"| {name} | {r['label']} | {int(r['dofs'])} | {r['error']:.3g} | {r['rms_error']:.3g} | "
+                     f"{r['total_s']:.3g} | {per_step_ms(r)} | {per_iteration_ms(r)} | "
+                     f"{r['total_s'] / fastest:.1f}× |")
     missing = sorted(set(series_of(rows)) - set(best))
     if missing:
         lines.append("")
@@ -212,8 +276,8 @@ def equal_accuracy_table(rows, target):
 
 def run_table(rows):
     lines = ["| run | status | exit | DOFs | elements | quadrature points | Newton | linear | total [s] | "
-             "peak memory [MiB] | RMS error | max error |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "peak memory [MiB] | RMS surface error / RMS displacement | RMS / diagonal | max / diagonal |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
 
     def cell(value, fmt):
         return "—" if math.isnan(value) else format(value, fmt)
@@ -224,32 +288,37 @@ def run_table(rows):
                      f"{cell(r['elements'], '.0f')} | {cell(r['quadrature_points'], '.0f')} | "
                      f"{cell(r['newton_iterations'], '.0f')} | {cell(r['linear_iterations'], '.0f')} | "
                      f"{cell(r['total_s'], '.3g')} | {cell(r['peak_memory_mib'], '.0f')} | "
-                     f"{cell(r['rms_error'], '.3g')} | {cell(r['max_error'], '.3g')} |")
+                     f"{cell(r['relative_rms_error'], '.3g')} | {cell(r['rms_error'], '.3g')} | "
+                     f"{cell(r['max_error'], '.3g')} |")
     return "\n".join(lines)
 
 
 def write_report(rows, out, target_arg):
     os.makedirs(out, exist_ok=True)
     first = rows[0]
-    runs = measured(rows)
+    measure = ranking_measure(rows)
+    runs = measured(rows, measure)
     reference = [r for r in rows if r["is_reference"] == "1"]
-    text = [f"# altfem compare: {first['scene']}", "",
-            f"- **Scene:** `{first['scene']}`",
-            f"- **Machine:** {first['cpu']}, {first['cores']} cores, {first['threads']} thread(s) per run, "
-            f"BLAS {first['blas']}",
-            f"- **Date:** {first['date']}",
-            f"- **Runs:** {len(rows)} ({sum(r['status'] == 'ok' for r in rows)} ok, "
-            f"{sum(r['status'] != 'ok' for r in rows)} failed)",
-            f"- **Reference:** {reference[0]['label'] if reference else 'none (no run succeeded)'}", "",
-            "Error: RMS over the embedded surface vertices of |x − x_reference| over the reference's "
-            "bounding-box diagonal (docs/conventions.md, \"Metrics\"). Time: the run's own total wall time.", ""]
+    text = [f"# altfem compare: {first['scene']}", ""]
     if runs:
-        plot_error_vs_time(runs, os.path.join(out, "error_vs_time.png"))
-        rates = plot_error_vs_dofs(runs, os.path.join(out, "error_vs_dofs.png"))
         scene_targets = [r["report_error"] for r in rows if not math.isnan(r["report_error"])]
         target = target_arg if target_arg is not None else scene_targets[0] if scene_targets else default_target(runs)
+        text += [findings(runs, target, measure), ""]
+    text += [f"- **Scene:** `{first['scene']}`",
+             f"- **Machine:** {first['cpu']}, {first['cores']} cores, {first['threads']} thread(s) per run, "
+             f"BLAS {first['blas']}",
+             f"- **Date:** {first['date']}",
+             f"- **Runs:** {len(rows)} ({sum(r['status'] == 'ok' for r in rows)} ok, "
+             f"{sum(r['status'] != 'ok' for r in rows)} failed)",
+             f"- **Reference:** {reference[0]['label'] if reference else 'none (no run succeeded)'}", "",
+             f"Error, the report ranks by: {measure.name} (docs/conventions.md, \"Metrics\"). The surface error "
+             "is the RMS over the embedded surface vertices of |x − x_reference|; over the bounding-box diagonal it "
+             "is kept as a column. Time: the run's own total wall time.", ""]
+    if runs:
+        plot_error_vs_time(runs, os.path.join(out, "error_vs_time.png"), measure)
+        rates = plot_error_vs_dofs(runs, os.path.join(out, "error_vs_dofs.png"), "error", measure.axis)
         text += ["## Accuracy against wall time", "", "![error against time](error_vs_time.png)", "",
-                 f"## Equal accuracy: RMS error ≤ {target:.3g}", "", equal_accuracy_table(runs, target), "",
+                 f"## Equal accuracy: error ≤ {target:.3g}", "", equal_accuracy_table(runs, target), "",
                  "## Error against DOFs", "", "![error against DOFs](error_vs_dofs.png)", "",
                  "Fitted rates (error ~ h^rate): " +
                  ", ".join(f"{name} {rate:.2f}" for name, rate in sorted(rates.items()) if rate is not None), ""]

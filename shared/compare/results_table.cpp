@@ -1,6 +1,8 @@
 #include "shared/compare/results_table.hpp"
 
 #include <charconv>
+#include <cmath>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <algorithm>
@@ -45,7 +47,8 @@ const std::vector<std::pair<std::string, Member>>& columns() {
       {"factorisation_s", &PhaseTimings::factorisation}, {"solve_s", &PhaseTimings::solve},
       {"total_s", &PhaseTimings::total}, {"wall_s", &RunRecord::wall_seconds},
       {"peak_memory_mib", &RunRecord::peak_memory_mib}, {"rms_error", &RunRecord::rms_error},
-      {"max_error", &RunRecord::max_error}, {"report_error", &RunRecord::report_error},
+      {"max_error", &RunRecord::max_error}, {"relative_rms_error", &RunRecord::relative_rms_error},
+      {"report_error", &RunRecord::report_error},
       {"field_l2_error", &RunRecord::field_l2_error}, {"field_h1_error", &RunRecord::field_h1_error}, {"scene", &RunRecord::scene}, {"date", &RunRecord::date},
       {"cpu", &RunRecord::cpu}, {"cores", &RunRecord::cores}, {"threads", &RunRecord::threads},
       {"blas", &RunRecord::blas}};
@@ -151,7 +154,8 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
     for (const auto& [name, member] : columns()) {
       const auto found = std::find(header.begin(), header.end(), name);
       // These came later: a cached record.csv from before them has none (NaN).
-      const bool later = name == "report_error" || name == "field_l2_error" || name == "field_h1_error";
+      const bool later = name == "report_error" || name == "field_l2_error" || name == "field_h1_error" ||
+                         name == "relative_rms_error";
       if (found == header.end() && later) continue;
       if (found == header.end()) throw InputError(input_message(where, "", "missing column '" + name + "'"));
       set_field(record, member, fields[found - header.begin()], where, name);

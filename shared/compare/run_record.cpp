@@ -12,7 +12,7 @@ void add_summary(RunRecord& record, const json& summary) {
     record.element += (record.element.empty() ? "" : "+") + type;
     record.elements += count.get<long long>();
   }
-  record.quadrature_points = summary.at("quadrature_points").at("final");
+  record.quadrature_points = summary.at("quadrature_points");
   record.steps = summary.at("steps");
   record.newton_iterations = summary.at("newton_iterations");
   record.linear_iterations = summary.at("linear_iterations");

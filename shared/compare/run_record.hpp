@@ -33,7 +33,10 @@ struct RunRecord {
   // How accurate it is: surface error against the reference run, over the reference's bounding-box diagonal.
   double rms_error = std::numeric_limits<double>::quiet_NaN();
   double max_error = std::numeric_limits<double>::quiet_NaN();
-  /// The scene's compare/error: the equal-accuracy table's target, kept in every row so
+  /// The RMS surface error over the reference's RMS displacement (SurfaceError::relative_rms).
+  double relative_rms_error = std::numeric_limits<double>::quiet_NaN();
+  /// The scene's compare/error: the equal-accuracy table's target (in the measure the
+  /// report ranks by: scripts/plot_report.py), kept in every row so
   /// that the report regenerates from results.csv alone (NaN: the report's default).
   double report_error = std::numeric_limits<double>::quiet_NaN();
   /// Against the scene's exact_displacement, when it has one (summary.json's

@@ -1,9 +1,11 @@
 #include "shared/compare/surface_error.hpp"
 
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -122,14 +124,17 @@ double rest_diagonal(const SurfaceFrame& frame) {
 }
 
 SurfaceError surface_error(const Eigen::MatrixX3d& deformed, const Eigen::MatrixX3d& reference_deformed,
-                           double diagonal) {
-  if (deformed.rows() != reference_deformed.rows())
+                           const Eigen::MatrixX3d& reference_displacement, double diagonal) {
+  if (deformed.rows() != reference_deformed.rows() || reference_displacement.rows() != reference_deformed.rows())
     throw InputError(input_message("surface", "", "expected " + std::to_string(reference_deformed.rows()) +
                                                       " vertices, got " + std::to_string(deformed.rows())));
   if (deformed.rows() == 0) throw InputError(input_message("surface", "", "expected surface vertices, got none"));
   const Eigen::VectorXd distance = (deformed - reference_deformed).rowwise().norm();
-  return {std::sqrt(distance.squaredNorm() / static_cast<double>(distance.size())) / diagonal,
-          distance.maxCoeff() / diagonal};
+  const double count = static_cast<double>(distance.size());
+  const double rms = std::sqrt(distance.squaredNorm() / count);
+  const double reference_rms = std::sqrt(reference_displacement.squaredNorm() / count);
+  return {rms / diagonal, distance.maxCoeff() / diagonal,
+          reference_rms > 0 ? rms / reference_rms : std::numeric_limits<double>::infinity()};
 }
 
 SurfaceError surface_error(const SurfaceFrame& run, const SurfaceFrame& reference) {
@@ -137,8 +142,10 @@ SurfaceError surface_error(const SurfaceFrame& run, const SurfaceFrame& referenc
   const bool same_surface = run.deformed.rows() == reference.deformed.rows() &&
                             run.triangles.rows() == reference.triangles.rows() && run.triangles == reference.triangles &&
                             (run.deformed - run.displacement).isApprox(reference.deformed - reference.displacement);
-  if (same_surface) return surface_error(run.deformed, reference.deformed, diagonal);
-  return surface_error(run.deformed, reference_at(reference, run.deformed - run.displacement), diagonal);
+  if (same_surface) return surface_error(run.deformed, reference.deformed, reference.displacement, diagonal);
+  const Eigen::MatrixX3d rest = run.deformed - run.displacement;
+  const Eigen::MatrixX3d reference_deformed = reference_at(reference, rest);
+  return surface_error(run.deformed, reference_deformed, reference_deformed - rest, diagonal);
 }
 
 }  // namespace altfem

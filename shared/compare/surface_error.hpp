@@ -16,6 +16,10 @@ struct SurfaceFrame {
 struct SurfaceError {
   double rms = 0;  ///< sqrt(mean_i |x_i − x_ref,i|²) / diagonal
   double max = 0;  ///< max_i |x_i − x_ref,i| / diagonal
+  /// sqrt(mean_i |x_i − x_ref,i|²) / sqrt(mean_i |u_ref,i|²): relative to the solution, so
+  /// that a body that barely moves does not look accurate (docs/conventions.md, "Metrics").
+  /// Infinite when the reference does not move.
+  double relative_rms = 0;
 };
 
 /// Reads the points and the "displacement" point data of a VTU written by write_vtu
@@ -33,10 +37,11 @@ Eigen::MatrixX3d reference_at(const SurfaceFrame& reference, const Eigen::Matrix
 /// The bounding-box diagonal of a frame's rest positions (deformed − displacement).
 double rest_diagonal(const SurfaceFrame& frame);
 
-/// Error of `deformed` [n × 3] against `reference_deformed` [n × 3], relative to `diagonal`.
-/// Throws InputError when the vertex counts differ.
+/// Error of `deformed` [n × 3] against `reference_deformed` [n × 3], relative to `diagonal`
+/// and to the RMS of `reference_displacement` [n × 3]. Throws InputError when the vertex
+/// counts differ.
 SurfaceError surface_error(const Eigen::MatrixX3d& deformed, const Eigen::MatrixX3d& reference_deformed,
-                           double diagonal);
+                           const Eigen::MatrixX3d& reference_displacement, double diagonal);
 
 /// A run's error against the reference: vertex by vertex on the same embedded surface,
 /// else (a different surface) against reference_at its rest vertices. Relative to the

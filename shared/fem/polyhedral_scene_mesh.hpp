@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "shared/fem/fem_scene_block.hpp"
+#include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -33,6 +34,9 @@ struct PolyhedralSceneMesh {
   /// The tet or hex mesh that was converted (its conforming basis serves dg's stitched
   /// embedding); unset when sliced.
   std::optional<VolumeMesh> converted;
+  /// After a cut: per node, the nodes of the mesh before it that it comes from (nodal
+  /// methods carry their fields through these); empty otherwise.
+  std::vector<NodeSource> node_sources;
 };
 
 /// Builds the mesh `source` describes for the scene's geometry. Throws InputError and

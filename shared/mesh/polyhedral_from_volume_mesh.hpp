@@ -7,7 +7,7 @@
 namespace altfem {
 
 /// Every cell becomes a polyhedron with its corner nodes (higher-order nodes are dropped:
-/// the cells are taken straight-sided) and its 4 triangles or 8 quadrilaterals as faces;
+/// the cells are taken straight-sided) and its 4 triangles or 6 quadrilaterals as faces;
 /// faces shared by two cells are stored once and become interior faces. Nodes used by
 /// no corner are dropped and the rest renumbered in their original order. Geometry is
 /// computed (compute_polyhedral_geometry).

@@ -13,6 +13,8 @@
 #include <string_view>
 #include <vector>
 
+#include "shared/mesh/cutting_plane.hpp"
+
 #include "shared/element/element_type.hpp"
 #include "shared/geometry/analytic_shape.hpp"
 #include "shared/scene/vector_expression.hpp"
@@ -132,8 +134,8 @@ struct TimeSpec {
   int load_steps = 1;
 };
 
-enum class EventKind { release };
-inline constexpr std::array<std::string_view, 1> event_kind_names{"release"};
+enum class EventKind { release, cut };
+inline constexpr std::array<std::string_view, 2> event_kind_names{"release", "cut"};
 
 /// One entry of `events` (docs/scene-schema.md, "events"): something that changes the
 /// scene while it runs. It acts at the first step boundary at or after `time` (dynamic
@@ -142,6 +144,7 @@ struct SceneEvent {
   double time = 0.0;
   EventKind kind = EventKind::release;
   int condition = -1;   ///< release: the index into Scene::dirichlet
+  CuttingPlane blade;   ///< cut: the plane the rest configuration is cut by
   std::string pointer;  ///< "/events/i", for messages
 };
 

@@ -71,6 +71,7 @@ void check_events(const Validator& validator, const json& resolved) {
   for (std::size_t i = 0; i < events.size(); ++i) {
     const std::string pointer = "/events/" + std::to_string(i);
     check_time_range(validator, resolved["time"], events[i]["time"].get<double>(), pointer + "/time");
+    if (!events[i].contains("release")) continue;
     const std::string name = events[i]["release"].get<std::string>();
     const int condition = condition_named(conditions, name);
     if (condition < 0)
@@ -97,8 +98,17 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     SceneEvent result;
     result.time = event["time"].get<double>();
     result.pointer = "/events/" + std::to_string(i);
-    result.kind = EventKind::release;
-    result.condition = condition_named(conditions, event["release"].get<std::string>());
+    if (event.contains("cut")) {
+      const nlohmann::json& plane = event["cut"]["plane"];
+      result.kind = EventKind::cut;
+      for (int axis = 0; axis < 3; ++axis) {
+        result.blade.point[axis] = plane["point"][axis].get<double>();
+        result.blade.normal[axis] = plane["normal"][axis].get<double>();
+      }
+    } else {
+      result.kind = EventKind::release;
+      result.condition = condition_named(conditions, event["release"].get<std::string>());
+    }
     events.push_back(std::move(result));
   }
   std::stable_sort(events.begin(), events.end(),

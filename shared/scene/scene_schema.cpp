@@ -262,9 +262,12 @@ const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                          {}, {}, {}, {}, check_compare};
 
 // `events` entries: a time and exactly one kind (cross-checked by check_events).
+const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .required = true, .object = &region_half_space}}};
+
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
-                        {.key = "release", .type = ValueType::string}},
-                       {{"release"}}};
+                        {.key = "release", .type = ValueType::string},
+                        {.key = "cut", .type = ValueType::object, .object = &cut_event}},
+                       {{"release", "cut"}}};
 
 const ObjectRule scene{
     {{.key = "name", .type = ValueType::string},

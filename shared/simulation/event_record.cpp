@@ -12,6 +12,7 @@ nlohmann::json EventRecord::json() const {
                         {"step", step},
                         {"dofs", {{"before", dofs_before}, {"after", dofs_after}}},
                         {"constrained_dofs", {{"before", constrained_before}, {"after", constrained_after}}},
+                        {"quadrature_points", {{"before", quadrature_points_before}, {"after", quadrature_points_after}}},
                         {"seconds",
                          {{"geometry", seconds.geometry},
                           {"integration", seconds.integration},
@@ -19,6 +20,7 @@ nlohmann::json EventRecord::json() const {
                           {"transfer", seconds.transfer}}},
                         {"conserved", conserved}};
   if (!pointer.empty()) result["pointer"] = pointer;
+  if (!facts.is_null()) result["facts"] = facts;
   return result;
 }
 
@@ -30,6 +32,7 @@ std::string EventRecord::log_line() const {
        << ", constrained " << constrained_before << " -> " << constrained_after << "; seconds: geometry "
        << seconds.geometry << ", integration " << seconds.integration << ", pattern " << seconds.pattern
        << ", transfer " << seconds.transfer;
+  if (!facts.is_null()) line << "; " << facts.dump();
   if (conserved.is_object())
     line << "; mass change " << conserved.value("mass_change", 0.0) << ", energy jump "
          << conserved.value("energy_jump_j", 0.0) << " J";

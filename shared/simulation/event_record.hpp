@@ -25,8 +25,10 @@ struct EventRecord {
   int step = 0;               ///< the steps done before it acted
   long long dofs_before = 0, dofs_after = 0;
   long long constrained_before = 0, constrained_after = 0;
+  long long quadrature_points_before = 0, quadrature_points_after = 0;
   EventPhases seconds;
   nlohmann::json conserved;  ///< conservation_json (body_measures.hpp)
+  nlohmann::json facts;      ///< what the event did, by kind (a cut's counts); null when nothing
 
   nlohmann::json json() const;
   /// One line for log.txt, starting with "# event" (a comment to the step table's readers).

@@ -65,6 +65,14 @@ public:
   /// What the method was built on, for an event to hand back to its rebuild (the
   /// MethodDescription's); null for a method that cannot rebuild.
   virtual std::shared_ptr<const MethodMesh> mesh() const { return nullptr; }
+  /// Why this instance cannot be cut by a scene's `cut` event (one phrase); empty when
+  /// it can. Asked before the run writes anything, so a refusal is bad input.
+  virtual std::string cut_refusal() const { return "it does not cut yet (dg and harmonic do)"; }
+  /// mesh() cut by `blade` in the rest configuration (docs/architecture.md, "Events"), for
+  /// the rebuild; `facts` receives what the cut did (counts). Only where cut_refusal() is empty.
+  virtual std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& /*blade*/, nlohmann::json& /*facts*/) const {
+    throw std::logic_error("this method cannot cut");
+  }
   /// Fields of `previous` — an instance of the same method before an event, their
   /// coefficients the columns of `fields` (#dofs of previous × #fields: the displacement,
   /// the velocity) — as coefficients in this basis (#dofs × #fields; docs/architecture.md,

@@ -21,6 +21,12 @@ Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::Mat
   Eigen::MatrixXd result(3 * nodes.rows(), fields.cols());
   std::vector<Eigen::Index> moved;
   for (Eigen::Index node = 0; node < nodes.rows(); ++node) {
+    // A node at its old index and position is that node (a cut keeps the old numbering):
+    // this tells apart the copies of a node an earlier cut duplicated, one per side.
+    if (node < previous_nodes.rows() && nodes.row(node) == previous_nodes.row(node)) {
+      result.middleRows<3>(3 * node) = fields.middleRows<3>(3 * node);
+      continue;
+    }
     const auto found = old_node.find({nodes(node, 0), nodes(node, 1), nodes(node, 2)});
     if (found != old_node.end() && found->second >= 0) result.middleRows<3>(3 * node) = fields.middleRows<3>(3 * found->second);
     else moved.push_back(node);

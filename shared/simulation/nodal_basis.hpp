@@ -20,8 +20,9 @@ Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
 /// Fields of a nodal basis before an event (its nodes `previous_nodes`, #old nodes × 3,
 /// evaluated through `previous`; coefficients the columns of `fields`, 3·#old nodes ×
 /// #fields) in the nodal basis of `nodes` (#nodes × 3; the result 3·#nodes × #fields): a
-/// node at the position of exactly one old node takes that node's values bit for bit,
-/// any other the old fields at its position (docs/architecture.md, "Events").
+/// node at its old index and position, or at the position of exactly one old node, takes
+/// that node's values bit for bit, any other the old fields at its position
+/// (docs/architecture.md, "Events").
 Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::MatrixXd& previous_nodes,
                                   const ElementBasisEvaluator& previous, const Eigen::MatrixXd& fields);
 

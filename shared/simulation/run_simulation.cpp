@@ -172,9 +172,16 @@ private:
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
                               const MethodFactory& factory, const std::filesystem::path& output_directory,
                               double setup_seconds) {
+  return run_simulation(scene, geometry, method_name, MethodDescription{.factory = factory}, output_directory,
+                        setup_seconds);
+}
+
+nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
+                              const MethodDescription& description, const std::filesystem::path& output_directory,
+                              double setup_seconds) {
   const auto start = std::chrono::steady_clock::now();
   const double loading_seconds = setup_seconds;
-  Simulation simulation(scene, geometry, method_name, factory);
+  Simulation simulation(scene, geometry, method_name, description.factory, description.rebuild);
   const MethodInstance& method = simulation.method();
   const double critical_time_step = simulation.critical_time_step();
   if (simulation.explicit_steps() && scene.time.dt > critical_time_step)
@@ -190,10 +197,6 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["scene"] = scene.name;
   summary["method"] = method_name;
   summary["options"] = scene.resolved;
-  summary["dofs"] = simulation.discretization().dof_count();
-  summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();
-  summary["elements"] = method.element_counts();
-  const long long initial_points = method.quadrature_points();
   const BlasInfo blas = loaded_blas();
   summary["environment"] = {{"threads", omp_get_max_threads()}, {"blas", blas.implementation}};
   if (is_reference_blas(blas))
@@ -260,7 +263,11 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
                           {"solve", statistics.solve_seconds},
                           {"total", total}};
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
-  summary["quadrature_points"] = {{"initial", initial_points}, {"final", simulation.method().quadrature_points()}};
+  // The discretization after the last event (each event records its own change).
+  summary["dofs"] = simulation.discretization().dof_count();
+  summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();
+  summary["elements"] = simulation.method().element_counts();
+  summary["quadrature_points"] = simulation.method().quadrature_points();
   summary["steps"] = steps_done;
   summary["newton_iterations"] = newton_iterations;
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;

@@ -22,6 +22,10 @@ namespace altfem {
 /// `setup_seconds` is the time already spent loading the scene and its geometry.
 /// Returns the summary.
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
+                              const MethodDescription& description, const std::filesystem::path& output_directory,
+                              double setup_seconds = 0);
+/// The same for a method known by its factory alone (no event that rebuilds it).
+nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
                               const MethodFactory& factory, const std::filesystem::path& output_directory,
                               double setup_seconds = 0);
 

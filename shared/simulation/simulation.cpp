@@ -138,6 +138,12 @@ void Simulation::layer_discretization(std::unique_ptr<LinearSolver> solver) {
 void Simulation::check_events() const {
   ConditionSet released = 0;
   for (const SceneEvent& event : scene_.events) {
+    if (event.kind == EventKind::cut) {
+      const std::string why = !rebuild_ ? "the run was built without the method's rebuild" : method_->cut_refusal();
+      if (!why.empty())
+        throw InputError(input_message(scene_.file.string(), event.pointer + "/cut", "cannot cut with " + method_name_ + ": " + why));
+      continue;
+    }
     const std::string key = event.pointer + "/release";
     const DirichletCondition& condition = scene_.dirichlet[event.condition];
     const Discretization& discretization = method_->discretization();
@@ -180,16 +186,19 @@ EventRecord Simulation::start_record(std::string kind, std::string target, std::
   record.step = state_.step;
   record.dofs_before = timed_->dof_count();
   record.constrained_before = static_cast<long long>(timed_->constrained_dofs().size());
+  record.quadrature_points_before = method_->quadrature_points();
   return record;
 }
 
 void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) {
   record.dofs_after = timed_->dof_count();
   record.constrained_after = static_cast<long long>(timed_->constrained_dofs().size());
+  record.quadrature_points_after = method_->quadrature_points();
   record.conserved = conservation_json(before, measure());
 }
 
 EventRecord Simulation::apply(const SceneEvent& event) {
+  if (event.kind == EventKind::cut) return cut(event);
   const DirichletCondition& condition = scene_.dirichlet[event.condition];
   EventRecord record = start_record("release", condition.name, event.pointer, event.time);
   const BodyMeasures before = measure();
@@ -209,8 +218,27 @@ EventRecord Simulation::rebuild() {
   if (!rebuild_ || !mesh) throw std::logic_error("Simulation::rebuild: the method has no rebuild");
   EventRecord record = start_record("rebuild", "", "", state_.time);
   const BodyMeasures before = measure();
+  rebuild_on(*mesh, record);
+  finish_record(record, before);
+  return record;
+}
+
+// The rest configuration cut by the blade (Kaufmann et al. 2009 §9.4, Martin et al. 2008
+// §8): the method's mesh cut, the method rebuilt on it, the state transferred.
+EventRecord Simulation::cut(const SceneEvent& event) {
+  EventRecord record = start_record("cut", "", event.pointer, event.time);
+  const BodyMeasures before = measure();
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event.blade, record.facts);
+  record.seconds.geometry = seconds_since(start);
+  rebuild_on(*mesh, record);
+  finish_record(record, before);
+  return record;
+}
+
+void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, geometry_, *mesh);
+  std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, geometry_, mesh);
   record.seconds.integration = seconds_since(start);
   quadrature_seconds_ += rebuilt->quadrature_seconds();
 
@@ -234,8 +262,6 @@ EventRecord Simulation::rebuild() {
   if (explicit_steps_) critical_time_step_ = estimate_critical_time_step(*timed_);
   state_ = std::move(transferred);
   record.seconds.pattern = seconds_since(start);
-  finish_record(record, before);
-  return record;
 }
 
 }  // namespace altfem

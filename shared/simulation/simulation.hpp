@@ -57,6 +57,9 @@ public:
 
 private:
   void check_events() const;
+  EventRecord cut(const SceneEvent& event);
+  // The method rebuilt on `mesh` and the state transferred to it (its phases into `record`).
+  void rebuild_on(const MethodMesh& mesh, EventRecord& record);
   // The layers over the method's discretization for the conditions released so far, and
   // the integrator rebound to them; with `solver`, it replaces the linear solver (a new
   // method brings its own preconditioner).

@@ -38,6 +38,8 @@ TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   EXPECT_EQ(event["pointer"], "/events/0");
   EXPECT_EQ(event["step"], 25);  // the first step boundary at or after 0.1 s with dt = 0.004 s
   EXPECT_EQ(event["dofs"]["before"], event["dofs"]["after"]);
+  EXPECT_EQ(event["quadrature_points"]["before"], summary["quadrature_points"]);  // nothing re-integrated
+  EXPECT_EQ(event["quadrature_points"]["after"], summary["quadrature_points"]);
   EXPECT_GT(event["constrained_dofs"]["before"].get<int>(), event["constrained_dofs"]["after"].get<int>());
   for (const char* phase : {"geometry", "integration", "pattern", "transfer"})
     EXPECT_GE(event["seconds"][phase].get<double>(), 0.0) << phase;
@@ -100,6 +102,31 @@ TEST(Events, StaticLoadStepsWithAReleaseBetweenThem) {
     if (!line.empty() && line[0] != '#') rows.push_back(line.substr(0, line.find(' ', line.find(' ') + 1)));
     else if (line.rfind("# event", 0) == 0) rows.push_back("event");
   EXPECT_EQ(rows, (std::vector<std::string>{"1 0.25", "2 0.5", "event", "3 0.75", "4 1"}));
+}
+
+// A cut is summarised with its counts and logged; a method that does not cut refuses it
+// before writing anything.
+TEST(Events, ACutIsSummarisedAndAMethodThatCannotCutRefusesIt) {
+  const std::string scene = source_path("tests/verify/events/scenes/cantilever_cut.json").string();
+  const auto out = fresh_directory("events-cut") / "run";
+  const auto cut = run_altfem({"run", scene, "--method", "dg", "--out", out.string()});
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  const nlohmann::json summary = read_summary(out);
+  ASSERT_EQ(summary["events"].size(), 1u);
+  const nlohmann::json& event = summary["events"][0];
+  EXPECT_EQ(event["kind"], "cut");
+  EXPECT_EQ(event["facts"]["crossed_cells"], 1);  // the plane x = 0.55 crosses one of dg's 10 cells
+  EXPECT_EQ(summary["dofs"], event["dofs"]["after"]);
+  EXPECT_EQ(summary["elements"]["k2_polyhedron"], 11);
+  for (const std::string method : {"fem", "fcm"}) {
+    const auto refused_out = fresh_directory("events-cut-" + method) / "run";
+    const auto refused = run_altfem({"run", scene, "--method", method, "--out", refused_out.string()});
+    EXPECT_EQ(refused.exit_code, 2) << refused.err;
+    const auto lines = lines_of(refused.err);
+    ASSERT_EQ(lines.size(), 1u) << refused.err;
+    EXPECT_NE(lines[0].find("/events/0/cut: cannot cut with " + method), std::string::npos) << lines[0];
+    EXPECT_FALSE(std::filesystem::exists(refused_out)) << "bad input wrote output";
+  }
 }
 
 }  // namespace

@@ -30,6 +30,7 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   ok.peak_memory_mib = 28.5;
   ok.rms_error = 1.2345678901234567e-7;
   ok.max_error = 3e-6;
+  ok.relative_rms_error = 0.1 / 3.0;
   ok.field_l2_error = 2.5e-4;
   ok.field_h1_error = 1.0 / 7.0;
   ok.scene = "cantilever";
@@ -67,6 +68,7 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
     EXPECT_EQ(back.threads, written.threads);
   }
   EXPECT_EQ(read[0].rms_error, ok.rms_error);
+  EXPECT_EQ(read[0].relative_rms_error, ok.relative_rms_error);
   EXPECT_EQ(read[0].field_l2_error, ok.field_l2_error);
   EXPECT_EQ(read[0].field_h1_error, ok.field_h1_error);
   EXPECT_TRUE(std::isnan(read[1].rms_error));

@@ -2,7 +2,9 @@
 // the transfer to a differently meshed surface, and the VTU read back from write_vtu.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 
 #include "shared/common/error.hpp"
 #include "shared/compare/surface_error.hpp"
@@ -34,7 +36,28 @@ TEST(SurfaceError, RmsAndMaxOverTheDiagonalAreExact) {
   const SurfaceError error = surface_error(run, reference);  // the same surface: vertex by vertex
   EXPECT_DOUBLE_EQ(error.rms, std::sqrt((25.0 + 1.0) / 4.0) / diagonal);
   EXPECT_DOUBLE_EQ(error.max, 5.0 / diagonal);
-  EXPECT_THROW(surface_error(Eigen::MatrixX3d::Zero(3, 3), reference.deformed, diagonal), InputError);
+  EXPECT_EQ(error.relative_rms, std::numeric_limits<double>::infinity());  // the reference does not move
+  EXPECT_THROW(surface_error(Eigen::MatrixX3d::Zero(3, 3), reference.deformed, reference.displacement, diagonal),
+               InputError);
+}
+
+TEST(SurfaceError, RelativeToTheReferencesRmsDisplacementIsExact) {
+  // The reference moves every vertex by (0, 0, 2): RMS displacement 2. The run is off by
+  // 1 at one vertex: RMS error 1/2, so 1/4 of the solution whatever the body's size.
+  Eigen::MatrixX3d u = Eigen::MatrixX3d::Zero(4, 3);
+  u.col(2).setConstant(2.0);
+  const SurfaceFrame reference = square(u);
+  u(3, 0) = 1.0;
+  EXPECT_DOUBLE_EQ(surface_error(square(u), reference).relative_rms, 0.25);
+  // On other vertices the reference's displacement is taken where they lie (linear here).
+  SurfaceFrame run;
+  run.displacement = Eigen::MatrixX3d::Zero(2, 3);
+  run.displacement.col(2).setConstant(2.0);
+  run.displacement(0, 1) = 2.0;  // off by 2 at one of two vertices: RMS error √2, relative √2 / 2
+  run.deformed = run.displacement;
+  run.deformed.row(0) += Eigen::RowVector3d(0.5, 0.5, 0.0);
+  run.deformed.row(1) += Eigen::RowVector3d(0.25, 0.75, 0.0);
+  EXPECT_NEAR(surface_error(run, reference).relative_rms, std::sqrt(2.0) / 2.0, 1e-14);
 }
 
 TEST(SurfaceError, TransfersALinearReferenceExactlyToOtherVertices) {

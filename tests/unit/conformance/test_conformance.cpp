@@ -296,6 +296,8 @@ TEST_P(Conformance, NoOpRebuildLeavesEveryDofBitIdentical) {
   EXPECT_TRUE(rebuilt.state().velocity == before.velocity);
   EXPECT_EQ(record.dofs_before, record.dofs_after);
   EXPECT_EQ(record.constrained_before, record.constrained_after);
+  EXPECT_EQ(record.quadrature_points_before, record.quadrature_points_after);
+  EXPECT_EQ(record.quadrature_points_after, rebuilt.method().quadrature_points());
   EXPECT_EQ(record.conserved["energy_jump_j"].get<double>(), 0.0);
   EXPECT_EQ(record.conserved["mass_change"].get<double>(), 0.0);
   EXPECT_EQ(record.conserved["momentum_change"].get<double>(), 0.0);

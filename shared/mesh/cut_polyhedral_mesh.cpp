@@ -1,0 +1,319 @@
+#include "shared/mesh/cut_polyhedral_mesh.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "shared/common/error.hpp"
+#include "shared/geometry/exact_orientation.hpp"
+
+namespace altfem {
+namespace {
+
+// The blade as three points on it (the user's point and two offsets along tangents), so
+// that every side decision is one exact orientation predicate against the same plane.
+// (b − a) × (c − a) points along the user's normal.
+struct Blade {
+  Eigen::Vector3d a, b, c;
+  Eigen::Vector3d normal;  ///< (b − a) × (c − a), for placing new nodes only
+
+  explicit Blade(const CuttingPlane& plane) : a(plane.point) {
+    if (!(plane.normal.squaredNorm() > 0) || !plane.normal.allFinite())
+      throw std::invalid_argument("cut_polyhedral_mesh: the plane's normal must be finite and non-zero");
+    Eigen::Index smallest = 0;
+    plane.normal.cwiseAbs().minCoeff(&smallest);
+    const Eigen::Vector3d first = plane.normal.cross(Eigen::Vector3d::Unit(smallest));
+    const Eigen::Vector3d second = plane.normal.cross(first);
+    b = a + first;
+    c = a + second;
+    normal = (b - a).cross(c - a);
+  }
+  int side(const Eigen::Vector3d& x) const { return orientation_sign(a, b, c, x); }
+};
+
+// Each node of `cell` on or behind the plane of each of its faces (the plane of three
+// non-collinear nodes of the face, whose loop is counter-clockwise seen from outside).
+// Not a side decision of the cut, a check that its two-piece construction applies.
+// A piece of an earlier cut has rounded nodes, so its faces are planar only to round-off:
+// a node counts as behind a face up to this fraction of the face's size.
+constexpr double convexity_tolerance = 1e-10;
+
+bool is_convex(const PolyhedralMesh& mesh, int cell, const std::vector<int>& cell_nodes) {
+  for (const int face : mesh.cell_faces[cell]) {
+    std::vector<int> loop = mesh.faces[face];
+    if (mesh.face_cells(face, 0) != cell) std::reverse(loop.begin(), loop.end());
+    const Eigen::Vector3d a = mesh.nodes.row(loop[0]);
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      const Eigen::Vector3d b = mesh.nodes.row(loop[k]), c = mesh.nodes.row(loop[k + 1]);
+      if (collinear(a, b, c)) continue;
+      const Eigen::Vector3d normal = (b - a).cross(c - a);
+      const double allowed = convexity_tolerance * normal.norm() * std::max((b - a).norm(), (c - a).norm());
+      for (const int node : cell_nodes)
+        if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0 &&
+            (mesh.nodes.row(node).transpose() - a).dot(normal) > allowed)
+          return false;
+      break;
+    }
+  }
+  return true;
+}
+
+// Of the mesh's bounding-box diagonal: a few hundred ulps, far below any element.
+constexpr double snap_fraction = 1e-13;
+
+class CutBuilder {
+public:
+  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane) : mesh_(mesh), blade_(plane) {
+    nodes_.reserve(mesh.nodes.rows());
+    for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
+      nodes_.push_back(mesh.nodes.row(n));
+      sources_.push_back({static_cast<int>(n), static_cast<int>(n), 0.0});
+    }
+    // A node closer to the blade than this is taken on it, so no piece is thinner
+    // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
+    // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
+    const double snap_distance = snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+    const Eigen::Vector3d unit_normal = blade_.normal.normalized();
+    side_.resize(nodes_.size());
+    for (std::size_t n = 0; n < nodes_.size(); ++n) {
+      side_[n] = blade_.side(nodes_[n]);
+      if (side_[n] != 0 && std::abs((nodes_[n] - blade_.a).dot(unit_normal)) <= snap_distance) {
+        side_[n] = 0;
+        ++snapped_;
+      }
+    }
+  }
+
+  PolyhedralCut build() {
+    classify_cells();
+    for (int face = 0; face < mesh_.face_count(); ++face) split_face(face);
+    for (int cell = 0; cell < mesh_.cell_count(); ++cell)
+      if (crossed_[cell])
+        for (const int sigma : {+1, -1}) close_cap(cell, sigma);
+    return assemble();
+  }
+
+private:
+  // A face of the cut mesh before node duplication: its loop, the pieces on its two
+  // sides (second −1 on the boundary) and the side of the blade it lies on.
+  struct Face {
+    std::vector<int> loop;
+    int first, second, sigma;
+  };
+
+  void classify_cells() {
+    const int cells = mesh_.cell_count();
+    crossed_.assign(cells, false);
+    cell_sigma_.assign(cells, +1);
+    first_piece_.resize(cells);
+    for (int cell = 0; cell < cells; ++cell) {
+      std::vector<int> cell_nodes;
+      for (const int face : mesh_.cell_faces[cell]) cell_nodes.insert(cell_nodes.end(), mesh_.faces[face].begin(), mesh_.faces[face].end());
+      std::sort(cell_nodes.begin(), cell_nodes.end());
+      cell_nodes.erase(std::unique(cell_nodes.begin(), cell_nodes.end()), cell_nodes.end());
+      bool positive = false, negative = false;
+      for (const int node : cell_nodes) {
+        positive |= side_[node] > 0;
+        negative |= side_[node] < 0;
+      }
+      crossed_[cell] = positive && negative;
+      cell_sigma_[cell] = negative && !positive ? -1 : +1;
+      first_piece_[cell] = static_cast<int>(parent_.size());
+      parent_.push_back(cell);
+      if (!crossed_[cell]) continue;
+      if (!is_convex(mesh_, cell, cell_nodes))
+        throw NumericalError("cut: the blade crosses cell " + std::to_string(cell) +
+                             ", which is not convex (cutting non-convex cells is not implemented yet)");
+      parent_.push_back(cell);
+      ++crossed_count_;
+    }
+    cap_edges_.resize(parent_.size());
+  }
+
+  // The piece of `cell` on side `sigma`: a crossed cell has two (positive first).
+  int piece(int cell, int sigma) const {
+    if (cell < 0) return -1;
+    return first_piece_[cell] + (crossed_[cell] && sigma < 0 ? 1 : 0);
+  }
+
+  // The node where the blade crosses edge (u, v), whose ends lie strictly on either side:
+  // one per edge, shared by every face that holds it.
+  int crossing_node(int u, int v) {
+    const auto key = std::minmax(u, v);
+    const auto found = crossings_.find(key);
+    if (found != crossings_.end()) return found->second;
+    const Eigen::Vector3d& p = nodes_[key.first];
+    const Eigen::Vector3d& q = nodes_[key.second];
+    const double dp = (p - blade_.a).dot(blade_.normal), dq = (q - blade_.a).dot(blade_.normal);
+    // The sides were decided exactly; these rounded distances only place the node (and
+    // may round to 0 for a node a hair off the blade).
+    const double t = dp != dq ? std::clamp(dp / (dp - dq), 0.0, 1.0) : 0.5;
+    nodes_.push_back(p + t * (q - p));
+    sources_.push_back({key.first, key.second, t});
+    side_.push_back(0);
+    const int node = static_cast<int>(nodes_.size()) - 1;
+    crossings_.emplace(key, node);
+    return node;
+  }
+
+  // The cap of a piece holds the blade edges of its faces, traversed the other way.
+  void add_cap_edges(int piece_index, const std::vector<int>& loop, bool closing_only) {
+    const std::size_t n = loop.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const int from = loop[k], to = loop[(k + 1) % n];
+      if (side_[from] != 0 || side_[to] != 0) continue;
+      if (closing_only && k + 1 != n) continue;
+      cap_edges_[piece_index].emplace(to, from);
+    }
+  }
+
+  void add_face(std::vector<int> loop, int cell0, int cell1, int sigma) {
+    const int first = piece(cell0, sigma), second = piece(cell1, sigma);
+    if (crossed_[cell0]) add_cap_edges(first, loop, false);
+    if (cell1 >= 0 && crossed_[cell1]) {
+      std::vector<int> reversed(loop.rbegin(), loop.rend());
+      add_cap_edges(second, reversed, false);
+    }
+    faces_.push_back({std::move(loop), first, second, sigma});
+  }
+
+  void split_face(int face) {
+    const std::vector<int>& loop = mesh_.faces[face];
+    const int cell0 = mesh_.face_cells(face, 0), cell1 = mesh_.face_cells(face, 1);
+    bool positive = false, negative = false;
+    for (const int node : loop) {
+      positive |= side_[node] > 0;
+      negative |= side_[node] < 0;
+    }
+    if (!positive && !negative) {  // in the blade: an interior face separates
+      if (cell1 < 0) {
+        add_face(loop, cell0, -1, cell_sigma_[cell0]);
+        return;
+      }
+      ++separated_;
+      add_face(loop, cell0, -1, cell_sigma_[cell0]);
+      add_face(std::vector<int>(loop.rbegin(), loop.rend()), cell1, -1, cell_sigma_[cell1]);
+      return;
+    }
+    if (!(positive && negative)) {
+      add_face(loop, cell0, cell1, positive ? +1 : -1);
+      return;
+    }
+    // Crossed: the loop with its crossing nodes, then the runs on either side of the
+    // blade between its two nodes on the blade (a convex face has exactly two).
+    std::vector<int> augmented;
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int u = loop[k], v = loop[(k + 1) % loop.size()];
+      augmented.push_back(u);
+      if (side_[u] * side_[v] < 0) augmented.push_back(crossing_node(u, v));
+    }
+    std::vector<std::size_t> on_blade;
+    for (std::size_t k = 0; k < augmented.size(); ++k)
+      if (side_[augmented[k]] == 0) on_blade.push_back(k);
+    if (on_blade.size() != 2)
+      throw NumericalError("cut: the blade crosses face " + std::to_string(face) + " of cell " + std::to_string(cell0) +
+                           " more than once (a non-convex face; cutting it is not implemented yet)");
+    for (const auto& [start, end] : {std::pair{on_blade[0], on_blade[1]}, std::pair{on_blade[1], on_blade[0]}}) {
+      std::vector<int> run;
+      for (std::size_t k = start;; k = (k + 1) % augmented.size()) {
+        run.push_back(augmented[k]);
+        if (k == end) break;
+      }
+      const int sigma = side_[run[1]];
+      // Only the closing edge (end → start) lies in the blade: the cap takes it reversed.
+      const int first = piece(cell0, sigma), second = piece(cell1, sigma);
+      add_cap_edges(first, run, true);
+      if (second >= 0) cap_edges_[second].emplace(run.back(), run.front());
+      faces_.push_back({std::move(run), first, second, sigma});
+    }
+  }
+
+  void close_cap(int cell, int sigma) {
+    const int piece_index = piece(cell, sigma);
+    std::map<int, int>& next = cap_edges_[piece_index];
+    if (next.size() < 3)
+      throw NumericalError("cut: the blade's section of cell " + std::to_string(cell) + " has fewer than 3 corners");
+    std::vector<int> loop{next.begin()->first};
+    while (loop.size() <= next.size()) {
+      const auto found = next.find(loop.back());
+      if (found == next.end()) break;
+      if (found->second == loop.front()) break;
+      loop.push_back(found->second);
+    }
+    if (loop.size() != next.size())
+      throw NumericalError("cut: the blade's section of cell " + std::to_string(cell) + " is not one closed polygon");
+    faces_.push_back({std::move(loop), piece_index, -1, sigma});
+  }
+
+  PolyhedralCut assemble() {
+    // A node on the blade that faces of both sides hold: the negative side gets a copy.
+    std::vector<int> sides_using(nodes_.size(), 0);  // bit 1: positive, bit 2: negative
+    for (const Face& face : faces_)
+      for (const int node : face.loop) sides_using[node] |= face.sigma > 0 ? 1 : 2;
+    std::vector<int> copy_of(nodes_.size(), -1);
+    int duplicated = 0;
+    const std::size_t original_count = nodes_.size();
+    for (std::size_t node = 0; node < original_count; ++node) {
+      if (sides_using[node] != 3) continue;
+      copy_of[node] = static_cast<int>(nodes_.size());
+      nodes_.push_back(nodes_[node]);
+      sources_.push_back(sources_[node]);
+      ++duplicated;
+    }
+    PolyhedralCut cut;
+    PolyhedralMesh& result = cut.mesh;
+    result.nodes.resize(static_cast<Eigen::Index>(nodes_.size()), 3);
+    for (std::size_t node = 0; node < nodes_.size(); ++node) result.nodes.row(static_cast<Eigen::Index>(node)) = nodes_[node];
+    result.face_cells.resize(static_cast<Eigen::Index>(faces_.size()), 2);
+    result.cell_faces.resize(parent_.size());
+    for (std::size_t f = 0; f < faces_.size(); ++f) {
+      Face& face = faces_[f];
+      if (face.sigma < 0)
+        for (int& node : face.loop)
+          if (copy_of[node] >= 0) node = copy_of[node];
+      result.faces.push_back(std::move(face.loop));
+      result.face_cells(static_cast<Eigen::Index>(f), 0) = face.first;
+      result.face_cells(static_cast<Eigen::Index>(f), 1) = face.second;
+      result.cell_faces[face.first].push_back(static_cast<int>(f));
+      if (face.second >= 0) result.cell_faces[face.second].push_back(static_cast<int>(f));
+    }
+    for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index) {
+      const int cell = parent_[piece_index];
+      result.cell_kinds.push_back(crossed_[cell] ? PolyhedralCellKind::cut : mesh_.cell_kinds[cell]);
+    }
+    compute_polyhedral_geometry(result);
+    cut.parent_cell = parent_;
+    cut.node_sources = std::move(sources_);
+    cut.crossed_cells = crossed_count_;
+    cut.separated_faces = separated_;
+    cut.duplicated_nodes = duplicated;
+    cut.snapped_nodes = snapped_;
+    return cut;
+  }
+
+  const PolyhedralMesh& mesh_;
+  const Blade blade_;
+  std::vector<Eigen::Vector3d> nodes_;  ///< the input's, then the crossing nodes, then the copies
+  std::vector<NodeSource> sources_;     ///< per node of nodes_
+  std::vector<int> side_;               ///< per node of nodes_ before the copies: −1, 0, +1
+  std::vector<bool> crossed_;
+  std::vector<int> cell_sigma_;   ///< the side of an uncrossed cell (+1 when it has no node off the blade)
+  std::vector<int> first_piece_;  ///< per input cell, its first piece
+  std::vector<int> parent_;       ///< per piece, its input cell
+  std::map<std::pair<int, int>, int> crossings_;
+  std::vector<std::map<int, int>> cap_edges_;  ///< per piece: the cap's next node after each node
+  std::vector<Face> faces_;
+  int crossed_count_ = 0, separated_ = 0, snapped_ = 0;
+};
+
+}  // namespace
+
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane) {
+  return CutBuilder(mesh, plane).build();
+}
+
+}  // namespace altfem

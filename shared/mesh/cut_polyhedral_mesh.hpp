@@ -1,0 +1,43 @@
+#pragma once
+// A polyhedral mesh cut by a planar blade (Kaufmann et al. 2009 §9.4, Martin et al. 2008
+// §8): every cell the plane crosses becomes its two pieces, and what the plane separates
+// separates — the pieces' faces on the blade, and mesh faces that lie in it, are boundary
+// faces, and the nodes on the blade are duplicated, one copy per side. Every side
+// decision is an exact orientation predicate on the nodes as stored, so a blade through
+// nodes, along edges or in faces is an ordinary case; a node a few hundred ulps off the
+// blade is taken on it, so that no piece is thinner than that.
+#include <Eigen/Core>
+#include <vector>
+
+#include "shared/mesh/cutting_plane.hpp"
+#include "shared/mesh/polyhedral_mesh.hpp"
+
+namespace altfem {
+
+/// Where a node of a cut mesh comes from: (1 − weight) × input node `first` + weight ×
+/// input node `second` — an input node (itself, weight 0), the copy of one on the blade,
+/// or a crossing node on the edge (first, second). A nodal field carried through this is
+/// exact wherever the basis is linear along edges, and never confuses the copies of a
+/// node that an earlier cut duplicated (they share a position).
+struct NodeSource {
+  int first = 0, second = 0;
+  double weight = 0;
+};
+
+struct PolyhedralCut {
+  PolyhedralMesh mesh;           ///< the cut mesh, its geometry computed
+  std::vector<int> parent_cell;  ///< #cells of `mesh`: the cell of the input it lies in
+  std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
+  int crossed_cells = 0;         ///< input cells split into two pieces
+  int separated_faces = 0;       ///< interior input faces in the plane, now two boundary faces
+  int duplicated_nodes = 0;      ///< nodes on the plane given a copy for the negative side
+  int snapped_nodes = 0;         ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
+};
+
+/// Cuts `mesh` by `plane`. A crossed cell must be convex (each of its nodes on or behind
+/// the plane of each of its faces); throws NumericalError naming the first that is not
+/// (cutting non-convex cells is not implemented yet). Throws std::invalid_argument for a
+/// zero normal. A plane that misses every cell returns the mesh unchanged.
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane);
+
+}  // namespace altfem

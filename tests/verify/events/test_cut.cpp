@@ -1,0 +1,159 @@
+// A cut event (docs/scene-schema.md, "Events"; Kaufmann et al. 2009 §9.4, Martin et al.
+// 2008 §8) with the methods that cut, dg and harmonic:
+//   - A bar held at both ends and cut through its middle, along the faces between its
+//     cells, is two cantilevers: its static solution's elastic energy and ∫ρ u_z dV are
+//     exactly twice those of the half bar meshed alone (the pieces separate, and nothing
+//     of the cut couples them).
+//   - A cut through cells of a swinging cantilever splits exactly the crossed cells,
+//     conserves volume and mass to round-off, and dg's transfer (each piece keeps its
+//     parent's polynomial) conserves momentum; the run goes on.
+//   - A second cut along the faces through the first cut's blade keeps apart the node
+//     copies the first made (they share positions): harmonic's transfer follows each
+//     node's sources, so nothing moves and the energy does not jump.
+//   - The piece cut off falls freely: nothing holds it and its internal forces sum to
+//     zero, so each backward-Euler step adds exactly m g dt to its momentum.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <optional>
+
+#include "app/method_registry.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
+#include "shared/simulation/simulation.hpp"
+
+namespace altfem {
+namespace {
+
+const std::filesystem::path scenes = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes";
+
+const MethodDescription& method_named(const std::string& name) {
+  for (const auto& method : cli::registered_methods())
+    if (method.scene_block.name == name) return method;
+  throw std::invalid_argument("no method " + name);
+}
+
+struct StaticAnswer {
+  double energy = 0;         ///< the method's elastic energy of the solution [J]
+  double vertical_mass = 0;  ///< ∫ρ u_z dV [kg m]
+};
+
+// The static solution of a scene, after its events at time 0.
+StaticAnswer solve_static(const std::filesystem::path& file, const std::string& method_name) {
+  const Scene scene = load_scene(file);
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named(method_name);
+  Simulation simulation(scene, geometry, method_name, method.factory, method.rebuild);
+  for (const SceneEvent& event : scene.events) simulation.apply(event);
+  simulation.integrator().step(simulation.state());
+  const Discretization& discretization = simulation.method().discretization();
+  const Eigen::VectorXd& u = simulation.state().displacement;
+  return {discretization.energy(u), discretization.body_force(Eigen::Vector3d::UnitZ()).dot(u)};
+}
+
+int element_count(const MethodInstance& method) {
+  const nlohmann::json counts = method.element_counts();
+  int count = 0;
+  for (const auto& [kind, number] : counts.items()) count += number.get<int>();
+  return count;
+}
+
+struct PieceMomentum {
+  double mass = 0;        ///< ∫ρ dV beyond the blade [kg]
+  double momentum_z = 0;  ///< ∫ρ v_z dV beyond the blade [kg m/s]
+};
+
+// By the method's volume rule: the points beyond the plane x = `blade` are the cut-off
+// piece's (a piece's interior points lie strictly on its side).
+PieceMomentum momentum_beyond(const Simulation& simulation, double blade, double density) {
+  const std::optional<FieldQuadrature> quadrature = simulation.method().field_quadrature(0);
+  const TabulatedElements& elements = *quadrature->elements;
+  const Eigen::VectorXd& velocity = simulation.state().velocity;
+  PieceMomentum piece;
+  Eigen::Index row = 0;
+  for (int e = 0; e < elements.size(); ++e) {
+    const ElementView element = elements[e];
+    for (int q = 0; q < element.point_count(); ++q, ++row) {
+      if (quadrature->points(row, 0) <= blade) continue;
+      double v_z = 0;
+      for (int a = 0; a < element.basis_count(); ++a)
+        v_z += element.values(q, a) * velocity[3 * static_cast<Eigen::Index>(element.basis[a]) + 2];
+      piece.mass += density * element.weights[q];
+      piece.momentum_z += density * element.weights[q] * v_z;
+    }
+  }
+  return piece;
+}
+
+class Cut : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Cut, AlongCellFacesTheBarHeldAtBothEndsIsTwoCantilevers) {
+  const StaticAnswer cut = solve_static(scenes / "bar_held_at_both_ends.json", GetParam());
+  const StaticAnswer half = solve_static(scenes / "half_bar.json", GetParam());
+  ASSERT_LT(half.vertical_mass, 0.0);  // it sags
+  EXPECT_NEAR(cut.vertical_mass, 2 * half.vertical_mass, 1e-10 * std::abs(half.vertical_mass));
+  EXPECT_NEAR(cut.energy, 2 * half.energy, 1e-10 * half.energy);
+}
+
+TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
+  const Scene scene = load_scene(scenes / "cantilever_cut.json");
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named(GetParam());
+  Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
+  const int cells_before = element_count(simulation.method());
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
+  const EventRecord record = simulation.apply(scene.events.at(0));
+
+  // The plane x = 0.55 crosses one slab of cells: 1 × 1 for dg's grid, 2 × 2 for harmonic's.
+  const int crossed = GetParam() == "dg" ? 1 : 4;
+  EXPECT_EQ(record.facts["crossed_cells"], crossed);
+  EXPECT_EQ(record.facts["separated_faces"], 0);
+  EXPECT_EQ(record.facts["cells"], cells_before + crossed);
+  EXPECT_EQ(element_count(simulation.method()), cells_before + crossed);
+  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
+  if (GetParam() == "dg") EXPECT_LE(std::abs(record.conserved["momentum_change"].get<double>()), 1e-12);
+  EXPECT_GT(record.dofs_after, record.dofs_before);
+  // Free fall of the piece beyond the blade: 0.45 of the bar's 1 × 0.1 × 0.1 m at 1000 kg/m³.
+  const double g = -9.81, dt = scene.time.dt;
+  PieceMomentum before = momentum_beyond(simulation, 0.55, 1000);
+  EXPECT_NEAR(before.mass, 4.5, 1e-10);
+  for (int step = 0; step < 5; ++step) {
+    simulation.integrator().step(simulation.state());
+    const PieceMomentum after = momentum_beyond(simulation, 0.55, 1000);
+    EXPECT_NEAR(after.momentum_z - before.momentum_z, before.mass * g * dt, 1e-6 * before.mass * std::abs(g) * dt)
+        << "step " << step;
+    before = after;
+  }
+}
+
+TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
+  const Scene scene = load_scene(
+      scenes / "cantilever_cut.json",
+      {parse_scene_override("events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
+                            "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named(GetParam());
+  Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
+  simulation.apply(scene.events.at(0));
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());  // the pieces move apart
+  const EventRecord second = simulation.apply(scene.events.at(1));
+  EXPECT_LE(std::abs(second.conserved["volume_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(second.conserved["mass_change"].get<double>()), 1e-12);
+  if (GetParam() == "harmonic") {  // y = 0.05 is a plane of its grid's faces: nothing is interpolated
+    EXPECT_EQ(second.facts["crossed_cells"], 0);
+    EXPECT_LE(std::abs(second.conserved["energy_jump_relative"].get<double>()), 1e-12);
+    EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
+  } else {  // it crosses every dg cell; each piece keeps its parent's polynomial
+    EXPECT_EQ(second.facts["crossed_cells"], 11);
+    EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(CuttingMethods, Cut, ::testing::Values("dg", "harmonic"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace altfem
