@@ -9,11 +9,13 @@
 # docs/performance.md, "Build time", has the figures. -DALTFEM_PCH=OFF builds without
 # them (and so checks that each file includes what it uses).
 
+# What most translation units include (counted from the build's dependency files).
 set(altfem_pch_headers
-  <algorithm> <array> <cmath> <cstdio> <filesystem> <fstream> <functional> <limits> <map>
-  <memory> <optional> <random> <sstream> <stdexcept> <string> <string_view> <vector>
+  <algorithm> <array> <cmath> <cstdio> <filesystem> <fstream> <functional> <iostream> <limits>
+  <map> <memory> <numeric> <optional> <random> <set> <span> <sstream> <stdexcept> <string>
+  <string_view> <unordered_map> <variant> <vector>
   <Eigen/Core> <Eigen/Geometry> <Eigen/LU> <Eigen/Cholesky> <Eigen/QR> <Eigen/Eigenvalues> <Eigen/SVD>
-  <Eigen/SparseCore> <Eigen/SparseCholesky> <Eigen/SparseLU>)
+  <Eigen/Sparse>)
 
 # The libraries whose compile flags `target` gets: those it links and, recursively,
 # those they pass on (a static library's private dependency is linked, not passed on).
