@@ -54,7 +54,9 @@ nlohmann::json method_facts(const Scene& scene, const SceneGeometry& geometry, c
   for (const MaterialSpec& material : scene.materials)
     if (material.density != density) density = std::numeric_limits<double>::quiet_NaN();
   if (std::isnan(density))
-    return {{"dofs", instance->discretization().dof_count()}, {"elements", instance->element_counts()}, {"integrated_mass", mass}};
+    return {{"dofs", instance->discretization().dof_count()},
+            {"elements", instance->element_counts()},
+            {"integrated_mass", mass}};
   const double volume = mass / density;
   return {{"dofs", instance->discretization().dof_count()},
           {"elements", instance->element_counts()},
@@ -76,7 +78,8 @@ int check_command(const std::filesystem::path& scene_file, const std::string& me
   nlohmann::json built;
   for (const auto& name : methods) built[name] = method_facts(scene, geometry, find_method(name));
   if (json) {
-    std::printf("%s\n", nlohmann::json{{"scene", scene.resolved}, {"geometry", facts}, {"methods", built}}.dump(2).c_str());
+    std::printf("%s\n",
+                nlohmann::json{{"scene", scene.resolved}, {"geometry", facts}, {"methods", built}}.dump(2).c_str());
     return 0;
   }
   std::printf("%s: valid scene '%s'\n", scene_file.c_str(), scene.name.c_str());

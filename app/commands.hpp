@@ -18,9 +18,9 @@ struct MeshCommandOptions {
   /// dg/harmonic: "" (the mesh the method's block names), "convert" (the fem mesh cell by
   /// cell) or "slice" (the geometry sliced by the grid of the flags below)
   std::string source;
-  int resolution = 16;              ///< --source slice: grid cells along the bounding box's longest side
-  double sliver_fraction = 1e-3;    ///< --source slice: pieces below this fraction of a cell are merged
-  int octree_levels = 0;            ///< --source slice: inside cells joined up to 2^levels grid cells per side
+  int resolution = 16;            ///< --source slice: grid cells along the bounding box's longest side
+  double sliver_fraction = 1e-3;  ///< --source slice: pieces below this fraction of a cell are merged
+  int octree_levels = 0;          ///< --source slice: inside cells joined up to 2^levels grid cells per side
   std::filesystem::path output_directory;
   bool json = false;
 };

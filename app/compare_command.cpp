@@ -197,8 +197,8 @@ int compare_command(const CompareArguments& arguments) {
   const std::filesystem::path results = arguments.output / "results.csv";
   write_results_csv(results, records);
 
-  const std::string plot = std::string("/usr/bin/python3 '") + ALTFEM_SCRIPTS_DIR + "/plot_report.py' '" +
-                           results.string() + "'";
+  const std::string plot =
+      std::string("/usr/bin/python3 '") + ALTFEM_SCRIPTS_DIR + "/plot_report.py' '" + results.string() + "'";
   const int plotted = std::system(plot.c_str());
   const long failed = std::count_if(records.begin(), records.end(), [](const RunRecord& r) { return !r.ok(); });
   std::printf("compare: %zu runs (%zu reused, %ld failed); results in %s\n", records.size(), reused, failed,

@@ -31,8 +31,9 @@ int info_command() {
   std::printf("BLAS: %s (%s), %d thread%s\n", blas.implementation.c_str(), blas.library.c_str(), blas.threads,
               blas.threads == 1 ? "" : "s");
   if (is_reference_blas(blas))
-    std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded: CHOLMOD runs ~10x slower; install "
-                         "libopenblas0-pthread\n");
+    std::fprintf(stderr,
+                 "altfem: warning: the reference BLAS is loaded: CHOLMOD runs ~10x slower; install "
+                 "libopenblas0-pthread\n");
   std::printf("data: %s\n", data_directory().c_str());
   std::string methods;
   for (const auto& name : available_methods()) methods += (methods.empty() ? "" : ", ") + name;

@@ -13,7 +13,8 @@
 int main(int argc, char** argv) {
   CLI::App app{"altfem: elastic solids with alternative discretizations on identical scenes"};
   std::string method_list;  // the registry's, so a new method needs no edit here
-  for (const std::string& name : altfem::cli::available_methods()) method_list += (method_list.empty() ? "" : ", ") + name;
+  for (const std::string& name : altfem::cli::available_methods())
+    method_list += (method_list.empty() ? "" : ", ") + name;
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Show help for every subcommand");
 
@@ -40,7 +41,8 @@ int main(int argc, char** argv) {
   altfem::cli::CompareArguments comparison;
   compare->add_option("scene", comparison.scene, "Scene file (JSON)")->required();
   compare->add_option("--methods", comparison.methods, "Comma-separated methods (default: the scene's compare block)")
-      ->delimiter(',')->allow_extra_args(false);
+      ->delimiter(',')
+      ->allow_extra_args(false);
   compare->add_option("--sweep", comparison.sweeps, "KEY=V1,V2,...: values of a scene JSON pointer (repeatable)")
       ->allow_extra_args(false);
   compare->add_option("--reference", comparison.reference, "METHOD[:KEY=VALUE,...] (default: the finest run)");
@@ -53,7 +55,8 @@ int main(int argc, char** argv) {
   quadrature->require_subcommand(1);
   auto* monomials = quadrature->add_subcommand("monomials", "Fig. 4 of Longva et al. 2020: monomial errors");
   auto* quadrature_cell = quadrature->add_subcommand("cell", "The rules of one background cell as VTU points");
-  auto* conditioning = quadrature->add_subcommand("conditioning", "Fig. 5 of Longva et al. 2020: kappa and PCG iterations");
+  auto* conditioning =
+      quadrature->add_subcommand("conditioning", "Fig. 5 of Longva et al. 2020: kappa and PCG iterations");
   std::string conditioning_cell;
   bool conditioning_json = false;
   conditioning->add_option("--cell", conditioning_cell, "tet4|tet10|hex8|hex20")->required();
@@ -115,8 +118,11 @@ int main(int argc, char** argv) {
     if (*run) return altfem::cli::run_command(run_scene, method, output, overrides);
     if (*compare) return altfem::cli::compare_command(comparison);
     if (*monomials)
-      return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier, quadrature_json);
-    if (*conditioning) return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_ghost_penalty, conditioning_json);
+      return altfem::cli::quadrature_monomials_command(quadrature_cell_type, quadrature_order, simplifier,
+                                                       quadrature_json);
+    if (*conditioning)
+      return altfem::cli::quadrature_conditioning_command(conditioning_cell, conditioning_ghost_penalty,
+                                                          conditioning_json);
     if (*quadrature_cell)
       return altfem::cli::quadrature_cell_command(quadrature_scene, quadrature_index, quadrature_cell_type,
                                                   quadrature_resolution, quadrature_order, simplifier,

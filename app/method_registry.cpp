@@ -25,8 +25,8 @@ const MethodDescription& find_method(const std::string& name, std::string_view o
     if (method.scene_block.name == name) return method;
   std::string list;
   for (const auto& available : available_methods()) list += (list.empty() ? "" : ", ") + available;
-  throw InputError(input_message(std::string(option), "", "method '" + name + "' is not available in this build (available: " +
-                                                     list + ")"));
+  throw InputError(input_message(std::string(option), "",
+                                 "method '" + name + "' is not available in this build (available: " + list + ")"));
 }
 
 void resolve_method_blocks(Scene& scene, const std::vector<std::string>& methods) {

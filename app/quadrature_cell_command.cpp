@@ -2,11 +2,11 @@
 // background grid (Longva et al. 2020, §4.4–4.5), as VTU point clouds with weights, for
 // inspection and teaching. The scene's fcm block does not exist yet: the grid comes
 // from the command line.
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <nlohmann/json.hpp>
-#include <algorithm>
-#include <Eigen/LU>
-#include <cmath>
 #include <sstream>
 
 #include "app/commands.hpp"
@@ -43,16 +43,17 @@ Eigen::Vector3i parse_triple(const std::string& text, const std::string& key, in
   }
   if (values.size() == 1 && key == "--resolution") values.assign(3, values[0]);
   if (values.size() != 3 || *std::min_element(values.begin(), values.end()) < minimum) {
-    throw InputError(input_message("command line", key, "expected three integers >= " + std::to_string(minimum) +
-                                                            " separated by commas, got '" + text + "'"));
+    throw InputError(input_message(
+        "command line", key,
+        "expected three integers >= " + std::to_string(minimum) + " separated by commas, got '" + text + "'"));
   }
   return {values[0], values[1], values[2]};
 }
 
 /// The rules of `cells` as one VTU of vertices: physical positions, the reference
 /// weight, the physical weight w·|J| and the background cell index.
-void write_rules(const std::filesystem::path& path, const VolumeMesh& background, const std::vector<Eigen::Index>& cells,
-                 const fcm::CellRules& rules) {
+void write_rules(const std::filesystem::path& path, const VolumeMesh& background,
+                 const std::vector<Eigen::Index>& cells, const fcm::CellRules& rules) {
   UnstructuredGrid grid;
   Eigen::Index total = 0;
   for (const auto& cell : rules.cells) total += cell.rule.points.rows();
@@ -97,8 +98,8 @@ int quadrature_cell_command(const std::filesystem::path& scene_file, const std::
   const Eigen::Vector3i resolution = parse_triple(resolution_text, "--resolution", 1);
   const Eigen::Vector3i cube = parse_triple(cell_text, "--cell", 0);
   if ((cube.array() >= resolution.array()).any()) {
-    throw InputError(input_message("command line", "--cell", "index '" + cell_text + "' is outside the " +
-                                                                 resolution_text + " grid"));
+    throw InputError(input_message("command line", "--cell",
+                                   "index '" + cell_text + "' is outside the " + resolution_text + " grid"));
   }
   const SimplificationMethod method = parse_simplification_method(simplifier);
 
@@ -125,7 +126,8 @@ int quadrature_cell_command(const std::filesystem::path& scene_file, const std::
   const fcm::CellRules simplified = fcm::compute_cell_rules(selected, embedded, options);
 
   std::filesystem::create_directories(output);
-  const std::filesystem::path initial_path = output / "initial_rule.vtu", simplified_path = output / "simplified_rule.vtu";
+  const std::filesystem::path initial_path = output / "initial_rule.vtu",
+                              simplified_path = output / "simplified_rule.vtu";
   write_rules(initial_path, selected, cells, initial);
   write_rules(simplified_path, selected, cells, simplified);
 
@@ -145,12 +147,12 @@ int quadrature_cell_command(const std::filesystem::path& scene_file, const std::
   if (json) {
     std::printf("%s\n", report.dump(2).c_str());
   } else {
-    std::printf("cells %s: %d cut, %d inside; %lld -> %lld points (M = %d), max residual %.2e, clipped volume %.6g\n"
-                "wrote %s and %s\n",
-                cell_text.c_str(), simplified.cut_cells, simplified.inside_cells,
-                static_cast<long long>(initial.final_points), static_cast<long long>(simplified.final_points),
-                report["basis_size"].get<int>(), simplified.max_residual, volume, initial_path.c_str(),
-                simplified_path.c_str());
+    std::printf(
+        "cells %s: %d cut, %d inside; %lld -> %lld points (M = %d), max residual %.2e, clipped volume %.6g\n"
+        "wrote %s and %s\n",
+        cell_text.c_str(), simplified.cut_cells, simplified.inside_cells, static_cast<long long>(initial.final_points),
+        static_cast<long long>(simplified.final_points), report["basis_size"].get<int>(), simplified.max_residual,
+        volume, initial_path.c_str(), simplified_path.c_str());
   }
   return exit_ok;
 }

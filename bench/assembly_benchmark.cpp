@@ -62,8 +62,8 @@ constexpr Case cases[] = {
 const CubeProblem& problem(const Case& c) {
   static std::map<std::tuple<ElementType, int, int>, std::unique_ptr<CubeProblem>> problems;
   auto& slot = problems[{c.type, c.resolution, c.strength}];
-  if (!slot) slot = std::make_unique<CubeProblem>(c.type, c.resolution, c.strength,
-                                                  altfem::MaterialModel::stable_neo_hookean);
+  if (!slot)
+    slot = std::make_unique<CubeProblem>(c.type, c.resolution, c.strength, altfem::MaterialModel::stable_neo_hookean);
   return *slot;
 }
 
@@ -174,19 +174,22 @@ int main(int argc, char** argv) {
       for (int threads : {1, 2}) {
         if (threads > max_threads) continue;
         const std::string name = std::string(kind_name) + "/" + c.name + "/threads:" + std::to_string(threads);
-        benchmark::RegisterBenchmark(name.c_str(), [c, kind, threads](benchmark::State& state) {
-          run(state, c, kind, threads);
-        })->UseRealTime()->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(name.c_str(),
+                                     [c, kind, threads](benchmark::State& state) { run(state, c, kind, threads); })
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
       }
   for (const FaceCase& c : face_cases) face_problem(c);
   for (const FaceCase& c : face_cases)
-    for (auto [kind, kind_name] : {std::pair{Kind::hessian, "face_hessian"}, std::pair{Kind::gradient, "face_gradient"}})
+    for (auto [kind, kind_name] :
+         {std::pair{Kind::hessian, "face_hessian"}, std::pair{Kind::gradient, "face_gradient"}})
       for (int threads : {1, 2}) {
         if (threads > max_threads) continue;
         const std::string name = std::string(kind_name) + "/" + c.name + "/threads:" + std::to_string(threads);
-        benchmark::RegisterBenchmark(name.c_str(), [c, kind, threads](benchmark::State& state) {
-          run_faces(state, c, kind, threads);
-        })->UseRealTime()->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(
+            name.c_str(), [c, kind, threads](benchmark::State& state) { run_faces(state, c, kind, threads); })
+            ->UseRealTime()
+            ->Unit(benchmark::kMillisecond);
       }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;

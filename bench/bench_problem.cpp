@@ -9,7 +9,9 @@
 namespace altfem::bench {
 
 CubeProblem::CubeProblem(ElementType type, int resolution, int quadrature_strength, MaterialModel model)
-    : type_(type), resolution_(resolution), quadrature_strength_(quadrature_strength),
+    : type_(type),
+      resolution_(resolution),
+      quadrature_strength_(quadrature_strength),
       mesh_(structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
                             Eigen::Vector3i::Constant(resolution), type)),
       elements_(tabulate_lagrange(mesh_, quadrature_strength)),

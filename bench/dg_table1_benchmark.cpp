@@ -28,8 +28,8 @@
 
 #include "bench/dg_table1_problem.hpp"
 #include "bench/median.hpp"
-#include "dg/dg_linear_system.hpp"
 #include "dg/dg_discretization.hpp"
+#include "dg/dg_linear_system.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/vertex_coarse_space.hpp"
 #include "shared/solve/blas_threads.hpp"
@@ -124,10 +124,9 @@ int main(int argc, char** argv) {
         start = std::chrono::steady_clock::now();
         dg::VertexCoarseSpace space = dg::vertex_coarse_space(mesh, system);
         const PreconditionerFactory factory =
-            cycles[c] == Cycle::two_level
-                ? dg::two_level_factory(element_blocks(system), std::move(space.prolongation))
-                : dg::multilevel_factory(element_blocks(system), space.prolongation,
-                                         dg::grid_coarse_levels(mesh, system, space));
+            cycles[c] == Cycle::two_level ? dg::two_level_factory(element_blocks(system), std::move(space.prolongation))
+                                          : dg::multilevel_factory(element_blocks(system), space.prolongation,
+                                                                   dg::grid_coarse_levels(mesh, system, space));
         const std::unique_ptr<Preconditioner> preconditioner = factory();
         preconditioner->compute(system.stiffness());
         pcg[c].setup.push_back(1e3 * seconds_since(start));
@@ -150,7 +149,8 @@ int main(int argc, char** argv) {
       std::printf("%-8s %6d %10.1f %8.1f %8.1f %5.1fx | %-10s %5d %7.1f %6.1f %8.1f %8.1f %9.1e %8.1f %6.1fx\n",
                   row.name, dofs, build, direct, build + direct, row.paper_ms / (build + direct), cycle_names[c],
                   iterations[c], bench::median(pcg[c].setup), bench::median(pcg[c].galerkin),
-                  bench::median(pcg[c].iterations), solve, difference[c], build + solve, row.paper_ms / (build + solve));
+                  bench::median(pcg[c].iterations), solve, difference[c], build + solve,
+                  row.paper_ms / (build + solve));
     }
     const double factorisation = bench::median(factorisation_ms);
     std::printf("%-8s direct: analysis %.1f ms, factorisation %.1f ms (%.2f GFlop, %.1f GFlop/s)\n", row.name,

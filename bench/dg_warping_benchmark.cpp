@@ -36,13 +36,15 @@ const WarpedGrid& warped_grid() {
     const dg::DgLinearSystem system(dg::mesh_cells(mesh), faces, settings);
     std::vector<std::vector<int>> element_dofs(system.cell_count());
     for (int cell = 0; cell < system.cell_count(); ++cell)
-      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof) element_dofs[cell].push_back(dof);
+      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof)
+        element_dofs[cell].push_back(dof);
     WarpedGrid result;
     result.discretization = std::make_unique<dg::WarpedDgDiscretization>(
         system, settings, system.function_integrals(), std::move(element_dofs),
         [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); });
     const Eigen::Matrix3d map =
-        1.05 * Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() - Eigen::Matrix3d::Identity();
+        1.05 * Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix() -
+        Eigen::Matrix3d::Identity();
     result.displacement = system.interpolate([&](const Eigen::Vector3d& x) { return (map * x).eval(); });
     return result;
   }();

@@ -78,14 +78,16 @@ void cholmod_case(const CubeProblem& problem, int repetitions, double target_sec
     flops = s.factorisation_flops;
   }
   const double measured = target_includes_analysis ? median(sum) : median(factorisation);
-  std::printf("  CHOLMOD (median of %d, wall): analysis %.3f s, factorisation %.3f s, analysis+factorisation %.3f s, "
-              "solve %.3f s; |Ax-b|/|b| = %.1e\n",
-              repetitions, median(analysis), median(factorisation), median(sum), median(solve), residual);
+  std::printf(
+      "  CHOLMOD (median of %d, wall): analysis %.3f s, factorisation %.3f s, analysis+factorisation %.3f s, "
+      "solve %.3f s; |Ax-b|/|b| = %.1e\n",
+      repetitions, median(analysis), median(factorisation), median(sum), median(solve), residual);
   std::printf("  factor: %.2f M entries in L, %.2f GFLOP per factorisation, %.1f GFLOP/s\n", factor_entries / 1e6,
               flops / 1e9, flops / 1e9 / median(factorisation));
-  std::printf("  process CPU time of analysis+factorisation (all threads): %.3f s (wall/CPU %.2f: about 0.5-0.6 "
-              "on 2 idle cores, above 1 on a loaded machine)\n",
-              median(cpu), median(sum) / median(cpu));
+  std::printf(
+      "  process CPU time of analysis+factorisation (all threads): %.3f s (wall/CPU %.2f: about 0.5-0.6 "
+      "on 2 idle cores, above 1 on a loaded machine)\n",
+      median(cpu), median(sum) / median(cpu));
   std::printf("  target: %s <= %.1f s: %s\n", target_includes_analysis ? "analysis+factorisation" : "factorisation",
               target_seconds, measured <= target_seconds ? "MET" : "MISSED");
   std::printf("  peak RSS so far: %.2f GiB\n", peak_resident_gib());
@@ -108,9 +110,10 @@ void pcg_case(const CubeProblem& problem) {
     status = std::string("FAILED: ") + error.what();
   }
   const altfem::LinearSolverStatistics& s = solver->statistics();
-  std::printf("  PCG + incomplete Cholesky (tolerance 1e-8, one run): set-up %.2f s, solve %.2f s, %ld iterations, "
-              "|Ax-b|/|b| = %.1e, %s\n",
-              s.factorisation_seconds, s.solve_seconds, s.iterations, relative_residual(system, x), status.c_str());
+  std::printf(
+      "  PCG + incomplete Cholesky (tolerance 1e-8, one run): set-up %.2f s, solve %.2f s, %ld iterations, "
+      "|Ax-b|/|b| = %.1e, %s\n",
+      s.factorisation_seconds, s.solve_seconds, s.iterations, relative_residual(system, x), status.c_str());
   std::printf("  peak RSS so far: %.2f GiB\n", peak_resident_gib());
 }
 
@@ -146,7 +149,8 @@ int main(int argc, char** argv) {
   std::printf("\n[1] Tet10 cube, ~30k DOFs\n");
   {
     // (2·10 + 1)³ = 9261 nodes, 27,783 DOFs.
-    const CubeProblem problem(ElementType::tet10, 10, stiffness_strength(ElementType::tet10), altfem::MaterialModel::linear);
+    const CubeProblem problem(ElementType::tet10, 10, stiffness_strength(ElementType::tet10),
+                              altfem::MaterialModel::linear);
     cholmod_case(problem, repetitions, 1.0, true);
   }
   if (!large) {
@@ -157,7 +161,8 @@ int main(int argc, char** argv) {
   const int resolution = large_element == ElementType::tet10 ? 23 : 28;
   std::printf("\n[2] %s cube, ~300k DOFs\n", std::string(altfem::element_name(large_element)).c_str());
   {
-    const CubeProblem problem(large_element, resolution, stiffness_strength(large_element), altfem::MaterialModel::linear);
+    const CubeProblem problem(large_element, resolution, stiffness_strength(large_element),
+                              altfem::MaterialModel::linear);
     cholmod_case(problem, 1, 60.0, false);
     std::printf("  target: peak RSS <= 6.5 GiB: %s\n", peak_resident_gib() <= 6.5 ? "MET" : "MISSED");
     pcg_case(problem);

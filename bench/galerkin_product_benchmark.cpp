@@ -34,8 +34,8 @@ const CoarseProblem& table1_problem(int degree) {
   auto [found, added] = problems.try_emplace(degree);
   if (!added) return found->second;
   const bench::DgTable1Problem scene = bench::dg_table1_problem();
-  const dg::DgLinearSystem system(scene.cells, scene.faces,
-                                  {degree, dg::Flux::babuska_zlamal, 20 * scene.youngs_modulus, scene.lambda, scene.mu});
+  const dg::DgLinearSystem system(
+      scene.cells, scene.faces, {degree, dg::Flux::babuska_zlamal, 20 * scene.youngs_modulus, scene.lambda, scene.mu});
   CoarseProblem& problem = found->second;
   problem.matrix = system.stiffness();
   problem.prolongation = dg::vertex_coarse_space(scene.mesh, system).prolongation;
@@ -58,7 +58,8 @@ void BM_GalerkinProduct(benchmark::State& state) {
     eigen_ms.push_back(1e3 * seconds_since(start));
     benchmark::DoNotOptimize(eigen.valuePtr());
     start = std::chrono::steady_clock::now();
-    const Eigen::SparseMatrix<double> ours = galerkin_product(problem.matrix, problem.prolongation, problem.restriction);
+    const Eigen::SparseMatrix<double> ours =
+        galerkin_product(problem.matrix, problem.prolongation, problem.restriction);
     const double seconds = seconds_since(start);
     state.SetIterationTime(seconds);
     galerkin_ms.push_back(1e3 * seconds);

@@ -9,7 +9,8 @@
 // functions. harmonic_mesh_bases builds every cut cell of the bunny the way the method
 // does, each face once, and reports the cost per element with the face fits amortised.
 // Medians on one core with
-//   OMP_NUM_THREADS=1 build/bin/bench_polyhedral_element --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//   OMP_NUM_THREADS=1 build/bin/bench_polyhedral_element --benchmark_repetitions=5
+//   --benchmark_report_aggregates_only=true
 // (configure with -DALTFEM_BENCHMARKS=ON; one thread: Eigen's products would otherwise
 // spawn an OpenMP team per factorisation, which the method never does — it builds the
 // bases inside a parallel loop over cells). Read the CPU column on a shared machine.
@@ -43,7 +44,8 @@ Polyhedron hexahedron_with_edge_nodes() {
     std::vector<int> loop;
     for (size_t k = 0; k < face.size(); ++k) {
       const int a = face[k], b = face[(k + 1) % face.size()];
-      const auto [it, added] = midpoints.try_emplace({std::min(a, b), std::max(a, b)}, static_cast<int>(vertices.size()));
+      const auto [it, added] =
+          midpoints.try_emplace({std::min(a, b), std::max(a, b)}, static_cast<int>(vertices.size()));
       if (added) vertices.push_back(0.5 * (box.vertices.row(a) + box.vertices.row(b)));
       loop.push_back(a);
       loop.push_back(it->second);
@@ -91,7 +93,8 @@ std::vector<Polyhedron> cells(int kind) {
   }
 }
 std::string cell_name(int kind) {
-  const char* names[] = {"hexahedron (8 nodes)", "octree hexahedron (20 nodes)", "l_prism (12 nodes)", "bunny 16^3 cut cells"};
+  const char* names[] = {"hexahedron (8 nodes)", "octree hexahedron (20 nodes)", "l_prism (12 nodes)",
+                         "bunny 16^3 cut cells"};
   std::string name = names[kind];
   if (kind == bunny_cut) {
     double nodes = 0;
@@ -111,8 +114,9 @@ void element_stiffness(const harmonic::HarmonicTabulation& table, int n, Eigen::
     for (int a = 0; a < n; ++a)
       for (int b = 0; b < n; ++b) {
         const Eigen::RowVector3d ga = table.gradients.row(q * n + a), gb = table.gradients.row(q * n + b);
-        stiffness.block<3, 3>(3 * a, 3 * b) += table.weights[q] * (lambda * ga.transpose() * gb + mu * gb.transpose() * ga +
-                                                                    mu * ga.dot(gb) * Eigen::Matrix3d::Identity());
+        stiffness.block<3, 3>(3 * a, 3 * b) +=
+            table.weights[q] *
+            (lambda * ga.transpose() * gb + mu * gb.transpose() * ga + mu * ga.dot(gb) * Eigen::Matrix3d::Identity());
       }
 }
 
@@ -193,7 +197,8 @@ void harmonic_mesh_bases(benchmark::State& state) {
     for (int cell : cut) benchmark::DoNotOptimize(harmonic::cell_harmonic_basis(mesh, cell, coordinates, options));
     face_seconds += middle - start;
     cell_seconds += processor_seconds() - middle;
-    faces = static_cast<double>(std::count_if(coordinates.begin(), coordinates.end(), [](const auto& face) { return face.has_value(); }));
+    faces = static_cast<double>(
+        std::count_if(coordinates.begin(), coordinates.end(), [](const auto& face) { return face.has_value(); }));
   }
   const double iterations = static_cast<double>(state.iterations()), cells = static_cast<double>(cut.size());
   state.counters["cells"] = cells;
@@ -211,7 +216,9 @@ void dg_element_matrices(benchmark::State& state) {
   state.SetLabel(cell_name(static_cast<int>(state.range(0))) + ", degree " + std::to_string(state.range(1)));
 }
 
-BENCHMARK(harmonic_basis)->ArgsProduct({{hexahedron, hexahedron20, l_prism, bunny_cut}, {3, 4, 5, 6}})->Unit(benchmark::kMillisecond);
+BENCHMARK(harmonic_basis)
+    ->ArgsProduct({{hexahedron, hexahedron20, l_prism, bunny_cut}, {3, 4, 5, 6}})
+    ->Unit(benchmark::kMillisecond);
 BENCHMARK(harmonic_mesh_bases)->Arg(harmonic::MfsOptions{}.edge_samples)->Iterations(1)->Unit(benchmark::kSecond);
 BENCHMARK(harmonic_stiffness)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);
 BENCHMARK(harmonic_element_setup)->DenseRange(hexahedron, bunny_cut)->Unit(benchmark::kMillisecond);

@@ -46,12 +46,14 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 /// The intersection rule of the reference Hex20 cell with a tilted, finely gridded box
 /// that covers about half of it: ~3,000 points at m = 4.
 QuadratureRule hex20_cut_cell_rule() {
-  const VolumeMesh box = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d(0.2, -1.4, -1.4), Eigen::Vector3d(1.6, 1.4, 1.4)),
-                                         Eigen::Vector3i(1, 2, 2), ElementType::tet4);
+  const VolumeMesh box =
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d(0.2, -1.4, -1.4), Eigen::Vector3d(1.6, 1.4, 1.4)),
+                      Eigen::Vector3i(1, 2, 2), ElementType::tet4);
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   std::vector<TetrahedronCorners> tetrahedra(box.cells.rows());
   for (Eigen::Index t = 0; t < box.cells.rows(); ++t)
-    for (int c = 0; c < 4; ++c) tetrahedra[t].row(c) = (rotation * box.nodes.row(box.cells(t, c)).transpose()).transpose();
+    for (int c = 0; c < 4; ++c)
+      tetrahedra[t].row(c) = (rotation * box.nodes.row(box.cells(t, c)).transpose()).transpose();
   const ReferenceElement& element = reference_element(ElementType::hex20);
   const fcm::CellGeometry cell(ElementType::hex20, element.nodes().topRows(8));
   return fcm::intersection_rule(cell, tetrahedra, 4).rule;
@@ -113,13 +115,14 @@ void hollow_cylinder(int repetitions, const std::vector<SimplificationMethod>& m
     double wall = 0.0;
     for (int r = 0; r < repetitions; ++r) wall += generation[r] + total[r];
     const double cpu_share = (bench::process_cpu_seconds() - cpu_start) / (wall * omp_get_max_threads());
-    std::printf("  %-12s %d cut + %d inside cells; %lld -> %lld points; %d kept unsimplified; max residual %.2e\n"
-                "       median generation only %.3f s, generation + simplification %.3f s (CPU share %.0f%%;\n"
-                "       CPU time of generation + simplification, all threads: median %.3f s)\n",
-                std::string(simplification_method_name(method)).c_str(), rules.cut_cells, rules.inside_cells,
-                static_cast<long long>(rules.initial_points), static_cast<long long>(rules.final_points),
-                rules.failed_simplifications, rules.max_residual, bench::median(generation), bench::median(total),
-                100.0 * cpu_share, bench::median(total_cpu));
+    std::printf(
+        "  %-12s %d cut + %d inside cells; %lld -> %lld points; %d kept unsimplified; max residual %.2e\n"
+        "       median generation only %.3f s, generation + simplification %.3f s (CPU share %.0f%%;\n"
+        "       CPU time of generation + simplification, all threads: median %.3f s)\n",
+        std::string(simplification_method_name(method)).c_str(), rules.cut_cells, rules.inside_cells,
+        static_cast<long long>(rules.initial_points), static_cast<long long>(rules.final_points),
+        rules.failed_simplifications, rules.max_residual, bench::median(generation), bench::median(total),
+        100.0 * cpu_share, bench::median(total_cpu));
   }
 }
 
@@ -147,8 +150,10 @@ int main(int argc, char** argv) {
     } else if (key == "--part" && (value == "cell" || value == "cylinder")) {
       part = value;
     } else {
-      std::fprintf(stderr, "bench_quadrature: unknown option %s %s (expected --repetitions N, --method "
-                           "lp|nnls|caratheodory, --part cell|cylinder)\n", key.c_str(), value.c_str());
+      std::fprintf(stderr,
+                   "bench_quadrature: unknown option %s %s (expected --repetitions N, --method "
+                   "lp|nnls|caratheodory, --part cell|cylinder)\n",
+                   key.c_str(), value.c_str());
       return 2;
     }
   }

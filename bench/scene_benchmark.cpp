@@ -13,6 +13,7 @@
 // that its peak RSS is its own and not the largest case's so far.
 #include <omp.h>
 
+#include <unistd.h>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -21,7 +22,6 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include "bench/median.hpp"
@@ -182,9 +182,9 @@ struct CantileverCase {
 void cantilever_table(int repetitions) {
   // Three resolutions per element; Hex20 50×5×5 is the ~20k-DOF target case.
   const CantileverCase cases[] = {
-      {"hex8", 20, 2, 2},  {"hex8", 40, 4, 4},  {"hex8", 80, 8, 8},   {"hex20", 20, 2, 2},
-      {"hex20", 30, 3, 3}, {"hex20", 50, 5, 5}, {"tet4", 20, 2, 2},   {"tet4", 40, 4, 4},
-      {"tet4", 80, 8, 8},  {"tet10", 20, 2, 2}, {"tet10", 30, 3, 3},  {"tet10", 50, 5, 5},
+      {"hex8", 20, 2, 2},  {"hex8", 40, 4, 4},  {"hex8", 80, 8, 8},  {"hex20", 20, 2, 2},
+      {"hex20", 30, 3, 3}, {"hex20", 50, 5, 5}, {"tet4", 20, 2, 2},  {"tet4", 40, 4, 4},
+      {"tet4", 80, 8, 8},  {"tet10", 20, 2, 2}, {"tet10", 30, 3, 3}, {"tet10", 50, 5, 5},
   };
   auto arguments = [](const CantileverCase& c) {
     return std::string("cantilever ") + c.element + " " + std::to_string(c.nx) + " " + std::to_string(c.ny) + " " +
@@ -206,8 +206,8 @@ void cantilever_table(int repetitions) {
     if (r.is_null()) continue;
     const json& s = r["seconds"];
     const double w = r["end_face_displacement"].get<double>();
-    const std::string name = std::string(c.element) + " " + std::to_string(c.nx) + "x" + std::to_string(c.ny) +
-                             "x" + std::to_string(c.nz);
+    const std::string name =
+        std::string(c.element) + " " + std::to_string(c.nx) + "x" + std::to_string(c.ny) + "x" + std::to_string(c.nz);
     std::printf("%-16s %8d %13.6e %10.2e %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.2f\n", name.c_str(),
                 r["dofs"].get<int>(), w, (w - w_reference) / std::abs(w_reference), s["setup"].get<double>(),
                 s["assembly"].get<double>(), s["analysis"].get<double>(), s["factorisation"].get<double>(),
@@ -225,18 +225,20 @@ void twisting_beam(int repetitions, int steps, const std::string& cell_size) {
   const json& s = r["seconds"];
   const double iterations = r["newton_iterations"].get<double>();
   const double assembly = s["assembly"].get<double>() / iterations;
-  const double linear = (s["analysis"].get<double>() + s["factorisation"].get<double>() + s["solve"].get<double>()) /
-                        iterations;
-  std::printf("\nTwisting beam (scenes/twisting_beam.json, tet10, max_cell_size %s, stable Neo-Hookean, backward "
-              "Euler), first %d steps, %d threads; medians of %d runs.\n",
-              cell_size.c_str(), steps, r["threads"].get<int>(), repetitions);
+  const double linear =
+      (s["analysis"].get<double>() + s["factorisation"].get<double>() + s["solve"].get<double>()) / iterations;
+  std::printf(
+      "\nTwisting beam (scenes/twisting_beam.json, tet10, max_cell_size %s, stable Neo-Hookean, backward "
+      "Euler), first %d steps, %d threads; medians of %d runs.\n",
+      cell_size.c_str(), steps, r["threads"].get<int>(), repetitions);
   std::printf("  %s, %d DOFs, %d Newton iterations\n", r["elements"].dump().c_str(), r["dofs"].get<int>(),
               static_cast<int>(iterations));
-  std::printf("  per Newton iteration: assembly (energy+gradient+Hessian) %.3f s, linear solve (analysis+"
-              "factorisation+solve) %.3f s [analysis %.3f s total, factorisation %.3f s, solve %.3f s per "
-              "iteration]\n",
-              assembly, linear, s["analysis"].get<double>(), s["factorisation"].get<double>() / iterations,
-              s["solve"].get<double>() / iterations);
+  std::printf(
+      "  per Newton iteration: assembly (energy+gradient+Hessian) %.3f s, linear solve (analysis+"
+      "factorisation+solve) %.3f s [analysis %.3f s total, factorisation %.3f s, solve %.3f s per "
+      "iteration]\n",
+      assembly, linear, s["analysis"].get<double>(), s["factorisation"].get<double>() / iterations,
+      s["solve"].get<double>() / iterations);
   std::printf("  setup %.3f s; total %.3f s; peak RSS %.3f GiB; wall/CPU %.2f\n", s["setup"].get<double>(),
               s["total"].get<double>(), r["peak_rss_gib"].get<double>(), r["wall_over_cpu"].get<double>());
 }

@@ -34,10 +34,11 @@ void run_case(const char* name, const SurfaceMesh& surface, int resolution, int 
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   const double time = bench::median(seconds);
-  std::printf("%-9s %3d^3 octree %d  median %8.4f s  cells %7d (grid hexahedra %6d, cut pieces %6d, split grid "
-              "cells %4d, merged slivers %4d, octree cells %5d)  %9.0f cut pieces/s\n",
-              name, resolution, octree_levels, time, sliced.mesh.cell_count(), sliced.hexahedra, sliced.cut_pieces,
-              sliced.split_grid_cells, sliced.merged_slivers, sliced.coarse_cells, sliced.cut_pieces / time);
+  std::printf(
+      "%-9s %3d^3 octree %d  median %8.4f s  cells %7d (grid hexahedra %6d, cut pieces %6d, split grid "
+      "cells %4d, merged slivers %4d, octree cells %5d)  %9.0f cut pieces/s\n",
+      name, resolution, octree_levels, time, sliced.mesh.cell_count(), sliced.hexahedra, sliced.cut_pieces,
+      sliced.split_grid_cells, sliced.merged_slivers, sliced.coarse_cells, sliced.cut_pieces / time);
 }
 
 }  // namespace

@@ -15,7 +15,9 @@ namespace {
 // differences between cells of a mesh that are not translates.
 constexpr double quantisation = 0x1p-20;
 
-void combine(std::size_t& seed, std::size_t value) { seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2); }
+void combine(std::size_t& seed, std::size_t value) {
+  seed ^= value + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+}
 
 // A point relative to the centre on the hash's grid: the order in which keys list
 // vertices, so that a translate numbered otherwise (a cell of a mesh whose faces are

@@ -26,8 +26,8 @@
 namespace altfem::dg {
 
 struct SimilarityKey {
-  std::vector<int> structure;        ///< compared exactly
-  std::vector<double> coordinates;   ///< compared within `tolerance`
+  std::vector<int> structure;       ///< compared exactly
+  std::vector<double> coordinates;  ///< compared within `tolerance`
   /// The size of what the coordinates describe (a cell's diameter): the hash quantises
   /// coordinates in steps of 2⁻²⁰ length, so it must agree between similar keys up to
   /// round-off.
@@ -71,8 +71,8 @@ public:
   explicit SimilarityClasses(bool enabled = true) : enabled_(enabled) {}
 
   struct Assignment {
-    int index;      ///< of the class, in order of first appearance
-    bool created;   ///< a new class: its matrices are to be computed
+    int index;     ///< of the class, in order of first appearance
+    bool created;  ///< a new class: its matrices are to be computed
   };
   Assignment classify(SimilarityKey key);
   int class_count() const { return class_count_; }
@@ -86,7 +86,7 @@ private:
   bool enabled_;
   int class_count_ = 0, key_count_ = 0;
   std::unordered_multimap<std::size_t, int> buckets_;  // hash → class
-  std::vector<SimilarityKey> representatives_;        // #classes when enabled
+  std::vector<SimilarityKey> representatives_;         // #classes when enabled
 };
 
 }  // namespace altfem::dg

@@ -93,8 +93,8 @@ PreconditionerFactory multilevel_factory(std::vector<std::vector<int>> element_d
       for (size_t v = 0; v < vertex_blocks.size(); ++v) vertex_blocks[v] = 3 * static_cast<int>(v);
       auto smoother = std::make_unique<BlockRelaxationPreconditioner>(std::move(vertex_blocks),
                                                                       BlockRelaxation::symmetric_gauss_seidel);
-      coarse = std::make_unique<TwoLevelPreconditioner>(std::move(smoother), *level, TwoLevelCycle::multiplicative,
-                                                        1.0, std::move(coarse));
+      coarse = std::make_unique<TwoLevelPreconditioner>(std::move(smoother), *level, TwoLevelCycle::multiplicative, 1.0,
+                                                        std::move(coarse));
     }
     return std::make_unique<TwoLevelPreconditioner>(element_block_jacobi(starts), vertex_prolongation,
                                                     TwoLevelCycle::multiplicative, two_level_smoother_damping,

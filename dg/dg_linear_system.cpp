@@ -92,11 +92,14 @@ void for_each_item_by_class(const std::vector<int>& classes, int class_count, Co
 
 DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
                                DgCellMaterials cell_materials)
-    : cells_(std::move(cells)), faces_(std::move(faces)), settings_(settings), cell_materials_(std::move(cell_materials)) {
+    : cells_(std::move(cells)),
+      faces_(std::move(faces)),
+      settings_(settings),
+      cell_materials_(std::move(cell_materials)) {
   if (cell_materials_.ids.size() != (cell_materials_.materials.empty() ? 0 : cells_.size()))
-    throw std::invalid_argument("DgLinearSystem: " + std::to_string(cell_materials_.ids.size()) +
-                                " material ids for " + std::to_string(cell_materials_.materials.size()) +
-                                " materials and " + std::to_string(cells_.size()) + " cells");
+    throw std::invalid_argument("DgLinearSystem: " + std::to_string(cell_materials_.ids.size()) + " material ids for " +
+                                std::to_string(cell_materials_.materials.size()) + " materials and " +
+                                std::to_string(cells_.size()) + " cells");
   for (int id : cell_materials_.ids)
     if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
@@ -293,20 +296,23 @@ void DgLinearSystem::for_each_cell_point(int strength, Body&& body) const {
 
 Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
-  for_each_cell_point(2 * settings_.degree + 2, [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
-    const Eigen::Vector3d f = w * force_density(x);
-    for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
-  });
+  for_each_cell_point(2 * settings_.degree + 2,
+                      [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
+                        const Eigen::Vector3d f = w * force_density(x);
+                        for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
+                      });
   return load;
 }
 
 double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const {
   double squared = 0;
-  for_each_cell_point(2 * settings_.degree + 4, [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();
-    for (int a = 0; a < bases_[c].size(); ++a) value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
-    squared += w * (value - field(x)).squaredNorm();
-  });
+  for_each_cell_point(2 * settings_.degree + 4,
+                      [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
+                        Eigen::Vector3d value = Eigen::Vector3d::Zero();
+                        for (int a = 0; a < bases_[c].size(); ++a)
+                          value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
+                        squared += w * (value - field(x)).squaredNorm();
+                      });
   return std::sqrt(squared);
 }
 

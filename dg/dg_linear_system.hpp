@@ -26,7 +26,7 @@ struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
   Eigen::Vector3d normal;   ///< unit, from `minus` to `plus` (outward on a boundary face)
   int minus = 0;
-  int plus = -1;            ///< -1: a boundary face
+  int plus = -1;  ///< -1: a boundary face
   /// Boundary faces only: the index of the Dirichlet condition imposed weakly here (the
   /// `condition` argument of dirichlet_load's data), -1 for a free face.
   int condition = -1;
@@ -68,7 +68,7 @@ struct DgSettings {
   Flux flux = Flux::interior_penalty;
   double penalty = 20;  ///< η of eq. (20), in the units of the stiffness (λ, μ)
   double lambda = 1, mu = 1;
-  double density = 1;   ///< ρ of the mass matrix
+  double density = 1;  ///< ρ of the mass matrix
   /// η_f of a boundary face is this factor × eq. (20) (1 in Kaufmann et al.; MFEM and
   /// deal.II halve the sum of the two sides' terms on interior faces only, which is 2 here).
   double boundary_penalty_factor = 1;
@@ -145,9 +145,9 @@ public:
   /// polynomial f of degree ≤ k + 2).
   Eigen::VectorXd body_load(const VectorField& force_density) const;
   /// −∫ Pg·σ(v)n + η_f ∫ Pg·v (IP) or η_f ∫ Pg·v (BZ) over the Dirichlet faces, g = data(the
-  /// face's condition, x), P = diag(the face's components), by a rule of strength 2k + 2 on each face (exact for polynomial
-  /// data of degree ≤ k + 3). `penalty_only`: the η_f ∫ Pg·v part alone (stiffness
-  /// warping rotates the consistency part with the boundary element, §6).
+  /// face's condition, x), P = diag(the face's components), by a rule of strength 2k + 2 on each face (exact for
+  /// polynomial data of degree ≤ k + 3). `penalty_only`: the η_f ∫ Pg·v part alone (stiffness warping rotates the
+  /// consistency part with the boundary element, §6).
   Eigen::VectorXd dirichlet_load(const ConditionData& data, bool penalty_only = false) const;
   /// The DOFs that strongly imposed conditions fix (sorted), and their values for the
   /// data g = data(condition, x) (in the same order): the constrained coefficients of the
@@ -180,11 +180,11 @@ private:
   std::vector<int> constrained_dofs_;
   std::vector<ConstraintHolders> constraint_holders_;
   std::vector<double> volumes_;
-  std::vector<double> inverse_lengths_;     // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
-  std::vector<int> cell_classes_;           // per cell, its class of translates
-  std::vector<Eigen::MatrixXd> masses_;     // per class of cells, #functions square
+  std::vector<double> inverse_lengths_;  // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
+  std::vector<int> cell_classes_;        // per cell, its class of translates
+  std::vector<Eigen::MatrixXd> masses_;  // per class of cells, #functions square
   Eigen::VectorXd integrals_;
-  std::vector<int> offsets_;                // #cells + 1
+  std::vector<int> offsets_;  // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
   SimilarityStatistics similarity_;
 };

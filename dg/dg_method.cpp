@@ -51,8 +51,9 @@ std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scen
   }
   for (size_t c = 0; c < scene.dirichlet.size(); ++c) {
     if (faces_per_condition[c] == 0)
-      throw InputError(input_message(scene.file.string(), scene.dirichlet[c].pointer + "/region",
-                                     "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
+      throw InputError(
+          input_message(scene.file.string(), scene.dirichlet[c].pointer + "/region",
+                        "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
   }
   return faces;
 }
@@ -93,10 +94,17 @@ public:
     const auto start = std::chrono::steady_clock::now();
     cell_materials_ = cell_materials(scene, mesh_.cell_centroids);
     const DgMaterial& first = cell_materials_.materials.front();
-    settings_ = {spec_.degree,         spec_.flux,    first.penalty,
-                 first.lambda,         first.mu,      first.density,
-                 boundary_factor(scene), spec_.scaling, first.tangential_fraction,
-                 true,                 spec_.rule_simplification};
+    settings_ = {spec_.degree,
+                 spec_.flux,
+                 first.penalty,
+                 first.lambda,
+                 first.mu,
+                 first.density,
+                 boundary_factor(scene),
+                 spec_.scaling,
+                 first.tangential_fraction,
+                 true,
+                 spec_.rule_simplification};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
@@ -135,10 +143,9 @@ public:
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
       const bool lifted = spec_.flux == Flux::interior_penalty;
-      tabulated_ = make_tabulated_dg(*system_, materials_.pointers(),
-                                     [this, lifted](double time) { return weak_condition_load(time, lifted); },
-                                     std::move(preconditioner),
-                                     lifted ? moving_data() : ConditionTrajectory{}, strong_dofs());
+      tabulated_ = make_tabulated_dg(
+          *system_, materials_.pointers(), [this, lifted](double time) { return weak_condition_load(time, lifted); },
+          std::move(preconditioner), lifted ? moving_data() : ConditionTrajectory{}, strong_dofs());
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -179,7 +186,8 @@ public:
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
     const int strength = 2 * spec_.degree + added_strength;
     FieldQuadrature quadrature;
-    quadrature.elements = std::make_shared<TabulatedElements>(tabulate_dg_cells(*system_, strength, &quadrature.points));
+    quadrature.elements =
+        std::make_shared<TabulatedElements>(tabulate_dg_cells(*system_, strength, &quadrature.points));
     quadrature.strength = strength;
     return quadrature;
   }
@@ -190,15 +198,19 @@ public:
     return volume;
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_}, .surface = surface_.surface, .load_surface = surface_.load_surface,
-                             .facts = mesh_facts_, .converted = std::nullopt};
+    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_},
+                             .surface = surface_.surface,
+                             .load_surface = surface_.load_surface,
+                             .facts = mesh_facts_,
+                             .converted = std::nullopt};
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
   }
   std::string cut_refusal() const override {
-    return spec_.embedding == Embedding::stitched ? "its stitched embedding interpolates with the converted mesh, which a "
-                                                    "cut no longer matches (use embedding mls or element)"
-                                                  : "";
+    return spec_.embedding == Embedding::stitched
+               ? "its stitched embedding interpolates with the converted mesh, which a "
+                 "cut no longer matches (use embedding mls or element)"
+               : "";
   }
   std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
     return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "dg");
@@ -210,24 +222,24 @@ public:
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;
     facts.update({{"degree", spec_.degree},
-            {"flux", flux_names[static_cast<int>(spec_.flux)]},
-            {"penalty",
-             {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
-              {"value", spec_.penalty_value * (1 << doublings_)},
-              {"doublings", doublings_},
-              {"eta_pa", settings_.penalty},
-              {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
-              {"lame_split", spec_.lame_split}}},
-            {"smallest_cell_volume", smallest_cell_volume()},
-            // Element and face matrices computed once per class of translates (cell_similarity.hpp).
-            {"similar_cells",
-             {{"cells", system_->similarity().cells},
-              {"cell_classes", system_->similarity().cell_classes},
-              {"faces", system_->similarity().faces},
-              {"face_classes", system_->similarity().face_classes}}},
-            {"warping", spec_.warping},
-            {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
-            {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
+                  {"flux", flux_names[static_cast<int>(spec_.flux)]},
+                  {"penalty",
+                   {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
+                    {"value", spec_.penalty_value * (1 << doublings_)},
+                    {"doublings", doublings_},
+                    {"eta_pa", settings_.penalty},
+                    {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
+                    {"lame_split", spec_.lame_split}}},
+                  {"smallest_cell_volume", smallest_cell_volume()},
+                  // Element and face matrices computed once per class of translates (cell_similarity.hpp).
+                  {"similar_cells",
+                   {{"cells", system_->similarity().cells},
+                    {"cell_classes", system_->similarity().cell_classes},
+                    {"faces", system_->similarity().faces},
+                    {"face_classes", system_->similarity().face_classes}}},
+                  {"warping", spec_.warping},
+                  {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
+                  {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
     facts.update(surface_.facts());
     return facts;
   }
@@ -244,12 +256,12 @@ private:
     const auto coarse = static_cast<long>(space.prolongation.cols());
     const std::string name(dg_preconditioner_names[static_cast<int>(spec_.preconditioner)]);
     if (coarse > system_->dof_count())
-      throw InputError(input_message(
-          scene.file.string(), "/discretization/dg/preconditioner",
-          "'" + name + "' needs a coarse space smaller than the DG space, but the mesh's " +
-              std::to_string(space.nodes.size()) + " vertices give " + std::to_string(coarse) +
-              " coarse unknowns against " + std::to_string(system_->dof_count()) +
-              " DOFs (cut cells of a detailed surface have many facet vertices; use 'block_jacobi')"));
+      throw InputError(
+          input_message(scene.file.string(), "/discretization/dg/preconditioner",
+                        "'" + name + "' needs a coarse space smaller than the DG space, but the mesh's " +
+                            std::to_string(space.nodes.size()) + " vertices give " + std::to_string(coarse) +
+                            " coarse unknowns against " + std::to_string(system_->dof_count()) +
+                            " DOFs (cut cells of a detailed surface have many facet vertices; use 'block_jacobi')"));
     if (spec_.preconditioner == DgPreconditioner::two_level)
       return two_level_factory(element_dofs, std::move(space.prolongation));
     std::vector<Eigen::SparseMatrix<double>> grid_levels = grid_coarse_levels(mesh_, *system_, space);
@@ -360,7 +372,7 @@ private:
   int doublings_ = 0;
   VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
-  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
+  nlohmann::json mesh_facts_;    // its source (build_polyhedral_scene_mesh)
   std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;

@@ -10,8 +10,8 @@ namespace altfem::dg {
 namespace {
 
 using nlohmann::json;
-using scene_schema::ValueType;
 using scene_schema::Validator;
+using scene_schema::ValueType;
 
 // The keys the `dg` block shares with the `fem` block: the volume mesh that is
 // converted into polyhedra ("mesh" first: it alone also names the slicing).
@@ -37,13 +37,16 @@ void complete_dg_mesh(const Validator& validator, const json& scene, json& dg, c
                  : names_converted_mesh    ? "tetrahedralize"
                                            : "slice";
   complete_slice_key(validator, dg, pointer);
-  if (dg["mesh"] == "slice" && dg.value("embedding", "mls") == "stitched")  // it interpolates with the converted mesh's basis
-    validator.fail(pointer + "/embedding", "'stitched' needs a converted mesh (grid, tetrahedralize or file), not mesh "
-                                           "'slice'; use 'mls' or 'element'");
+  if (dg["mesh"] == "slice" &&
+      dg.value("embedding", "mls") == "stitched")  // it interpolates with the converted mesh's basis
+    validator.fail(pointer + "/embedding",
+                   "'stitched' needs a converted mesh (grid, tetrahedralize or file), not mesh "
+                   "'slice'; use 'mls' or 'element'");
   if (dg["mesh"] == "slice") {
     for (std::string_view key : mesh_keys)
       if (key != "mesh" && dg.contains(key))
-        validator.fail(pointer + "/" + std::string(key), "only with a converted mesh (grid, tetrahedralize or file), not with mesh 'slice'");
+        validator.fail(pointer + "/" + std::string(key),
+                       "only with a converted mesh (grid, tetrahedralize or file), not with mesh 'slice'");
     return;
   }
   // Straight-sided cells: the conversion keeps corner nodes only, so the linear element
@@ -103,8 +106,8 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
 
   json& penalty = dg["penalty"];
   if (!penalty.contains("convention")) penalty["convention"] = "mfem";
-  const auto convention = static_cast<PenaltyConvention>(
-      index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
+  const auto convention =
+      static_cast<PenaltyConvention>(index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   const int degree = dg["degree"].get<int>();
   if (!penalty.contains("value"))
     penalty["value"] = convention == PenaltyConvention::kaufmann ? 20.0
@@ -115,21 +118,25 @@ void complete_dg(const Validator& validator, const json& scene, json& dg, const 
                                              "' (a nonlinear model is already rotation-invariant: use warping false)");
   if (!penalty.contains("double_until_definite")) penalty["double_until_definite"] = true;
   if (dg["conditions"] == "strong" && dg["warping"].get<bool>())
-    validator.fail(pointer + "/conditions", "'strong' constrains the cells' coefficients, which stiffness warping "
-                                            "rotates: not with warping (use 'weak')");
+    validator.fail(pointer + "/conditions",
+                   "'strong' constrains the cells' coefficients, which stiffness warping "
+                   "rotates: not with warping (use 'weak')");
   // Hansbo & Larson's split by default where the penalty is (λ + 2μ)-scaled: without it,
   // k = 1 locks at ν = 0.499 (tests/verify/dg/test_locking.cpp).
   if (!penalty.contains("lame_split")) penalty["lame_split"] = convention != PenaltyConvention::kaufmann;
   if (penalty["lame_split"].get<bool>() && convention == PenaltyConvention::kaufmann)
-    validator.fail(pointer + "/penalty/lame_split",
-                   "splits a (λ + 2μ)-scaled penalty, but convention 'kaufmann' scales with E (use 'mfem' or 'dealii')");
+    validator.fail(
+        pointer + "/penalty/lame_split",
+        "splits a (λ + 2μ)-scaled penalty, but convention 'kaufmann' scales with E (use 'mfem' or 'dealii')");
 }
 
 const scene_schema::ObjectRule penalty_rule{
     {{.key = "convention", .type = ValueType::string, .choices = scene_schema::names(penalty_convention_names)},
      {.key = "value", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "double_until_definite", .type = ValueType::boolean},
-     {.key = "scaling", .type = ValueType::string, .default_value = "cell_surface",
+     {.key = "scaling",
+      .type = ValueType::string,
+      .default_value = "cell_surface",
       .choices = scene_schema::names(penalty_scaling_names)},
      {.key = "lame_split", .type = ValueType::boolean}}};
 
@@ -150,17 +157,28 @@ std::vector<std::string_view> mesh_names() {
 // A function-local static: it reads the fem block's rule, which must be initialised first.
 const scene_schema::ObjectRule& dg_rule() {
   static const scene_schema::ObjectRule rule{
-      {{.key = "degree", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one,
+      {{.key = "degree",
+        .type = ValueType::integer,
+        .default_value = 2,
+        .lower = scene_schema::at_least_one,
         .upper = scene_schema::Bound{3.0, true}},
        {.key = "flux", .type = ValueType::string, .choices = scene_schema::names(flux_names)},
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
-       {.key = "conditions", .type = ValueType::string, .default_value = "weak",
+       {.key = "conditions",
+        .type = ValueType::string,
+        .default_value = "weak",
         .choices = scene_schema::names(condition_imposition_names)},
-       {.key = "embedding", .type = ValueType::string, .default_value = "mls",
+       {.key = "embedding",
+        .type = ValueType::string,
+        .default_value = "mls",
         .choices = scene_schema::names(embedding_names)},
-       {.key = "preconditioner", .type = ValueType::string, .default_value = "block_jacobi",
+       {.key = "preconditioner",
+        .type = ValueType::string,
+        .default_value = "block_jacobi",
         .choices = scene_schema::names(dg_preconditioner_names)},
-       {.key = "simplifier", .type = ValueType::string, .default_value = "caratheodory",
+       {.key = "simplifier",
+        .type = ValueType::string,
+        .default_value = "caratheodory",
         .choices = scene_schema::names(simplifier_names)},
        {.key = "penalty", .type = ValueType::object, .default_value = json::object(), .object = &penalty_rule},
        {.key = "element", .type = ValueType::string, .choices = fem_element_names()},
@@ -184,8 +202,8 @@ DgSpec dg_spec(const Scene& scene) {
   spec.degree = dg["degree"].get<int>();
   spec.flux = static_cast<Flux>(index_of(flux_names, dg["flux"].get<std::string>()));
   const json& penalty = dg["penalty"];
-  spec.convention = static_cast<PenaltyConvention>(
-      index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
+  spec.convention =
+      static_cast<PenaltyConvention>(index_of(penalty_convention_names, penalty["convention"].get<std::string>()));
   spec.penalty_value = penalty["value"].get<double>();
   spec.double_until_definite = penalty["double_until_definite"].get<bool>();
   spec.scaling = static_cast<PenaltyScaling>(index_of(penalty_scaling_names, penalty["scaling"].get<std::string>()));
@@ -193,8 +211,8 @@ DgSpec dg_spec(const Scene& scene) {
   spec.warping = dg["warping"].get<bool>();
   spec.strong_conditions = dg["conditions"] == "strong";
   spec.embedding = static_cast<Embedding>(index_of(embedding_names, dg["embedding"].get<std::string>()));
-  spec.preconditioner = static_cast<DgPreconditioner>(
-      index_of(dg_preconditioner_names, dg["preconditioner"].get<std::string>()));
+  spec.preconditioner =
+      static_cast<DgPreconditioner>(index_of(dg_preconditioner_names, dg["preconditioner"].get<std::string>()));
   spec.rule_simplification = simplifier_from_name(dg["simplifier"].get<std::string>());
   if (dg["mesh"] == "slice") {
     spec.mesh.slicing = slicing_options_from_block(dg["slice"]);
@@ -205,7 +223,8 @@ DgSpec dg_spec(const Scene& scene) {
   convert.element = *element_type_from_name(dg["element"].get<std::string>());
   convert.mesh = static_cast<FemMeshKind>(index_of(fem_mesh_names, dg["mesh"].get<std::string>()));
   if (dg.contains("resolution"))
-    convert.resolution = {dg["resolution"][0].get<int>(), dg["resolution"][1].get<int>(), dg["resolution"][2].get<int>()};
+    convert.resolution = {dg["resolution"][0].get<int>(), dg["resolution"][1].get<int>(),
+                          dg["resolution"][2].get<int>()};
   if (dg.contains("max_cell_size")) convert.max_cell_size = dg["max_cell_size"].get<double>();
   return spec;
 }

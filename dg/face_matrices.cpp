@@ -60,7 +60,8 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
         for (int k = 0; k < 3; ++k) {
           if (!components[i]) continue;  // P v = 0 for an unprescribed test component
           const double traction = (i == k ? mu * value_times_gradient.dot(normal) : 0.0) +
-                                  mu * normal[k] * value_times_gradient[i] + lambda * normal[i] * value_times_gradient[k];
+                                  mu * normal[k] * value_times_gradient[i] +
+                                  lambda * normal[i] * value_times_gradient[k];
           consistency(3 * a + i, 3 * b + k) += factor * traction;  // (24); (25) is its transpose
         }
     }
@@ -68,9 +69,9 @@ FaceMatrixParts exact_face_matrix_parts(const Eigen::MatrixXd& polygon, const Ei
 }
 
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
-                                  const LameParameters& plus_lame, const JumpPenalty& penalty, Flux flux,
-                                  const std::array<bool, 3>& components) {
+                                  const MonomialBasis& minus, const MonomialBasis* plus,
+                                  const LameParameters& minus_lame, const LameParameters& plus_lame,
+                                  const JumpPenalty& penalty, Flux flux, const std::array<bool, 3>& components) {
   const FaceMatrixParts parts =
       exact_face_matrix_parts(polygon, normal, minus, plus, minus_lame, plus_lame, penalty, flux, components);
   return parts.penalty + parts.consistency[0] + parts.consistency[0].transpose() + parts.consistency[1] +

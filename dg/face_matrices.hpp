@@ -44,14 +44,15 @@ struct JumpPenalty {
 /// minus_lame, plus_lame: each side's Lamé parameters; the stress of a side's functions
 /// in {σ} takes that side's (a material interface: ½(σ⁻(u⁻) + σ⁺(u⁺)) with σ^± = C^± ε).
 Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                  const MonomialBasis& minus, const MonomialBasis* plus, const LameParameters& minus_lame,
-                                  const LameParameters& plus_lame, const JumpPenalty& penalty, Flux flux,
+                                  const MonomialBasis& minus, const MonomialBasis* plus,
+                                  const LameParameters& minus_lame, const LameParameters& plus_lame,
+                                  const JumpPenalty& penalty, Flux flux,
                                   const std::array<bool, 3>& components = {true, true, true});
 
 /// One material on both sides.
 inline Eigen::MatrixXd exact_face_matrix(const Eigen::MatrixXd& polygon, const Eigen::Vector3d& normal,
-                                         const MonomialBasis& minus, const MonomialBasis* plus, double lambda, double mu,
-                                         const JumpPenalty& penalty, Flux flux,
+                                         const MonomialBasis& minus, const MonomialBasis* plus, double lambda,
+                                         double mu, const JumpPenalty& penalty, Flux flux,
                                          const std::array<bool, 3>& components = {true, true, true}) {
   return exact_face_matrix(polygon, normal, minus, plus, {lambda, mu}, {lambda, mu}, penalty, flux, components);
 }

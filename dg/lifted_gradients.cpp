@@ -16,8 +16,8 @@ namespace {
 struct LiftedCell {
   std::vector<int> functions;
   Eigen::VectorXd weights;
-  Eigen::MatrixXd values;     // #points × #functions
-  Eigen::MatrixXd gradients;  // (#points·#functions) × 3
+  Eigen::MatrixXd values;               // #points × #functions
+  Eigen::MatrixXd gradients;            // (#points·#functions) × 3
   LiftedDirichletData::Cell dirichlet;  // no face points when the cell has no Dirichlet face
 };
 
@@ -71,7 +71,8 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
     int neighbour = -1, column = 0;
     if (face.plus >= 0) {
       neighbour = face.minus == cell ? face.plus : face.minus;
-      column = std::find_if(first.begin(), first.end(), [&](const auto& entry) { return entry.first == neighbour; })->second;
+      column =
+          std::find_if(first.begin(), first.end(), [&](const auto& entry) { return entry.first == neighbour; })->second;
     }
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * basis.degree());
     for (Eigen::Index p = 0; p < rule.weights.size(); ++p) {
@@ -107,7 +108,8 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
   // The lifting's coefficients c(m, 3a + j): r_a,j = Σ_m c(m, 3a + j) φ_m, from
   // Σ_m' ∫_K φ_m φ_m' c(m', ·) = b(m, ·) (the mass of K's monomials: rule strength ≥ 2k).
   const Eigen::LLT<Eigen::MatrixXd> mass_factor(mass);
-  const Eigen::MatrixXd lifting_at_points = own_values * mass_factor.solve(right_hand_sides);  // #points × 3n: r_a,j(x_q)
+  const Eigen::MatrixXd lifting_at_points =
+      own_values * mass_factor.solve(right_hand_sides);  // #points × 3n: r_a,j(x_q)
   if (!data_columns.empty()) {
     const auto count = static_cast<Eigen::Index>(data_columns.size());
     Eigen::MatrixXd columns(own, count);
@@ -126,8 +128,7 @@ LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<i
   lifted.values.leftCols(own) = own_values;
   lifted.gradients.resize(points * n, 3);
   for (Eigen::Index q = 0; q < points; ++q) {
-    for (int a = 0; a < n; ++a)
-      lifted.gradients.row(q * n + a) = -lifting_at_points.block(q, 3 * a, 1, 3);
+    for (int a = 0; a < n; ++a) lifted.gradients.row(q * n + a) = -lifting_at_points.block(q, 3 * a, 1, 3);
     lifted.gradients.middleRows(q * n, own) += own_gradients[q];
   }
   return lifted;

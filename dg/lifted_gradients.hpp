@@ -36,11 +36,11 @@ namespace altfem::dg {
 class LiftedDirichletData {
 public:
   struct Cell {
-    long long first_point = 0;           ///< the cell's first volume point in the elements' order
-    Eigen::MatrixXd face_points;         ///< #face points × 3
-    Eigen::MatrixXd normals;             ///< #face points × 3, out of the cell
-    std::vector<int> conditions;         ///< #face points: the face's condition
-    Eigen::MatrixXd coefficients;        ///< #volume points × #face points: c_qp
+    long long first_point = 0;     ///< the cell's first volume point in the elements' order
+    Eigen::MatrixXd face_points;   ///< #face points × 3
+    Eigen::MatrixXd normals;       ///< #face points × 3, out of the cell
+    std::vector<int> conditions;   ///< #face points: the face's condition
+    Eigen::MatrixXd coefficients;  ///< #volume points × #face points: c_qp
   };
 
   void add(Cell cell) { cells_.push_back(std::move(cell)); }

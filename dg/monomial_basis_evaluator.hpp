@@ -23,7 +23,8 @@ public:
   bool evaluate_inside(int element, const Eigen::Vector3d& x, std::vector<int>& basis,
                        std::vector<double>& values) const override;
   /// The cell whose boundary is nearest (its bounding box's distance prunes).
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override;
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override;
   BoundaryPointRule boundary_rule() const override { return BoundaryPointRule::average; }
 
 private:

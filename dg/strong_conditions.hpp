@@ -26,10 +26,10 @@ namespace altfem::dg {
 /// A cell with strongly constrained faces, and its change of basis.
 struct StrongCell {
   int cell = 0;
-  std::vector<int> faces;                ///< indices into the face list, each with `components`
-  std::array<bool, 3> components{};      ///< the components its faces prescribe
-  Eigen::MatrixXd combination;           ///< n × n, orthogonal: r constrained columns, then the free ones
-  int constrained = 0;                   ///< r
+  std::vector<int> faces;            ///< indices into the face list, each with `components`
+  std::array<bool, 3> components{};  ///< the components its faces prescribe
+  Eigen::MatrixXd combination;       ///< n × n, orthogonal: r constrained columns, then the free ones
+  int constrained = 0;               ///< r
   /// r × (#faces · n): the constrained coefficients of a component from its stacked
   /// data d (d_b = ∫_f g_i m_b dA face after face), C Q₁ w = d solved by least squares.
   Eigen::MatrixXd data_map;

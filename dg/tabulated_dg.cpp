@@ -53,9 +53,10 @@ FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
     tabulate_basis(system.basis(face.minus), rule.points, 0, values_minus, gradients_minus);
     if (face.plus >= 0) tabulate_basis(system.basis(face.plus), rule.points, minus_count, values_plus, gradients_plus);
     const Eigen::MatrixXd normals = face.normal.transpose().replicate(points, 1);
-    terms.faces.add(functions, std::span<const double>(rule.weights.data(), points), normals, values_minus,
-                    values_plus, gradients_minus, gradients_plus, face.minus, face.plus);
-    const Eigen::Matrix3d mask = Eigen::Vector3d(face.components[0], face.components[1], face.components[2]).asDiagonal();
+    terms.faces.add(functions, std::span<const double>(rule.weights.data(), points), normals, values_minus, values_plus,
+                    gradients_minus, gradients_plus, face.minus, face.plus);
+    const Eigen::Matrix3d mask =
+        Eigen::Vector3d(face.components[0], face.components[1], face.components[2]).asDiagonal();
     terms.penalties.push_back(mask * system.face_penalty(face).tensor(face.normal) * mask);
   }
   return terms;
@@ -71,8 +72,8 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
     const int n = system.basis(cell).size();
     Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
     tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
-    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()), values,
-                 gradients, system.material_id(cell));
+    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()),
+                 values, gradients, system.material_id(cell));
     if (points) cell_points.push_back(rule.points);
   }
   if (points) {
@@ -85,8 +86,7 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner, ConditionTrajectory data,
-                              DirichletDofs strong) {
+                              PreconditionerFactory preconditioner, ConditionTrajectory data, DirichletDofs strong) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
   TabulatedDg result;
@@ -107,8 +107,8 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   parts.materials = std::move(materials);
   FaceTerms terms = tabulate_faces(system, strength);
   result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
-  parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
-      *result.faces, JumpPenaltyKernel(std::move(terms.penalties))));
+  parts.terms.push_back(
+      std::make_unique<FaceAssembler<JumpPenaltyKernel>>(*result.faces, JumpPenaltyKernel(std::move(terms.penalties))));
   parts.conditions_weakly = strong.dofs.empty();
   parts.dirichlet = std::move(strong);
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells
@@ -116,7 +116,8 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   if (interior_penalty)
     for (int cell = 0; cell < system.cell_count(); ++cell) {
       parts.mass_blocks.emplace_back();
-      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof) parts.mass_blocks.back().push_back(dof);
+      for (int dof = 3 * system.offset(cell); dof < 3 * system.offset(cell + 1); ++dof)
+        parts.mass_blocks.back().push_back(dof);
     }
   parts.external_force = std::move(external_force);
   parts.preconditioner = std::move(preconditioner);

@@ -6,9 +6,9 @@
 #include <algorithm>
 
 #include "dg/exact_element_matrices.hpp"
-#include "shared/quadrature/polyhedron_rule.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
 
@@ -82,7 +82,8 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
       for (const DofRange& range : block.ranges) {
         const int* begin = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column];
         const int* end = pattern.innerIndexPtr() + pattern.outerIndexPtr()[column + 1];
-        block.value_index.push_back(static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
+        block.value_index.push_back(
+            static_cast<int>(std::lower_bound(begin, end, range.first) - pattern.innerIndexPtr()));
       }
   }
   std::vector<int> cell_dofs;  // each element's first DOF
@@ -95,8 +96,8 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
     int position = 0;
     for (int r = 0; r < static_cast<int>(blocks_[b].ranges.size()); ++r) {
       const DofRange& range = blocks_[b].ranges[r];
-      const int element = static_cast<int>(std::upper_bound(cell_dofs.begin(), cell_dofs.end(), range.first) -
-                                           cell_dofs.begin()) - 1;
+      const int element =
+          static_cast<int>(std::upper_bound(cell_dofs.begin(), cell_dofs.end(), range.first) - cell_dofs.begin()) - 1;
       element_blocks_[element].push_back({b, r, position});
       position += range.count;
     }
@@ -124,7 +125,7 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
 }
 
 WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinearSystem& system,
-                                                                  const DgSettings& settings) {
+                                                                   const DgSettings& settings) {
   using Range = DofRange;
   Parts parts;
   std::vector<Eigen::Triplet<double>> penalty, pattern;
@@ -139,7 +140,8 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
   };
   for (int cell = 0; cell < system.cell_count(); ++cell) {
     const DgMaterial material = system.material(cell);
-    ElementMatrices matrices = exact_element_matrices(system.cell(cell), system.basis(cell), material.lambda, material.mu, 1.0);
+    ElementMatrices matrices =
+        exact_element_matrices(system.cell(cell), system.basis(cell), material.lambda, material.mu, 1.0);
     parts.affine_fit.push_back(affine_fit_gradients(matrices.mass, system.basis(cell)));
     add({range_of(cell)}, cell, std::move(matrices.stiffness));  // eq. (29)
   }
@@ -159,8 +161,16 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
         if (matrices.penalty(i, j) != 0) penalty.emplace_back(dofs[i], dofs[j], matrices.penalty(i, j));
     if (settings.flux != Flux::interior_penalty) continue;
     if (face.plus < 0) {
-      DirichletFace data{face.minus,           face.condition,        3 * system.offset(face.minus), face.normal,
-                         face.components,      minus_material.lambda, minus_material.mu,           {}, {}, {}};
+      DirichletFace data{face.minus,
+                         face.condition,
+                         3 * system.offset(face.minus),
+                         face.normal,
+                         face.components,
+                         minus_material.lambda,
+                         minus_material.mu,
+                         {},
+                         {},
+                         {}};
       const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings.degree + 2);  // as dirichlet_load's
       const MonomialBasis& basis = system.basis(face.minus);
       data.points = rule.points;
@@ -201,7 +211,8 @@ std::vector<Eigen::Matrix3d> WarpedDgDiscretization::rotations(const Eigen::Vect
     const int first = cell_offsets_[cell], count = cell_offsets_[cell + 1] - first;
     // u's coefficients of this cell as 3 × #functions (column a = u_a).
     const Eigen::Map<const Eigen::MatrixXd> coefficients(u.data() + 3 * first, 3, count);
-    const Eigen::Matrix3d deformation_gradient = Eigen::Matrix3d::Identity() + coefficients * affine_fit_[cell].transpose();
+    const Eigen::Matrix3d deformation_gradient =
+        Eigen::Matrix3d::Identity() + coefficients * affine_fit_[cell].transpose();
     result[cell] = polar_rotation(deformation_gradient);
   }
   return result;
@@ -212,7 +223,7 @@ int WarpedDgDiscretization::threads() const {
 }
 
 double WarpedDgDiscretization::block_force(const Block& block, const Eigen::Matrix3d& rotation,
-                                          const Eigen::VectorXd& u, Scratch& scratch) const {
+                                           const Eigen::VectorXd& u, Scratch& scratch) const {
   const auto n = block.matrix.rows();
   auto rest = scratch.rest.head(n), z = scratch.z.head(n), jump = scratch.jump.head(n), force = scratch.force.head(n);
   Eigen::Index position = 0;

@@ -39,7 +39,6 @@
 
 namespace altfem::dg {
 
-
 class WarpedDgDiscretization final : public LinearDgDiscretization {
 public:
   /// Re-integrates the system's element and face matrices (exactly, as DgLinearSystem
@@ -49,8 +48,7 @@ public:
   /// data, empty when every condition is fixed (g = 0).
   WarpedDgDiscretization(const DgLinearSystem& system, const DgSettings& settings, Eigen::VectorXd function_integrals,
                          std::vector<std::vector<int>> element_dofs,
-                         std::function<Eigen::VectorXd(double)> penalty_data_load,
-                         ConditionTrajectory trajectory = {});
+                         std::function<Eigen::VectorXd(double)> penalty_data_load, ConditionTrajectory trajectory = {});
 
   double energy(const Eigen::VectorXd& u) const override;
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
@@ -128,10 +126,10 @@ private:
   mutable std::vector<Scratch> scratch_;                // per thread
   mutable std::vector<double> block_energies_;          // per block, summed in block order
   mutable Eigen::VectorXd block_forces_;                // each block's R_S K_S z_S
-  Eigen::SparseMatrix<double> penalty_;  // K_3, the unwarped jump terms, on hessian_pattern()
+  Eigen::SparseMatrix<double> penalty_;                 // K_3, the unwarped jump terms, on hessian_pattern()
   Eigen::VectorXd rest_state_;
-  std::vector<int> cell_offsets_;              // #cells + 1: first basis function of each cell
-  std::vector<Eigen::MatrixXd> affine_fit_;    // per cell 3 × #functions: ∇ of the L2 affine fit of φ_a
+  std::vector<int> cell_offsets_;            // #cells + 1: first basis function of each cell
+  std::vector<Eigen::MatrixXd> affine_fit_;  // per cell 3 × #functions: ∇ of the L2 affine fit of φ_a
 };
 
 }  // namespace altfem::dg

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/fem_mesh.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -42,7 +42,8 @@ int main(int argc, char** argv) {
   const Discretization& fem = *discretization;
 
   // 5. Static equilibrium: minimise Ψ(u) − f·u with the load f_a = ∫ ρ g N_a dV (equal
-  //    to M g, the consistent mass times gravity, for this partition-of-unity basis). Linear elasticity makes this one Newton step: K u = f.
+  //    to M g, the consistent mass times gravity, for this partition-of-unity basis). Linear elasticity makes this one
+  //    Newton step: K u = f.
   IntegratorOptions options;
   options.kind = IntegrationScheme::static_equilibrium;
   options.gravity = scene.gravity;
@@ -77,7 +78,8 @@ int main(int argc, char** argv) {
   const double E = scene.material.youngs_modulus, nu = scene.material.poisson_ratio;
   const double q = scene.material.density * scene.gravity.norm() * area;
   const double shear_modulus = E / (2 * (1 + nu));
-  const double theory = q * std::pow(length, 4) / (8 * E * inertia) + q * length * length / (2 * 5.0 / 6.0 * shear_modulus * area);
+  const double theory =
+      q * std::pow(length, 4) / (8 * E * inertia) + q * length * length / (2 * 5.0 / 6.0 * shear_modulus * area);
   const double relative = std::abs(deflection - theory) / theory;
   std::printf("tip deflection %.6e m, Timoshenko %.6e m, difference %.2f%%\n", deflection, theory, 100 * relative);
   const bool verified = relative < 0.05;

@@ -100,8 +100,8 @@ int main(int argc, char** argv) {
   // 3. For each penalty: the parts, assembled into a Discretization, solved.
   const double conforming_tip = tip_deflection(
       conforming, solve(*make_lagrange_discretization(conforming, *material, scene.dirichlet, 2, file), scene));
-  std::printf("conforming Hex8 beam: tip deflection %.6e m\n\n%8s %16s %12s\n", conforming_tip, "eta",
-              "glued tip [m]", "rel. diff.");
+  std::printf("conforming Hex8 beam: tip deflection %.6e m\n\n%8s %16s %12s\n", conforming_tip, "eta", "glued tip [m]",
+              "rel. diff.");
   const double volume = cell_size.prod(), area = cell_size.y() * cell_size.z();
   double previous_difference = INFINITY;
   bool converging = true;

@@ -44,8 +44,8 @@ double integrate_monomial(const QuadratureRule& rule, const fcm::CellGeometry& c
 
 int main() {
   // The background cell: one Hex20 of the unit cube (its corners give the geometry).
-  const VolumeMesh background = structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()}, {1, 1, 1},
-                                                ElementType::hex20);
+  const VolumeMesh background =
+      structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()}, {1, 1, 1}, ElementType::hex20);
   Eigen::MatrixXd corners(8, 3);
   for (int a = 0; a < 8; ++a) corners.row(a) = background.nodes.row(background.cells(0, a));
   const fcm::CellGeometry cell(ElementType::hex20, corners);
@@ -98,9 +98,9 @@ int main() {
   //    (to round-off) up to degree m, not beyond — the price of M points.
   std::printf("\n%10s %8s %20s %20s %10s\n", "x^a y^b z^c", "degree", "intersection", "simplified", "rel. diff.");
   double worst_exact_degree = 0, beyond = 0;
-  for (const Eigen::Vector3i& exponent : {Eigen::Vector3i(0, 0, 0), Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 2, 1),
-                                         Eigen::Vector3i(2, 1, 1), Eigen::Vector3i(0, 0, 4), Eigen::Vector3i(3, 2, 1),
-                                         Eigen::Vector3i(0, 6, 2)}) {
+  for (const Eigen::Vector3i& exponent :
+       {Eigen::Vector3i(0, 0, 0), Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 2, 1), Eigen::Vector3i(2, 1, 1),
+        Eigen::Vector3i(0, 0, 4), Eigen::Vector3i(3, 2, 1), Eigen::Vector3i(0, 6, 2)}) {
     const double reference = integrate_monomial(exact_rule, cell, exponent);
     const double value = integrate_monomial(rule, cell, exponent);
     const double difference = std::abs(value - reference) / std::abs(reference);

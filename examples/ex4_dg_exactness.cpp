@@ -86,7 +86,8 @@ int main() {
     bz_converging = bz_converging && bz.l2 < previous_bz;
     previous_bz = bz.l2;
   }
-  std::printf("\n%s: IP reproduces the quadratic solution to 1e-9 for every eta\n", ip_exact ? "verified" : "NOT verified");
+  std::printf("\n%s: IP reproduces the quadratic solution to 1e-9 for every eta\n",
+              ip_exact ? "verified" : "NOT verified");
   std::printf("%s: BZ does not (error > 1e-6), and its error shrinks as eta grows\n",
               bz_inconsistent && bz_converging ? "verified" : "NOT verified");
   return ip_exact && bz_inconsistent && bz_converging ? 0 : 1;

@@ -62,8 +62,8 @@ int main(int argc, char** argv) {
   // 2. A sampling grid of the element: the cells of a 16 × 16 × 6 grid of its bounding box
   //    whose centre lies inside (winding number 1); the L's edges fall on grid lines, so
   //    the kept cells fill the element exactly. Unused grid nodes are dropped.
-  const VolumeMesh box = structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 2, 0.7)}, {16, 16, 6},
-                                         ElementType::hex8);
+  const VolumeMesh box =
+      structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 2, 0.7)}, {16, 16, 6}, ElementType::hex8);
   std::vector<int> kept_cells, node_number(box.nodes.rows(), -1);
   int node_count = 0;
   for (Eigen::Index cell = 0; cell < box.cells.rows(); ++cell) {
@@ -79,7 +79,8 @@ int main(int argc, char** argv) {
   for (Eigen::Index node = 0; node < box.nodes.rows(); ++node)
     if (node_number[node] >= 0) samples.nodes.row(node_number[node]) = box.nodes.row(node);
   for (size_t k = 0; k < kept_cells.size(); ++k)
-    for (int a = 0; a < 8; ++a) samples.cells(static_cast<Eigen::Index>(k), a) = node_number[box.cells(kept_cells[k], a)];
+    for (int a = 0; a < 8; ++a)
+      samples.cells(static_cast<Eigen::Index>(k), a) = node_number[box.cells(kept_cells[k], a)];
 
   // 3. Partition of unity, linear reproduction and the maximum principle on the samples.
   const Eigen::MatrixXd values = basis.values(samples.nodes);  // #samples × #nodes
@@ -112,8 +113,9 @@ int main(int argc, char** argv) {
   // within [−0.030, 1.011]; at 5: 7.9e-3, 0.13 (10 samples per edge: 0.075).
   const bool ok = unity_error < 1e-10 && linear_error < 1e-10 && kronecker_error < 4e-2 &&
                   reentrant_kronecker_error < 0.2 && lowest > -4e-2 && highest < 1 + 4e-2;
-  std::printf("\n%s: partition of unity and linear reproduction to 1e-10; N_i(x_j) = delta_ij to 4e-2\n"
-              "(0.2 on the re-entrant edge); 0 <= N_i <= 1 to 4e-2\n",
-              ok ? "verified" : "NOT verified");
+  std::printf(
+      "\n%s: partition of unity and linear reproduction to 1e-10; N_i(x_j) = delta_ij to 4e-2\n"
+      "(0.2 on the re-entrant edge); 0 <= N_i <= 1 to 4e-2\n",
+      ok ? "verified" : "NOT verified");
   return ok ? 0 : 1;
 }

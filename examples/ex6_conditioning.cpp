@@ -31,8 +31,8 @@ int main() {
   const std::vector<int> exponents{0, 6, 12, 18, 24, 30};
   bool ok = true;
   for (const double stabilization : {0.0, 1e-6}) {
-    const std::vector<fcm::ConditioningRow> rows = fcm::conditioning_experiment(ElementType::hex8, exponents,
-                                                                                stabilization);
+    const std::vector<fcm::ConditioningRow> rows =
+        fcm::conditioning_experiment(ElementType::hex8, exponents, stabilization);
     std::printf("Hex8, stabilisation %g: kappa(SA) and PCG iterations to 1e-8\n", stabilization);
     std::printf("%10s %11s %11s %11s %8s %8s %8s\n", "fraction", "none", "Jacobi", "Schwarz", "CG", "J-PCG", "S-PCG");
     for (size_t k = 0; k < rows.size(); ++k)
@@ -44,10 +44,10 @@ int main() {
     // CG with it converges); without it, Schwarz fails too (its cell blocks are
     // singular to round-off), while Jacobi alone suffices for first-order cells.
     const fcm::ConditioningRow& smallest = rows.back();
-    const bool figure_five = stabilization > 0 ? smallest.none > 1e6 && smallest.schwarz < 1e5 &&
-                                                     smallest.schwarz < 1e-3 * smallest.none &&
-                                                     smallest.schwarz_iterations < smallest.none_iterations
-                                               : smallest.none > 1e10 && smallest.schwarz > 1e10 && smallest.jacobi < 1e5;
+    const bool figure_five =
+        stabilization > 0 ? smallest.none > 1e6 && smallest.schwarz < 1e5 && smallest.schwarz < 1e-3 * smallest.none &&
+                                smallest.schwarz_iterations < smallest.none_iterations
+                          : smallest.none > 1e10 && smallest.schwarz > 1e10 && smallest.jacobi < 1e5;
     if (stabilization > 0)
       std::printf("%s: at 2^-30 Schwarz kappa %.2e << none %.2e (%d vs %d CG iterations)\n\n",
                   figure_five ? "verified" : "NOT verified", smallest.schwarz, smallest.none,

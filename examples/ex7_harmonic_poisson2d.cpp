@@ -26,12 +26,12 @@
 // the free-free block against DOFs for both refinements, as Fig. 6 does, and checks
 // (exit 1 otherwise) that uniform refinement converges at L2 rate ≥ 1.8 and that adaptive
 // refinement reaches the finest uniform error with fewer DOFs.
-#include <Eigen/Eigenvalues>
-#include <Eigen/SparseCholesky>
 #include <Spectra/MatOp/SparseSymMatProd.h>
 #include <Spectra/MatOp/SparseSymShiftSolve.h>
 #include <Spectra/SymEigsShiftSolver.h>
 #include <Spectra/SymEigsSolver.h>
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 
 #include <cmath>
 #include <cstdio>
@@ -157,7 +157,8 @@ void square_rule(const Cell& cell, int order, Eigen::MatrixX2d& points, Eigen::V
   weights.resize(order * order);
   for (int i = 0; i < order; ++i)
     for (int j = 0; j < order; ++j) {
-      points.row(i * order + j) = origin.transpose() + 0.5 * h * Eigen::RowVector2d(line.points(i, 0) + 1, line.points(j, 0) + 1);
+      points.row(i * order + j) =
+          origin.transpose() + 0.5 * h * Eigen::RowVector2d(line.points(i, 0) + 1, line.points(j, 0) + 1);
       weights[i * order + j] = 0.25 * h * h * line.weights[i] * line.weights[j];
     }
 }
@@ -166,7 +167,8 @@ void square_rule(const Cell& cell, int order, Eigen::MatrixX2d& points, Eigen::V
 // smallest by shift-invert about 0, one sparse factorisation); dense when small.
 double condition_number(const Eigen::SparseMatrix<double>& matrix) {
   if (matrix.rows() <= 100) {
-    const Eigen::VectorXd eigenvalues = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(matrix)).eigenvalues();
+    const Eigen::VectorXd eigenvalues =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(Eigen::MatrixXd(matrix)).eigenvalues();
     return eigenvalues.maxCoeff() / eigenvalues.minCoeff();
   }
   Spectra::SparseSymMatProd<double> product(matrix);
@@ -209,9 +211,9 @@ Result solve(const PolygonMesh& mesh) {
     square_rule(mesh.cells[e], 4, points, weights);
     for (Eigen::Index q = 0; q < weights.size(); ++q) {
       const Eigen::Vector3d x(points(q, 0), points(q, 1), 0);
-      const Eigen::MatrixX3d gradients = bases.back().gradients(x);            // k × 3
+      const Eigen::MatrixX3d gradients = bases.back().gradients(x);                     // k × 3
       const Eigen::VectorXd values = bases.back().evaluate(x.transpose()).transpose();  // k
-      const Eigen::MatrixXd local = weights[q] * gradients * gradients.transpose();  // ∫ ∇N_a·∇N_b
+      const Eigen::MatrixXd local = weights[q] * gradients * gradients.transpose();     // ∫ ∇N_a·∇N_b
       for (int a = 0; a < k; ++a) {
         const int row = unknown[polygon[a]];
         if (row < 0) continue;
@@ -298,7 +300,8 @@ int main() {
   // Check 1: the uniform L2 rate at the two finest levels (bilinear-like: 2).
   const Result& finest = uniform.back();
   const Result& before = uniform[uniform.size() - 2];
-  const double rate = -2 * std::log(finest.l2_error / before.l2_error) / std::log(static_cast<double>(finest.dofs) / before.dofs);
+  const double rate =
+      -2 * std::log(finest.l2_error / before.l2_error) / std::log(static_cast<double>(finest.dofs) / before.dofs);
   // Check 2: the fewest adaptive DOFs that reach the finest uniform error.
   int adaptive_dofs = -1;
   for (const Result& r : adaptive)

@@ -46,8 +46,8 @@ std::vector<int> first_node_at_position(const Eigen::MatrixXd& nodes) {
   std::map<std::array<double, 3>, int> first;
   std::vector<int> canonical(static_cast<std::size_t>(nodes.rows()));
   for (int node = 0; node < nodes.rows(); ++node)
-    canonical[node] = first.emplace(std::array<double, 3>{nodes(node, 0), nodes(node, 1), nodes(node, 2)}, node)
-                          .first->second;
+    canonical[node] =
+        first.emplace(std::array<double, 3>{nodes(node, 0), nodes(node, 1), nodes(node, 2)}, node).first->second;
   return canonical;
 }
 
@@ -168,7 +168,8 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
 /// Whether the embedded tetrahedron's face lies in `plane`.
 bool face_in_plane(const VolumeMesh& embedded, int tetrahedron, int face, const Plane& plane, double threshold) {
   for (int c = 0; c < 3; ++c)
-    if (plane.distance(embedded.nodes.row(embedded.cells(tetrahedron, tetrahedron_faces[face][c])).transpose()) > threshold)
+    if (plane.distance(embedded.nodes.row(embedded.cells(tetrahedron, tetrahedron_faces[face][c])).transpose()) >
+        threshold)
       return false;
   return true;
 }
@@ -176,8 +177,8 @@ bool face_in_plane(const VolumeMesh& embedded, int tetrahedron, int face, const 
 }  // namespace
 
 int CellPieces::split_cells() const {
-  return static_cast<int>(std::count_if(tetrahedra.begin(), tetrahedra.end(),
-                                        [](const auto& pieces) { return pieces.size() >= 2; }));
+  return static_cast<int>(
+      std::count_if(tetrahedra.begin(), tetrahedra.end(), [](const auto& pieces) { return pieces.size() >= 2; }));
 }
 
 int CellPieces::piece_count() const {
@@ -216,7 +217,8 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
   result.neighbours.resize(cell_count);
   for (int cell = 0; cell < cell_count; ++cell) {
     const CellFragments& fragments = cells[cell];
-    const int pieces = fragments.piece.empty() ? 0 : *std::max_element(fragments.piece.begin(), fragments.piece.end()) + 1;
+    const int pieces =
+        fragments.piece.empty() ? 0 : *std::max_element(fragments.piece.begin(), fragments.piece.end()) + 1;
     result.tetrahedra[cell].resize(pieces);
     result.neighbours[cell].resize(pieces);
     for (std::size_t i = 0; i < fragments.fragments.size(); ++i)
@@ -252,7 +254,8 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
         // A neighbouring tetrahedron through a face lying in the cell face.
         for (int g = 0; g < 4; ++g) {
           const int neighbour = tetrahedron_neighbours[fragment.tetrahedron][g];
-          if (neighbour < 0 || !face_in_plane(embedded, fragment.tetrahedron, g, plane, here.distance_threshold)) continue;
+          if (neighbour < 0 || !face_in_plane(embedded, fragment.tetrahedron, g, plane, here.distance_threshold))
+            continue;
           if (const int other = there.find(neighbour); touches(other))
             link(cell, here.piece[i], across.cell, there.piece[other]);
         }

@@ -15,8 +15,8 @@ namespace altfem::fcm {
 enum class CellKind { outside, inside, cut };
 
 struct CellRuleOptions {
-  int order = 4;                       ///< m: polynomial degree integrated exactly
-  bool simplify = true;                ///< false keeps the intersection rules (§6.3's comparison)
+  int order = 4;         ///< m: polynomial degree integrated exactly
+  bool simplify = true;  ///< false keeps the intersection rules (§6.3's comparison)
   SimplificationMethod method = SimplificationOptions{}.method;
   double tolerance = SimplificationOptions{}.tolerance;  ///< accepted moment residual
 };

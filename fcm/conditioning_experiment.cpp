@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "fcm/box_cell_quadrature.hpp"
-#include "fcm/intersection_cell_quadrature.hpp"
 #include "fcm/fcm_discretization.hpp"
+#include "fcm/intersection_cell_quadrature.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
@@ -51,8 +51,8 @@ std::vector<ConditioningRow> conditioning_experiment(ElementType cell, const std
                                                      double stabilization, double ghost_penalty) {
   const Eigen::AlignedBox3d domain(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(4.0 / 3.0));
   const VolumeMesh grid = structured_grid(domain, {4, 4, 4}, cell);
-  const auto material = make_material(MaterialModel::stable_neo_hookean, conditioning_youngs_modulus,
-                                      conditioning_poisson_ratio, 1000);
+  const auto material =
+      make_material(MaterialModel::stable_neo_hookean, conditioning_youngs_modulus, conditioning_poisson_ratio, 1000);
   DirichletCondition clamp;
   clamp.region.box = Eigen::AlignedBox3d(Eigen::Vector3d::Constant(-1), Eigen::Vector3d(0, 2, 2));
   clamp.pointer = "/boundary_conditions/0";

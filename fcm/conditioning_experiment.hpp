@@ -11,7 +11,7 @@
 namespace altfem::fcm {
 
 struct ConditioningRow {
-  double volume_fraction;  ///< of the smallest cut cell, ε³
+  double volume_fraction;        ///< of the smallest cut cell, ε³
   double none, jacobi, schwarz;  ///< κ(SA) = max |λ| / min |λ| of S^{1/2} A S^{1/2}
   /// Preconditioned CG iterations to a relative residual of 1e-8 on A x = A 1
   /// (capped at 2000: then CG did not converge).

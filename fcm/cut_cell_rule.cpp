@@ -23,8 +23,9 @@ CellGeometry::CellGeometry(ElementType type, const Eigen::Ref<const Eigen::Matri
     affine_ = true;
   } else {
     if (!hexahedron_faces_planar(corners_)) {
-      throw NumericalError("fcm: a hexahedral background cell has non-planar faces; intersection "
-                           "quadrature clips by the face planes");
+      throw NumericalError(
+          "fcm: a hexahedral background cell has non-planar faces; intersection "
+          "quadrature clips by the face planes");
     }
     planes_ = hexahedron_clip_planes(corners_);
     // The trilinear map is affine when its bilinear and trilinear coefficients
@@ -61,8 +62,8 @@ double CellGeometry::jacobian_determinant(const Eigen::Vector3d& xi) const {
 
 double CellGeometry::volume() const {
   // det J of a trilinear map has degree <= 2 in each coordinate: strength 3 is exact.
-  const QuadratureRule rule = reference_rule(
-      corner_type_ == ElementType::tet4 ? ReferenceDomain::tetrahedron : ReferenceDomain::hexahedron, 3);
+  const QuadratureRule rule =
+      reference_rule(corner_type_ == ElementType::tet4 ? ReferenceDomain::tetrahedron : ReferenceDomain::hexahedron, 3);
   double sum = 0.0;
   for (Eigen::Index q = 0; q < rule.points.rows(); ++q) {
     sum += rule.weights(q) * jacobian_determinant(rule.points.row(q).transpose());

@@ -38,14 +38,14 @@ private:
   Eigen::MatrixXd corners_;
   std::vector<ClipPlane> planes_;
   bool affine_ = false;
-  Eigen::Vector3d origin_;           ///< x(ξ = 0) when affine
-  Eigen::Matrix3d jacobian_;         ///< ∂x/∂ξ when affine
+  Eigen::Vector3d origin_;    ///< x(ξ = 0) when affine
+  Eigen::Matrix3d jacobian_;  ///< ∂x/∂ξ when affine
   Eigen::Matrix3d inverse_jacobian_;
 };
 
 struct IntersectionRule {
-  QuadratureRule rule;         ///< points #points × 3 in the cell's reference domain; ∫ f ≈ Σ w f(ξ)|J_K(ξ)|
-  double clipped_volume = 0.0; ///< physical volume of the clipped pieces (Σ |J_Q| / 6)
+  QuadratureRule rule;          ///< points #points × 3 in the cell's reference domain; ∫ f ≈ Σ w f(ξ)|J_K(ξ)|
+  double clipped_volume = 0.0;  ///< physical volume of the clipped pieces (Σ |J_Q| / 6)
 };
 
 /// The rule of eqs. (11)–(12) for cell ∩ (union of `tetrahedra`), exact for polynomials

@@ -1,6 +1,5 @@
 #include "fcm/embedded_mesh.hpp"
 
-
 #include "shared/common/error.hpp"
 #include "shared/scene/tetrahedralize_geometry.hpp"
 
@@ -9,9 +8,9 @@ namespace altfem::fcm {
 VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file) {
   if (geometry.mesh) {
     if (element_shape(geometry.mesh->element_type) != ElementShape::tetrahedron) {
-      throw InputError(input_message(scene_file, "/geometry/mesh",
-                                     "fcm needs a tetrahedral geometry mesh, got " +
-                                         std::string(element_name(geometry.mesh->element_type))));
+      throw InputError(input_message(
+          scene_file, "/geometry/mesh",
+          "fcm needs a tetrahedral geometry mesh, got " + std::string(element_name(geometry.mesh->element_type))));
     }
     VolumeMesh corners{ElementType::tet4, geometry.mesh->nodes, geometry.mesh->cells.leftCols(4)};
     return corners;

@@ -36,8 +36,8 @@ LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std
   for (size_t k = 0; k < kept.size(); ++k) {
     const CellQuadrature& cell = cells[kept[k]];
     if (!cell.rule) continue;
-    rules.custom.emplace(static_cast<int>(k), stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization)
-                                                                : *cell.rule);
+    rules.custom.emplace(static_cast<int>(k),
+                         stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization) : *cell.rule);
   }
   return rules;
 }
@@ -55,9 +55,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
-                                           const std::vector<DirichletCondition>& dirichlet,
-                                           const FcmOptions& options, const std::string& scene_file,
-                                           const NodeRegionFilter& dirichlet_nodes) {
+                                           const std::vector<DirichletCondition>& dirichlet, const FcmOptions& options,
+                                           const std::string& scene_file, const NodeRegionFilter& dirichlet_nodes) {
   const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
   const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
@@ -77,7 +76,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     }
   }
   if (kept.empty())
-    throw InputError(input_message(scene_file, "/geometry", "no background cell holds material (check the grid's extent)"));
+    throw InputError(
+        input_message(scene_file, "/geometry", "no background cell holds material (check the grid's extent)"));
   fcm.background_cells = kept;
 
   // The kept cells with their nodes renumbered in order of first use.
@@ -93,27 +93,28 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
       fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
     }
   fcm.mesh.nodes.resize(static_cast<Eigen::Index>(used_nodes.size()), 3);
-  for (size_t i = 0; i < used_nodes.size(); ++i) fcm.mesh.nodes.row(static_cast<Eigen::Index>(i)) = background.nodes.row(used_nodes[i]);
+  for (size_t i = 0; i < used_nodes.size(); ++i)
+    fcm.mesh.nodes.row(static_cast<Eigen::Index>(i)) = background.nodes.row(used_nodes[i]);
 
   std::vector<int> kept_materials;
   for (int cell : kept) kept_materials.push_back(background_materials[cell]);
   const bool stabilize_stiffness = options.stabilized == StabilizedMatrices::mass_and_stiffness;
   const bool stabilize_mass = options.stabilized != StabilizedMatrices::none;
   DiscretizationParts parts;
-  LagrangeCellRules stiffness_rules = kept_rules(stiffness_cells, kept, background.element_type,
-                                                options.quadrature_strength,
-                                                stabilize_stiffness ? options.stabilization : 0.0);
+  LagrangeCellRules stiffness_rules =
+      kept_rules(stiffness_cells, kept, background.element_type, options.quadrature_strength,
+                 stabilize_stiffness ? options.stabilization : 0.0);
   stiffness_rules.materials = kept_materials;
   parts.elements = tabulate_lagrange(fcm.mesh, stiffness_rules);
   // The mass rules are large (a high strength, never simplified) and used once
   // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
-  parts.element_masses = lagrange_element_masses(fcm.mesh, kept_rules(mass_cells, kept, background.element_type,
-                                                                       options.mass_quadrature_strength,
-                                                                       stabilize_mass ? options.stabilization : 0.0));
+  parts.element_masses = lagrange_element_masses(
+      fcm.mesh, kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
+                           stabilize_mass ? options.stabilization : 0.0));
   if (options.ghost_penalty > 0) {
     fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(fcm.mesh, fcm.volume_fractions));
-    parts.terms.push_back(ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials,
-                                             options.ghost_penalty));
+    parts.terms.push_back(
+        ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials, options.ghost_penalty));
   }
   parts.materials = std::move(materials);
   NodeRegionFilter kept_dirichlet_nodes;
@@ -121,7 +122,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     kept_dirichlet_nodes = [&](int node, const RegionSelector& region, double tolerance) {
       return dirichlet_nodes(used_nodes[node], region, tolerance);
     };
-  parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells", kept_dirichlet_nodes);
+  parts.dirichlet =
+      nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells", kept_dirichlet_nodes);
 
   // §5.2: one Schwarz block per small cut cell: the DOFs of its nodes.
   std::vector<std::vector<int>> blocks;

@@ -44,9 +44,9 @@ struct FcmCellCounts {
 };
 
 struct FcmDiscretization {
-  VolumeMesh mesh;                      ///< the kept cells, nodes renumbered (basis function i = node i)
-  std::vector<int> background_cells;    ///< per kept cell: its index in the background grid
-  std::vector<double> volume_fractions; ///< per kept cell
+  VolumeMesh mesh;                       ///< the kept cells, nodes renumbered (basis function i = node i)
+  std::vector<int> background_cells;     ///< per kept cell: its index in the background grid
+  std::vector<double> volume_fractions;  ///< per kept cell
   FcmCellCounts counts;
   int schwarz_blocks = 0;
   /// The ghost penalty's faces (null when off); declared before `discretization`,
@@ -68,8 +68,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
-                                           const std::vector<DirichletCondition>& dirichlet,
-                                           const FcmOptions& options, const std::string& scene_file = "scene",
+                                           const std::vector<DirichletCondition>& dirichlet, const FcmOptions& options,
+                                           const std::string& scene_file = "scene",
                                            const NodeRegionFilter& dirichlet_nodes = {});
 
 }  // namespace altfem::fcm

@@ -36,8 +36,7 @@ struct FcmMesh {
 class FcmMethod final : public EmbeddedSurfaceMethod {
 public:
   // On the meshes of the scene, or on meshes an event hands it.
-  FcmMethod(const Scene& scene, const SceneGeometry& geometry, const FcmMesh* handed)
-      : materials_(scene) {
+  FcmMethod(const Scene& scene, const SceneGeometry& geometry, const FcmMesh* handed) : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
     quadrature_strength_ = spec.options.quadrature_strength;
     const std::string file = scene.file.string();
@@ -76,8 +75,8 @@ public:
         intersection_cell_quadrature(background, embedded_, spec.simplifier, spec.simplification_tolerance, {},
                                      statistics_, std::move(cell_tetrahedra));
     fcm_ = build_fcm_discretization(background, rules, materials_.pointers(),
-                                    materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options, file,
-                                    pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_) : NodeRegionFilter{});
+                                    materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options,
+                                    file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_) : NodeRegionFilter{});
     warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -86,7 +85,8 @@ public:
     // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
     surface_.load_surface = boundary_surface(embedded_).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
-    if (pieces_) surface_.evaluator = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
+    if (pieces_)
+      surface_.evaluator = std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_);
     else surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
   }
@@ -101,7 +101,7 @@ public:
     UnstructuredGrid grid = grid_from_volume_mesh(fcm_.mesh);
     add_nodal_displacement(grid, displacement);
     grid.cell_data.emplace_back("volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(),
-                                                                                      fcm_.volume_fractions.size()));
+                                                                                     fcm_.volume_fractions.size()));
     const TabulatedElements& elements = fcm_.discretization->elements();
     Eigen::VectorXd points(elements.size());
     for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
@@ -132,29 +132,31 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = surface_.facts();
-    facts.update({{"background_cells", background_cells_},
-                   {"background_resolution", resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()}
-                                                         : nlohmann::json("file")},
-            {"cells", {{"inside", fcm_.counts.inside},
-                       {"cut", fcm_.counts.cut},
-                       {"discarded", fcm_.counts.discarded},
-                       {"split", split_cells_},
-                       {"outside", fcm_.counts.outside}}},
-            {"cut_cell_points", {{"initial", statistics_->initial_points}, {"final", statistics_->final_points}}},
-            {"worst_moment_residual", statistics_->max_residual},
-            {"failed_simplifications", statistics_->failed_simplifications},
-            {"rule_generation_s", statistics_->seconds},
-            {"piece_finding_s", topology_seconds_},
-            {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
-            {"schwarz_blocks", fcm_.schwarz_blocks},
-            {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
+    facts.update(
+        {{"background_cells", background_cells_},
+         {"background_resolution",
+          resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()} : nlohmann::json("file")},
+         {"cells",
+          {{"inside", fcm_.counts.inside},
+           {"cut", fcm_.counts.cut},
+           {"discarded", fcm_.counts.discarded},
+           {"split", split_cells_},
+           {"outside", fcm_.counts.outside}}},
+         {"cut_cell_points", {{"initial", statistics_->initial_points}, {"final", statistics_->final_points}}},
+         {"worst_moment_residual", statistics_->max_residual},
+         {"failed_simplifications", statistics_->failed_simplifications},
+         {"rule_generation_s", statistics_->seconds},
+         {"piece_finding_s", topology_seconds_},
+         {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
+         {"schwarz_blocks", fcm_.schwarz_blocks},
+         {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}});
     return facts;
   }
 
 private:
   SceneMaterials materials_;
   std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
-  VolumeMesh background_;  ///< the background cells before topology-aware splitting
+  VolumeMesh background_;                      ///< the background cells before topology-aware splitting
   Eigen::Index background_cells_ = 0;
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
@@ -200,10 +202,9 @@ std::unique_ptr<MethodInstance> make_fcm_method(const Scene& scene, const SceneG
 }
 
 const MethodDescription& fcm_method() {
-  static const MethodDescription method{
-      fcm_scene_block(), make_fcm_method, "finite cell method: Lagrange background grid, exact cut-cell quadrature",
-      rebuild_on_handed_mesh<FcmMethod, FcmMesh>("fcm"),
-      fcm_mesh_preview};
+  static const MethodDescription method{fcm_scene_block(), make_fcm_method,
+                                        "finite cell method: Lagrange background grid, exact cut-cell quadrature",
+                                        rebuild_on_handed_mesh<FcmMethod, FcmMesh>("fcm"), fcm_mesh_preview};
   return method;
 }
 

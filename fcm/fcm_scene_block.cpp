@@ -46,8 +46,8 @@ void complete_fcm(const scene_schema::Validator& validator, const json&, json& f
         validator.fail(pointer + "/" + key, "applies only to the generated grid, not to a background mesh file");
     const std::string name(element_name(read_volume_mesh(fcm["background"].get<std::string>()).element_type));
     if (!cell_defaults.contains(name))
-      validator.fail(pointer + "/background", "the mesh file's element '" + name +
-                                                  "' is not an fcm cell (tet4, tet10, hex8, hex20, hex27)");
+      validator.fail(pointer + "/background",
+                     "the mesh file's element '" + name + "' is not an fcm cell (tet4, tet10, hex8, hex20, hex27)");
     if (!fcm.contains("cell")) fcm["cell"] = name;
     if (fcm["cell"] != name)
       validator.fail(pointer + "/cell", "must match the background mesh file's element '" + name + "', got '" +
@@ -65,21 +65,35 @@ const scene_schema::ObjectRule fcm_rule{
      {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
      {.key = "cell_size", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "background", .type = ValueType::path, .choices = {".msh", ".mesh"}},
-     {.key = "margin", .type = ValueType::number, .lower = scene_schema::non_negative,
+     {.key = "margin",
+      .type = ValueType::number,
+      .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, false}},
      {.key = "embedded_cell_size", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
      {.key = "mass_quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
-     {.key = "simplifier", .type = ValueType::string, .default_value = "caratheodory",
+     {.key = "simplifier",
+      .type = ValueType::string,
+      .default_value = "caratheodory",
       .choices = scene_schema::names(simplifier_names)},
-     {.key = "simplification_tolerance", .type = ValueType::number, .default_value = 1e-12,
+     {.key = "simplification_tolerance",
+      .type = ValueType::number,
+      .default_value = 1e-12,
       .lower = scene_schema::positive},
-     {.key = "discard_fraction", .type = ValueType::number, .default_value = 1e-4, .lower = scene_schema::non_negative,
+     {.key = "discard_fraction",
+      .type = ValueType::number,
+      .default_value = 1e-4,
+      .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, false}},
      {.key = "stabilization", .type = ValueType::number, .default_value = 1e-6, .lower = scene_schema::non_negative},
-     {.key = "stabilized_matrices", .type = ValueType::string, .default_value = "mass_and_stiffness",
+     {.key = "stabilized_matrices",
+      .type = ValueType::string,
+      .default_value = "mass_and_stiffness",
       .choices = scene_schema::names(stabilized_names)},
-     {.key = "schwarz_fraction", .type = ValueType::number, .default_value = 0.5, .lower = scene_schema::non_negative,
+     {.key = "schwarz_fraction",
+      .type = ValueType::number,
+      .default_value = 0.5,
+      .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, true}},
      {.key = "schwarz_epsilon", .type = ValueType::number, .default_value = 1e-13, .lower = scene_schema::positive},
      {.key = "ghost_penalty", .type = ValueType::number, .default_value = 0.0, .lower = scene_schema::non_negative},
@@ -111,10 +125,9 @@ FcmSpec fcm_spec(const Scene& scene) {
   options.mass_quadrature_strength = fcm["mass_quadrature_order"].get<int>();
   options.discard_fraction = fcm["discard_fraction"].get<double>();
   options.stabilization = fcm["stabilization"].get<double>();
-  options.stabilized = options.stabilization == 0.0 ? StabilizedMatrices::none
-                       : fcm["stabilized_matrices"] == "mass"
-                           ? StabilizedMatrices::mass
-                           : StabilizedMatrices::mass_and_stiffness;
+  options.stabilized = options.stabilization == 0.0           ? StabilizedMatrices::none
+                       : fcm["stabilized_matrices"] == "mass" ? StabilizedMatrices::mass
+                                                              : StabilizedMatrices::mass_and_stiffness;
   options.schwarz_fraction = fcm["schwarz_fraction"].get<double>();
   options.schwarz_epsilon = fcm["schwarz_epsilon"].get<double>();
   options.ghost_penalty = fcm["ghost_penalty"].get<double>();

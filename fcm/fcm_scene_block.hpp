@@ -8,8 +8,8 @@
 
 #include "fcm/fcm_discretization.hpp"
 #include "shared/element/element_type.hpp"
-#include "shared/quadrature/simplify_quadrature.hpp"
 #include "shared/mesh/volume_mesh.hpp"
+#include "shared/quadrature/simplify_quadrature.hpp"
 #include "shared/scene/method_scene_block.hpp"
 
 namespace altfem::fcm {

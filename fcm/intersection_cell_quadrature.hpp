@@ -18,7 +18,7 @@ struct IntersectionStatistics {
   Eigen::Index final_points = 0;    ///< … and after
   double max_residual = 0.0;        ///< worst simplification moment residual
   int failed_simplifications = 0;
-  double seconds = 0.0;             ///< generation and simplification, stiffness and mass
+  double seconds = 0.0;  ///< generation and simplification, stiffness and mass
 };
 
 /// background: the FCM mesh (hexahedra with planar faces, or tetrahedra); embedded: a

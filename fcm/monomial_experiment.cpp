@@ -26,10 +26,10 @@ struct Cuboid {
 Cuboid cuboid_in(ElementShape shape) {
   Cuboid cuboid;
   cuboid.rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix();
-  const Eigen::Vector3d half = shape == ElementShape::hexahedron ? Eigen::Vector3d(0.55, 0.4, 0.3)
-                                                                  : Eigen::Vector3d(0.09, 0.07, 0.05);
-  const Eigen::Vector3d centre = shape == ElementShape::hexahedron ? Eigen::Vector3d(0.1, -0.05, 0.08)
-                                                                    : Eigen::Vector3d(0.25, 0.24, 0.23);
+  const Eigen::Vector3d half =
+      shape == ElementShape::hexahedron ? Eigen::Vector3d(0.55, 0.4, 0.3) : Eigen::Vector3d(0.09, 0.07, 0.05);
+  const Eigen::Vector3d centre =
+      shape == ElementShape::hexahedron ? Eigen::Vector3d(0.1, -0.05, 0.08) : Eigen::Vector3d(0.25, 0.24, 0.23);
   cuboid.lower = half;  // local box [half, 3·half]: centred at 2·half in its frame
   cuboid.upper = 3.0 * half;
   cuboid.translation = centre - cuboid.rotation * (2.0 * half);
@@ -86,8 +86,8 @@ MonomialExperiment run_monomial_experiment(ElementType cell, int order, Simplifi
   const Cuboid cuboid = cuboid_in(shape);
 
   // The cuboid as six tetrahedra (Kuhn), moved rigidly into place.
-  const VolumeMesh box = structured_grid(Eigen::AlignedBox3d(cuboid.lower, cuboid.upper), Eigen::Vector3i::Ones(),
-                                         ElementType::tet4);
+  const VolumeMesh box =
+      structured_grid(Eigen::AlignedBox3d(cuboid.lower, cuboid.upper), Eigen::Vector3i::Ones(), ElementType::tet4);
   std::vector<TetrahedronCorners> tetrahedra(box.cells.rows());
   for (Eigen::Index t = 0; t < box.cells.rows(); ++t) {
     for (int c = 0; c < 4; ++c) {

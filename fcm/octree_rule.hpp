@@ -10,8 +10,8 @@
 namespace altfem::fcm {
 
 struct OctreeOptions {
-  int depth = 4;        ///< subdivision levels for cut octants (0: the cell itself)
-  int leaf_order = 4;   ///< strength of the tensor Gauss rule on every leaf
+  int depth = 4;       ///< subdivision levels for cut octants (0: the cell itself)
+  int leaf_order = 4;  ///< strength of the tensor Gauss rule on every leaf
 };
 
 /// The rule on the cell's reference cube [-1,1]³ for ∫_{cell ∩ shape} f ≈ Σ w f(x(ξ))|J(ξ)|.

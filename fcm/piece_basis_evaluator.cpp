@@ -44,8 +44,8 @@ double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<dou
   static constexpr std::array<std::array<int, 3>, 4> faces{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
   double distance = std::numeric_limits<double>::infinity();
   for (const auto& face : faces) {
-    const Eigen::Vector3d closest = closest_on_triangle(x, corners.row(face[0]).transpose(),
-                                                        corners.row(face[1]).transpose(), corners.row(face[2]).transpose());
+    const Eigen::Vector3d closest = closest_on_triangle(
+        x, corners.row(face[0]).transpose(), corners.row(face[1]).transpose(), corners.row(face[2]).transpose());
     distance = std::min(distance, (x - closest).norm());
   }
   return distance;

@@ -25,7 +25,8 @@ public:
   /// piece is (one of) the nearest of the kept pieces of that background cell.
   bool evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                        std::vector<double>& values) const override;
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override {
     return whole_.evaluate_nearest(x, basis, values);
   }
 

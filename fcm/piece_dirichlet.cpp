@@ -31,8 +31,9 @@ NodeRegionFilter piece_dirichlet_nodes(const PieceMesh& pieces, const VolumeMesh
     std::vector<std::vector<int>> cells_of_copy;  ///< per node with sibling copies: its cells with material; else empty
   };
   auto data = std::make_shared<Data>(Data{pieces.mesh, embedded, pieces.tetrahedra, {}});
-  std::vector<int> copies(pieces.background_node.empty() ? 0 : *std::max_element(pieces.background_node.begin(),
-                                                                                  pieces.background_node.end()) + 1);
+  std::vector<int> copies(pieces.background_node.empty()
+                              ? 0
+                              : *std::max_element(pieces.background_node.begin(), pieces.background_node.end()) + 1);
   for (const int node : pieces.background_node) ++copies[node];
   data->cells_of_copy.resize(pieces.background_node.size());
   for (Eigen::Index cell = 0; cell < pieces.mesh.cells.rows(); ++cell) {

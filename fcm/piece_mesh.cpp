@@ -30,7 +30,8 @@ PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces) {
       const int piece = row - first_row[cell];
       result.background_cell.push_back(cell);
       result.piece.push_back(piece);
-      result.tetrahedra.push_back(pieces.tetrahedra[cell].empty() ? std::vector<int>{} : pieces.tetrahedra[cell][piece]);
+      result.tetrahedra.push_back(pieces.tetrahedra[cell].empty() ? std::vector<int>{}
+                                                                  : pieces.tetrahedra[cell][piece]);
     }
 
   // The star of every node: the cells with material that hold it, ascending.
@@ -46,7 +47,8 @@ PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces) {
     const std::vector<int>& cells = star[node];
     if (cells.empty()) continue;
     first_entry.assign(1, 0);
-    for (const int cell : cells) first_entry.push_back(first_entry.back() + static_cast<int>(pieces.tetrahedra[cell].size()));
+    for (const int cell : cells)
+      first_entry.push_back(first_entry.back() + static_cast<int>(pieces.tetrahedra[cell].size()));
     DisjointSets components(first_entry.back());
     for (std::size_t s = 0; s < cells.size(); ++s)
       for (std::size_t piece = 0; piece < pieces.neighbours[cells[s]].size(); ++piece)

@@ -19,10 +19,10 @@ struct PieceMesh {
   /// material once (with no tetrahedra, so it stays outside), in background order.
   /// Nodes: the copies, at their background node's position.
   VolumeMesh mesh;
-  std::vector<int> background_cell;           ///< per cell: its background cell
-  std::vector<int> piece;                     ///< per cell: its piece index within the background cell
-  std::vector<std::vector<int>> tetrahedra;   ///< per cell: the embedded tetrahedra it clips
-  std::vector<int> background_node;           ///< per node: the background node it copies
+  std::vector<int> background_cell;          ///< per cell: its background cell
+  std::vector<int> piece;                    ///< per cell: its piece index within the background cell
+  std::vector<std::vector<int>> tetrahedra;  ///< per cell: the embedded tetrahedra it clips
+  std::vector<int> background_node;          ///< per node: the background node it copies
 
   /// Background nodes with two or more copies.
   int split_nodes() const;

@@ -14,6 +14,7 @@ namespace altfem::fcm {
 /// One warning per condition whose region's boundary cuts through the interior of at
 /// least one cell of `cells` (sampled at the 27 points ξ ∈ {1/4, 1/2, 3/4}³ of the
 /// cell's bounding box — the cells are a grid's), naming the condition and the count.
-std::vector<std::string> conditions_cutting_cells(const VolumeMesh& cells, const std::vector<DirichletCondition>& dirichlet);
+std::vector<std::string> conditions_cutting_cells(const VolumeMesh& cells,
+                                                  const std::vector<DirichletCondition>& dirichlet);
 
 }  // namespace altfem::fcm

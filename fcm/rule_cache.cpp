@@ -37,7 +37,8 @@ std::optional<CellRules> deserialise(const std::string& text, Eigen::Index cell_
     const auto initial = reader.get<std::int64_t>();
     const auto volume = reader.get<double>(), residual = reader.get<double>();
     const auto failed = reader.get<std::int32_t>(), strength = reader.get<std::int32_t>();
-    if (!kind || !initial || !volume || !residual || !failed || !strength || *kind < 0 || *kind > 2) return std::nullopt;
+    if (!kind || !initial || !volume || !residual || !failed || !strength || *kind < 0 || *kind > 2)
+      return std::nullopt;
     cell.kind = static_cast<CellKind>(*kind);
     cell.initial_points = *initial;
     cell.clipped_volume = *volume;

@@ -19,7 +19,8 @@ TetrahedronBuckets::TetrahedronBuckets(const VolumeMesh& mesh) {
     bounds_.extend(boxes_[t]);
   }
   const double per_axis = std::max(1.0, std::cbrt(static_cast<double>(count)));
-  const Eigen::Vector3d sizes = bounds_.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Ones()) : Eigen::Vector3d(bounds_.sizes());
+  const Eigen::Vector3d sizes =
+      bounds_.isEmpty() ? Eigen::Vector3d(Eigen::Vector3d::Ones()) : Eigen::Vector3d(bounds_.sizes());
   const double bucket = std::max(sizes.maxCoeff() / per_axis, 1e-300);
   for (int d = 0; d < 3; ++d) {
     resolution_(d) = std::clamp(static_cast<int>(std::ceil(sizes(d) / bucket)), 1, 256);
@@ -59,8 +60,7 @@ void TetrahedronBuckets::candidate_indices(const Eigen::AlignedBox3d& box, std::
   std::erase_if(indices, [&](int t) { return !boxes_[t].intersects(box); });
 }
 
-void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box,
-                                    std::vector<TetrahedronCorners>& candidates) const {
+void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box, std::vector<TetrahedronCorners>& candidates) const {
   candidates.clear();
   std::vector<int> indices;
   candidate_indices(box, indices);

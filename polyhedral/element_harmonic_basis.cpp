@@ -48,8 +48,8 @@ double* add_data(BoundarySamples& samples, int nodes) {
 // holds: a short edge of a cut cell gets none, its linear data is fitted through its
 // nodes); inside each face a grid of `face_spacing`, kept half a spacing away from the
 // face's edges.
-BoundarySamples sample_boundary(const Polyhedron& polyhedron, std::span<const ElementFace> faces,
-                                double edge_spacing, double face_spacing, bool with_data) {
+BoundarySamples sample_boundary(const Polyhedron& polyhedron, std::span<const ElementFace> faces, double edge_spacing,
+                                double face_spacing, bool with_data) {
   const auto nodes = static_cast<int>(polyhedron.vertices.rows());
   std::vector<Eigen::Vector3d> face_normals;
   std::vector<Eigen::Vector3d> vertex_normals(nodes, Eigen::Vector3d::Zero());
@@ -161,7 +161,8 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   scale_ = (element.vertices.rowwise() - origin_.transpose()).rowwise().norm().maxCoeff();
   double diameter = 0;
   for (int i = 0; i < nodes; ++i)
-    for (int j = i + 1; j < nodes; ++j) diameter = std::max(diameter, (element.vertices.row(i) - element.vertices.row(j)).norm());
+    for (int j = i + 1; j < nodes; ++j)
+      diameter = std::max(diameter, (element.vertices.row(i) - element.vertices.row(j)).norm());
   // The sample spacing from the element's surface area, not from its edges: a box of
   // side a gets a / (edge_samples + 1), the paper's 3-5 samples per edge (§5), and any
   // element about the same number of face samples, 6 (edge_samples + 1)². A cut cell's
@@ -208,9 +209,8 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
                                    element.vertices.colwise().maxCoeff().transpose());
   for (size_t s = 0; s < samples.points.size(); ++s) {
     const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
-    if (std::any_of(centres.begin(), centres.end(), [&](const Eigen::Vector3d& kept) {
-          return (kept - centre).squaredNorm() < spacing * spacing / 4;
-        }))
+    if (std::any_of(centres.begin(), centres.end(),
+                    [&](const Eigen::Vector3d& kept) { return (kept - centre).squaredNorm() < spacing * spacing / 4; }))
       continue;
     if (squared_distances(centre).minCoeff() < offset * offset / 4) continue;
     // Outside the bounding box is outside; only the others need the winding number.
@@ -218,7 +218,8 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
     centres.push_back(centre);
   }
   centres_.resize(static_cast<Eigen::Index>(centres.size()), 3);
-  for (size_t j = 0; j < centres.size(); ++j) centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();
+  for (size_t j = 0; j < centres.size(); ++j)
+    centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();
 
   const Eigen::Index c = centres_.rows();
   // The m × (c + 4) system and m × #nodes data live side by side in a per-thread buffer
@@ -297,9 +298,7 @@ Eigen::MatrixXd ElementHarmonicBasis::values(const Eigen::MatrixXd& points) cons
   return result;
 }
 
-Eigen::MatrixXd ElementHarmonicBasis::centres() const {
-  return (centres_ * scale_).rowwise() + origin_.transpose();
-}
+Eigen::MatrixXd ElementHarmonicBasis::centres() const { return (centres_ * scale_).rowwise() + origin_.transpose(); }
 
 void ElementHarmonicBasis::write(BinaryWriter& out) const {
   out.matrix(origin_);

@@ -44,8 +44,8 @@ BoundarySamples sample_boundary(const Eigen::MatrixX2d& polygon, double spacing)
     for (int j = 0; j <= per_edge[k]; ++j, ++row) {
       const double t = static_cast<double>(j) / (per_edge[k] + 1);
       samples.points.row(row) = (1 - t) * polygon.row(k) + t * polygon.row((k + 1) % n);
-      const Eigen::Vector2d normal = j == 0 ? (edge_normals[k] + edge_normals[(k + n - 1) % n]).normalized().eval()
-                                            : edge_normals[k];
+      const Eigen::Vector2d normal =
+          j == 0 ? (edge_normals[k] + edge_normals[(k + n - 1) % n]).normalized().eval() : edge_normals[k];
       samples.normals.row(row) = normal.transpose();
       samples.edges.push_back(k);
       samples.parameters.push_back(t);
@@ -74,7 +74,8 @@ std::pair<bool, double> locate(const Eigen::MatrixX2d& polygon, const Eigen::Vec
 FaceHarmonicCoordinates::FaceHarmonicCoordinates(const Eigen::MatrixXd& polygon, const MfsOptions& options)
     : polygon_(polygon) {
   const auto n = static_cast<int>(polygon.rows());
-  if (n < 3 || polygon.cols() != 3) throw std::invalid_argument("FaceHarmonicCoordinates: a face needs >= 3 nodes in 3D");
+  if (n < 3 || polygon.cols() != 3)
+    throw std::invalid_argument("FaceHarmonicCoordinates: a face needs >= 3 nodes in 3D");
   // A right-handed frame of the plane about the face normal, so the polygon is
   // counter-clockwise in (u, v).
   const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
@@ -156,7 +157,9 @@ void FaceHarmonicCoordinates::kernel_rows(const Eigen::MatrixX2d& local, Eigen::
   const Eigen::Index c = centres_.rows();
   // Column by column, vectorised over the points: log‖x − k‖ = ½ log‖x − k‖².
   for (Eigen::Index j = 0; j < c; ++j)
-    rows.col(j) = 0.5 * ((local.col(0).array() - centres_(j, 0)).square() + (local.col(1).array() - centres_(j, 1)).square()).log();
+    rows.col(j) =
+        0.5 *
+        ((local.col(0).array() - centres_(j, 0)).square() + (local.col(1).array() - centres_(j, 1)).square()).log();
   rows.middleCols(c, 2) = local;
   rows.col(c + 2).setOnes();
   if (bilinear_) rows.col(c + 3) = local.col(0).cwiseProduct(local.col(1));

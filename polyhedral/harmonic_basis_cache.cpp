@@ -25,7 +25,8 @@ std::uint64_t harmonic_bases_key(const PolyhedralMesh& mesh, HarmonicBasisKind k
   lists(mesh.faces);
   hasher.matrix(mesh.face_cells);
   lists(mesh.cell_faces);
-  for (PolyhedralCellKind cell_kind : mesh.cell_kinds) hasher.scalar<std::int32_t>(static_cast<std::int32_t>(cell_kind));
+  for (PolyhedralCellKind cell_kind : mesh.cell_kinds)
+    hasher.scalar<std::int32_t>(static_cast<std::int32_t>(cell_kind));
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(kind));
   hasher.scalar<std::int32_t>(options.edge_samples);
   hasher.scalar<std::int32_t>(options.collocation_factor);

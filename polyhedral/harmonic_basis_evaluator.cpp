@@ -36,7 +36,8 @@ double HarmonicBasisEvaluator::evaluate_nearest(const Eigen::Vector3d& x, std::v
   // The bounding-box distance bounds the boundary distance from below: only cells whose
   // box is nearer than the best so far are measured.
   std::vector<std::pair<double, int>> candidates;
-  for (int cell = 0; cell < bases_.cell_count(); ++cell) candidates.emplace_back(bounds_[cell].exteriorDistance(x), cell);
+  for (int cell = 0; cell < bases_.cell_count(); ++cell)
+    candidates.emplace_back(bounds_[cell].exteriorDistance(x), cell);
   std::sort(candidates.begin(), candidates.end());
   // The nearest cell whose map can be inverted: a sliver next to the point cannot.
   std::vector<char> degenerate(candidates.size(), 0);

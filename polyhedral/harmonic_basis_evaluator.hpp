@@ -17,7 +17,8 @@ public:
   Eigen::AlignedBox3d element_bounds(int cell) const override { return bounds_[cell]; }
   bool evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                        std::vector<double>& values) const override;
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override;
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override;
 
 private:
   bool evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;

@@ -12,8 +12,7 @@ PolyhedronRule harmonic_cell_rule(const Polyhedron& polyhedron, int strength, co
       return polyhedron_subdivision_rule(polyhedron, strength, quadrature.subdivision_levels);
     case HarmonicRuleKind::monte_carlo:
       return polyhedron_monte_carlo_rule(polyhedron, quadrature.monte_carlo_points, seed);
-    case HarmonicRuleKind::cone:
-      break;
+    case HarmonicRuleKind::cone: break;
   }
   return simplified_polyhedron_rule(polyhedron, strength, quadrature.simplifier);
 }

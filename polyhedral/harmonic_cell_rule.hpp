@@ -31,7 +31,7 @@ struct HarmonicQuadrature {
   HarmonicRuleKind kind = HarmonicRuleKind::cone;
   /// `cone` only: the simplifier of simplified_polyhedron_rule, nullopt for the full cone rule.
   std::optional<SimplificationMethod> simplifier = std::nullopt;
-  int subdivision_levels = 3;   ///< `subdivision`: 2^levels boxes per axis
+  int subdivision_levels = 3;     ///< `subdivision`: 2^levels boxes per axis
   int monte_carlo_points = 1000;  ///< `monte_carlo`: samples in the cell's bounding box
   /// harmonic_tabulation's consistency correction; false only to measure what it corrects.
   bool consistent = true;

@@ -18,7 +18,8 @@ namespace {
 // Keeps the smallest cell index any thread records: an exception must not leave an
 // OpenMP region, so failures are reported after it, the first in cell order.
 void record_first(std::atomic<int>& first, int cell) {
-  for (int current = first.load(); cell < current && !first.compare_exchange_weak(current, cell);) {}
+  for (int current = first.load(); cell < current && !first.compare_exchange_weak(current, cell);) {
+  }
 }
 
 }  // namespace
@@ -162,7 +163,8 @@ std::optional<HarmonicElementBases> HarmonicElementBases::read(const PolyhedralM
     cell.nodes.assign(nodes.begin(), nodes.end());
     const auto plain = in.get<std::int32_t>();
     if (!plain) return std::nullopt;
-    if (*plain == static_cast<std::int32_t>(ElementType::tet4) || *plain == static_cast<std::int32_t>(ElementType::hex8)) {
+    if (*plain == static_cast<std::int32_t>(ElementType::tet4) ||
+        *plain == static_cast<std::int32_t>(ElementType::hex8)) {
       cell.plain = static_cast<ElementType>(*plain);
       if (static_cast<int>(cell.nodes.size()) != element_corner_count(*cell.plain)) return std::nullopt;
       continue;

@@ -29,9 +29,7 @@ public:
   /// The closed-form element of a plain cell, or nullopt for an MFS cell.
   std::optional<ElementType> plain_type(int cell) const { return cells_[cell].plain; }
   /// The MFS basis of an MFS cell (nullptr for a plain cell).
-  const ElementHarmonicBasis* mfs_basis(int cell) const {
-    return cells_[cell].mfs ? &*cells_[cell].mfs : nullptr;
-  }
+  const ElementHarmonicBasis* mfs_basis(int cell) const { return cells_[cell].mfs ? &*cells_[cell].mfs : nullptr; }
   /// The largest RMS boundary misfit of the MFS fits (0 without MFS cells).
   double max_boundary_residual() const;
 

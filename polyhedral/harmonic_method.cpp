@@ -83,8 +83,7 @@ public:
   /// The stronger rule (errors, energies) is the full cone rule whatever `rule` says, so
   /// the solutions of every rule kind are measured alike and exactly to its strength.
   std::optional<FieldQuadrature> field_quadrature(int added_strength) const override {
-    if (added_strength == 0)
-      return nodal_field_quadrature(borrowed(*elements_), mesh_.nodes, quadrature_order_);
+    if (added_strength == 0) return nodal_field_quadrature(borrowed(*elements_), mesh_.nodes, quadrature_order_);
     const int strength = quadrature_order_ + added_strength;
     const HarmonicQuadrature full_cone{.kind = HarmonicRuleKind::cone, .simplifier = std::nullopt};
     return nodal_field_quadrature(std::make_shared<TabulatedElements>(bases_->tabulate(strength, full_cone)),
@@ -114,12 +113,11 @@ public:
     return interpolate_at_nodes(mesh_.nodes, field);
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
-        PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
-                            .surface = surface_.surface,
-                            .load_surface = surface_.load_surface,
-                            .facts = mesh_facts_,
-                            .converted = std::nullopt});
+    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
+                                                                             .surface = surface_.surface,
+                                                                             .load_surface = surface_.load_surface,
+                                                                             .facts = mesh_facts_,
+                                                                             .converted = std::nullopt});
   }
   std::string cut_refusal() const override { return ""; }
   std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
@@ -127,7 +125,8 @@ public:
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
-    if (node_sources_.empty()) return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
+    if (node_sources_.empty())
+      return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
     // Cut from `before`'s mesh: each node from its sources, linear along the cut edge
     // (Martin et al. 2008 §4: a harmonic basis is linear on the edges).
     Eigen::MatrixXd result(3 * mesh_.nodes.rows(), fields.cols());
@@ -160,7 +159,7 @@ private:
 
   SceneMaterials materials_;
   PolyhedralMesh mesh_;
-  nlohmann::json mesh_facts_;  // its source (build_polyhedral_scene_mesh)
+  nlohmann::json mesh_facts_;             // its source (build_polyhedral_scene_mesh)
   std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)

@@ -13,8 +13,8 @@ namespace {
 
 using nlohmann::json;
 using scene_schema::KeyRule;
-using scene_schema::ValueType;
 using scene_schema::Validator;
+using scene_schema::ValueType;
 
 template <typename Enum, std::size_t n>
 Enum enum_from_name(const std::array<std::string_view, n>& names, const std::string& name) {
@@ -69,22 +69,35 @@ void complete_harmonic(const Validator& validator, const json& scene, json& harm
 
 const scene_schema::ObjectRule& harmonic_rule() {
   static const scene_schema::ObjectRule rule{
-      {{.key = "mesh", .type = ValueType::string, .default_value = "convert",
+      {{.key = "mesh",
+        .type = ValueType::string,
+        .default_value = "convert",
         .choices = scene_schema::names(harmonic_mesh_names)},
        {.key = "convert", .type = ValueType::object, .object = fem_scene_block().rule},
        {.key = "slice", .type = ValueType::object, .object = &slicing_rule()},
-       {.key = "samples_per_edge", .type = ValueType::integer, .default_value = MfsOptions{}.edge_samples,
+       {.key = "samples_per_edge",
+        .type = ValueType::integer,
+        .default_value = MfsOptions{}.edge_samples,
         .lower = scene_schema::at_least_one},
-       {.key = "kernel_offset", .type = ValueType::number, .default_value = MfsOptions{}.offset,
-        .lower = scene_schema::positive, .upper = scene_schema::Bound{1.0, true}},
+       {.key = "kernel_offset",
+        .type = ValueType::number,
+        .default_value = MfsOptions{}.offset,
+        .lower = scene_schema::positive,
+        .upper = scene_schema::Bound{1.0, true}},
        {.key = "quadrature_order", .type = ValueType::integer, .default_value = 2, .lower = scene_schema::at_least_one},
-       {.key = "rule", .type = ValueType::string, .default_value = std::string(harmonic_rule_names[0]),
+       {.key = "rule",
+        .type = ValueType::string,
+        .default_value = std::string(harmonic_rule_names[0]),
         .choices = scene_schema::names(harmonic_rule_names)},
        {.key = "simplifier", .type = ValueType::string, .choices = scene_schema::names(simplifier_names)},
-       {.key = "subdivision_levels", .type = ValueType::integer, .lower = scene_schema::non_negative,
+       {.key = "subdivision_levels",
+        .type = ValueType::integer,
+        .lower = scene_schema::non_negative,
         .upper = scene_schema::Bound{6, true}},
        {.key = "monte_carlo_points", .type = ValueType::integer, .lower = scene_schema::at_least_one},
-       {.key = "basis", .type = ValueType::string, .default_value = "auto",
+       {.key = "basis",
+        .type = ValueType::string,
+        .default_value = "auto",
         .choices = scene_schema::names(harmonic_basis_names)},
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
        {.key = "cache", .type = ValueType::string}}};

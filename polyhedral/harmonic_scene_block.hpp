@@ -25,8 +25,8 @@ inline constexpr std::array<std::string_view, 2> harmonic_basis_names{"auto", "m
 
 struct HarmonicSpec {
   PolyhedralMeshSource mesh;  ///< `slice` (slicing set) or `convert` (the resolved fem block)
-  MfsOptions mfs;           ///< edge_samples and offset from the block
-  int quadrature_order = 2; ///< strength of each cell's rule (harmonic_cell_rule, tet_rule, hex_rule)
+  MfsOptions mfs;             ///< edge_samples and offset from the block
+  int quadrature_order = 2;   ///< strength of each cell's rule (harmonic_cell_rule, tet_rule, hex_rule)
   /// The MFS cells' rule: `rule`, `simplifier`, `subdivision_levels`, `monte_carlo_points`.
   HarmonicQuadrature quadrature;
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;

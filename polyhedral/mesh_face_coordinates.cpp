@@ -36,7 +36,8 @@ ElementHarmonicBasis cell_harmonic_basis(const PolyhedralMesh& mesh, int cell,
   std::vector<ElementFace> element_faces(cell_faces.size());
   for (size_t f = 0; f < cell_faces.size(); ++f) {
     const int face = cell_faces[f];
-    if (!faces[face]) throw std::invalid_argument("cell_harmonic_basis: face " + std::to_string(face) + " has no coordinates");
+    if (!faces[face])
+      throw std::invalid_argument("cell_harmonic_basis: face " + std::to_string(face) + " has no coordinates");
     // cell_polyhedron numbers the cell's nodes and keeps the stored loop, reversed for
     // the face's second cell: undo the reversal to match the coordinates' columns.
     element_faces[f].coordinates = &*faces[face];

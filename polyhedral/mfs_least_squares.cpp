@@ -79,15 +79,16 @@ double solve_mfs_least_squares(Eigen::Ref<Eigen::MatrixXd> augmented, Eigen::Ind
   const auto entries = static_cast<double>(m * nodes);
   if (const auto misfit = solve_by_normal_equations(augmented, k, coefficients)) return *misfit;
   // The systems the normal equations cannot take: Householder QR of [A | B] in place,
-  // R = [R_AA R_AB; 0 R_BB], where R_AB is the top of Qᵀ·B (the coefficients solve R_AA x = R_AB) and R_BB carries the norm of the rest
-  // (the misfit: the later reflectors act on rows ≥ k only, keeping their norms). Joint
-  // instead of QR of A and then Qᵀ applied to B: ~12% less time on 850 × (250 + 22).
+  // R = [R_AA R_AB; 0 R_BB], where R_AB is the top of Qᵀ·B (the coefficients solve R_AA x = R_AB) and R_BB carries the
+  // norm of the rest (the misfit: the later reflectors act on rows ≥ k only, keeping their norms). Joint instead of QR
+  // of A and then Qᵀ applied to B: ~12% less time on 850 × (250 + 22).
   Eigen::VectorXd householder(augmented.cols()), workspace(augmented.cols());
   Eigen::internal::householder_qr_inplace_blocked<Eigen::Ref<Eigen::MatrixXd>, Eigen::VectorXd>::run(
       augmented, householder, qr_block_columns, workspace.data());
   const auto diagonal = augmented.topLeftCorner(k, k).diagonal().cwiseAbs();
   if (diagonal.minCoeff() > 1e-12 * diagonal.maxCoeff()) {
-    coefficients = augmented.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(augmented.topRightCorner(k, nodes));
+    coefficients =
+        augmented.topLeftCorner(k, k).triangularView<Eigen::Upper>().solve(augmented.topRightCorner(k, nodes));
     // R_BB: upper trapezoidal (below its diagonal lie the reflectors of B's columns).
     const auto remainder = augmented.bottomRightCorner(m - k, nodes);
     double misfit = 0;

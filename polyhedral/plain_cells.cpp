@@ -13,7 +13,9 @@ std::vector<int> outward_loop(const PolyhedralMesh& mesh, int cell, int face) {
   return loop;
 }
 
-bool contains(const std::vector<int>& nodes, int node) { return std::find(nodes.begin(), nodes.end(), node) != nodes.end(); }
+bool contains(const std::vector<int>& nodes, int node) {
+  return std::find(nodes.begin(), nodes.end(), node) != nodes.end();
+}
 
 }  // namespace
 

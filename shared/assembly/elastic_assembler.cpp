@@ -8,8 +8,8 @@
 #include <limits>
 #include <string>
 
-#include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/elastic_kernel.hpp"
+#include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/common/error.hpp"
 #include "shared/material/project_spd.hpp"
@@ -199,40 +199,40 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure, projection_failure;
   for_each_colored_element([&](int e) {
-      const ElementView element = elements_[e];
-      Scratch& scratch = scratch_[omp_get_thread_num()];
-      dispatch(element.basis_count(), [&]<int N>() {
-        const int n = element.basis_count();
-        auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
-          kernel::gather<N>(element, displacement, u);
-          kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows, element_shifts(e));
-          if (!stiffness.allFinite()) {
-            failure.record(e);
+    const ElementView element = elements_[e];
+    Scratch& scratch = scratch_[omp_get_thread_num()];
+    dispatch(element.basis_count(), [&]<int N>() {
+      const int n = element.basis_count();
+      auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
+        kernel::gather<N>(element, displacement, u);
+        kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows, element_shifts(e));
+        if (!stiffness.allFinite()) {
+          failure.record(e);
+          return;
+        }
+        if (project_spd) {
+          // An exception must not leave the OpenMP region (it would terminate the program).
+          try {
+            project_to_spd(stiffness);
+          } catch (const NumericalError&) {
+            projection_failure.record(e);
             return;
           }
-          if (project_spd) {
-            // An exception must not leave the OpenMP region (it would terminate the program).
-            try {
-              project_to_spd(stiffness);
-            } catch (const NumericalError&) {
-              projection_failure.record(e);
-              return;
-            }
-          }
-          kernel::scatter<N>(element.basis, sparsity_.pair_offsets(e), stiffness, outer, values);
-        };
-        if constexpr (N == Eigen::Dynamic) {
-          scratch.u.conservativeResize(n, 3);
-          scratch.stiffness.conservativeResize(3 * n, 3 * n);
-          scratch.tangent_rows.conservativeResize(3 * n, 9);
-          run(scratch.u, scratch.stiffness, scratch.tangent_rows);
-        } else {
-          kernel::NodeMatrix<N> u;
-          kernel::LocalMatrix<N> stiffness;
-          kernel::TangentRows<N> rows;
-          run(u, stiffness, rows);
         }
-      });
+        kernel::scatter<N>(element.basis, sparsity_.pair_offsets(e), stiffness, outer, values);
+      };
+      if constexpr (N == Eigen::Dynamic) {
+        scratch.u.conservativeResize(n, 3);
+        scratch.stiffness.conservativeResize(3 * n, 3 * n);
+        scratch.tangent_rows.conservativeResize(3 * n, 9);
+        run(scratch.u, scratch.stiffness, scratch.tangent_rows);
+      } else {
+        kernel::NodeMatrix<N> u;
+        kernel::LocalMatrix<N> stiffness;
+        kernel::TangentRows<N> rows;
+        run(u, stiffness, rows);
+      }
+    });
   });
   if (failure.item() >= 0)
     throw_non_finite(elements_[failure.item()], failure.item(), displacement,
@@ -250,16 +250,16 @@ void ElasticAssembler::mass_matrix(const ElementMasses& masses, SparseMatrix& ma
   double* values = mass.valuePtr();
   const int* outer = mass.outerIndexPtr();
   for_each_colored_element([&](int e) {
-      const ElementView element = elements_[e];
-      const double density = materials_[element.material]->density();
-      const int n = element.basis_count();
-      const int* offsets = sparsity_.pair_offsets(e);
-      const Eigen::MatrixXd& matrix = masses.matrices[e];
-      for (int b = 0; b < n; ++b)
-        for (int a = 0; a < n; ++a) {
-          const double m = density * matrix(a, b);
-          for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
-        }
+    const ElementView element = elements_[e];
+    const double density = materials_[element.material]->density();
+    const int n = element.basis_count();
+    const int* offsets = sparsity_.pair_offsets(e);
+    const Eigen::MatrixXd& matrix = masses.matrices[e];
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        const double m = density * matrix(a, b);
+        for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
+      }
   });
 }
 
@@ -289,7 +289,8 @@ Eigen::VectorXd ElasticAssembler::lumped_mass(const ElementMasses& masses) const
     const ElementView element = elements_[e];
     const Eigen::VectorXd diagonal = masses.matrices[e].diagonal();
     const double scale = materials_[element.material]->density() * masses.volumes[e] / diagonal.sum();
-    for (int a = 0; a < element.basis_count(); ++a) lumped.segment<3>(3 * element.basis[a]).array() += scale * diagonal[a];
+    for (int a = 0; a < element.basis_count(); ++a)
+      lumped.segment<3>(3 * element.basis[a]).array() += scale * diagonal[a];
   }
   return lumped;
 }
@@ -301,7 +302,8 @@ Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& disp
     const ElementView element = elements_[e];
     const Material& material = *materials_[element.material];
     Eigen::MatrixX3d u(element.basis_count(), 3);
-    for (int a = 0; a < element.basis_count(); ++a) u.row(a) = displacement.segment<3>(3 * element.basis[a]).transpose();
+    for (int a = 0; a < element.basis_count(); ++a)
+      u.row(a) = displacement.segment<3>(3 * element.basis[a]).transpose();
     Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
     double volume = 0;
     const double* shifts = element_shifts(e);

@@ -26,10 +26,8 @@ void gather(const ElementView& element, const Eigen::VectorXd& u, NodeMatrix<N>&
 /// matrix-product code.
 template <int N>
 auto gradients_at(const ElementView& element, int q) {
-  if constexpr (N == Eigen::Dynamic)
-    return element.gradients_at(q);
-  else
-    return Eigen::Map<const Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(element.gradients + q * N * 3);
+  if constexpr (N == Eigen::Dynamic) return element.gradients_at(q);
+  else return Eigen::Map<const Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(element.gradients + q * N * 3);
 }
 
 /// F_ij = δ_ij + Σ_a u_ai ∂_j N_a, plus shifts[q] (9 values, column-major) when the
@@ -69,8 +67,8 @@ void forces(const ElementView& element, const Material& material, const NodeMatr
 /// K(3b+k, 3a+i) = Σ_j ∂_j N_a T(3b+k, i+3j) (27·#basis² flops): the sparsity of
 /// ∂F/∂u is used instead of a dense Bᵀ C B (which costs three times more).
 template <int N>
-void stiffness(const ElementView& element, const Material& material, const NodeMatrix<N>& u,
-               LocalMatrix<N>& stiffness, TangentRows<N>& t, const double* shifts = nullptr) {
+void stiffness(const ElementView& element, const Material& material, const NodeMatrix<N>& u, LocalMatrix<N>& stiffness,
+               TangentRows<N>& t, const double* shifts = nullptr) {
   const int n = element.basis_count();
   stiffness.setZero();
   Eigen::Matrix3d P;

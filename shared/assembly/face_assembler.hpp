@@ -39,8 +39,11 @@ class FaceAssembler final : public EnergyTerm {
 public:
   /// Keeps a reference to `faces`.
   FaceAssembler(const TabulatedFaces& faces, Kernel kernel)
-      : faces_(faces), kernel_(std::move(kernel)), colors_(color_groups(faces.basis_groups())),
-        face_energies_(static_cast<size_t>(faces.size())), threads_(omp_get_max_threads()),
+      : faces_(faces),
+        kernel_(std::move(kernel)),
+        colors_(color_groups(faces.basis_groups())),
+        face_energies_(static_cast<size_t>(faces.size())),
+        threads_(omp_get_max_threads()),
         scratch_(std::make_unique<std::vector<Scratch>[]>(threads_)) {
     for (int t = 0; t < threads_; ++t) scratch_[t].resize(static_cast<size_t>(faces.max_face_basis()) + 1);
   }
@@ -75,10 +78,12 @@ public:
         kernel::NodeMatrix<N>& forces = select<N>(fixed_forces, scratch.forces);
         kernel_.template forces<N>(face, u, forces);
         if (!forces.allFinite()) failure.record(f);
-        for (int a = 0; a < face.basis_count(); ++a) gradient.segment<3>(3 * face.basis[a]) += forces.row(a).transpose();
+        for (int a = 0; a < face.basis_count(); ++a)
+          gradient.segment<3>(3 * face.basis[a]) += forces.row(a).transpose();
       });
     });
-    if (failure.item() >= 0) throw NumericalError("face " + std::to_string(failure.item()) + ": non-finite face forces");
+    if (failure.item() >= 0)
+      throw NumericalError("face " + std::to_string(failure.item()) + ": non-finite face forces");
   }
 
   void add_hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian) const override {
@@ -99,7 +104,8 @@ public:
         kernel::scatter<N>(face.basis, sparsity_->extra_pair_offsets(first_group_ + f), stiffness, outer, values);
       });
     });
-    if (failure.item() >= 0) throw NumericalError("face " + std::to_string(failure.item()) + ": non-finite face stiffness");
+    if (failure.item() >= 0)
+      throw NumericalError("face " + std::to_string(failure.item()) + ": non-finite face stiffness");
   }
 
 private:
@@ -114,10 +120,8 @@ private:
   // fixed-size matrix costs nothing: its storage is on the stack).
   template <int N, typename Fixed, typename Dynamic>
   static Fixed& select(Fixed& fixed, Dynamic& dynamic) {
-    if constexpr (N == Eigen::Dynamic)
-      return dynamic;
-    else
-      return fixed;
+    if constexpr (N == Eigen::Dynamic) return dynamic;
+    else return fixed;
   }
 
   // Gathers the face's displacements into a matrix of the right size and calls

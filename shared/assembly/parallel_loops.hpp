@@ -18,7 +18,8 @@ class FirstFailure {
 public:
   void record(int item) {
     int current = item_.load();
-    while ((current < 0 || item < current) && !item_.compare_exchange_weak(current, item)) {}
+    while ((current < 0 || item < current) && !item_.compare_exchange_weak(current, item)) {
+    }
   }
   int item() const { return item_.load(); }
 

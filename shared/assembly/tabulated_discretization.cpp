@@ -43,8 +43,8 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
     holders += (holders.empty() ? "" : ", ") + std::to_string(e) + (lightest < 0 ? " (a negative weight)" : "");
   }
   throw NumericalError("lumped mass of basis function " + std::to_string(basis) + " is " +
-                       std::to_string(lumped_mass[dof]) + ", not positive; its elements: " +
-                       (holders.empty() ? "none" : holders));
+                       std::to_string(lumped_mass[dof]) +
+                       ", not positive; its elements: " + (holders.empty() ? "none" : holders));
 }
 
 }  // namespace

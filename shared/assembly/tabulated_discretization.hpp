@@ -38,7 +38,7 @@ struct DiscretizationParts {
   /// materials[m] serves the elements of material id m (not owned).
   std::vector<const Material*> materials;
   std::vector<std::unique_ptr<EnergyTerm>> terms;
-  DirichletDofs dirichlet;  ///< empty for none
+  DirichletDofs dirichlet;         ///< empty for none
   bool conditions_weakly = false;  ///< the terms impose the Dirichlet conditions
   ExplicitMassKind explicit_mass = ExplicitMassKind::lumped;
   /// The DOF blocks of a block_per_element mass (disjoint, covering every DOF) when the

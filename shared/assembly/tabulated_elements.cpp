@@ -12,7 +12,8 @@ void TabulatedElements::add(std::span<const int> basis, std::span<const double> 
   const auto points = static_cast<Eigen::Index>(weights.size());
   if (values.rows() != points || values.cols() != basis_size || gradients.rows() != points * basis_size ||
       gradients.cols() != 3)
-    throw std::invalid_argument("TabulatedElements::add: values must be #points × #basis and gradients (#points·#basis) × 3");
+    throw std::invalid_argument(
+        "TabulatedElements::add: values must be #points × #basis and gradients (#points·#basis) × 3");
   basis_.insert(basis_.end(), basis.begin(), basis.end());
   basis_offsets_.push_back(static_cast<long long>(basis_.size()));
   weights_.insert(weights_.end(), weights.begin(), weights.end());

@@ -17,7 +17,7 @@ namespace altfem {
 
 /// A read-only view of one tabulated element.
 struct ElementView {
-  std::span<const int> basis;  ///< #basis global basis-function indices
+  std::span<const int> basis;       ///< #basis global basis-function indices
   std::span<const double> weights;  ///< #points, w_q |det J(ξ_q)|
   /// #points × #basis, row q holds N_a(x_q)
   Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> values;
@@ -37,9 +37,8 @@ class TabulatedElements {
 public:
   /// Appends one element. values: #points × #basis; gradients: (#points·#basis) × 3,
   /// point-major (rows q·#basis .. q·#basis + #basis − 1 belong to point q).
-  void add(std::span<const int> basis, std::span<const double> weights,
-           const Eigen::Ref<const Eigen::MatrixXd>& values, const Eigen::Ref<const Eigen::MatrixXd>& gradients,
-           int material = 0);
+  void add(std::span<const int> basis, std::span<const double> weights, const Eigen::Ref<const Eigen::MatrixXd>& values,
+           const Eigen::Ref<const Eigen::MatrixXd>& gradients, int material = 0);
   void reserve(int elements, long long basis_entries, long long point_entries, long long value_entries);
 
   int size() const { return static_cast<int>(material_.size()); }

@@ -31,8 +31,9 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
   };
   if (normals.rows() != points || normals.cols() != 3 || !values_fit(values_minus) || !values_fit(values_plus) ||
       !gradients_fit(gradients_minus) || !gradients_fit(gradients_plus))
-    throw std::invalid_argument("TabulatedFaces::add: normals must be #points × 3, values #points × #basis and "
-                                "gradients (#points·#basis) × 3");
+    throw std::invalid_argument(
+        "TabulatedFaces::add: normals must be #points × 3, values #points × #basis and "
+        "gradients (#points·#basis) × 3");
   const bool with_hessians = hessians_minus.rows() > 0 || hessians_plus.rows() > 0;
   const auto hessians_fit = [&](const auto& hessians) { return hessians.rows() == points * n && hessians.cols() == 9; };
   if (with_hessians && (!hessians_fit(hessians_minus) || !hessians_fit(hessians_plus)))
@@ -41,7 +42,8 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
     throw std::invalid_argument("TabulatedFaces::add: either every face has Hessians or none has");
   for (Eigen::Index q = 0; q < points; ++q)
     if (std::abs(normals.row(q).norm() - 1.0) > 1e-12)
-      throw std::invalid_argument("TabulatedFaces::add: the normal at point " + std::to_string(q) + " is not a unit vector");
+      throw std::invalid_argument("TabulatedFaces::add: the normal at point " + std::to_string(q) +
+                                  " is not a unit vector");
   basis_.add(basis);
   weights_.insert(weights_.end(), weights.begin(), weights.end());
   point_offsets_.push_back(static_cast<long long>(weights_.size()));

@@ -59,8 +59,9 @@ public:
   /// gradients_*: (#points·#basis) × 3, point-major; hessians_*: (#points·#basis) × 9,
   /// point-major, or empty (0 rows) for none — all faces with them or all without.
   /// Throws std::invalid_argument on mismatched sizes or a normal that is not of unit length.
-  void add(std::span<const int> basis, std::span<const double> weights, const Eigen::Ref<const Eigen::MatrixXd>& normals,
-           const Eigen::Ref<const Eigen::MatrixXd>& values_minus, const Eigen::Ref<const Eigen::MatrixXd>& values_plus,
+  void add(std::span<const int> basis, std::span<const double> weights,
+           const Eigen::Ref<const Eigen::MatrixXd>& normals, const Eigen::Ref<const Eigen::MatrixXd>& values_minus,
+           const Eigen::Ref<const Eigen::MatrixXd>& values_plus,
            const Eigen::Ref<const Eigen::MatrixXd>& gradients_minus,
            const Eigen::Ref<const Eigen::MatrixXd>& gradients_plus, int minus, int plus,
            const Eigen::Ref<const Eigen::MatrixXd>& hessians_minus = Eigen::MatrixXd(0, 9),

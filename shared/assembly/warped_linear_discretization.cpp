@@ -4,8 +4,8 @@
 
 #include <stdexcept>
 
-#include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/elastic_kernel.hpp"
+#include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
 
@@ -94,7 +94,8 @@ void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u) const {
     // z_a = R_eᵀ x_a − X_a, packed node-major (local DOF 3a+i) like K_e's rows.
     Eigen::Map<Eigen::VectorXd> z(corotated_.data() + 3 * elements.basis_offset(e), 3 * n);
     for (int a = 0; a < n; ++a)
-      z.segment<3>(3 * a) = rotation.transpose() * scratch.deformed.row(a).transpose() - scratch.rest.row(a).transpose();
+      z.segment<3>(3 * a) =
+          rotation.transpose() * scratch.deformed.row(a).transpose() - scratch.rest.row(a).transpose();
     Eigen::Map<Eigen::VectorXd>(stiffness_forces_.data() + 3 * elements.basis_offset(e), 3 * n).noalias() =
         stiffness_[e] * z;
   });
@@ -139,8 +140,7 @@ void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::Sparse
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
         // Block (a, b) of R_e K_e R_eᵀ.
-        const Eigen::Matrix3d block =
-            rotation * stiffness_[e].block<3, 3>(3 * a, 3 * b) * rotation.transpose();
+        const Eigen::Matrix3d block = rotation * stiffness_[e].block<3, 3>(3 * a, 3 * b) * rotation.transpose();
         for (int k = 0; k < 3; ++k) {
           double* column = values + outer[3 * element.basis[b] + k] + offsets[b * n + a];
           for (int i = 0; i < 3; ++i) column[i] += block(i, k);

@@ -69,7 +69,7 @@ private:
   void warp(const Eigen::VectorXd& u) const;
 
   Eigen::MatrixX3d rest_;
-  std::vector<Eigen::MatrixXd> stiffness_;  // per element K_e, 3n × 3n, local DOF 3a+i
+  std::vector<Eigen::MatrixXd> stiffness_;    // per element K_e, 3n × 3n, local DOF 3a+i
   std::vector<Eigen::VectorXd> node_masses_;  // per element the shape-matching masses (n)
   std::vector<std::vector<int>> colors_;
   struct NodeScratch {

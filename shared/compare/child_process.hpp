@@ -17,8 +17,8 @@ pid_t start_child(const std::vector<std::string>& arguments, const std::vector<s
 
 struct FinishedChild {
   pid_t pid = -1;
-  int exit_code = 0;  ///< the exit status, or 128 + the signal that killed it
-  int signal = 0;     ///< the signal that killed it, 0 if it exited
+  int exit_code = 0;           ///< the exit status, or 128 + the signal that killed it
+  int signal = 0;              ///< the signal that killed it, 0 if it exited
   double peak_memory_mib = 0;  ///< ru_maxrss of the child
 };
 

@@ -28,7 +28,8 @@ std::string Configuration::label() const {
   for (const auto& override_ : overrides) {
     const auto slash = override_.pointer.rfind('/');
     const std::string key = override_.pointer.substr(slash + 1);
-    text += " " + key + "=" + (override_.value.is_string() ? override_.value.get<std::string>() : override_.value.dump());
+    text +=
+        " " + key + "=" + (override_.value.is_string() ? override_.value.get<std::string>() : override_.value.dump());
   }
   return text;
 }
@@ -85,8 +86,7 @@ ComparePlan plan_from_scene(const json& compare_block, const std::vector<std::st
   const bool present = compare_block.is_object();
   if (present && compare_block.contains("methods"))
     for (const auto& name : compare_block["methods"]) plan.methods.push_back(name.get<std::string>());
-  else
-    plan.methods = available_methods;
+  else plan.methods = available_methods;
   if (present && compare_block.contains("sweeps"))
     for (const auto& [key, values] : compare_block["sweeps"].items()) {
       Sweep sweep{key.front() == '/' ? key : "/" + key, {}};

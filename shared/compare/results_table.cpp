@@ -1,13 +1,13 @@
 #include "shared/compare/results_table.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <fstream>
-#include <algorithm>
-#include <variant>
+#include <limits>
 #include <sstream>
+#include <variant>
 
 #include "shared/common/error.hpp"
 #include "shared/io/atomic_file.hpp"
@@ -35,23 +35,42 @@ using Member = std::variant<std::string RunRecord::*, bool RunRecord::*, int Run
                             double RunRecord::*, double PhaseTimings::*>;
 
 const std::vector<std::pair<std::string, Member>>& columns() {
-  static const std::vector<std::pair<std::string, Member>> table{
-      {"hash", &RunRecord::hash}, {"method", &RunRecord::method}, {"element", &RunRecord::element},
-      {"label", &RunRecord::label}, {"overrides", &RunRecord::overrides}, {"is_reference", &RunRecord::is_reference},
-      {"status", &RunRecord::status}, {"exit_code", &RunRecord::exit_code}, {"message", &RunRecord::message},
-      {"dofs", &RunRecord::dofs}, {"elements", &RunRecord::elements},
-      {"quadrature_points", &RunRecord::quadrature_points}, {"steps", &RunRecord::steps},
-      {"newton_iterations", &RunRecord::newton_iterations}, {"linear_iterations", &RunRecord::linear_iterations},
-      {"setup_s", &PhaseTimings::setup}, {"quadrature_s", &PhaseTimings::quadrature},
-      {"assembly_s", &PhaseTimings::assembly}, {"analysis_s", &PhaseTimings::analysis},
-      {"factorisation_s", &PhaseTimings::factorisation}, {"solve_s", &PhaseTimings::solve},
-      {"total_s", &PhaseTimings::total}, {"wall_s", &RunRecord::wall_seconds},
-      {"peak_memory_mib", &RunRecord::peak_memory_mib}, {"rms_error", &RunRecord::rms_error},
-      {"max_error", &RunRecord::max_error}, {"relative_rms_error", &RunRecord::relative_rms_error},
-      {"report_error", &RunRecord::report_error},
-      {"field_l2_error", &RunRecord::field_l2_error}, {"field_h1_error", &RunRecord::field_h1_error}, {"scene", &RunRecord::scene}, {"date", &RunRecord::date},
-      {"cpu", &RunRecord::cpu}, {"cores", &RunRecord::cores}, {"threads", &RunRecord::threads},
-      {"blas", &RunRecord::blas}};
+  static const std::vector<std::pair<std::string, Member>> table{{"hash", &RunRecord::hash},
+                                                                 {"method", &RunRecord::method},
+                                                                 {"element", &RunRecord::element},
+                                                                 {"label", &RunRecord::label},
+                                                                 {"overrides", &RunRecord::overrides},
+                                                                 {"is_reference", &RunRecord::is_reference},
+                                                                 {"status", &RunRecord::status},
+                                                                 {"exit_code", &RunRecord::exit_code},
+                                                                 {"message", &RunRecord::message},
+                                                                 {"dofs", &RunRecord::dofs},
+                                                                 {"elements", &RunRecord::elements},
+                                                                 {"quadrature_points", &RunRecord::quadrature_points},
+                                                                 {"steps", &RunRecord::steps},
+                                                                 {"newton_iterations", &RunRecord::newton_iterations},
+                                                                 {"linear_iterations", &RunRecord::linear_iterations},
+                                                                 {"setup_s", &PhaseTimings::setup},
+                                                                 {"quadrature_s", &PhaseTimings::quadrature},
+                                                                 {"assembly_s", &PhaseTimings::assembly},
+                                                                 {"analysis_s", &PhaseTimings::analysis},
+                                                                 {"factorisation_s", &PhaseTimings::factorisation},
+                                                                 {"solve_s", &PhaseTimings::solve},
+                                                                 {"total_s", &PhaseTimings::total},
+                                                                 {"wall_s", &RunRecord::wall_seconds},
+                                                                 {"peak_memory_mib", &RunRecord::peak_memory_mib},
+                                                                 {"rms_error", &RunRecord::rms_error},
+                                                                 {"max_error", &RunRecord::max_error},
+                                                                 {"relative_rms_error", &RunRecord::relative_rms_error},
+                                                                 {"report_error", &RunRecord::report_error},
+                                                                 {"field_l2_error", &RunRecord::field_l2_error},
+                                                                 {"field_h1_error", &RunRecord::field_h1_error},
+                                                                 {"scene", &RunRecord::scene},
+                                                                 {"date", &RunRecord::date},
+                                                                 {"cpu", &RunRecord::cpu},
+                                                                 {"cores", &RunRecord::cores},
+                                                                 {"threads", &RunRecord::threads},
+                                                                 {"blas", &RunRecord::blas}};
   return table;
 }
 
@@ -148,8 +167,8 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
     const std::vector<std::string> fields = parse_record(text, at);
     const std::string where = file.string() + ": line " + std::to_string(line);
     if (fields.size() != header.size())
-      throw InputError(input_message(where, "", "expected " + std::to_string(header.size()) + " fields, got " +
-                                                    std::to_string(fields.size())));
+      throw InputError(input_message(
+          where, "", "expected " + std::to_string(header.size()) + " fields, got " + std::to_string(fields.size())));
     RunRecord record;
     for (const auto& [name, member] : columns()) {
       const auto found = std::find(header.begin(), header.end(), name);

@@ -17,8 +17,8 @@ void add_summary(RunRecord& record, const json& summary) {
   record.newton_iterations = summary.at("newton_iterations");
   record.linear_iterations = summary.at("linear_iterations");
   const auto& t = summary.at("timings_s");
-  record.timings = {t.at("setup"), t.at("quadrature"), t.at("assembly"), t.at("analysis"),
-                    t.at("factorisation"), t.at("solve"), t.at("total")};
+  record.timings = {t.at("setup"),         t.at("quadrature"), t.at("assembly"), t.at("analysis"),
+                    t.at("factorisation"), t.at("solve"),      t.at("total")};
   if (summary.contains("field_errors")) {
     record.field_l2_error = summary["field_errors"].at("relative_l2");
     record.field_h1_error = summary["field_errors"].at("relative_h1_seminorm");

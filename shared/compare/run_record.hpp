@@ -15,21 +15,21 @@ struct PhaseTimings {
 
 struct RunRecord {
   // The configuration.
-  std::string hash;        ///< run_hash of the resolved options: the folder runs/<hash>
+  std::string hash;  ///< run_hash of the resolved options: the folder runs/<hash>
   std::string method;
-  std::string element;     ///< element type(s) of the run, "hex20" or "hex20+tet10"; "" if it failed early
-  std::string label;       ///< "fem element=tet4 resolution=[10,1,1]"
-  std::string overrides;   ///< the `--set` assignments, space separated
+  std::string element;    ///< element type(s) of the run, "hex20" or "hex20+tet10"; "" if it failed early
+  std::string label;      ///< "fem element=tet4 resolution=[10,1,1]"
+  std::string overrides;  ///< the `--set` assignments, space separated
   bool is_reference = false;
   // How it ended.
-  std::string status;      ///< "ok", "invalid input", "numerical failure", "internal error", "crashed", "interrupted"
-  int exit_code = 0;       ///< the process's; 128 + signal when killed by one
-  std::string message;     ///< the last line of its stderr when it failed
+  std::string status;   ///< "ok", "invalid input", "numerical failure", "internal error", "crashed", "interrupted"
+  int exit_code = 0;    ///< the process's; 128 + signal when killed by one
+  std::string message;  ///< the last line of its stderr when it failed
   // What it cost.
   long long dofs = 0, elements = 0, quadrature_points = 0, steps = 0, newton_iterations = 0, linear_iterations = 0;
   PhaseTimings timings;
-  double wall_seconds = 0;      ///< measured by compare around the process
-  double peak_memory_mib = 0;   ///< wait4's ru_maxrss
+  double wall_seconds = 0;     ///< measured by compare around the process
+  double peak_memory_mib = 0;  ///< wait4's ru_maxrss
   // How accurate it is: surface error against the reference run, over the reference's bounding-box diagonal.
   double rms_error = std::numeric_limits<double>::quiet_NaN();
   double max_error = std::numeric_limits<double>::quiet_NaN();

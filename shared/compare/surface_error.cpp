@@ -126,8 +126,9 @@ double rest_diagonal(const SurfaceFrame& frame) {
 SurfaceError surface_error(const Eigen::MatrixX3d& deformed, const Eigen::MatrixX3d& reference_deformed,
                            const Eigen::MatrixX3d& reference_displacement, double diagonal) {
   if (deformed.rows() != reference_deformed.rows() || reference_displacement.rows() != reference_deformed.rows())
-    throw InputError(input_message("surface", "", "expected " + std::to_string(reference_deformed.rows()) +
-                                                      " vertices, got " + std::to_string(deformed.rows())));
+    throw InputError(input_message(
+        "surface", "",
+        "expected " + std::to_string(reference_deformed.rows()) + " vertices, got " + std::to_string(deformed.rows())));
   if (deformed.rows() == 0) throw InputError(input_message("surface", "", "expected surface vertices, got none"));
   const Eigen::VectorXd distance = (deformed - reference_deformed).rowwise().norm();
   const double count = static_cast<double>(distance.size());
@@ -140,7 +141,8 @@ SurfaceError surface_error(const Eigen::MatrixX3d& deformed, const Eigen::Matrix
 SurfaceError surface_error(const SurfaceFrame& run, const SurfaceFrame& reference) {
   const double diagonal = rest_diagonal(reference);
   const bool same_surface = run.deformed.rows() == reference.deformed.rows() &&
-                            run.triangles.rows() == reference.triangles.rows() && run.triangles == reference.triangles &&
+                            run.triangles.rows() == reference.triangles.rows() &&
+                            run.triangles == reference.triangles &&
                             (run.deformed - run.displacement).isApprox(reference.deformed - reference.displacement);
   if (same_surface) return surface_error(run.deformed, reference.deformed, reference.displacement, diagonal);
   const Eigen::MatrixX3d rest = run.deformed - run.displacement;

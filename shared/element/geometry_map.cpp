@@ -9,8 +9,7 @@ namespace altfem {
 
 namespace {
 using NodeValues = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ReferenceElement::max_node_count, 1>;
-using NodeGradients =
-    Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
+using NodeGradients = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
 
 constexpr int max_step_halvings = 30;
 // ξ may sit this far outside the reference domain and still count as inside, so
@@ -20,13 +19,12 @@ constexpr double minimum_inside_slack = 1e-10;
 void check_shape(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& nodes) {
   if (nodes.rows() != element.node_count() || nodes.cols() != 3)
     throw std::invalid_argument("geometry map of " + std::string(element_name(element.type())) +
-                                ": element_nodes must be " +
-                                std::to_string(element.node_count()) + " × 3, got " +
+                                ": element_nodes must be " + std::to_string(element.node_count()) + " × 3, got " +
                                 std::to_string(nodes.rows()) + " × " + std::to_string(nodes.cols()));
 }
 
-Eigen::Vector3d physical_point(const ReferenceElement& element,
-                               const Eigen::Ref<const Eigen::MatrixXd>& nodes, const Eigen::Vector3d& xi) {
+Eigen::Vector3d physical_point(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& nodes,
+                               const Eigen::Vector3d& xi) {
   NodeValues values(element.node_count());
   element.evaluate(xi, values);
   return nodes.transpose().lazyProduct(values);
@@ -40,26 +38,23 @@ Eigen::Matrix3d jacobian(const ReferenceElement& element, const Eigen::Ref<const
 }
 }  // namespace
 
-Eigen::Vector3d map_to_physical(const ReferenceElement& element,
-                                const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
+Eigen::Vector3d map_to_physical(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
                                 const Eigen::Vector3d& xi) {
   check_shape(element, element_nodes);
   return physical_point(element, element_nodes, xi);
 }
 
-Eigen::Matrix3d map_jacobian(const ReferenceElement& element,
-                             const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
+Eigen::Matrix3d map_jacobian(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
                              const Eigen::Vector3d& xi) {
   check_shape(element, element_nodes);
   return jacobian(element, element_nodes, xi);
 }
 
 InverseMapResult map_to_reference(const ReferenceElement& element,
-                                  const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
-                                  const Eigen::Vector3d& x, double tolerance, int max_iterations) {
+                                  const Eigen::Ref<const Eigen::MatrixXd>& element_nodes, const Eigen::Vector3d& x,
+                                  double tolerance, int max_iterations) {
   check_shape(element, element_nodes);
-  const double diameter =
-      (element_nodes.colwise().maxCoeff() - element_nodes.colwise().minCoeff()).norm();
+  const double diameter = (element_nodes.colwise().maxCoeff() - element_nodes.colwise().minCoeff()).norm();
   // A Jacobian this close to singular (relative to the element's size) has no
   // meaningful Newton step.
   const double singular_determinant = 1e-14 * diameter * diameter * diameter;
@@ -88,8 +83,7 @@ InverseMapResult map_to_reference(const ReferenceElement& element,
     double fraction = 1.0;
     Eigen::Vector3d trial = result.xi + step;
     Eigen::Vector3d trial_residual = physical_point(element, element_nodes, trial) - x;
-    for (int halvings = 0; trial_residual.norm() >= residual_norm && halvings < max_step_halvings;
-         ++halvings) {
+    for (int halvings = 0; trial_residual.norm() >= residual_norm && halvings < max_step_halvings; ++halvings) {
       fraction *= 0.5;
       trial = result.xi + fraction * step;
       trial_residual = physical_point(element, element_nodes, trial) - x;
@@ -100,8 +94,7 @@ InverseMapResult map_to_reference(const ReferenceElement& element,
     residual = trial_residual;
   }
   result.residual = residual.norm();
-  result.inside =
-      result.converged && element.contains(result.xi, std::max(tolerance, minimum_inside_slack));
+  result.inside = result.converged && element.contains(result.xi, std::max(tolerance, minimum_inside_slack));
   return result;
 }
 

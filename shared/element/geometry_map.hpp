@@ -8,13 +8,11 @@
 namespace altfem {
 
 /// x(ξ) = Σ_i N_i(ξ) x_i; element_nodes is #nodes × 3 (row i = x_i, VTK order).
-Eigen::Vector3d map_to_physical(const ReferenceElement& element,
-                                const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
+Eigen::Vector3d map_to_physical(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
                                 const Eigen::Vector3d& xi);
 
 /// J_ij = ∂x_i/∂ξ_j at ξ (3 × 3); element_nodes is #nodes × 3.
-Eigen::Matrix3d map_jacobian(const ReferenceElement& element,
-                             const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
+Eigen::Matrix3d map_jacobian(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
                              const Eigen::Vector3d& xi);
 
 struct InverseMapResult {
@@ -35,8 +33,7 @@ struct InverseMapResult {
 /// failed line search or max_iterations steps, with ξ the last iterate: the caller
 /// decides what a failure means in its context.
 InverseMapResult map_to_reference(const ReferenceElement& element,
-                                  const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
-                                  const Eigen::Vector3d& x, double tolerance = 1e-12,
-                                  int max_iterations = 50);
+                                  const Eigen::Ref<const Eigen::MatrixXd>& element_nodes, const Eigen::Vector3d& x,
+                                  double tolerance = 1e-12, int max_iterations = 50);
 
 }  // namespace altfem

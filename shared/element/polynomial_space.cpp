@@ -18,13 +18,10 @@ bool in_space(ElementType type, const Eigen::Vector3i& exponent) {
   switch (type) {
     case ElementType::tet4:
     case ElementType::tet10:
-    case ElementType::tet20:
-      return exponent.sum() <= k;
+    case ElementType::tet20: return exponent.sum() <= k;
     case ElementType::hex8:
-    case ElementType::hex27:
-      return exponent.maxCoeff() <= k;
-    case ElementType::hex20:
-      return exponent.maxCoeff() <= k && superlinear_degree(exponent) <= k;
+    case ElementType::hex27: return exponent.maxCoeff() <= k;
+    case ElementType::hex20: return exponent.maxCoeff() <= k && superlinear_degree(exponent) <= k;
   }
   return false;
 }
@@ -36,8 +33,7 @@ std::vector<Eigen::Vector3i> polynomial_space_exponents(ElementType type) {
   for (int a = 0; a <= k; ++a)
     for (int b = 0; b <= k; ++b)
       for (int c = 0; c <= k; ++c)
-        if (const Eigen::Vector3i exponent(a, b, c); in_space(type, exponent))
-          exponents.push_back(exponent);
+        if (const Eigen::Vector3i exponent(a, b, c); in_space(type, exponent)) exponents.push_back(exponent);
   return exponents;
 }
 

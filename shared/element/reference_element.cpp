@@ -14,8 +14,7 @@ namespace {
 // Stack storage for the monomials and their derivatives (no heap allocation on
 // the evaluation path, which runs at every quadrature point).
 using MonomialValues = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ReferenceElement::max_node_count, 1>;
-using MonomialGradients =
-    Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
+using MonomialGradients = Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ReferenceElement::max_node_count, 3>;
 using MonomialHessians = Eigen::Matrix<double, Eigen::Dynamic, 9, 0, ReferenceElement::max_node_count, 9>;
 
 constexpr int max_exponent = 3;  // Tet20's cubics
@@ -40,9 +39,8 @@ ReferenceElement::ReferenceElement(ElementType type)
     : type_(type), nodes_(reference_nodes(type)), exponents_(polynomial_space_exponents(type)) {
   const int count = node_count();
   if (static_cast<int>(exponents_.size()) != count)
-    throw std::logic_error("ReferenceElement: " + std::string(element_name(type)) + " has " +
-                           std::to_string(count) + " nodes but " +
-                           std::to_string(exponents_.size()) + " monomials");
+    throw std::logic_error("ReferenceElement: " + std::string(element_name(type)) + " has " + std::to_string(count) +
+                           " nodes but " + std::to_string(exponents_.size()) + " monomials");
   Eigen::MatrixXd vandermonde(count, count);
   for (int i = 0; i < count; ++i) {
     const Powers powers = powers_of(nodes_.row(i).transpose());
@@ -57,8 +55,7 @@ ReferenceElement::ReferenceElement(ElementType type)
 }
 
 Eigen::Vector3d ReferenceElement::centroid() const {
-  return shape() == ElementShape::tetrahedron ? Eigen::Vector3d::Constant(0.25)
-                                              : Eigen::Vector3d::Zero();
+  return shape() == ElementShape::tetrahedron ? Eigen::Vector3d::Constant(0.25) : Eigen::Vector3d::Zero();
 }
 
 void ReferenceElement::evaluate(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::VectorXd> values) const {
@@ -69,8 +66,7 @@ void ReferenceElement::evaluate(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::Vec
   values.noalias() = coefficients_.lazyProduct(monomials);
 }
 
-void ReferenceElement::evaluate_gradients(const Eigen::Vector3d& xi,
-                                          Eigen::Ref<Eigen::MatrixXd> gradients) const {
+void ReferenceElement::evaluate_gradients(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> gradients) const {
   const int count = node_count();
   const Powers powers = powers_of(xi);
   MonomialGradients derivatives(count, 3);
@@ -108,17 +104,15 @@ void ReferenceElement::evaluate_hessians(const Eigen::Vector3d& xi, Eigen::Ref<E
 }
 
 bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {
-  if (shape() == ElementShape::tetrahedron)
-    return xi.minCoeff() >= -tolerance && xi.sum() <= 1.0 + tolerance;
+  if (shape() == ElementShape::tetrahedron) return xi.minCoeff() >= -tolerance && xi.sum() <= 1.0 + tolerance;
   return xi.cwiseAbs().maxCoeff() <= 1.0 + tolerance;
 }
 
 const ReferenceElement& reference_element(ElementType type) {
   // A function-local static is initialised once, thread-safely (C++11 [stmt.dcl]/4).
   static const std::array<ReferenceElement, 6> elements{
-      ReferenceElement(ElementType::tet4),  ReferenceElement(ElementType::tet10),
-      ReferenceElement(ElementType::tet20), ReferenceElement(ElementType::hex8),
-      ReferenceElement(ElementType::hex20), ReferenceElement(ElementType::hex27)};
+      ReferenceElement(ElementType::tet4), ReferenceElement(ElementType::tet10), ReferenceElement(ElementType::tet20),
+      ReferenceElement(ElementType::hex8), ReferenceElement(ElementType::hex20), ReferenceElement(ElementType::hex27)};
   return elements[static_cast<int>(type)];
 }
 

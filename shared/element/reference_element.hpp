@@ -46,9 +46,9 @@ public:
 
 private:
   ElementType type_;
-  Eigen::MatrixXd nodes_;                  ///< #nodes × 3
-  std::vector<Eigen::Vector3i> exponents_; ///< #nodes monomial exponents (a, b, c)
-  Eigen::MatrixXd coefficients_;           ///< #nodes × #nodes: N(ξ) = coefficients_ · m(ξ)
+  Eigen::MatrixXd nodes_;                   ///< #nodes × 3
+  std::vector<Eigen::Vector3i> exponents_;  ///< #nodes monomial exponents (a, b, c)
+  Eigen::MatrixXd coefficients_;            ///< #nodes × #nodes: N(ξ) = coefficients_ · m(ξ)
 };
 
 /// The shared, immutable instance of each type (built on first use, thread-safe).

@@ -5,16 +5,15 @@
 #include "shared/mesh/curve_boundary.hpp"
 #include "shared/mesh/elevate_order.hpp"
 #include "shared/mesh/spatial_order.hpp"
-#include "shared/mesh/surface_projection.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "shared/mesh/surface_projection.hpp"
 #include "shared/scene/tetrahedralize_geometry.hpp"
 
 namespace altfem {
 
 VolumeMesh build_fem_mesh(const FemSpec& fem, const SceneGeometry& geometry) {
   switch (fem.mesh) {
-    case FemMeshKind::grid:
-      return structured_grid(geometry.bounds, fem.resolution, fem.element);
+    case FemMeshKind::grid: return structured_grid(geometry.bounds, fem.resolution, fem.element);
     case FemMeshKind::tetrahedralize: {
       // fem_scene_block has checked that fem.element is a tetrahedron.
       const double size = fem_max_cell_size(fem, geometry.bounds);

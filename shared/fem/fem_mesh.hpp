@@ -1,6 +1,6 @@
 #pragma once
-#include "shared/mesh/volume_mesh.hpp"
 #include "shared/fem/fem_scene_block.hpp"
+#include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene_geometry.hpp"
 
 namespace altfem {

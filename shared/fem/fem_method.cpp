@@ -21,15 +21,14 @@ namespace {
 class FemMethod final : public EmbeddedSurfaceMethod {
 public:
   // On the mesh of the scene (build_fem_mesh), or on a mesh an event hands it.
-  FemMethod(const Scene& scene, const SceneGeometry& geometry, const VolumeMesh* handed)
-      : materials_(scene) {
+  FemMethod(const Scene& scene, const SceneGeometry& geometry, const VolumeMesh* handed) : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
     quadrature_order_ = fem.quadrature_order;
     mesh_ = handed ? *handed : build_fem_mesh(fem, geometry);
     const auto start = std::chrono::steady_clock::now();
-    discretization_ = make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
-                                                   scene.dirichlet, fem.quadrature_order,
-                                                   scene.file.string());
+    discretization_ =
+        make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
+                                     scene.dirichlet, fem.quadrature_order, scene.file.string());
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms (SceneGeometry::common_surface), else the mesh's
     // boundary. Surface loads act on the mesh's own boundary lifted to the cells' curved
@@ -86,10 +85,9 @@ std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneG
 }
 
 const MethodDescription& fem_method() {
-  static const MethodDescription method{
-      fem_scene_block(), make_fem_method, "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)",
-      rebuild_on_handed_mesh<FemMethod, VolumeMesh>("fem"),
-      fem_mesh_preview};
+  static const MethodDescription method{fem_scene_block(), make_fem_method,
+                                        "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)",
+                                        rebuild_on_handed_mesh<FemMethod, VolumeMesh>("fem"), fem_mesh_preview};
   return method;
 }
 

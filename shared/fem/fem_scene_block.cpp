@@ -14,8 +14,8 @@ namespace {
 
 using nlohmann::json;
 using scene_schema::KeyRule;
-using scene_schema::ValueType;
 using scene_schema::Validator;
+using scene_schema::ValueType;
 
 std::vector<std::string_view> element_names() {
   std::vector<std::string_view> result;
@@ -38,16 +38,15 @@ void resolve_file_element(const Validator& validator, const json& geometry, json
   const std::string name(element_name(in_file));
   if (!fem.contains("element")) fem["element"] = name;
   if (fem["element"] != name)
-    validator.fail(pointer + "/element",
-                   "must match the mesh file's element '" + name + "', got '" + fem["element"].get<std::string>() + "'");
+    validator.fail(pointer + "/element", "must match the mesh file's element '" + name + "', got '" +
+                                             fem["element"].get<std::string>() + "'");
 }
 
 // The defaults that depend on the geometry (docs/scene-schema.md, "fem").
 void complete_fem(const Validator& validator, const json& scene, json& fem, const std::string& pointer) {
   const json& geometry = scene["geometry"];
   const bool is_box = geometry.contains("shape") && geometry["shape"].contains("box");
-  if (!fem.contains("mesh"))
-    fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
+  if (!fem.contains("mesh")) fem["mesh"] = geometry.contains("mesh") ? "file" : (is_box ? "grid" : "tetrahedralize");
   const std::string mesh = fem["mesh"];
   if (mesh == "file" && !geometry.contains("mesh"))
     validator.fail(pointer + "/mesh", "'file' needs a volume mesh geometry, got " + geometry_kind(geometry));
@@ -58,9 +57,11 @@ void complete_fem(const Validator& validator, const json& scene, json& fem, cons
   if (mesh == "grid" && !is_box)
     validator.fail(pointer + "/mesh", "'grid' needs an analytic box geometry, got " + geometry_kind(geometry));
   if (mesh == "tetrahedralize" && geometry.contains("mesh"))
-    validator.fail(pointer + "/mesh", "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
+    validator.fail(pointer + "/mesh",
+                   "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
   if (mesh == "tetrahedralize" && hex)
-    validator.fail(pointer + "/element", "'tetrahedralize' needs a tet element, got " + scene_schema::describe(fem["element"]));
+    validator.fail(pointer + "/element",
+                   "'tetrahedralize' needs a tet element, got " + scene_schema::describe(fem["element"]));
   if (mesh != "grid" && fem.contains("resolution"))
     validator.fail(pointer + "/resolution", "applies only to mesh 'grid', got mesh '" + mesh + "'");
   if (mesh != "tetrahedralize" && fem.contains("max_cell_size"))
@@ -68,8 +69,8 @@ void complete_fem(const Validator& validator, const json& scene, json& fem, cons
 
   const double scale = geometry["scale"].get<double>();
   if (mesh == "grid" && !fem.contains("resolution")) {
-    const Eigen::Vector3d extent =
-        scale * (vector3_from_json(geometry["shape"]["box"]["max"]) - vector3_from_json(geometry["shape"]["box"]["min"]));
+    const Eigen::Vector3d extent = scale * (vector3_from_json(geometry["shape"]["box"]["max"]) -
+                                            vector3_from_json(geometry["shape"]["box"]["min"]));
     const Eigen::Vector3i resolution = default_grid_resolution(extent);
     fem["resolution"] = {resolution.x(), resolution.y(), resolution.z()};
   }
@@ -101,10 +102,11 @@ FemSpec fem_spec_from_block(const json& fem) {
   FemSpec spec;
   spec.element = *element_type_from_name(fem["element"].get<std::string>());
   const std::string mesh = fem["mesh"];
-  spec.mesh = static_cast<FemMeshKind>(std::find(fem_mesh_names.begin(), fem_mesh_names.end(), mesh) -
-                                       fem_mesh_names.begin());
+  spec.mesh =
+      static_cast<FemMeshKind>(std::find(fem_mesh_names.begin(), fem_mesh_names.end(), mesh) - fem_mesh_names.begin());
   if (fem.contains("resolution"))
-    spec.resolution = {fem["resolution"][0].get<int>(), fem["resolution"][1].get<int>(), fem["resolution"][2].get<int>()};
+    spec.resolution = {fem["resolution"][0].get<int>(), fem["resolution"][1].get<int>(),
+                       fem["resolution"][2].get<int>()};
   if (fem.contains("max_cell_size")) spec.max_cell_size = fem["max_cell_size"].get<double>();
   spec.quadrature_order = fem["quadrature_order"].get<int>();
   spec.curved = fem["curved"].get<bool>();

@@ -21,7 +21,8 @@ public:
   Eigen::AlignedBox3d element_bounds(int cell) const override;
   bool evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                        std::vector<double>& values) const override;
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override;
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override;
 
 private:
   class NearestBoundaryCell;

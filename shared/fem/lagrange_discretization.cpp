@@ -6,9 +6,10 @@
 
 namespace altfem {
 
-std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
-    const VolumeMesh& mesh, const Material& material, const std::vector<DirichletCondition>& dirichlet,
-    int quadrature_strength, const std::string& scene_file) {
+std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(const VolumeMesh& mesh, const Material& material,
+                                                                      const std::vector<DirichletCondition>& dirichlet,
+                                                                      int quadrature_strength,
+                                                                      const std::string& scene_file) {
   return make_lagrange_discretization(mesh, {&material}, {}, dirichlet, quadrature_strength, scene_file);
 }
 
@@ -18,8 +19,9 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   const bool tetrahedra = element_shape(mesh.element_type) == ElementShape::tetrahedron;
   DiscretizationParts parts;
   parts.elements = tabulate_lagrange(
-      mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {},
-                              std::move(material_ids)});
+      mesh,
+      LagrangeCellRules{
+          tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, std::move(material_ids)});
   parts.materials = std::move(materials);
   parts.dirichlet = nodal_dirichlet(mesh.nodes, dirichlet, scene_file, "the fem mesh");
   return std::make_unique<TabulatedDiscretization>(std::move(parts));

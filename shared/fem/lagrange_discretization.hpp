@@ -14,9 +14,10 @@ namespace altfem {
 /// Dirichlet conditions, lumped explicit mass. The FCM composes the same parts
 /// (tabulate_lagrange with its cut-cell rules, nodal_dirichlet on its background nodes)
 /// itself. `material` must outlive the result; `mesh` need not.
-std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
-    const VolumeMesh& mesh, const Material& material, const std::vector<DirichletCondition>& dirichlet,
-    int quadrature_strength, const std::string& scene_file = "scene");
+std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(const VolumeMesh& mesh, const Material& material,
+                                                                      const std::vector<DirichletCondition>& dirichlet,
+                                                                      int quadrature_strength,
+                                                                      const std::string& scene_file = "scene");
 /// The same with several materials: material_ids holds each cell's index into
 /// `materials` (empty: all 0).
 std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(

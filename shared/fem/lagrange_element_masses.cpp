@@ -53,8 +53,10 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
     }
   }
   if (failed_cell >= 0)
-    throw NumericalError("cell " + std::to_string(failed_cell.load()) + ": det J <= 0 at a mass quadrature point "
-                         "(inverted or degenerate " + std::string(element_name(mesh.element_type)) + ")");
+    throw NumericalError("cell " + std::to_string(failed_cell.load()) +
+                         ": det J <= 0 at a mass quadrature point "
+                         "(inverted or degenerate " +
+                         std::string(element_name(mesh.element_type)) + ")");
   return masses;
 }
 

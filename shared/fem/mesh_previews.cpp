@@ -19,20 +19,21 @@ std::string format(const char* pattern, auto... values) {
 }
 
 // The lines every polyhedral preview prints.
-std::string describe(const std::string& method, const Scene& scene, const nlohmann::json& facts, const SlicedMesh* sliced,
-                     double geometry_volume) {
-  std::string text = format("%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra, %d cut, %d merged, %d coarse), "
-                            "%lld nodes\n",
-                            method.c_str(), scene.name.c_str(), facts["source"].get<std::string>().c_str(),
-                            facts["cells"]["total"].get<long long>(), facts["cells"]["tetrahedra"].get<int>(),
-                            facts["cells"]["hexahedra"].get<int>(), facts["cells"]["cut"].get<int>(),
-                            facts["cells"]["merged"].get<int>(), facts["cells"]["coarse"].get<int>(),
-                            facts["nodes"].get<long long>());
+std::string describe(const std::string& method, const Scene& scene, const nlohmann::json& facts,
+                     const SlicedMesh* sliced, double geometry_volume) {
+  std::string text = format(
+      "%s mesh of '%s' (%s): %lld cells (%d tetrahedra, %d hexahedra, %d cut, %d merged, %d coarse), "
+      "%lld nodes\n",
+      method.c_str(), scene.name.c_str(), facts["source"].get<std::string>().c_str(),
+      facts["cells"]["total"].get<long long>(), facts["cells"]["tetrahedra"].get<int>(),
+      facts["cells"]["hexahedra"].get<int>(), facts["cells"]["cut"].get<int>(), facts["cells"]["merged"].get<int>(),
+      facts["cells"]["coarse"].get<int>(), facts["nodes"].get<long long>());
   if (sliced)
-    text += format("slicing: %d x %d x %d grid of cells %.4g, %d cut pieces, %d grid cells split by topology, "
-                   "%d slivers merged\n",
-                   sliced->grid_cells(0), sliced->grid_cells(1), sliced->grid_cells(2), sliced->cell_size,
-                   sliced->cut_pieces, sliced->split_grid_cells, sliced->merged_slivers);
+    text += format(
+        "slicing: %d x %d x %d grid of cells %.4g, %d cut pieces, %d grid cells split by topology, "
+        "%d slivers merged\n",
+        sliced->grid_cells(0), sliced->grid_cells(1), sliced->grid_cells(2), sliced->cell_size, sliced->cut_pieces,
+        sliced->split_grid_cells, sliced->merged_slivers);
   text += format("faces: %d interior, %d boundary\n", facts["faces"]["interior"].get<int>(),
                  facts["faces"]["boundary"].get<int>());
   text += format("volume: %.10g (geometry %.10g, relative difference %.3e)\n", facts["volume"].get<double>(),
@@ -59,7 +60,12 @@ nlohmann::json polyhedral_mesh_facts(const PolyhedralMesh& mesh, double geometry
   for (int face = 0; face < mesh.face_count(); ++face) boundary_faces += mesh.is_boundary_face(face);
   const double volume = mesh.cell_volumes.sum();
   return {{"cells",
-           {{"total", mesh.cell_count()}, {"tetrahedra", tetrahedra}, {"hexahedra", hexahedra}, {"cut", cut}, {"merged", merged}, {"coarse", coarse}}},
+           {{"total", mesh.cell_count()},
+            {"tetrahedra", tetrahedra},
+            {"hexahedra", hexahedra},
+            {"cut", cut},
+            {"merged", merged},
+            {"coarse", coarse}}},
           {"faces", {{"interior", mesh.face_count() - boundary_faces}, {"boundary", boundary_faces}}},
           {"nodes", mesh.nodes.rows()},
           {"volume", volume},

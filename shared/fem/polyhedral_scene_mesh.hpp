@@ -7,9 +7,9 @@
 
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
-#include "shared/mesh/volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/surface_mesh.hpp"
+#include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene_geometry.hpp"
 
 namespace altfem {

@@ -98,8 +98,8 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
 
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength) {
   const bool tetrahedra = reference_element(mesh.element_type).shape() == ElementShape::tetrahedron;
-  return tabulate_lagrange(mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength)
-                                                              : hex_rule(quadrature_strength), {}, {}});
+  return tabulate_lagrange(
+      mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, {}});
 }
 
 }  // namespace altfem

@@ -34,8 +34,7 @@ bool pairwise_disjoint(const std::vector<ShapePointer>& shapes) {
 
 class Csg final : public AnalyticShape {
 public:
-  Csg(Operation operation, std::vector<ShapePointer> children)
-      : operation_(operation), children_(std::move(children)) {
+  Csg(Operation operation, std::vector<ShapePointer> children) : operation_(operation), children_(std::move(children)) {
     if (children_.size() < 2) throw InputError("analytic shape: CSG needs at least 2 shapes");
     for (const auto& child : children_)
       if (!child) throw InputError("analytic shape: CSG child is null");
@@ -58,10 +57,8 @@ public:
     Eigen::AlignedBox3d box = children_.front()->bounding_box();
     if (operation_ == Operation::subtract) return box;
     for (std::size_t i = 1; i < children_.size(); ++i) {
-      if (operation_ == Operation::unite)
-        box.extend(children_[i]->bounding_box());
-      else
-        box = box.intersection(children_[i]->bounding_box());
+      if (operation_ == Operation::unite) box.extend(children_[i]->bounding_box());
+      else box = box.intersection(children_[i]->bounding_box());
     }
     return box;
   }
@@ -77,7 +74,8 @@ public:
     for (const auto& child : children_) {
       const std::optional<AxisPlanes> own = child->axis_planes();
       if (!own) return std::nullopt;
-      for (int axis = 0; axis < 3; ++axis) planes[axis].insert(planes[axis].end(), (*own)[axis].begin(), (*own)[axis].end());
+      for (int axis = 0; axis < 3; ++axis)
+        planes[axis].insert(planes[axis].end(), (*own)[axis].begin(), (*own)[axis].end());
     }
     for (auto& coordinates : planes) {
       std::sort(coordinates.begin(), coordinates.end());

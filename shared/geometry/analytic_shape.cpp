@@ -94,9 +94,7 @@ public:
     require(centre.allFinite() && std::isfinite(radius) && radius > 0, "sphere needs a finite radius > 0");
   }
   double level_set(const Eigen::Vector3d& x) const override { return (x - centre_).norm() - radius_; }
-  Eigen::AlignedBox3d bounding_box() const override {
-    return {centre_.array() - radius_, centre_.array() + radius_};
-  }
+  Eigen::AlignedBox3d bounding_box() const override { return {centre_.array() - radius_, centre_.array() + radius_}; }
   std::optional<double> exact_volume() const override {
     return 4.0 / 3.0 * std::numbers::pi * radius_ * radius_ * radius_;
   }
@@ -114,8 +112,7 @@ private:
 // cylinder, [−R, R] × [0, H] (mirrored so the axis is not a boundary).
 class Cylinder final : public AnalyticShape {
 public:
-  Cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height, double radius,
-           double inner_radius)
+  Cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height, double radius, double inner_radius)
       : base_(base), height_(height), radius_(radius), inner_radius_(inner_radius) {
     require(base.allFinite() && axis.allFinite() && axis.norm() > 0, "cylinder needs a finite non-zero axis");
     require(std::isfinite(height) && height > 0, "cylinder needs a height > 0");
@@ -161,8 +158,7 @@ private:
 
 // Volume of the shape inside one cell of the octree (centre, half-sizes), refined
 // `depth` more times where the level set cannot decide the cell.
-double cell_volume(const AnalyticShape& shape, const Eigen::Vector3d& centre, const Eigen::Vector3d& half,
-                   int depth) {
+double cell_volume(const AnalyticShape& shape, const Eigen::Vector3d& centre, const Eigen::Vector3d& half, int depth) {
   const double phi = shape.level_set(centre);
   const double reach = half.norm();
   const double volume = 8.0 * half.prod();
@@ -209,8 +205,8 @@ ShapePointer make_sphere(const Eigen::Vector3d& centre, double radius) {
   return std::make_shared<Sphere>(centre, radius);
 }
 
-ShapePointer make_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height,
-                           double radius, double inner_radius) {
+ShapePointer make_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height, double radius,
+                           double inner_radius) {
   return std::make_shared<Cylinder>(base, axis, height, radius, inner_radius);
 }
 

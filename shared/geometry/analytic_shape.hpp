@@ -67,8 +67,8 @@ ShapePointer make_box(const Eigen::Vector3d& min, const Eigen::Vector3d& max);
 ShapePointer make_sphere(const Eigen::Vector3d& centre, double radius);
 /// Cylinder whose bottom disc is centred at `base`, extending `height` along `axis`
 /// (normalised here). inner_radius > 0 makes it hollow (a tube with open bore).
-ShapePointer make_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height,
-                           double radius, double inner_radius = 0.0);
+ShapePointer make_cylinder(const Eigen::Vector3d& base, const Eigen::Vector3d& axis, double height, double radius,
+                           double inner_radius = 0.0);
 /// CSG of at least two shapes. difference is the first minus all the others.
 ShapePointer make_union(std::vector<ShapePointer> children);
 ShapePointer make_intersection(std::vector<ShapePointer> children);

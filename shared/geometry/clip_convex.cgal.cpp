@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include "shared/geometry/clip_convex.hpp"
@@ -154,8 +154,8 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
   for (int i = 0; i < 4; ++i) polytope.vertices.push_back(tetrahedron.row(i).transpose());
   // Outward counter-clockwise faces of a positively oriented tetrahedron (VTK order);
   // a negatively oriented one is reordered first.
-  if (CGAL::orientation(to_point(polytope.vertices[0]), to_point(polytope.vertices[1]),
-                        to_point(polytope.vertices[2]), to_point(polytope.vertices[3])) != CGAL::POSITIVE) {
+  if (CGAL::orientation(to_point(polytope.vertices[0]), to_point(polytope.vertices[1]), to_point(polytope.vertices[2]),
+                        to_point(polytope.vertices[3])) != CGAL::POSITIVE) {
     std::swap(polytope.vertices[1], polytope.vertices[2]);
   }
   polytope.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
@@ -210,8 +210,8 @@ std::vector<ClipPlane> hexahedron_clip_planes(const Eigen::Ref<const Eigen::Matr
                                       {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
   std::vector<ClipPlane> planes;
   for (const auto& face : faces) {
-    planes.push_back({corners.row(face[0]).transpose(), corners.row(face[1]).transpose(),
-                      corners.row(face[2]).transpose()});
+    planes.push_back(
+        {corners.row(face[0]).transpose(), corners.row(face[1]).transpose(), corners.row(face[2]).transpose()});
   }
   return planes;
 }
@@ -220,8 +220,8 @@ std::vector<ClipPlane> tetrahedron_clip_planes(const Eigen::Ref<const Eigen::Mat
   static constexpr int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
   std::vector<ClipPlane> planes;
   for (const auto& face : faces) {
-    planes.push_back({corners.row(face[0]).transpose(), corners.row(face[1]).transpose(),
-                      corners.row(face[2]).transpose()});
+    planes.push_back(
+        {corners.row(face[0]).transpose(), corners.row(face[1]).transpose(), corners.row(face[2]).transpose()});
   }
   return planes;
 }

@@ -49,7 +49,9 @@ std::vector<Polyline> parts_on_surface(const Polyline& line, const AnalyticShape
 std::vector<Polyline> zero_set_on_face(const PlanarFace& face, const AnalyticShape& other, double spacing) {
   const int nu = std::max(2, static_cast<int>(std::ceil(face.u.norm() / spacing)));
   const int nv = std::max(2, static_cast<int>(std::ceil(face.v.norm() / spacing)));
-  const auto point = [&](double i, double j) -> Eigen::Vector3d { return face.origin + face.u * (i / nu) + face.v * (j / nv); };
+  const auto point = [&](double i, double j) -> Eigen::Vector3d {
+    return face.origin + face.u * (i / nu) + face.v * (j / nv);
+  };
   std::vector<double> value(static_cast<std::size_t>((nu + 1) * (nv + 1)));
   const auto at = [&](int i, int j) -> double& { return value[static_cast<std::size_t>(i + (nu + 1) * j)]; };
   for (int j = 0; j <= nv; ++j)
@@ -130,11 +132,10 @@ void snap_ends(std::vector<Polyline>& lines, double tolerance) {
   std::vector<Eigen::Vector3d> ends;
   for (Polyline& line : lines)
     for (Eigen::Vector3d* end : {&line.front(), &line.back()}) {
-      const auto near = std::find_if(ends.begin(), ends.end(), [&](const Eigen::Vector3d& x) { return (x - *end).norm() <= tolerance; });
-      if (near != ends.end())
-        *end = *near;
-      else
-        ends.push_back(*end);
+      const auto near = std::find_if(ends.begin(), ends.end(),
+                                     [&](const Eigen::Vector3d& x) { return (x - *end).norm() <= tolerance; });
+      if (near != ends.end()) *end = *near;
+      else ends.push_back(*end);
     }
 }
 

@@ -7,9 +7,7 @@
 namespace altfem {
 
 /// Number of monomials x^a y^b z^c with a+b+c <= degree: (d+1)(d+2)(d+3)/6 (0 for degree < 0).
-constexpr int monomial_count(int degree) {
-  return degree < 0 ? 0 : (degree + 1) * (degree + 2) * (degree + 3) / 6;
-}
+constexpr int monomial_count(int degree) { return degree < 0 ? 0 : (degree + 1) * (degree + 2) * (degree + 3) / 6; }
 
 /// Position of x^a y^b z^c (a, b, c >= 0) in the graded order: all monomials of lower
 /// degree come first, then those of degree q = a+b+c ordered by b+c, then by c.
@@ -19,9 +17,7 @@ constexpr int monomial_index(int a, int b, int c) {
 }
 
 /// Number of monomials x^a y^b with a+b <= degree: (d+1)(d+2)/2 (0 for degree < 0).
-constexpr int monomial_count_2d(int degree) {
-  return degree < 0 ? 0 : (degree + 1) * (degree + 2) / 2;
-}
+constexpr int monomial_count_2d(int degree) { return degree < 0 ? 0 : (degree + 1) * (degree + 2) / 2; }
 
 /// Position of x^a y^b (a, b >= 0) in the graded order: lower degrees first, then by b.
 constexpr int monomial_index_2d(int a, int b) { return monomial_count_2d(a + b - 1) + b; }

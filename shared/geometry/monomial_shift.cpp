@@ -16,9 +16,8 @@ template <int D>
 Eigen::VectorXd shift(const Eigen::VectorXd& moments, int degree, const Eigen::Matrix<double, D, 1>& offset,
                       double ratio, const Eigen::Matrix<int, Eigen::Dynamic, D>& exponents) {
   if (moments.size() != exponents.rows()) {
-    throw std::invalid_argument("shift_moments: expected " + std::to_string(exponents.rows()) +
-                                " moments for degree " + std::to_string(degree) + ", got " +
-                                std::to_string(moments.size()));
+    throw std::invalid_argument("shift_moments: expected " + std::to_string(exponents.rows()) + " moments for degree " +
+                                std::to_string(degree) + ", got " + std::to_string(moments.size()));
   }
   Eigen::MatrixXd binomial = Eigen::MatrixXd::Zero(degree + 1, degree + 1);
   for (int n = 0; n <= degree; ++n) {
@@ -62,8 +61,7 @@ MomentFrame bounding_box_frame(const Eigen::MatrixXd& points) {
   return {0.5 * (low + high).transpose(), scale};
 }
 
-Eigen::VectorXd shift_moments(const Eigen::VectorXd& moments, int degree, const Eigen::Vector3d& offset,
-                              double ratio) {
+Eigen::VectorXd shift_moments(const Eigen::VectorXd& moments, int degree, const Eigen::Vector3d& offset, double ratio) {
   return shift<3>(moments, degree, offset, ratio, monomial_exponents(degree));
 }
 

@@ -36,11 +36,10 @@ Eigen::VectorXd moments_about(const Eigen::VectorXd& frame_moments, int degree, 
 /// from a far frame to a near one (raw moments → moments about the body) cancels
 /// catastrophically: compute in a near frame instead. Throws std::invalid_argument for
 /// degree < 0 or a wrong length.
-Eigen::VectorXd shift_moments(const Eigen::VectorXd& moments, int degree,
-                              const Eigen::Vector3d& offset, double ratio);
+Eigen::VectorXd shift_moments(const Eigen::VectorXd& moments, int degree, const Eigen::Vector3d& offset, double ratio);
 
 /// The same in 2D (length monomial_count_2d(degree), order of monomial_index_2d).
-Eigen::VectorXd shift_moments_2d(const Eigen::VectorXd& moments, int degree,
-                                 const Eigen::Vector2d& offset, double ratio);
+Eigen::VectorXd shift_moments_2d(const Eigen::VectorXd& moments, int degree, const Eigen::Vector2d& offset,
+                                 double ratio);
 
 }  // namespace altfem

@@ -13,8 +13,8 @@ namespace {
 
 void require_polygon(const Eigen::MatrixXd& polygon, int dimension, int degree) {
   if (polygon.cols() != dimension) {
-    throw std::invalid_argument("polygon: expected #vertices × " + std::to_string(dimension) +
-                                " coordinates, got " + std::to_string(polygon.cols()) + " columns");
+    throw std::invalid_argument("polygon: expected #vertices × " + std::to_string(dimension) + " coordinates, got " +
+                                std::to_string(polygon.cols()) + " columns");
   }
   if (polygon.rows() < 3) {
     throw std::invalid_argument("polygon: expected >= 3 vertices, got " + std::to_string(polygon.rows()));
@@ -75,7 +75,7 @@ Eigen::VectorXd planar_polygon_moments(const Eigen::MatrixXd& polygon, int degre
   const Eigen::Vector3d area_vector = polygon_area_vector(local);
   const double area = area_vector.norm();
   const Eigen::VectorXd moments = area == 0.0 ? Eigen::VectorXd::Zero(monomial_count(degree)).eval()
-                                               : planar_face_moments(local, area_vector / area, degree);
+                                              : planar_face_moments(local, area_vector / area, degree);
   return moments_about(frame.scale * frame.scale * moments, degree, frame, centre, scale);
 }
 

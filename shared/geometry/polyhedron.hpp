@@ -7,7 +7,7 @@
 namespace altfem {
 
 struct Polyhedron {
-  Eigen::MatrixXd vertices;             ///< #vertices × 3
+  Eigen::MatrixXd vertices;  ///< #vertices × 3
   /// Each face: indices into `vertices`, at least 3, a planar simple polygon (not
   /// necessarily convex), counter-clockwise seen from outside (outward normal by the
   /// right-hand rule). Together the faces close the boundary.

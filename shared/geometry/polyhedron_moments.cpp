@@ -12,7 +12,8 @@ namespace altfem {
 namespace {
 
 void require_polyhedron(const Polyhedron& polyhedron, int degree) {
-  if (degree < 0) throw std::invalid_argument("polyhedron moments: expected degree >= 0, got " + std::to_string(degree));
+  if (degree < 0)
+    throw std::invalid_argument("polyhedron moments: expected degree >= 0, got " + std::to_string(degree));
   if (polyhedron.vertices.cols() != 3) {
     throw std::invalid_argument("polyhedron: expected #vertices × 3 coordinates, got " +
                                 std::to_string(polyhedron.vertices.cols()) + " columns");

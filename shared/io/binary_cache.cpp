@@ -25,7 +25,8 @@ std::optional<std::string> read_cache_file(const std::filesystem::path& path) {
 
 void write_cache_file(const std::filesystem::path& path, std::string_view content) {
   std::error_code error;
-  std::filesystem::create_directories(path.parent_path(), error);  // write_file_atomically names the path if this failed
+  std::filesystem::create_directories(path.parent_path(),
+                                      error);  // write_file_atomically names the path if this failed
   write_file_atomically(path, content);
 }
 

@@ -22,8 +22,12 @@ public:
     const auto* p = static_cast<const unsigned char*>(data);
     for (std::size_t i = 0; i < size; ++i) value_ = (value_ ^ p[i]) * 1099511628211ull;
   }
-  template <typename T> void scalar(T x) { bytes(&x, sizeof x); }
-  template <typename Matrix> void matrix(const Matrix& m) {
+  template <typename T>
+  void scalar(T x) {
+    bytes(&x, sizeof x);
+  }
+  template <typename Matrix>
+  void matrix(const Matrix& m) {
     scalar<std::int64_t>(m.rows());
     scalar<std::int64_t>(m.cols());
     bytes(m.data(), sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
@@ -39,11 +43,16 @@ class BinaryWriter {
 public:
   /// The file starts with `magic` and a terminating NUL: name and format version.
   explicit BinaryWriter(std::string_view magic) : bytes_(magic) { bytes_.push_back('\0'); }
-  template <typename T> void put(T x) { bytes_.append(reinterpret_cast<const char*>(&x), sizeof x); }
-  template <typename Matrix> void matrix(const Matrix& m) {
+  template <typename T>
+  void put(T x) {
+    bytes_.append(reinterpret_cast<const char*>(&x), sizeof x);
+  }
+  template <typename Matrix>
+  void matrix(const Matrix& m) {
     put<std::int64_t>(m.rows());
     put<std::int64_t>(m.cols());
-    bytes_.append(reinterpret_cast<const char*>(m.data()), sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
+    bytes_.append(reinterpret_cast<const char*>(m.data()),
+                  sizeof(typename Matrix::Scalar) * static_cast<std::size_t>(m.size()));
   }
   const std::string& bytes() const { return bytes_; }
 
@@ -56,10 +65,12 @@ class BinaryReader {
 public:
   /// Fails from the start (every read) unless `bytes` opens with `magic` and its NUL.
   BinaryReader(const std::string& bytes, std::string_view magic) : bytes_(bytes) {
-    const bool opens = bytes.size() > magic.size() && bytes.compare(0, magic.size(), magic) == 0 && bytes[magic.size()] == '\0';
+    const bool opens =
+        bytes.size() > magic.size() && bytes.compare(0, magic.size(), magic) == 0 && bytes[magic.size()] == '\0';
     position_ = opens ? magic.size() + 1 : bytes.size() + 1;
   }
-  template <typename T> std::optional<T> get() {
+  template <typename T>
+  std::optional<T> get() {
     if (!has(sizeof(T))) return std::nullopt;
     T x;
     std::memcpy(&x, bytes_.data() + position_, sizeof x);
@@ -67,7 +78,8 @@ public:
     return x;
   }
   /// A matrix of any shape (fixed dimensions must match); false when it does not fit.
-  template <typename Matrix> bool matrix(Matrix& m) {
+  template <typename Matrix>
+  bool matrix(Matrix& m) {
     const auto rows = get<std::int64_t>(), cols = get<std::int64_t>();
     if (!rows || !cols || *rows < 0 || *cols < 0) return false;
     const auto entries = static_cast<std::size_t>(*rows) * static_cast<std::size_t>(*cols);

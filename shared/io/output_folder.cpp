@@ -1,8 +1,8 @@
 #include "shared/io/output_folder.hpp"
 
+#include <unistd.h>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 #include "shared/common/error.hpp"
 
@@ -38,8 +38,7 @@ void check_output_folder(const std::filesystem::path& folder) {
   if (!std::filesystem::is_directory(existing, error))
     reject(folder, existing == std::filesystem::absolute(folder) ? "is an existing file, expected a folder"
                                                                  : existing.string() + " is a file, not a folder");
-  if (!writable(existing))
-    reject(folder, "cannot write in " + existing.string() + " (read-only or no permission)");
+  if (!writable(existing)) reject(folder, "cannot write in " + existing.string() + " (read-only or no permission)");
 }
 
 }  // namespace altfem

@@ -30,8 +30,7 @@ void UnstructuredGrid::add_cells(ElementType type, const Eigen::MatrixXi& cells)
 
 void UnstructuredGrid::add_triangles(const Eigen::MatrixXi& triangles) {
   if (triangles.cols() != 3)
-    throw std::invalid_argument("add_triangles: triangles need 3 columns, got " +
-                                std::to_string(triangles.cols()));
+    throw std::invalid_argument("add_triangles: triangles need 3 columns, got " + std::to_string(triangles.cols()));
   for (Eigen::Index triangle = 0; triangle < triangles.rows(); ++triangle) {
     const int64_t ids[3] = {triangles(triangle, 0), triangles(triangle, 1), triangles(triangle, 2)};
     add_cell(vtk_triangle, ids);

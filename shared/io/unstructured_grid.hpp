@@ -21,10 +21,10 @@ inline constexpr int vtk_polyhedron = 42;
 /// (VTK_POLYHEDRON) lists its distinct point ids in `connectivity` and its faces in
 /// `polyhedron_faces`.
 struct UnstructuredGrid {
-  Eigen::MatrixXd points;            ///< #points × 3
-  std::vector<int> cell_types;       ///< #cells, VTK cell type (10, 24, 71, 12, 25, 29, 5, 42, ...)
-  std::vector<int64_t> connectivity; ///< all cells' point ids, concatenated
-  std::vector<int64_t> offsets;      ///< #cells, end of each cell in connectivity
+  Eigen::MatrixXd points;             ///< #points × 3
+  std::vector<int> cell_types;        ///< #cells, VTK cell type (10, 24, 71, 12, 25, 29, 5, 42, ...)
+  std::vector<int64_t> connectivity;  ///< all cells' point ids, concatenated
+  std::vector<int64_t> offsets;       ///< #cells, end of each cell in connectivity
   /// #cells or empty (no polyhedra); per cell its faces, each a list of point ids
   /// (ordered so the normal points outwards); empty for a cell that is not a polyhedron.
   std::vector<std::vector<std::vector<int64_t>>> polyhedron_faces;
@@ -43,8 +43,7 @@ struct UnstructuredGrid {
   void add_polyhedron(const std::vector<std::vector<int64_t>>& faces);
 
 private:
-  void add_cell(int vtk_type, std::span<const int64_t> point_ids,
-                std::vector<std::vector<int64_t>> faces = {});
+  void add_cell(int vtk_type, std::span<const int64_t> point_ids, std::vector<std::vector<int64_t>> faces = {});
 };
 
 /// The grid of a volume mesh: its nodes as points, its cells as one VTK cell type.

@@ -77,9 +77,11 @@ struct GridChecker {
     for (int64_t cell = 0; cell < cells; ++cell) {
       const int64_t end = grid.offsets[cell];
       if (end < begin || end > static_cast<int64_t>(grid.connectivity.size()))
-        fail("cell " + std::to_string(cell) + ": offset " + std::to_string(end) + " out of order or past the connectivity");
+        fail("cell " + std::to_string(cell) + ": offset " + std::to_string(end) +
+             " out of order or past the connectivity");
       const int type = grid.cell_types[cell];
-      if (type < 0 || type > 255) fail("cell " + std::to_string(cell) + ": VTK type " + std::to_string(type) + " is not a UInt8");
+      if (type < 0 || type > 255)
+        fail("cell " + std::to_string(cell) + ": VTK type " + std::to_string(type) + " is not a UInt8");
       const int64_t size = end - begin;
       const auto fixed = fixed_point_count(type);
       if ((fixed && size != *fixed) || (type == vtk_lagrange_tetrahedron && !is_lagrange_tetrahedron_size(size)))
@@ -103,7 +105,8 @@ struct GridChecker {
                   const std::string& kind) const {
     std::set<std::string> names;
     for (const auto& [name, values] : data) {
-      if (name.empty() || !names.insert(name).second) fail(kind + " names must be unique and non-empty: '" + name + "'");
+      if (name.empty() || !names.insert(name).second)
+        fail(kind + " names must be unique and non-empty: '" + name + "'");
       if (values.rows() != rows || values.cols() < 1)
         fail(kind + " '" + name + "': expected " + std::to_string(rows) + " rows, got " +
              std::to_string(values.rows()) + " × " + std::to_string(values.cols()));
@@ -122,8 +125,8 @@ struct GridChecker {
 /// The XML of the DataArray elements and the appended block they point into.
 class AppendedArrays {
 public:
-  void add(std::string_view type, std::string_view name, std::optional<Eigen::Index> components,
-           const void* data, std::size_t bytes, std::string_view indent) {
+  void add(std::string_view type, std::string_view name, std::optional<Eigen::Index> components, const void* data,
+           std::size_t bytes, std::string_view indent) {
     xml_ += std::string(indent) + "<DataArray type=\"" + std::string(type) + "\" Name=\"" + xml_attribute(name) + "\"";
     if (components) xml_ += " NumberOfComponents=\"" + std::to_string(*components) + "\"";
     xml_ += " format=\"appended\" offset=\"" + std::to_string(block_.size()) + "\"/>\n";
@@ -206,10 +209,13 @@ std::string vtu_text(const UnstructuredGrid& grid, const std::string& file_name)
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
       "  <UnstructuredGrid>\n"
-      "    <Piece NumberOfPoints=\"" + std::to_string(grid.points.rows()) + "\" NumberOfCells=\"" +
-      std::to_string(grid.cell_count()) + "\">\n" + point_data + cell_data +
-      "      <Points>\n" + points + "      </Points>\n"
-      "      <Cells>\n" + cells + "      </Cells>\n"
+      "    <Piece NumberOfPoints=\"" +
+      std::to_string(grid.points.rows()) + "\" NumberOfCells=\"" + std::to_string(grid.cell_count()) + "\">\n" +
+      point_data + cell_data + "      <Points>\n" + points +
+      "      </Points>\n"
+      "      <Cells>\n" +
+      cells +
+      "      </Cells>\n"
       "    </Piece>\n"
       "  </UnstructuredGrid>\n"
       "  <AppendedData encoding=\"raw\">\n"

@@ -11,8 +11,7 @@ CorotatedLinear::CorotatedLinear(LameParameters lame, double density)
 double CorotatedLinear::energy(const Eigen::Matrix3d& F) const {
   const Eigen::Vector3d sigma = rotation_variant_svd(F).sigma;
   const double trace = sigma.sum() - 3.0;
-  return infinite_unless_finite(lame().mu * (sigma.array() - 1.0).square().sum() +
-                                0.5 * lame().lambda * trace * trace);
+  return infinite_unless_finite(lame().mu * (sigma.array() - 1.0).square().sum() + 0.5 * lame().lambda * trace * trace);
 }
 
 // P = 2μ(F − R) + λ tr(S − I) R; the terms in dR vanish because RᵀdR is skew

@@ -32,9 +32,7 @@ inline Matrix9d determinant_hessian(const Eigen::Matrix3d& F) {
   const Eigen::Matrix3d f1 = cross_matrix(F.col(1));
   const Eigen::Matrix3d f2 = cross_matrix(F.col(2));
   Matrix9d H;
-  H << Eigen::Matrix3d::Zero(), -f2, f1,
-       f2, Eigen::Matrix3d::Zero(), -f0,
-       -f1, f0, Eigen::Matrix3d::Zero();
+  H << Eigen::Matrix3d::Zero(), -f2, f1, f2, Eigen::Matrix3d::Zero(), -f0, -f1, f0, Eigen::Matrix3d::Zero();
   return H;
 }
 

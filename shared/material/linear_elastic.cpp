@@ -2,8 +2,7 @@
 
 namespace altfem {
 
-LinearElastic::LinearElastic(LameParameters lame, double density)
-    : Material(MaterialModel::linear, lame, density) {
+LinearElastic::LinearElastic(LameParameters lame, double density) : Material(MaterialModel::linear, lame, density) {
   tangent_.setZero();
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {

@@ -57,8 +57,7 @@ std::unique_ptr<Material> make_material(MaterialModel model, double youngs_modul
   if (!(std::isfinite(density) && density >= 0.0)) {
     char buffer[32];
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, density);
-    throw InputError("material: density: expected a finite number >= 0, got " +
-                     std::string(buffer, result.ptr));
+    throw InputError("material: density: expected a finite number >= 0, got " + std::string(buffer, result.ptr));
   }
   switch (model) {
     case MaterialModel::linear: return std::make_unique<LinearElastic>(lame, density);

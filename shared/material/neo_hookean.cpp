@@ -44,8 +44,8 @@ void NeoHookean::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, M
   const Eigen::Matrix3d cof = cofactor(F);
   const Eigen::Map<const Eigen::Matrix<double, 9, 1>> vec_cof(cof.data());
   P = mu * F + stress_scale * cof;
-  dPdF = ((lambda * (1.0 - log_J) + mu) / (J * J)) * vec_cof * vec_cof.transpose() +
-         stress_scale * determinant_hessian(F);
+  dPdF =
+      ((lambda * (1.0 - log_J) + mu) / (J * J)) * vec_cof * vec_cof.transpose() + stress_scale * determinant_hessian(F);
   dPdF.diagonal().array() += mu;
   infinite_unless_finite(P, dPdF);
 }

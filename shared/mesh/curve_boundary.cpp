@@ -7,8 +7,8 @@
 
 #include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
-#include "shared/quadrature/reference_rules.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem {
 

@@ -76,7 +76,8 @@ public:
     // A node closer to the blade than this is taken on it, so no piece is thinner
     // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
     // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
-    const double snap_distance = snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+    const double snap_distance =
+        snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
     const Eigen::Vector3d unit_normal = blade_.normal.normalized();
     side_.resize(nodes_.size());
     for (std::size_t n = 0; n < nodes_.size(); ++n) {
@@ -112,7 +113,8 @@ private:
     first_piece_.resize(cells);
     for (int cell = 0; cell < cells; ++cell) {
       std::vector<int> cell_nodes;
-      for (const int face : mesh_.cell_faces[cell]) cell_nodes.insert(cell_nodes.end(), mesh_.faces[face].begin(), mesh_.faces[face].end());
+      for (const int face : mesh_.cell_faces[cell])
+        cell_nodes.insert(cell_nodes.end(), mesh_.faces[face].begin(), mesh_.faces[face].end());
       std::sort(cell_nodes.begin(), cell_nodes.end());
       cell_nodes.erase(std::unique(cell_nodes.begin(), cell_nodes.end()), cell_nodes.end());
       bool positive = false, negative = false;
@@ -267,7 +269,8 @@ private:
     PolyhedralCut cut;
     PolyhedralMesh& result = cut.mesh;
     result.nodes.resize(static_cast<Eigen::Index>(nodes_.size()), 3);
-    for (std::size_t node = 0; node < nodes_.size(); ++node) result.nodes.row(static_cast<Eigen::Index>(node)) = nodes_[node];
+    for (std::size_t node = 0; node < nodes_.size(); ++node)
+      result.nodes.row(static_cast<Eigen::Index>(node)) = nodes_[node];
     result.face_cells.resize(static_cast<Eigen::Index>(faces_.size()), 2);
     result.cell_faces.resize(parent_.size());
     for (std::size_t f = 0; f < faces_.size(); ++f) {

@@ -25,13 +25,13 @@ struct NodeSource {
 };
 
 struct PolyhedralCut {
-  PolyhedralMesh mesh;           ///< the cut mesh, its geometry computed
-  std::vector<int> parent_cell;  ///< #cells of `mesh`: the cell of the input it lies in
+  PolyhedralMesh mesh;                   ///< the cut mesh, its geometry computed
+  std::vector<int> parent_cell;          ///< #cells of `mesh`: the cell of the input it lies in
   std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
-  int crossed_cells = 0;         ///< input cells split into two pieces
-  int separated_faces = 0;       ///< interior input faces in the plane, now two boundary faces
-  int duplicated_nodes = 0;      ///< nodes on the plane given a copy for the negative side
-  int snapped_nodes = 0;         ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
+  int crossed_cells = 0;                 ///< input cells split into two pieces
+  int separated_faces = 0;               ///< interior input faces in the plane, now two boundary faces
+  int duplicated_nodes = 0;              ///< nodes on the plane given a copy for the negative side
+  int snapped_nodes = 0;                 ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
 };
 
 /// Cuts `mesh` by `plane`. A crossed cell must be convex (each of its nodes on or behind

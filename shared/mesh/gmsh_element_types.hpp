@@ -10,10 +10,10 @@
 namespace altfem {
 
 struct GmshElementType {
-  int number;              ///< Gmsh's element type number, e.g. 4 for a 4-node tetrahedron
-  int nodes;               ///< nodes per element
-  int dimension;           ///< 0 point, 1 line, 2 surface, 3 volume
-  std::string_view name;   ///< Gmsh's description, for messages
+  int number;                              ///< Gmsh's element type number, e.g. 4 for a 4-node tetrahedron
+  int nodes;                               ///< nodes per element
+  int dimension;                           ///< 0 point, 1 line, 2 surface, 3 volume
+  std::string_view name;                   ///< Gmsh's description, for messages
   std::optional<ElementType> altfem_type;  ///< nullopt: altfem does not read this cell
 };
 

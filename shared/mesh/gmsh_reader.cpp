@@ -48,20 +48,18 @@ public:
     if (!nodes_read_) tokens_.fail("the file has no $Nodes section");
     if (!elements_read_) tokens_.fail("the file has no $Elements section");
     if (!type_)
-      tokens_.fail("$Elements has no volume cells of a type altfem reads (4-node or 10-node tetrahedron; "
-                   "8-, 20- or 27-node hexahedron)");
+      tokens_.fail(
+          "$Elements has no volume cells of a type altfem reads (4-node or 10-node tetrahedron; "
+          "8-, 20- or 27-node hexahedron)");
     return compact_mesh();
   }
 
 private:
   void read_format() {
     const std::string_view version = tokens_.next("the MSH version");
-    if (version == "4.1")
-      version_ = 4;
-    else if (version == "2.2" || version == "2.1" || version == "2.0" || version == "2")
-      version_ = 2;
-    else
-      tokens_.fail("MSH version " + quoted_token(version) + " is not supported, expected 2.2 or 4.1");
+    if (version == "4.1") version_ = 4;
+    else if (version == "2.2" || version == "2.1" || version == "2.0" || version == "2") version_ = 2;
+    else tokens_.fail("MSH version " + quoted_token(version) + " is not supported, expected 2.2 or 4.1");
     if (tokens_.next_integer("the file type (0 for ASCII)", 0, 1) == 1)
       tokens_.fail("binary MSH is not supported, save the mesh as ASCII (gmsh -format msh41 without -bin)");
     tokens_.next_integer("the data size", 1, 16);
@@ -136,7 +134,8 @@ private:
       read += in_block;
     }
     if (read != count)
-      tokens_.fail("wrong count: " + std::to_string(count) + " nodes declared, the blocks hold " + std::to_string(read));
+      tokens_.fail("wrong count: " + std::to_string(count) + " nodes declared, the blocks hold " +
+                   std::to_string(read));
     expect_section_end("$EndNodes", "node blocks", blocks);
   }
 
@@ -197,8 +196,7 @@ private:
       const GmshElementType& type = element_type(tokens_.next_integer("an element type", 0, largest_tag));
       const long long in_block = tokens_.next_integer("the number of elements in the block", 0, largest_count);
       if (read + in_block > count)
-        tokens_.fail("wrong count: element blocks hold more than the " + std::to_string(count) +
-                     " elements declared");
+        tokens_.fail("wrong count: element blocks hold more than the " + std::to_string(count) + " elements declared");
       for (long long i = 0; i < in_block; ++i) {
         check_not_section_end("elements", count, read + i);
         read_element(type, tokens_.next_integer("an element tag", 1, largest_tag));
@@ -227,7 +225,8 @@ private:
     const int per_cell = element_node_count(*type_);
     mesh.cells.resize(static_cast<Eigen::Index>(cells_.size()) / per_cell, per_cell);
     for (std::size_t i = 0; i < cells_.size(); ++i)
-      mesh.cells(static_cast<Eigen::Index>(i) / per_cell, static_cast<Eigen::Index>(i) % per_cell) = new_index[cells_[i]];
+      mesh.cells(static_cast<Eigen::Index>(i) / per_cell, static_cast<Eigen::Index>(i) % per_cell) =
+          new_index[cells_[i]];
     return mesh;
   }
 

@@ -80,7 +80,8 @@ GridFaceRegion grid_face_region(const GridFaceView& face, const std::vector<std:
   for (std::size_t s = 0; s < segments.size(); ++s) {
     if (!leaving.emplace(segments[s][0], static_cast<int>(s)).second ||
         !arriving.emplace(segments[s][1], static_cast<int>(s)).second)
-      throw NumericalError("slicing: " + face.name + ": the surface touches itself on this face (non-manifold crossing)");
+      throw NumericalError("slicing: " + face.name +
+                           ": the surface touches itself on this face (non-manifold crossing)");
   }
   std::vector<bool> used(segments.size(), false);
   auto follow = [&](int first) {
@@ -151,7 +152,8 @@ GridFaceRegion grid_face_region(const GridFaceView& face, const std::vector<std:
   // Closed crossings inside the face: islands (turning like the face) are loops of their
   // own, holes lie in a loop; a face crossed only by holes is inside around them.
   const double face_turn = signed_area({face.corners.begin(), face.corners.end()}, points, face.axis);
-  for (auto& loop : closed) (signed_area(loop, points, face.axis) * face_turn > 0 ? region.loops : region.holes).push_back(loop);
+  for (auto& loop : closed)
+    (signed_area(loop, points, face.axis) * face_turn > 0 ? region.loops : region.holes).push_back(loop);
   if (region.loops.empty() && !region.holes.empty()) region.loops.push_back({face.corners.begin(), face.corners.end()});
   return region;
 }
@@ -164,7 +166,9 @@ namespace {
 
 /// The face's in-plane coordinates (u, v) = (x_(axis+1), x_(axis+2)): counter-clockwise
 /// about +e_axis is counter-clockwise in (u, v).
-Eigen::Vector2d in_plane(const Eigen::Vector3d& point, int axis) { return {point((axis + 1) % 3), point((axis + 2) % 3)}; }
+Eigen::Vector2d in_plane(const Eigen::Vector3d& point, int axis) {
+  return {point((axis + 1) % 3), point((axis + 2) % 3)};
+}
 
 bool inside_polygon(const Eigen::Vector2d& point, const std::vector<Eigen::Vector2d>& polygon) {
   bool inside = false;
@@ -218,7 +222,8 @@ int bridge_target(const Eigen::Vector2d& from, double direction, const std::vect
     const Eigen::Vector2d p = mirrored(outer[i]);
     if (static_cast<int>(i) == target || p.x() <= origin.x()) continue;
     // Strictly inside the triangle (origin, hit, end): the bridge to `end` would cross near it.
-    const double s1 = cross(hit - origin, p - origin), s2 = cross(end - hit, p - hit), s3 = cross(origin - end, p - end);
+    const double s1 = cross(hit - origin, p - origin), s2 = cross(end - hit, p - hit),
+                 s3 = cross(origin - end, p - end);
     const bool inside = turn > 0 ? (s1 > 0 && s2 > 0 && s3 > 0) : (s1 < 0 && s2 < 0 && s3 < 0);
     if (!inside) continue;
     const double angle = std::abs(std::atan2(p.y() - origin.y(), p.x() - origin.x()));
@@ -229,7 +234,8 @@ int bridge_target(const Eigen::Vector2d& from, double direction, const std::vect
 
 }  // namespace
 
-std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer, const std::vector<std::vector<int>>& holes,
+std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer,
+                                          const std::vector<std::vector<int>>& holes,
                                           const std::vector<Eigen::Vector3d>& points, int axis,
                                           const std::string& face_name) {
   auto planar = [&](const std::vector<int>& loop) {

@@ -43,7 +43,8 @@ GridFaceRegion grid_face_region(const GridFaceView& face, const std::vector<std:
 /// vertex they see (Eberly's hole bridging) — which cut the ring into two simple polygons
 /// that share the bridges. Throws NumericalError naming `face_name` when a bridge would
 /// meet another hole first.
-std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer, const std::vector<std::vector<int>>& holes,
+std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer,
+                                          const std::vector<std::vector<int>>& holes,
                                           const std::vector<Eigen::Vector3d>& points, int axis,
                                           const std::string& face_name);
 

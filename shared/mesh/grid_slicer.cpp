@@ -61,7 +61,8 @@ void GridSlicer::collect_open_edges(const SurfacePieces& pieces) {
           if (p(axis) == plane && q(axis) == plane) candidates.push_back(2 * axis + upper);
         }
       if (candidates.empty() || std::abs(count) != 1)
-        throw NumericalError("slicing: grid cell " + std::to_string(cell) + ": the surface pieces do not close (open or non-manifold surface)");
+        throw NumericalError("slicing: grid cell " + std::to_string(cell) +
+                             ": the surface pieces do not close (open or non-manifold surface)");
       int chosen = candidates[0];
       if (candidates.size() == 2) {
         // On a cell edge: the face whose rectangle lies to the left of the segment.
@@ -129,10 +130,8 @@ void GridSlicer::compute_face_regions() {
         Loops loops = region.holes.empty()
                           ? std::move(region.loops)
                           : split_holes(std::move(region.loops), region.holes, nodes_.points(), axis, face_name(face));
-        if (undetermined)
-          undetermined_faces.push_back({face, lower_cut && upper_cut, lower_cut ? -1.0 : 1.0});
-        else
-          check_next_to_inside_cell(face, loops, lower_cut ? above : lower, lower_cut && upper_cut);
+        if (undetermined) undetermined_faces.push_back({face, lower_cut && upper_cut, lower_cut ? -1.0 : 1.0});
+        else check_next_to_inside_cell(face, loops, lower_cut ? above : lower, lower_cut && upper_cut);
         regions_.emplace(key, std::move(loops));
       }
   }
@@ -152,8 +151,9 @@ void GridSlicer::decide_undetermined_faces(const std::vector<UndeterminedFace>& 
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (sides[f] != SurfaceSide::on_surface) continue;
     if (faces[f].both_cut)
-      throw NumericalError("slicing: " + face_name(faces[f].face) +
-                           ": the surface lies in this grid plane between two cut cells; change the resolution or the margin");
+      throw NumericalError(
+          "slicing: " + face_name(faces[f].face) +
+          ": the surface lies in this grid plane between two cut cells; change the resolution or the margin");
     in_plane.push_back(f);
   }
   Eigen::MatrixXd probes(in_plane.size(), 3);

@@ -52,7 +52,8 @@ private:
   }
   long long face_key(const GridFace& face) const {
     const Eigen::Vector3i nodes = grid_.cells.array() + 1;
-    return face.axis + 3LL * (face.node(0) + nodes(0) * (face.node(1) + static_cast<long long>(nodes(1)) * face.node(2)));
+    return face.axis +
+           3LL * (face.node(0) + nodes(0) * (face.node(1) + static_cast<long long>(nodes(1)) * face.node(2)));
   }
   int lower_cell(const GridFace& face) const {
     Eigen::Vector3i cell = face.node;
@@ -61,9 +62,10 @@ private:
   }
   int upper_cell(const GridFace& face) const { return cell_at(face.node); }
   std::string face_name(const GridFace& face) const {
-    return std::string("grid face ") + "xyz"[face.axis] + " = " + std::to_string(grid_.planes[face.axis][face.node(face.axis)]) +
-           " at grid node (" + std::to_string(face.node(0)) + ", " + std::to_string(face.node(1)) + ", " +
-           std::to_string(face.node(2)) + ")";
+    return std::string("grid face ") + "xyz"[face.axis] + " = " +
+           std::to_string(grid_.planes[face.axis][face.node(face.axis)]) + " at grid node (" +
+           std::to_string(face.node(0)) + ", " + std::to_string(face.node(1)) + ", " + std::to_string(face.node(2)) +
+           ")";
   }
   /// The node at a grid point, registered on first use (cached: faces ask for corners often).
   int grid_node(const Eigen::Vector3i& node) {

@@ -22,10 +22,21 @@ struct MeditKeyword {
 
 // Sections altfem skips: lower-dimensional entities and geometric attributes.
 constexpr std::array<MeditKeyword, 15> skipped_keywords{{
-    {"Edges", 3},           {"Triangles", 4},         {"Quadrilaterals", 5},  {"Corners", 1},
-    {"Ridges", 1},          {"RequiredVertices", 1},  {"RequiredEdges", 1},   {"RequiredTriangles", 1},
-    {"Normals", 3},         {"NormalAtVertices", 2},  {"Tangents", 3},        {"TangentAtEdges", 3},
-    {"EdgesP2", 4},         {"TrianglesP2", 7},       {"QuadrilateralsQ2", 10},
+    {"Edges", 3},
+    {"Triangles", 4},
+    {"Quadrilaterals", 5},
+    {"Corners", 1},
+    {"Ridges", 1},
+    {"RequiredVertices", 1},
+    {"RequiredEdges", 1},
+    {"RequiredTriangles", 1},
+    {"Normals", 3},
+    {"NormalAtVertices", 2},
+    {"Tangents", 3},
+    {"TangentAtEdges", 3},
+    {"EdgesP2", 4},
+    {"TrianglesP2", 7},
+    {"QuadrilateralsQ2", 10},
 }};
 
 constexpr long long largest_count = INT_MAX;

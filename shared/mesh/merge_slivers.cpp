@@ -64,8 +64,7 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
     if (mesh.cell_kinds[cell] == PolyhedralCellKind::cut && mesh.cell_volumes(cell) < minimum_volume)
       slivers.push_back(cell);
   if (slivers.empty()) return 0;
-  std::sort(slivers.begin(), slivers.end(),
-            [&](int a, int b) { return mesh.cell_volumes(a) < mesh.cell_volumes(b); });
+  std::sort(slivers.begin(), slivers.end(), [&](int a, int b) { return mesh.cell_volumes(a) < mesh.cell_volumes(b); });
 
   DisjointSets groups(cell_count);
   std::vector<double> group_volume(mesh.cell_volumes.data(), mesh.cell_volumes.data() + cell_count);

@@ -50,11 +50,13 @@ int surface_solid_components(const SurfaceMesh& surface) {
   // Each shell's enclosed volume by the divergence theorem (surface_volume's sum).
   std::unordered_map<int, double> shell_volume;
   for (int t = 0; t < triangles; ++t) {
-    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)), b = surface.vertices.row(surface.triangles(t, 1)),
+    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)),
+                          b = surface.vertices.row(surface.triangles(t, 1)),
                           c = surface.vertices.row(surface.triangles(t, 2));
     shell_volume[sets.find(t)] += a.dot(b.cross(c)) / 6.0;
   }
-  return static_cast<int>(std::count_if(shell_volume.begin(), shell_volume.end(), [](const auto& shell) { return shell.second > 0; }));
+  return static_cast<int>(
+      std::count_if(shell_volume.begin(), shell_volume.end(), [](const auto& shell) { return shell.second > 0; }));
 }
 
 int shape_components(const AnalyticShape& shape, double spacing) {
@@ -69,7 +71,8 @@ int shape_components(const AnalyticShape& shape, double spacing) {
     for (int j = 0; j < n.y(); ++j)
       for (int i = 0; i < n.x(); ++i) {
         const Eigen::Vector3d centre =
-            box.min() + box.sizes().cwiseProduct(Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5)).cwiseQuotient(n.cast<double>());
+            box.min() +
+            box.sizes().cwiseProduct(Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5)).cwiseQuotient(n.cast<double>());
         inside[index(i, j, k)] = shape.level_set(centre) < 0;
       }
   DisjointSets sets(count);

@@ -30,14 +30,16 @@ public:
   /// Whether every cell of [low, high) is inside the grid and filled.
   bool all_filled(const Eigen::Vector3i& low, const Eigen::Vector3i& high) const {
     if ((low.array() < 0).any() || (high.array() > cells_.array()).any()) return false;
-    const long long count = at(high(0), high(1), high(2)) - at(low(0), high(1), high(2)) - at(high(0), low(1), high(2)) -
-                            at(high(0), high(1), low(2)) + at(low(0), low(1), high(2)) + at(low(0), high(1), low(2)) +
-                            at(high(0), low(1), low(2)) - at(low(0), low(1), low(2));
+    const long long count = at(high(0), high(1), high(2)) - at(low(0), high(1), high(2)) -
+                            at(high(0), low(1), high(2)) - at(high(0), high(1), low(2)) + at(low(0), low(1), high(2)) +
+                            at(low(0), high(1), low(2)) + at(high(0), low(1), low(2)) - at(low(0), low(1), low(2));
     return count == static_cast<long long>((high - low).prod());
   }
 
 private:
-  long long& at(int i, int j, int k) { return sums_[i + (cells_(0) + 1) * (j + (cells_(1) + 1) * static_cast<std::size_t>(k))]; }
+  long long& at(int i, int j, int k) {
+    return sums_[i + (cells_(0) + 1) * (j + (cells_(1) + 1) * static_cast<std::size_t>(k))];
+  }
   long long at(int i, int j, int k) const {
     return sums_[i + (cells_(0) + 1) * (j + (cells_(1) + 1) * static_cast<std::size_t>(k))];
   }

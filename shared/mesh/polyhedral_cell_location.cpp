@@ -56,7 +56,8 @@ double cell_winding_number(const PolyhedralMesh& mesh, int cell, const Eigen::Ve
 double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x) {
   double distance = std::numeric_limits<double>::infinity();
   for (int face : mesh.cell_faces[cell])
-    distance = std::min(distance, distance_to_polygon(mesh.nodes, mesh.faces[face], mesh.face_normals.row(face).transpose(), x));
+    distance = std::min(distance,
+                        distance_to_polygon(mesh.nodes, mesh.faces[face], mesh.face_normals.row(face).transpose(), x));
   return distance;
 }
 

@@ -38,7 +38,7 @@ PolyhedralMesh polyhedral_mesh_from_volume_mesh(const VolumeMesh& volume_mesh) {
   const int faces_per_cell = shape == ElementShape::tetrahedron ? 4 : 6;
   mesh.cell_faces.assign(cell_count, {});
   mesh.cell_kinds.assign(cell_count, shape == ElementShape::tetrahedron ? PolyhedralCellKind::tetrahedron
-                                                                          : PolyhedralCellKind::hexahedron);
+                                                                        : PolyhedralCellKind::hexahedron);
   std::vector<std::array<int, 2>> face_cells;
   // A face is identified by its sorted node set; the second cell to see it joins it.
   std::map<std::vector<int>, int> face_of_nodes;

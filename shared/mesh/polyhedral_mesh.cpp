@@ -68,8 +68,8 @@ void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
     const Eigen::VectorXd moments = planar_polygon_moments(polygon, 1);
     mesh.face_areas(face) = area;
     mesh.face_normals.row(face) = area > 0 ? Eigen::Vector3d(area_vector / area) : Eigen::Vector3d::Zero();
-    mesh.face_centroids.row(face) =
-        area > 0 ? Eigen::Vector3d(moments(x), moments(y), moments(z)) / moments(0) : Eigen::Vector3d(polygon.colwise().mean());
+    mesh.face_centroids.row(face) = area > 0 ? Eigen::Vector3d(moments(x), moments(y), moments(z)) / moments(0)
+                                             : Eigen::Vector3d(polygon.colwise().mean());
   }
 
   const int cell_count = mesh.cell_count();

@@ -19,7 +19,8 @@ void check_options(const SlicingOptions& options) {
   if (!(options.margin_cells >= 0)) throw InputError("slicing: margin must be >= 0 cells");
   if (!(options.sliver_fraction >= 0 && options.sliver_fraction < 1))
     throw InputError("slicing: sliver fraction must be in [0, 1)");
-  if (options.octree_levels < 0 || options.octree_levels > 10) throw InputError("slicing: octree levels must be in 0..10");
+  if (options.octree_levels < 0 || options.octree_levels > 10)
+    throw InputError("slicing: octree levels must be in 0..10");
 }
 
 double cell_size_for(const SlicingOptions& options, const Eigen::Vector3d& lower, const Eigen::Vector3d& upper) {
@@ -32,11 +33,13 @@ SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions
   check_options(options);
   if (surface.triangles.rows() == 0) throw InputError("slicing: the surface has no triangles");
   const Eigen::Vector3d lower = surface.vertices.colwise().minCoeff(), upper = surface.vertices.colwise().maxCoeff();
-  const SlicingGrid grid = SlicingGrid::covering(lower, upper, cell_size_for(options, lower, upper), options.margin_cells);
+  const SlicingGrid grid =
+      SlicingGrid::covering(lower, upper, cell_size_for(options, lower, upper), options.margin_cells);
   GridSlicer slicer(surface, grid);
   SlicedMesh result = slicer.run();
   if (options.octree_levels > 0)
-    result.coarse_cells = grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
+    result.coarse_cells =
+        grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
   compute_polyhedral_geometry(result.mesh);
   if (options.sliver_fraction > 0)
     result.merged_slivers = merge_slivers(result.mesh, options.sliver_fraction * std::pow(grid.cell_size, 3));

@@ -14,9 +14,9 @@
 namespace altfem {
 
 struct SlicingOptions {
-  int resolution = 16;       ///< cells along the bounding box's longest side (when cell_size is 0)
-  double cell_size = 0.0;    ///< edge of the cubic grid cells; > 0 overrides resolution
-  double margin_cells = 0.5; ///< the grid covers the bounding box enlarged by this many cells per side (>= 0)
+  int resolution = 16;        ///< cells along the bounding box's longest side (when cell_size is 0)
+  double cell_size = 0.0;     ///< edge of the cubic grid cells; > 0 overrides resolution
+  double margin_cells = 0.5;  ///< the grid covers the bounding box enlarged by this many cells per side (>= 0)
   /// A cut piece whose volume is below this fraction of a full cell is merged into the
   /// neighbour it shares its largest face with; 0 keeps every piece.
   double sliver_fraction = 1e-3;
@@ -29,11 +29,11 @@ struct SlicedMesh {
   PolyhedralMesh mesh;
   Eigen::Vector3i grid_cells = Eigen::Vector3i::Zero();
   double cell_size = 0.0;
-  int hexahedra = 0;          ///< grid cells wholly inside
-  int cut_pieces = 0;         ///< connected pieces of cut grid cells, before merging
-  int split_grid_cells = 0;   ///< cut grid cells with more than one piece
-  int merged_slivers = 0;     ///< pieces merged into a neighbour
-  int coarse_cells = 0;       ///< octree cells of more than one grid cell
+  int hexahedra = 0;         ///< grid cells wholly inside
+  int cut_pieces = 0;        ///< connected pieces of cut grid cells, before merging
+  int split_grid_cells = 0;  ///< cut grid cells with more than one piece
+  int merged_slivers = 0;    ///< pieces merged into a neighbour
+  int coarse_cells = 0;      ///< octree cells of more than one grid cell
 };
 
 /// Slices the closed, outward-oriented surface. Throws InputError for bad options and

@@ -65,7 +65,8 @@ void snap_to_planes(Eigen::Vector3d& point, const SlicingGrid& grid) {
     double& value = point(axis);
     const int slab = grid.slab(axis, value);
     for (int plane = slab; plane <= slab + 1; ++plane)
-      if (std::abs(value - grid.planes[axis][plane]) <= snap_fraction * grid.cell_size) value = grid.planes[axis][plane];
+      if (std::abs(value - grid.planes[axis][plane]) <= snap_fraction * grid.cell_size)
+        value = grid.planes[axis][plane];
   }
 }
 
@@ -138,8 +139,7 @@ SurfacePieces split_surface_by_grid(const SurfaceMesh& surface, const SlicingGri
   Polygon below, above;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
     current.assign(1, CellPolygon{{}, Eigen::Vector3i::Zero()});
-    for (int corner = 0; corner < 3; ++corner)
-      current[0].polygon.push_back(vertices[surface.triangles(t, corner)]);
+    for (int corner = 0; corner < 3; ++corner) current[0].polygon.push_back(vertices[surface.triangles(t, corner)]);
     for (int axis = 0; axis < 3; ++axis) {
       next.clear();
       for (CellPolygon& piece : current) {

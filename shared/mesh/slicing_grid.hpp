@@ -67,8 +67,9 @@ private:
 
 /// The surface's pieces in the grid cells.
 struct SurfacePieces {
-  std::vector<std::vector<int>> polygons;  ///< node loops (NodeRegistry), counter-clockwise seen from outside the object
-  std::vector<int> cells;                  ///< #polygons: the grid cell (SlicingGrid::cell_index) holding each
+  std::vector<std::vector<int>>
+      polygons;            ///< node loops (NodeRegistry), counter-clockwise seen from outside the object
+  std::vector<int> cells;  ///< #polygons: the grid cell (SlicingGrid::cell_index) holding each
 };
 
 /// Splits every triangle by the grid planes it crosses (Sutherland–Hodgman along x, then

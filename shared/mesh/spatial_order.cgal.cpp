@@ -40,7 +40,8 @@ VolumeMesh spatially_ordered(const VolumeMesh& mesh) {
   ordered.cells.resize(cell_count, nodes_per_cell);
   for (Eigen::Index position = 0; position < cell_count; ++position)
     for (Eigen::Index k = 0; k < nodes_per_cell; ++k) {
-      int& index = new_index[static_cast<std::size_t>(mesh.cells(static_cast<Eigen::Index>(cell_order[static_cast<std::size_t>(position)]), k))];
+      int& index = new_index[static_cast<std::size_t>(
+          mesh.cells(static_cast<Eigen::Index>(cell_order[static_cast<std::size_t>(position)]), k))];
       if (index < 0) index = next++;
       ordered.cells(position, k) = index;
     }

@@ -31,9 +31,9 @@ VolumeMesh linear_grid(const AxisPlanes& coordinates, bool tetrahedra) {
     for (int j = 0; j < n.y(); ++j)
       for (int i = 0; i < n.x(); ++i) {
         // VTK hexahedron corner order.
-        const std::array<int, 8> corner{index(i, j, k),         index(i + 1, j, k),     index(i + 1, j + 1, k),
-                                        index(i, j + 1, k),     index(i, j, k + 1),     index(i + 1, j, k + 1),
-                                        index(i + 1, j + 1, k + 1), index(i, j + 1, k + 1)};
+        const std::array<int, 8> corner{
+            index(i, j, k),     index(i + 1, j, k),     index(i + 1, j + 1, k),     index(i, j + 1, k),
+            index(i, j, k + 1), index(i + 1, j, k + 1), index(i + 1, j + 1, k + 1), index(i, j + 1, k + 1)};
         if (!tetrahedra) {
           for (int c = 0; c < 8; ++c) mesh.cells(cell, c) = corner[c];
           ++cell;

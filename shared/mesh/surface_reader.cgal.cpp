@@ -83,8 +83,9 @@ private:
   Mesh to_mesh() {
     if (!PMP::is_polygon_soup_a_polygon_mesh(polygons_)) {
       if (!PMP::orient_polygon_soup(points_, polygons_))
-        fail("the surface is not manifold (an edge shared by more than two faces, or a vertex joining separate "
-             "sheets)");
+        fail(
+            "the surface is not manifold (an edge shared by more than two faces, or a vertex joining separate "
+            "sheets)");
       warn("face orientations were inconsistent and have been made consistent");
     }
     Mesh mesh;

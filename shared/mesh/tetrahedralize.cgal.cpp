@@ -75,7 +75,8 @@ VolumeMesh tetrahedralize_surface(const SurfaceMesh& surface, double max_cell_si
   CgalSurface cgal_surface;
   std::vector<CgalSurface::Vertex_index> vertices;
   for (Eigen::Index v = 0; v < surface.vertices.rows(); ++v)
-    vertices.push_back(cgal_surface.add_vertex(Point(surface.vertices(v, 0), surface.vertices(v, 1), surface.vertices(v, 2))));
+    vertices.push_back(
+        cgal_surface.add_vertex(Point(surface.vertices(v, 0), surface.vertices(v, 1), surface.vertices(v, 2))));
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
     cgal_surface.add_face(vertices[surface.triangles(t, 0)], vertices[surface.triangles(t, 1)],
                           vertices[surface.triangles(t, 2)]);

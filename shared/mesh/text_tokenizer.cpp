@@ -80,7 +80,8 @@ double TextTokenizer::next_real(std::string_view what) {
   if (digits.size() > 1 && digits[0] == '+' && digits[1] != '-') digits.remove_prefix(1);
   double value = 0;
   const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-  if (error == std::errc::result_out_of_range) fail(std::string(what) + " is out of the range of double: " + quoted_token(token));
+  if (error == std::errc::result_out_of_range)
+    fail(std::string(what) + " is out of the range of double: " + quoted_token(token));
   if (error != std::errc() || end != digits.data() + digits.size()) fail_expected(what, token);
   if (!std::isfinite(value)) fail(std::string(what) + " is not finite, got " + quoted_token(token));
   return value;

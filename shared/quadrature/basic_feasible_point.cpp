@@ -26,8 +26,8 @@ std::optional<Eigen::VectorXd> basic_feasible_point(const Eigen::Ref<const Eigen
 
   ClpSimplex simplex;
   simplex.setLogLevel(0);
-  simplex.loadProblem(columns, rows, starts.data(), row_indices.data(), values.data(), lower.data(),
-                      upper.data(), objective.data(), rhs.data(), rhs.data());
+  simplex.loadProblem(columns, rows, starts.data(), row_indices.data(), values.data(), lower.data(), upper.data(),
+                      objective.data(), rhs.data(), rhs.data());
   // Tighter than Clp's default 1e-7: the weights must reproduce the moments to rounding.
   simplex.setPrimalTolerance(1e-12);
   simplex.primal();

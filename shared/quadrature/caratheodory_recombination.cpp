@@ -66,8 +66,7 @@ void eliminate(const Eigen::Ref<const Eigen::MatrixXd>& C, Eigen::VectorXd& lamb
 }  // namespace
 
 Eigen::VectorXd caratheodory_recombination(const Eigen::Ref<const Eigen::MatrixXd>& columns,
-                                           const Eigen::Ref<const Eigen::VectorXd>& weights,
-                                           Eigen::Index target_size) {
+                                           const Eigen::Ref<const Eigen::VectorXd>& weights, Eigen::Index target_size) {
   const Eigen::Index rows = columns.rows();
   Eigen::VectorXd result = weights;
   std::vector<Eigen::Index> active;
@@ -85,7 +84,8 @@ Eigen::VectorXd caratheodory_recombination(const Eigen::Ref<const Eigen::MatrixX
     const auto begin = [&](Eigen::Index g) { return g * n / groups; };
     group_sums.setZero();
     for (Eigen::Index g = 0; g < groups; ++g) {
-      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i) group_sums.col(g) += result(active[i]) * columns.col(active[i]);
+      for (Eigen::Index i = begin(g); i < begin(g + 1); ++i)
+        group_sums.col(g) += result(active[i]) * columns.col(active[i]);
     }
     group_weights.resize(groups);
     group_weights.setOnes();

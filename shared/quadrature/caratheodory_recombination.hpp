@@ -18,7 +18,6 @@ namespace altfem {
 /// columns · result = columns · weights up to rounding (relative ≈ 1e-15 per round).
 /// Stops early, above target_size, when the group sums are linearly independent.
 Eigen::VectorXd caratheodory_recombination(const Eigen::Ref<const Eigen::MatrixXd>& columns,
-                                           const Eigen::Ref<const Eigen::VectorXd>& weights,
-                                           Eigen::Index target_size);
+                                           const Eigen::Ref<const Eigen::VectorXd>& weights, Eigen::Index target_size);
 
 }  // namespace altfem

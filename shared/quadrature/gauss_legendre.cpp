@@ -21,8 +21,7 @@ JacobiRecurrence jacobi_recurrence(int n, double alpha, double beta) {
   const double s = alpha + beta;
   JacobiRecurrence r{Eigen::VectorXd(n), Eigen::VectorXd(n + 1)};
   r.a(0) = (beta - alpha) / (s + 2.0);
-  for (int k = 1; k < n; ++k)
-    r.a(k) = (beta * beta - alpha * alpha) / ((2.0 * k + s) * (2.0 * k + s + 2.0));
+  for (int k = 1; k < n; ++k) r.a(k) = (beta * beta - alpha * alpha) / ((2.0 * k + s) * (2.0 * k + s + 2.0));
   r.b(0) = std::exp2(s + 1.0) * std::tgamma(alpha + 1.0) * std::tgamma(beta + 1.0) / std::tgamma(s + 2.0);
   if (n >= 1) r.b(1) = 4.0 * (1.0 + alpha) * (1.0 + beta) / ((2.0 + s) * (2.0 + s) * (3.0 + s));
   for (int k = 2; k <= n; ++k) {

@@ -18,7 +18,8 @@ std::optional<Eigen::Vector3d> polyhedron_kernel_point(const Polyhedron& polyhed
   for (int f = 0; f < rows; ++f) {
     const auto& face = polyhedron.faces[f];
     Eigen::MatrixXd polygon(static_cast<Eigen::Index>(face.size()), 3);
-    for (size_t k = 0; k < face.size(); ++k) polygon.row(static_cast<Eigen::Index>(k)) = polyhedron.vertices.row(face[k]);
+    for (size_t k = 0; k < face.size(); ++k)
+      polygon.row(static_cast<Eigen::Index>(k)) = polyhedron.vertices.row(face[k]);
     const Eigen::Vector3d normal = polygon_area_vector(polygon).normalized();
     // The plane through the face's mean point: the least-squares plane of a slightly warped face.
     upper_rows[f] = normal.dot(polygon.colwise().mean().transpose());

@@ -1,7 +1,7 @@
 #include "shared/quadrature/polyhedron_rule.hpp"
 
-#include <Eigen/LU>
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -10,8 +10,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/geometry/monomial_index.hpp"
+#include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/basic_feasible_point.hpp"
 #include "shared/quadrature/polyhedron_kernel_point.hpp"
 #include "shared/quadrature/reference_rules.hpp"
@@ -26,7 +26,9 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
   for (int k = 0; k < n; ++k)
     normal += Eigen::Vector3d(vertices.row(face[k])).cross(Eigen::Vector3d(vertices.row(face[(k + 1) % n])));
   const auto point = [&](int k) { return Eigen::Vector3d(vertices.row(face[k])); };
-  const auto turns_left = [&](int a, int b, int c) { return (point(b) - point(a)).cross(point(c) - point(b)).dot(normal) > 0; };
+  const auto turns_left = [&](int a, int b, int c) {
+    return (point(b) - point(a)).cross(point(c) - point(b)).dot(normal) > 0;
+  };
   // p inside or on the boundary of triangle (a, b, c): a vertex on the would-be diagonal
   // (an L-shaped face's re-entrant corner) must block the ear too.
   const auto inside = [&](int p, int a, int b, int c) {
@@ -70,7 +72,8 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
       clipped = true;
     }
     if (!clipped) {  // collinear or degenerate remains: fan them (signed, still exact)
-      for (size_t k = 1; k + 1 < remaining.size(); ++k) triangles.push_back({remaining[0], remaining[k], remaining[k + 1]});
+      for (size_t k = 1; k + 1 < remaining.size(); ++k)
+        triangles.push_back({remaining[0], remaining[k], remaining[k + 1]});
       return triangles;
     }
   }
@@ -84,7 +87,8 @@ PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength) {
   for (size_t k = 0; k < face.size(); ++k) face[k] = static_cast<int>(k);
   const auto triangles = triangulate_face(polygon, face);
   const auto per_triangle = triangle.weights.size();
-  PolyhedronRule rule{Eigen::MatrixXd(triangles.size() * per_triangle, 3), Eigen::VectorXd(triangles.size() * per_triangle), true};
+  PolyhedronRule rule{Eigen::MatrixXd(triangles.size() * per_triangle, 3),
+                      Eigen::VectorXd(triangles.size() * per_triangle), true};
   for (size_t t = 0; t < triangles.size(); ++t) {
     const Eigen::Vector3d a = polygon.row(triangles[t][0]).transpose(), b = polygon.row(triangles[t][1]).transpose(),
                           c = polygon.row(triangles[t][2]).transpose();
@@ -209,7 +213,8 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
       cone();
     }
   const auto per_tet = tet.weights.size();
-  PolyhedronRule rule{Eigen::MatrixXd(jacobians.size() * per_tet, 3), Eigen::VectorXd(jacobians.size() * per_tet), true};
+  PolyhedronRule rule{Eigen::MatrixXd(jacobians.size() * per_tet, 3), Eigen::VectorXd(jacobians.size() * per_tet),
+                      true};
   for (size_t t = 0; t < jacobians.size(); ++t) {
     const double determinant = jacobians[t].determinant();  // > 0 when the face is seen from inside
     for (Eigen::Index q = 0; q < per_tet; ++q) {

@@ -20,9 +20,9 @@
 namespace altfem {
 
 struct PolyhedronRule {
-  Eigen::MatrixXd points;  ///< #points × 3, physical
-  Eigen::VectorXd weights; ///< #points, summing to the volume
-  bool positive = true;    ///< every weight > 0
+  Eigen::MatrixXd points;   ///< #points × 3, physical
+  Eigen::VectorXd weights;  ///< #points, summing to the volume
+  bool positive = true;     ///< every weight > 0
 };
 
 /// Triangles (index triples into `face`, in its orientation) of a simple planar polygon
@@ -34,7 +34,8 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
 /// strength; weights positive (they sum to the area).
 PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
 
-/// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid (or the kernel point). Throws std::invalid_argument for a polyhedron without faces.
+/// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid (or the kernel point). Throws
+/// std::invalid_argument for a polyhedron without faces.
 PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
 
 /// polyhedron_rule(polyhedron, strength) with at most C(strength + 3, 3) points: the cone

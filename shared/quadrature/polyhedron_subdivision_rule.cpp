@@ -13,7 +13,8 @@ PolyhedronRule polyhedron_subdivision_rule(const Polyhedron& polyhedron, int str
   if (polyhedron.faces.empty()) throw std::invalid_argument("polyhedron_subdivision_rule: the polyhedron has no face");
   // 2^10 boxes per axis are 10⁹ winding numbers: far beyond any use.
   if (levels < 0 || levels > 10)
-    throw std::invalid_argument("polyhedron_subdivision_rule: levels must be in [0, 10], got " + std::to_string(levels));
+    throw std::invalid_argument("polyhedron_subdivision_rule: levels must be in [0, 10], got " +
+                                std::to_string(levels));
   const QuadratureRule box_rule = tensor_hex_rule(strength);  // on [-1,1]³
   const Eigen::Vector3d low = polyhedron.vertices.colwise().minCoeff().transpose();
   const Eigen::Vector3d high = polyhedron.vertices.colwise().maxCoeff().transpose();

@@ -58,8 +58,9 @@ Eigen::VectorXd solve_weights(SimplificationMethod method, const Eigen::MatrixXd
 
 std::optional<SimplificationMethod> simplifier_from_name(std::string_view name) {
   if (name == "none") return std::nullopt;
-  for (const SimplificationMethod method : {SimplificationMethod::caratheodory, SimplificationMethod::nonnegative_least_squares,
-                                            SimplificationMethod::linear_program})
+  for (const SimplificationMethod method :
+       {SimplificationMethod::caratheodory, SimplificationMethod::nonnegative_least_squares,
+        SimplificationMethod::linear_program})
     if (simplification_method_name(method) == name) return method;
   throw std::invalid_argument("unknown quadrature simplifier '" + std::string(name) + "'");
 }

@@ -36,9 +36,9 @@ struct SimplificationOptions {
 };
 
 struct SimplificationResult {
-  QuadratureRule rule;     ///< the simplified rule, or the original one if not simplified
-  bool simplified = false; ///< false when the input had <= M points, or on failure
-  bool failed = false;     ///< the solver failed or its residual exceeded the tolerance: original kept
+  QuadratureRule rule;      ///< the simplified rule, or the original one if not simplified
+  bool simplified = false;  ///< false when the input had <= M points, or on failure
+  bool failed = false;      ///< the solver failed or its residual exceeded the tolerance: original kept
   /// max_i |Σ_j p_i(x_j) (w_j − w⁰_j)| / Σ_j |w⁰_j| over the scaled Chebyshev basis p_i
   /// (|p_i| <= 1 on the points' box): the relative moment error of the simplified
   /// candidate, reported even when it was rejected (then `rule` is the original);

@@ -57,13 +57,13 @@ std::vector<QuadratureRule> load_rules(ReferenceDomain domain) {
     int strength = 0, point_count = 0;
     if (dash == std::string::npos || !parse_int(std::string_view(stem).substr(0, dash), strength) ||
         !parse_int(std::string_view(stem).substr(dash + 1), point_count) || strength < 0 || point_count < 1)
-      throw InputError(input_message(entry.path().string(), "file name", "expected <strength>-<points>.txt, got " +
-                                                                             entry.path().filename().string()));
+      throw InputError(input_message(entry.path().string(), "file name",
+                                     "expected <strength>-<points>.txt, got " + entry.path().filename().string()));
     QuadratureRule rule = read_quadrature_table(entry.path(), reference_dimension(domain), strength);
     if (rule.weights.size() != point_count)
       throw InputError(input_message(entry.path().string(), "line " + std::to_string(rule.weights.size() + 1),
-                                     "expected " + std::to_string(point_count) +
-                                         " points (from the file name), got " + std::to_string(rule.weights.size())));
+                                     "expected " + std::to_string(point_count) + " points (from the file name), got " +
+                                         std::to_string(rule.weights.size())));
     if (domain == ReferenceDomain::triangle || domain == ReferenceDomain::tetrahedron) map_to_unit_simplex(rule);
     rules.push_back(std::move(rule));
   }
@@ -87,7 +87,8 @@ QuadratureRule read_quadrature_table(const std::filesystem::path& file, int dime
   if (dimension != 2 && dimension != 3)
     throw std::invalid_argument("read_quadrature_table: dimension must be 2 or 3, got " + std::to_string(dimension));
   std::ifstream stream(file);
-  if (!stream) throw InputError(input_message(file.string(), "", "expected a readable quadrature table, cannot open it"));
+  if (!stream)
+    throw InputError(input_message(file.string(), "", "expected a readable quadrature table, cannot open it"));
   std::vector<double> values;  // row-major, dimension + 1 per point
   std::string line;
   for (int line_number = 1; std::getline(stream, line); ++line_number) {
@@ -102,12 +103,13 @@ QuadratureRule read_quadrature_table(const std::filesystem::path& file, int dime
     for (const std::string_view token : tokens) {
       double value = 0;
       if (!parse_double(token, value))
-        throw InputError(input_message(file.string(), where, "expected a finite number, got '" + std::string(token) + "'"));
+        throw InputError(
+            input_message(file.string(), where, "expected a finite number, got '" + std::string(token) + "'"));
       values.push_back(value);
     }
     if (!(values.back() > 0.0))
-      throw InputError(input_message(file.string(), where,
-                                     "expected a positive weight, got " + std::string(tokens.back())));
+      throw InputError(
+          input_message(file.string(), where, "expected a positive weight, got " + std::string(tokens.back())));
   }
   if (values.empty()) throw InputError(input_message(file.string(), "line 1", "expected quadrature points, got none"));
 

@@ -14,8 +14,8 @@
 namespace altfem {
 
 struct MethodSceneBlock {
-  std::string_view name;                    ///< the key under /discretization and the --method name
-  const scene_schema::ObjectRule* rule;     ///< the block's keys, their defaults and ranges
+  std::string_view name;                 ///< the key under /discretization and the --method name
+  const scene_schema::ObjectRule* rule;  ///< the block's keys, their defaults and ranges
   /// Defaults that depend on the rest of the scene (its geometry) and checks across
   /// keys: called with the resolved scene and the block already resolved by `rule`;
   /// may be null.

@@ -42,8 +42,10 @@ std::string syntax_message(std::string_view text, const std::string& file, const
   std::string detail = error.what();
   if (const auto at = detail.find("column "); at != std::string::npos)
     if (const auto colon = detail.find(": ", at); colon != std::string::npos) detail = detail.substr(colon + 2);
-  std::replace_if(detail.begin(), detail.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
-  return input_message(file, line_and_column(text, error.byte > 0 ? error.byte - 1 : 0), "JSON syntax error: " + detail);
+  std::replace_if(
+      detail.begin(), detail.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  return input_message(file, line_and_column(text, error.byte > 0 ? error.byte - 1 : 0),
+                       "JSON syntax error: " + detail);
 }
 
 // nlohmann refuses numbers beyond double range ("number overflow parsing '1e999'")
@@ -125,7 +127,8 @@ RegionSelector region_from_json(const json& region, const std::string& pointer) 
   selector.pointer = pointer;
   if (region.contains("box")) {
     selector.kind = RegionKind::box;
-    selector.box = Eigen::AlignedBox3d(vector3_from_json(region["box"]["min"]), vector3_from_json(region["box"]["max"]));
+    selector.box =
+        Eigen::AlignedBox3d(vector3_from_json(region["box"]["min"]), vector3_from_json(region["box"]["max"]));
   } else if (region.contains("half_space")) {
     selector.kind = RegionKind::half_space;
     selector.point = vector3_from_json(region["half_space"]["point"]);
@@ -192,8 +195,12 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
   scene.geometry = geometry_from_json(resolved["geometry"]);
 
   const auto material_from_json = [](const json& material, const std::string& pointer) {
-    MaterialSpec spec{material["model"].get<std::string>(), material["youngs_modulus"].get<double>(),
-                      material["poisson_ratio"].get<double>(), material["density"].get<double>(), std::nullopt, pointer};
+    MaterialSpec spec{material["model"].get<std::string>(),
+                      material["youngs_modulus"].get<double>(),
+                      material["poisson_ratio"].get<double>(),
+                      material["density"].get<double>(),
+                      std::nullopt,
+                      pointer};
     if (material.contains("region")) spec.region = region_from_json(material["region"], pointer + "/region");
     return spec;
   };
@@ -280,7 +287,8 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& file) { return parse_scene(text, file, {}); }
 
-Scene parse_scene(std::string_view text, const std::filesystem::path& file, const std::vector<SceneOverride>& overrides) {
+Scene parse_scene(std::string_view text, const std::filesystem::path& file,
+                  const std::vector<SceneOverride>& overrides) {
   const std::string name = file.string();
   if (std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); }))
     throw InputError(input_message(name, "line 1, column 1", "expected a JSON object, got an empty file"));
@@ -296,8 +304,9 @@ Scene parse_scene(std::string_view text, const std::filesystem::path& file, cons
     throw InputError(input_message(name, "", std::string("JSON error: ") + error.what()));
   }
   if (!duplicates.duplicate().empty())
-    throw InputError(input_message(name, duplicates.duplicate(), "key repeated in its object (JSON keeps only one; "
-                                                                "write each key once)"));
+    throw InputError(input_message(name, duplicates.duplicate(),
+                                   "key repeated in its object (JSON keeps only one; "
+                                   "write each key once)"));
   apply_scene_overrides(document, overrides, name);
   const std::filesystem::path folder =
       file.has_parent_path() ? std::filesystem::absolute(file).parent_path() : std::filesystem::current_path();

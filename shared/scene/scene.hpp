@@ -48,12 +48,12 @@ struct GeometrySpec {
 /// Which material points a boundary condition acts on (world coordinates).
 struct RegionSelector {
   RegionKind kind = RegionKind::box;
-  Eigen::AlignedBox3d box;                          ///< box kind
-  Eigen::Vector3d point = Eigen::Vector3d::Zero();  ///< half_space: a point on the plane
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();///< half_space: unit; selects (x − point)·normal ≤ 0
-  Eigen::Vector3d centre = Eigen::Vector3d::Zero(); ///< sphere kind
-  double radius = 0.0;                              ///< sphere kind
-  std::string pointer;                              ///< JSON pointer, for error messages
+  Eigen::AlignedBox3d box;                            ///< box kind
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    ///< half_space: a point on the plane
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  ///< half_space: unit; selects (x − point)·normal ≤ 0
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();   ///< sphere kind
+  double radius = 0.0;                                ///< sphere kind
+  std::string pointer;                                ///< JSON pointer, for error messages
 
   bool contains(const Eigen::Vector3d& x, double tolerance) const;
   /// The region's bounding box; unbounded (±infinity) for a half-space.

@@ -75,13 +75,14 @@ void check_events(const Validator& validator, const json& resolved) {
     const std::string name = events[i]["release"].get<std::string>();
     const int condition = condition_named(conditions, name);
     if (condition < 0)
-      validator.fail(pointer + "/release", "no boundary condition is named '" + name + "' (" + known_names(conditions) + ")");
+      validator.fail(pointer + "/release",
+                     "no boundary condition is named '" + name + "' (" + known_names(conditions) + ")");
     const auto [found, inserted] = released_by.emplace(condition, i);
     if (!inserted) {
       const json& other = events[found->second];
       const bool same_time = other["time"] == events[i]["time"];
-      validator.fail(pointer, same_time ? "repeats /events/" + std::to_string(found->second) + " (a release of '" + name +
-                                              "' at the same time)"
+      validator.fail(pointer, same_time ? "repeats /events/" + std::to_string(found->second) + " (a release of '" +
+                                              name + "' at the same time)"
                                         : "releases '" + name + "' again: /events/" + std::to_string(found->second) +
                                               " already released it");
     }

@@ -28,7 +28,9 @@ double cells_volume(const VolumeMesh& mesh) {
   constexpr std::array<std::array<int, 4>, 6> hex_split{
       {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}}};
   const bool hex = element_shape(mesh.element_type) == ElementShape::hexahedron;
-  const auto node = [&](Eigen::Index cell, int local) { return mesh.nodes.row(mesh.cells(cell, local)).transpose().eval(); };
+  const auto node = [&](Eigen::Index cell, int local) {
+    return mesh.nodes.row(mesh.cells(cell, local)).transpose().eval();
+  };
   double volume = 0.0;
   for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell) {
     if (!hex) {
@@ -50,8 +52,8 @@ void transform(Eigen::MatrixXd& points, double scale, const Eigen::Vector3d& tra
 // centre included) of the part of the shape's box the region can reach.
 bool region_meets_shape(const RegionSelector& region, const AnalyticShape& shape, double tolerance) {
   Eigen::AlignedBox3d box = shape.bounding_box();
-  box = box.intersection(Eigen::AlignedBox3d(region.bounds().min().array() - tolerance,
-                                             region.bounds().max().array() + tolerance));
+  box = box.intersection(
+      Eigen::AlignedBox3d(region.bounds().min().array() - tolerance, region.bounds().max().array() + tolerance));
   if (box.isEmpty()) return false;
   constexpr int samples = 17;
   for (int i = 0; i < samples; ++i)
@@ -130,7 +132,8 @@ SceneGeometry load_scene_geometry(const Scene& scene) {
       tested = "no point of the analytic shape";
     }
     if (!selects)
-      throw InputError(input_message(file, region.pointer, "expected a region that selects part of the geometry, got " + tested));
+      throw InputError(
+          input_message(file, region.pointer, "expected a region that selects part of the geometry, got " + tested));
   }
   return geometry;
 }

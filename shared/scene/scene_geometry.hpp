@@ -26,16 +26,14 @@ struct SceneGeometry {
   /// divergence theorem for surfaces, and the sum of the straight-sided cells (corner
   /// tetrahedra; hexahedra split in 6) for volume meshes.
   double volume = 0.0;
-  bool closed = true;    ///< surfaces are checked closed and manifold by read_surface
+  bool closed = true;  ///< surfaces are checked closed and manifold by read_surface
   bool manifold = true;
   std::vector<std::string> warnings;
 
   /// The surface every method deforms and `compare` measures on (docs/conventions.md,
   /// "Metrics"): the scene's surface or its shape's; nullptr for a volume mesh, whose
   /// methods each deform their own mesh's boundary.
-  const SurfaceMesh* common_surface() const {
-    return surface ? &*surface : shape_surface ? &*shape_surface : nullptr;
-  }
+  const SurfaceMesh* common_surface() const { return surface ? &*surface : shape_surface ? &*shape_surface : nullptr; }
 };
 
 /// Reads the surface or volume mesh (or builds the shape), applies scale/translate,

@@ -28,9 +28,7 @@ Eigen::AlignedBox3d RegionSelector::bounds() const {
   return {Eigen::Vector3d::Constant(-infinity), Eigen::Vector3d::Constant(infinity)};
 }
 
-double region_tolerance(const Eigen::AlignedBox3d& geometry_bounds) {
-  return 1e-6 * geometry_bounds.diagonal().norm();
-}
+double region_tolerance(const Eigen::AlignedBox3d& geometry_bounds) { return 1e-6 * geometry_bounds.diagonal().norm(); }
 
 Eigen::Vector3d Motion::displacement(const Eigen::Vector3d& rest_position, double time) const {
   switch (kind) {

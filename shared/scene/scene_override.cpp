@@ -18,8 +18,8 @@ SceneOverride parse_scene_override(std::string_view assignment, const std::strin
   try {
     (void)json::json_pointer(pointer);
   } catch (const json::exception&) {
-    throw InputError(input_message(option, text, "expected a JSON pointer (RFC 6901; '~' only as ~0 or ~1), got " +
-                                                     json(pointer).dump()));
+    throw InputError(input_message(
+        option, text, "expected a JSON pointer (RFC 6901; '~' only as ~0 or ~1), got " + json(pointer).dump()));
   }
   const std::string value_text(assignment.substr(equals + 1));
   // A value that is not JSON is a string, so `element=tet4` needs no quotes.
@@ -34,7 +34,8 @@ void apply_scene_overrides(json& document, const std::vector<SceneOverride>& ove
     // Walk the pointer's tokens; missing objects on the way are created (the validator
     // then names an unknown key, with a "did you mean" hint for a typo).
     std::vector<std::string> tokens;
-    for (json::json_pointer rest(override_.pointer); !rest.empty(); rest.pop_back()) tokens.insert(tokens.begin(), rest.back());
+    for (json::json_pointer rest(override_.pointer); !rest.empty(); rest.pop_back())
+      tokens.insert(tokens.begin(), rest.back());
     json* node = &document;
     std::string walked;
     for (std::size_t k = 0; k < tokens.size(); ++k) {
@@ -51,13 +52,14 @@ void apply_scene_overrides(json& document, const std::vector<SceneOverride>& ove
         } else if (digits && std::stoull(token) < node->size()) {
           node = &(*node)[std::stoull(token)];
         } else {
-          throw InputError(input_message(file, where, "expected an index below " + std::to_string(node->size()) +
-                                                          (last ? " or '-'" : "") + " into " +
-                                                          (walked.empty() ? "/" : walked) + ", got '" + token + "'"));
+          throw InputError(input_message(file, where,
+                                         "expected an index below " + std::to_string(node->size()) +
+                                             (last ? " or '-'" : "") + " into " + (walked.empty() ? "/" : walked) +
+                                             ", got '" + token + "'"));
         }
       } else {
-        throw InputError(input_message(file, where, (walked.empty() ? "/" : walked) + " is a " + node->type_name() +
-                                                        ", not an object or array"));
+        throw InputError(input_message(
+            file, where, (walked.empty() ? "/" : walked) + " is a " + node->type_name() + ", not an object or array"));
       }
       walked += "/" + token;
     }

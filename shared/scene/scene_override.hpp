@@ -32,6 +32,7 @@ void apply_scene_overrides(nlohmann::json& document, const std::vector<SceneOver
 /// load_scene with `overrides` applied to the parsed document before validation.
 Scene load_scene(const std::filesystem::path& path, const std::vector<SceneOverride>& overrides);
 /// parse_scene with `overrides` applied to the parsed document before validation.
-Scene parse_scene(std::string_view text, const std::filesystem::path& file, const std::vector<SceneOverride>& overrides);
+Scene parse_scene(std::string_view text, const std::filesystem::path& file,
+                  const std::vector<SceneOverride>& overrides);
 
 }  // namespace altfem

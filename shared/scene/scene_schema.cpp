@@ -37,8 +37,8 @@ void check_region_box(const Validator& validator, const json&, json& resolved, c
 
 void check_cylinder(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
   if (!(resolved["inner_radius"].get<double>() < resolved["radius"].get<double>()))
-    validator.fail(pointer + "/inner_radius",
-                   "must be < radius (" + describe(resolved["radius"]) + "), got " + describe(resolved["inner_radius"]));
+    validator.fail(pointer + "/inner_radius", "must be < radius (" + describe(resolved["radius"]) + "), got " +
+                                                  describe(resolved["inner_radius"]));
 }
 
 void check_translate(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
@@ -71,8 +71,9 @@ void check_constants(const Validator& validator, const json& constants) {
     validator.fail("/constants", "expected an object of name: number, got " + describe(constants));
   for (const auto& [name, value] : constants.items()) {
     const std::string pointer = "/constants/" + pointer_token(name);
-    const bool identifier = !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
-                            std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+    const bool identifier =
+        !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_') &&
+        std::all_of(name.begin(), name.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
     if (!identifier) validator.fail(pointer, "expected a name of letters, digits and '_' not starting with a digit");
     for (const char* reserved : {"x", "y", "z", "t", "pi", "_pi", "_e"})
       if (name == reserved) validator.fail(pointer, std::string("'") + reserved + "' is reserved; choose another name");
@@ -93,8 +94,8 @@ void check_scene(const Validator& validator, const json&, json& resolved, const 
   // only the shape every block shares.
   for (const auto& [name, block] : resolved["discretization"].items())
     if (!block.is_object())
-      validator.fail("/discretization/" + pointer_token(name), "expected an object (the method's options), got " +
-                                                                   describe(block));
+      validator.fail("/discretization/" + pointer_token(name),
+                     "expected an object (the method's options), got " + describe(block));
 }
 
 extern const ObjectRule shape;
@@ -110,14 +111,20 @@ const ObjectRule shape_cylinder{
      required_positive("height"),
      required_positive("radius"),
      {.key = "inner_radius", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}},
-    {}, {}, {}, {}, check_cylinder};
+    {},
+    {},
+    {},
+    {},
+    check_cylinder};
 KeyRule shape_list(std::string_view key) {
   return {.key = key, .type = ValueType::object_array, .object = &shape, .minimum_count = 2};
 }
 const ObjectRule shape{{{.key = "box", .type = ValueType::object, .object = &shape_box},
                         {.key = "sphere", .type = ValueType::object, .object = &shape_sphere},
                         {.key = "cylinder", .type = ValueType::object, .object = &shape_cylinder},
-                        shape_list("union"), shape_list("intersection"), shape_list("difference")},
+                        shape_list("union"),
+                        shape_list("intersection"),
+                        shape_list("difference")},
                        {{"box", "sphere", "cylinder", "union", "intersection", "difference"}}};
 
 const ObjectRule geometry{
@@ -138,10 +145,15 @@ const ObjectRule region{{{.key = "box", .type = ValueType::object, .object = &re
 
 // The keys of one material; `materials` entries add an optional region.
 std::vector<KeyRule> material_keys() {
-  return {{.key = "model", .type = ValueType::string, .default_value = "stable_neo_hookean",
+  return {{.key = "model",
+           .type = ValueType::string,
+           .default_value = "stable_neo_hookean",
            .choices = names(material_model_names)},
           required_positive("youngs_modulus"),
-          {.key = "poisson_ratio", .type = ValueType::number, .required = true, .lower = Bound{-1.0, false},
+          {.key = "poisson_ratio",
+           .type = ValueType::number,
+           .required = true,
+           .lower = Bound{-1.0, false},
            .upper = Bound{0.5, false}},
           {.key = "density", .type = ValueType::number, .default_value = 1000.0, .lower = positive}};
 }
@@ -157,7 +169,11 @@ const ObjectRule motion_fixed{{}};
 const ObjectRule motion_translate{{{.key = "velocity", .type = ValueType::vector3},
                                    {.key = "displacement", .type = ValueType::vector3},
                                    {.key = "duration", .type = ValueType::number, .lower = positive}},
-                                  {{"velocity", "displacement"}}, {}, {}, {}, check_translate};
+                                  {{"velocity", "displacement"}},
+                                  {},
+                                  {},
+                                  {},
+                                  check_translate};
 const ObjectRule motion_rotate{{{.key = "axis", .type = ValueType::vector3, .required = true, .nonzero = true},
                                 required_vector("centre"),
                                 {.key = "angular_velocity", .type = ValueType::number, .required = true}}};
@@ -165,9 +181,11 @@ KeyRule required_expression(std::string_view key) {
   return {.key = key, .type = ValueType::expression3, .required = true};
 }
 const ObjectRule motion_field{{required_expression("displacement")}};
-const ObjectRule motion{{}, {}, "kind",
-                        {{"fixed", &motion_fixed}, {"translate", &motion_translate}, {"rotate", &motion_rotate},
-                         {"field", &motion_field}}};
+const ObjectRule motion{
+    {},
+    {},
+    "kind",
+    {{"fixed", &motion_fixed}, {"translate", &motion_translate}, {"rotate", &motion_rotate}, {"field", &motion_field}}};
 
 const ObjectRule dirichlet{
     {{.key = "type", .type = ValueType::string, .required = true, .choices = {"dirichlet"}},
@@ -183,15 +201,17 @@ const ObjectRule traction{{{.key = "region", .type = ValueType::object, .require
                            {.key = "ramp", .type = ValueType::number, .default_value = 0.0, .lower = non_negative}},
                           {{"traction", "pressure"}}};
 
-const ObjectRule loads{{{.key = "gravity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
-                        {.key = "traction", .type = ValueType::object_array, .default_value = json::array(),
-                         .object = &traction},
-                        {.key = "body_force", .type = ValueType::expression3}}};
+const ObjectRule loads{
+    {{.key = "gravity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
+     {.key = "traction", .type = ValueType::object_array, .default_value = json::array(), .object = &traction},
+     {.key = "body_force", .type = ValueType::expression3}}};
 
 const ObjectRule initial_conditions{
     {{.key = "velocity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
      {.key = "angular_velocity", .type = ValueType::vector3, .default_value = json::array({0.0, 0.0, 0.0})},
-     {.key = "centre", .type = ValueType::vector3_or_string, .default_value = "centre_of_mass",
+     {.key = "centre",
+      .type = ValueType::vector3_or_string,
+      .default_value = "centre_of_mass",
       .choices = {"centre_of_mass"}}}};
 
 const ObjectRule rayleigh_damping{
@@ -202,20 +222,36 @@ const ObjectRule time{{flag("static", false),
                        {.key = "dt", .type = ValueType::number, .lower = positive},
                        {.key = "steps", .type = ValueType::integer, .lower = at_least_one},
                        {.key = "load_steps", .type = ValueType::integer, .default_value = 1, .lower = at_least_one},
-                       {.key = "integrator", .type = ValueType::string, .default_value = "backward_euler",
+                       {.key = "integrator",
+                        .type = ValueType::string,
+                        .default_value = "backward_euler",
                         .choices = names(integrator_names)},
-                       {.key = "rayleigh_damping", .type = ValueType::object, .default_value = json::object(),
+                       {.key = "rayleigh_damping",
+                        .type = ValueType::object,
+                        .default_value = json::object(),
                         .object = &rayleigh_damping}},
-                      {}, {}, {}, {}, check_time};
+                      {},
+                      {},
+                      {},
+                      {},
+                      check_time};
 
 const ObjectRule solver{
-    {{.key = "nonlinear", .type = ValueType::string, .default_value = "newton", .choices = names(nonlinear_solver_names)},
+    {{.key = "nonlinear",
+      .type = ValueType::string,
+      .default_value = "newton",
+      .choices = names(nonlinear_solver_names)},
      {.key = "tolerance", .type = ValueType::number, .default_value = 1e-5, .lower = positive},
      {.key = "max_iterations", .type = ValueType::integer, .default_value = 50, .lower = at_least_one},
      flag("line_search", true),
      flag("project_spd", false),
-     {.key = "linear", .type = ValueType::string, .default_value = "cholmod", .choices = names(linear_solver_kind_names)},
-     {.key = "preconditioner", .type = ValueType::string, .default_value = "jacobi",
+     {.key = "linear",
+      .type = ValueType::string,
+      .default_value = "cholmod",
+      .choices = names(linear_solver_kind_names)},
+     {.key = "preconditioner",
+      .type = ValueType::string,
+      .default_value = "jacobi",
       .choices = names(preconditioner_names)},
      {.key = "linear_tolerance", .type = ValueType::number, .default_value = 1e-10, .lower = positive},
      {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one}}};
@@ -242,8 +278,8 @@ void check_compare(const Validator& validator, const json&, json& resolved, cons
     validator.fail(pointer + "/sweeps", "expected an object of JSON pointer: [values], got " + describe(sweeps));
   for (const auto& [key, values] : sweeps.items())
     if (!values.is_array() || values.empty())
-      validator.fail(pointer + "/sweeps/" + pointer_token(key), "expected a non-empty array of values, got " +
-                                                                    describe(values));
+      validator.fail(pointer + "/sweeps/" + pointer_token(key),
+                     "expected a non-empty array of values, got " + describe(values));
 }
 
 void check_compare_reference(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
@@ -253,16 +289,25 @@ void check_compare_reference(const Validator& validator, const json&, json& reso
 
 const ObjectRule compare_reference{{{.key = "method", .type = ValueType::string, .required = true},
                                     {.key = "set", .type = ValueType::any, .default_value = json::object()}},
-                                   {}, {}, {}, {}, check_compare_reference};
+                                   {},
+                                   {},
+                                   {},
+                                   {},
+                                   check_compare_reference};
 
 const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                           {.key = "sweeps", .type = ValueType::any},
                           {.key = "reference", .type = ValueType::object, .object = &compare_reference},
                           {.key = "error", .type = ValueType::number, .lower = positive}},
-                         {}, {}, {}, {}, check_compare};
+                         {},
+                         {},
+                         {},
+                         {},
+                         check_compare};
 
 // `events` entries: a time and exactly one kind (cross-checked by check_events).
-const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .required = true, .object = &region_half_space}}};
+const ObjectRule cut_event{
+    {{.key = "plane", .type = ValueType::object, .required = true, .object = &region_half_space}}};
 
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
                         {.key = "release", .type = ValueType::string},
@@ -274,9 +319,15 @@ const ObjectRule scene{
      {.key = "geometry", .type = ValueType::object, .required = true, .object = &geometry},
      {.key = "material", .type = ValueType::object, .object = &material},
      {.key = "materials", .type = ValueType::object_array, .object = &material_with_region, .minimum_count = 1},
-     {.key = "boundary_conditions", .type = ValueType::object_array, .default_value = json::array(), .object = &dirichlet},
+     {.key = "boundary_conditions",
+      .type = ValueType::object_array,
+      .default_value = json::array(),
+      .object = &dirichlet},
      {.key = "loads", .type = ValueType::object, .default_value = json::object(), .object = &loads},
-     {.key = "initial_conditions", .type = ValueType::object, .default_value = json::object(), .object = &initial_conditions},
+     {.key = "initial_conditions",
+      .type = ValueType::object,
+      .default_value = json::object(),
+      .object = &initial_conditions},
      {.key = "time", .type = ValueType::object, .default_value = json{{"static", true}}, .object = &time},
      {.key = "solver", .type = ValueType::object, .default_value = json::object(), .object = &solver},
      {.key = "output", .type = ValueType::object, .default_value = json::object(), .object = &output},
@@ -285,7 +336,11 @@ const ObjectRule scene{
      {.key = "constants", .type = ValueType::any, .default_value = json::object()},
      {.key = "exact_displacement", .type = ValueType::expression3},
      {.key = "events", .type = ValueType::object_array, .default_value = json::array(), .object = &event}},
-    {{"material", "materials"}}, {}, {}, {}, check_scene};
+    {{"material", "materials"}},
+    {},
+    {},
+    {},
+    check_scene};
 
 }  // namespace
 

@@ -14,8 +14,8 @@
 namespace altfem::scene_schema {
 
 enum class ValueType {
-  number,             ///< finite, within lower/upper
-  integer,            ///< a number with an integral value, within lower/upper
+  number,   ///< finite, within lower/upper
+  integer,  ///< a number with an integral value, within lower/upper
   boolean,
   string,             ///< one of `choices` (any non-empty string when choices is empty)
   vector3,            ///< [3] finite numbers; non-zero if `nonzero`

@@ -8,8 +8,8 @@ namespace altfem {
 namespace {
 
 using nlohmann::json;
-using scene_schema::ValueType;
 using scene_schema::Validator;
+using scene_schema::ValueType;
 
 // Cells along the longest side when neither resolution nor cell_size is given: the bunny
 // then has ~700 cells, a few seconds of set-up for dg k = 2 and harmonic on 2 cores.
@@ -28,12 +28,20 @@ const scene_schema::ObjectRule& slicing_rule() {
   static const scene_schema::ObjectRule rule{
       {{.key = "resolution", .type = ValueType::integer, .lower = scene_schema::at_least_one},
        {.key = "cell_size", .type = ValueType::number, .lower = scene_schema::positive},
-       {.key = "margin_cells", .type = ValueType::number, .default_value = SlicingOptions{}.margin_cells,
+       {.key = "margin_cells",
+        .type = ValueType::number,
+        .default_value = SlicingOptions{}.margin_cells,
         .lower = scene_schema::non_negative},
-       {.key = "sliver_fraction", .type = ValueType::number, .default_value = SlicingOptions{}.sliver_fraction,
-        .lower = scene_schema::non_negative, .upper = scene_schema::Bound{1.0, false}},
-       {.key = "octree_levels", .type = ValueType::integer, .default_value = SlicingOptions{}.octree_levels,
-        .lower = scene_schema::non_negative, .upper = scene_schema::Bound{10.0, true}}},
+       {.key = "sliver_fraction",
+        .type = ValueType::number,
+        .default_value = SlicingOptions{}.sliver_fraction,
+        .lower = scene_schema::non_negative,
+        .upper = scene_schema::Bound{1.0, false}},
+       {.key = "octree_levels",
+        .type = ValueType::integer,
+        .default_value = SlicingOptions{}.octree_levels,
+        .lower = scene_schema::non_negative,
+        .upper = scene_schema::Bound{10.0, true}}},
       {},
       {},
       {},

@@ -114,12 +114,9 @@ std::optional<std::string_view> closest(std::string_view word, const std::vector
 std::string pointer_token(std::string_view key) {
   std::string token;
   for (char c : key) {
-    if (c == '~')
-      token += "~0";
-    else if (c == '/')
-      token += "~1";
-    else
-      token += c;
+    if (c == '~') token += "~0";
+    else if (c == '/') token += "~1";
+    else token += c;
   }
   return token;
 }
@@ -129,7 +126,8 @@ Validator::Validator(std::string file, std::filesystem::path folder)
 
 void Validator::fail(const std::string& pointer, const std::string& what) const {
   std::string message = input_message(file_, pointer.empty() ? "/" : pointer, what);
-  std::replace_if(message.begin(), message.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
+  std::replace_if(
+      message.begin(), message.end(), [](char c) { return c == '\n' || c == '\r'; }, ' ');
   throw InputError(message);
 }
 
@@ -139,10 +137,12 @@ json Validator::resolve(const json& value, const ObjectRule& rule, const std::st
 
 double Validator::number(const json& value, const KeyRule& rule, const std::string& pointer) const {
   const bool integral = rule.type == ValueType::integer || rule.type == ValueType::integer3;
-  if (!value.is_number()) fail(pointer, std::string("expected ") + (integral ? "an integer" : "a number") + ", got " + describe(value));
+  if (!value.is_number())
+    fail(pointer, std::string("expected ") + (integral ? "an integer" : "a number") + ", got " + describe(value));
   const double x = value.get<double>();
   if (!std::isfinite(x)) fail(pointer, "expected a finite number, got " + describe(value));
-  if (integral && (x != std::floor(x) || std::abs(x) > 1e9)) fail(pointer, "expected an integer, got " + describe(value));
+  if (integral && (x != std::floor(x) || std::abs(x) > 1e9))
+    fail(pointer, "expected an integer, got " + describe(value));
   if (rule.lower && (x < rule.lower->value || (!rule.lower->inclusive && x == rule.lower->value)))
     fail(pointer, "must be " + bound_text(*rule.lower, true) + ", got " + describe(value));
   if (rule.upper && (x > rule.upper->value || (!rule.upper->inclusive && x == rule.upper->value)))
@@ -179,14 +179,14 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
       json result = json::array();
       double norm = 0.0;
       for (std::size_t i = 0; i < 3; ++i) {
-        const KeyRule element{.key = rule.key, .type = integral ? ValueType::integer : ValueType::number,
-                              .lower = rule.lower, .upper = rule.upper};
+        const KeyRule element{.key = rule.key,
+                              .type = integral ? ValueType::integer : ValueType::number,
+                              .lower = rule.lower,
+                              .upper = rule.upper};
         const double x = number(value[i], element, pointer + "/" + std::to_string(i));
         norm += x * x;
-        if (integral)
-          result.push_back(static_cast<long long>(x));
-        else
-          result.push_back(x);
+        if (integral) result.push_back(static_cast<long long>(x));
+        else result.push_back(x);
       }
       if (rule.nonzero && !(norm > 0.0)) fail(pointer, "expected a non-zero vector, got [0, 0, 0]");
       return result;
@@ -196,7 +196,8 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
         fail(pointer, "expected a file path, got " + describe(value));
       const std::filesystem::path path(value.get<std::string>());
       std::string extension = path.extension().string();
-      std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return std::tolower(c); });
       if (std::find(rule.choices.begin(), rule.choices.end(), extension) == rule.choices.end())
         fail(pointer, "expected a file ending in one of " + choice_list(rule.choices) + ", got " + describe(value));
       return (path.is_absolute() ? path : folder_ / path).lexically_normal().string();
@@ -219,8 +220,10 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
       std::set<std::string> seen;
       for (std::size_t i = 0; i < value.size(); ++i) {
         const json& item = value[i];
-        if (!item.is_string() || (item != "x" && item != "y" && item != "z") || !seen.insert(item.get<std::string>()).second)
-          fail(pointer + "/" + std::to_string(i), "expected a distinct one of \"x\", \"y\", \"z\", got " + describe(item));
+        if (!item.is_string() || (item != "x" && item != "y" && item != "z") ||
+            !seen.insert(item.get<std::string>()).second)
+          fail(pointer + "/" + std::to_string(i),
+               "expected a distinct one of \"x\", \"y\", \"z\", got " + describe(item));
       }
       return value;
     }
@@ -229,11 +232,11 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
         fail(pointer, "expected an array of 3 expressions of x, y, z, t (strings), got " + describe(value));
       for (std::size_t i = 0; i < 3; ++i)
         if (!value[i].is_string() && !value[i].is_number())
-          fail(pointer + "/" + std::to_string(i), "expected an expression of x, y, z, t (a string), got " +
-                                                      describe(value[i]));
+          fail(pointer + "/" + std::to_string(i),
+               "expected an expression of x, y, z, t (a string), got " + describe(value[i]));
       for (std::size_t i = 0; i < 3; ++i)
-        if (value[i].is_number()) number(value[i], KeyRule{.key = rule.key, .type = ValueType::number},
-                                         pointer + "/" + std::to_string(i));
+        if (value[i].is_number())
+          number(value[i], KeyRule{.key = rule.key, .type = ValueType::number}, pointer + "/" + std::to_string(i));
       return value;
     }
     case ValueType::vector3_or_string:
@@ -250,7 +253,8 @@ json Validator::resolve_value(const json& value, const KeyRule& rule, const std:
 
 json Validator::resolve_object(const json& value, const ObjectRule& given_rule, const std::string& pointer,
                                int depth) const {
-  if (depth > maximum_depth) fail(pointer, "expected nesting at most " + std::to_string(maximum_depth) + " deep, got deeper");
+  if (depth > maximum_depth)
+    fail(pointer, "expected nesting at most " + std::to_string(maximum_depth) + " deep, got deeper");
   if (!value.is_object()) fail(pointer, "expected an object, got " + describe(value));
   const ObjectRule* rule = &given_rule;
   json resolved = json::object();
@@ -276,27 +280,25 @@ json Validator::resolve_object(const json& value, const ObjectRule& given_rule, 
       continue;
     }
     std::string what = "unknown key";
-    if (!given_rule.tag.empty()) what += " for " + std::string(given_rule.tag) + " " + describe(resolved[std::string(given_rule.tag)]);
+    if (!given_rule.tag.empty())
+      what += " for " + std::string(given_rule.tag) + " " + describe(resolved[std::string(given_rule.tag)]);
     what += ", expected one of " + choice_list(key_names(*rule));
     if (const auto hint = closest(key, key_names(*rule))) what += "; did you mean " + quoted(*hint) + "?";
     fail(key_pointer, what);
   }
 
   for (const auto& group : rule->exactly_one_of) {
-    const auto count = std::count_if(group.begin(), group.end(), [&](std::string_view key) { return value.contains(key); });
-    if (count != 1)
-      fail(pointer, "expected exactly one of " + choice_list(group) + ", got " + std::to_string(count));
+    const auto count =
+        std::count_if(group.begin(), group.end(), [&](std::string_view key) { return value.contains(key); });
+    if (count != 1) fail(pointer, "expected exactly one of " + choice_list(group) + ", got " + std::to_string(count));
   }
 
   for (const auto& key : rule->keys) {
     const std::string name(key.key);
     const std::string key_pointer = pointer + "/" + pointer_token(name);
-    if (value.contains(name))
-      resolved[name] = resolve_value(value.at(name), key, key_pointer, depth);
-    else if (!key.default_value.is_null())
-      resolved[name] = resolve_value(key.default_value, key, key_pointer, depth);
-    else if (key.required)
-      fail(key_pointer, "missing required key '" + name + "'");
+    if (value.contains(name)) resolved[name] = resolve_value(value.at(name), key, key_pointer, depth);
+    else if (!key.default_value.is_null()) resolved[name] = resolve_value(key.default_value, key, key_pointer, depth);
+    else if (key.required) fail(key_pointer, "missing required key '" + name + "'");
   }
   if (rule->check) rule->check(*this, value, resolved, pointer);
   return resolved;

@@ -5,10 +5,10 @@
 #include <sstream>
 
 #include "shared/common/error.hpp"
+#include "shared/geometry/points_inside_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
 #include "shared/mesh/surface_projection.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
-#include "shared/geometry/points_inside_surface.hpp"
 
 namespace altfem {
 
@@ -61,7 +61,9 @@ std::string number(double value) {
 }  // namespace
 
 VolumeMesh tetrahedralize_geometry(const SceneGeometry& geometry, double max_cell_size, const std::string& size_key) {
-  const auto fail = [&](const std::string& what) { throw InputError(input_message(geometry.scene_file, size_key, what)); };
+  const auto fail = [&](const std::string& what) {
+    throw InputError(input_message(geometry.scene_file, size_key, what));
+  };
   if (geometry.shape && geometry.shape->axis_planes()) return tetrahedralize_box_shape(*geometry.shape, max_cell_size);
 
   const double size = geometry.shape ? std::min(max_cell_size, geometry.shape->smallest_feature()) : max_cell_size;

@@ -57,8 +57,7 @@ std::string parse_message(const mu::Parser::exception_type& error, const std::st
   const std::string position = "found at position " + std::to_string(error.GetPos());
   if (const auto at = message.find(position); at != std::string::npos)
     message.replace(at, position.size(), "at character " + std::to_string(error.GetPos() + 1));
-  else if (const auto plain = message.find(" at position "); plain != std::string::npos)
-    message.erase(plain);
+  else if (const auto plain = message.find(" at position "); plain != std::string::npos) message.erase(plain);
   return "cannot parse the expression \"" + text + "\": " + message;
 }
 
@@ -92,8 +91,7 @@ struct VectorExpression::Shared {
   [[noreturn]] void not_finite(const Eigen::Vector3d& position, double time, const Eigen::Vector3d& value) const {
     std::ostringstream message;
     message << pointer << ": the expression is not finite at x = (" << position.x() << ", " << position.y() << ", "
-            << position.z() << "), t = " << time << ": (" << value.x() << ", " << value.y() << ", " << value.z()
-            << ")";
+            << position.z() << "), t = " << time << ": (" << value.x() << ", " << value.y() << ", " << value.z() << ")";
     throw NumericalError(message.str());
   }
 };
@@ -153,7 +151,6 @@ Eigen::MatrixXd VectorExpression::evaluate_at(const Eigen::MatrixXd& points, con
     if (!values.row(p).allFinite()) shared_->not_finite(points.row(p).transpose(), t, values.row(p).transpose());
   return values;
 }
-
 
 bool VectorExpression::depends_on_time() const { return shared_->time_dependent; }
 

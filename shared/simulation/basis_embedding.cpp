@@ -53,7 +53,8 @@ Eigen::VectorXd BasisEmbedding::load(const Eigen::MatrixXd& forces, int dof_coun
   Eigen::VectorXd result = Eigen::VectorXd::Zero(dof_count);
   for (Eigen::Index point = 0; point + 1 < static_cast<Eigen::Index>(offsets_.size()); ++point)
     for (long long entry = offsets_[point]; entry < offsets_[point + 1]; ++entry)
-      result.segment<3>(3 * static_cast<Eigen::Index>(basis_[entry])) += weights_[entry] * forces.row(point).transpose();
+      result.segment<3>(3 * static_cast<Eigen::Index>(basis_[entry])) +=
+          weights_[entry] * forces.row(point).transpose();
   return result;
 }
 

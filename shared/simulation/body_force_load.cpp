@@ -4,7 +4,8 @@
 
 namespace altfem {
 
-Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const Eigen::MatrixXd& forces, int dof_count) {
+Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const Eigen::MatrixXd& forces,
+                                        int dof_count) {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count);
   const TabulatedElements& elements = *quadrature.elements;
   Eigen::Index row = 0;

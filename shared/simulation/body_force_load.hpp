@@ -14,7 +14,8 @@
 namespace altfem {
 
 /// Σ_q w_q f(x_q) φ_a(x_q) for forces (#points × 3, one row per point of `quadrature`): #dofs.
-Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const Eigen::MatrixXd& forces, int dof_count);
+Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const Eigen::MatrixXd& forces,
+                                        int dof_count);
 
 /// The body-force load at any time; integrated once when f does not depend on t.
 class BodyForceLoad {

@@ -4,8 +4,8 @@
 // integrates ρ against it): the body's mass ∫ρ dV, its volume ∫dV, its linear momentum
 // ∫ρ v dV, and its kinetic plus elastic energy.
 #include <Eigen/Core>
-#include <nlohmann/json.hpp>
 #include <array>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "shared/simulation/method_instance.hpp"
@@ -14,10 +14,10 @@
 namespace altfem {
 
 struct BodyMeasures {
-  double mass = 0;                   ///< ∫ρ dV [kg]
-  std::optional<double> volume;      ///< ∫dV [m³]; nullopt when the method has no volume rule
+  double mass = 0;                                     ///< ∫ρ dV [kg]
+  std::optional<double> volume;                        ///< ∫dV [m³]; nullopt when the method has no volume rule
   Eigen::Vector3d momentum = Eigen::Vector3d::Zero();  ///< ∫ρ v dV [kg m/s]
-  double energy = 0;                 ///< kinetic + elastic [J]
+  double energy = 0;                                   ///< kinetic + elastic [J]
 };
 
 /// What the measures need that does not change while the discretization stays (so an

@@ -5,20 +5,21 @@
 namespace altfem {
 
 nlohmann::json EventRecord::json() const {
-  nlohmann::json result{{"kind", kind},
-                        {"target", target},
-                        {"time", time},
-                        {"scheduled_time", scheduled_time},
-                        {"step", step},
-                        {"dofs", {{"before", dofs_before}, {"after", dofs_after}}},
-                        {"constrained_dofs", {{"before", constrained_before}, {"after", constrained_after}}},
-                        {"quadrature_points", {{"before", quadrature_points_before}, {"after", quadrature_points_after}}},
-                        {"seconds",
-                         {{"geometry", seconds.geometry},
-                          {"integration", seconds.integration},
-                          {"pattern", seconds.pattern},
-                          {"transfer", seconds.transfer}}},
-                        {"conserved", conserved}};
+  nlohmann::json result{
+      {"kind", kind},
+      {"target", target},
+      {"time", time},
+      {"scheduled_time", scheduled_time},
+      {"step", step},
+      {"dofs", {{"before", dofs_before}, {"after", dofs_after}}},
+      {"constrained_dofs", {{"before", constrained_before}, {"after", constrained_after}}},
+      {"quadrature_points", {{"before", quadrature_points_before}, {"after", quadrature_points_after}}},
+      {"seconds",
+       {{"geometry", seconds.geometry},
+        {"integration", seconds.integration},
+        {"pattern", seconds.pattern},
+        {"transfer", seconds.transfer}}},
+      {"conserved", conserved}};
   if (!pointer.empty()) result["pointer"] = pointer;
   if (!facts.is_null()) result["facts"] = facts;
   return result;

@@ -17,9 +17,9 @@ struct EventPhases {
 };
 
 struct EventRecord {
-  std::string kind;     ///< "release", "rebuild", …
-  std::string target;   ///< what it acted on (a condition's name)
-  std::string pointer;  ///< the scene key, "/events/i"; empty for an event not from the scene
+  std::string kind;           ///< "release", "rebuild", …
+  std::string target;         ///< what it acted on (a condition's name)
+  std::string pointer;        ///< the scene key, "/events/i"; empty for an event not from the scene
   double scheduled_time = 0;  ///< the event's `time`
   double time = 0;            ///< the state's time when it acted
   int step = 0;               ///< the steps done before it acted

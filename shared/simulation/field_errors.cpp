@@ -18,8 +18,7 @@ Eigen::MatrixXd exact_gradients(const VectorExpression& exact, const Eigen::Matr
       return evaluate_at_points(exact, moved, time);
     };
     // (−u(x + 2h) + 8u(x + h) − 8u(x − h) + u(x − 2h)) / 12h
-    const Eigen::MatrixXd derivative =
-        (8 * (shifted(h) - shifted(-h)) - (shifted(2 * h) - shifted(-2 * h))) / (12 * h);
+    const Eigen::MatrixXd derivative = (8 * (shifted(h) - shifted(-h)) - (shifted(2 * h) - shifted(-2 * h))) / (12 * h);
     for (int i = 0; i < 3; ++i) gradients.col(3 * i + j) = derivative.col(i);
   }
   return gradients;

@@ -21,9 +21,9 @@ struct MeshPreviewOptions {
 };
 
 struct MeshPreview {
-  UnstructuredGrid grid;  ///< written as VTU
-  nlohmann::json facts;   ///< printed with --json (and "method", "build_time_s", "file")
-  std::string summary;    ///< the lines printed without --json
+  UnstructuredGrid grid;              ///< written as VTU
+  nlohmann::json facts;               ///< printed with --json (and "method", "build_time_s", "file")
+  std::string summary;                ///< the lines printed without --json
   std::vector<std::string> warnings;  ///< what the user should know, printed to stderr
 };
 

@@ -5,11 +5,11 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
-#include <string>
-#include <vector>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -17,10 +17,10 @@
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/basis_embedding.hpp"
-#include "shared/simulation/surface_lift.hpp"
 #include "shared/simulation/field_quadrature.hpp"
 #include "shared/simulation/mesh_preview.hpp"
 #include "shared/simulation/method_mesh.hpp"
+#include "shared/simulation/surface_lift.hpp"
 #include "shared/solve/discretization.hpp"
 
 namespace altfem {
@@ -111,8 +111,7 @@ MethodRebuilder rebuild_on_handed_mesh(const char* method_name) {
 
 /// The method's mesh as `altfem mesh` shows it (mesh_preview.hpp); throws InputError for
 /// options the method does not have (a source it cannot build).
-using MeshPreviewBuilder =
-    std::function<MeshPreview(const Scene&, const SceneGeometry&, const MeshPreviewOptions&)>;
+using MeshPreviewBuilder = std::function<MeshPreview(const Scene&, const SceneGeometry&, const MeshPreviewOptions&)>;
 
 /// What a method registers (app/method_registry.cpp): its scene block, its factory,
 /// one line for `altfem info`, its rebuild from a mesh (events that change the mesh) and

@@ -37,8 +37,7 @@ private:
     const Eigen::Vector3i first = cell_of(low), last = cell_of(high);
     for (int i = first.x(); i <= last.x(); ++i)
       for (int j = first.y(); j <= last.y(); ++j)
-        for (int k = first.z(); k <= last.z(); ++k)
-          body((static_cast<long long>(i) * 2097152 + j) * 2097152 + k);
+        for (int k = first.z(); k <= last.z(); ++k) body((static_cast<long long>(i) * 2097152 + j) * 2097152 + k);
   }
   Eigen::Vector3i cell_of(const Eigen::RowVector3d& x) const {
     return ((x - origin_) / cell_).array().floor().cast<int>().transpose();
@@ -105,22 +104,19 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
           const double distance = (samples.row(sample).transpose() - x).norm();
           if (distance >= radius) return;
-          const double weight = std::exp(-distance * distance / (sigma * sigma)) -
-                                std::exp(-radius * radius / (sigma * sigma));
+          const double weight =
+              std::exp(-distance * distance / (sigma * sigma)) - std::exp(-radius * radius / (sigma * sigma));
           Eigen::Vector4d p;
           p << 1.0, (samples.row(sample).transpose() - x) / reach;
           moments += weight * p * p.transpose();
           near.push_back(sample);
           theta.push_back(weight);
         };
-        if (enlarge == 1.0)
-          supports.for_each_in(x.transpose(), x.transpose(), add);
-        else
-          reachable.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
+        if (enlarge == 1.0) supports.for_each_in(x.transpose(), x.transpose(), add);
+        else reachable.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
         if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
-        const Eigen::Vector4d row = eigen.eigenvectors() *
-                                    eigen.eigenvalues().cwiseInverse().asDiagonal() *
+        const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
                                     eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
         PointWeights& result = found[static_cast<size_t>(point)];
         for (size_t n = 0; n < near.size(); ++n) {

@@ -14,8 +14,8 @@ Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::Mat
   // topology-aware cells): those are left to the basis, which knows the pieces.
   std::map<std::array<double, 3>, Eigen::Index> old_node;
   for (Eigen::Index node = 0; node < previous_nodes.rows(); ++node) {
-    const auto [entry, inserted] =
-        old_node.emplace(std::array<double, 3>{previous_nodes(node, 0), previous_nodes(node, 1), previous_nodes(node, 2)}, node);
+    const auto [entry, inserted] = old_node.emplace(
+        std::array<double, 3>{previous_nodes(node, 0), previous_nodes(node, 1), previous_nodes(node, 2)}, node);
     if (!inserted) entry->second = -1;
   }
   Eigen::MatrixXd result(3 * nodes.rows(), fields.cols());
@@ -28,7 +28,8 @@ Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::Mat
       continue;
     }
     const auto found = old_node.find({nodes(node, 0), nodes(node, 1), nodes(node, 2)});
-    if (found != old_node.end() && found->second >= 0) result.middleRows<3>(3 * node) = fields.middleRows<3>(3 * found->second);
+    if (found != old_node.end() && found->second >= 0)
+      result.middleRows<3>(3 * node) = fields.middleRows<3>(3 * found->second);
     else moved.push_back(node);
   }
   if (moved.empty()) return result;
@@ -46,13 +47,15 @@ Eigen::MatrixXd transfer_to_nodes(const Eigen::MatrixXd& nodes, const Eigen::Mat
 Eigen::VectorXd interpolate_at_nodes(const Eigen::MatrixXd& nodes,
                                      const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) {
   Eigen::VectorXd values(3 * nodes.rows());
-  for (Eigen::Index node = 0; node < nodes.rows(); ++node) values.segment<3>(3 * node) = field(nodes.row(node).transpose());
+  for (Eigen::Index node = 0; node < nodes.rows(); ++node)
+    values.segment<3>(3 * node) = field(nodes.row(node).transpose());
   return values;
 }
 
 void add_nodal_displacement(UnstructuredGrid& grid, const Eigen::VectorXd& displacement) {
-  grid.point_data.emplace_back("displacement", Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
-                                                   displacement.data(), displacement.size() / 3, 3));
+  grid.point_data.emplace_back("displacement",
+                               Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(
+                                   displacement.data(), displacement.size() / 3, 3));
 }
 
 FieldQuadrature nodal_field_quadrature(std::shared_ptr<const TabulatedElements> elements, const Eigen::MatrixXd& nodes,

@@ -5,7 +5,8 @@ namespace altfem {
 Eigen::Vector3d centre_of_mass(const MethodInstance& method) {
   const Discretization& discretization = method.discretization();
   const Eigen::VectorXd position = method.interpolate([](const Eigen::Vector3d& x) { return x; });
-  const Eigen::VectorXd ones = method.interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
+  const Eigen::VectorXd ones =
+      method.interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
   Eigen::Vector3d centre;
   for (int i = 0; i < 3; ++i) {
     const Eigen::VectorXd load = discretization.body_force(Eigen::Vector3d::Unit(i));

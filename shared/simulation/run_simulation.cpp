@@ -4,10 +4,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "shared/common/error.hpp"
@@ -34,13 +34,11 @@ void check_state(const State& state, double total_energy, double size, int step,
   if (finite && largest <= 1e6 * size) return;
   std::ostringstream message;
   message << "step " << step << ": the state ";
-  if (finite)
-    message << "exploded (displacement " << largest << " m, over 1e6 times the body's size " << size << " m)";
-  else
-    message << "is not finite";
+  if (finite) message << "exploded (displacement " << largest << " m, over 1e6 times the body's size " << size << " m)";
+  else message << "is not finite";
   if (std::isfinite(critical_time_step) && time_step > critical_time_step)
-    message << "; the time step " << time_step << " s exceeds the explicit stability limit, about " << critical_time_step
-            << " s: reduce time.dt or use an implicit integrator";
+    message << "; the time step " << time_step << " s exceeds the explicit stability limit, about "
+            << critical_time_step << " s: reduce time.dt or use an implicit integrator";
   throw NumericalError(message.str());
 }
 
@@ -93,7 +91,10 @@ nlohmann::json exact_solution_errors(const MethodInstance& method, const VectorE
 class FrameWriter {
 public:
   FrameWriter(const Simulation& simulation, const std::filesystem::path& directory, const OutputSpec& output)
-      : simulation_(simulation), directory_(directory), output_(output), volume_(directory / "volume.pvd"),
+      : simulation_(simulation),
+        directory_(directory),
+        output_(output),
+        volume_(directory / "volume.pvd"),
         surface_(directory / "surface.pvd") {}
 
   // Stress as cell data, when the discretization's elements are the volume cells.
@@ -145,7 +146,9 @@ private:
 class EventSchedule {
 public:
   EventSchedule(const Scene& scene, Simulation& simulation, std::ostringstream& log)
-      : events_(scene.events), simulation_(simulation), log_(log),
+      : events_(scene.events),
+        simulation_(simulation),
+        log_(log),
         tolerance_(scene.time.is_static ? 0.0 : 1e-9 * scene.time.dt) {}
 
   // Applies every event due at `now` (dynamic: the state's time; static: load steps done).
@@ -200,8 +203,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   const BlasInfo blas = loaded_blas();
   summary["environment"] = {{"threads", omp_get_max_threads()}, {"blas", blas.implementation}};
   if (is_reference_blas(blas))
-    std::fprintf(stderr, "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
-                         "install libopenblas0-pthread\n", blas.library.c_str());
+    std::fprintf(stderr,
+                 "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
+                 "install libopenblas0-pthread\n",
+                 blas.library.c_str());
   summary["facts"] = method.facts();
   summary["warnings"] = method.warnings();
   for (const std::string& warning : method.warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());

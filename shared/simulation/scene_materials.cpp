@@ -6,8 +6,8 @@ namespace altfem {
 
 SceneMaterials::SceneMaterials(const Scene& scene) : file_(scene.file.string()), specs_(scene.materials) {
   for (const MaterialSpec& spec : specs_) {
-    materials_.push_back(make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio,
-                                       spec.density));
+    materials_.push_back(
+        make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio, spec.density));
     pointers_.push_back(materials_.back().get());
   }
 }

@@ -141,7 +141,8 @@ void Simulation::check_events() const {
     if (event.kind == EventKind::cut) {
       const std::string why = !rebuild_ ? "the run was built without the method's rebuild" : method_->cut_refusal();
       if (!why.empty())
-        throw InputError(input_message(scene_.file.string(), event.pointer + "/cut", "cannot cut with " + method_name_ + ": " + why));
+        throw InputError(input_message(scene_.file.string(), event.pointer + "/cut",
+                                       "cannot cut with " + method_name_ + ": " + why));
       continue;
     }
     const std::string key = event.pointer + "/release";
@@ -162,10 +163,12 @@ void Simulation::check_events() const {
     try {
       const ReleasedConditions check(discretization, released);
       if (scene_.time.is_static && check.constrained_dofs().empty())
-        throw std::invalid_argument("nothing would hold the body afterwards, and a static problem has no equilibrium "
-                                    "without a support");
+        throw std::invalid_argument(
+            "nothing would hold the body afterwards, and a static problem has no equilibrium "
+            "without a support");
     } catch (const std::invalid_argument& error) {
-      throw InputError(input_message(scene_.file.string(), key, "cannot release '" + condition.name + "': " + error.what()));
+      throw InputError(
+          input_message(scene_.file.string(), key, "cannot release '" + condition.name + "': " + error.what()));
     }
   }
 }

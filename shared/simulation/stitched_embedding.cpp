@@ -8,7 +8,7 @@ StitchedEmbedding::StitchedEmbedding(const ElementBasisEvaluator& field, const E
 
 Eigen::MatrixXd StitchedEmbedding::displacement(const Eigen::VectorXd& u) const {
   const Eigen::MatrixXd nodal = nodal_.displacement(u);  // #nodes × 3, eq. (30)
-  const Eigen::MatrixXd transposed = nodal.transpose();   // node i's DOFs at 3i..3i+2
+  const Eigen::MatrixXd transposed = nodal.transpose();  // node i's DOFs at 3i..3i+2
   return interpolation_.displacement(Eigen::Map<const Eigen::VectorXd>(transposed.data(), transposed.size()));
 }
 

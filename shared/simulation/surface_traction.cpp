@@ -25,8 +25,7 @@ using Polygon = std::vector<Eigen::Vector3d>;
 
 double polygon_area(const Polygon& polygon) {
   Eigen::Vector3d twice = Eigen::Vector3d::Zero();
-  for (size_t i = 1; i + 1 < polygon.size(); ++i)
-    twice += (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
+  for (size_t i = 1; i + 1 < polygon.size(); ++i) twice += (polygon[i] - polygon[0]).cross(polygon[i + 1] - polygon[0]);
   return 0.5 * twice.norm();
 }
 
@@ -86,8 +85,7 @@ SurfacePoints surface_load_points(const SurfaceMesh& surface, const SurfaceTract
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(evaluator.element_count()));
   for (int e = 0; e < evaluator.element_count(); ++e) boxes[e] = evaluator.element_bounds(e);
   const PointLocator locator(std::move(boxes));
-  const double slack =
-      1e-9 * (surface.vertices.colwise().maxCoeff() - surface.vertices.colwise().minCoeff()).norm();
+  const double slack = 1e-9 * (surface.vertices.colwise().maxCoeff() - surface.vertices.colwise().minCoeff()).norm();
   // Weights sum to 1/2.
   const QuadratureRule rule = triangle_rule(lift ? lifted_triangle_strength : triangle_strength);
 
@@ -143,7 +141,8 @@ Eigen::MatrixXd surface_forces(const SurfaceTraction& load, const SurfacePoints&
   // docs/conventions.md, "Surface loads": a pressure acts along the inward normal.
   Eigen::MatrixXd tractions;
   if (load.traction) tractions = load.traction->transpose().replicate(points.points.rows(), 1);
-  else if (load.traction_field.has_value()) tractions = load.traction_field.evaluate(points.points, points.normals, time);
+  else if (load.traction_field.has_value())
+    tractions = load.traction_field.evaluate(points.points, points.normals, time);
   else tractions = -load.pressure * points.normals;
   return points.weights.asDiagonal() * tractions;
 }
@@ -157,17 +156,18 @@ SurfaceTractionLoad::SurfaceTractionLoad(const std::vector<SurfaceTraction>& loa
     auto embedding = std::make_shared<const BasisEmbedding>(evaluator, points.points);
     if (loads[i].traction_field.has_value() && loads[i].traction_field.depends_on_time())
       time_dependent_.push_back({static_cast<int>(i), std::move(points), std::move(embedding)});
-    else
-      vectors_.col(static_cast<Eigen::Index>(i)) = embedding->load(surface_forces(loads[i], points, 0.0), dof_count);
+    else vectors_.col(static_cast<Eigen::Index>(i)) = embedding->load(surface_forces(loads[i], points, 0.0), dof_count);
   }
 }
 
 Eigen::VectorXd SurfaceTractionLoad::operator()(double time) const {
   Eigen::VectorXd load = Eigen::VectorXd::Zero(vectors_.rows());
-  for (size_t i = 0; i < loads_.size(); ++i) load += loads_[i].factor(time) * vectors_.col(static_cast<Eigen::Index>(i));
+  for (size_t i = 0; i < loads_.size(); ++i)
+    load += loads_[i].factor(time) * vectors_.col(static_cast<Eigen::Index>(i));
   for (const TimeDependentLoad& entry : time_dependent_)
-    load += loads_[entry.load].factor(time) *
-            entry.embedding->load(surface_forces(loads_[entry.load], entry.points, time), static_cast<int>(load.size()));
+    load +=
+        loads_[entry.load].factor(time) *
+        entry.embedding->load(surface_forces(loads_[entry.load], entry.points, time), static_cast<int>(load.size()));
   return load;
 }
 

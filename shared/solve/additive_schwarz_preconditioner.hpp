@@ -34,8 +34,8 @@ public:
 private:
   std::vector<std::vector<int>> blocks_;  // each sorted
   double epsilon_;
-  std::vector<Eigen::MatrixXd> inverses_;  // C_K⁺ per block
-  Eigen::VectorXd diagonal_inverse_;       // 1/|C_ii| for DOFs in no block, else 0
+  std::vector<Eigen::MatrixXd> inverses_;                     // C_K⁺ per block
+  Eigen::VectorXd diagonal_inverse_;                          // 1/|C_ii| for DOFs in no block, else 0
   mutable std::vector<Eigen::VectorXd> gathered_, products_;  // per block scratch: apply() must not allocate
   int small_eigenvalues_ = 0;
 };

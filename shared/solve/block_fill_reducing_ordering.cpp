@@ -19,8 +19,8 @@ std::vector<int> supervariable_starts(const Eigen::SparseMatrix<double>& matrix)
   const int* rows = matrix.innerIndexPtr();
   std::vector<int> runs{0};
   for (int column = 1; column < matrix.cols(); ++column) {
-    const bool same = std::equal(rows + starts[column], rows + starts[column + 1], rows + starts[column - 1],
-                                 rows + starts[column]);
+    const bool same =
+        std::equal(rows + starts[column], rows + starts[column + 1], rows + starts[column - 1], rows + starts[column]);
     if (!same) runs.push_back(column);
   }
   runs.push_back(static_cast<int>(matrix.cols()));
@@ -42,8 +42,8 @@ std::vector<int> block_fill_reducing_ordering(const Eigen::SparseMatrix<double>&
   for (int group = 0; group < group_count; ++group) {
     for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, runs[group]); entry; ++entry) {
       const int row_group = group_of[entry.row()];
-      if (row_group <= group && (group_rows.size() == static_cast<std::size_t>(column_starts[group]) ||
-                                 group_rows.back() != row_group))
+      if (row_group <= group &&
+          (group_rows.size() == static_cast<std::size_t>(column_starts[group]) || group_rows.back() != row_group))
         group_rows.push_back(row_group);
     }
     column_starts[group + 1] = static_cast<int>(group_rows.size());

@@ -61,8 +61,7 @@ std::vector<int> colour_blocks(const Eigen::SparseMatrix<double>& matrix, const 
 
 }  // namespace
 
-BlockRelaxationPreconditioner::BlockRelaxationPreconditioner(std::vector<int> block_starts,
-                                                             BlockRelaxation relaxation)
+BlockRelaxationPreconditioner::BlockRelaxationPreconditioner(std::vector<int> block_starts, BlockRelaxation relaxation)
     : block_starts_(std::move(block_starts)), relaxation_(relaxation) {
   if (block_starts_.empty() || block_starts_.front() != 0 ||
       !std::is_sorted(block_starts_.begin(), block_starts_.end()))
@@ -89,9 +88,9 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
     for (int j = 0; j < size; ++j) {
       // The block's rows of column first + j: a run found by bisection (rows are sorted).
       const int* rows = matrix.innerIndexPtr() + matrix.outerIndexPtr()[first + j];
-      const int* rows_end = rows + (matrix.isCompressed() ? matrix.outerIndexPtr()[first + j + 1] -
-                                                                 matrix.outerIndexPtr()[first + j]
-                                                           : matrix.innerNonZeroPtr()[first + j]);
+      const int* rows_end =
+          rows + (matrix.isCompressed() ? matrix.outerIndexPtr()[first + j + 1] - matrix.outerIndexPtr()[first + j]
+                                        : matrix.innerNonZeroPtr()[first + j]);
       const double* values = matrix.valuePtr() + matrix.outerIndexPtr()[first + j];
       for (const int* row = std::lower_bound(rows, rows_end, first); row != rows_end && *row < first + size; ++row)
         diagonal_block(*row - first, j) = values[row - rows];
@@ -143,8 +142,7 @@ void BlockRelaxationPreconditioner::compute(const Eigen::SparseMatrix<double>& m
   for (int block = 0; block < blocks; ++block) blocks_by_colour_[next[colour[block]]++] = block;
 }
 
-void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& residual,
-                                                    Eigen::VectorXd& result) const {
+void BlockRelaxationPreconditioner::relax(int block, const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
   const int first = block_starts_[block], size = block_starts_[block + 1] - first;
   // (r − A x)_b from A's columns of the block (A = Aᵀ: column j is row j).
   if (size == 3 && same_rows_[block]) {
@@ -258,8 +256,7 @@ bool BlockRelaxationPreconditioner::apply_with_defect(const Eigen::VectorXd& res
   return true;
 }
 
-void BlockRelaxationPreconditioner::apply_transpose(const Eigen::VectorXd& residual,
-                                                     Eigen::VectorXd& result) const {
+void BlockRelaxationPreconditioner::apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {
   if (relaxation_ != BlockRelaxation::gauss_seidel) {
     apply(residual, result);
     return;

@@ -106,7 +106,8 @@ protected:
         throw NumericalError("matrix has a zero pivot, it is not quasi-definite (" + where);
       throw NumericalError("matrix is not positive definite (" + where);
     }
-    if (common_.status < CHOLMOD_OK) throw NumericalError("CHOLMOD factorisation failed (CHOLMOD status " + status() + ")");
+    if (common_.status < CHOLMOD_OK)
+      throw NumericalError("CHOLMOD factorisation failed (CHOLMOD status " + status() + ")");
   }
 
   long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) override {

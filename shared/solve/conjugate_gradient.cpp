@@ -23,8 +23,8 @@ KrylovResult conjugate_gradient(const Eigen::SparseMatrix<double>& matrix, const
     double r_dot_z = r.dot(z);
     while (iterations < settings.max_iterations) {
       if (!(r_dot_z > 0))
-        throw_breakdown(method, iterations, "preconditioner is not positive definite (rᵀM⁻¹r = " +
-                                                std::to_string(r_dot_z) + ")");
+        throw_breakdown(method, iterations,
+                        "preconditioner is not positive definite (rᵀM⁻¹r = " + std::to_string(r_dot_z) + ")");
       symmetric_multiply(matrix, p, q);
       const double curvature = p.dot(q);
       if (!(curvature > 0))

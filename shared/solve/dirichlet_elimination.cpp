@@ -53,7 +53,8 @@ void DirichletElimination::lift(const Eigen::SparseMatrix<double>& matrix, Eigen
   }
   const double* values = matrix.valuePtr();
   for (size_t i = 0; i < constrained_.size(); ++i)
-    rhs[constrained_[i]] = eliminated_diagonal(values[diagonal_positions_[i]]) * increment[static_cast<Eigen::Index>(i)];
+    rhs[constrained_[i]] =
+        eliminated_diagonal(values[diagonal_positions_[i]]) * increment[static_cast<Eigen::Index>(i)];
 }
 
 void DirichletElimination::eliminate(Eigen::SparseMatrix<double>& matrix) const {

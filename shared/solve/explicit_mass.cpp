@@ -18,11 +18,13 @@ BlockDiagonalMass::BlockDiagonalMass(const Eigen::SparseMatrix<double>& mass,
   for (size_t g = 0; g < groups_.size(); ++g)
     for (int dof : groups_[g]) {
       if (dof < 0 || dof >= dofs || group_of[dof] >= 0)
-        throw std::invalid_argument("BlockDiagonalMass: DOF " + std::to_string(dof) + " is out of range or in two groups");
+        throw std::invalid_argument("BlockDiagonalMass: DOF " + std::to_string(dof) +
+                                    " is out of range or in two groups");
       group_of[dof] = static_cast<int>(g);
     }
   for (Eigen::Index dof = 0; dof < dofs; ++dof)
-    if (group_of[dof] < 0) throw std::invalid_argument("BlockDiagonalMass: DOF " + std::to_string(dof) + " is in no group");
+    if (group_of[dof] < 0)
+      throw std::invalid_argument("BlockDiagonalMass: DOF " + std::to_string(dof) + " is in no group");
 
   std::vector<int> local(static_cast<size_t>(dofs));
   for (const auto& group : groups_)
@@ -66,7 +68,8 @@ Eigen::VectorXd BlockDiagonalMass::multiply(const Eigen::VectorXd& v) const {
 }
 
 Eigen::VectorXd BlockDiagonalMass::solve(const Eigen::VectorXd& f) const {
-  return per_block(f, [&](size_t g, const Eigen::VectorXd& local) -> Eigen::VectorXd { return factors_[g].solve(local); });
+  return per_block(f,
+                   [&](size_t g, const Eigen::VectorXd& local) -> Eigen::VectorXd { return factors_[g].solve(local); });
 }
 
 }  // namespace altfem

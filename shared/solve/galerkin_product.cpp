@@ -106,7 +106,8 @@ OrderedMatrix ordered_by_first_coarse(const CompressedColumns& matrix, const Com
   ordered.outer.assign(static_cast<size_t>(size) + 1, 0);
   for (int column = 0; column < size; ++column) {
     const int c = classes[column];
-    ordered.outer[column + 1] = ordered.outer[column] + (c >= 0 ? ordered.class_outer[c + 1] - ordered.class_outer[c] : 0);
+    ordered.outer[column + 1] =
+        ordered.outer[column] + (c >= 0 ? ordered.class_outer[c + 1] - ordered.class_outer[c] : 0);
   }
   resize_on_huge_pages(ordered.inner, static_cast<size_t>(ordered.outer[size]));
   resize_on_huge_pages(ordered.value, ordered.inner.size());
@@ -126,13 +127,13 @@ OrderedMatrix ordered_by_first_coarse(const CompressedColumns& matrix, const Com
 /// What the column loop reads: A (ordered), P, Pᵀ, and the groups of identical patterns.
 struct ProductInputs {
   CompressedColumns matrix, prolongation, restriction;  // A ordered (OrderedMatrix), P, Pᵀ
-  const int* class_outer;                     // A's classes: first coarse columns, OrderedMatrix
+  const int* class_outer;                               // A's classes: first coarse columns, OrderedMatrix
   const int* first_coarse;
   int fine_size, coarse_size;
-  std::vector<int> matrix_class;               // per column of A: its pattern class (-1: unused)
-  std::vector<int> restriction_class;          // per fine row: the class of its pattern in P (-1: empty row)
-  std::vector<int> member_outer, members;      // the fine rows of each restriction class
-  int longest_column = 0, largest_class = 0;   // scratch sizes
+  std::vector<int> matrix_class;              // per column of A: its pattern class (-1: unused)
+  std::vector<int> restriction_class;         // per fine row: the class of its pattern in P (-1: empty row)
+  std::vector<int> member_outer, members;     // the fine rows of each restriction class
+  int longest_column = 0, largest_class = 0;  // scratch sizes
 };
 
 /// values[index] += addend in column `column` of a dense accumulator whose entries are valid
@@ -162,7 +163,8 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
   std::vector<int> fine_marker(static_cast<size_t>(inputs.fine_size), -1), fine_rows(fine.size());
   std::vector<int> coarse_marker(coarse.size(), -1), coarse_rows(coarse.size());
   std::vector<int> class_marker(inputs.member_outer.size() - 1, -1);
-  std::vector<double> dense(static_cast<size_t>(inputs.longest_column)), gathered(static_cast<size_t>(inputs.largest_class));
+  std::vector<double> dense(static_cast<size_t>(inputs.longest_column)),
+      gathered(static_cast<size_t>(inputs.largest_class));
   // Filled here and moved into `upper` at the end: the ranges of the threads lie side by side,
   // and growing their vectors in place would share cache lines between the threads.
   std::vector<int> outer(static_cast<size_t>(upper.end - upper.begin) + 1, 0), inner;
@@ -179,8 +181,8 @@ void upper_columns(const ProductInputs& inputs, UpperColumns& upper) {
       int run_end = run + 1;
       while (run_end < p.outer[j + 1] && inputs.matrix_class[p.inner[run_end]] == pattern_class) ++run_end;
       const int* first_coarse = inputs.first_coarse + inputs.class_outer[pattern_class];
-      const int length = static_cast<int>(
-          std::upper_bound(first_coarse, first_coarse + a.length(first), j) - first_coarse);
+      const int length =
+          static_cast<int>(std::upper_bound(first_coarse, first_coarse + a.length(first), j) - first_coarse);
       const int* rows = a.inner + a.outer[first];
       const double* values = a.value + a.outer[first];
       for (int t = 0; t < length; ++t) dense[t] = values[t] * p.value[run];
@@ -286,11 +288,11 @@ SparseMatrix galerkin_product(const SparseMatrix& matrix, const SparseMatrix& pr
   for (int row = 0; row < inputs.fine_size; ++row)
     if (used[row]) inputs.members[fill[inputs.restriction_class[row]]++] = row;
   for (int column = 0; column < inputs.fine_size; ++column)
-    inputs.longest_column =
-        std::max({inputs.longest_column, inputs.matrix.length(column), r.length(column)});
+    inputs.longest_column = std::max({inputs.longest_column, inputs.matrix.length(column), r.length(column)});
 
   // Contiguous ranges of columns, one per thread, each with its own scratch.
-  std::vector<UpperColumns> ranges(static_cast<size_t>(std::max(1, std::min(omp_get_max_threads(), inputs.coarse_size))));
+  std::vector<UpperColumns> ranges(
+      static_cast<size_t>(std::max(1, std::min(omp_get_max_threads(), inputs.coarse_size))));
   const int range_count = static_cast<int>(ranges.size());
 #pragma omp parallel for schedule(static, 1) num_threads(range_count)
   for (int range = 0; range < range_count; ++range) {

@@ -33,8 +33,7 @@ std::vector<int> identical_pattern_classes(const int* outer, const int* inner, c
         std::memcmp(inner + outer[first], inner + outer[column],
                     sizeof(int) * static_cast<size_t>(outer[column + 1] - outer[column])) == 0)
       classes[column] = classes[first];
-    else
-      classes[column] = class_count++;
+    else classes[column] = class_count++;
   }
   return classes;
 }

@@ -10,8 +10,8 @@ namespace altfem {
 namespace {
 
 template <class Workspace>
-using KrylovMethod = KrylovResult (*)(const Eigen::SparseMatrix<double>&, const Preconditioner&,
-                                      const Eigen::VectorXd&, Eigen::VectorXd&, const KrylovSettings&, Workspace&);
+using KrylovMethod = KrylovResult (*)(const Eigen::SparseMatrix<double>&, const Preconditioner&, const Eigen::VectorXd&,
+                                      Eigen::VectorXd&, const KrylovSettings&, Workspace&);
 
 template <class Workspace>
 class IterativeSolver final : public LinearSolver {

@@ -26,8 +26,8 @@ bool has_converged(std::string_view method, int iterations, double relative_resi
   if (!std::isfinite(relative_residual)) throw_breakdown(method, iterations, "the residual is not finite");
   if (iterations < settings.max_iterations) return false;
   std::ostringstream message;
-  message << method << " did not converge in " << iterations << " iterations (relative residual "
-          << relative_residual << " > tolerance " << settings.tolerance << ")";
+  message << method << " did not converge in " << iterations << " iterations (relative residual " << relative_residual
+          << " > tolerance " << settings.tolerance << ")";
   throw NumericalError(message.str());
 }
 

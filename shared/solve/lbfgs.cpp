@@ -45,7 +45,8 @@ private:
 };
 
 // −H∇f by the two-loop recursion over the stored pairs (s, y), H₀ = γI.
-Eigen::VectorXd direction(const Eigen::VectorXd& gradient, const std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& pairs) {
+Eigen::VectorXd direction(const Eigen::VectorXd& gradient,
+                          const std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>>& pairs) {
   Eigen::VectorXd q = -gradient;
   std::vector<double> alpha(pairs.size());
   for (size_t i = pairs.size(); i-- > 0;) {
@@ -71,7 +72,8 @@ LbfgsResult minimize_lbfgs(const LbfgsObjective& objective, Eigen::VectorXd& x, 
   const Eigen::VectorXd start = options.scale.size() > 0 ? x.cwiseQuotient(options.scale) : x;
   double norm = 0;
   Point current = minimizer.evaluate(start, norm);
-  if (!std::isfinite(current.value)) throw std::invalid_argument("minimize_lbfgs: the objective is not finite at the start");
+  if (!std::isfinite(current.value))
+    throw std::invalid_argument("minimize_lbfgs: the objective is not finite at the start");
   std::deque<std::pair<Eigen::VectorXd, Eigen::VectorXd>> pairs;
   const auto finish = [&](LbfgsStatus status, const std::string& detail) {
     result.status = status;

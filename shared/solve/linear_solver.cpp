@@ -110,9 +110,8 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
     case LinearSolverKind::pcg:
     case LinearSolverKind::minres:
     case LinearSolverKind::conjugate_residual: {
-      std::unique_ptr<Preconditioner> preconditioner = options.custom_preconditioner
-                                                           ? options.custom_preconditioner()
-                                                           : make_preconditioner(options.preconditioner);
+      std::unique_ptr<Preconditioner> preconditioner =
+          options.custom_preconditioner ? options.custom_preconditioner() : make_preconditioner(options.preconditioner);
       return make_iterative_solver(options.kind, std::move(preconditioner),
                                    KrylovSettings{options.tolerance, options.max_iterations});
     }

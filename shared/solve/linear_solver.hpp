@@ -37,8 +37,8 @@ struct LinearSolverStatistics {
 enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual };
 
 /// Scene names of the kinds, indexed by the enum value.
-inline constexpr std::array<std::string_view, 6> linear_solver_kind_names{"cholmod", "ldlt", "lu", "pcg", "minres",
-                                                                         "conjugate_residual"};
+inline constexpr std::array<std::string_view, 6> linear_solver_kind_names{"cholmod", "ldlt",   "lu",
+                                                                          "pcg",     "minres", "conjugate_residual"};
 
 std::string_view linear_solver_kind_name(LinearSolverKind kind);
 /// The kind called `name` (one of linear_solver_kind_names), or nothing.

@@ -74,7 +74,8 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
   } catch (const NumericalError& error) {
     throw NumericalError(where(step, iteration) + ": " + error.what());
   }
-  if (!direction_.allFinite()) throw NumericalError(where(step, iteration) + ": the linear solve produced non-finite values");
+  if (!direction_.allFinite())
+    throw NumericalError(where(step, iteration) + ": the linear solve produced non-finite values");
   // An iterative solver meets the constrained rows only to its tolerance (a Schwarz
   // block couples them to free DOFs), and the constraints must be met exactly for
   // Newton to stop: they are known, so set them.
@@ -110,8 +111,8 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
     for (int backtrack = 0;; ++backtrack) {
       trial_ = u + alpha * direction_;
       const double trial_value = objective.value(trial_);
-      const bool accepted = !options.line_search ||
-                            (constraints_met ? trial_value <= value + 1e-4 * alpha * slope : std::isfinite(trial_value));
+      const bool accepted = !options.line_search || (constraints_met ? trial_value <= value + 1e-4 * alpha * slope
+                                                                     : std::isfinite(trial_value));
       if (accepted) break;
       // Near the minimum the decrease Armijo asks for falls below the round-off of the
       // energy (a sum of terms of order μ·V): judge the full step by the gradient
@@ -136,8 +137,8 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
   }
 }
 
-NewtonReport NewtonSolver::single_step(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
-                                       const NewtonOptions& options, int step) {
+NewtonReport NewtonSolver::single_step(const Objective& objective, Eigen::VectorXd& u,
+                                       const Eigen::VectorXd& prescribed, const NewtonOptions& options, int step) {
   iterations_of_last_call_ = 0;
   evaluate_gradient(objective, u, step, 0);
   const Eigen::VectorXd increment = prescribed - elimination_.constrained_values(u);

@@ -26,14 +26,14 @@ public:
 struct NewtonOptions {
   double tolerance = 1e-8;  ///< on the free part of the gradient (absolute)
   int max_iterations = 50;
-  bool line_search = true;      ///< Armijo backtracking on the objective
-  bool project_spd = false;     ///< project element Hessians to SPD from the start
+  bool line_search = true;   ///< Armijo backtracking on the objective
+  bool project_spd = false;  ///< project element Hessians to SPD from the start
   int max_backtracks = 40;
 };
 
 struct NewtonReport {
-  int iterations = 0;         ///< linear solves
-  double residual = 0;        ///< final free gradient norm
+  int iterations = 0;   ///< linear solves
+  double residual = 0;  ///< final free gradient norm
 };
 
 /// Damped Newton with Armijo backtracking (Nocedal & Wright, Alg. 3.1) and strong
@@ -66,7 +66,8 @@ private:
   // The objective's gradient into gradient_ / Hessian into matrix_, with a failure
   // (an inverted element) rethrown naming the step and iteration.
   void evaluate_gradient(const Objective& objective, const Eigen::VectorXd& u, int step, int iteration);
-  void assemble_hessian(const Objective& objective, const Eigen::VectorXd& u, bool project_spd, int step, int iteration);
+  void assemble_hessian(const Objective& objective, const Eigen::VectorXd& u, bool project_spd, int step,
+                        int iteration);
 
   LinearSolver& linear_solver_;
   const DirichletElimination& elimination_;

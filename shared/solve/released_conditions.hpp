@@ -25,8 +25,8 @@ public:
   int freed_dofs() const { return static_cast<int>(inner().constrained_dofs().size() - dofs_.size()); }
 
 private:
-  std::vector<int> dofs_;               // the DOFs still constrained
-  std::vector<int> kept_;               // their entries in the inner constrained_dofs() order
+  std::vector<int> dofs_;  // the DOFs still constrained
+  std::vector<int> kept_;  // their entries in the inner constrained_dofs() order
   std::vector<ConstraintHolders> holders_;
 };
 

@@ -15,14 +15,12 @@ namespace {
 // The integrators add the value arrays of the Hessian, the mass and the damping
 // matrix: that is only right when all of them have one pattern.
 void check_same_pattern(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& pattern) {
-  const bool same = mass.rows() == pattern.rows() && mass.cols() == pattern.cols() &&
-                    mass.nonZeros() == pattern.nonZeros() && mass.isCompressed() && pattern.isCompressed() &&
-                    std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1,
-                               mass.outerIndexPtr()) &&
-                    std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(),
-                               mass.innerIndexPtr());
-  if (!same)
-    throw std::logic_error("TimeIntegrator: the discretization's mass matrix and Hessian patterns differ");
+  const bool same =
+      mass.rows() == pattern.rows() && mass.cols() == pattern.cols() && mass.nonZeros() == pattern.nonZeros() &&
+      mass.isCompressed() && pattern.isCompressed() &&
+      std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1, mass.outerIndexPtr()) &&
+      std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(), mass.innerIndexPtr());
+  if (!same) throw std::logic_error("TimeIntegrator: the discretization's mass matrix and Hessian patterns differ");
 }
 
 // Static equilibrium: minimise Ψ(u) − f·u.
@@ -57,8 +55,12 @@ public:
   IncrementalPotential(const Discretization& discretization, double h, const Eigen::VectorXd& inertial_target,
                        const Eigen::VectorXd& previous, const Eigen::SparseMatrix<double>* damping,
                        const Eigen::VectorXd& force)
-      : discretization_(discretization), h_(h), target_(inertial_target), previous_(previous),
-        damping_(damping), force_(force) {}
+      : discretization_(discretization),
+        h_(h),
+        target_(inertial_target),
+        previous_(previous),
+        damping_(damping),
+        force_(force) {}
 
   double value(const Eigen::VectorXd& u) const override {
     const double elastic = discretization_.energy(u);
@@ -80,7 +82,8 @@ public:
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override {
     discretization_.hessian(u, hessian, project_spd);
     auto values = Eigen::Map<Eigen::VectorXd>(hessian.valuePtr(), hessian.nonZeros());
-    values += Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(), hessian.nonZeros()) / (h_ * h_);
+    values +=
+        Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(), hessian.nonZeros()) / (h_ * h_);
     if (damping_) values += Eigen::Map<const Eigen::VectorXd>(damping_->valuePtr(), hessian.nonZeros()) / h_;
   }
   bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
@@ -117,15 +120,15 @@ void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* 
   check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
   discretization_ = &discretization;
   if (linear_solver) linear_solver_ = linear_solver;
-  elimination_ = std::make_unique<DirichletElimination>(discretization.hessian_pattern(), discretization.constrained_dofs());
+  elimination_ =
+      std::make_unique<DirichletElimination>(discretization.hessian_pattern(), discretization.constrained_dofs());
   newton_ = std::make_unique<NewtonSolver>(*linear_solver_, discretization.hessian_pattern(), *elimination_);
   gravity_force_ = discretization.body_force(options_.gravity);
   // The representative load: gravity's, else that of 1 m/s² along each axis.
   const Eigen::VectorXd representative =
       options_.gravity.norm() > 0 ? gravity_force_ : discretization.body_force(Eigen::Vector3d::Ones());
   absolute_tolerance_ = options_.tolerance * elimination_->free_norm(representative);
-  if (!(absolute_tolerance_ > 0))
-    throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
+  if (!(absolute_tolerance_ > 0)) throw InputError("solver: the Newton tolerance is zero (no free DOF carries mass)");
 }
 
 void TimeIntegrator::apply_constraints(State& state) const {
@@ -188,8 +191,8 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
       if (options_.rayleigh_stiffness > 0) discretization_->hessian(previous, damping, true);
       auto values = Eigen::Map<Eigen::VectorXd>(damping.valuePtr(), damping.nonZeros());
       values = options_.rayleigh_stiffness * values +
-               options_.rayleigh_mass * Eigen::Map<const Eigen::VectorXd>(discretization_->mass_matrix().valuePtr(),
-                                                                          damping.nonZeros());
+               options_.rayleigh_mass *
+                   Eigen::Map<const Eigen::VectorXd>(discretization_->mass_matrix().valuePtr(), damping.nonZeros());
     }
     IncrementalPotential potential(*discretization_, h, target, previous, damped ? &damping : nullptr, force);
     const Eigen::VectorXd prescribed = discretization_->prescribed_displacement(next_time);
@@ -234,8 +237,9 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   // The same potentials as Newton, minimised over the free DOFs by L-BFGS with the
   // constrained DOFs set to their prescribed values first.
   if (!discretization_->forces_have_potential())
-    throw InputError("solver: 'lbfgs' minimises an energy, and this discretization is a force model (dg warping): "
-                     "use the 'newton' nonlinear solver");
+    throw InputError(
+        "solver: 'lbfgs' minimises an energy, and this discretization is a force model (dg warping): "
+        "use the 'newton' nonlinear solver");
   const bool is_static = options_.kind == IntegrationScheme::static_equilibrium;
   const double h = options_.time_step;
   const double time = is_static ? state.time : state.time + h;
@@ -285,8 +289,9 @@ StepReport TimeIntegrator::step_lbfgs(State& state) {
   failed_step_.lbfgs_evaluations = result.evaluations;
   if (result.status != LbfgsStatus::converged)
     throw NumericalError("step " + std::to_string(state.step + 1) + ", L-BFGS evaluation " +
-                         std::to_string(result.evaluations) + ": not converged (" + result.detail + "), gradient norm " +
-                         std::to_string(result.gradient_norm) + " > tolerance " + std::to_string(absolute_tolerance_));
+                         std::to_string(result.evaluations) + ": not converged (" + result.detail +
+                         "), gradient norm " + std::to_string(result.gradient_norm) + " > tolerance " +
+                         std::to_string(absolute_tolerance_));
   for (size_t i = 0; i < free.size(); ++i) u[free[i]] = x[static_cast<Eigen::Index>(i)];
   state.displacement = u;
   if (!is_static) {

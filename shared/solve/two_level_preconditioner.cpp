@@ -83,10 +83,8 @@ const LinearSolverStatistics& TwoLevelPreconditioner::coarse_statistics() const 
 }
 
 void TwoLevelPreconditioner::solve_coarse() const {
-  if (coarse_preconditioner_)
-    coarse_preconditioner_->apply(coarse_residual_, coarse_correction_);
-  else
-    coarse_solver_->solve(coarse_residual_, coarse_correction_);
+  if (coarse_preconditioner_) coarse_preconditioner_->apply(coarse_residual_, coarse_correction_);
+  else coarse_solver_->solve(coarse_residual_, coarse_correction_);
 }
 
 void TwoLevelPreconditioner::apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {

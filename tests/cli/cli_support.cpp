@@ -45,7 +45,9 @@ CommandResult run_altfem(const std::vector<std::string>& arguments, const std::s
   return result;
 }
 
-std::filesystem::path source_path(const std::string& relative) { return std::filesystem::path(ALTFEM_SOURCE_DIR) / relative; }
+std::filesystem::path source_path(const std::string& relative) {
+  return std::filesystem::path(ALTFEM_SOURCE_DIR) / relative;
+}
 
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;

@@ -104,7 +104,8 @@ TEST(BadCommandLine, DirectoryInsteadOfSceneFile) {
 
 TEST(BadCommandLine, UnknownMethodNamesTheAvailableOnes) {
   const auto out = fresh_directory("unknown-method") / "run";
-  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "boundary_elements", "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("scenes/cantilever.json").string(), "--method", "boundary_elements", "--out", out.string()});
   expect_bad_input(result, "--method", "available: fem");
   EXPECT_FALSE(std::filesystem::exists(out));
 }

@@ -68,8 +68,8 @@ TEST(Check, UnknownMethodIsBadInput) {
 // box-built shapes keeps them apart and the free box falls freely.
 TEST(GeometryPieces, TheFreeBoxOfTwoBoxesFourMillimetresApartFallsFreely) {
   const auto out = fresh_directory("two_boxes") / "run";
-  const auto result =
-      run_altfem({"run", source_path("tests/cli/scenes/two_boxes.json").string(), "--method", "fem", "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/two_boxes.json").string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_free_fall.py").string() + " " +
                             out.string() + " 0.3 0.104 0 1 0.204 0.1 -9.81 0.01 10";

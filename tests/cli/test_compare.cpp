@@ -42,10 +42,11 @@ TEST(RunSet, OverridesAreAppliedAndBadOnesExitTwoNamingThem) {
 TEST(Compare, RunsReusesReportsFailuresAndRedrawsTheReportFromTheCsv) {
   const auto out = fresh_directory("compare");
   const std::vector<std::string> arguments{
-      "compare", source_path("tests/cli/scenes/tiny_beam.json").string(), "--methods", "fem",
-      "--sweep", "discretization/fem/resolution=[2,1,1],[4,1,1],[0,1,1]",
+      "compare",     source_path("tests/cli/scenes/tiny_beam.json").string(),
+      "--methods",   "fem",
+      "--sweep",     "discretization/fem/resolution=[2,1,1],[4,1,1],[0,1,1]",
       "--reference", "fem:discretization/fem/element=hex20,discretization/fem/resolution=[4,1,1]",
-      "--out", out.string()};
+      "--out",       out.string()};
   const auto first = run_altfem(arguments);
   ASSERT_EQ(first.exit_code, 0) << first.err << first.out;
   EXPECT_NE(first.out.find("4 runs (0 reused, 1 failed)"), std::string::npos) << first.out;
@@ -78,8 +79,8 @@ TEST(Compare, RunsReusesReportsFailuresAndRedrawsTheReportFromTheCsv) {
   // report.md from results.csv alone, in a folder holding nothing else.
   const auto alone = fresh_directory("report-alone");
   std::filesystem::copy_file(out / "results.csv", alone / "results.csv");
-  const std::string command = "/usr/bin/python3 " + source_path("scripts/plot_report.py").string() + " " +
-                              (alone / "results.csv").string();
+  const std::string command =
+      "/usr/bin/python3 " + source_path("scripts/plot_report.py").string() + " " + (alone / "results.csv").string();
   ASSERT_EQ(std::system(command.c_str()), 0);
   EXPECT_EQ(text_of(alone / "report.md"), report);
   EXPECT_TRUE(std::filesystem::exists(alone / "error_vs_time.png"));
@@ -89,7 +90,8 @@ TEST(Compare, RunsReusesReportsFailuresAndRedrawsTheReportFromTheCsv) {
 // so that the report still regenerates from it alone.
 TEST(Compare, TheScenesErrorTargetsTheEqualAccuracyTable) {
   const auto out = fresh_directory("compare-error");
-  const auto result = run_altfem({"compare", source_path("tests/cli/scenes/tiny_beam_error.json").string(), "--out", out.string()});
+  const auto result =
+      run_altfem({"compare", source_path("tests/cli/scenes/tiny_beam_error.json").string(), "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err << result.out;
   const std::string report = text_of(out / "report.md");
   EXPECT_NE(report.find("## Equal accuracy: error ≤ 0.25"), std::string::npos) << report;

@@ -25,29 +25,68 @@ struct Row {
 // A results.csv with the columns plot_report.py reads; `nan` fields are left empty, as
 // write_results_csv leaves an unknown error.
 void write_table(const std::filesystem::path& file, const std::vector<Row>& rows, double report_error) {
-  const std::vector<std::string> columns{
-      "hash", "method", "element", "label", "overrides", "is_reference", "status", "exit_code", "message", "dofs",
-      "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations", "setup_s",
-      "quadrature_s", "assembly_s", "analysis_s", "factorisation_s", "solve_s", "total_s", "wall_s",
-      "peak_memory_mib", "rms_error", "max_error", "relative_rms_error", "report_error", "field_l2_error",
-      "field_h1_error", "scene", "date", "cpu", "cores", "threads", "blas"};
+  const std::vector<std::string> columns{"hash",
+                                         "method",
+                                         "element",
+                                         "label",
+                                         "overrides",
+                                         "is_reference",
+                                         "status",
+                                         "exit_code",
+                                         "message",
+                                         "dofs",
+                                         "elements",
+                                         "quadrature_points",
+                                         "steps",
+                                         "newton_iterations",
+                                         "linear_iterations",
+                                         "setup_s",
+                                         "quadrature_s",
+                                         "assembly_s",
+                                         "analysis_s",
+                                         "factorisation_s",
+                                         "solve_s",
+                                         "total_s",
+                                         "wall_s",
+                                         "peak_memory_mib",
+                                         "rms_error",
+                                         "max_error",
+                                         "relative_rms_error",
+                                         "report_error",
+                                         "field_l2_error",
+                                         "field_h1_error",
+                                         "scene",
+                                         "date",
+                                         "cpu",
+                                         "cores",
+                                         "threads",
+                                         "blas"};
   const auto number = [](double value) { return std::isnan(value) ? std::string() : std::to_string(value); };
   std::ofstream stream(file);
   for (std::size_t k = 0; k < columns.size(); ++k) stream << (k ? "," : "") << columns[k];
   stream << '\n';
   int dofs = 100;
   for (const Row& row : rows) {
-    std::map<std::string, std::string> field{{"method", row.method}, {"element", row.element}, {"label", row.label},
-                                             {"is_reference", row.is_reference ? "1" : "0"}, {"status", "ok"},
-                                             {"exit_code", "0"}, {"steps", "1"}, {"newton_iterations", "1"},
-                                             {"total_s", number(row.total_s)}, {"wall_s", number(row.total_s)},
+    std::map<std::string, std::string> field{{"method", row.method},
+                                             {"element", row.element},
+                                             {"label", row.label},
+                                             {"is_reference", row.is_reference ? "1" : "0"},
+                                             {"status", "ok"},
+                                             {"exit_code", "0"},
+                                             {"steps", "1"},
+                                             {"newton_iterations", "1"},
+                                             {"total_s", number(row.total_s)},
+                                             {"wall_s", number(row.total_s)},
                                              {"field_l2_error", number(row.field_l2_error)},
                                              {"field_h1_error", number(row.field_l2_error)},
                                              {"relative_rms_error", number(row.relative_rms_error)},
                                              {"rms_error", number(row.is_reference ? 0.0 : 1e-5)},
                                              {"max_error", number(row.is_reference ? 0.0 : 2e-5)},
-                                             {"report_error", number(report_error)}, {"scene", "by_hand"},
-                                             {"cores", "2"}, {"threads", "2"}, {"dofs", std::to_string(dofs *= 2)}};
+                                             {"report_error", number(report_error)},
+                                             {"scene", "by_hand"},
+                                             {"cores", "2"},
+                                             {"threads", "2"},
+                                             {"dofs", std::to_string(dofs *= 2)}};
     for (const char* phase : {"setup_s", "quadrature_s", "assembly_s", "analysis_s", "factorisation_s", "solve_s"})
       field[phase] = "0";
     for (const char* count : {"elements", "quadrature_points", "linear_iterations", "peak_memory_mib"})
@@ -60,8 +99,8 @@ void write_table(const std::filesystem::path& file, const std::vector<Row>& rows
 std::string report_of(const std::vector<Row>& rows, double report_error, const std::string& name) {
   const auto out = fresh_directory(name);
   write_table(out / "results.csv", rows, report_error);
-  const std::string command = "/usr/bin/python3 " + source_path("scripts/plot_report.py").string() + " " +
-                              (out / "results.csv").string();
+  const std::string command =
+      "/usr/bin/python3 " + source_path("scripts/plot_report.py").string() + " " + (out / "results.csv").string();
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
   std::ifstream stream(out / "report.md");
   std::stringstream text;

@@ -47,10 +47,10 @@ TEST(DgPreconditioner, AnUnknownNameExitsTwoNamingTheKey) {
 // The sphere sliced by a 2³ grid: 8 cut cells carrying every vertex of the surface mesh.
 TEST(DgPreconditioner, AVertexSpaceLargerThanTheDgSpaceExitsTwoNamingTheKey) {
   const auto out = fresh_directory("dg_preconditioner_not_coarse");
-  const auto result = run_altfem({"run", source_path("scenes/sphere.json").string(), "--method", "dg", "--out",
-                                  (out / "run").string(), "--set", "discretization/dg/mesh=slice", "--set",
-                                  "discretization/dg/slice/resolution=2", "--set", "solver/linear=pcg", "--set",
-                                  "discretization/dg/preconditioner=two_level"});
+  const auto result =
+      run_altfem({"run", source_path("scenes/sphere.json").string(), "--method", "dg", "--out", (out / "run").string(),
+                  "--set", "discretization/dg/mesh=slice", "--set", "discretization/dg/slice/resolution=2", "--set",
+                  "solver/linear=pcg", "--set", "discretization/dg/preconditioner=two_level"});
   EXPECT_EQ(result.exit_code, 2);
   ASSERT_EQ(lines_of(result.err).size(), 1u) << result.err;
   EXPECT_NE(result.err.find("/discretization/dg/preconditioner"), std::string::npos) << result.err;

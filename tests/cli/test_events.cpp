@@ -27,8 +27,8 @@ std::string read_text(const std::filesystem::path& file) {
 
 TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   const auto out = fresh_directory("events-release") / "run";
-  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(),
-                                  "--set", "time/steps=30", "--set", "output/every=10"});
+  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out",
+                                  out.string(), "--set", "time/steps=30", "--set", "output/every=10"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json summary = read_summary(out);
   ASSERT_EQ(summary["events"].size(), 1u);
@@ -54,9 +54,11 @@ TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   // Frames 0, 10, 20, 30: the volume collection lists four.
   const std::string volume = read_text(out / "volume.pvd");
   std::size_t frames = 0;
-  for (std::size_t at = volume.find("<DataSet"); at != std::string::npos; at = volume.find("<DataSet", at + 1)) ++frames;
+  for (std::size_t at = volume.find("<DataSet"); at != std::string::npos; at = volume.find("<DataSet", at + 1))
+    ++frames;
   EXPECT_EQ(frames, 4u);
-  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
+  const std::string check =
+      "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
 }
 
@@ -74,10 +76,9 @@ TEST(Events, AWeakConditionCannotBeReleased) {
 
 TEST(Events, AStaticSceneCannotReleaseItsLastSupport) {
   const auto out = fresh_directory("events-last-support") / "run";
-  const auto result = run_altfem(
-      {"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(), "--set",
-       R"(time={"static": true, "load_steps": 2})", "--set",
-       R"(events=[{"time": 0, "release": "tip"}, {"time": 1, "release": "clamp"}])"});
+  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out",
+                                  out.string(), "--set", R"(time={"static": true, "load_steps": 2})", "--set",
+                                  R"(events=[{"time": 0, "release": "tip"}, {"time": 1, "release": "clamp"}])"});
   EXPECT_EQ(result.exit_code, 2) << result.err;
   const auto lines = lines_of(result.err);
   ASSERT_EQ(lines.size(), 1u) << result.err;
@@ -88,8 +89,9 @@ TEST(Events, AStaticSceneCannotReleaseItsLastSupport) {
 
 TEST(Events, StaticLoadStepsWithAReleaseBetweenThem) {
   const auto out = fresh_directory("events-static") / "run";
-  const auto result = run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(),
-                                  "--set", R"(time={"static": true, "load_steps": 4})", "--set", "events/0/time=2"});
+  const auto result =
+      run_altfem({"run", source_path(held_cantilever).string(), "--method", "fem", "--out", out.string(), "--set",
+                  R"(time={"static": true, "load_steps": 4})", "--set", "events/0/time=2"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json summary = read_summary(out);
   EXPECT_EQ(summary["steps"], 4);

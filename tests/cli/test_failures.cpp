@@ -31,8 +31,8 @@ class ExplicitBlowUp : public testing::TestWithParam<std::string> {};
 
 TEST_P(ExplicitBlowUp, StopsWithExitThreeNamingTheStepAndTheStabilityLimit) {
   const auto out = fresh_directory("explicit") / "run";
-  const auto result = run_altfem({"run", source_path("tests/cli/scenes/" + GetParam()).string(), "--method", "fem",
-                                  "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/" + GetParam()).string(), "--method", "fem", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 3) << result.err;
   EXPECT_NE(result.err.find("warning: time.dt"), std::string::npos) << "no up-front stability warning: " << result.err;
   EXPECT_NE(result.err.find("numerical failure: step "), std::string::npos) << result.err;
@@ -77,8 +77,8 @@ TEST(Issue22, MissingMethodIsOneLineWithThePrefix) {
 
 TEST(Issue22, FailedRunCountsTheIterationsOfItsFailedStep) {
   const auto out = fresh_directory("newton-fails") / "run";
-  const auto result = run_altfem({"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem",
-                                  "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 3);
   const auto summary = summary_of(out);
   EXPECT_GT(summary["newton_iterations"].get<long long>(), 0);
@@ -87,8 +87,8 @@ TEST(Issue22, FailedRunCountsTheIterationsOfItsFailedStep) {
 
 TEST(Issue22, LbfgsReportsEvaluationsUnderItsOwnKey) {
   const auto out = fresh_directory("lbfgs") / "run";
-  const auto result = run_altfem({"run", source_path("tests/cli/scenes/lbfgs_cube.json").string(), "--method", "fem",
-                                  "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/lbfgs_cube.json").string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto summary = summary_of(out);
   EXPECT_EQ(summary["newton_iterations"].get<long long>(), 0);
@@ -105,8 +105,8 @@ TEST(Issue22, StaticProblemWithoutSupportsIsBadInput) {
 
 TEST(Issue22, NearIncompressibleFailureSaysWhyAndWhatHelps) {
   const auto out = fresh_directory("incompressible") / "run";
-  const auto result = run_altfem({"run", source_path("tests/cli/scenes/near_incompressible.json").string(),
-                                  "--method", "fem", "--out", out.string()});
+  const auto result = run_altfem({"run", source_path("tests/cli/scenes/near_incompressible.json").string(), "--method",
+                                  "fem", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 3);
   EXPECT_NE(result.err.find("ill-conditioned"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("higher-order element"), std::string::npos) << result.err;

@@ -17,7 +17,8 @@ namespace {
 nlohmann::json mesh_facts_checked_by_meshio(const std::string& scene, const std::string& method,
                                             const std::vector<std::string>& extra = {}) {
   const auto out = fresh_directory("mesh_" + method);
-  std::vector<std::string> arguments{"mesh", source_path(scene).string(), "--method", method, "--out", out.string(), "--json"};
+  std::vector<std::string> arguments{"mesh",  source_path(scene).string(), "--method", method, "--out", out.string(),
+                                     "--json"};
   arguments.insert(arguments.end(), extra.begin(), extra.end());
   const CommandResult result = run_altfem(arguments);
   EXPECT_EQ(result.exit_code, 0) << result.err;
@@ -83,12 +84,13 @@ TEST(MeshCommand, OctreeGradedCubeIsWrittenWithCoarseCells) {
 // fcm's mesh is its kept background cells, as `run` builds them.
 TEST(MeshCommand, FcmMeshIsTheKeptBackgroundCells) {
   const auto out = fresh_directory("mesh-fcm") / "sphere.vtu";
-  const CommandResult result =
-      run_altfem({"mesh", source_path("scenes/sphere.json").string(), "--method", "fcm", "--out", out.string(), "--json"});
+  const CommandResult result = run_altfem(
+      {"mesh", source_path("scenes/sphere.json").string(), "--method", "fcm", "--out", out.string(), "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json facts = nlohmann::json::parse(result.out);
   EXPECT_GT(facts["cells"]["cut"].get<int>(), 0);
-  EXPECT_EQ(facts["elements"]["hex20"].get<int>(), facts["cells"]["inside"].get<int>() + facts["cells"]["cut"].get<int>());
+  EXPECT_EQ(facts["elements"]["hex20"].get<int>(),
+            facts["cells"]["inside"].get<int>() + facts["cells"]["cut"].get<int>());
   EXPECT_LT(facts["cut_cell_points"]["final"].get<long long>(), facts["cut_cell_points"]["initial"].get<long long>());
   EXPECT_TRUE(std::filesystem::exists(out));
 }
@@ -98,8 +100,8 @@ TEST(MeshCommand, UnbuiltSourcesAreBadInputWithOneLine) {
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fcm", "--source", "slice"},
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "dg", "--source", "slicing"},
            {"mesh", source_path("scenes/cantilever.json").string(), "--method", "fem", "--source", "slice"},
-           {"mesh", source_path("scenes/cantilever.json").string(), "--method", "dg", "--source", "slice", "--resolution",
-            "0"}}) {
+           {"mesh", source_path("scenes/cantilever.json").string(), "--method", "dg", "--source", "slice",
+            "--resolution", "0"}}) {
     const CommandResult result = run_altfem(arguments);
     EXPECT_EQ(result.exit_code, 2);
     EXPECT_EQ(lines_of(result.err).size(), 1u) << result.err;

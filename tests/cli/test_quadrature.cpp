@@ -47,8 +47,9 @@ TEST(QuadratureCommand, CellWritesRulesAsVtuPoints) {
   EXPECT_LE(report["final_points"].get<int>(), 20);
   EXPECT_GT(report["initial_points"].get<int>(), report["final_points"].get<int>());
   // The simplified rule's physical weights add up to the clipped volume (meshio reads it).
-  const std::string script = "import meshio,sys; m=meshio.read(sys.argv[1]); w=m.point_data['physical_weight']; "
-                             "sys.exit(0 if abs(w.sum()-float(sys.argv[2]))<=1e-12*float(sys.argv[2]) and w.min()>0 else 1)";
+  const std::string script =
+      "import meshio,sys; m=meshio.read(sys.argv[1]); w=m.point_data['physical_weight']; "
+      "sys.exit(0 if abs(w.sum()-float(sys.argv[2]))<=1e-12*float(sys.argv[2]) and w.min()>0 else 1)";
   const std::string command = "/usr/bin/python3 -c \"" + script + "\" " + (folder / "simplified_rule.vtu").string() +
                               " " + report["clipped_volume"].dump();
   EXPECT_EQ(std::system(command.c_str()), 0) << command;
@@ -75,7 +76,8 @@ TEST(QuadratureConditioning, PrintsTheFigure5Rows) {
   // the unpreconditioned κ orders of magnitude below the plain run's at 2^-30.
   EXPECT_GT(rows.back()["ghost_penalty"].get<double>(), 0.0);
   EXPECT_EQ(rows.back()["stabilization"].get<double>(), 0.0);
-  EXPECT_LT(1e6 * rows.back()["condition_number"]["none"].get<double>(), rows[9]["condition_number"]["none"].get<double>());
+  EXPECT_LT(1e6 * rows.back()["condition_number"]["none"].get<double>(),
+            rows[9]["condition_number"]["none"].get<double>());
 }
 
 TEST(QuadratureConditioning, GhostPenaltyMustBePositive) {
@@ -87,7 +89,8 @@ TEST(QuadratureConditioning, GhostPenaltyMustBePositive) {
 TEST(QuadratureConditioning, UnknownCellIsBadInput) {
   const CommandResult result = run_altfem({"quadrature", "conditioning", "--cell", "tet20"});
   EXPECT_EQ(result.exit_code, 2);
-  EXPECT_NE(result.err.find("--cell: expected tet4, tet10, hex8 or hex20, got 'tet20'"), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("--cell: expected tet4, tet10, hex8 or hex20, got 'tet20'"), std::string::npos)
+      << result.err;
 }
 
 }  // namespace

@@ -17,7 +17,8 @@ nlohmann::json read_summary(const std::filesystem::path& folder) {
 
 TEST(Run, CantileverWritesTheSummaryContractAndReadableFiles) {
   const auto out = fresh_directory("cantilever") / "run";
-  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--out", out.string()});
+  const auto result =
+      run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto summary = read_summary(out);
   for (const char* key : {"scene", "method", "options", "dofs", "elements", "quadrature_points", "timings_s", "counts",
@@ -32,13 +33,15 @@ TEST(Run, CantileverWritesTheSummaryContractAndReadableFiles) {
   EXPECT_EQ(summary["counts"]["analyses"], 1);
   EXPECT_EQ(summary["counts"]["factorisations"], 1);
   EXPECT_TRUE(std::filesystem::exists(out / "log.txt"));
-  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
+  const std::string check =
+      "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
 }
 
 TEST(Run, NewtonReportsOneAnalysisAndOneFactorisationPerIteration) {
   const auto out = fresh_directory("cube") / "run";
-  const auto result = run_altfem({"run", source_path("scenes/cube_msh.json").string(), "--method", "fem", "--out", out.string()});
+  const auto result =
+      run_altfem({"run", source_path("scenes/cube_msh.json").string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const auto summary = read_summary(out);
   const int iterations = summary["newton_iterations"];
@@ -49,8 +52,8 @@ TEST(Run, NewtonReportsOneAnalysisAndOneFactorisationPerIteration) {
 
 TEST(Run, NewtonFailureExitsThreeNamingStepAndIteration) {
   const auto out = fresh_directory("newton-fails") / "run";
-  const auto result =
-      run_altfem({"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem", "--out", out.string()});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 3) << result.err;
   const auto lines = lines_of(result.err);
   ASSERT_EQ(lines.size(), 1u) << result.err;

@@ -30,7 +30,7 @@ namespace {
 struct SceneRun {
   std::string scene;  ///< file name under scenes/
   std::string method;
-  bool slice;         ///< dg: the default mesh is expected to be sliced
+  bool slice;  ///< dg: the default mesh is expected to be sliced
 };
 
 // Names a parameter by its scene and method in test output (instead of its bytes).
@@ -45,8 +45,9 @@ nlohmann::json read_json(const std::filesystem::path& file) {
 // a box, unless the scene's dg block names the mesh or a converted mesh's keys.
 bool sliced_by_default(const nlohmann::json& scene) {
   const nlohmann::json& geometry = scene["geometry"];
-  const nlohmann::json dg = scene.contains("discretization") ? scene["discretization"].value("dg", nlohmann::json::object())
-                                                              : nlohmann::json::object();
+  const nlohmann::json dg = scene.contains("discretization")
+                                ? scene["discretization"].value("dg", nlohmann::json::object())
+                                : nlohmann::json::object();
   for (const char* key : {"mesh", "element", "resolution", "max_cell_size"})
     if (dg.contains(key)) return dg.value("mesh", "") == "slice";
   return geometry.contains("surface") || (geometry.contains("shape") && !geometry["shape"].contains("box"));
@@ -61,8 +62,9 @@ std::vector<SceneRun> scene_runs() {
     for (const char* method : {"fem", "fcm", "harmonic"}) runs.push_back({name, method, false});
     runs.push_back({name, "dg", slice});
   }
-  std::sort(runs.begin(), runs.end(),
-            [](const SceneRun& a, const SceneRun& b) { return std::tie(a.scene, a.method) < std::tie(b.scene, b.method); });
+  std::sort(runs.begin(), runs.end(), [](const SceneRun& a, const SceneRun& b) {
+    return std::tie(a.scene, a.method) < std::tie(b.scene, b.method);
+  });
   return runs;
 }
 
@@ -73,8 +75,8 @@ TEST_P(ShippedScene, RunsWithExitZeroAndFiniteOutput) {
   const std::filesystem::path scene_file = source_path("scenes/" + run.scene);
   const nlohmann::json scene = read_json(scene_file);
   const auto out = fresh_directory("scene_" + run.method) / run.scene;
-  std::vector<std::string> arguments{"run", scene_file.string(), "--method", run.method, "--out", out.string(),
-                                     "--set", "output/volume=false"};
+  std::vector<std::string> arguments{"run",   scene_file.string(), "--method", run.method,
+                                     "--out", out.string(),        "--set",    "output/volume=false"};
   const std::string block = "discretization/" + run.method + "/";
   if (run.slice) arguments.insert(arguments.end(), {"--set", block + "slice/resolution=4"});
   const nlohmann::json discretization = scene.value("discretization", nlohmann::json::object());
@@ -119,9 +121,9 @@ INSTANTIATE_TEST_SUITE_P(EveryMethod, ShippedScene, testing::ValuesIn(scene_runs
 // negative weights and made the lumped mass of 19 nodes negative (exit 1, "DiagonalMass").
 TEST(PolyhedralScene, HarmonicRunsOnTheSlicedBunny) {
   const auto out = fresh_directory("polyhedral_harmonic_slice") / "bunny";
-  const CommandResult result =
-      run_altfem({"run", source_path("scenes/bunny.json").string(), "--method", "harmonic", "--out", out.string(), "--set",
-                  "discretization/harmonic/mesh=slice", "--set", "output/volume=false", "--set", "time/steps=1"});
+  const CommandResult result = run_altfem({"run", source_path("scenes/bunny.json").string(), "--method", "harmonic",
+                                           "--out", out.string(), "--set", "discretization/harmonic/mesh=slice",
+                                           "--set", "output/volume=false", "--set", "time/steps=1"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "ok");

@@ -17,9 +17,9 @@ namespace {
 
 int free_fall_check(bool topology_aware) {
   const auto out = fresh_directory(topology_aware ? "two_boxes_fcm_pieces" : "two_boxes_fcm_glued") / "run";
-  const auto result = run_altfem({"run", source_path("tests/cli/scenes/two_boxes.json").string(), "--method", "fcm",
-                                  "--out", out.string(), "--set",
-                                  std::string("discretization/fcm/topology_aware=") + (topology_aware ? "true" : "false")});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/two_boxes.json").string(), "--method", "fcm", "--out", out.string(),
+       "--set", std::string("discretization/fcm/topology_aware=") + (topology_aware ? "true" : "false")});
   EXPECT_EQ(result.exit_code, 0) << result.err;
   // The grid puts no cell across the gap whole, but nodes next to it get a copy per box.
   std::ifstream summary_file(out / "summary.json");

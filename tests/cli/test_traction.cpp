@@ -16,7 +16,8 @@ void expect_finite_run(const std::string& scene, const std::string& name) {
   const auto out = fresh_directory(name) / "run";
   const auto result = run_altfem({"run", source_path(scene).string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
+  const std::string check =
+      "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json, or a field is not finite";
   // log.txt: step time dofs iterations linear_iterations residual total_energy max_von_mises.
   std::ifstream log(out / "log.txt");

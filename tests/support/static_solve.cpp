@@ -86,10 +86,11 @@ Eigen::VectorXd solve_lagrange_static(const VolumeMesh& mesh, const Material& ma
   load.pointer = "/loads/traction/0";
   const BoundarySurface boundary = boundary_surface(mesh);
   const LagrangeBasisEvaluator evaluator(mesh);
-  const Eigen::AlignedBox3d bounds(mesh.nodes.colwise().minCoeff().transpose(), mesh.nodes.colwise().maxCoeff().transpose());
+  const Eigen::AlignedBox3d bounds(mesh.nodes.colwise().minCoeff().transpose(),
+                                   mesh.nodes.colwise().maxCoeff().transpose());
   const double tolerance = region_tolerance(bounds);
-  const SurfaceTractionLoad traction({load}, boundary.surface, evaluator, discretization->dof_count(), tolerance, "test",
-                                     lagrange_surface_lift(mesh, boundary));
+  const SurfaceTractionLoad traction({load}, boundary.surface, evaluator, discretization->dof_count(), tolerance,
+                                     "test", lagrange_surface_lift(mesh, boundary));
   return solve_static(*discretization, {traction}, 1e-12);
 }
 

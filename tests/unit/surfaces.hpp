@@ -17,8 +17,8 @@ inline SurfaceMesh box_surface(const Eigen::Vector3d& low, const Eigen::Vector3d
   for (int v = 0; v < 8; ++v)
     box.vertices.row(v) << (v & 1 ? high.x() : low.x()), (v & 2 ? high.y() : low.y()), (v & 4 ? high.z() : low.z());
   box.triangles.resize(12, 3);
-  box.triangles << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7,
-      1, 7, 5;
+  box.triangles << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1,
+      7, 5;
   return box;
 }
 
@@ -30,15 +30,15 @@ inline SurfaceMesh torus(double major, double minor, int u_count, int v_count, c
     for (int j = 0; j < v_count; ++j) {
       const double u = 2 * pi * i / u_count, v = 2 * pi * j / v_count;
       surface.vertices.row(i * v_count + j) =
-          (centre + Eigen::Vector3d((major + minor * std::cos(v)) * std::cos(u), (major + minor * std::cos(v)) * std::sin(u),
-                                    minor * std::sin(v)))
+          (centre + Eigen::Vector3d((major + minor * std::cos(v)) * std::cos(u),
+                                    (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v)))
               .transpose();
     }
   surface.triangles.resize(2 * u_count * v_count, 3);
   for (int i = 0; i < u_count; ++i)
     for (int j = 0; j < v_count; ++j) {
-      const int a = i * v_count + j, b = ((i + 1) % u_count) * v_count + j, c = ((i + 1) % u_count) * v_count + (j + 1) % v_count,
-                d = i * v_count + (j + 1) % v_count;
+      const int a = i * v_count + j, b = ((i + 1) % u_count) * v_count + j,
+                c = ((i + 1) % u_count) * v_count + (j + 1) % v_count, d = i * v_count + (j + 1) % v_count;
       surface.triangles.row(2 * (i * v_count + j)) << a, b, c;
       surface.triangles.row(2 * (i * v_count + j) + 1) << a, c, d;
     }

@@ -30,9 +30,8 @@ struct AssemblyProblem {
   Eigen::VectorXd displacement(const Eigen::Matrix3d& G, double noise, unsigned seed) const {
     std::mt19937 random(seed);
     std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    Eigen::VectorXd u = nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
-      return (G - Eigen::Matrix3d::Identity()) * x;
-    });
+    Eigen::VectorXd u = nodal_values(
+        mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return (G - Eigen::Matrix3d::Identity()) * x; });
     for (Eigen::Index i = 0; i < u.size(); ++i) u[i] += noise * cell_size * uniform(random);
     return u;
   }

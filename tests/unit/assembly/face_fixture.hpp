@@ -63,7 +63,8 @@ inline void add_clamped_face(TabulatedFaces& faces, int strength) {
   for (Eigen::Index q = 0; q < points; ++q) {
     weights[q] = rule.weights[q] / 4;
     normals.row(q) << -1, 0, 0;
-    minus.row(q) = monomials(0, Eigen::Vector3d(0.0, 0.5 + rule.points(q, 0) / 2, 0.5 + rule.points(q, 1) / 2)).transpose();
+    minus.row(q) =
+        monomials(0, Eigen::Vector3d(0.0, 0.5 + rule.points(q, 0) / 2, 0.5 + rule.points(q, 1) / 2)).transpose();
     gradients_minus.block<4, 3>(4 * q, 0) = monomial_gradients();
   }
   faces.add(basis, weights, normals, minus, plus, gradients_minus, gradients_plus, 0, -1);
@@ -124,7 +125,8 @@ inline TabulatedFaces grid_faces(int n, const std::vector<int>& cell_sizes, int 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i)
-        for (const Eigen::Vector3i& step : {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, 0, 1)}) {
+        for (const Eigen::Vector3i& step :
+             {Eigen::Vector3i(1, 0, 0), Eigen::Vector3i(0, 1, 0), Eigen::Vector3i(0, 0, 1)}) {
           const Eigen::Vector3i other = Eigen::Vector3i(i, j, k) + step;
           if (other.maxCoeff() >= n) continue;
           const int minus = cell(i, j, k), plus = cell(other.x(), other.y(), other.z());

@@ -19,7 +19,8 @@ public:
   template <int N>
   double energy(const FaceView& face, const kernel::NodeMatrix<N>& u) const {
     double total = 0;
-    for (int q = 0; q < face.point_count(); ++q) total += face.weights[q] * std::pow(jump(face, u, q).squaredNorm(), 2) / 4;
+    for (int q = 0; q < face.point_count(); ++q)
+      total += face.weights[q] * std::pow(jump(face, u, q).squaredNorm(), 2) / 4;
     return total;
   }
   template <int N>
@@ -45,7 +46,9 @@ public:
   }
 
 private:
-  static double trace_jump(const FaceView& face, int q, int a) { return face.values_minus(q, a) - face.values_plus(q, a); }
+  static double trace_jump(const FaceView& face, int q, int a) {
+    return face.values_minus(q, a) - face.values_plus(q, a);
+  }
   template <int N>
   static Eigen::RowVector3d jump(const FaceView& face, const kernel::NodeMatrix<N>& u, int q) {
     Eigen::RowVector3d value = Eigen::RowVector3d::Zero();

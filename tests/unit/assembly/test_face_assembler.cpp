@@ -75,7 +75,8 @@ TEST(FaceAssembler, JumpPenaltyBetweenTwoCubesMatchesHandComputation) {
   EXPECT_NEAR(stiffness(3, 6), 0.0, 1e-14);  // x- and y-monomials of cube 0: ∫ s = 0
   // A rigid translation has no jump.
   Eigen::VectorXd translation(24);
-  for (int a = 0; a < 8; ++a) translation.segment<3>(3 * a) = (a % 4 == 0) ? Eigen::Vector3d(1, -2, 3) : Eigen::Vector3d::Zero();
+  for (int a = 0; a < 8; ++a)
+    translation.segment<3>(3 * a) = (a % 4 == 0) ? Eigen::Vector3d(1, -2, 3) : Eigen::Vector3d::Zero();
   EXPECT_NEAR(term.assembler.energy(translation), 0.0, 1e-14);
 }
 

@@ -29,7 +29,8 @@ TEST_P(MeanStress, HomogeneousDeformationGivesTheExactCauchyStressInEveryElement
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, MeanStress,
-                         ::testing::Values(ElementType::tet4, ElementType::tet10, ElementType::hex8, ElementType::hex20),
+                         ::testing::Values(ElementType::tet4, ElementType::tet10, ElementType::hex8,
+                                           ElementType::hex20),
                          [](const auto& info) { return std::string(element_name(info.param)); });
 
 }  // namespace

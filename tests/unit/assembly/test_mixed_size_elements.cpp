@@ -56,8 +56,7 @@ DenseReference dense_reference(const TabulatedElements& elements, const Material
     for (int q = 0; q < element.point_count(); ++q) {
       const auto gradients = element.gradients_at(q);
       Eigen::Matrix3d F = Eigen::Matrix3d::Identity();
-      for (int a = 0; a < element.basis_count(); ++a)
-        F += u.segment<3>(3 * element.basis[a]) * gradients.row(a);
+      for (int a = 0; a < element.basis_count(); ++a) F += u.segment<3>(3 * element.basis[a]) * gradients.row(a);
       Eigen::Matrix3d P;
       Matrix9d dPdF;
       material.pk1_and_tangent(F, P, dPdF);

@@ -11,11 +11,11 @@
 #include <cstdlib>
 #include <new>
 
+#include "shared/solve/additive_schwarz_preconditioner.hpp"
+#include "shared/solve/two_level_preconditioner.hpp"
 #include "tests/unit/assembly/assembly_fixture.hpp"
 #include "tests/unit/assembly/face_fixture.hpp"
 #include "tests/unit/assembly/face_term.hpp"
-#include "shared/solve/additive_schwarz_preconditioner.hpp"
-#include "shared/solve/two_level_preconditioner.hpp"
 
 extern "C" {
 void* __libc_malloc(size_t size);
@@ -158,7 +158,6 @@ TEST_P(SecondAssembly, AllocatesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(ElasticAssembler, SecondAssembly, ::testing::Values(ElementType::tet10, ElementType::hex20),
                          [](const auto& info) { return std::string(element_name(info.param)); });
-
 
 TEST(FaceAssembler, SecondAssemblyAllocatesNothing) {
   // Faces of 8 and 20 functions (fixed-size paths) and of 10, 12, 14 and 16 (the

@@ -54,7 +54,6 @@ INSTANTIATE_TEST_SUITE_P(ElasticAssembler, ThreadsOfType,
                          ::testing::Values(ElementType::tet10, ElementType::hex20, ElementType::hex27),
                          [](const auto& info) { return std::string(element_name(info.param)); });
 
-
 TEST(FaceAssembler, OneAndTwoThreadsBitIdentical) {
   const int saved = omp_get_max_threads();
   omp_set_num_threads(2);  // the assembler sizes its per-thread scratch for this

@@ -21,7 +21,8 @@ TEST(ComparePlan, ParsesSweepsAndReference) {
   EXPECT_EQ(sweep.values[1], json::array({20, 2, 2}));
   EXPECT_THROW(parse_sweep("discretization/fem/element=tet4,,hex8"), InputError);
   EXPECT_THROW(parse_sweep("novalues"), InputError);
-  const ReferenceSpec reference = parse_reference("fem:discretization/fem/element=hex27,discretization/fem/resolution=[8,2,2]");
+  const ReferenceSpec reference =
+      parse_reference("fem:discretization/fem/element=hex27,discretization/fem/resolution=[8,2,2]");
   EXPECT_EQ(reference.method, "fem");
   ASSERT_EQ(reference.overrides.size(), 2u);
   EXPECT_EQ(reference.overrides[1].value, json::array({8, 2, 2}));
@@ -32,7 +33,8 @@ TEST(ComparePlan, ParsesSweepsAndReference) {
 TEST(ComparePlan, ExpandsTheProductAndAppliesMethodKeysToTheirMethodOnly) {
   ComparePlan plan;
   plan.methods = {"fem", "dg"};
-  plan.sweeps = {parse_sweep("discretization/fem/element=tet4,hex8"), parse_sweep("material/poisson_ratio=0.3,0.4,0.45")};
+  plan.sweeps = {parse_sweep("discretization/fem/element=tet4,hex8"),
+                 parse_sweep("material/poisson_ratio=0.3,0.4,0.45")};
   plan.reference = parse_reference("fem:discretization/fem/element=hex27");
   const auto configurations = expand_configurations(plan);
   // fem: 2 × 3; dg: the scene-wide sweep only, 3; the reference last.

@@ -52,8 +52,9 @@ TEST(SceneOverride, ErrorsNameTheAssignment) {
 }
 
 TEST(SceneOverride, OverridesAreValidatedLikeTheScene) {
-  const Scene scene = parse_scene(beam, "beam.json", {parse_scene_override("discretization/fem/resolution=[8,2,2]"),
-                                                      parse_scene_override("discretization/fem/element=tet4")});
+  const Scene scene = parse_scene(beam, "beam.json",
+                                  {parse_scene_override("discretization/fem/resolution=[8,2,2]"),
+                                   parse_scene_override("discretization/fem/element=tet4")});
   EXPECT_EQ(fem_spec(scene).resolution, Eigen::Vector3i(8, 2, 2));
   EXPECT_EQ(fem_spec(scene).element, ElementType::tet4);
   try {

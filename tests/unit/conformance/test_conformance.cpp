@@ -73,13 +73,14 @@ protected:
     built.geometry = load_scene_geometry(built.scene);
     built.method = GetParam().factory(built.scene, built.geometry);
     const MaterialSpec& spec = built.scene.material;
-    built.material = make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio,
-                                   spec.density);
+    built.material =
+        make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio, spec.density);
     return built;
   }
   // The volume the method integrates: ∫ρ·1 / ρ through its load vector.
   static double volume(const Built& built) {
-    const Eigen::VectorXd ones = built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
+    const Eigen::VectorXd ones =
+        built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
     return ones.dot(built.method->discretization().body_force(Eigen::Vector3d::UnitX())) / built.scene.material.density;
   }
   static Eigen::VectorXd gradient(const Built& built, const Eigen::VectorXd& u) {
@@ -155,7 +156,8 @@ TEST_P(Conformance, FieldQuadratureIntegratesLoadsAndMeasuresErrors) {
   const VectorExpression force({"x + 2*y", "3*z - 1", "0.5*x + 4"}, {}, "scene", "/loads/body_force");
   const int dofs = built.method->discretization().dof_count();
   const Eigen::VectorXd load = integrate_against_basis(*loads, evaluate_at_points(force, loads->points, 0.0), dofs);
-  const Eigen::VectorXd ones = built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
+  const Eigen::VectorXd ones =
+      built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
   const Eigen::Vector3d c = built.geometry.bounds.center();
   const double V = volume(built);
   const double expected = V * ((c.x() + 2 * c.y()) + (3 * c.z() - 1) + (0.5 * c.x() + 4));
@@ -203,8 +205,8 @@ TEST_P(Conformance, RunWritesACompleteSummaryAndReadableOutput) {
     EXPECT_TRUE(summary["timings_s"].contains(key)) << key;
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_TRUE(all_finite(summary));
-  const std::string check = "/usr/bin/python3 " + std::string(ALTFEM_SOURCE_DIR) + "/tests/cli/check_run_output.py " +
-                            out.string();
+  const std::string check =
+      "/usr/bin/python3 " + std::string(ALTFEM_SOURCE_DIR) + "/tests/cli/check_run_output.py " + out.string();
   EXPECT_EQ(std::system(check.c_str()), 0) << "meshio disagrees with summary.json (see output above)";
 }
 
@@ -215,7 +217,8 @@ TEST_P(Conformance, BadDiscretizationBlockIsOneLineOfBadInput) {
   const auto file = folder / ("bad_block_" + GetParam().name + ".json");
   std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [1, 1, 1] } } },
     "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.3 },
-    "discretization": { ")" << GetParam().name << R"(": { "no_such_key": 1 } } })";
+    "discretization": { ")"
+                      << GetParam().name << R"(": { "no_such_key": 1 } } })";
   try {
     // The factory resolves its own block: a method built without the CLI checks it too.
     const Scene scene = load_scene(file);

@@ -13,7 +13,7 @@ namespace altfem::test {
 
 namespace {
 
-constexpr int monomials = 4;   // 1, x, y, z
+constexpr int monomials = 4;    // 1, x, y, z
 constexpr double penalty = 20;  // η of Kaufmann et al. 2009 eq. (20), relative to E
 
 // One hexahedron and its monomials.
@@ -130,13 +130,15 @@ private:
   // ElementBasisEvaluator: the embedding's view of the two hexahedra.
   int element_count() const override { return 2; }
   Eigen::AlignedBox3d element_bounds(int e) const override { return hexahedra_[e].box; }
-  bool evaluate_inside(int e, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+  bool evaluate_inside(int e, const Eigen::Vector3d& x, std::vector<int>& basis,
+                       std::vector<double>& values) const override {
     const double slack = 1e-9 * hexahedra_[e].size();
     if (hexahedra_[e].box.exteriorDistance(x) > slack) return false;
     fill(e, x, basis, values);
     return true;
   }
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override {
     const int e = hexahedra_[0].box.exteriorDistance(x) <= hexahedra_[1].box.exteriorDistance(x) ? 0 : 1;
     fill(e, x, basis, values);
     return hexahedra_[e].box.exteriorDistance(x);
@@ -251,8 +253,8 @@ private:
       surface.vertices.row(corner) = box.corner(static_cast<Eigen::AlignedBox3d::CornerType>(corner)).transpose();
     // Corner bits: x = 1, y = 2, z = 4; outward triangles of the six faces.
     surface.triangles.resize(12, 3);
-    surface.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1,
-        3, 5, 3, 7, 5;
+    surface.triangles << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3,
+        5, 3, 7, 5;
     return surface;
   }
 

@@ -69,8 +69,8 @@ TEST(ClipConvex, CubeCutByTetrahedronPlanes) {
   const TetrahedronCorners big = tetrahedron({-1, -1, -1}, {5, -1, -1}, {-1, 5, -1}, {-1, -1, 5});
   EXPECT_NEAR(volume(clip_tetrahedron(big, hexahedron_clip_planes(box_corners({0, 0, 0}, {1, 1, 1})))), 1.0, 1e-15);
   // The unit cube [0,1]³ as Kuhn tetrahedron clipped by the corner tetrahedron's planes.
-  const auto corner_planes = tetrahedron_clip_planes(
-      (Eigen::MatrixXd(4, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1).finished());
+  const auto corner_planes =
+      tetrahedron_clip_planes((Eigen::MatrixXd(4, 3) << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1).finished());
   const TetrahedronCorners kuhn = tetrahedron({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {1, 1, 1});
   // Its part with x + y + z <= 1 is the tetrahedron (0,0,0),(1,0,0),(1/2,1/2,0),(1/3,1/3,1/3).
   EXPECT_NEAR(volume(clip_tetrahedron(kuhn, corner_planes)), 1.0 / 36.0, 1e-16);

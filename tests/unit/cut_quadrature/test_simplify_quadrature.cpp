@@ -22,8 +22,8 @@ QuadratureRule random_rule(int count, unsigned seed) {
   rule.points.resize(count, 3);
   rule.weights.resize(count);
   for (int i = 0; i < count; ++i) {
-    rule.points.row(i) = Eigen::RowVector3d(0.7 + 0.02 * unit(generator), -0.3 + 0.05 * unit(generator),
-                                            0.1 + 0.01 * unit(generator));
+    rule.points.row(i) =
+        Eigen::RowVector3d(0.7 + 0.02 * unit(generator), -0.3 + 0.05 * unit(generator), 0.1 + 0.01 * unit(generator));
     rule.weights(i) = 1e-6 * (0.1 + unit(generator));
   }
   rule.strength = 4;

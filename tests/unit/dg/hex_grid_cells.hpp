@@ -21,7 +21,8 @@ inline GridCells hex_grid_cells(int n) {
       for (int i = 0; i < n; ++i) {
         Polyhedron cell;
         cell.vertices.resize(8, 3);
-        for (int v = 0; v < 8; ++v) cell.vertices.row(v) << h * (i + (v & 1)), h * (j + ((v >> 1) & 1)), h * (k + ((v >> 2) & 1));
+        for (int v = 0; v < 8; ++v)
+          cell.vertices.row(v) << h * (i + (v & 1)), h * (j + ((v >> 1) & 1)), h * (k + ((v >> 2) & 1));
         cell.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
         // The faces x = max, y = max, z = max of this cell (shared with the next cell or on
         // the boundary), and x/y/z = min on the boundary.

@@ -19,7 +19,8 @@ double relative_difference(const Eigen::SparseMatrix<double>& a, const Eigen::Sp
   const Eigen::SparseMatrix<double> difference = a - b;
   double largest = 0, scale = 0;
   for (int k = 0; k < difference.outerSize(); ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(difference, k); it; ++it) largest = std::max(largest, std::abs(it.value()));
+    for (Eigen::SparseMatrix<double>::InnerIterator it(difference, k); it; ++it)
+      largest = std::max(largest, std::abs(it.value()));
   for (int k = 0; k < b.outerSize(); ++k)
     for (Eigen::SparseMatrix<double>::InnerIterator it(b, k); it; ++it) scale = std::max(scale, std::abs(it.value()));
   return largest / scale;
@@ -165,7 +166,7 @@ TEST(CellSimilarity, KeysDifferingBeyondTheToleranceOpenNewClasses) {
     return SimilarityKey{{material}, {x, 0.25, -0.5}, 1.0, similarity_tolerance(1.0, 1.0, 1e-12)};
   };
   EXPECT_TRUE(classes.classify(key(0.125, 0)).created);
-  EXPECT_EQ(classes.classify(key(0.125 + 1e-13, 0)).index, 0);  // within tolerance
+  EXPECT_EQ(classes.classify(key(0.125 + 1e-13, 0)).index, 0);   // within tolerance
   EXPECT_TRUE(classes.classify(key(0.125 + 1e-10, 0)).created);  // beyond it
   EXPECT_TRUE(classes.classify(key(0.125, 1)).created);          // another structure
   EXPECT_EQ(classes.class_count(), 3);

@@ -28,13 +28,15 @@ std::filesystem::path write_bar_scene(const std::string& name, const std::string
   std::filesystem::create_directories(folder);
   const auto file = folder / (name + ".json");
   std::ofstream(file) << R"({ "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [2, 1, 1] } } },
-    "material": )" << material << R"(,
+    "material": )" << material
+                      << R"(,
     "boundary_conditions": [
       { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } },
       { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } },
         "motion": { "kind": "translate", "displacement": [0.02, 0, 0], "duration": 1 } } ],
     "time": { "static": true },
-    "discretization": { "dg": )" << dg << R"( } })";
+    "discretization": { "dg": )"
+                      << dg << R"( } })";
   return file;
 }
 
@@ -74,8 +76,9 @@ Eigen::VectorXd solve(const Discretization& discretization, const Eigen::VectorX
 // t = ½): affine, in every degree's space, so the consistent IP flux reproduces it.
 TEST(DgMethod, WeakMovingConditionsReproduceTheAffineSolution) {
   for (int degree : {1, 2}) {
-    const Built built = build(write_bar_scene("pulled_bar_" + std::to_string(degree), linear_no_contraction,
-                                              R"({ "degree": )" + std::to_string(degree) + R"(, "resolution": [2, 1, 1] })"));
+    const Built built =
+        build(write_bar_scene("pulled_bar_" + std::to_string(degree), linear_no_contraction,
+                              R"({ "degree": )" + std::to_string(degree) + R"(, "resolution": [2, 1, 1] })"));
     const Discretization& discretization = built.method->discretization();
     EXPECT_TRUE(discretization.imposes_conditions_weakly());
     EXPECT_TRUE(discretization.constrained_dofs().empty());
@@ -116,8 +119,9 @@ TEST(DgMethod, StrongMovingConditionsReproduceTheAffineSolution) {
 }
 
 TEST(DgMethod, StrongConditionsWithWarpingAreBadInputNamingTheKey) {
-  const std::string message = bad_input_message(write_bar_scene(
-      "strong_warped_bar", linear_no_contraction, R"({ "resolution": [2, 1, 1], "conditions": "strong", "warping": true })"));
+  const std::string message =
+      bad_input_message(write_bar_scene("strong_warped_bar", linear_no_contraction,
+                                        R"({ "resolution": [2, 1, 1], "conditions": "strong", "warping": true })"));
   EXPECT_NE(message.find("/discretization/dg/conditions"), std::string::npos) << message;
 }
 
@@ -141,8 +145,8 @@ TEST(DgMethod, ConditionsOnSomeComponentsReproduceUniaxialTension) {
   const Built built = build(file);
   const Discretization& discretization = built.method->discretization();
   const Eigen::VectorXd u = solve(discretization, discretization.external_force(1.0));
-  const Eigen::VectorXd exact =
-      built.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.01 * x.x(), -0.003 * x.y(), -0.003 * x.z()); });
+  const Eigen::VectorXd exact = built.method->interpolate(
+      [](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.01 * x.x(), -0.003 * x.y(), -0.003 * x.z()); });
   EXPECT_LT((u - exact).cwiseAbs().maxCoeff(), 1e-10);
   // Strongly, a corner cell would need one change of basis for an x and a y condition.
   std::ifstream input(file);
@@ -192,11 +196,13 @@ TEST(DgMethod, PenaltyIsDoubledUntilTheStiffnessIsDefinite) {
 }
 
 TEST(DgMethod, BlockJacobiPcgSolvesTheSystem) {
-  const Built built = build(write_bar_scene("pcg_bar", R"({ "model": "linear", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })",
-                                            R"({ "degree": 2, "resolution": [4, 2, 2] })"));
+  const Built built =
+      build(write_bar_scene("pcg_bar", R"({ "model": "linear", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })",
+                            R"({ "degree": 2, "resolution": [4, 2, 2] })"));
   const Discretization& discretization = built.method->discretization();
   const Eigen::VectorXd load = discretization.external_force(1.0) + discretization.body_force({0, 0, -9.81});
-  LinearSolverOptions options{.kind = LinearSolverKind::pcg, .custom_preconditioner = discretization.preconditioner_factory()};
+  LinearSolverOptions options{.kind = LinearSolverKind::pcg,
+                              .custom_preconditioner = discretization.preconditioner_factory()};
   ASSERT_TRUE(options.custom_preconditioner);
   const auto solver = make_linear_solver(options);
   solver->factorize(discretization.hessian_pattern());
@@ -209,10 +215,12 @@ TEST(DgMethod, BlockJacobiPcgSolvesTheSystem) {
 }
 
 TEST(DgMethod, VolumeOutputGivesEachElementItsOwnField) {
-  const Built built = build(write_bar_scene("output_bar", linear_no_contraction, R"({ "degree": 1, "resolution": [2, 1, 1] })"));
+  const Built built =
+      build(write_bar_scene("output_bar", linear_no_contraction, R"({ "degree": 1, "resolution": [2, 1, 1] })"));
   // Different affine fields on the two cubes: u = x on x < 1, u = 2x on x > 1.
   Eigen::VectorXd u = built.method->interpolate([](const Eigen::Vector3d& x) { return x; });
-  const Eigen::VectorXd twice = built.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(2 * x); });
+  const Eigen::VectorXd twice =
+      built.method->interpolate([](const Eigen::Vector3d& x) { return Eigen::Vector3d(2 * x); });
   u.tail(u.size() / 2) = twice.tail(u.size() / 2);  // the second cell's 12 DOFs
   const UnstructuredGrid grid = built.method->volume_grid(u);
   ASSERT_EQ(grid.cell_count(), 2);
@@ -236,16 +244,16 @@ std::filesystem::path write_static_neo_hookean_bar(const std::string& name, cons
       { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } })"
                       << more_conditions << R"( ],
     "time": { "static": true },
-    "discretization": { "dg": )" << dg << R"( } })";
+    "discretization": { "dg": )"
+                      << dg << R"( } })";
   return file;
 }
 
 TEST(DgMethod, InteriorPenaltyWithANonlinearMaterialAndAPartialConditionIsBadInputNamingBoth) {
-  const auto file = write_static_neo_hookean_bar(
-      "neo_hookean_roller_bar",
-      R"(,
+  const auto file = write_static_neo_hookean_bar("neo_hookean_roller_bar",
+                                                 R"(,
       { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } }, "components": ["x"] })",
-      R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })");
+                                                 R"({ "flux": "interior_penalty", "resolution": [2, 1, 1] })");
   const std::string message = bad_input_message(file);
   EXPECT_NE(message.find("/discretization/dg/flux"), std::string::npos) << message;
   EXPECT_NE(message.find("/boundary_conditions/1/components"), std::string::npos) << message;
@@ -275,7 +283,8 @@ TEST(DgMethod, ANonlinearMaterialWithAMovingConditionTakesEitherFlux) {
 // penalty of the lifted DG gradient (dg/lifted_gradients.hpp): each cell's element lists
 // its face neighbours' functions too, so its Hessian couples them.
 TEST(DgMethod, ANonlinearMaterialWithFixedConditionsDefaultsToTheLiftedInteriorPenalty) {
-  const auto file = write_static_neo_hookean_bar("neo_hookean_hanging_bar", "", R"({ "degree": 1, "resolution": [2, 1, 1] })");
+  const auto file =
+      write_static_neo_hookean_bar("neo_hookean_hanging_bar", "", R"({ "degree": 1, "resolution": [2, 1, 1] })");
   const Built built = build(file);
   EXPECT_EQ(built.method->facts()["flux"], "interior_penalty");
   const Discretization& discretization = built.method->discretization();
@@ -305,8 +314,8 @@ TEST(DgMethod, MaterialRegionsGiveEachCellItsMaterial) {
   const Discretization& discretization = built.method->discretization();
   const Eigen::VectorXd u = solve(discretization, discretization.external_force(1.0));
   // Each vertex by its own cell's field (MLS, the default embedding, would round the
-  // kink: it reproduces affine fields only). At the surface's vertices (interpolate's collocation points may leave a cell and
-  // cross the kink): u_x = 0.015 x for x ≤ 1, 0.015 + 0.005 (x − 1) beyond.
+  // kink: it reproduces affine fields only). At the surface's vertices (interpolate's collocation points may leave a
+  // cell and cross the kink): u_x = 0.015 x for x ≤ 1, 0.015 + 0.005 (x − 1) beyond.
   const Eigen::MatrixXd& vertices = built.method->embedded_surface().vertices;
   const Eigen::MatrixXd displacement = built.method->embedded_displacement(u);
   for (Eigen::Index v = 0; v < vertices.rows(); ++v) {

@@ -62,8 +62,8 @@ TEST(DgEmbedding, EveryEmbeddingReproducesAnAffineDisplacement) {
   const Eigen::MatrixXd exact = (points * gradient.transpose()).rowwise() + shift;
   for (ElementType type : {ElementType::hex8, ElementType::tet4}) {
     const Embeddings embeddings(type, points);
-    const Eigen::VectorXd u =
-        embeddings.system->interpolate([&](const Eigen::Vector3d& x) { return (gradient * x + shift.transpose()).eval(); });
+    const Eigen::VectorXd u = embeddings.system->interpolate(
+        [&](const Eigen::Vector3d& x) { return (gradient * x + shift.transpose()).eval(); });
     const double scale = exact.cwiseAbs().maxCoeff();
     EXPECT_LE((embeddings.element->displacement(u) - exact).cwiseAbs().maxCoeff(), 1e-12 * scale);
     EXPECT_LE((embeddings.stitched->displacement(u) - exact).cwiseAbs().maxCoeff(), 1e-12 * scale);
@@ -77,8 +77,8 @@ TEST(DgEmbedding, MlsAndStitchingAreContinuousAcrossElementFacesPerElementEvalua
               "element", "stitched", "mls", epsilon);
   for (ElementType type : {ElementType::hex8, ElementType::tet4}) {
     // Points on both sides of every interior face's centroid.
-    const PolyhedralMesh mesh =
-        polyhedral_mesh_from_volume_mesh(structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), {3, 3, 3}, type));
+    const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(
+        structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), {3, 3, 3}, type));
     std::vector<Eigen::RowVector3d> pairs;
     for (int f = 0; f < mesh.face_count(); ++f)
       if (!mesh.is_boundary_face(f)) {
@@ -98,7 +98,8 @@ TEST(DgEmbedding, MlsAndStitchingAreContinuousAcrossElementFacesPerElementEvalua
     for (int kind = 0; kind < 3; ++kind)
       for (Eigen::Index p = 0; p < points.rows(); p += 2)
         jumps[kind] = std::max(jumps[kind], (displacements[kind].row(p) - displacements[kind].row(p + 1)).norm());
-    std::printf("  %-6s %14.3e %14.3e %14.3e\n", type == ElementType::hex8 ? "hex8" : "tet4", jumps[0], jumps[1], jumps[2]);
+    std::printf("  %-6s %14.3e %14.3e %14.3e\n", type == ElementType::hex8 ? "hex8" : "tet4", jumps[0], jumps[1],
+                jumps[2]);
     EXPECT_GT(jumps[0], 0.1);
     EXPECT_LT(jumps[1], 1e4 * epsilon);
     EXPECT_LT(jumps[2], 1e4 * epsilon);

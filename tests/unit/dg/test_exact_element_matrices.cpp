@@ -11,8 +11,6 @@
 namespace altfem::dg {
 namespace {
 
-
-
 constexpr double lambda = 2.0, mu = 1.5, density = 3.0;
 
 class EveryDegree : public ::testing::TestWithParam<int> {};
@@ -37,9 +35,9 @@ TEST_P(EveryDegree, MatchesAnExactGaussRuleOnABox) {
       for (int b = 0; b < n; ++b)
         for (int i = 0; i < 3; ++i)
           for (int c = 0; c < 3; ++c)
-            stiffness(3 * a + i, 3 * b + c) += w * ((i == c ? mu * gradients.row(a).dot(gradients.row(b)) : 0.0) +
-                                                    mu * gradients(a, c) * gradients(b, i) +
-                                                    lambda * gradients(a, i) * gradients(b, c));
+            stiffness(3 * a + i, 3 * b + c) +=
+                w * ((i == c ? mu * gradients.row(a).dot(gradients.row(b)) : 0.0) +
+                     mu * gradients(a, c) * gradients(b, i) + lambda * gradients(a, i) * gradients(b, c));
   }
   EXPECT_LT((exact.mass - mass).cwiseAbs().maxCoeff(), 1e-12 * mass.cwiseAbs().maxCoeff());
   EXPECT_LT((exact.stiffness - stiffness).cwiseAbs().maxCoeff(), 1e-12 * stiffness.cwiseAbs().maxCoeff());
@@ -64,13 +62,15 @@ TEST_P(EveryDegree, RigidMotionsCostNothingAndLinearFieldsTheExactEnergyOnANonCo
   Eigen::Matrix3d skew;
   skew << 0, -0.3, 0.2, 0.3, 0, -0.1, -0.2, 0.1, 0;
   const double scale = matrices.stiffness.cwiseAbs().maxCoeff();
-  EXPECT_LT((matrices.stiffness * linear_field(basis, Eigen::Matrix3d::Zero(), {1, 2, 3})).cwiseAbs().maxCoeff(), 1e-12 * scale);
+  EXPECT_LT((matrices.stiffness * linear_field(basis, Eigen::Matrix3d::Zero(), {1, 2, 3})).cwiseAbs().maxCoeff(),
+            1e-12 * scale);
   EXPECT_LT((matrices.stiffness * linear_field(basis, skew, {0.5, 0, 0})).cwiseAbs().maxCoeff(), 1e-12 * scale);
 
   Eigen::Matrix3d A;
   A << 0.1, 0.02, -0.03, 0.04, -0.05, 0.01, 0.0, 0.03, 0.07;
   const Eigen::Matrix3d strain = (A + A.transpose()) / 2;
-  const double energy_density = mu * (strain.array() * strain.array()).sum() + lambda / 2 * strain.trace() * strain.trace();
+  const double energy_density =
+      mu * (strain.array() * strain.array()).sum() + lambda / 2 * strain.trace() * strain.trace();
   const Eigen::VectorXd u = linear_field(basis, A, {0.1, 0.2, 0.3});
   EXPECT_NEAR(0.5 * u.dot(matrices.stiffness * u), volume * energy_density, 1e-12 * volume * energy_density);
 }

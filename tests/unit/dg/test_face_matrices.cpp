@@ -8,8 +8,8 @@
 #include "dg/exact_element_matrices.hpp"
 #include "dg/face_matrices.hpp"
 #include "shared/geometry/polygon_moments.hpp"
-#include "tests/unit/polyhedra.hpp"
 #include "shared/quadrature/reference_rules.hpp"
+#include "tests/unit/polyhedra.hpp"
 
 namespace altfem::dg {
 namespace {
@@ -69,9 +69,10 @@ class FaceOfDegree : public ::testing::TestWithParam<std::tuple<int, Flux>> {};
 
 TEST_P(FaceOfDegree, InteriorFaceMatchesAnExactGaussRule) {
   const auto [degree, flux] = GetParam();
-  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
-  const Eigen::MatrixXd exact = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,
-                                                  penalty, flux);
+  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4),
+      plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
+  const Eigen::MatrixXd exact =
+      exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu, penalty, flux);
   const Eigen::MatrixXd gauss = gauss_face_matrix(minus, &plus, flux, degree);
   EXPECT_LT((exact - gauss).cwiseAbs().maxCoeff(), 1e-12 * gauss.cwiseAbs().maxCoeff());
   EXPECT_LT((exact - exact.transpose()).cwiseAbs().maxCoeff(), 1e-12 * gauss.cwiseAbs().maxCoeff());
@@ -97,9 +98,10 @@ TEST_P(BabuskaZlamalOfDegree, AContinuousFieldPaysNoPenalty) {
   // the Babuška–Zlámal matrix annihilates it.
   const int degree = GetParam();
   const Flux flux = Flux::babuska_zlamal;
-  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
-  const Eigen::MatrixXd matrix = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,
-                                                   penalty, flux);
+  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4),
+      plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
+  const Eigen::MatrixXd matrix =
+      exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu, penalty, flux);
   Eigen::Matrix3d A;
   A << 0.1, 0.2, -0.1, 0.05, 0.3, 0.2, -0.2, 0.1, 0.4;
   const Eigen::Vector3d b(0.3, -0.1, 0.2);
@@ -134,7 +136,8 @@ TEST(JumpPenalty, SplitPenalisesNormalAndTangentialJumpsApart) {
 TEST(InteriorPenalty, IsConsistentForAffineFields) {
   const int degree = 2;
   const Polyhedron box = test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 1, 2));  // K⁻
-  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4), plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
+  const MonomialBasis minus(degree, Eigen::Vector3d(0.5, 0.5, 1), 2.4),
+      plus(degree, Eigen::Vector3d(1.75, 0.5, 1), 2.9);
   const Eigen::MatrixXd volume = exact_element_matrices(box, minus, lambda, mu, 1.0).stiffness;
   const Eigen::MatrixXd face = exact_face_matrix(face_polygon(), Eigen::Vector3d::UnitX(), minus, &plus, lambda, mu,
                                                  penalty, Flux::interior_penalty);

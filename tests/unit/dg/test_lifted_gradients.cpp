@@ -33,7 +33,8 @@ DgSettings settings_of(const Material& material, int degree, Flux flux) {
 }
 
 TabulatedDg tabulated(const DgLinearSystem& system, const Material& material) {
-  return make_tabulated_dg(system, {&material}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+  return make_tabulated_dg(system, {&material},
+                           [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
 }
 
 class LiftedGradientsOfDegree : public ::testing::TestWithParam<int> {};
@@ -126,12 +127,13 @@ std::vector<Mesh> patch_meshes() {
   meshes.push_back({"hex grid 2^3", grid.cells, grid.faces});
   SlicingOptions options;
   options.resolution = 3;
-  const SlicedMesh sliced =
-      slice_into_polyhedra(altfem::test::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 0.7, 0.55)), options);
+  const SlicedMesh sliced = slice_into_polyhedra(
+      altfem::test::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d(1.0, 0.7, 0.55)), options);
   meshes.push_back({"sliced box", mesh_cells(sliced.mesh), mesh_faces(sliced.mesh)});
   for (Mesh& mesh : meshes)
     for (DgFace& face : mesh.faces)
-      if (face.plus < 0) face.condition = face.normal.z() < -0.5 && std::abs(face.polygon.col(2).maxCoeff()) < 1e-12 ? 0 : -1;
+      if (face.plus < 0)
+        face.condition = face.normal.z() < -0.5 && std::abs(face.polygon.col(2).maxCoeff()) < 1e-12 ? 0 : -1;
   return meshes;
 }
 
@@ -173,7 +175,9 @@ TEST(LiftedGradients, AnAffineFiniteDeformationPassesThePatchTest) {
   Eigen::Matrix3d deformation = Eigen::Matrix3d::Identity();
   deformation(0, 2) = 0.1;
   deformation(2, 2) = 1.1;
-  const auto exact = [&](const Eigen::Vector3d& x) { return Eigen::Vector3d((deformation - Eigen::Matrix3d::Identity()) * x); };
+  const auto exact = [&](const Eigen::Vector3d& x) {
+    return Eigen::Vector3d((deformation - Eigen::Matrix3d::Identity()) * x);
+  };
   for (MaterialModel model : {MaterialModel::neo_hookean, MaterialModel::stable_neo_hookean})
     for (const Mesh& mesh : patch_meshes())
       for (int k : {1, 2}) {
@@ -211,9 +215,8 @@ TEST(LiftedGradients, AnAffineDeformationImposedWeaklyAsMovingDataPassesThePatch
       for (double time : {0.5, 1.0}) {
         dg.discretization->set_time(time);
         const Eigen::VectorXd u = solve(*dg.discretization, dg.discretization->external_force(time));
-        const double error = (u - system.interpolate([&](const Eigen::Vector3d& x) { return data(0, x, time); }))
-                                 .cwiseAbs()
-                                 .maxCoeff();
+        const double error =
+            (u - system.interpolate([&](const Eigen::Vector3d& x) { return data(0, x, time); })).cwiseAbs().maxCoeff();
         std::printf("weak affine data %-13s k = %d, t = %.1f: max coefficient error %.2e\n", mesh.name, k, time, error);
         EXPECT_LT(error, 1e-9) << mesh.name << " k = " << k << " t = " << time;
       }

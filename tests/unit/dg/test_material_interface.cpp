@@ -18,7 +18,8 @@ const DgMaterial stiff{50, 50, 1, 20 * 150}, soft{1, 1, 1, 20 * 3};  // λ, μ, 
 
 Eigen::Vector3d exact(const Eigen::Vector3d& x) {
   // f' = 1 and g' = 1 in the stiff part; (λ+2μ) f' and μ g' continuous across x = ½.
-  const double normal_slope = (stiff.lambda + 2 * stiff.mu) / (soft.lambda + 2 * soft.mu), shear_slope = stiff.mu / soft.mu;
+  const double normal_slope = (stiff.lambda + 2 * stiff.mu) / (soft.lambda + 2 * soft.mu),
+               shear_slope = stiff.mu / soft.mu;
   if (x.x() <= interface) return {x.x(), 0, x.x()};
   const double beyond = x.x() - interface;
   return {interface + normal_slope * beyond, 0, interface + shear_slope * beyond};

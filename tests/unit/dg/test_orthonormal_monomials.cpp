@@ -30,7 +30,8 @@ double condition_number(const Eigen::SparseMatrix<double>& matrix) {
   return eigen.eigenvalues().maxCoeff() / eigen.eigenvalues().minCoeff();
 }
 
-int pcg_iterations(const Eigen::SparseMatrix<double>& matrix, Preconditioner& preconditioner, const Eigen::VectorXd& rhs) {
+int pcg_iterations(const Eigen::SparseMatrix<double>& matrix, Preconditioner& preconditioner,
+                   const Eigen::VectorXd& rhs) {
   preconditioner.compute(matrix);
   Eigen::VectorXd solution = Eigen::VectorXd::Zero(rhs.size());
   ConjugateGradientWorkspace workspace;
@@ -43,7 +44,8 @@ TEST(OrthonormalMonomials, BlockJacobiIterationsAreInvariantSoTheMonomialsStay) 
   meshes.push_back({"hex grid 3^3", {grid.cells, grid.faces}});
   SlicingOptions options;
   options.resolution = 3;
-  const SlicedMesh sliced = slice_into_polyhedra(altfem::test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  const SlicedMesh sliced =
+      slice_into_polyhedra(altfem::test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
   std::vector<DgFace> sliced_faces = mesh_faces(sliced.mesh);
   for (DgFace& face : sliced_faces)
     if (face.plus < 0) face.condition = 0;
@@ -67,8 +69,8 @@ TEST(OrthonormalMonomials, BlockJacobiIterationsAreInvariantSoTheMonomialsStay) 
       for (int a = 0; a < count; ++a)
         for (int b = 0; b < count; ++b) cell_mass(a, b) = mass.coeff(3 * (first + a), 3 * (first + b));
       const Eigen::MatrixXd lower = Eigen::LLT<Eigen::MatrixXd>(cell_mass).matrixL();
-      const Eigen::MatrixXd transform = lower.transpose().triangularView<Eigen::Upper>().solve(
-          Eigen::MatrixXd::Identity(count, count));  // L⁻ᵀ
+      const Eigen::MatrixXd transform =
+          lower.transpose().triangularView<Eigen::Upper>().solve(Eigen::MatrixXd::Identity(count, count));  // L⁻ᵀ
       for (int a = 0; a < count; ++a)
         for (int b = 0; b < count; ++b)
           for (int i = 0; i < 3; ++i) entries.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, transform(a, b));

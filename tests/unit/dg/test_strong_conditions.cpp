@@ -82,7 +82,8 @@ TEST_P(StrongConditionsOfDegree, APartialConditionHoldsItsComponentsOnly) {
   for (int dof : system.constrained_dofs()) EXPECT_NE(dof % 3, 1) << "a y coefficient is constrained";
   // Fewer DOFs are held than with all three components.
   test::GridCells all_components = strong_grid(2, {true, true, true});
-  const DgLinearSystem full(all_components.cells, all_components.faces, {GetParam(), Flux::interior_penalty, 40, 1.0, 1.0});
+  const DgLinearSystem full(all_components.cells, all_components.faces,
+                            {GetParam(), Flux::interior_penalty, 40, 1.0, 1.0});
   EXPECT_GT(full.constrained_dofs().size(), system.constrained_dofs().size());
 }
 
@@ -135,7 +136,8 @@ class StrongConditionsOnCutCells : public ::testing::TestWithParam<int> {};
 TEST_P(StrongConditionsOnCutCells, InteriorPenaltyReproducesAnAffineField) {
   SlicingOptions options;
   options.resolution = 4;
-  const PolyhedralMesh mesh = slice_into_polyhedra(altfem::test::sphere(0.5, 8, 12, Eigen::Vector3d::Zero()), options).mesh;
+  const PolyhedralMesh mesh =
+      slice_into_polyhedra(altfem::test::sphere(0.5, 8, 12, Eigen::Vector3d::Zero()), options).mesh;
   std::vector<DgFace> faces = mesh_faces(mesh);
   for (DgFace& face : faces)
     if (face.plus < 0) face.condition = 0, face.strong = true;

@@ -9,11 +9,11 @@
 
 #include <cmath>
 
-#include "dg/tabulated_dg.hpp"
-#include "shared/material/material.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "dg/tabulated_dg.hpp"
 #include "shared/geometry/monomial_index.hpp"
+#include "shared/material/material.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
 #include "tests/unit/surfaces.hpp"
 
@@ -29,12 +29,12 @@ TEST_P(TabulatedDgOfDegree, LinearBabuskaZlamalEqualsTheExactMatrices) {
   for (DgFace& face : grid.faces)
     if (face.plus < 0 && std::abs(face.normal.x()) > 0.5) face.components = {true, false, false};
   for (const double tangential_fraction : {1.0, 0.3}) {
-    const DgSettings settings{GetParam(), Flux::babuska_zlamal, 20 * 1e3,
-                              material->lame().lambda, material->lame().mu, material->density(),
-                              1.0, PenaltyScaling::cell_surface, tangential_fraction};
+    const DgSettings settings{GetParam(),          Flux::babuska_zlamal, 20 * 1e3, material->lame().lambda,
+                              material->lame().mu, material->density(),  1.0,      PenaltyScaling::cell_surface,
+                              tangential_fraction};
     const DgLinearSystem system(grid.cells, grid.faces, settings);
-    const TabulatedDg tabulated =
-        make_tabulated_dg(system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+    const TabulatedDg tabulated = make_tabulated_dg(
+        system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
     const Discretization& discretization = *tabulated.discretization;
     ASSERT_EQ(discretization.dof_count(), system.dof_count());
     Eigen::SparseMatrix<double> hessian = discretization.hessian_pattern();
@@ -48,7 +48,8 @@ TEST_P(TabulatedDgOfDegree, LinearBabuskaZlamalEqualsTheExactMatrices) {
     Eigen::VectorXd exact_load(system.dof_count());
     for (Eigen::Index a = 0; a < system.function_integrals().size(); ++a)
       exact_load.segment<3>(3 * a) = material->density() * system.function_integrals()[a] * gravity;
-    EXPECT_LT((discretization.body_force(gravity) - exact_load).cwiseAbs().maxCoeff(), 1e-12 * exact_load.cwiseAbs().maxCoeff());
+    EXPECT_LT((discretization.body_force(gravity) - exact_load).cwiseAbs().maxCoeff(),
+              1e-12 * exact_load.cwiseAbs().maxCoeff());
   }
 }
 
@@ -58,17 +59,18 @@ TEST(TabulatedDg, SimplifiedRulesOfCutCellsGiveTheExactMatrices) {
   const auto material = make_material(MaterialModel::linear, 1e3, 0.3, 7.0);
   SlicingOptions options;
   options.resolution = 3;
-  const SlicedMesh sliced = slice_into_polyhedra(altfem::test::sphere(0.8, 24, 48, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  const SlicedMesh sliced =
+      slice_into_polyhedra(altfem::test::sphere(0.8, 24, 48, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
   std::vector<DgFace> faces = mesh_faces(sliced.mesh);
   for (DgFace& face : faces)
     if (face.plus < 0 && face.normal.z() < -0.5) face.condition = 0;
   const int degree = 2;
-  DgSettings settings{degree, Flux::babuska_zlamal, 20 * 1e3, material->lame().lambda, material->lame().mu,
-                      material->density()};
+  DgSettings settings{
+      degree, Flux::babuska_zlamal, 20 * 1e3, material->lame().lambda, material->lame().mu, material->density()};
   settings.rule_simplification = SimplificationMethod::caratheodory;
   const DgLinearSystem system(mesh_cells(sliced.mesh), faces, settings);
-  const TabulatedDg tabulated =
-      make_tabulated_dg(system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+  const TabulatedDg tabulated = make_tabulated_dg(
+      system, {material.get()}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
   Eigen::SparseMatrix<double> hessian = tabulated.discretization->hessian_pattern();
   tabulated.discretization->hessian(Eigen::VectorXd::Zero(system.dof_count()), hessian, false);
   const double scale = Eigen::MatrixXd(system.stiffness()).cwiseAbs().maxCoeff();
@@ -79,7 +81,8 @@ TEST(TabulatedDg, SimplifiedRulesOfCutCellsGiveTheExactMatrices) {
   // The cone rules of the cut cells hold many more points than the simplified ones.
   const long simplified = tabulate_dg_cells(system, 2 * degree).point_count();
   settings.rule_simplification.reset();
-  const long cone = tabulate_dg_cells(DgLinearSystem(mesh_cells(sliced.mesh), faces, settings), 2 * degree).point_count();
+  const long cone =
+      tabulate_dg_cells(DgLinearSystem(mesh_cells(sliced.mesh), faces, settings), 2 * degree).point_count();
   EXPECT_LE(simplified, system.cell_count() * monomial_count(2 * degree));
   EXPECT_GT(cone, 5 * simplified);
 }

@@ -54,8 +54,8 @@ double affine_reproduction_error(const PolyhedralMesh& mesh, int degree, bool st
 }
 
 TEST(VertexCoarseSpace, ReproducesAffineFieldsOnAHexahedralGrid) {
-  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(
-      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1)), {3, 4, 2}, ElementType::hex8));
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(structured_grid(
+      Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1)), {3, 4, 2}, ElementType::hex8));
   for (int degree : {1, 2}) {
     EXPECT_LT(affine_reproduction_error(mesh, degree), 1e-12) << "k = " << degree;
     EXPECT_LT(affine_reproduction_error(mesh, degree, true), 1e-12) << "k = " << degree << ", strong condition";
@@ -65,7 +65,8 @@ TEST(VertexCoarseSpace, ReproducesAffineFieldsOnAHexahedralGrid) {
 TEST(VertexCoarseSpace, ReproducesAffineFieldsOnASlicedMeshWithCutCells) {
   SlicingOptions options;
   options.resolution = 4;
-  const SlicedMesh sliced = slice_into_polyhedra(test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  const SlicedMesh sliced =
+      slice_into_polyhedra(test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
   ASSERT_GT(sliced.cut_pieces, 0);
   for (int degree : {1, 2}) EXPECT_LT(affine_reproduction_error(sliced.mesh, degree), 1e-12) << "k = " << degree;
 }

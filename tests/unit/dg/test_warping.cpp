@@ -11,10 +11,10 @@
 
 #include "dg/dg_method.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/common/error.hpp"
-#include "shared/scene/scene_geometry.hpp"
 #include "dg/warped_dg_discretization.hpp"
+#include "shared/common/error.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/scene/scene_geometry.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
 #include "tests/unit/dg/scene_file.hpp"
 #include "tests/unit/surfaces.hpp"
@@ -37,7 +37,8 @@ std::vector<Mesh> meshes(bool held) {
   result.push_back({"hex grid 3^3", grid.cells, grid.faces});
   SlicingOptions options;
   options.resolution = 3;
-  const SlicedMesh sliced = slice_into_polyhedra(altfem::test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
+  const SlicedMesh sliced =
+      slice_into_polyhedra(altfem::test::sphere(0.8, 12, 24, Eigen::Vector3d(0.03, -0.02, 0.01)), options);
   result.push_back({"sliced sphere", mesh_cells(sliced.mesh), mesh_faces(sliced.mesh)});
   for (Mesh& mesh : result)
     for (DgFace& face : mesh.faces)
@@ -53,7 +54,8 @@ WarpedDgDiscretization warped(const DgLinearSystem& system, const DgSettings& se
                                 [&system](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); });
 }
 
-const Eigen::Matrix3d quarter_turn = Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d(1, 1, 1).normalized()).toRotationMatrix();
+const Eigen::Matrix3d quarter_turn =
+    Eigen::AngleAxisd(M_PI / 2, Eigen::Vector3d(1, 1, 1).normalized()).toRotationMatrix();
 
 TEST(DgWarping, WarpedTermsAtRestSumToTheLinearStiffness) {
   for (const Mesh& mesh : meshes(true))
@@ -64,7 +66,8 @@ TEST(DgWarping, WarpedTermsAtRestSumToTheLinearStiffness) {
       Eigen::SparseMatrix<double> hessian = discretization.hessian_pattern();
       discretization.hessian(Eigen::VectorXd::Zero(system.dof_count()), hessian, false);
       const Eigen::MatrixXd difference = Eigen::MatrixXd(hessian) - Eigen::MatrixXd(system.stiffness());
-      EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-12 * system.stiffness().coeffs().cwiseAbs().maxCoeff()) << mesh.name;
+      EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-12 * system.stiffness().coeffs().cwiseAbs().maxCoeff())
+          << mesh.name;
     }
 }
 
@@ -76,8 +79,9 @@ TEST(DgWarping, ARigidQuarterTurnGivesNoInternalForce) {
       const DgLinearSystem system(mesh.cells, mesh.faces, settings);
       const WarpedDgDiscretization discretization = warped(system, settings);
       const Eigen::Vector3d centre(0.3, 0.5, -0.2), shift(1, -2, 0.5);
-      const Eigen::VectorXd u = system.interpolate(
-          [&](const Eigen::Vector3d& x) { return ((quarter_turn - Eigen::Matrix3d::Identity()) * (x - centre) + shift).eval(); });
+      const Eigen::VectorXd u = system.interpolate([&](const Eigen::Vector3d& x) {
+        return ((quarter_turn - Eigen::Matrix3d::Identity()) * (x - centre) + shift).eval();
+      });
       Eigen::VectorXd force;
       discretization.gradient(u, force);
       const double linear = (system.stiffness() * u).norm();
@@ -100,11 +104,13 @@ TEST(DgWarping, ARotatedAffineStretchGivesTheStretchForcesRotated) {
     const Eigen::Matrix3d deformation = quarter_turn * (Eigen::Matrix3d::Identity() + stretch);
     const Eigen::VectorXd u = system.interpolate(
         [&](const Eigen::Vector3d& x) { return ((deformation - Eigen::Matrix3d::Identity()) * x).eval(); });
-    const Eigen::VectorXd stretched = system.interpolate([&](const Eigen::Vector3d& x) { return (stretch * x).eval(); });
+    const Eigen::VectorXd stretched =
+        system.interpolate([&](const Eigen::Vector3d& x) { return (stretch * x).eval(); });
     Eigen::VectorXd force;
     discretization.gradient(u, force);
     Eigen::VectorXd expected = system.stiffness() * stretched;  // the linear patch test's forces
-    for (Eigen::Index a = 0; a < expected.size(); a += 3) expected.segment<3>(a) = quarter_turn * expected.segment<3>(a);
+    for (Eigen::Index a = 0; a < expected.size(); a += 3)
+      expected.segment<3>(a) = quarter_turn * expected.segment<3>(a);
     EXPECT_LE((force - expected).norm(), 1e-10 * expected.norm()) << mesh.name;
   }
 }

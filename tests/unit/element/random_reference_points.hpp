@@ -9,14 +9,13 @@
 
 namespace altfem::testing {
 
-inline const std::vector<ElementType> all_element_types{ElementType::tet4,  ElementType::tet10,
-                                                        ElementType::tet20, ElementType::hex8,
-                                                        ElementType::hex20, ElementType::hex27};
+inline const std::vector<ElementType> all_element_types{ElementType::tet4, ElementType::tet10, ElementType::tet20,
+                                                        ElementType::hex8, ElementType::hex20, ElementType::hex27};
 
 /// `count` points uniformly inside the reference domain of the type's shape,
 /// shrunk by `margin` (in reference coordinates) away from its boundary.
-inline std::vector<Eigen::Vector3d> random_reference_points(ElementType type, int count,
-                                                            unsigned seed, double margin = 0.0) {
+inline std::vector<Eigen::Vector3d> random_reference_points(ElementType type, int count, unsigned seed,
+                                                            double margin = 0.0) {
   std::mt19937 generator(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<Eigen::Vector3d> points;

@@ -80,8 +80,7 @@ TEST(GeometryMap, JacobianMatchesCentralFiniteDifferences) {
       for (int j = 0; j < 3; ++j) {
         const Eigen::Vector3d offset = h * Eigen::Vector3d::Unit(j);
         finite_differences.col(j) =
-            (map_to_physical(element, nodes, xi + offset) - map_to_physical(element, nodes, xi - offset)) /
-            (2.0 * h);
+            (map_to_physical(element, nodes, xi + offset) - map_to_physical(element, nodes, xi - offset)) / (2.0 * h);
       }
       const Eigen::Matrix3d jacobian = map_jacobian(element, nodes, xi);
       EXPECT_LT((finite_differences - jacobian).norm(), 1e-7 * jacobian.norm()) << element_name(type);
@@ -90,8 +89,8 @@ TEST(GeometryMap, JacobianMatchesCentralFiniteDifferences) {
 }
 
 TEST(GeometryMap, InverseOfCurvedElementsRecoversTheReferencePoint) {
-  for (ElementType type : {ElementType::tet10, ElementType::tet20, ElementType::hex8,
-                           ElementType::hex20, ElementType::hex27}) {
+  for (ElementType type :
+       {ElementType::tet10, ElementType::tet20, ElementType::hex8, ElementType::hex20, ElementType::hex27}) {
     const ReferenceElement& element = reference_element(type);
     const Eigen::MatrixXd nodes = curved_nodes(element, 31 + static_cast<unsigned>(type), 0.08);
     for (const Eigen::Vector3d& xi : random_reference_points(type, 20, 37, 0.01)) {

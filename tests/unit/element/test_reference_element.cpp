@@ -26,17 +26,14 @@ std::vector<Eigen::Vector3i> expected_space(ElementType type) {
         const Eigen::Vector3i e(a, b, c);
         const bool tensor = e.maxCoeff() <= k;  // Q_k
         const bool total = e.sum() <= k;        // P_k
-        if (element_shape(type) == ElementShape::tetrahedron ? total
-            : type == ElementType::hex20                     ? total
-                                                             : tensor)
+        if (element_shape(type) == ElementShape::tetrahedron ? total : type == ElementType::hex20 ? total : tensor)
           space.push_back(e);
       }
   if (type == ElementType::hex20)  // the serendipity extras beyond P_2
     for (const Eigen::Vector3i& extra :
-         {Eigen::Vector3i(2, 1, 0), Eigen::Vector3i(2, 0, 1), Eigen::Vector3i(1, 2, 0),
-          Eigen::Vector3i(0, 2, 1), Eigen::Vector3i(1, 0, 2), Eigen::Vector3i(0, 1, 2),
-          Eigen::Vector3i(1, 1, 1), Eigen::Vector3i(2, 1, 1), Eigen::Vector3i(1, 2, 1),
-          Eigen::Vector3i(1, 1, 2)})
+         {Eigen::Vector3i(2, 1, 0), Eigen::Vector3i(2, 0, 1), Eigen::Vector3i(1, 2, 0), Eigen::Vector3i(0, 2, 1),
+          Eigen::Vector3i(1, 0, 2), Eigen::Vector3i(0, 1, 2), Eigen::Vector3i(1, 1, 1), Eigen::Vector3i(2, 1, 1),
+          Eigen::Vector3i(1, 2, 1), Eigen::Vector3i(1, 1, 2)})
       space.push_back(extra);
   return space;
 }
@@ -65,8 +62,7 @@ TEST(ReferenceElement, KroneckerDeltaAtTheNodes) {
       element.evaluate(element.nodes().row(i).transpose(), values);
       table.row(i) = values.transpose();
     }
-    EXPECT_LT((table - Eigen::MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-12)
-        << element_name(type);
+    EXPECT_LT((table - Eigen::MatrixXd::Identity(n, n)).cwiseAbs().maxCoeff(), 1e-12) << element_name(type);
   }
 }
 
@@ -93,14 +89,12 @@ TEST(ReferenceElement, ReproducesEveryMonomialOfItsSpaceWithGradients) {
     Eigen::MatrixXd gradients(element.node_count(), 3);
     for (const Eigen::Vector3i& e : space) {
       Eigen::VectorXd nodal(element.node_count());
-      for (int i = 0; i < element.node_count(); ++i)
-        nodal[i] = monomial(e, element.nodes().row(i).transpose());
+      for (int i = 0; i < element.node_count(); ++i) nodal[i] = monomial(e, element.nodes().row(i).transpose());
       // Points slightly outside the domain too: reproduction is an identity of polynomials.
       for (const Eigen::Vector3d& xi : random_reference_points(type, 10, 11, -0.2)) {
         element.evaluate(xi, values);
         element.evaluate_gradients(xi, gradients);
-        EXPECT_NEAR(values.dot(nodal), monomial(e, xi), 1e-12)
-            << element_name(type) << " monomial " << e.transpose();
+        EXPECT_NEAR(values.dot(nodal), monomial(e, xi), 1e-12) << element_name(type) << " monomial " << e.transpose();
         EXPECT_LT((gradients.transpose() * nodal - monomial_gradient(e, xi)).norm(), 1e-11)
             << element_name(type) << " monomial " << e.transpose();
       }
@@ -115,14 +109,11 @@ TEST(ReferenceElement, Hex20IsSerendipityNotTriquadratic) {
   for (ElementType type : {ElementType::hex20, ElementType::hex27}) {
     const ReferenceElement& element = reference_element(type);
     Eigen::VectorXd values(element.node_count()), nodal(element.node_count());
-    for (int i = 0; i < element.node_count(); ++i)
-      nodal[i] = monomial(e, element.nodes().row(i).transpose());
+    for (int i = 0; i < element.node_count(); ++i) nodal[i] = monomial(e, element.nodes().row(i).transpose());
     element.evaluate(xi, values);
     const double error = std::abs(values.dot(nodal) - monomial(e, xi));
-    if (type == ElementType::hex20)
-      EXPECT_GT(error, 1e-3);
-    else
-      EXPECT_LT(error, 1e-13);
+    if (type == ElementType::hex20) EXPECT_GT(error, 1e-3);
+    else EXPECT_LT(error, 1e-13);
   }
 }
 
@@ -153,7 +144,8 @@ TEST(ReferenceElement, GradientsAndHessiansMatchCentralFiniteDifferences) {
       const Eigen::MatrixXd value_differences = central_differences(
           n, 1, xi, [&](const Eigen::Vector3d& at, Eigen::MatrixXd& values) { element.evaluate(at, values.col(0)); });
       const Eigen::MatrixXd gradient_differences = central_differences(
-          n, 3, xi, [&](const Eigen::Vector3d& at, Eigen::MatrixXd& values) { element.evaluate_gradients(at, values); });
+          n, 3, xi,
+          [&](const Eigen::Vector3d& at, Eigen::MatrixXd& values) { element.evaluate_gradients(at, values); });
       for (const auto& [exact, differences] :
            {std::pair{&gradients, &value_differences}, std::pair{&hessians, &gradient_differences}}) {
         const double scale = std::max(1.0, exact->cwiseAbs().maxCoeff());

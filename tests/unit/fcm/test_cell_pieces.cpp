@@ -40,12 +40,14 @@ VolumeMesh without_cells(const VolumeMesh& mesh, const std::function<bool(const 
     if (!remove(centroid)) kept.push_back(c);
   }
   result.cells.resize(static_cast<Eigen::Index>(kept.size()), mesh.cells.cols());
-  for (std::size_t k = 0; k < kept.size(); ++k) result.cells.row(static_cast<Eigen::Index>(k)) = mesh.cells.row(kept[k]);
+  for (std::size_t k = 0; k < kept.size(); ++k)
+    result.cells.row(static_cast<Eigen::Index>(k)) = mesh.cells.row(kept[k]);
   return result;
 }
 
 // The physical volume of a piece: its tetrahedra clipped by the cell.
-double piece_volume(const VolumeMesh& background, int cell, const std::vector<int>& tetrahedra, const VolumeMesh& embedded) {
+double piece_volume(const VolumeMesh& background, int cell, const std::vector<int>& tetrahedra,
+                    const VolumeMesh& embedded) {
   const int corners = element_corner_count(background.element_type);
   Eigen::MatrixXd cell_corners(corners, 3);
   for (int i = 0; i < corners; ++i) cell_corners.row(i) = background.nodes.row(background.cells(cell, i));
@@ -97,7 +99,7 @@ TEST_P(TwoBars, EachCellHoldsTwoPiecesAndEveryNodeTwoCopies) {
 
   const PieceMesh mesh = piece_mesh(background, pieces);
   ASSERT_EQ(mesh.mesh.cells.rows(), 4);
-  EXPECT_EQ(mesh.mesh.nodes.rows(), 24);  // 12 grid nodes, two copies each
+  EXPECT_EQ(mesh.mesh.nodes.rows(), 24);   // 12 grid nodes, two copies each
   EXPECT_EQ(shared_nodes(mesh, 0, 1), 0);  // the two pieces of a cell share no DOF
   int across = 0;                          // the four face nodes, per bar
   for (int piece = 0; piece < 2; ++piece)
@@ -111,7 +113,8 @@ INSTANTIATE_TEST_SUITE_P(EmbeddedCellsAlongTheBars, TwoBars, ::testing::Values(2
 // matched by position, so the pieces are those of the shared-node mesh.
 TEST(CellPieces, DuplicatedNodesAreMatchedByPosition) {
   const VolumeMesh shared = box_tetrahedra({0.5, 0, 0}, {2, 0.4, 1}, Eigen::Vector3i(3, 1, 2));
-  VolumeMesh soup{ElementType::tet4, Eigen::MatrixXd(4 * shared.cells.rows(), 3), Eigen::MatrixXi(shared.cells.rows(), 4)};
+  VolumeMesh soup{ElementType::tet4, Eigen::MatrixXd(4 * shared.cells.rows(), 3),
+                  Eigen::MatrixXi(shared.cells.rows(), 4)};
   for (int t = 0; t < shared.cells.rows(); ++t)
     for (int a = 0; a < 4; ++a) {
       soup.nodes.row(4 * t + a) = shared.nodes.row(shared.cells(t, a));
@@ -198,10 +201,11 @@ TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
   unit << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
   EXPECT_EQ(distance_to_tetrahedron({0.1, 0.2, 0.3}, unit), 0.0);
   EXPECT_EQ(distance_to_tetrahedron({0.5, 0.5, 0.0}, unit), 0.0);
-  EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit), 0.25, 1e-15);                    // below a face
-  EXPECT_NEAR(distance_to_tetrahedron({1, 1, 1}, unit), (Eigen::Vector3d(1, 1, 1) / 3 * 2).norm(), 1e-15);  // off the slanted face
-  EXPECT_NEAR(distance_to_tetrahedron({-1, -1, 0.5}, unit), std::sqrt(2.0), 1e-15);              // off the z edge
-  EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);                // off corner (1, 0, 0)
+  EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit), 0.25, 1e-15);  // below a face
+  EXPECT_NEAR(distance_to_tetrahedron({1, 1, 1}, unit), (Eigen::Vector3d(1, 1, 1) / 3 * 2).norm(),
+              1e-15);                                                                // off the slanted face
+  EXPECT_NEAR(distance_to_tetrahedron({-1, -1, 0.5}, unit), std::sqrt(2.0), 1e-15);  // off the z edge
+  EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);    // off corner (1, 0, 0)
 }
 
 }  // namespace

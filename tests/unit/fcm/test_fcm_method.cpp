@@ -44,7 +44,8 @@ Scene sphere_scene(const std::string& cell) {
 
 // ∫ 1 dV through the method's mass rules: interpolant of e_x · body force of e_x / ρ.
 double mass_volume(const Built& built) {
-  const Eigen::VectorXd ones = built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX(); });
+  const Eigen::VectorXd ones =
+      built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX(); });
   return ones.dot(built.method->discretization().body_force(Eigen::Vector3d::UnitX())) / built.scene.material.density;
 }
 
@@ -52,7 +53,8 @@ double tetrahedra_volume(const VolumeMesh& mesh) {
   double volume = 0;
   for (Eigen::Index c = 0; c < mesh.cells.rows(); ++c) {
     Eigen::Matrix3d edges;
-    for (int i = 0; i < 3; ++i) edges.col(i) = (mesh.nodes.row(mesh.cells(c, i + 1)) - mesh.nodes.row(mesh.cells(c, 0))).transpose();
+    for (int i = 0; i < 3; ++i)
+      edges.col(i) = (mesh.nodes.row(mesh.cells(c, i + 1)) - mesh.nodes.row(mesh.cells(c, 0))).transpose();
     volume += edges.determinant() / 6;
   }
   return volume;
@@ -81,8 +83,10 @@ TEST_P(CutSphere, PatchTestGivesTheExactConstantStressOnCutCells) {
   A << 0.02, 0.01, -0.005, 0.004, -0.01, 0.006, -0.003, 0.008, 0.015;
   B << 0.3, -0.1, 0.2, 0.05, 0.4, -0.3, 0.1, 0.2, -0.2;
   const Eigen::Matrix3d G = Eigen::Matrix3d::Identity() + A;
-  const Eigen::VectorXd u = built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x; });
-  const Eigen::VectorXd v = built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return B * x; });
+  const Eigen::VectorXd u =
+      built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x; });
+  const Eigen::VectorXd v =
+      built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return B * x; });
   const double V = mass_volume(built);
   const double energy = V * material->energy(G);
   const double work = V * (material->pk1(G).array() * B.array()).sum();
@@ -104,7 +108,8 @@ TEST_P(CutSphere, PatchTestHoldsWithTheGhostPenalty) {
       make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio, spec.density);
   Eigen::Matrix3d A;
   A << 0.02, 0.01, -0.005, 0.004, -0.01, 0.006, -0.003, 0.008, 0.015;
-  const Eigen::VectorXd u = built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x; });
+  const Eigen::VectorXd u =
+      built.method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x; });
   const double energy = mass_volume(built) * material->energy(Eigen::Matrix3d::Identity() + A);
   EXPECT_NEAR(built.method->discretization().energy(u), energy, 1e-10 * std::abs(energy));
   // Interior nodes feel no net force (the exact stress is divergence-free); the
@@ -248,12 +253,15 @@ TEST(FcmSceneBlock, BadValuesNameTheKey) {
   EXPECT_NE(message({{"cell", "tet20"}}).find("/discretization/fcm/cell"), std::string::npos);
   EXPECT_NE(message({{"discard_fraction", 1.0}}).find("/discretization/fcm/discard_fraction"), std::string::npos);
   EXPECT_NE(message({{"simplifer", "lp"}}).find("did you mean 'simplifier'"), std::string::npos);
-  EXPECT_NE(message({{"resolution", {2, 2, 2}}, {"cell_size", 0.1}}).find("/discretization/fcm/cell_size: give resolution or cell_size"),
+  EXPECT_NE(message({{"resolution", {2, 2, 2}}, {"cell_size", 0.1}})
+                .find("/discretization/fcm/cell_size: give resolution or cell_size"),
             std::string::npos);
   const std::string file = (std::filesystem::path(ALTFEM_SOURCE_DIR) / "data/volume/cube_tet10_24.msh").string();
-  EXPECT_NE(message({{"background", file}, {"cell", "hex8"}}).find("/discretization/fcm/cell: must match the background mesh file's element 'tet10'"),
+  EXPECT_NE(message({{"background", file}, {"cell", "hex8"}})
+                .find("/discretization/fcm/cell: must match the background mesh file's element 'tet10'"),
             std::string::npos);
-  EXPECT_NE(message({{"background", file}, {"margin", 0.1}}).find("/discretization/fcm/margin: applies only to the generated grid"),
+  EXPECT_NE(message({{"background", file}, {"margin", 0.1}})
+                .find("/discretization/fcm/margin: applies only to the generated grid"),
             std::string::npos);
 }
 

@@ -35,8 +35,8 @@ struct Grid {
   GhostPenaltyFaces ghost;
 };
 Grid grid(ElementType type, bool inside_below_x = false) {
-  Grid result{structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(2)), {2, 2, 2}, type),
-              {}};
+  Grid result{
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(2)), {2, 2, 2}, type), {}};
   std::vector<double> fractions;
   for (Eigen::Index c = 0; c < result.mesh.cells.rows(); ++c)
     fractions.push_back(inside_below_x && corner_centroid_x(result.mesh, c) < 1 ? 1.0 : 0.5);
@@ -46,24 +46,25 @@ Grid grid(ElementType type, bool inside_below_x = false) {
 
 Eigen::VectorXd interpolate(const VolumeMesh& mesh, const Field& field) {
   Eigen::VectorXd u(3 * mesh.nodes.rows());
-  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) u.segment<3>(3 * node) = field(mesh.nodes.row(node).transpose());
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
+    u.segment<3>(3 * node) = field(mesh.nodes.row(node).transpose());
   return u;
 }
 
 // The penalty with γ_F = 1 on every face.
 test::FaceTerm<GhostPenaltyKernel> unit_penalty(const Grid& grid) {
   const auto faces = static_cast<size_t>(grid.ghost.faces.size());
-  return {grid.ghost.faces,
-          GhostPenaltyKernel(grid.ghost.faces, std::vector<double>(faces, 1.0), grid.ghost.sizes,
-                             element_degree(grid.mesh.element_type))};
+  return {grid.ghost.faces, GhostPenaltyKernel(grid.ghost.faces, std::vector<double>(faces, 1.0), grid.ghost.sizes,
+                                               element_degree(grid.mesh.element_type))};
 }
 
 // h_F of the faces in the plane x = 1: a hex face's side 1; the triangles that split
 // a cube face have the face diagonal √2 as their longest edge.
-double plane_face_size(ElementType type) { return element_shape(type) == ElementShape::tetrahedron ? std::sqrt(2.0) : 1.0; }
+double plane_face_size(ElementType type) {
+  return element_shape(type) == ElementShape::tetrahedron ? std::sqrt(2.0) : 1.0;
+}
 
 class GhostPenalty : public ::testing::TestWithParam<ElementType> {};
-
 
 TEST_P(GhostPenalty, ActsOnTheInteriorFacesOfCutCellsOnly) {
   const ElementType type = GetParam();
@@ -83,9 +84,8 @@ TEST_P(GhostPenalty, KinkAcrossAGridPlaneCostsHalfHTimesItsArea) {
   const ElementType type = GetParam();
   const Grid g = grid(type);
   const auto term = unit_penalty(g);
-  const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
-    return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0);
-  });
+  const Eigen::VectorXd u =
+      interpolate(g.mesh, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0); });
   EXPECT_NEAR(term.assembler.energy(u), 2 * plane_face_size(type), 1e-12);
 }
 
@@ -98,13 +98,13 @@ TEST_P(GhostPenalty, TermScalesTheKinkByTheMeanPWaveModulus) {
   const auto soft = make_material(MaterialModel::linear, 1e5, 0.3, 1000);
   const auto stiff = make_material(MaterialModel::linear, 3e6, 0.45, 1000);
   std::vector<int> cell_materials;
-  for (Eigen::Index c = 0; c < g.mesh.cells.rows(); ++c) cell_materials.push_back(corner_centroid_x(g.mesh, c) < 1 ? 0 : 1);
+  for (Eigen::Index c = 0; c < g.mesh.cells.rows(); ++c)
+    cell_materials.push_back(corner_centroid_x(g.mesh, c) < 1 ? 0 : 1);
   const double gamma = 0.3;
   const std::unique_ptr<EnergyTerm> term =
       ghost_penalty_term(g.ghost, type, cell_materials, {soft.get(), stiff.get()}, gamma);
-  const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
-    return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0);
-  });
+  const Eigen::VectorXd u =
+      interpolate(g.mesh, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0); });
   const auto modulus = [](const Material& material) { return material.lame().lambda + 2 * material.lame().mu; };
   const double expected = 0.5 * gamma * 0.5 * (modulus(*soft) + modulus(*stiff)) * plane_face_size(type) * 4;
   EXPECT_NEAR(term->energy(u), expected, 1e-12 * expected);
@@ -116,9 +116,8 @@ TEST(GhostPenaltyQuadratic, CurvatureJumpCostsTheSecondDerivativeTerm) {
   for (ElementType type : {ElementType::hex20, ElementType::hex27, ElementType::tet10}) {
     const Grid g = grid(type);
     const auto term = unit_penalty(g);
-    const Eigen::VectorXd u = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
-      return Eigen::Vector3d(0, 0, std::pow(std::max(x[1] - 1, 0.0), 2));
-    });
+    const Eigen::VectorXd u = interpolate(
+        g.mesh, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(0, 0, std::pow(std::max(x[1] - 1, 0.0), 2)); });
     EXPECT_NEAR(term.assembler.energy(u), 2 * std::pow(plane_face_size(type), 3), 1e-11) << element_name(type);
   }
 }
@@ -159,9 +158,8 @@ TEST_P(GhostPenalty, AffineFieldsCostNothingOnACurvedGrid) {
   });
   EXPECT_NEAR(term.assembler.energy(affine), 0.0, 1e-22);
   // A non-affine field does cost something (the test can fail).
-  const Eigen::VectorXd kinked = interpolate(g.mesh, [](const Eigen::Vector3d& x) {
-    return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0);
-  });
+  const Eigen::VectorXd kinked =
+      interpolate(g.mesh, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(std::max(x[0] - 1, 0.0), 0, 0); });
   EXPECT_GT(term.assembler.energy(kinked), 1e-3);
 }
 
@@ -185,10 +183,12 @@ TEST_P(GhostPenalty, ForcesAndStiffnessAreTheEnergysDerivatives) {
 TEST(GhostPenaltyKernel, RefusesQuadraticCellsWithoutHessiansAndMismatchedSizes) {
   Grid g = grid(ElementType::hex8);  // linear cells: faces without Hessians
   const auto faces = static_cast<size_t>(g.ghost.faces.size());
-  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 2), std::invalid_argument);
+  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 2),
+               std::invalid_argument);
   EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces + 1, 1.0), g.ghost.sizes, 1),
                std::invalid_argument);
-  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 3), std::invalid_argument);
+  EXPECT_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 3),
+               std::invalid_argument);
   EXPECT_NO_THROW(GhostPenaltyKernel(g.ghost.faces, std::vector<double>(faces, 1.0), g.ghost.sizes, 1));
 }
 

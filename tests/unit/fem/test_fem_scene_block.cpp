@@ -11,7 +11,8 @@ namespace {
 Scene box_scene(const std::string& max, const std::string& fem_block) {
   return parse_scene(R"({"geometry": {"shape": {"box": {"min": [0, 0, 0], "max": )" + max +
                          R"(}}}, "material": {"youngs_modulus": 1, "poisson_ratio": 0},
-                         "discretization": {"fem": )" + fem_block + "}}",
+                         "discretization": {"fem": )" +
+                         fem_block + "}}",
                      "grid.json");
 }
 

@@ -25,7 +25,8 @@ public:
   Eigen::AlignedBox3d element_bounds(int e) const override {
     return {Eigen::Vector3d(e, 0, 0), Eigen::Vector3d(e + 1, 1, 1)};
   }
-  bool evaluate_inside(int e, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+  bool evaluate_inside(int e, const Eigen::Vector3d& x, std::vector<int>& basis,
+                       std::vector<double>& values) const override {
     Eigen::AlignedBox3d box = element_bounds(e);
     box.min().array() -= 1e-12;
     box.max().array() += 1e-12;
@@ -34,7 +35,8 @@ public:
     values = {1.0};
     return true;
   }
-  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const override {
+  double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
+                          std::vector<double>& values) const override {
     const double distances[2] = {element_bounds(0).exteriorDistance(x), element_bounds(1).exteriorDistance(x)};
     const int nearest = distances[1] < distances[0] ? 1 : 0;
     basis = {nearest};
@@ -73,7 +75,8 @@ TEST(BasisEmbedding, BoundaryRuleDecidesSharedFacePointsAndOutsidePointsUseTheNe
   EXPECT_EQ(average.displacement(u).row(2), (first + second) / 2);
 }
 
-DirichletCondition box_condition(const Eigen::AlignedBox3d& box, Motion motion, std::array<bool, 3> components, int index) {
+DirichletCondition box_condition(const Eigen::AlignedBox3d& box, Motion motion, std::array<bool, 3> components,
+                                 int index) {
   DirichletCondition condition;
   condition.region.kind = RegionKind::box;
   condition.region.box = box;
@@ -109,7 +112,8 @@ TEST(NodalDirichlet, SortedDofsLastConditionWinsAndEmptyRegionsAreInputErrors) {
   }
 
   auto with_empty = conditions;
-  with_empty.push_back(box_condition({Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(6, 6, 6)}, Motion{}, {true, true, true}, 2));
+  with_empty.push_back(
+      box_condition({Eigen::Vector3d(5, 5, 5), Eigen::Vector3d(6, 6, 6)}, Motion{}, {true, true, true}, 2));
   try {
     nodal_dirichlet(mesh.nodes, with_empty, "scene.json", "the fem mesh");
     FAIL() << "no InputError";
@@ -136,7 +140,8 @@ TEST(TabulateLagrange, CustomCellRuleAndMaterialsPerCell) {
     double volume = 0, first_moment = 0;
     for (int q = 0; q < element.point_count(); ++q) {
       volume += element.weights[q];
-      for (int a = 0; a < element.basis_count(); ++a) first_moment += element.weights[q] * element.values(q, a) * x[element.basis[a]];
+      for (int a = 0; a < element.basis_count(); ++a)
+        first_moment += element.weights[q] * element.values(q, a) * x[element.basis[a]];
     }
     const double x_min = mesh.nodes(mesh.cells(e, 0), 0);
     if (e == custom_cell) {

@@ -48,7 +48,8 @@ TEST_P(EmbeddingOfType, ReproducesAnAffineDisplacement) {
   Eigen::Matrix3d A;
   A << 0.1, -0.3, 0.2, 0.05, 0.4, -0.1, -0.2, 0.15, 0.3;
   const Eigen::Vector3d b(0.3, -0.2, 0.1);
-  const Eigen::VectorXd u = test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; });
+  const Eigen::VectorXd u =
+      test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; });
 
   const BasisEmbedding embedding(LagrangeBasisEvaluator(mesh), points);
   EXPECT_EQ(embedding.outside_count(), 0);

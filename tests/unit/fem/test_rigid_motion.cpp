@@ -60,7 +60,8 @@ VolumeMesh l_shape(const Eigen::Vector3d& offset) {
     if (centroid.x() < 1 || centroid.y() < 1) kept.push_back(static_cast<int>(c));
   }
   std::vector<int> renumbered(static_cast<size_t>(grid.nodes.rows()), -1);
-  VolumeMesh mesh{grid.element_type, Eigen::MatrixXd(), Eigen::MatrixXi(static_cast<Eigen::Index>(kept.size()), grid.cells.cols())};
+  VolumeMesh mesh{grid.element_type, Eigen::MatrixXd(),
+                  Eigen::MatrixXi(static_cast<Eigen::Index>(kept.size()), grid.cells.cols())};
   std::vector<Eigen::Vector3d> nodes;
   for (size_t c = 0; c < kept.size(); ++c)
     for (Eigen::Index k = 0; k < grid.cells.cols(); ++k) {
@@ -84,7 +85,8 @@ TEST(RigidMotion, CentreOfMassOfLagrangeLShape) {
   DiscretizationParts parts;
   parts.elements = tabulate_lagrange(mesh, 4);
   parts.materials = {material.get()};
-  const InterpolatingMethod method(std::move(parts), [&](const Field& field) { return test::nodal_values(mesh, field); });
+  const InterpolatingMethod method(std::move(parts),
+                                   [&](const Field& field) { return test::nodal_values(mesh, field); });
   // Three unit squares centred at (1/2, 1/2), (3/2, 1/2), (1/2, 3/2), depth 1.
   const Eigen::Vector3d exact = offset + Eigen::Vector3d(2.5 / 3, 2.5 / 3, 0.5);
   EXPECT_LT((centre_of_mass(method) - exact).norm(), 1e-12);

@@ -17,7 +17,8 @@ Scene two_material_beam(const std::string& second_region) {
     "materials": [
       { "model": "linear", "youngs_modulus": 130, "poisson_ratio": 0.3, "density": 1000 },
       { "model": "linear", "youngs_modulus": 2.6, "poisson_ratio": 0.3, "density": 250,
-        "region": )" + second_region + R"( } ],
+        "region": )" + second_region +
+                         R"( } ],
     "discretization": { "fem": { "element": "hex8", "resolution": [8, 2, 2] } } })",
                      "beam.json");
 }
@@ -43,8 +44,9 @@ TEST(SceneMaterials, ARegionThatHoldsNoElementIsBadInput) {
     (void)make_fem_method(scene, geometry);
     FAIL() << "accepted a region that selects nothing";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("beam.json: /materials/1/region: expected a region that holds the centroid"),
-              std::string::npos)
+    EXPECT_NE(
+        std::string(error.what()).find("beam.json: /materials/1/region: expected a region that holds the centroid"),
+        std::string::npos)
         << error.what();
   }
 }

@@ -52,7 +52,8 @@ TEST_P(EveryElementType, CountsAndPositiveVolumesFillingTheBox) {
   EXPECT_EQ(static_cast<long>(used.size()), mesh.nodes.rows());
   EXPECT_EQ(*used.begin(), 0);
   std::vector<std::array<double, 3>> sorted;
-  for (Eigen::Index i = 0; i < mesh.nodes.rows(); ++i) sorted.push_back({mesh.nodes(i, 0), mesh.nodes(i, 1), mesh.nodes(i, 2)});
+  for (Eigen::Index i = 0; i < mesh.nodes.rows(); ++i)
+    sorted.push_back({mesh.nodes(i, 0), mesh.nodes(i, 1), mesh.nodes(i, 2)});
   std::sort(sorted.begin(), sorted.end());
   EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end());
 

@@ -41,10 +41,12 @@ RegionSelector everything() {
 class SurfaceTractionOnGrid : public testing::TestWithParam<ElementType> {
 protected:
   SurfaceTractionOnGrid()
-      : mesh_(structured_grid(box, {3, 2, 2}, GetParam())), evaluator_(mesh_),
+      : mesh_(structured_grid(box, {3, 2, 2}, GetParam())),
+        evaluator_(mesh_),
         surface_(boundary_surface(mesh_).surface) {}
   Eigen::VectorXd load_vector(const SurfaceTraction& load) const {
-    return SurfaceTractionLoad({load}, surface_, evaluator_, 3 * static_cast<int>(mesh_.nodes.rows()), 1e-9, "s.json")(1.0);
+    return SurfaceTractionLoad({load}, surface_, evaluator_, 3 * static_cast<int>(mesh_.nodes.rows()), 1e-9,
+                               "s.json")(1.0);
   }
   // Σ_a f_a · u(x_a) for a field u: the virtual work of the load on u's interpolant.
   double work(const Eigen::VectorXd& load, const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const {
@@ -94,8 +96,8 @@ TEST_P(SurfaceTractionOnGrid, TractionFieldOfTheNormalIsThePressure) {
   SurfaceTraction pressure = load_on(everything());
   pressure.pressure = 7.0;
   SurfaceTraction field = load_on(everything());
-  field.traction_field = VectorExpression({"-p*nx", "-p*ny", "-p*nz"}, {{"p", 7.0}}, "s.json", "/loads/traction/0/traction",
-                                          ExpressionVariables::surface);
+  field.traction_field = VectorExpression({"-p*nx", "-p*ny", "-p*nz"}, {{"p", 7.0}}, "s.json",
+                                          "/loads/traction/0/traction", ExpressionVariables::surface);
   const Eigen::VectorXd expected = load_vector(pressure);
   EXPECT_LT((load_vector(field) - expected).cwiseAbs().maxCoeff(), 1e-13 * expected.cwiseAbs().maxCoeff());
 
@@ -152,7 +154,8 @@ TEST(SurfaceTractionOnCurvedCells, LiftMakesTheClosedPressureWorkExact) {
     const VolumeMesh mesh = bent_grid(type);
     const auto material = make_material(MaterialModel::linear, 1.0, 0.3, 2.0);
     const auto discretization = make_lagrange_discretization(mesh, *material, {}, 8);
-    const Eigen::VectorXd ones = interpolate_at_nodes(mesh.nodes, [](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX().eval(); });
+    const Eigen::VectorXd ones =
+        interpolate_at_nodes(mesh.nodes, [](const Eigen::Vector3d&) { return Eigen::Vector3d::UnitX().eval(); });
     const double volume = ones.dot(discretization->body_force(Eigen::Vector3d::UnitX())) / 2.0;  // ∫ρ dV / ρ
     SurfaceTraction pressure = load_on(everything());
     pressure.pressure = 3.0;
@@ -160,8 +163,8 @@ TEST(SurfaceTractionOnCurvedCells, LiftMakesTheClosedPressureWorkExact) {
     const LagrangeBasisEvaluator evaluator(mesh);
     const Eigen::VectorXd identity = interpolate_at_nodes(mesh.nodes, [](const Eigen::Vector3d& x) { return x; });
     const auto work = [&](const SurfaceLift& lift) {
-      return identity.dot(SurfaceTractionLoad({pressure}, boundary.surface, evaluator, discretization->dof_count(), 1e-9,
-                                              "s.json", lift)(1.0));
+      return identity.dot(SurfaceTractionLoad({pressure}, boundary.surface, evaluator, discretization->dof_count(),
+                                              1e-9, "s.json", lift)(1.0));
     };
     EXPECT_NEAR(work(lagrange_surface_lift(mesh, boundary)), -3 * 3.0 * volume, 1e-11 * volume);
     EXPECT_GT(std::abs(work({}) + 3 * 3.0 * volume), 1e-4 * volume) << "the chordal surface is not the cells' boundary";

@@ -37,9 +37,8 @@ inline ReferenceMoments interval_moments(double low, double high, int degree) {
       binomial *= static_cast<double>(a - i) / (i + 1);
     }
     result.exact(a) = sum;
-    result.absolute(a) = (low >= 0.0 || high <= 0.0)
-                             ? std::abs(sum)
-                             : (std::pow(-low, a + 1) + std::pow(high, a + 1)) / (a + 1);
+    result.absolute(a) =
+        (low >= 0.0 || high <= 0.0) ? std::abs(sum) : (std::pow(-low, a + 1) + std::pow(high, a + 1)) / (a + 1);
   }
   return result;
 }
@@ -109,8 +108,7 @@ inline Eigen::VectorXd monomial_values(const Eigen::VectorXd& point, int degree)
 template <typename Map>
 void add_simplex(ReferenceMoments& sum, const Eigen::VectorXd& origin, const Eigen::MatrixXd& jacobian, int degree,
                  const Map& map) {
-  const QuadratureRule rule =
-      jacobian.rows() == 3 ? collapsed_tet_rule(degree) : collapsed_triangle_rule(degree);
+  const QuadratureRule rule = jacobian.rows() == 3 ? collapsed_tet_rule(degree) : collapsed_triangle_rule(degree);
   const double determinant = jacobian.determinant();
   for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
     const Eigen::VectorXd point = origin + jacobian * rule.points.row(q).transpose();
@@ -123,8 +121,7 @@ void add_simplex(ReferenceMoments& sum, const Eigen::VectorXd& origin, const Eig
 /// ∫_P x^α by cones from `apex` over each face, each face fanned from its vertex mean:
 /// the signed tetrahedra add up to P's winding number, so this holds for any closed
 /// oriented polyhedron; `absolute` is exact only if no tetrahedron is inverted.
-inline ReferenceMoments cone_quadrature_moments(const Polyhedron& polyhedron, const Eigen::Vector3d& apex,
-                                                int degree) {
+inline ReferenceMoments cone_quadrature_moments(const Polyhedron& polyhedron, const Eigen::Vector3d& apex, int degree) {
   ReferenceMoments sum{Eigen::VectorXd::Zero(monomial_count(degree)), Eigen::VectorXd::Zero(monomial_count(degree))};
   for (const std::vector<int>& face : polyhedron.faces) {
     Eigen::Vector3d face_centre = Eigen::Vector3d::Zero();
@@ -161,8 +158,7 @@ inline Polyhedron box(const Eigen::Vector3d& low, const Eigen::Vector3d& high) {
   Polyhedron result;
   result.vertices.resize(8, 3);
   for (int i = 0; i < 8; ++i) {
-    result.vertices.row(i) << (i & 1 ? high.x() : low.x()), (i & 2 ? high.y() : low.y()),
-        (i & 4 ? high.z() : low.z());
+    result.vertices.row(i) << (i & 1 ? high.x() : low.x()), (i & 2 ? high.y() : low.y()), (i & 4 ? high.z() : low.z());
   }
   result.faces = {{0, 2, 3, 1}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 4, 6, 2}, {1, 3, 7, 5}};
   return result;
@@ -203,8 +199,7 @@ inline Eigen::Matrix3d generic_rotation() {
 }
 
 /// Every moment within `tolerance` in the project's relative error.
-inline void expect_moments_near(const Eigen::VectorXd& computed, const ReferenceMoments& reference,
-                                double tolerance) {
+inline void expect_moments_near(const Eigen::VectorXd& computed, const ReferenceMoments& reference, double tolerance) {
   ASSERT_EQ(computed.size(), reference.exact.size());
   double worst = 0.0;
   Eigen::Index worst_row = 0;

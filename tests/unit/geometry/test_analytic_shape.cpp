@@ -44,9 +44,9 @@ TEST(AnalyticShape, SolidCylinderAlongATiltedAxis) {
   const Vector3d axis = Vector3d(1, 1, 0).normalized();
   const auto cylinder = make_cylinder({0, 0, 0}, Vector3d(3, 3, 0), 2.0, 0.5);
   const Vector3d across = Vector3d(1, -1, 0).normalized();
-  EXPECT_DOUBLE_EQ(cylinder->level_set(1.0 * axis), -0.5);            // on the axis, mid-height
+  EXPECT_DOUBLE_EQ(cylinder->level_set(1.0 * axis), -0.5);  // on the axis, mid-height
   EXPECT_NEAR(cylinder->level_set(axis + 0.25 * across), -0.25, 1e-15);
-  EXPECT_NEAR(cylinder->level_set(3.0 * axis), 1.0, 1e-15);            // beyond the top cap
+  EXPECT_NEAR(cylinder->level_set(3.0 * axis), 1.0, 1e-15);                             // beyond the top cap
   EXPECT_NEAR(cylinder->level_set(-1.0 * axis + 1.5 * across), std::sqrt(2.0), 1e-15);  // off the rim
   EXPECT_DOUBLE_EQ(cylinder->volume(), pi * 0.25 * 2.0);
   const double reach = 0.5 * std::sqrt(0.5);  // R sqrt(1 − a_i²) for a = (1, 1, 0)/√2
@@ -57,7 +57,7 @@ TEST(AnalyticShape, SolidCylinderAlongATiltedAxis) {
 
 TEST(AnalyticShape, HollowCylinder) {
   const auto tube = make_cylinder({0, 0, 1}, {0, 0, -1}, 1.0, 1.0, 0.5);  // from z = 1 down to 0
-  EXPECT_FALSE(tube->contains({0, 0, 0.5}));                      // in the bore
+  EXPECT_FALSE(tube->contains({0, 0, 0.5}));                              // in the bore
   EXPECT_DOUBLE_EQ(tube->level_set({0, 0, 0.5}), 0.5);
   EXPECT_DOUBLE_EQ(tube->level_set({0.75, 0, 0.5}), -0.25);
   EXPECT_DOUBLE_EQ(tube->level_set({0.75, 0, 1.5}), 0.5);

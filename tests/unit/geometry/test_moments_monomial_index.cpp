@@ -23,10 +23,9 @@ TEST(MonomialIndex, ExponentTableFollowsTheDocumentedOrder) {
     EXPECT_EQ(monomial_index(Eigen::Matrix<int, 1, 3>(exponents.row(row))), row);
   }
   // 1, x, y, z, x², xy, xz, y², yz, z²
-  const Eigen::Matrix<int, 10, 3> first_ten =
-      (Eigen::Matrix<int, 10, 3>() << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 2, 0, 0, 1, 1, 0, 1, 0, 1, 0, 2, 0, 0, 1,
-       1, 0, 0, 2)
-          .finished();
+  const Eigen::Matrix<int, 10, 3> first_ten = (Eigen::Matrix<int, 10, 3>() << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 2, 0,
+                                               0, 1, 1, 0, 1, 0, 1, 0, 2, 0, 0, 1, 1, 0, 0, 2)
+                                                  .finished();
   EXPECT_TRUE((exponents.topRows(10) == first_ten)) << exponents.topRows(10);
   EXPECT_THROW(monomial_exponents(-1), std::invalid_argument);
 }

@@ -46,8 +46,7 @@ TEST(PolygonMoments2d, CentredMomentsOfRectangle) {
   const double scale = 2.0;
   Eigen::MatrixXd rectangle(4, 2);
   rectangle << low.x(), low.y(), high.x(), low.y(), high.x(), high.y(), low.x(), high.y();
-  test::ReferenceMoments reference =
-      test::rectangle_moments((low - centre) / scale, (high - centre) / scale, degree);
+  test::ReferenceMoments reference = test::rectangle_moments((low - centre) / scale, (high - centre) / scale, degree);
   reference.exact *= scale * scale;
   reference.absolute *= scale * scale;
   expect_moments_near(polygon_moments_2d(rectangle, degree, centre, scale), reference, tolerance);
@@ -79,7 +78,8 @@ TEST(PlanarPolygonMoments, PolygonInPlaneZEqualsConstant) {
   const auto exponents = monomial_exponents(degree);
   test::ReferenceMoments reference{Eigen::VectorXd(exponents.rows()), Eigen::VectorXd(exponents.rows())};
   for (Eigen::Index row = 0; row < exponents.rows(); ++row) {
-    reference.exact(row) = flat(monomial_index_2d(exponents(row, 0), exponents(row, 1))) * std::pow(height, exponents(row, 2));
+    reference.exact(row) =
+        flat(monomial_index_2d(exponents(row, 0), exponents(row, 1))) * std::pow(height, exponents(row, 2));
     reference.absolute(row) = std::abs(reference.exact(row));
   }
   expect_moments_near(planar_polygon_moments(lifted, degree), reference, tolerance);

@@ -34,9 +34,7 @@ Eigen::MatrixXd polygon(std::initializer_list<std::pair<double, double>> points)
 }
 
 // L = [0,2]×[0,1] ∪ [0,1]×[1,3]: its top and bottom faces are one non-convex hexagon each.
-Polyhedron l_prism() {
-  return extrude(polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}), -0.5, 0.75);
-}
+Polyhedron l_prism() { return extrude(polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 3}, {0, 3}}), -0.5, 0.75); }
 
 test::ReferenceMoments l_prism_reference(int degree) {
   return sum_of({box_moments({0, 0, -0.5}, {2, 1, 0.75}, degree), box_moments({0, 1, -0.5}, {1, 3, 0.75}, degree)});
@@ -105,8 +103,8 @@ TEST(PolyhedronMoments, TriangulatedFacesGiveTheSameMoments) {
     triangles.push_back({quad[0], quad[2], quad[3]});
   }
   triangulated.faces = triangles;
-  expect_moments_near(polyhedron_moments(triangulated, degree),
-                      box_moments({1, -2, 0.25}, {3, 0.5, 0.75}, degree), tolerance);
+  expect_moments_near(polyhedron_moments(triangulated, degree), box_moments({1, -2, 0.25}, {3, 0.5, 0.75}, degree),
+                      tolerance);
 }
 
 TEST(PolyhedronMoments, NonConvexLPrismMatchesTwoBoxes) {
@@ -155,8 +153,7 @@ TEST(PolyhedronMoments, RotatedStarPrismWithNonConvexFacesMatchesConeQuadrature)
   const Eigen::Vector3d translation(-0.3, 2.0, 1.1);
   const Polyhedron prism = test::transformed(extrude(star, -0.4, 0.6), test::generic_rotation(), translation);
   const Eigen::Vector3d apex = translation + test::generic_rotation() * Eigen::Vector3d(0, 0, 0.1);
-  expect_moments_near(polyhedron_moments(prism, degree), test::cone_quadrature_moments(prism, apex, degree),
-                      tolerance);
+  expect_moments_near(polyhedron_moments(prism, degree), test::cone_quadrature_moments(prism, apex, degree), tolerance);
 }
 
 // Volume, centroid and second-moment tensor transform as a rigid motion says: a check of
@@ -189,8 +186,7 @@ TEST(PolyhedronMoments, RotatedCombTransformsItsLowMomentsRigidly) {
       Eigen::Vector3i power = Eigen::Vector3i::Zero();
       ++power(i);
       ++power(j);
-      EXPECT_NEAR(moved(monomial_index(power(0), power(1), power(2))), moved_second(i, j),
-                  1e-13 * moved_second.norm());
+      EXPECT_NEAR(moved(monomial_index(power(0), power(1), power(2))), moved_second(i, j), 1e-13 * moved_second.norm());
     }
   }
 }
@@ -199,8 +195,8 @@ TEST(PolyhedronMoments, CentredMomentsAreTranslationInvariant) {
   const Polyhedron near = l_prism();
   const Eigen::Vector3d shift(2000.0, -700.0, 1e4), centre(1.0, 1.5, 0.1);
   const Eigen::VectorXd expected = polyhedron_moments(near, degree, centre, 1.5);
-  const Eigen::VectorXd far = polyhedron_moments(test::transformed(near, Eigen::Matrix3d::Identity(), shift), degree,
-                                                 centre + shift, 1.5);
+  const Eigen::VectorXd far =
+      polyhedron_moments(test::transformed(near, Eigen::Matrix3d::Identity(), shift), degree, centre + shift, 1.5);
   // The centred moments lose only the digits the translated vertex coordinates themselves lost.
   EXPECT_LE((far - expected).cwiseAbs().maxCoeff(), 1e-11 * expected.cwiseAbs().maxCoeff());
 }
@@ -214,7 +210,8 @@ TEST(PolyhedronMoments, InvariantUnderRelabellingAndFaceStart) {
   std::shuffle(permutation.begin(), permutation.end(), random);
   Polyhedron relabelled;
   relabelled.vertices.resize(original.vertices.rows(), 3);
-  for (std::size_t v = 0; v < permutation.size(); ++v) relabelled.vertices.row(permutation[v]) = original.vertices.row(v);
+  for (std::size_t v = 0; v < permutation.size(); ++v)
+    relabelled.vertices.row(permutation[v]) = original.vertices.row(v);
   for (const std::vector<int>& face : original.faces) {
     std::vector<int> renamed;
     for (const int v : face) renamed.push_back(permutation[v]);

@@ -10,9 +10,9 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cstdio>
+#include <random>
 #include <string>
 #include <vector>
-#include <random>
 
 #include "polyhedral/element_harmonic_basis.hpp"
 #include "polyhedral/face_harmonic_coordinates.hpp"
@@ -29,7 +29,6 @@ using test::l_prism;
 
 Polyhedron unit_cube() { return test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()); }
 
-
 Polyhedron tetrahedron() {
   Polyhedron tet;
   tet.vertices.resize(4, 3);
@@ -38,7 +37,6 @@ Polyhedron tetrahedron() {
   return tet;
 }
 
-
 // Random points with winding number ≈ 1 (#points × 3).
 Eigen::MatrixXd interior_points(const Polyhedron& polyhedron, int count, unsigned seed) {
   std::mt19937 random(seed);
@@ -46,7 +44,8 @@ Eigen::MatrixXd interior_points(const Polyhedron& polyhedron, int count, unsigne
   std::uniform_real_distribution<double> uniform(0, 1);
   Eigen::MatrixXd points(count, 3);
   for (int p = 0; p < count;) {
-    const Eigen::Vector3d x = low + (high - low).cwiseProduct(Eigen::Vector3d(uniform(random), uniform(random), uniform(random)));
+    const Eigen::Vector3d x =
+        low + (high - low).cwiseProduct(Eigen::Vector3d(uniform(random), uniform(random), uniform(random)));
     if (winding_number(polyhedron, x) > 0.5) points.row(p++) = x.transpose();
   }
   return points;
@@ -90,7 +89,8 @@ TEST(HarmonicBasis, CutCellsReproduceAffineFieldsToRoundOff) {
     unity = std::max(unity, (values.rowwise().sum().array() - 1.0).abs().maxCoeff());
     linear = std::max(linear, (values * element.vertices - points).cwiseAbs().maxCoeff() / size);
   }
-  std::printf("[ affine   ] %d cut cells: max |ΣN − 1| %.2e, max |Σ x_i N_i − x| / size %.2e\n", cut_cells, unity, linear);
+  std::printf("[ affine   ] %d cut cells: max |ΣN − 1| %.2e, max |Σ x_i N_i − x| / size %.2e\n", cut_cells, unity,
+              linear);
   EXPECT_GT(cut_cells, 500);
   EXPECT_LT(unity, 1e-10);
   EXPECT_LT(linear, 1e-8);
@@ -147,8 +147,9 @@ TEST_P(EveryShape, InterpolatesTheNodesToTheFitsAccuracy) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(HarmonicBasis, EveryShape, ::testing::Values(0, 1, 2),
-                         [](const auto& info) { return std::string(info.param == 0 ? "cube" : info.param == 1 ? "tet" : "l_prism"); });
+INSTANTIATE_TEST_SUITE_P(HarmonicBasis, EveryShape, ::testing::Values(0, 1, 2), [](const auto& info) {
+  return std::string(info.param == 0 ? "cube" : info.param == 1 ? "tet" : "l_prism");
+});
 
 TEST(HarmonicBasis, IsTheBarycentricBasisOnATetrahedron) {
   const Polyhedron tet = tetrahedron();
@@ -174,8 +175,8 @@ TEST(HarmonicBasis, MatchesTheTrilinearBasisOnAHexahedron) {
   for (Eigen::Index p = 0; p < points.rows(); ++p)
     for (int v = 0; v < 8; ++v) {
       const Eigen::Vector3d x = points.row(p).transpose();
-      const double trilinear = (v & 1 ? x.x() : 1 - x.x()) * ((v >> 1) & 1 ? x.y() : 1 - x.y()) *
-                               ((v >> 2) & 1 ? x.z() : 1 - x.z());
+      const double trilinear =
+          (v & 1 ? x.x() : 1 - x.x()) * ((v >> 1) & 1 ? x.y() : 1 - x.y()) * ((v >> 2) & 1 ? x.z() : 1 - x.z());
       worst = std::max(worst, std::abs(values(p, v) - trilinear));
     }
   std::printf("  max |N - trilinear| on the unit cube: %.2e\n", worst);
@@ -207,9 +208,10 @@ TEST(HarmonicBasis, FaceCoordinateGradientsMatchFiniteDifferences) {
   const Eigen::MatrixX3d gradients = face.gradients(point);
   const double step = 1e-6;
   for (const Eigen::Vector3d& direction : along) {
-    const Eigen::VectorXd difference = (face.evaluate((point + step * direction).transpose()) -
-                                        face.evaluate((point - step * direction).transpose()))
-                                           .transpose() / (2 * step);
+    const Eigen::VectorXd difference =
+        (face.evaluate((point + step * direction).transpose()) - face.evaluate((point - step * direction).transpose()))
+            .transpose() /
+        (2 * step);
     EXPECT_LT((gradients * direction - difference).cwiseAbs().maxCoeff(), 1e-7);
   }
   const Eigen::Vector3d normal = tilt.col(2);

@@ -36,10 +36,8 @@ void expect_identical(const HarmonicElementBases& a, const HarmonicElementBases&
   const auto expect_equal = [tolerance](const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
     ASSERT_EQ(x.rows(), y.rows());
     ASSERT_EQ(x.cols(), y.cols());
-    if (tolerance == 0)
-      EXPECT_EQ(x, y);
-    else
-      EXPECT_LE((x - y).cwiseAbs().maxCoeff(), tolerance * std::max(1.0, x.cwiseAbs().maxCoeff()));
+    if (tolerance == 0) EXPECT_EQ(x, y);
+    else EXPECT_LE((x - y).cwiseAbs().maxCoeff(), tolerance * std::max(1.0, x.cwiseAbs().maxCoeff()));
   };
   ASSERT_EQ(a.cell_count(), b.cell_count());
   for (int cell = 0; cell < a.cell_count(); ++cell) {
@@ -61,7 +59,8 @@ TEST(HarmonicBasisCache, SecondRunReusesIdenticalBasesAndBrokenFilesAreRewritten
   const PolyhedralMesh mesh = hexahedra();
   const MfsOptions options;
   bool reused = true;
-  const HarmonicElementBases computed = cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
+  const HarmonicElementBases computed =
+      cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
   EXPECT_FALSE(reused);
   expect_identical(computed, HarmonicElementBases(mesh, HarmonicBasisKind::mfs, options), 1e-10);
   const HarmonicElementBases read = cached_harmonic_bases(mesh, HarmonicBasisKind::mfs, options, directory, &reused);
@@ -79,7 +78,8 @@ TEST(HarmonicBasisCache, SecondRunReusesIdenticalBasesAndBrokenFilesAreRewritten
   cached_harmonic_bases(moved, HarmonicBasisKind::mfs, options, directory, &reused);
   EXPECT_FALSE(reused);  // another mesh: another key
 
-  const auto path = directory / cache_file_path({}, harmonic_bases_key(mesh, HarmonicBasisKind::mfs, options), ".harmonic");
+  const auto path =
+      directory / cache_file_path({}, harmonic_bases_key(mesh, HarmonicBasisKind::mfs, options), ".harmonic");
   ASSERT_TRUE(std::filesystem::exists(path));
   const auto size = std::filesystem::file_size(path);
   std::filesystem::resize_file(path, size / 2);  // an interrupted writer without the atomic rename

@@ -56,7 +56,8 @@ bool solve_and_compare(const System& system) {
   const Eigen::Index k = system.unknowns;
   const Eigen::MatrixXd a = system.augmented.leftCols(k), b = system.augmented.rightCols(3);
   Eigen::MatrixXd augmented = system.augmented, coefficients;
-  const double misfit = solve_mfs_least_squares(augmented, k, [&] { augmented = system.augmented; }, coefficients);
+  const double misfit = solve_mfs_least_squares(
+      augmented, k, [&] { augmented = system.augmented; }, coefficients);
   const Eigen::MatrixXd reference = a * a.colPivHouseholderQr().solve(b), fitted = a * coefficients;
   EXPECT_LT((fitted - reference).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_NEAR(misfit, std::sqrt((b - fitted).squaredNorm() / static_cast<double>(b.size())), 1e-12);

@@ -26,7 +26,8 @@ TEST_P(PlainCells, RecoverTheOriginalCornerOrder) {
     ASSERT_TRUE(plain.has_value()) << "cell " << cell;
     EXPECT_EQ(plain->type, GetParam());
     std::vector<int> recovered = plain->nodes, original;
-    for (Eigen::Index corner = 0; corner < volume.cells.cols(); ++corner) original.push_back(volume.cells(cell, corner));
+    for (Eigen::Index corner = 0; corner < volume.cells.cols(); ++corner)
+      original.push_back(volume.cells(cell, corner));
     std::sort(recovered.begin(), recovered.end());
     std::sort(original.begin(), original.end());
     EXPECT_EQ(recovered, original) << "cell " << cell;

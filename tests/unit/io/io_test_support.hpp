@@ -4,11 +4,11 @@
 // independent reader is the real test of a writer.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
-#include <sys/wait.h>
 
 #include "shared/io/json_file.hpp"
 #include "shared/io/unstructured_grid.hpp"
@@ -37,17 +37,19 @@ inline nlohmann::json expected_contents(const UnstructuredGrid& grid, const nloh
     }
     return result;
   };
-  nlohmann::json expected{{"points", rows(grid.points)}, {"cells", nlohmann::json::array()},
-                          {"cell_counts", cell_counts}, {"point_data", nlohmann::json::object()},
+  nlohmann::json expected{{"points", rows(grid.points)},
+                          {"cells", nlohmann::json::array()},
+                          {"cell_counts", cell_counts},
+                          {"point_data", nlohmann::json::object()},
                           {"cell_data", nlohmann::json::object()}};
   int64_t begin = 0;
   for (int64_t cell = 0; cell < grid.cell_count(); ++cell) {
     if (grid.cell_types[cell] == vtk_polyhedron)
       expected["cells"].push_back({{"type", 42}, {"faces", grid.polyhedron_faces[cell]}});
     else
-      expected["cells"].push_back(
-          {{"type", grid.cell_types[cell]},
-           {"points", std::vector<int64_t>(grid.connectivity.begin() + begin, grid.connectivity.begin() + grid.offsets[cell])}});
+      expected["cells"].push_back({{"type", grid.cell_types[cell]},
+                                   {"points", std::vector<int64_t>(grid.connectivity.begin() + begin,
+                                                                   grid.connectivity.begin() + grid.offsets[cell])}});
     begin = grid.offsets[cell];
   }
   for (const auto& [name, values] : grid.point_data) expected["point_data"][name] = rows(values);
@@ -61,8 +63,8 @@ inline int run_checker(const std::string& mode, const std::filesystem::path& fil
   write_json_file(expected_file, expected);
   const std::filesystem::path script = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/unit/io/check_vtu.py";
   // /usr/bin/python3 explicitly: the python3 on PATH may lack numpy and meshio.
-  const std::string command =
-      "/usr/bin/python3 '" + script.string() + "' " + mode + " '" + file.string() + "' '" + expected_file.string() + "'";
+  const std::string command = "/usr/bin/python3 '" + script.string() + "' " + mode + " '" + file.string() + "' '" +
+                              expected_file.string() + "'";
   const int status = std::system(command.c_str());
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

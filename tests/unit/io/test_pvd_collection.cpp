@@ -32,7 +32,9 @@ TEST(PvdCollection, TimeSeriesReadBackFrameByFrame) {
     // The last frame is given by its absolute path: the collection stores it relative.
     collection.add(times[frame], frame == 2 ? folder / name : std::filesystem::path(name));
     collection.write();  // rewritten after every frame, as a run does
-    expected["datasets"].push_back({{"timestep", times[frame]}, {"part", 0}, {"file", name},
+    expected["datasets"].push_back({{"timestep", times[frame]},
+                                    {"part", 0},
+                                    {"file", name},
                                     {"content", test::expected_contents(grid, {{"10", 1}})}});
   }
   EXPECT_EQ(test::run_checker("pvd", folder / "run.pvd", expected), 0);

@@ -71,7 +71,8 @@ TEST(VtuWriter, MixedTetAndHexCellsWithDataReadBackByMeshio) {
 
   const auto file = test::fresh_output_directory() / "mixed.vtu";
   write_vtu(file, grid);
-  EXPECT_EQ(test::run_checker("vtu", file, test::expected_contents(grid, {{"24", 2}, {"29", 1}, {"12", 1}, {"10", 1}})), 0);
+  EXPECT_EQ(test::run_checker("vtu", file, test::expected_contents(grid, {{"24", 2}, {"29", 1}, {"12", 1}, {"10", 1}})),
+            0);
 }
 
 TEST(VtuWriter, TriangleGridReadBackByMeshio) {
@@ -114,7 +115,8 @@ TEST(VtuWriter, PolyhedraReadBackByMeshio) {
   const auto file = test::fresh_output_directory() / "polyhedra.vtu";
   write_vtu(file, grid);
   EXPECT_EQ(test::run_checker("vtu", file, test::expected_contents(grid, {{"42", 2}})), 0);
-  EXPECT_EQ(test::run_checker("raw", file, {{"arrays", nlohmann::json::object()}, {"without_components", {"faces"}}}), 0);
+  EXPECT_EQ(test::run_checker("raw", file, {{"arrays", nlohmann::json::object()}, {"without_components", {"faces"}}}),
+            0);
 }
 
 TEST(VtuWriter, PolyhedraMixedWithOtherCellsFollowVtkFaceStream) {
@@ -130,8 +132,8 @@ TEST(VtuWriter, PolyhedraMixedWithOtherCellsFollowVtkFaceStream) {
       {"offsets", {5, 13, 17}},
       {"volume", {1.0 / 6.0, 1.0, 1.0 / 6.0}},
       {"faceoffsets", {22, 53, -1}},
-      {"faces", {5, 4, 4, 7, 6, 5, 3, 4, 5, 8, 3, 5, 6, 8, 3, 6, 7, 8, 3, 7, 4, 8,
-                 6, 4, 0, 3, 2, 1, 4, 4, 5, 6, 7, 4, 0, 1, 5, 4, 4, 1, 2, 6, 5, 4, 2, 3, 7, 6, 4, 3, 0, 4, 7}}};
+      {"faces", {5, 4, 4, 7, 6, 5, 3, 4, 5, 8, 3, 5, 6, 8, 3, 6, 7, 8, 3, 7, 4, 8, 6, 4, 0, 3, 2,
+                 1, 4, 4, 5, 6, 7, 4, 0, 1, 5, 4, 4, 1, 2, 6, 5, 4, 2, 3, 7, 6, 4, 3, 0, 4, 7}}};
   EXPECT_EQ(test::run_checker("raw", file, {{"arrays", arrays}, {"without_components", {"faces", "faceoffsets"}}}), 0);
 }
 

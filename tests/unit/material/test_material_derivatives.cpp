@@ -38,8 +38,8 @@ protected:
 TEST_P(MaterialDerivatives, Pk1IsTheEnergyGradient) {
   for (const Eigen::Matrix3d& F : samples(GetParam())) {
     const Eigen::Matrix3d P = material->pk1(F);
-    const Eigen::Matrix3d expected = test::finite_difference_gradient(
-        [&](const Eigen::Matrix3d& G) { return material->energy(G); }, F, 1e-6);
+    const Eigen::Matrix3d expected =
+        test::finite_difference_gradient([&](const Eigen::Matrix3d& G) { return material->energy(G); }, F, 1e-6);
     EXPECT_LE((P - expected).norm(), tolerance * expected.norm()) << "F =\n" << F << "\nP =\n" << P;
   }
 }

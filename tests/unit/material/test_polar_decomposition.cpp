@@ -31,9 +31,9 @@ TEST(PolarDecomposition, RotationDerivativeMatchesFiniteDifferences) {
   const Eigen::Matrix3d R1 = test::random_rotation(random);
   const Eigen::Matrix3d R2 = test::random_rotation(random);
   std::vector<Eigen::Matrix3d> samples = test::random_deformations(random, 10, 0.7);
-  samples.push_back(R1 * Eigen::Vector3d(1.5, 1.5, 1.5).asDiagonal() * R2.transpose());     // repeated
+  samples.push_back(R1 * Eigen::Vector3d(1.5, 1.5, 1.5).asDiagonal() * R2.transpose());  // repeated
   samples.push_back(R1 * Eigen::Vector3d(1.5, 1.5 + 1e-9, 0.3).asDiagonal() * R2.transpose());
-  samples.push_back(R1 * Eigen::Vector3d(1.2, 0.8, -0.3).asDiagonal() * R2.transpose());    // inverted
+  samples.push_back(R1 * Eigen::Vector3d(1.2, 0.8, -0.3).asDiagonal() * R2.transpose());  // inverted
   for (const Eigen::Matrix3d& F : samples) {
     const Matrix9d dRdF = polar_rotation_derivative(rotation_variant_svd(F));
     const Matrix9d expected = test::finite_difference_jacobian(rotation_of, F, 1e-6);

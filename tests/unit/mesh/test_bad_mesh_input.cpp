@@ -21,10 +21,8 @@ const std::filesystem::path fixtures = std::filesystem::path(ALTFEM_SOURCE_DIR) 
 std::string error_message(const std::filesystem::path& path) {
   try {
     const std::string extension = lowercase_extension(path);
-    if (extension == ".msh" || extension == ".mesh")
-      read_volume_mesh(path);
-    else
-      read_surface(path);
+    if (extension == ".msh" || extension == ".mesh") read_volume_mesh(path);
+    else read_surface(path);
   } catch (const InputError& error) {
     return error.what();
   }

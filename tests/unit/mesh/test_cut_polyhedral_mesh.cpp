@@ -31,15 +31,16 @@ PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
     std::map<std::pair<int, int>, int> edges;
     for (const int face : mesh.cell_faces[cell]) {
       std::vector<int> loop = mesh.faces[face];
-      if (loop.size() < 3) return ::testing::AssertionFailure() << "face " << face << " has " << loop.size() << " nodes";
+      if (loop.size() < 3)
+        return ::testing::AssertionFailure() << "face " << face << " has " << loop.size() << " nodes";
       if (mesh.face_cells(face, 0) != cell) std::reverse(loop.begin(), loop.end());
       for (std::size_t k = 0; k < loop.size(); ++k) ++edges[{loop[k], loop[(k + 1) % loop.size()]}];
     }
     for (const auto& [edge, count] : edges) {
       const auto reverse = edges.find({edge.second, edge.first});
       if (reverse == edges.end() || reverse->second != count)
-        return ::testing::AssertionFailure() << "cell " << cell << ": edge " << edge.first << " → " << edge.second
-                                             << " has no matching reverse";
+        return ::testing::AssertionFailure()
+               << "cell " << cell << ": edge " << edge.first << " → " << edge.second << " has no matching reverse";
     }
   }
   return ::testing::AssertionSuccess();
@@ -49,7 +50,8 @@ PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
 double volume_on_positive_side(const PolyhedralMesh& mesh, const CuttingPlane& plane) {
   double volume = 0;
   for (int cell = 0; cell < mesh.cell_count(); ++cell)
-    if ((mesh.cell_centroids.row(cell).transpose() - plane.point).dot(plane.normal) > 0) volume += mesh.cell_volumes[cell];
+    if ((mesh.cell_centroids.row(cell).transpose() - plane.point).dot(plane.normal) > 0)
+      volume += mesh.cell_volumes[cell];
   return volume;
 }
 
@@ -103,7 +105,8 @@ TEST(CutPolyhedralMesh, APlaneThroughGridNodesSeparatesAlongFaces) {
 
 TEST(CutPolyhedralMesh, APlaneAlongEdgesAndDiagonalsOfTetrahedra) {
   const PolyhedralMesh mesh = unit_cube(ElementType::tet4, 2);
-  for (const Eigen::Vector3d& normal : {Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(0, 1, -1)}) {
+  for (const Eigen::Vector3d& normal :
+       {Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(0, 1, -1)}) {
     const CuttingPlane plane{Eigen::Vector3d(0.5, 0.5, 0.5), normal};
     const PolyhedralCut cut = cut_polyhedral_mesh(mesh, plane);
     EXPECT_TRUE(every_cell_closed(cut.mesh)) << normal.transpose();
@@ -126,13 +129,16 @@ double clipped_cube_volume(const CuttingPlane& plane) {
   double volume = 0;
   for (int cell = 0; cell < tetrahedra.cell_count(); ++cell) {
     std::vector<int> corners;
-    for (const int face : tetrahedra.cell_faces[cell]) corners.insert(corners.end(), tetrahedra.faces[face].begin(), tetrahedra.faces[face].end());
+    for (const int face : tetrahedra.cell_faces[cell])
+      corners.insert(corners.end(), tetrahedra.faces[face].begin(), tetrahedra.faces[face].end());
     std::sort(corners.begin(), corners.end());
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     TetrahedronCorners tetrahedron;
     for (int k = 0; k < 4; ++k) tetrahedron.row(k) = tetrahedra.nodes.row(corners[k]);
     for (const TetrahedronCorners& piece : clip_tetrahedron(tetrahedron, {clip}))
-      volume += std::abs((piece.row(1) - piece.row(0)).cross(piece.row(2) - piece.row(0)).dot(piece.row(3) - piece.row(0))) / 6;
+      volume +=
+          std::abs((piece.row(1) - piece.row(0)).cross(piece.row(2) - piece.row(0)).dot(piece.row(3) - piece.row(0))) /
+          6;
   }
   return volume;
 }

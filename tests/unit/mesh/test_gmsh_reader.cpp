@@ -129,10 +129,12 @@ TEST(GmshReader, Msh22Tet10IsPermutedToVtkOrderAndUnusedNodesDropped) {
 // A unit-cube Hex20 in Gmsh's order: edges (0,1),(0,3),(0,4),(1,2),(1,5),(2,3),(2,6),(3,7),(4,5),(4,7),(5,6),(6,7).
 TEST(GmshReader, Msh22Hex20IsPermutedToVtkOrder) {
   const double corners[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  const int gmsh_edges[12][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}, {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
+  const int gmsh_edges[12][2] = {{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3},
+                                 {2, 6}, {3, 7}, {4, 5}, {4, 7}, {5, 6}, {6, 7}};
   std::ostringstream text;
   text << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n20\n";
-  for (int i = 0; i < 8; ++i) text << i + 1 << " " << corners[i][0] << " " << corners[i][1] << " " << corners[i][2] << "\n";
+  for (int i = 0; i < 8; ++i)
+    text << i + 1 << " " << corners[i][0] << " " << corners[i][1] << " " << corners[i][2] << "\n";
   for (int e = 0; e < 12; ++e) {
     text << 9 + e;
     for (int axis = 0; axis < 3; ++axis)

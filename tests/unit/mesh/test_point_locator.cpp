@@ -27,7 +27,9 @@ TEST(PointLocator, CandidatesAreExactlyTheBoxesHoldingThePoint) {
   int found = 0;
   for (int p = 0; p < 2000; ++p) {
     // Some points outside every bucket's range, some on box corners.
-    const Eigen::Vector3d x = p % 100 == 0 ? boxes[p / 100].max() : Eigen::Vector3d(1.3 * position(random), position(random), position(random));
+    const Eigen::Vector3d x = p % 100 == 0
+                                  ? boxes[p / 100].max()
+                                  : Eigen::Vector3d(1.3 * position(random), position(random), position(random));
     for (const double slack : {0.0, 0.05}) {
       std::vector<int> expected;
       for (int e = 0; e < 400; ++e) {

@@ -17,7 +17,8 @@ namespace {
 TEST(PolyhedralCellLocation, CellHoldsAgreesWithThePolyhedronsWindingNumberAndPartitionsTheTorus) {
   SlicingOptions options;
   options.resolution = 6;
-  const PolyhedralMesh mesh = slice_into_polyhedra(test::torus(1.0, 0.4, 48, 24, Eigen::Vector3d::Zero()), options).mesh;
+  const PolyhedralMesh mesh =
+      slice_into_polyhedra(test::torus(1.0, 0.4, 48, 24, Eigen::Vector3d::Zero()), options).mesh;
   std::mt19937 generator(11);
   std::uniform_real_distribution<double> uniform(-1.5, 1.5);
   int inside = 0;

@@ -108,10 +108,9 @@ TEST(PolyhedralMesh, InvertedCellIsANumericalErrorNamingTheCell) {
   }
 }
 
-
 TEST(PolyhedralMesh, VtuGridHasOnePolyhedronPerCellWithOutwardFacesAndCellData) {
-  const VolumeMesh volume_mesh = structured_grid(
-      Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)), {2, 1, 1}, ElementType::hex8);
+  const VolumeMesh volume_mesh = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                 {2, 1, 1}, ElementType::hex8);
   const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(volume_mesh);
   const UnstructuredGrid grid = grid_from_polyhedral_mesh(mesh);
   ASSERT_EQ(grid.cell_count(), 2);

@@ -38,7 +38,8 @@ SurfaceMesh join(const SurfaceMesh& a, const SurfaceMesh& b) {
 double surface_area(const SurfaceMesh& surface) {
   double area = 0;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
-    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)), b = surface.vertices.row(surface.triangles(t, 1)),
+    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)),
+                          b = surface.vertices.row(surface.triangles(t, 1)),
                           c = surface.vertices.row(surface.triangles(t, 2));
     area += (b - a).cross(c - a).norm() / 2;
   }
@@ -162,7 +163,8 @@ TEST(SliceIntoPolyhedra, TwoBoxesInOneGridCellGiveTwoPieces) {
 /// A U-shaped prism, y ∈ [0, 1]: bottom [0, 3] × z [0, 1], arms x ∈ [0, 1.45] and
 /// [1.55, 3] up to z = 3, so its gap (0.1 wide) is thinner than a cell; volume 8.8.
 SurfaceMesh u_shape() {
-  const std::vector<Eigen::Vector2d> outline{{0, 0}, {3, 0}, {3, 3}, {1.55, 3}, {1.55, 1}, {1.45, 1}, {1.45, 3}, {0, 3}};
+  const std::vector<Eigen::Vector2d> outline{{0, 0},    {3, 0},    {3, 3},    {1.55, 3},
+                                             {1.55, 1}, {1.45, 1}, {1.45, 3}, {0, 3}};
   // The outline's triangles without new vertices; counter-clockwise in (x, z), i.e. about −y.
   const std::vector<Eigen::Vector3i> cap{{0, 1, 4}, {0, 4, 5}, {1, 2, 3}, {1, 3, 4}, {0, 5, 6}, {0, 6, 7}};
   const int n = static_cast<int>(outline.size());
@@ -174,8 +176,8 @@ SurfaceMesh u_shape() {
   }
   std::vector<Eigen::Vector3i> triangles;
   for (const auto& t : cap) {
-    triangles.push_back(t);                                         // y = 0, outward −y
-    triangles.emplace_back(t(0) + n, t(2) + n, t(1) + n);           // y = 1, outward +y
+    triangles.push_back(t);                                // y = 0, outward −y
+    triangles.emplace_back(t(0) + n, t(2) + n, t(1) + n);  // y = 1, outward +y
   }
   for (int k = 0; k < n; ++k) {  // the sides, outward for a counter-clockwise outline about −y
     const int a = k, b = (k + 1) % n;
@@ -295,14 +297,16 @@ TEST(SliceIntoPolyhedra, RobustnessBatchOfDegenerateSurfacesKeepsTheVolume) {
       surface = box_surface(low, high);
       if (trial % 4 == 1) {
         const Eigen::Vector3d axis = Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
-        surface.vertices = (surface.vertices * Eigen::AngleAxisd(unit(random), axis).toRotationMatrix().transpose()).eval();
+        surface.vertices =
+            (surface.vertices * Eigen::AngleAxisd(unit(random), axis).toRotationMatrix().transpose()).eval();
       }
       if (lattice) options.cell_size = 0.125 * (1 + trial % 4 / 2), options.margin_cells = 1;
     } else {
       Eigen::Vector3d centre(unit(random), unit(random), unit(random));
       if (lattice) centre = (centre * 4).array().round() / 4;
-      surface = trial % 3 == 0 ? torus(0.7 + 0.3 * unit(random), 0.2 + 0.2 * unit(random), 16 + trial % 32, 8 + trial % 16, centre)
-                               : sphere(0.5 + unit(random), 4 + trial % 20, 8 + trial % 30, centre);
+      surface = trial % 3 == 0
+                    ? torus(0.7 + 0.3 * unit(random), 0.2 + 0.2 * unit(random), 16 + trial % 32, 8 + trial % 16, centre)
+                    : sphere(0.5 + unit(random), 4 + trial % 20, 8 + trial % 30, centre);
       if (lattice && trial % 3 != 0) options.cell_size = 0.25, options.margin_cells = 1;
     }
     const double volume = surface_volume(surface);

@@ -34,7 +34,8 @@ VolumeMesh shuffled_grid() {
   shuffled.cells.resize(grid.cells.rows(), grid.cells.cols());
   for (Eigen::Index cell = 0; cell < grid.cells.rows(); ++cell)
     for (Eigen::Index k = 0; k < grid.cells.cols(); ++k)
-      shuffled.cells(cell_order[static_cast<std::size_t>(cell)], k) = node_order[static_cast<std::size_t>(grid.cells(cell, k))];
+      shuffled.cells(cell_order[static_cast<std::size_t>(cell)], k) =
+          node_order[static_cast<std::size_t>(grid.cells(cell, k))];
   return shuffled;
 }
 

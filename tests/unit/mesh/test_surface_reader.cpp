@@ -34,8 +34,9 @@ std::string cube_off(unsigned flip_mask = 0) {
   for (int v = 0; v < 8; ++v) text += vertex_text(v) + "\n";
   for (int t = 0; t < 12; ++t) {
     const int* f = cube_triangles[t];
-    text += (flip_mask >> t & 1u) ? "3 " + std::to_string(f[0]) + " " + std::to_string(f[2]) + " " + std::to_string(f[1])
-                                  : "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]);
+    text += (flip_mask >> t & 1u)
+                ? "3 " + std::to_string(f[0]) + " " + std::to_string(f[2]) + " " + std::to_string(f[1])
+                : "3 " + std::to_string(f[0]) + " " + std::to_string(f[1]) + " " + std::to_string(f[2]);
     text += "\n";
   }
   return text;
@@ -92,12 +93,11 @@ TEST(SurfaceReader, CubeReadsInEveryFormat) {
 }
 
 TEST(SurfaceReader, QuadrilateralFacesAreTriangulated) {
-  const std::string text =
-      "OFF\n8 6 0\n" + [] {
-        std::string vertices;
-        for (int v = 0; v < 8; ++v) vertices += vertex_text(v) + "\n";
-        return vertices;
-      }() + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 3 7 6 2\n4 0 4 7 3\n4 1 2 6 5\n";
+  const std::string text = "OFF\n8 6 0\n" + [] {
+    std::string vertices;
+    for (int v = 0; v < 8; ++v) vertices += vertex_text(v) + "\n";
+    return vertices;
+  }() + "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 3 7 6 2\n4 0 4 7 3\n4 1 2 6 5\n";
   const SurfaceMesh cube = read_surface(write_file("quad_cube.off", text));
   EXPECT_EQ(cube.triangles.rows(), 12);
   EXPECT_NEAR(surface_volume(cube), 1.0, 1e-12);

@@ -68,7 +68,8 @@ TEST(TetrahedralizeBoxShape, MeshesAnLShapeAndANotchExactly) {
   const VolumeMesh l_mesh = tetrahedralize_box_shape(*l_shape, 0.1);
   EXPECT_EQ(volume_mesh_components(l_mesh), 1);
   EXPECT_NEAR(mesh_volume(l_mesh), 2 * 0.04 - 0.2 * 0.04, 1e-14);
-  const ShapePointer notched = make_difference({make_box({0, 0, 0}, {1, 1, 1}), make_box({0.3, 0.3, 0.5}, {0.6, 2, 2})});
+  const ShapePointer notched =
+      make_difference({make_box({0, 0, 0}, {1, 1, 1}), make_box({0.3, 0.3, 0.5}, {0.6, 2, 2})});
   EXPECT_NEAR(mesh_volume(tetrahedralize_box_shape(*notched, 0.25)), 1 - 0.3 * 0.7 * 0.5, 1e-14);
   EXPECT_FALSE(make_sphere({0, 0, 0}, 1)->axis_planes());
 }
@@ -151,7 +152,8 @@ TEST(TetrahedralizeShape, ProtectsACylindersRims) {
 }
 
 TEST(TetrahedralizeGeometry, BoxShapesAreExactAndPassTheChecks) {
-  const VolumeMesh mesh = tetrahedralize_geometry(shape_geometry(two_boxes()), 0.07, "/discretization/fem/max_cell_size");
+  const VolumeMesh mesh =
+      tetrahedralize_geometry(shape_geometry(two_boxes()), 0.07, "/discretization/fem/max_cell_size");
   EXPECT_EQ(volume_mesh_components(mesh), 2);
 }
 

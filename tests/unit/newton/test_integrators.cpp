@@ -27,8 +27,8 @@ class FreeFall : public ::testing::TestWithParam<IntegrationScheme> {};
 // (backward Euler's single Newton step is exact because K annihilates translations).
 TEST_P(FreeFall, MatchesTheDiscreteRecurrenceExactly) {
   const auto material = make_material(MaterialModel::stable_neo_hookean, 1e5, 0.3, 1000);
-  const auto fem = make_lagrange_discretization(structured_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10),
-                                                *material, {}, 4);
+  const auto fem =
+      make_lagrange_discretization(structured_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10), *material, {}, 4);
   const Discretization& discretization = *fem;
   const auto solver = make_linear_solver({});
   IntegratorOptions options;

@@ -38,8 +38,7 @@ struct Block {
     for (int node = 0; node < mesh.nodes.rows(); ++node) {
       if (mesh.nodes(node, 0) == 0.0)
         for (int k = 0; k < 3; ++k) clamped.push_back(3 * node + k);
-      else
-        force.segment<3>(3 * node) = Eigen::Vector3d(800.0, 0.0, 300.0);
+      else force.segment<3>(3 * node) = Eigen::Vector3d(800.0, 0.0, 300.0);
     }
   }
 };

@@ -36,7 +36,8 @@ struct TwoCubes {
     if (clamped) {
       faces = test::two_cube_face(3);
       test::add_clamped_face(faces, 3);
-      parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(faces, JumpPenaltyKernel(std::vector<double>{1e6, 1e6})));
+      parts.terms.push_back(
+          std::make_unique<FaceAssembler<JumpPenaltyKernel>>(faces, JumpPenaltyKernel(std::vector<double>{1e6, 1e6})));
       parts.conditions_weakly = true;
     }
     discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
@@ -58,7 +59,8 @@ TEST(TabulatedDiscretization, BlockPerElementMassOfMonomialCubes) {
   // constants and 0 on the centred monomials (a uniform acceleration).
   const ExplicitMass& mass = discretization.explicit_mass();
   const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(24, -1, 2);
-  EXPECT_LT((mass.multiply(v) - discretization.mass_matrix() * v).norm(), 1e-12 * (discretization.mass_matrix() * v).norm());
+  EXPECT_LT((mass.multiply(v) - discretization.mass_matrix() * v).norm(),
+            1e-12 * (discretization.mass_matrix() * v).norm());
   EXPECT_LT((mass.solve(mass.multiply(v)) - v).norm(), 1e-12 * v.norm());
   const Eigen::VectorXd acceleration = mass.solve(load);
   for (int a = 0; a < 8; ++a)
@@ -67,8 +69,8 @@ TEST(TabulatedDiscretization, BlockPerElementMassOfMonomialCubes) {
 
 TEST(TabulatedDiscretization, LumpedExplicitBodyForceIsLumpedMassTimesAcceleration) {
   const auto material = make_material(MaterialModel::linear, 1e5, 0.3, 1000);
-  const auto fem = make_lagrange_discretization(test::distorted_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10, 0.15, 3),
-                                                *material, {}, 4);
+  const auto fem = make_lagrange_discretization(
+      test::distorted_grid(test::unit_cube(), {2, 2, 2}, ElementType::tet10, 0.15, 3), *material, {}, 4);
   const auto& lumped = dynamic_cast<const DiagonalMass&>(fem->explicit_mass()).diagonal();
   const Eigen::VectorXd force = fem->explicit_body_force(gravity);
   ASSERT_EQ(force.size(), lumped.size());

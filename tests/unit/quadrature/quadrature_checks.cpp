@@ -98,8 +98,8 @@ namespace {
     }
     if (shape == Shape::simplex) depth = std::min(depth, 1.0 - coordinate_sum);
     if (!(depth > margin))
-      return ::testing::AssertionFailure() << "point " << i << " = (" << rule.points.row(i) << ") is " << -depth
-                                           << " outside";
+      return ::testing::AssertionFailure()
+             << "point " << i << " = (" << rule.points.row(i) << ") is " << -depth << " outside";
   }
   return ::testing::AssertionSuccess();
 }

@@ -66,7 +66,8 @@ TEST(GaussJacobi, ExactForPolynomialTimesIntegerWeight) {
         for (int i = 0; i < n; ++i) sum += rule.weights(i) * std::pow(rule.points(i, 0), k);
         const double exact = jacobi_moment(k, alpha, beta);
         const double scale = jacobi_moment(k % 2 == 0 ? k : k + 1, alpha, beta) + std::abs(exact);
-        EXPECT_LE(std::abs(sum - exact), 1e-13 * scale) << "alpha " << alpha << " beta " << beta << " n " << n << " k " << k;
+        EXPECT_LE(std::abs(sum - exact), 1e-13 * scale)
+            << "alpha " << alpha << " beta " << beta << " n " << n << " k " << k;
       }
     }
 }
@@ -74,8 +75,8 @@ TEST(GaussJacobi, ExactForPolynomialTimesIntegerWeight) {
 TEST(GaussJacobi, FractionalExponentsMeanAndMass) {
   // ∫ (1−x)^a (1+x)^b dx = 2^{a+b+1} Γ(a+1) Γ(b+1) / Γ(a+b+2); the mean is (b−a)/(a+b+2).
   const double alpha = -0.5, beta = 1.5;
-  const double mass = std::exp2(alpha + beta + 1) * std::tgamma(alpha + 1) * std::tgamma(beta + 1) /
-                      std::tgamma(alpha + beta + 2);
+  const double mass =
+      std::exp2(alpha + beta + 1) * std::tgamma(alpha + 1) * std::tgamma(beta + 1) / std::tgamma(alpha + beta + 2);
   const QuadratureRule rule = gauss_jacobi(7, alpha, beta);
   double sum = 0, first_moment = 0;
   for (int i = 0; i < 7; ++i) {

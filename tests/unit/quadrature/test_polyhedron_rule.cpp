@@ -18,7 +18,6 @@
 namespace altfem {
 namespace {
 
-
 void expect_exact(const PolyhedronRule& rule, const Polyhedron& polyhedron, int strength, double tolerance = 1e-13) {
   const Eigen::VectorXd exact = polyhedron_moments(polyhedron, strength);
   const auto exponents = monomial_exponents(strength);
@@ -48,7 +47,8 @@ std::vector<Eigen::Vector2d> refined(const std::vector<Eigen::Vector2d>& outline
   return result;
 }
 
-const std::vector<Eigen::Vector2d> u_outline{{0, 0}, {3, 0}, {3, 3}, {2.8, 3}, {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}};
+const std::vector<Eigen::Vector2d> u_outline{{0, 0},     {3, 0},     {3, 3},   {2.8, 3},
+                                             {2.8, 0.2}, {0.2, 0.2}, {0.2, 3}, {0, 3}};
 
 TEST(PolyhedronRule, ConvexCellIsExactWithPositiveWeights) {
   const Polyhedron cube = test::prism({{0, 0}, {1.3, 0}, {1.3, 1}, {0, 1}}, 0.7);
@@ -110,7 +110,8 @@ TEST(PolyhedronRule, SimplifiedRuleOfACellOfManyFacetsHasOnePointPerMomentAtMost
   EXPECT_EQ(simplified_polyhedron_rule(disc, 2, std::nullopt).weights.size(), polyhedron_rule(disc, 2).weights.size());
   // A rule of negative weights is no start for the simplifier: the U keeps its own.
   const Polyhedron u_prism = test::prism(u_outline, 0.7);
-  EXPECT_EQ(simplified_polyhedron_rule(u_prism, 2, SimplificationMethod::caratheodory).weights.size(), polyhedron_rule(u_prism, 2).weights.size());
+  EXPECT_EQ(simplified_polyhedron_rule(u_prism, 2, SimplificationMethod::caratheodory).weights.size(),
+            polyhedron_rule(u_prism, 2).weights.size());
 }
 
 }  // namespace

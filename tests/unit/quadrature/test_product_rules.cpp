@@ -54,7 +54,8 @@ TEST(ProductRules, PointCountIsMinimal) {
 }
 
 TEST(ProductRules, RejectNegativeStrength) {
-  for (const ProductRule& product : product_rules) EXPECT_THROW(product.make(-1), std::invalid_argument) << product.name;
+  for (const ProductRule& product : product_rules)
+    EXPECT_THROW(product.make(-1), std::invalid_argument) << product.name;
 }
 
 }  // namespace

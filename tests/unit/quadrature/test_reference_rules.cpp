@@ -60,8 +60,10 @@ TEST(ReferenceRules, SkipsTablesWithBoundaryPoints) {
 TEST(ReferenceRules, FallsBackToProductRulesAboveTheTables) {
   // Past the last table the rule is the product rule, point for point.
   const std::pair<std::function<QuadratureRule(int)>, std::function<QuadratureRule(int)>> pairs[] = {
-      {tet_rule, collapsed_tet_rule}, {hex_rule, tensor_hex_rule},
-      {triangle_rule, collapsed_triangle_rule}, {quad_rule, tensor_quad_rule}};
+      {tet_rule, collapsed_tet_rule},
+      {hex_rule, tensor_hex_rule},
+      {triangle_rule, collapsed_triangle_rule},
+      {quad_rule, tensor_quad_rule}};
   const int first_beyond_tables[] = {11, 12, 21, 22};
   for (int i = 0; i < 4; ++i) {
     const QuadratureRule selected = pairs[i].first(first_beyond_tables[i]);

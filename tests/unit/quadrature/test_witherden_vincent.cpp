@@ -80,7 +80,8 @@ TEST(WitherdenVincent, EveryShippedTableIsExactPositiveAndInterior) {
 }
 
 TEST(WitherdenVincent, CachedRulesAreLoadedOnce) {
-  EXPECT_EQ(&witherden_vincent_rules(ReferenceDomain::tetrahedron), &witherden_vincent_rules(ReferenceDomain::tetrahedron));
+  EXPECT_EQ(&witherden_vincent_rules(ReferenceDomain::tetrahedron),
+            &witherden_vincent_rules(ReferenceDomain::tetrahedron));
 }
 
 class MalformedTable : public ::testing::Test {
@@ -123,7 +124,9 @@ TEST_F(MalformedTable, NonPositiveWeight) {
   expect_input_error(write("weight.txt", "0 0 0 1\n0 0 0 -0.5\n"), "line 2: expected a positive weight");
 }
 
-TEST_F(MalformedTable, Empty) { expect_input_error(write("empty.txt", "\n \n"), "expected quadrature points, got none"); }
+TEST_F(MalformedTable, Empty) {
+  expect_input_error(write("empty.txt", "\n \n"), "expected quadrature points, got none");
+}
 
 TEST_F(MalformedTable, ReadsAWellFormedTable) {
   const QuadratureRule rule = read_quadrature_table(write("good.txt", " -0.5 0.25 +1e-1\t2 \r\n\n"), 3, 4);

@@ -35,7 +35,8 @@ std::vector<Expectation> expectations() {
 
 TEST(BadScenes, EveryFixtureIsListedOnce) {
   std::set<std::string> listed;
-  for (const auto& expectation : expectations()) EXPECT_TRUE(listed.insert(expectation.file).second) << expectation.file;
+  for (const auto& expectation : expectations())
+    EXPECT_TRUE(listed.insert(expectation.file).second) << expectation.file;
   std::set<std::string> present;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
     if (entry.path().extension() == ".json") present.insert(entry.path().filename().string());
@@ -80,8 +81,8 @@ TEST(BadScenes, NestingIsBounded) {
   const std::string sphere = R"({"sphere": {"centre": [0, 0, 0], "radius": 1}})";
   std::string shape = sphere;
   for (int i = 0; i < 100; ++i) shape = R"({"union": [)" + shape + "," + sphere + "]}";
-  const std::string text = R"({"geometry": {"shape": )" + shape +
-                           R"(}, "material": {"youngs_modulus": 1, "poisson_ratio": 0}})";
+  const std::string text =
+      R"({"geometry": {"shape": )" + shape + R"(}, "material": {"youngs_modulus": 1, "poisson_ratio": 0}})";
   EXPECT_THROW(parse_scene(text, "deep.json"), InputError);
 }
 

@@ -49,7 +49,8 @@ TEST(SceneDefaults, DynamicTimeAndRelativePaths) {
     "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.25 },
     "initial_conditions": { "centre": [1, 0, 0], "angular_velocity": [0, 0, 2] },
     "time": { "dt": 0.5, "steps": 4 }
-  })", "/tmp/scenes/dynamic.json");
+  })",
+                                  "/tmp/scenes/dynamic.json");
   EXPECT_EQ(scene.geometry.file, std::filesystem::path("/tmp/models/thing.OBJ"));
   EXPECT_EQ(scene.resolved["geometry"]["surface"], "/tmp/models/thing.OBJ");
   EXPECT_EQ(scene.geometry.scale, 2.0);

@@ -11,14 +11,17 @@ namespace {
 Scene with_condition(const std::string& condition) {
   return parse_scene(R"({"geometry": {"shape": {"box": {"min": [0, 0, 0], "max": [1, 1, 1]}}},
                          "material": {"youngs_modulus": 1, "poisson_ratio": 0},
-                         "boundary_conditions": [)" + condition + "]}",
+                         "boundary_conditions": [)" +
+                         condition + "]}",
                      "motion.json");
 }
 
 TEST(SceneMotion, RotateTurnsByOmegaTimesTAboutTheAxis) {
-  const Motion motion = with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
+  const Motion motion =
+      with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
       "motion": {"kind": "rotate", "axis": [0, 0, 2], "centre": [1, 1, 0], "angular_velocity": 0.5}})")
-                            .dirichlet[0].motion;
+          .dirichlet[0]
+          .motion;
   // A quarter turn about (1, 1, z) at t = π: (2, 1, 5) → (1, 2, 5).
   const Eigen::Vector3d u = motion.displacement({2, 1, 5}, std::numbers::pi);
   EXPECT_NEAR((u - Eigen::Vector3d(-1, 1, 0)).norm(), 0.0, 1e-14);
@@ -27,16 +30,20 @@ TEST(SceneMotion, RotateTurnsByOmegaTimesTAboutTheAxis) {
 }
 
 TEST(SceneMotion, TranslateWithVelocity) {
-  const Motion motion = with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
+  const Motion motion =
+      with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
       "motion": {"kind": "translate", "velocity": [1, -2, 0.5]}})")
-                            .dirichlet[0].motion;
+          .dirichlet[0]
+          .motion;
   EXPECT_EQ(motion.displacement({3, 3, 3}, 2.0), Eigen::Vector3d(2, -4, 1));
 }
 
 TEST(SceneMotion, TranslateDisplacementOverDurationThenHolds) {
-  const Motion motion = with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
+  const Motion motion =
+      with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [0, 0, 0], "radius": 1}},
       "motion": {"kind": "translate", "displacement": [0, 0, -0.2], "duration": 2}})")
-                            .dirichlet[0].motion;
+          .dirichlet[0]
+          .motion;
   EXPECT_NEAR(motion.displacement({0, 0, 0}, 0.5).z(), -0.05, 1e-15);
   EXPECT_NEAR(motion.displacement({0, 0, 0}, 2.0).z(), -0.2, 1e-15);
   EXPECT_NEAR(motion.displacement({0, 0, 0}, 7.0).z(), -0.2, 1e-15);
@@ -55,7 +62,8 @@ TEST(SceneMotion, FixedIsZeroAndComponentsDefaultToAll) {
 TEST(SceneRegions, BoxWithToleranceSelectsItsFaces) {
   const RegionSelector region =
       with_condition(R"({"type": "dirichlet", "region": {"box": {"min": [-1, -1, -1], "max": [0, 1, 1]}}})")
-          .dirichlet[0].region;
+          .dirichlet[0]
+          .region;
   EXPECT_TRUE(region.contains({0, 0.5, 0.5}, 0.0));
   EXPECT_TRUE(region.contains({1e-10, 0.5, 0.5}, 1e-9));
   EXPECT_FALSE(region.contains({1e-8, 0.5, 0.5}, 1e-9));
@@ -64,9 +72,10 @@ TEST(SceneRegions, BoxWithToleranceSelectsItsFaces) {
 }
 
 TEST(SceneRegions, HalfSpaceSelectsTheSideTheNormalPointsAwayFrom) {
-  const RegionSelector region = with_condition(
-      R"({"type": "dirichlet", "region": {"half_space": {"point": [0, 0.5, 0], "normal": [0, 3, 0]}}})")
-                                    .dirichlet[0].region;
+  const RegionSelector region =
+      with_condition(R"({"type": "dirichlet", "region": {"half_space": {"point": [0, 0.5, 0], "normal": [0, 3, 0]}}})")
+          .dirichlet[0]
+          .region;
   EXPECT_TRUE(region.contains({7, 0.2, -4}, 0.0));
   EXPECT_TRUE(region.contains({0, 0.5, 0}, 0.0));
   EXPECT_FALSE(region.contains({0, 0.6, 0}, 0.0));
@@ -78,10 +87,12 @@ TEST(SceneRegions, Sphere) {
   const RegionSelector region =
       with_condition(R"({"type": "dirichlet", "region": {"sphere": {"centre": [1, 1, 1], "radius": 0.5}},
                          "components": ["z", "x"]})")
-          .dirichlet[0].region;
+          .dirichlet[0]
+          .region;
   EXPECT_TRUE(region.contains({1, 1, 1.5}, 0.0));
   EXPECT_FALSE(region.contains({1, 1, 1.6}, 0.0));
-  EXPECT_TRUE(region.bounds().isApprox(Eigen::AlignedBox3d(Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(1.5, 1.5, 1.5))));
+  EXPECT_TRUE(
+      region.bounds().isApprox(Eigen::AlignedBox3d(Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(1.5, 1.5, 1.5))));
 }
 
 }  // namespace

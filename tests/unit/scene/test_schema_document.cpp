@@ -126,7 +126,8 @@ std::map<std::string, std::vector<std::string>> document_paths() {
     }
     if (line.rfind("| `", 0) != 0) continue;
     const std::string cell = line.substr(1, line.find('|', 1) - 1);
-    for (std::size_t open = cell.find('`'); open != std::string::npos; open = cell.find('`', cell.find('`', open + 1) + 1)) {
+    for (std::size_t open = cell.find('`'); open != std::string::npos;
+         open = cell.find('`', cell.find('`', open + 1) + 1)) {
       const std::string path = cell.substr(open + 1, cell.find('`', open + 1) - open - 1);
       const std::string section = path.rfind('/', 0) == 0 ? "full" : type_headings.count(heading) ? heading : "?";
       paths[section].push_back(path);

@@ -79,8 +79,8 @@ TEST(VectorExpression, OnlySurfaceExpressionsKnowTheNormal) {
       "scene.json");
   ASSERT_TRUE(scene.tractions[0].traction_field.has_value());
   EXPECT_FALSE(scene.tractions[0].traction.has_value());
-  const Eigen::MatrixXd value = scene.tractions[0].traction_field.evaluate(
-      Eigen::RowVector3d(1, 0.5, 0), Eigen::RowVector3d(1, 0, 0), 0.0);
+  const Eigen::MatrixXd value =
+      scene.tractions[0].traction_field.evaluate(Eigen::RowVector3d(1, 0.5, 0), Eigen::RowVector3d(1, 0, 0), 0.0);
   EXPECT_EQ(value, Eigen::RowVector3d(2, 0.5, 0));
   try {
     parse_scene(head + R"({"body_force": ["nx", 0, 0]}})", "scene.json");

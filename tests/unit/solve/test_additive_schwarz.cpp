@@ -36,7 +36,8 @@ Eigen::MatrixXd dense(const AdditiveSchwarzPreconditioner& preconditioner, Eigen
 }
 
 // Eq. (13) with eq. (14), from the definition.
-Eigen::MatrixXd expected_schwarz(const Eigen::MatrixXd& C, const std::vector<std::vector<int>>& blocks, double epsilon) {
+Eigen::MatrixXd expected_schwarz(const Eigen::MatrixXd& C, const std::vector<std::vector<int>>& blocks,
+                                 double epsilon) {
   const Eigen::Index n = C.rows();
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, n);
   std::vector<bool> covered(n, false);
@@ -115,7 +116,8 @@ TEST(AdditiveSchwarz, RestoresTheConditionOfNearlyDependentFunctions) {
   EXPECT_GT(plain.maxCoeff() / plain.minCoeff(), 1e11);
   AdditiveSchwarzPreconditioner preconditioner({{0, 1}});
   preconditioner.compute(sparse(C));
-  const Eigen::VectorXcd preconditioned = Eigen::EigenSolver<Eigen::MatrixXd>(dense(preconditioner, 2) * C).eigenvalues();
+  const Eigen::VectorXcd preconditioned =
+      Eigen::EigenSolver<Eigen::MatrixXd>(dense(preconditioner, 2) * C).eigenvalues();
   EXPECT_NEAR(preconditioned.cwiseAbs().maxCoeff() / preconditioned.cwiseAbs().minCoeff(), 1.0, 1e-3);
 }
 

@@ -2,8 +2,8 @@
 #include "shared/solve/linear_solver.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
 
-#include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <numeric>

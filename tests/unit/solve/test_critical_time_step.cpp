@@ -26,7 +26,9 @@ public:
   int dof_count() const override { return static_cast<int>(stiffness_.rows()); }
   double energy(const Eigen::VectorXd& u) const override { return 0.5 * u.dot(stiffness_ * u); }
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override { gradient = stiffness_ * u; }
-  void hessian(const Eigen::VectorXd&, Eigen::SparseMatrix<double>& hessian, bool) const override { hessian = stiffness_; }
+  void hessian(const Eigen::VectorXd&, Eigen::SparseMatrix<double>& hessian, bool) const override {
+    hessian = stiffness_;
+  }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return stiffness_; }
   bool hessian_is_constant() const override { return true; }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return mass_matrix_; }

@@ -53,8 +53,8 @@ TEST(DirectSolvers, AnalyseOnceFactoriseManyTimes) {
 }
 
 TEST(DirectSolvers, ChangedPatternIsAnalysedAgain) {
-  for (LinearSolverKind kind : {LinearSolverKind::cholmod, LinearSolverKind::ldlt, LinearSolverKind::lu,
-                                LinearSolverKind::pcg}) {
+  for (LinearSolverKind kind :
+       {LinearSolverKind::cholmod, LinearSolverKind::ldlt, LinearSolverKind::lu, LinearSolverKind::pcg}) {
     Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(5);
     auto solver = direct_solver(kind);
     solver->factorize(matrix);  // no analyze() yet: factorize analyses first

@@ -75,7 +75,8 @@ SparseMatrix random_prolongation(int fine, int coarse, int per_row, int group, c
 /// `matrix` (compressed) with the row indices of every column in decreasing order.
 SparseMatrix reversed_columns(SparseMatrix matrix) {
   for (Eigen::Index col = 0; col < matrix.outerSize(); ++col) {
-    std::reverse(matrix.innerIndexPtr() + matrix.outerIndexPtr()[col], matrix.innerIndexPtr() + matrix.outerIndexPtr()[col + 1]);
+    std::reverse(matrix.innerIndexPtr() + matrix.outerIndexPtr()[col],
+                 matrix.innerIndexPtr() + matrix.outerIndexPtr()[col + 1]);
     std::reverse(matrix.valuePtr() + matrix.outerIndexPtr()[col], matrix.valuePtr() + matrix.outerIndexPtr()[col + 1]);
   }
   return matrix;
@@ -178,7 +179,8 @@ TEST(GalerkinProduct, AggregatesOfTheElasticityLikeLaplacian) {
 
 TEST(GalerkinProduct, SameResultOnAnyNumberOfThreads) {
   // Each column is formed by one thread in a fixed order: the threads change nothing, bit for bit.
-  const SparseMatrix matrix = random_symmetric(300, 12, 0.08, 11), prolongation = random_prolongation(300, 77, 8, 4, {}, {}, 11);
+  const SparseMatrix matrix = random_symmetric(300, 12, 0.08, 11),
+                     prolongation = random_prolongation(300, 77, 8, 4, {}, {}, 11);
   const SparseMatrix restriction = prolongation.transpose();
   const int threads = omp_get_max_threads();
   omp_set_num_threads(1);
@@ -191,7 +193,8 @@ TEST(GalerkinProduct, SameResultOnAnyNumberOfThreads) {
 }
 
 TEST(GalerkinProduct, RejectsShapesThatDoNotFit) {
-  const SparseMatrix matrix = random_symmetric(10, 1, 0.3, 10), prolongation = random_prolongation(10, 4, 2, 1, {}, {}, 10);
+  const SparseMatrix matrix = random_symmetric(10, 1, 0.3, 10),
+                     prolongation = random_prolongation(10, 4, 2, 1, {}, {}, 10);
   EXPECT_THROW(galerkin_product(matrix, prolongation, prolongation), std::invalid_argument);
   EXPECT_THROW(galerkin_product(SparseMatrix(9, 9), prolongation, SparseMatrix(prolongation.transpose())),
                std::invalid_argument);

@@ -54,14 +54,14 @@ TEST_P(KrylovOnSpdSystem, ReachesToleranceAndMatchesCholmod) {
   EXPECT_EQ(solver->statistics().solves, 1);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    AllMethods, KrylovOnSpdSystem,
-    ::testing::Combine(::testing::Values(LinearSolverKind::pcg, LinearSolverKind::minres,
-                                         LinearSolverKind::conjugate_residual),
-                       ::testing::Values("none", "jacobi", "incomplete_cholesky")),
-    [](const auto& info) {
-      return std::string(linear_solver_kind_name(std::get<0>(info.param))) + "_" + std::get<1>(info.param);
-    });
+INSTANTIATE_TEST_SUITE_P(AllMethods, KrylovOnSpdSystem,
+                         ::testing::Combine(::testing::Values(LinearSolverKind::pcg, LinearSolverKind::minres,
+                                                              LinearSolverKind::conjugate_residual),
+                                            ::testing::Values("none", "jacobi", "incomplete_cholesky")),
+                         [](const auto& info) {
+                           return std::string(linear_solver_kind_name(std::get<0>(info.param))) + "_" +
+                                  std::get<1>(info.param);
+                         });
 
 TEST(Krylov, IncompleteCholeskyNeedsFewerIterationsThanJacobi) {
   const SpdSystem& system = spd_system();

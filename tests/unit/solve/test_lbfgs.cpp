@@ -1,8 +1,8 @@
 #include "shared/common/error.hpp"
 #include "shared/solve/lbfgs.hpp"
 
-#include <Eigen/Dense>
 #include <gtest/gtest.h>
+#include <Eigen/Dense>
 
 #include <cmath>
 #include <limits>

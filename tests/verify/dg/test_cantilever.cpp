@@ -62,8 +62,8 @@ TEST(DgCantilever, TipDeflectionAgreesWithTimoshenkoAndFineFem) {
   // with its excess stiffness (w − w_h) / w_h falling like h²: measured 1.33, 0.416, 0.115
   // on the three grids (rates 1.67, 1.85, towards 2), the deflection error 57%, 29%, 10%.
   for (const char* grid : {"[40,4,4]", "[80,8,8]"}) {
-    const TipResult linear =
-        tip_deflection(make_dg_method, {"/discretization/dg/degree=1", std::string("/discretization/dg/resolution=") + grid});
+    const TipResult linear = tip_deflection(
+        make_dg_method, {"/discretization/dg/degree=1", std::string("/discretization/dg/resolution=") + grid});
     std::printf("  %-29s %7d %12.5e %9.2f%% %9.2f%%\n", (std::string("dg k=1 ") + grid + " weak").c_str(), linear.dofs,
                 linear.deflection, 100 * (linear.deflection - reference.deflection) / reference.deflection,
                 100 * (linear.deflection - timoshenko) / timoshenko);

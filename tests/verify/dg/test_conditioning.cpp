@@ -23,8 +23,8 @@
 
 #include "dg/dg_linear_system.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/material/material.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
+#include "shared/material/material.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
@@ -117,7 +117,8 @@ PolyhedralMesh tetrahedron_with_inner_tetrahedron(double scale) {
       if (v != opposite) corners.push_back(v);
     Eigen::Vector3d inside = Eigen::Vector3d::Zero();  // the frustum's vertex mean
     for (int v : corners) inside += (nodes.row(v) + nodes.row(4 + v)).transpose() / 6;
-    FaceLoops frustum{outward(corners, nodes, inside), outward({4 + corners[0], 4 + corners[1], 4 + corners[2]}, nodes, inside)};
+    FaceLoops frustum{outward(corners, nodes, inside),
+                      outward({4 + corners[0], 4 + corners[1], 4 + corners[2]}, nodes, inside)};
     for (int e = 0; e < 3; ++e) {
       const int a = corners[e], b = corners[(e + 1) % 3];
       frustum.push_back(outward({a, b, 4 + b, 4 + a}, nodes, inside));
@@ -132,8 +133,8 @@ PolyhedralMesh tetrahedron_with_inner_tetrahedron(double scale) {
 PolyhedralMesh dumbbell(double neck) {
   const double left = 0.5 - neck / 2, right = 0.5 + neck / 2;
   // Counter-clockwise in (x, z): its y = 0 copy then has the outward normal −y (e_x × e_z = −e_y).
-  const std::vector<Eigen::Vector2d> profile{{0, 0},    {1, 0},     {1, 1}, {right, 1}, {right, 2}, {1, 2},
-                                             {1, 3},    {0, 3},     {0, 2}, {left, 2},  {left, 1},  {0, 1}};
+  const std::vector<Eigen::Vector2d> profile{{0, 0}, {1, 0}, {1, 1}, {right, 1}, {right, 2}, {1, 2},
+                                             {1, 3}, {0, 3}, {0, 2}, {left, 2},  {left, 1},  {0, 1}};
   const int n = static_cast<int>(profile.size());
   Eigen::MatrixXd nodes(2 * n, 3);
   for (int i = 0; i < n; ++i) {
@@ -165,7 +166,8 @@ PolyhedralMesh graded_row(const std::vector<double>& widths) {
     const Eigen::Vector3d inside = nodes.middleRows(a, 8).colwise().mean().transpose();
     cells.push_back({outward({a, a + 1, a + 3, a + 2}, nodes, inside), outward({b, b + 1, b + 3, b + 2}, nodes, inside),
                      outward({a, a + 1, b + 1, b}, nodes, inside), outward({a + 2, a + 3, b + 3, b + 2}, nodes, inside),
-                     outward({a, a + 2, b + 2, b}, nodes, inside), outward({a + 1, a + 3, b + 3, b + 1}, nodes, inside)});
+                     outward({a, a + 2, b + 2, b}, nodes, inside),
+                     outward({a + 1, a + 3, b + 3, b + 1}, nodes, inside)});
   }
   return mesh_of_cells(nodes, cells);
 }
@@ -189,8 +191,8 @@ TEST(DgConditioningFigure11, ConditionNumberGrowsWithTheVolumeRatio) {
     ratio = mesh.cell_volumes.maxCoeff() / mesh.cell_volumes.minCoeff();
     std::array<double, 2> kappa{};
     for (int degree : {1, 2})
-      kappa[degree - 1] = stiffness_conditioning(mesh, degree, [](const Eigen::Vector3d& x) { return x.z() < 1e-12; })
-                              .condition_number;
+      kappa[degree - 1] =
+          stiffness_conditioning(mesh, degree, [](const Eigen::Vector3d& x) { return x.z() < 1e-12; }).condition_number;
     std::printf("  %8.0e %12.3e %12.3e %12.3e\n", scale, ratio, kappa[0], kappa[1]);
     if (scale > 1e-3) continue;  // the plateau
     if (first_ratio == 0) first_ratio = ratio, first_kappa = kappa;

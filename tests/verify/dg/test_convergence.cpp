@@ -17,7 +17,9 @@ namespace {
 constexpr double lambda = 2.0, mu = 1.5, pi = std::numbers::pi;
 
 // u = (sin πx, sin πy, sin πz): σ is diagonal and −div σ = (λ + 2μ) π² u.
-Eigen::Vector3d exact(const Eigen::Vector3d& x) { return {std::sin(pi * x.x()), std::sin(pi * x.y()), std::sin(pi * x.z())}; }
+Eigen::Vector3d exact(const Eigen::Vector3d& x) {
+  return {std::sin(pi * x.x()), std::sin(pi * x.y()), std::sin(pi * x.z())};
+}
 Eigen::Vector3d force(const Eigen::Vector3d& x) { return (lambda + 2 * mu) * pi * pi * exact(x); }
 
 double l2_error(int cells_per_axis, int degree, Flux flux) {
@@ -27,23 +29,21 @@ double l2_error(int cells_per_axis, int degree, Flux flux) {
   const double penalty = 5.0 * (degree + 1) * (degree + 1) * (lambda + 2 * mu);
   const DgLinearSystem system(grid.cells, grid.faces, {degree, flux, penalty, lambda, mu});
   Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system.stiffness());
-  const Eigen::VectorXd u =
-      solver.solve(system.body_load(force) + system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact(x); }));
+  const Eigen::VectorXd u = solver.solve(system.body_load(force) +
+                                         system.dirichlet_load([](int, const Eigen::Vector3d& x) { return exact(x); }));
   return system.l2_error(u, exact);
 }
 
 // Prints the table and returns the rate of the last refinement.
 double convergence_table(int degree, Flux flux, const std::vector<int>& resolutions) {
-  std::printf("  %s, k = %d\n  %6s %14s %8s\n", flux == Flux::interior_penalty ? "IP" : "BZ", degree, "cells", "L2 error",
-              "rate");
+  std::printf("  %s, k = %d\n  %6s %14s %8s\n", flux == Flux::interior_penalty ? "IP" : "BZ", degree, "cells",
+              "L2 error", "rate");
   double previous = 0, rate = 0;
   for (size_t r = 0; r < resolutions.size(); ++r) {
     const double error = l2_error(resolutions[r], degree, flux);
     if (r > 0) rate = std::log2(previous / error) / std::log2(static_cast<double>(resolutions[r]) / resolutions[r - 1]);
-    if (r == 0)
-      std::printf("  %6d %14.4e %8s\n", resolutions[r] * resolutions[r] * resolutions[r], error, "-");
-    else
-      std::printf("  %6d %14.4e %8.2f\n", resolutions[r] * resolutions[r] * resolutions[r], error, rate);
+    if (r == 0) std::printf("  %6d %14.4e %8s\n", resolutions[r] * resolutions[r] * resolutions[r], error, "-");
+    else std::printf("  %6d %14.4e %8.2f\n", resolutions[r] * resolutions[r] * resolutions[r], error, rate);
     previous = error;
   }
   return rate;

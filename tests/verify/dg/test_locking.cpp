@@ -22,7 +22,8 @@
 namespace altfem::dg {
 namespace {
 
-const std::filesystem::path scene_file = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/dg/scenes/suspended_cube.json";
+const std::filesystem::path scene_file =
+    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/dg/scenes/suspended_cube.json";
 
 struct Sag {
   int dofs;
@@ -57,7 +58,8 @@ TEST(DgLockingFigure9, DgDoesNotLockWhereTet4Does) {
   print_row("fem Tet4, Kuhn grid 5^3", tet4_grid, reference.value);
   const Sag dg1_grid = sag(make_dg_method, {"/discretization/dg/degree=1"});
   print_row("dg k=1, Kuhn grid 5^3", dg1_grid, reference.value);
-  const Sag dg1_unsplit = sag(make_dg_method, {"/discretization/dg/degree=1", "/discretization/dg/penalty/lame_split=false"});
+  const Sag dg1_unsplit =
+      sag(make_dg_method, {"/discretization/dg/degree=1", "/discretization/dg/penalty/lame_split=false"});
   print_row("dg k=1 unsplit penalty, Kuhn grid", dg1_unsplit, reference.value);
   const Sag dg2_grid = sag(make_dg_method, {});
   print_row("dg k=2, Kuhn grid 5^3", dg2_grid, reference.value);
@@ -65,8 +67,9 @@ TEST(DgLockingFigure9, DgDoesNotLockWhereTet4Does) {
   // Mesh_3 of the cube's surface with max_cell_size 0.24.
   const auto tetrahedralized = [](const std::string& method) {
     return std::vector<std::string>{"/geometry={\"surface\": \"unit_cube.off\"}",
-                                    "/discretization/" + method + "={\"element\": \"tet4\", \"mesh\": \"tetrahedralize\", "
-                                    "\"max_cell_size\": 0.24}"};
+                                    "/discretization/" + method +
+                                        "={\"element\": \"tet4\", \"mesh\": \"tetrahedralize\", "
+                                        "\"max_cell_size\": 0.24}"};
   };
   const Sag tet4_mesh3 = sag(make_fem_method, tetrahedralized("fem"));
   print_row("fem Tet4, Mesh_3 of the surface", tet4_mesh3, reference.value);

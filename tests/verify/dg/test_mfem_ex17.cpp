@@ -55,11 +55,12 @@ double elastic_energy(const test::StaticRun& run) {
       Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();  // ∂u_i/∂X_j
       const auto basis_gradients = element.gradients_at(q);
       for (int a = 0; a < element.basis_count(); ++a)
-        gradient += run.displacement.segment<3>(3 * static_cast<Eigen::Index>(element.basis[a])) * basis_gradients.row(a);
+        gradient +=
+            run.displacement.segment<3>(3 * static_cast<Eigen::Index>(element.basis[a])) * basis_gradients.row(a);
       const Eigen::Matrix3d strain = 0.5 * (gradient + gradient.transpose());
-      const LameParameters lame =
-          materials.pointers()[materials.id_at(quadrature.points.row(row).transpose())]->lame();
-      energy += element.weights[q] * (0.5 * lame.lambda * strain.trace() * strain.trace() + lame.mu * strain.squaredNorm());
+      const LameParameters lame = materials.pointers()[materials.id_at(quadrature.points.row(row).transpose())]->lame();
+      energy +=
+          element.weights[q] * (0.5 * lame.lambda * strain.trace() * strain.trace() + lame.mu * strain.squaredNorm());
     }
   }
   return energy;
@@ -71,7 +72,9 @@ BeamResult solve(const MethodFactory& factory, const std::vector<std::string>& a
   return {run.method->discretization().dof_count(), centre.displacement(run.displacement)(0, 2), elastic_energy(run)};
 }
 
-std::string grid(int n) { return "[" + std::to_string(8 * n) + "," + std::to_string(n) + "," + std::to_string(n) + "]"; }
+std::string grid(int n) {
+  return "[" + std::to_string(8 * n) + "," + std::to_string(n) + "," + std::to_string(n) + "]";
+}
 
 void print_row(const std::string& label, const BeamResult& result, const BeamResult& reference) {
   std::printf("  %-24s %7d %12.6f %9.2e %12.6f %9.2e\n", label.c_str(), result.dofs, result.midspan,

@@ -19,9 +19,9 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <string>
 #include <numbers>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "dg/tabulated_dg.hpp"
@@ -46,9 +46,11 @@ Manufactured manufactured(const Eigen::Vector3d& x) {
   const double half = 0.5 * pi * x.x(), full = pi * x.x();
   Manufactured u;
   u.value = amplitude * Eigen::Vector3d(std::sin(half), std::sin(full), 1 - std::cos(half));
-  u.gradient.col(0) = amplitude * Eigen::Vector3d(0.5 * pi * std::cos(half), pi * std::cos(full), 0.5 * pi * std::sin(half));
-  const Eigen::Vector3d second = amplitude * Eigen::Vector3d(-0.25 * pi * pi * std::sin(half), -pi * pi * std::sin(full),
-                                                             0.25 * pi * pi * std::cos(half));
+  u.gradient.col(0) =
+      amplitude * Eigen::Vector3d(0.5 * pi * std::cos(half), pi * std::cos(full), 0.5 * pi * std::sin(half));
+  const Eigen::Vector3d second =
+      amplitude *
+      Eigen::Vector3d(-0.25 * pi * pi * std::sin(half), -pi * pi * std::sin(full), 0.25 * pi * pi * std::cos(half));
   for (int k = 0; k < 3; ++k) u.second[k](0, 0) = second[k];
   return u;
 }
@@ -85,7 +87,8 @@ Eigen::VectorXd traction_load(const DgLinearSystem& system, const Material& mate
     const PolyhedronRule rule = polygon_rule(face.polygon, 2 * basis.degree() + 2);
     for (Eigen::Index p = 0; p < rule.weights.size(); ++p) {
       const Eigen::Vector3d x = rule.points.row(p).transpose();
-      const Eigen::Vector3d traction = material.pk1(Eigen::Matrix3d::Identity() + manufactured(x).gradient) * face.normal;
+      const Eigen::Vector3d traction =
+          material.pk1(Eigen::Matrix3d::Identity() + manufactured(x).gradient) * face.normal;
       basis.evaluate(x, phi, gradients);
       for (Eigen::Index a = 0; a < phi.size(); ++a)
         load.segment<3>(3 * (system.offset(face.minus) + a)) += rule.weights[p] * phi[a] * traction;
@@ -134,8 +137,8 @@ double l2_error(const Material& material, int cells_per_axis, int degree, Flux f
   settings.rule_simplification = simplification;
   const DgLinearSystem system(grid.cells, grid.faces, settings);
   const auto exact = [](const Eigen::Vector3d& x) { return manufactured(x).value; };
-  const Eigen::VectorXd load =
-      system.body_load([&](const Eigen::Vector3d& x) { return body_force(material, x); }) + traction_load(system, material);
+  const Eigen::VectorXd load = system.body_load([&](const Eigen::Vector3d& x) { return body_force(material, x); }) +
+                               traction_load(system, material);
   if (path == Path::exact) {
     const auto solver = make_linear_solver({});
     solver->factorize(system.stiffness());
@@ -143,8 +146,8 @@ double l2_error(const Material& material, int cells_per_axis, int degree, Flux f
     solver->solve(load, u);
     return system.l2_error(u, exact);
   }
-  const TabulatedDg dg =
-      make_tabulated_dg(system, {&material}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
+  const TabulatedDg dg = make_tabulated_dg(
+      system, {&material}, [&](double) { return Eigen::VectorXd::Zero(system.dof_count()).eval(); }, {});
   const Eigen::VectorXd u = solve(*dg.discretization, load);
   return system.l2_error(u, exact);
 }
@@ -165,14 +168,14 @@ std::array<double, 2> convergence_table(const std::string& title, const std::arr
     double error[2];
     for (int f = 0; f < 2; ++f) {
       error[f] = columns[f].error(resolutions[r]);
-      if (r > 0) rate[f] = std::log2(previous[f] / error[f]) / std::log2(static_cast<double>(resolutions[r]) / resolutions[r - 1]);
+      if (r > 0)
+        rate[f] =
+            std::log2(previous[f] / error[f]) / std::log2(static_cast<double>(resolutions[r]) / resolutions[r - 1]);
       previous[f] = error[f];
     }
     const int cells = resolutions[r] * resolutions[r] * resolutions[r];
-    if (r == 0)
-      std::printf("  %6d %12.4e %6s %12.4e %6s\n", cells, error[0], "-", error[1], "-");
-    else
-      std::printf("  %6d %12.4e %6.2f %12.4e %6.2f\n", cells, error[0], rate[0], error[1], rate[1]);
+    if (r == 0) std::printf("  %6d %12.4e %6s %12.4e %6s\n", cells, error[0], "-", error[1], "-");
+    else std::printf("  %6d %12.4e %6.2f %12.4e %6.2f\n", cells, error[0], rate[0], error[1], rate[1]);
   }
   return rate;
 }
@@ -205,9 +208,8 @@ void expect_simplified_rules_converge_like_the_cone_rules(int k, const std::vect
   const std::array<double, 2> rates = convergence_table(
       "Neo-Hookean, interior penalty, k = " + std::to_string(k),
       {Column{"cone L2", [&](int n) { return cone_errors.emplace_back(error_of(std::nullopt)(n)); }},
-       Column{"simplified", [&](int n) {
-                return simplified_errors.emplace_back(error_of(SimplificationMethod::caratheodory)(n));
-              }}},
+       Column{"simplified",
+              [&](int n) { return simplified_errors.emplace_back(error_of(SimplificationMethod::caratheodory)(n)); }}},
       resolutions);
   EXPECT_GE(rates[1], k + 1 - 0.3);
   EXPECT_NEAR(simplified_errors.back(), cone_errors.back(), 0.05 * cone_errors.back());
@@ -227,10 +229,10 @@ TEST(NonlinearConvergence, TheLinearMaterialLiftedConvergesLikeEquation21) {
     const auto error_of = [&](Path path) {
       return [&, path](int n) { return l2_error(*material, n, k, Flux::interior_penalty, path); };
     };
-    const std::array<double, 2> rates = convergence_table(
-        "linear, k = " + std::to_string(k),
-        {Column{"lifted L2", error_of(Path::tabulated)}, Column{"eq. 21 L2", error_of(Path::exact)}},
-        k == 1 ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 6});
+    const std::array<double, 2> rates =
+        convergence_table("linear, k = " + std::to_string(k),
+                          {Column{"lifted L2", error_of(Path::tabulated)}, Column{"eq. 21 L2", error_of(Path::exact)}},
+                          k == 1 ? std::vector<int>{2, 4, 8} : std::vector<int>{2, 4, 6});
     EXPECT_GE(rates[0], k + 1 - 0.3) << "k = " << k;
     EXPECT_GE(rates[1], k + 1 - 0.3) << "k = " << k;
   }

@@ -11,8 +11,8 @@
 #include <string>
 
 #include "dg/dg_discretization.hpp"
-#include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/grid_coarse_levels.hpp"
+#include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/vertex_coarse_space.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
@@ -59,20 +59,18 @@ Iterations pcg_iterations(const PolyhedralMesh& mesh, int degree, double x_clamp
 
 void print_row(const char* mesh, int cells, const Iterations& iterations) {
   const std::string block_jacobi = iterations.block_jacobi > 0 ? std::to_string(iterations.block_jacobi) : "-";
-  std::printf("  %-14s %7d %8d %14s %11d %11d (%d grid levels)\n", mesh, cells, iterations.dofs,
-              block_jacobi.c_str(), iterations.two_level, iterations.multilevel, iterations.grid_levels);
+  std::printf("  %-14s %7d %8d %14s %11d %11d (%d grid levels)\n", mesh, cells, iterations.dofs, block_jacobi.c_str(),
+              iterations.two_level, iterations.multilevel, iterations.grid_levels);
 }
 
 TEST(TwoLevelIterations, StayBoundedUnderRefinementOfAHexahedralGrid) {
-  std::printf("  %-14s %7s %8s %14s %11s %11s\n", "mesh", "cells", "DOFs", "block Jacobi", "two-level",
-              "multilevel");
+  std::printf("  %-14s %7s %8s %14s %11s %11s\n", "mesh", "cells", "DOFs", "block Jacobi", "two-level", "multilevel");
   for (int degree : {1, 2}) {
     std::vector<Iterations> rows;
     const std::vector<int> resolutions = degree == 1 ? std::vector<int>{4, 8, 16} : std::vector<int>{4, 8};
     for (int n : resolutions) {
-      const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(
-          structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), {n, n, n},
-                          ElementType::hex8));
+      const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(structured_grid(
+          Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), {n, n, n}, ElementType::hex8));
       rows.push_back(pcg_iterations(mesh, degree, 1e-9, true));
       print_row(degree == 1 ? "grid, k = 1" : "grid, k = 2", n * n * n, rows.back());
     }
@@ -83,10 +81,8 @@ TEST(TwoLevelIterations, StayBoundedUnderRefinementOfAHexahedralGrid) {
       EXPECT_LT(rows[r].two_level, 1.25 * rows[r - 1].two_level) << "k = " << degree;
       // The multilevel cycle is the two-level one while the vertex space is coarsest (4³):
       // bounded from the first grid with a grid level below its vertices on.
-      if (rows[r - 1].grid_levels > 0)
-        EXPECT_LT(rows[r].multilevel, 1.25 * rows[r - 1].multilevel) << "k = " << degree;
-      else
-        EXPECT_EQ(rows[r - 1].multilevel, rows[r - 1].two_level) << "k = " << degree;
+      if (rows[r - 1].grid_levels > 0) EXPECT_LT(rows[r].multilevel, 1.25 * rows[r - 1].multilevel) << "k = " << degree;
+      else EXPECT_EQ(rows[r - 1].multilevel, rows[r - 1].two_level) << "k = " << degree;
     }
   }
 }

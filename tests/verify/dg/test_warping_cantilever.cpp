@@ -21,7 +21,8 @@ namespace {
 
 test::StaticSurface run(const MethodFactory& factory, std::vector<std::string> assignments) {
   assignments.push_back("/material/youngs_modulus=3e6");
-  return test::static_surface(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", factory, assignments);
+  return test::static_surface(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", factory,
+                              assignments);
 }
 
 // RMS over the vertices of |u − u_reference|, relative to the bounding-box diagonal
@@ -64,10 +65,11 @@ TEST(DgWarpingCantilever, WarpedDgFollowsTheCorotatedFemWhileLinearDgInflates) {
 TEST(DgWarpingCantilever, WarpedDgTwistsLikeTheCorotatedFem) {
   const auto twist = [](const MethodFactory& factory, const std::vector<std::string>& specific) {
     std::vector<std::string> assignments;
-    for (const char* assignment : {"/material/youngs_modulus=1e6", "/time={\"static\": true}",
-                                   "/boundary_conditions/1/motion/angular_velocity=1.5707963267948966",
-                                   "/discretization/fem={\"element\": \"hex20\", \"mesh\": \"grid\", \"resolution\": [10, 2, 2]}",
-                                   "/discretization/dg={\"degree\": 2, \"resolution\": [10, 2, 2]}"})
+    for (const char* assignment :
+         {"/material/youngs_modulus=1e6", "/time={\"static\": true}",
+          "/boundary_conditions/1/motion/angular_velocity=1.5707963267948966",
+          "/discretization/fem={\"element\": \"hex20\", \"mesh\": \"grid\", \"resolution\": [10, 2, 2]}",
+          "/discretization/dg={\"degree\": 2, \"resolution\": [10, 2, 2]}"})
       assignments.emplace_back(assignment);
     assignments.insert(assignments.end(), specific.begin(), specific.end());
     return test::static_surface(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/twisting_beam.json", factory,
@@ -96,9 +98,9 @@ TEST(DgWarpingCantilever, WarpedDgTwistsLikeTheCorotatedFem) {
 TEST(DgWarpingCantilever, BackwardEulerAndSemiImplicitRunWithWarping) {
   Eigen::Vector3d tip[2];
   for (IntegrationScheme scheme : {IntegrationScheme::backward_euler, IntegrationScheme::semi_implicit}) {
-    const std::vector<SceneOverride> overrides{
-        parse_scene_override("/material/youngs_modulus=3e6"), parse_scene_override("/discretization/dg/warping=true"),
-        parse_scene_override("/discretization/dg/resolution=[10,1,1]")};
+    const std::vector<SceneOverride> overrides{parse_scene_override("/material/youngs_modulus=3e6"),
+                                               parse_scene_override("/discretization/dg/warping=true"),
+                                               parse_scene_override("/discretization/dg/resolution=[10,1,1]")};
     const Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", overrides);
     const SceneGeometry geometry = load_scene_geometry(scene);
     const auto method = make_dg_method(scene, geometry);
@@ -120,8 +122,8 @@ TEST(DgWarpingCantilever, BackwardEulerAndSemiImplicitRunWithWarping) {
       if (std::abs(vertices(v, 0) - 1.0) < 1e-9) sum += displacement.row(v).transpose(), ++count;
     tip[scheme == IntegrationScheme::semi_implicit] = sum / count;
     std::printf("  %-15s tip at t = 0.1 s: (%.4f, %.4f, %.4f) m, %d Newton iterations in 20 steps\n",
-                std::string(integration_scheme_name(scheme)).c_str(), sum.x() / count, sum.y() / count,
-                sum.z() / count, newton_iterations);
+                std::string(integration_scheme_name(scheme)).c_str(), sum.x() / count, sum.y() / count, sum.z() / count,
+                newton_iterations);
     EXPECT_TRUE(state.displacement.allFinite());
     EXPECT_LT(tip[scheme == IntegrationScheme::semi_implicit].z(), -0.01);
   }

@@ -129,10 +129,11 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
 }
 
 TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
-  const Scene scene = load_scene(
-      scenes / "cantilever_cut.json",
-      {parse_scene_override("events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
-                            "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
+  const Scene scene =
+      load_scene(scenes / "cantilever_cut.json",
+                 {parse_scene_override(
+                     "events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
+                     "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = method_named(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);

@@ -50,8 +50,8 @@ double tip_deflection(const Simulation& simulation) {
 
 // The free cantilever (the clamp alone) at static equilibrium under gravity.
 double static_free_deflection(const std::string& method_name) {
-  Scene scene = load_scene(scene_file, {parse_scene_override("time={\"static\": true}"),
-                                        parse_scene_override("events=[]")});
+  Scene scene =
+      load_scene(scene_file, {parse_scene_override("time={\"static\": true}"), parse_scene_override("events=[]")});
   scene.dirichlet.pop_back();  // the tip
   const SceneGeometry geometry = load_scene_geometry(scene);
   Simulation simulation(scene, geometry, method_name, method_named(method_name).factory);
@@ -80,9 +80,10 @@ TEST_P(Release, TheBeamOscillatesAboutTheFreeStaticDeflection) {
     lowest = std::min(lowest, tip_deflection(simulation));
   }
   ASSERT_TRUE(released);
-  std::printf("%-8s tip deflection: free static %.5f m (fem %.5f), lowest after the release %.5f (%.2f x), "
-              "at the end %.5f\n",
-              GetParam().c_str(), free, fem, lowest, lowest / free, tip_deflection(simulation));
+  std::printf(
+      "%-8s tip deflection: free static %.5f m (fem %.5f), lowest after the release %.5f (%.2f x), "
+      "at the end %.5f\n",
+      GetParam().c_str(), free, fem, lowest, lowest / free, tip_deflection(simulation));
   EXPECT_NEAR(held, 0.0, 1e-12) << "the held tip does not move";
   EXPECT_LT(lowest, 1.15 * free) << "no overshoot past the static deflection " << free;
   EXPECT_NEAR(tip_deflection(simulation), free, 0.02 * std::abs(free));
@@ -143,7 +144,8 @@ TEST_P(Release, BetweenStaticLoadStepsGivesTheFreeCantilever) {
 // quadratic for the quadratic bases (fem and fcm Hex20, dg k = 2) and affine for
 // harmonic's trilinear cells.
 TEST_P(Release, TransferToAFinerMeshReproducesTheBasisPolynomials) {
-  const std::string block = GetParam() == "harmonic" ? "discretization/harmonic/convert/" : "discretization/" + GetParam() + "/";
+  const std::string block =
+      GetParam() == "harmonic" ? "discretization/harmonic/convert/" : "discretization/" + GetParam() + "/";
   const auto build = [&](const std::string& resolution) {
     return load_scene(scene_file, {parse_scene_override(block + "resolution=" + resolution)});
   };
@@ -155,7 +157,8 @@ TEST_P(Release, TransferToAFinerMeshReproducesTheBasisPolynomials) {
   const bool quadratic = GetParam() != "harmonic";
   const auto field = [quadratic](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     const Eigen::Vector3d affine(0.01 * x.x() - 0.02 * x.z(), 0.03 * x.y() + 0.001, -0.02 * x.x() + 0.01 * x.y());
-    return quadratic ? Eigen::Vector3d(affine + Eigen::Vector3d(0.05 * x.x() * x.x(), 0.02 * x.x() * x.z(), 0.04 * x.y() * x.z()))
+    return quadratic ? Eigen::Vector3d(
+                           affine + Eigen::Vector3d(0.05 * x.x() * x.x(), 0.02 * x.x() * x.z(), 0.04 * x.y() * x.z()))
                      : affine;
   };
   const Eigen::VectorXd transferred = fine->transfer(*coarse, coarse->interpolate(field)).col(0);

@@ -145,15 +145,15 @@ protected:
     scene_ = new Scene(load_scene(std::string(ALTFEM_SOURCE_DIR "/tests/verify/fcm/scenes/") + name + ".json"));
     geometry_ = new SceneGeometry(load_scene_geometry(*scene_));
     const MaterialSpec& spec = scene_->material;
-    material_ = make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio,
-                              spec.density)
-                    .release();
+    material_ =
+        make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio, spec.density)
+            .release();
     const double size = scene_->resolved["discretization"]["fcm"]["embedded_cell_size"].get<double>();
     embedded_ = new VolumeMesh(embedded_tetrahedra(*geometry_, size, name));
     reference_mesh_ = new VolumeMesh(elevate_order(*embedded_, ElementType::tet10));
     const auto reference = make_lagrange_discretization(*reference_mesh_, *material_, scene_->dirichlet, 6);
-    reference_ = new ReferenceField(reference_field(*reference_mesh_, reference->elements(),
-                                                    solve(*scene_, *reference, reference_mesh_->nodes)));
+    reference_ = new ReferenceField(
+        reference_field(*reference_mesh_, reference->elements(), solve(*scene_, *reference, reference_mesh_->nodes)));
     std::printf("reference: Tet10 fem, %lld DOFs, %lld quadrature points\n",
                 static_cast<long long>(3 * reference_mesh_->nodes.rows()),
                 static_cast<long long>(reference_->weights.size()));
@@ -181,7 +181,8 @@ protected:
     const VolumeMesh background = structured_grid(geometry_->bounds, resolution(geometry_->bounds, n), spec.cell);
     const CellQuadratureSource rules =
         intersection_cell_quadrature(background, *embedded_, spec.simplifier, spec.simplification_tolerance);
-    const FcmDiscretization fcm = build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options);
+    const FcmDiscretization fcm =
+        build_fcm_discretization(background, rules, *material_, scene.dirichlet, spec.options);
     const Eigen::VectorXd u = solve(*scene_, *fcm.discretization, fcm.mesh.nodes);
     return {h(n), fcm.discretization->dof_count(), relative_error(*reference_, fcm.mesh, u)};
   }
@@ -197,7 +198,8 @@ protected:
       if (geometry_->shape->level_set(centre) < 0) inside.push_back(static_cast<int>(c));
     }
     VolumeMesh voxels{ElementType::hex8, grid.nodes, Eigen::MatrixXi(inside.size(), 8)};
-    for (size_t i = 0; i < inside.size(); ++i) voxels.cells.row(static_cast<Eigen::Index>(i)) = grid.cells.row(inside[i]);
+    for (size_t i = 0; i < inside.size(); ++i)
+      voxels.cells.row(static_cast<Eigen::Index>(i)) = grid.cells.row(inside[i]);
     // Unused grid nodes carry no element: give them to no DOF by compacting.
     std::vector<int> index(grid.nodes.rows(), -1);
     int used = 0;
@@ -237,8 +239,7 @@ protected:
   // The face ghost penalty in place of the stabilisation (γ = 0.01, the conditioning
   // command's default) is consistent: it vanishes on polynomials of the cell's degree, so
   // the rates stay optimal.
-  static void expect_ghost_penalty_keeps_the_rate(const std::string& cell, const std::vector<int>& sizes,
-                                                  double rate) {
+  static void expect_ghost_penalty_keeps_the_rate(const std::string& cell, const std::vector<int>& sizes, double rate) {
     std::vector<Row> rows;
     for (int n : sizes) rows.push_back(fcm_row(cell, n, 0.01));
     print((cell + " FCM, ghost penalty 0.01, no stabilisation").c_str(), rows);
@@ -263,12 +264,18 @@ protected:
   static ReferenceField* reference_;
 };
 
-template <const char* name> Scene* Convergence<name>::scene_ = nullptr;
-template <const char* name> SceneGeometry* Convergence<name>::geometry_ = nullptr;
-template <const char* name> Material* Convergence<name>::material_ = nullptr;
-template <const char* name> VolumeMesh* Convergence<name>::embedded_ = nullptr;
-template <const char* name> VolumeMesh* Convergence<name>::reference_mesh_ = nullptr;
-template <const char* name> ReferenceField* Convergence<name>::reference_ = nullptr;
+template <const char* name>
+Scene* Convergence<name>::scene_ = nullptr;
+template <const char* name>
+SceneGeometry* Convergence<name>::geometry_ = nullptr;
+template <const char* name>
+Material* Convergence<name>::material_ = nullptr;
+template <const char* name>
+VolumeMesh* Convergence<name>::embedded_ = nullptr;
+template <const char* name>
+VolumeMesh* Convergence<name>::reference_mesh_ = nullptr;
+template <const char* name>
+ReferenceField* Convergence<name>::reference_ = nullptr;
 
 constexpr char half_ball[] = "half_ball";
 constexpr char ball[] = "ball";

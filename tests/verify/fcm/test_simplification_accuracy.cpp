@@ -60,7 +60,9 @@ void expect_simplified_rules_as_accurate(int steps, const std::vector<std::strin
   const SurfaceError simplified_error = surface_error(simplified.surface, reference.surface);
   const SurfaceError full_error = surface_error(unsimplified.surface, reference.surface);
   const SurfaceError rules_difference = surface_error(simplified.surface, unsimplified.surface);
-  const auto points = [](const SimulatedRun& run) { return run.summary["facts"]["cut_cell_points"]["final"].get<double>(); };
+  const auto points = [](const SimulatedRun& run) {
+    return run.summary["facts"]["cut_cell_points"]["final"].get<double>();
+  };
   const auto assembly = [](const SimulatedRun& run) { return run.summary["timings_s"]["assembly"].get<double>(); };
   std::printf("  %-22s %14s %12s %12s\n", "cut-cell rules", "cut-cell points", "assembly (s)", "RMS error");
   std::printf("  %-22s %14.0f %12.3f %12.4e\n", "full (intersection)", points(unsimplified), assembly(unsimplified),

@@ -25,8 +25,8 @@ TEST(CellRules, CellsEntirelyInsideGetTheStandardRule) {
   for (const ElementType type : {ElementType::hex20, ElementType::tet10}) {
     const VolumeMesh background = structured_grid(box, Eigen::Vector3i(2, 2, 2), type);
     const CellRules rules = compute_cell_rules(background, embedded, {4});
-    const QuadratureRule standard = reference_rule(
-        type == ElementType::hex20 ? ReferenceDomain::hexahedron : ReferenceDomain::tetrahedron, 4);
+    const QuadratureRule standard =
+        reference_rule(type == ElementType::hex20 ? ReferenceDomain::hexahedron : ReferenceDomain::tetrahedron, 4);
     EXPECT_EQ(rules.inside_cells, background.cells.rows());
     for (const CellRule& cell : rules.cells) {
       EXPECT_EQ(cell.kind, CellKind::inside);
@@ -56,8 +56,8 @@ Eigen::VectorXd rule_moments(const VolumeMesh& background, const CellRules& rule
       for (int total = 0; total <= degree; ++total)
         for (int transverse = 0; transverse <= total; ++transverse)
           for (int k = 0; k <= transverse; ++k)
-            sums(index++) += weight * std::pow(y.x(), total - transverse) * std::pow(y.y(), transverse - k) *
-                             std::pow(y.z(), k);
+            sums(index++) +=
+                weight * std::pow(y.x(), total - transverse) * std::pow(y.y(), transverse - k) * std::pow(y.z(), k);
     }
   }
   return sums;

@@ -49,9 +49,11 @@ TEST_P(IntersectionMoments, VolumeAndFirstMomentsOfEmbeddedPolyhedra) {
   const double size = 0.25;  // L-prism reaches 2·size = 0.5 < 1 along x and y
   for (const EmbeddedShape& shape : testing::corner_shapes(size)) {
     SCOPED_TRACE(shape.name);
-    const EmbeddedShape inside = testing::mapped(shape, [&](const Eigen::Vector3d& s) { return to_physical(to_reference(s)); });
-    const EmbeddedShape outside = testing::mapped(
-        shape, [&](const Eigen::Vector3d& s) { return to_physical(to_reference(Eigen::Vector3d(-s.x(), s.y(), s.z()))); });
+    const EmbeddedShape inside =
+        testing::mapped(shape, [&](const Eigen::Vector3d& s) { return to_physical(to_reference(s)); });
+    const EmbeddedShape outside = testing::mapped(shape, [&](const Eigen::Vector3d& s) {
+      return to_physical(to_reference(Eigen::Vector3d(-s.x(), s.y(), s.z())));
+    });
     std::vector<TetrahedronCorners> tetrahedra = testing::corner_matrices(inside.tetrahedra);
     for (const auto& t : testing::corner_matrices(outside.tetrahedra)) tetrahedra.push_back(t);
 
@@ -76,7 +78,8 @@ TEST_P(IntersectionMoments, VolumeAndFirstMomentsOfEmbeddedPolyhedra) {
     EXPECT_NEAR(intersection.clipped_volume, exact(0), 1e-13 * exact(0));
     for (int d = 1; d < 4; ++d) EXPECT_NEAR(initial(d), exact(d), 1e-13 * scale) << "moment " << d;
 
-    const SimplificationResult simplified = simplify_quadrature(intersection.rule, {order, SimplificationOptions{}.method, 1e-12});
+    const SimplificationResult simplified =
+        simplify_quadrature(intersection.rule, {order, SimplificationOptions{}.method, 1e-12});
     EXPECT_FALSE(simplified.failed);
     EXPECT_GT(simplified.rule.weights.minCoeff(), 0.0);
     const Eigen::Vector4d reduced = moments(simplified.rule);

@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "simplification_methods.hpp"
 #include "fcm/monomial_experiment.hpp"
+#include "simplification_methods.hpp"
 
 namespace altfem::fcm {
 namespace {

@@ -30,7 +30,8 @@ TEST(OctreeRule, ConvergesSlowlyWhereIntersectionRulesAreExact) {
   const auto sphere = make_sphere(centre, radius);
   const double sphere_volume = 4.0 / 3.0 * std::numbers::pi * radius * radius * radius;
 
-  const VolumeMesh box_tetrahedra = structured_grid(Eigen::AlignedBox3d(low, high), Eigen::Vector3i(2, 2, 2), ElementType::tet4);
+  const VolumeMesh box_tetrahedra =
+      structured_grid(Eigen::AlignedBox3d(low, high), Eigen::Vector3i(2, 2, 2), ElementType::tet4);
   const IntersectionRule intersection = intersection_rule(cell, testing::corner_matrices(box_tetrahedra), 4);
   const double intersection_error = std::abs(volume_of(intersection.rule) - box_volume) / box_volume;
   std::printf("intersection rule, box: %lld points, relative volume error %.2e\n",

@@ -18,9 +18,9 @@ TEST(RuleCache, SecondRunReusesIdenticalRulesAndTruncatedFilesAreRecomputed) {
   std::filesystem::remove_all(directory);
   const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
                                                 Eigen::Vector3i(2, 2, 2), ElementType::hex20);
-  VolumeMesh embedded = structured_grid(
-      Eigen::AlignedBox3d(Eigen::Vector3d::Constant(0.1), Eigen::Vector3d(0.8, 0.7, 0.9)), Eigen::Vector3i(2, 2, 2),
-      ElementType::tet4);
+  VolumeMesh embedded =
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Constant(0.1), Eigen::Vector3d(0.8, 0.7, 0.9)),
+                      Eigen::Vector3i(2, 2, 2), ElementType::tet4);
   const CellRuleOptions options{3};
   bool reused = true;
   const CellRules first = cached_cell_rules(background, embedded, options, directory, &reused);

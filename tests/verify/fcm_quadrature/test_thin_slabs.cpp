@@ -9,11 +9,11 @@
 #include <Eigen/Geometry>
 #include <cstdio>
 
-#include "simplification_methods.hpp"
 #include "fcm/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"
+#include "simplification_methods.hpp"
 
 namespace altfem::fcm {
 namespace {
@@ -21,13 +21,14 @@ namespace {
 /// The intersection rule (degree `order`) of the reference Hex20 cell with a 3 × 3 × 1
 /// tetrahedralised slab {0.3 <= z <= 0.3 + thickness}, rotated so no face is axis-aligned.
 QuadratureRule slab_rule(double thickness, int order) {
-  const VolumeMesh slab = structured_grid(
-      Eigen::AlignedBox3d(Eigen::Vector3d(-1.5, -1.5, 0.3), Eigen::Vector3d(1.5, 1.5, 0.3 + thickness)),
-      Eigen::Vector3i(3, 3, 1), ElementType::tet4);
+  const VolumeMesh slab =
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d(-1.5, -1.5, 0.3), Eigen::Vector3d(1.5, 1.5, 0.3 + thickness)),
+                      Eigen::Vector3i(3, 3, 1), ElementType::tet4);
   const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.2, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   std::vector<TetrahedronCorners> tetrahedra(slab.cells.rows());
   for (Eigen::Index t = 0; t < slab.cells.rows(); ++t)
-    for (int c = 0; c < 4; ++c) tetrahedra[t].row(c) = (rotation * slab.nodes.row(slab.cells(t, c)).transpose()).transpose();
+    for (int c = 0; c < 4; ++c)
+      tetrahedra[t].row(c) = (rotation * slab.nodes.row(slab.cells(t, c)).transpose()).transpose();
   const CellGeometry cell(ElementType::hex20, reference_element(ElementType::hex20).nodes().topRows(8));
   return intersection_rule(cell, tetrahedra, order).rule;
 }

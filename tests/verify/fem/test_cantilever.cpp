@@ -28,7 +28,8 @@ TEST(Cantilever, TipDeflectionWithinTwoPercentOfTimoshenko) {
   const double shear = q * length * length / (2 * kappa * shear_modulus * area);
   const double timoshenko = bending + shear;
 
-  const Eigen::AlignedBox3d beam(Eigen::Vector3d(0, -width / 2, -width / 2), Eigen::Vector3d(length, width / 2, width / 2));
+  const Eigen::AlignedBox3d beam(Eigen::Vector3d(0, -width / 2, -width / 2),
+                                 Eigen::Vector3d(length, width / 2, width / 2));
   DirichletCondition clamp;
   clamp.region.box = Eigen::AlignedBox3d(Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(0, 1, 1));
   clamp.pointer = "/boundary_conditions/0";
@@ -58,10 +59,10 @@ TEST(Cantilever, TipDeflectionWithinTwoPercentOfTimoshenko) {
   ASSERT_GT(count, 0);
   const double tip = -sum / count;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("[ beam     ] Hex20 [40,4,4], %d DOFs: tip deflection %.5e m, Timoshenko %.5e m "
-              "(bending %.5e + shear %.5e), relative difference %+.3f%%, %.1f s\n",
-              discretization.dof_count(), tip, timoshenko, bending, shear, 100 * (tip - timoshenko) / timoshenko,
-              seconds);
+  std::printf(
+      "[ beam     ] Hex20 [40,4,4], %d DOFs: tip deflection %.5e m, Timoshenko %.5e m "
+      "(bending %.5e + shear %.5e), relative difference %+.3f%%, %.1f s\n",
+      discretization.dof_count(), tip, timoshenko, bending, shear, 100 * (tip - timoshenko) / timoshenko, seconds);
   EXPECT_NEAR(tip, timoshenko, 0.02 * timoshenko);
 }
 

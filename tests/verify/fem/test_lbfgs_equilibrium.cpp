@@ -40,8 +40,9 @@ TEST(LbfgsTwistingBeam, ReachesNewtonsEquilibrium) {
   const Eigen::VectorXd lbfgs = final_displacement(Minimizer::lbfgs, lbfgs_evaluations);
   ASSERT_EQ(newton.size(), lbfgs.size());
   const double difference = (newton - lbfgs).cwiseAbs().maxCoeff() / newton.cwiseAbs().maxCoeff();
-  std::printf("  10 steps: Newton %lld iterations, L-BFGS %lld evaluations; max |u_lbfgs - u_newton| / max |u| = %.2e\n",
-              newton_iterations, lbfgs_evaluations, difference);
+  std::printf(
+      "  10 steps: Newton %lld iterations, L-BFGS %lld evaluations; max |u_lbfgs - u_newton| / max |u| = %.2e\n",
+      newton_iterations, lbfgs_evaluations, difference);
   EXPECT_LT(difference, 1e-5);
 }
 

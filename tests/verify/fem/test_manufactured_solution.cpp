@@ -33,9 +33,7 @@ struct Manufactured {
     lambda = lame.lambda;
     mu = lame.mu;
   }
-  Eigen::Vector3d sines(const Eigen::Vector3d& x) const {
-    return (k * x + phase).array().sin();
-  }
+  Eigen::Vector3d sines(const Eigen::Vector3d& x) const { return (k * x + phase).array().sin(); }
   Eigen::Vector3d displacement(const Eigen::Vector3d& x) const { return alpha.cwiseProduct(sines(x)); }
   /// ∂u_i/∂x_j (3 × 3).
   Eigen::Matrix3d gradient(const Eigen::Vector3d& x) const {
@@ -56,7 +54,8 @@ struct Manufactured {
 /// x_q = Σ_a N_a(x_q) X_a: the isoparametric map (basis function a is mesh node a).
 Eigen::Vector3d point_of(const ElementView& element, int q, const VolumeMesh& mesh) {
   Eigen::Vector3d x = Eigen::Vector3d::Zero();
-  for (int a = 0; a < element.basis_count(); ++a) x += element.values(q, a) * mesh.nodes.row(element.basis[a]).transpose();
+  for (int a = 0; a < element.basis_count(); ++a)
+    x += element.values(q, a) * mesh.nodes.row(element.basis[a]).transpose();
   return x;
 }
 
@@ -117,10 +116,13 @@ TEST_P(ManufacturedSolution, OptimalL2AndH1Rates) {
     const TabulatedElements elements = tabulate_lagrange(mesh, 2 * p + 2);
     const ElasticAssembler assembler(elements, {material.get()});
     const std::vector<int> constrained = test::boundary_dofs(mesh, test::unit_cube());
-    const Eigen::VectorXd interpolant = test::nodal_values(mesh, [&](const Eigen::Vector3d& x) { return exact.displacement(x); });
+    const Eigen::VectorXd interpolant =
+        test::nodal_values(mesh, [&](const Eigen::Vector3d& x) { return exact.displacement(x); });
     Eigen::VectorXd prescribed(static_cast<Eigen::Index>(constrained.size()));
-    for (size_t i = 0; i < constrained.size(); ++i) prescribed[static_cast<Eigen::Index>(i)] = interpolant[constrained[i]];
-    const Eigen::VectorXd u = test::solve_static(assembler, load_vector(elements, mesh, exact), constrained, prescribed);
+    for (size_t i = 0; i < constrained.size(); ++i)
+      prescribed[static_cast<Eigen::Index>(i)] = interpolant[constrained[i]];
+    const Eigen::VectorXd u =
+        test::solve_static(assembler, load_vector(elements, mesh, exact), constrained, prescribed);
     measured.push_back(errors(tabulate_lagrange(mesh, 2 * p + 6), mesh, u, exact));
     std::printf("[ mms      ] %s n=%d: %ld DOFs, L2 %.3e, H1 %.3e\n", std::string(element_name(type)).c_str(), n,
                 static_cast<long>(u.size()), measured.back().l2, measured.back().h1);

@@ -32,7 +32,8 @@ struct Case {
 };
 
 VolumeMesh patch_mesh(const Case& c) {
-  if (c.distortion == Distortion::random_vertices) return test::distorted_grid(test::unit_cube(), {3, 3, 3}, c.type, 0.15, 21);
+  if (c.distortion == Distortion::random_vertices)
+    return test::distorted_grid(test::unit_cube(), {3, 3, 3}, c.type, 0.15, 21);
   VolumeMesh mesh = structured_grid(test::unit_cube(), {3, 3, 3}, c.type);
   Eigen::Matrix3d shear;
   shear << 1.0, 0.3, -0.2, 0.1, 0.9, 0.25, -0.15, 0.2, 1.1;

@@ -30,8 +30,7 @@ struct SpinningBlock {
     initial.angular_velocity = Eigen::Vector3d(0, 0, angular_velocity);
     const Eigen::Vector3d centre = block.center();  // uniform density
     for (Eigen::Index node = 0; node < dofs / 3; ++node)
-      state.velocity.segment<3>(3 * node) =
-          initial.velocity_at(mesh.nodes.row(node).transpose(), centre);
+      state.velocity.segment<3>(3 * node) = initial.velocity_at(mesh.nodes.row(node).transpose(), centre);
     return state;
   }
   /// The explicit stability limit 2/ω_max, ω_max² the largest eigenvalue of
@@ -42,7 +41,8 @@ struct SpinningBlock {
     const auto& lumped = dynamic_cast<const DiagonalMass&>(discretization.explicit_mass());
     const Eigen::VectorXd scale = lumped.diagonal().cwiseSqrt().cwiseInverse();
     const Eigen::MatrixXd scaled = scale.asDiagonal() * Eigen::MatrixXd(stiffness) * scale.asDiagonal();
-    const double largest = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
+    const double largest =
+        Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled, Eigen::EigenvaluesOnly).eigenvalues().maxCoeff();
     return 2.0 / std::sqrt(largest);
   }
 };
@@ -69,8 +69,10 @@ TEST(SpinningBlock, SymplecticEulerConservesEnergyWithinOnePercent) {
     worst = std::max(worst, std::abs(integrator.total_energy(state) - initial) / initial);
   }
   const double angle = 1000 * options.time_step * angular_velocity;
-  std::printf("[ spin     ] symplectic Euler: dt %.3e s (limit %.3e s), 1000 steps (%.2f rad), worst relative "
-              "energy drift %.2e, %.2f s\n", options.time_step, limit, angle, worst, elapsed(start));
+  std::printf(
+      "[ spin     ] symplectic Euler: dt %.3e s (limit %.3e s), 1000 steps (%.2f rad), worst relative "
+      "energy drift %.2e, %.2f s\n",
+      options.time_step, limit, angle, worst, elapsed(start));
   EXPECT_LT(worst, 0.01);
   // It did spin: a rotation by θ moves the outermost corners (radius √0.5) by 2 r sin(θ/2).
   double largest = 0;
@@ -97,9 +99,10 @@ TEST(SpinningBlock, BackwardEulerDissipatesMonotonically) {
     EXPECT_LE(energy, previous + 1e-12 * initial) << "step " << n + 1;
     previous = energy;
   }
-  std::printf("[ spin     ] backward Euler: dt 0.01 s, 100 steps, %d Newton iterations, energy %.6e -> %.6e "
-              "(%.3f%% dissipated), %.2f s\n", newton, initial, previous, 100 * (initial - previous) / initial,
-              elapsed(start));
+  std::printf(
+      "[ spin     ] backward Euler: dt 0.01 s, 100 steps, %d Newton iterations, energy %.6e -> %.6e "
+      "(%.3f%% dissipated), %.2f s\n",
+      newton, initial, previous, 100 * (initial - previous) / initial, elapsed(start));
   EXPECT_LT(previous, initial * (1 - 1e-4));
 }
 
@@ -107,8 +110,8 @@ TEST(RigidRotation, NoInternalForceForEveryNonlinearModel) {
   const VolumeMesh mesh = test::distorted_grid(test::unit_cube(), {3, 3, 3}, ElementType::tet10, 0.15, 31);
   const TabulatedElements elements = tabulate_lagrange(mesh, 4);
   const Eigen::Matrix3d R = Eigen::AngleAxisd(1.0, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  const Eigen::VectorXd u =
-      test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return (R - Eigen::Matrix3d::Identity()) * x; });
+  const Eigen::VectorXd u = test::nodal_values(
+      mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return (R - Eigen::Matrix3d::Identity()) * x; });
   constexpr double youngs_modulus = 1e6, h = 1.0 / 3;
   const double force_scale = youngs_modulus * h * h;  // stress E on a face of size h²
   for (MaterialModel model : all_material_models) {
@@ -121,8 +124,7 @@ TEST(RigidRotation, NoInternalForceForEveryNonlinearModel) {
                 std::string(material_model_name(model)).c_str(), relative);
     if (model == MaterialModel::linear)
       EXPECT_GT(relative, 1e-2) << "linear elasticity is not rotation invariant: the check must see it";
-    else
-      EXPECT_LT(relative, 1e-12) << material_model_name(model);
+    else EXPECT_LT(relative, 1e-12) << material_model_name(model);
   }
 }
 

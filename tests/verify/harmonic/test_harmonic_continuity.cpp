@@ -9,9 +9,9 @@
 // loop, so slightly different functions).
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <optional>
 #include <utility>

@@ -15,8 +15,8 @@
 #include <random>
 
 #include "polyhedral/harmonic_element_bases.hpp"
-#include "shared/element/reference_element.hpp"
 #include "polyhedral/harmonic_method.hpp"
+#include "shared/element/reference_element.hpp"
 #include "shared/fem/fem_method.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -66,7 +66,8 @@ TEST(HarmonicMethod, CantileverWithMfsBasesMatchesHex8) {
   std::printf("[ beam     ] fem hex8                          %6d   %.6e\n", fem_dofs, hex8);
   std::printf("[ beam     ] harmonic, basis auto (trilinear)  %6d   %.6e   %+.2e\n", auto_dofs, closed_form,
               (closed_form - hex8) / hex8);
-  std::printf("[ beam     ] harmonic, basis mfs               %6d   %.6e   %+.2e\n", mfs_dofs, mfs, (mfs - hex8) / hex8);
+  std::printf("[ beam     ] harmonic, basis mfs               %6d   %.6e   %+.2e\n", mfs_dofs, mfs,
+              (mfs - hex8) / hex8);
   EXPECT_EQ(mfs_dofs, fem_dofs);
   EXPECT_NEAR(closed_form, hex8, 1e-10 * hex8);
   EXPECT_NEAR(mfs, hex8, 0.03 * hex8);
@@ -79,9 +80,9 @@ PolyhedralMesh hexahedra() {
 }
 
 struct BasisErrors {
-  double unity = 0;           // max |Σ_i N_i − 1| at random points
-  double nodal = 0;           // max |N_i(x_j) − δ_ij|
-  double trilinear = 0;       // max |N_i − N_i^trilinear| at random points
+  double unity = 0;               // max |Σ_i N_i − 1| at random points
+  double nodal = 0;               // max |N_i(x_j) − δ_ij|
+  double trilinear = 0;           // max |N_i − N_i^trilinear| at random points
   double trilinear_gradient = 0;  // max |∇N_i − ∇N_i^trilinear| × cell diameter
 };
 
@@ -132,15 +133,16 @@ BasisErrors mfs_basis_errors(const PolyhedralMesh& mesh, const MfsOptions& optio
 
 TEST(HarmonicMethod, MfsBasesArePartitionsOfUnityInterpolatingAndNearlyTrilinear) {
   const PolyhedralMesh mesh = hexahedra();
-  std::printf("[ bases    ] samples/edge  offset   max|ΣN−1|   max|N_i(x_j)−δ_ij|   max|N−N_trilinear|   "
-              "max|∇N−∇N_trilinear|·diam\n");
+  std::printf(
+      "[ bases    ] samples/edge  offset   max|ΣN−1|   max|N_i(x_j)−δ_ij|   max|N−N_trilinear|   "
+      "max|∇N−∇N_trilinear|·diam\n");
   const auto row = [&](int samples, double offset) {
     MfsOptions options;
     options.edge_samples = samples;
     options.offset = offset;
     const BasisErrors errors = mfs_basis_errors(mesh, options);
-    std::printf("[ bases    ] %12d  %6.2f   %9.2e   %18.2e   %18.2e   %25.2e\n", samples, offset, errors.unity, errors.nodal,
-                errors.trilinear, errors.trilinear_gradient);
+    std::printf("[ bases    ] %12d  %6.2f   %9.2e   %18.2e   %18.2e   %25.2e\n", samples, offset, errors.unity,
+                errors.nodal, errors.trilinear, errors.trilinear_gradient);
     EXPECT_LT(errors.unity, 1e-10);
     EXPECT_LT(errors.nodal, 2e-2);
     return errors;
@@ -158,11 +160,13 @@ TEST(HarmonicMethod, MfsBasesArePartitionsOfUnityInterpolatingAndNearlyTrilinear
 // At every sampling the issue allows (3–5 samples per edge) and 6: the consistency
 // correction makes the patch test exact whatever the fit's accuracy.
 TEST(HarmonicMethod, PatchTestWithMfsBasesUnderTheMethodsQuadrature) {
-  std::printf("[ patch    ] MFS bases, [3,2,2] grid, order 2   samples/edge   interior nodes   max interior force"
-              "   rigid translation   affine field on the surface\n");
+  std::printf(
+      "[ patch    ] MFS bases, [3,2,2] grid, order 2   samples/edge   interior nodes   max interior force"
+      "   rigid translation   affine field on the surface\n");
   for (int samples : {3, 4, 5, 6})
     for (const char* element : {"hex8", "tet4"}) {  // tet4: the six Kuhn tetrahedra of each grid cube
-      Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/unit/conformance/scenes/free_box.json");
+      Scene scene =
+          load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/unit/conformance/scenes/free_box.json");
       scene.resolved["discretization"]["harmonic"] = {
           {"convert", {{"mesh", "grid"}, {"element", element}, {"resolution", {3, 2, 2}}}},
           {"basis", "mfs"},
@@ -174,8 +178,10 @@ TEST(HarmonicMethod, PatchTestWithMfsBasesUnderTheMethodsQuadrature) {
       const auto affine = [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return strain * x; };
       Eigen::VectorXd force, translation_force;
       method->discretization().gradient(method->interpolate(affine), force);
-      method->discretization().gradient(
-          method->interpolate([](const Eigen::Vector3d&) -> Eigen::Vector3d { return {0.3, -0.2, 0.5}; }), translation_force);
+      method->discretization().gradient(method->interpolate([](const Eigen::Vector3d&) -> Eigen::Vector3d {
+        return {0.3, -0.2, 0.5};
+      }),
+                                        translation_force);
       // Interior nodes of the [0,2]×[0,1]×[0,1] box: constant stress puts no force on them.
       const Eigen::VectorXd nodes = method->interpolate([](const Eigen::Vector3d& x) { return x; });
       double interior = 0;
@@ -191,8 +197,8 @@ TEST(HarmonicMethod, PatchTestWithMfsBasesUnderTheMethodsQuadrature) {
       const Eigen::MatrixXd& vertices = method->embedded_surface().vertices;
       const Eigen::MatrixXd embedded = method->embedded_displacement(method->interpolate(affine));
       const double surface_error = (embedded - vertices * strain.transpose()).cwiseAbs().maxCoeff();
-      std::printf("[ patch    ] %-31s %12d   %14d   %18.2e   %17.2e   %27.2e\n", element, samples, interior_nodes, interior / scale,
-                  translation_force.cwiseAbs().maxCoeff() / scale, surface_error);
+      std::printf("[ patch    ] %-31s %12d   %14d   %18.2e   %17.2e   %27.2e\n", element, samples, interior_nodes,
+                  interior / scale, translation_force.cwiseAbs().maxCoeff() / scale, surface_error);
       ASSERT_GT(interior_nodes, 0);
       EXPECT_LT(interior, 1e-10 * scale);
       EXPECT_LT(translation_force.cwiseAbs().maxCoeff(), 1e-12 * scale);

@@ -118,10 +118,13 @@ std::vector<RuleRow> compare_rules(const std::vector<RuleCase>& cases) {
     const double uncorrected = interior_ghost_force(mesh, bases.tabulate(test.strength, quadrature));
     quadrature.consistent = true;
     const double corrected = interior_ghost_force(mesh, bases.tabulate(test.strength, quadrature));
-    const RuleRow row{summary["facts"]["mfs_quadrature_points"].get<double>() /
-                          summary["elements"]["mfs_polyhedron"].get<double>(),
-                      summary["timings_s"]["quadrature"].get<double>(), summary["field_errors"]["l2"].get<double>(),
-                      summary["field_errors"]["h1_seminorm"].get<double>(), uncorrected, corrected};
+    const RuleRow row{
+        summary["facts"]["mfs_quadrature_points"].get<double>() / summary["elements"]["mfs_polyhedron"].get<double>(),
+        summary["timings_s"]["quadrature"].get<double>(),
+        summary["field_errors"]["l2"].get<double>(),
+        summary["field_errors"]["h1_seminorm"].get<double>(),
+        uncorrected,
+        corrected};
     std::printf("[ rules    ] %-22s %11.1f %9.2f %10.4e %10.4e %14.2e %12.2e\n", test.name.c_str(), row.points_per_cell,
                 row.setup_seconds, row.l2, row.h1, row.uncorrected, row.corrected);
     EXPECT_LT(row.corrected, 1e-10) << test.name;
@@ -139,8 +142,10 @@ TEST(HarmonicQuadrature, ConeRulesComparedOnASlicedPrism) {
       {"cone, caratheodory", {"simplifier=caratheodory"}, {.simplifier = SimplificationMethod::caratheodory}},
       {"cone, nnls", {"simplifier=nnls"}, {.simplifier = SimplificationMethod::nonnegative_least_squares}},
       {"cone, lp", {"simplifier=lp"}, {.simplifier = SimplificationMethod::linear_program}},
-      {"cone, caratheodory, 4", {"simplifier=caratheodory", "quadrature_order=4"},
-       {.simplifier = SimplificationMethod::caratheodory}, 4}};
+      {"cone, caratheodory, 4",
+       {"simplifier=caratheodory", "quadrature_order=4"},
+       {.simplifier = SimplificationMethod::caratheodory},
+       4}};
   const std::vector<RuleRow> rows = compare_rules(cases);
   ASSERT_EQ(rows.size(), cases.size());
   const RuleRow& cone = rows[0];
@@ -183,15 +188,17 @@ std::string rule_name(const testing::TestParamInfo<RuleCase>& info) {
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    HarmonicQuadrature, BoundingBoxRule,
-    testing::Values(RuleCase{"subdivision, 2 levels", {"rule=subdivision", "subdivision_levels=2"},
-                             {.kind = HarmonicRuleKind::subdivision, .subdivision_levels = 2}},
-                    RuleCase{"subdivision, 3 levels", {"rule=subdivision", "subdivision_levels=3"},
-                             {.kind = HarmonicRuleKind::subdivision, .subdivision_levels = 3}},
-                    RuleCase{"monte_carlo, 1000", {"rule=monte_carlo", "monte_carlo_points=1000"},
-                             {.kind = HarmonicRuleKind::monte_carlo, .monte_carlo_points = 1000}}),
-    rule_name);
+INSTANTIATE_TEST_SUITE_P(HarmonicQuadrature, BoundingBoxRule,
+                         testing::Values(RuleCase{"subdivision, 2 levels",
+                                                  {"rule=subdivision", "subdivision_levels=2"},
+                                                  {.kind = HarmonicRuleKind::subdivision, .subdivision_levels = 2}},
+                                         RuleCase{"subdivision, 3 levels",
+                                                  {"rule=subdivision", "subdivision_levels=3"},
+                                                  {.kind = HarmonicRuleKind::subdivision, .subdivision_levels = 3}},
+                                         RuleCase{"monte_carlo, 1000",
+                                                  {"rule=monte_carlo", "monte_carlo_points=1000"},
+                                                  {.kind = HarmonicRuleKind::monte_carlo, .monte_carlo_points = 1000}}),
+                         rule_name);
 
 }  // namespace
 }  // namespace altfem::harmonic

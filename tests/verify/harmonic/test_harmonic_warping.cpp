@@ -47,8 +47,8 @@ Forces affine_forces(const Eigen::Matrix3d& G, const Eigen::Vector3d& t) {
     const Scene scene = free_box(warping);
     const SceneGeometry geometry = load_scene_geometry(scene);
     const auto method = make_harmonic_method(scene, geometry);
-    const Eigen::VectorXd u =
-        method->interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return (G - Eigen::Matrix3d::Identity()) * x + t; });
+    const Eigen::VectorXd u = method->interpolate(
+        [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return (G - Eigen::Matrix3d::Identity()) * x + t; });
     method->discretization().gradient(u, warping ? forces.warped : forces.linear);
     forces.nodes = method->interpolate([](const Eigen::Vector3d& x) { return x; });
   }
@@ -124,7 +124,9 @@ TEST(HarmonicWarping, TwistingBeamStaysCloseToCorotatedFem) {
   Scene fem = with_material(base, "corotated_linear");
   fem.resolved["discretization"]["fem"] = {{"element", "hex8"}, {"mesh", "grid"}, {"resolution", {10, 2, 2}}};
   const Twist reference = twist(fem, make_fem_method);
-  std::printf("[ twist    ] 90° twist, [10,2,2] hex grid      mid-length radius / rest   |u − u_fem| / |u_fem| (surface)   Newton iterations\n");
+  std::printf(
+      "[ twist    ] 90° twist, [10,2,2] hex grid      mid-length radius / rest   |u − u_fem| / |u_fem| (surface)   "
+      "Newton iterations\n");
   std::printf("[ twist    ] fem hex8, corotated_linear        %8.4f   %34s %d\n", reference.radius_ratio, "",
               reference.newton_iterations);
   double error[2] = {0, 0};
@@ -136,14 +138,12 @@ TEST(HarmonicWarping, TwistingBeamStaysCloseToCorotatedFem) {
         {"warping", warping}};
     const Twist result = twist(harmonic, make_harmonic_method);
     ASSERT_EQ(result.surface_displacement.rows(), reference.surface_displacement.rows());
-    error[warping] = (result.surface_displacement - reference.surface_displacement).norm() /
-                     reference.surface_displacement.norm();
+    error[warping] =
+        (result.surface_displacement - reference.surface_displacement).norm() / reference.surface_displacement.norm();
     std::printf("[ twist    ] harmonic mfs, linear, warping %-5s %8.4f   %34.3e %d\n", warping ? "on" : "off",
                 result.radius_ratio, error[warping], result.newton_iterations);
-    if (warping)
-      EXPECT_NEAR(result.radius_ratio, reference.radius_ratio, 0.02);
-    else
-      EXPECT_GT(result.radius_ratio, reference.radius_ratio + 0.05);  // linear strain inflates a twist
+    if (warping) EXPECT_NEAR(result.radius_ratio, reference.radius_ratio, 0.02);
+    else EXPECT_GT(result.radius_ratio, reference.radius_ratio + 0.05);  // linear strain inflates a twist
   }
   EXPECT_LT(error[1], 0.05);
   EXPECT_GT(error[0], 3 * error[1]);

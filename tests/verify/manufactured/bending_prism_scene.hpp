@@ -42,15 +42,19 @@ inline std::filesystem::path write_prism(const std::filesystem::path& folder, in
 inline std::filesystem::path write_bending_scene(const std::filesystem::path& folder) {
   const std::filesystem::path surface = write_prism(folder, 48, 0.5, 2.0);
   const std::filesystem::path file = folder / "bending_prism.json";
-  const std::string field = R"json("motion": { "kind": "field", "displacement": ["-kappa/2*(z^2 + nu*(x^2 - y^2))", "-kappa*nu*x*y", "kappa*x*z"] })json";
+  const std::string field =
+      R"json("motion": { "kind": "field", "displacement": ["-kappa/2*(z^2 + nu*(x^2 - y^2))", "-kappa*nu*x*y", "kappa*x*z"] })json";
   std::ofstream(file) << R"json({
   "name": "bending_prism",
-  "geometry": { "surface": ")json" << surface.string() << R"json(" },
+  "geometry": { "surface": ")json"
+                      << surface.string() << R"json(" },
   "material": { "model": "linear", "youngs_modulus": 26, "poisson_ratio": 0.3, "density": 1 },
   "constants": { "kappa": 0.01, "nu": 0.3 },
   "boundary_conditions": [
-    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 0], "normal": [0, 0, 1] } }, )json" << field << R"json( },
-    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 2], "normal": [0, 0, -1] } }, )json" << field << R"json( }
+    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 0], "normal": [0, 0, 1] } }, )json"
+                      << field << R"json( },
+    { "type": "dirichlet", "region": { "half_space": { "point": [0, 0, 2], "normal": [0, 0, -1] } }, )json"
+                      << field << R"json( }
   ],
   "exact_displacement": ["-kappa/2*(z^2 + nu*(x^2 - y^2))", "-kappa*nu*x*y", "kappa*x*z"],
   "solver": { "tolerance": 1e-10 },

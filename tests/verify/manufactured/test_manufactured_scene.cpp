@@ -59,8 +59,9 @@ std::vector<Row> run_case(const Case& test) {
     const std::string prefix = "discretization/" + test.method + "/";
     // harmonic's mesh is the fem block under `convert`.
     const std::string resolution_key = test.method == "harmonic" ? "convert/resolution" : "resolution";
-    const std::string resolution = "[" + std::to_string(n / test.divisor[0]) + "," + std::to_string(n / test.divisor[1]) +
-                                   "," + std::to_string(n / test.divisor[2]) + "]";
+    const std::string resolution = "[" + std::to_string(n / test.divisor[0]) + "," +
+                                   std::to_string(n / test.divisor[1]) + "," + std::to_string(n / test.divisor[2]) +
+                                   "]";
     const std::vector<SceneOverride> overrides{parse_scene_override(prefix + resolution_key + "=" + resolution),
                                                parse_scene_override(prefix + test.element_key + "=" + test.element),
                                                parse_scene_override("output/volume=false"),
@@ -68,12 +69,14 @@ std::vector<Row> run_case(const Case& test) {
     Scene scene = load_scene(scene_file, overrides);
     cli::resolve_method_blocks(scene, {test.method});
     const SceneGeometry geometry = load_scene_geometry(scene);
-    const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_manufactured" /
-                                         (test.scene + "_" + test.method + "_" + test.element + "_" + std::to_string(n));
+    const std::filesystem::path output =
+        std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_manufactured" /
+        (test.scene + "_" + test.method + "_" + test.element + "_" + std::to_string(n));
     const nlohmann::json summary = run_simulation(scene, geometry, test.method, method.factory, output);
     EXPECT_EQ(summary["status"], "ok");
     const nlohmann::json& errors = summary.at("field_errors");
-    rows.push_back({n, summary["dofs"].get<long long>(), errors["l2"].get<double>(), errors["h1_seminorm"].get<double>()});
+    rows.push_back(
+        {n, summary["dofs"].get<long long>(), errors["l2"].get<double>(), errors["h1_seminorm"].get<double>()});
   }
   return rows;
 }
@@ -138,10 +141,11 @@ INSTANTIATE_TEST_SUITE_P(OtherMethods, ManufacturedScene,
 // tests/verify/fcm/test_convergence.cpp, against a Tet10 reference, is singular at the
 // rim; this one is not, so the rates are the element's (measured: Hex8 L2 1.86, 1.98;
 // Hex20 3.07, 2.99).
-INSTANTIATE_TEST_SUITE_P(CurvedDomain, ManufacturedScene,
-                         ::testing::Values(Case{"fcm", "cell", "hex8", {4, 8, 16}, 2, 1, "manufactured_half_ball", {1, 1, 2}},
-                                           Case{"fcm", "cell", "hex20", {4, 8, 16}, 3, 2, "manufactured_half_ball", {1, 1, 2}}),
-                         case_name);
+INSTANTIATE_TEST_SUITE_P(
+    CurvedDomain, ManufacturedScene,
+    ::testing::Values(Case{"fcm", "cell", "hex8", {4, 8, 16}, 2, 1, "manufactured_half_ball", {1, 1, 2}},
+                      Case{"fcm", "cell", "hex20", {4, 8, 16}, 3, 2, "manufactured_half_ball", {1, 1, 2}}),
+    case_name);
 
 }  // namespace
 }  // namespace altfem

@@ -69,7 +69,8 @@ std::vector<Row> run_case(const Case& test, const std::filesystem::path& scene_f
     const nlohmann::json& errors = summary.at("field_errors");
     long long cells = 0;
     for (const auto& [kind, count] : summary["elements"].items()) cells += count.get<long long>();
-    Row row{n, summary["dofs"].get<long long>(), cells, errors["l2"].get<double>(), errors["h1_seminorm"].get<double>()};
+    Row row{n, summary["dofs"].get<long long>(), cells, errors["l2"].get<double>(),
+            errors["h1_seminorm"].get<double>()};
     const nlohmann::json& facts = summary["facts"];
     if (facts.contains("penalty")) {
       row.smallest_fraction =
@@ -200,13 +201,16 @@ TEST(SlicedConvergence, HarmonicOnABendingPrism) {
 void expect_default_samples_within_two_percent_of_six(const std::set<int>& samples_per_edge) {
   const std::filesystem::path scene = test::write_bending_scene(output_folder());
   const int default_samples = harmonic::MfsOptions{}.edge_samples;
-  std::printf("harmonic, bending prism at 12 cells per side, against MFS samples per edge\n"
-              "  basis  samples/edge   L2 error   H1 error   L2 / L2(6)   H1 / H1(6)\n");
+  std::printf(
+      "harmonic, bending prism at 12 cells per side, against MFS samples per edge\n"
+      "  basis  samples/edge   L2 error   H1 error   L2 / L2(6)   H1 / H1(6)\n");
   for (const std::string basis : {"auto", "mfs"}) {
     std::map<int, Row> rows;
     for (int samples : samples_per_edge)
-      rows[samples] = run_case({"harmonic_" + basis + "_" + std::to_string(samples), "harmonic",
-                                {"basis=" + basis, "samples_per_edge=" + std::to_string(samples)}, {12}},
+      rows[samples] = run_case({"harmonic_" + basis + "_" + std::to_string(samples),
+                                "harmonic",
+                                {"basis=" + basis, "samples_per_edge=" + std::to_string(samples)},
+                                {12}},
                                scene)
                           .front();
     for (const auto& [samples, row] : rows)

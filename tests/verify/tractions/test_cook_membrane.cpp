@@ -77,7 +77,8 @@ TEST(CookMembrane, CornerDisplacementConverges) {
                 std::string(element_name(type)).c_str());
     std::vector<double> values;
     for (int n : {4, 8, 16, 32}) {
-      values.push_back(n == 32 && type == ElementType::hex20 ? converged_displacement() : cook_corner_displacement(type, n));
+      values.push_back(n == 32 && type == ElementType::hex20 ? converged_displacement()
+                                                             : cook_corner_displacement(type, n));
       std::printf("  %2d  %.6f  %+.2e\n", n, values.back(), values.back() / quoted_displacement - 1);
     }
     // Monotone from below (the energy norm converges from below for a load) with
@@ -96,7 +97,8 @@ TEST(CookMembrane, ShippedSceneMatchesTheConvergedValue) {
                        test::registered_method("fem").factory, 1e-10);
   const double corner = corner_displacement(solution.method->embedded_surface().vertices,
                                             solution.method->embedded_displacement(solution.displacement));
-  std::printf("scenes/cook_membrane.json (fem): u_y(C) = %.6f, Hex20 32 x 32: %.6f\n", corner, converged_displacement());
+  std::printf("scenes/cook_membrane.json (fem): u_y(C) = %.6f, Hex20 32 x 32: %.6f\n", corner,
+              converged_displacement());
   EXPECT_NEAR(corner, converged_displacement(), 1e-2 * converged_displacement());
 }
 

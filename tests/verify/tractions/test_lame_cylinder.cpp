@@ -27,7 +27,8 @@ constexpr double inner = 1.0, outer = 2.0, height = 0.25, pressure = 1.0, youngs
 
 Eigen::Vector3d exact_displacement(const Eigen::Vector3d& x) {
   const double r = x.head<2>().norm();
-  const double u_r = (1 + poisson_ratio) * pressure * inner * inner / (youngs_modulus * (outer * outer - inner * inner)) *
+  const double u_r = (1 + poisson_ratio) * pressure * inner * inner /
+                     (youngs_modulus * (outer * outer - inner * inner)) *
                      ((1 - 2 * poisson_ratio) * r + outer * outer / r);
   return {u_r * x.x() / r, u_r * x.y() / r, 0.0};
 }
@@ -42,8 +43,8 @@ DirichletCondition roller(const RegionSelector& region, int component) {
 // The largest nodal displacement error over the largest exact displacement, with n
 // cells across the wall and 2n around the quarter.
 double relative_nodal_error(ElementType type, int n) {
-  VolumeMesh mesh = structured_grid({Eigen::Vector3d(inner, 0, 0), Eigen::Vector3d(outer, std::numbers::pi / 2, height)},
-                                    {n, 2 * n, 1}, type);
+  VolumeMesh mesh = structured_grid(
+      {Eigen::Vector3d(inner, 0, 0), Eigen::Vector3d(outer, std::numbers::pi / 2, height)}, {n, 2 * n, 1}, type);
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
     const double r = mesh.nodes(node, 0), theta = mesh.nodes(node, 1);
     mesh.nodes.row(node) << r * std::cos(theta), r * std::sin(theta), mesh.nodes(node, 2);

@@ -41,8 +41,10 @@ std::string bar_scene(const PatchCase& patch, double stress, bool as_pressure) {
       { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [3, 0, 2] } }, "components": ["y"] },
       { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [3, 2, 0] } }, "components": ["z"] }
     ],
-    "loads": { "traction": [ )" << load.str() << R"( ] },
-    "discretization": { ")" << patch.method << R"(": )" << patch.block << R"( }
+    "loads": { "traction": [ )"
+        << load.str() << R"( ] },
+    "discretization": { ")"
+        << patch.method << R"(": )" << patch.block << R"( }
   })";
   return scene.str();
 }
@@ -95,19 +97,20 @@ std::string grid(const std::string& key, const std::string& element, const std::
 
 INSTANTIATE_TEST_SUITE_P(
     EveryMethod, TractionPatch,
-    testing::Values(PatchCase{"fem_tet4", "fem", grid("element", "tet4", "[4, 2, 2]")},
-                    PatchCase{"fem_tet10", "fem", grid("element", "tet10", "[2, 1, 1]")},
-                    PatchCase{"fem_tet20", "fem", grid("element", "tet20", "[2, 1, 1]")},
-                    PatchCase{"fem_hex8", "fem", grid("element", "hex8", "[4, 2, 2]")},
-                    PatchCase{"fem_hex20", "fem", grid("element", "hex20", "[2, 1, 1]")},
-                    PatchCase{"fem_hex27", "fem", grid("element", "hex27", "[2, 1, 1]")},
-                    // 3 × 3 cells across the end face: its embedded triangles cross cells.
-                    PatchCase{"fcm_hex8", "fcm", R"({ "cell": "hex8", "resolution": [3, 3, 3] })"},
-                    PatchCase{"fcm_hex20", "fcm", R"({ "cell": "hex20", "resolution": [3, 3, 3] })"},
-                    PatchCase{"dg_k1", "dg", R"({ "degree": 1, "element": "hex8", "mesh": "grid", "resolution": [2, 2, 2] })"},
-                    PatchCase{"dg_k2_tet", "dg", R"({ "degree": 2, "element": "tet4", "mesh": "grid", "resolution": [2, 1, 1] })"},
-                    PatchCase{"harmonic_hex", "harmonic", R"({ "convert": )" + grid("element", "hex8", "[4, 2, 2]") + " }"},
-                    PatchCase{"harmonic_tet", "harmonic", R"({ "convert": )" + grid("element", "tet4", "[2, 1, 1]") + " }"}),
+    testing::Values(
+        PatchCase{"fem_tet4", "fem", grid("element", "tet4", "[4, 2, 2]")},
+        PatchCase{"fem_tet10", "fem", grid("element", "tet10", "[2, 1, 1]")},
+        PatchCase{"fem_tet20", "fem", grid("element", "tet20", "[2, 1, 1]")},
+        PatchCase{"fem_hex8", "fem", grid("element", "hex8", "[4, 2, 2]")},
+        PatchCase{"fem_hex20", "fem", grid("element", "hex20", "[2, 1, 1]")},
+        PatchCase{"fem_hex27", "fem", grid("element", "hex27", "[2, 1, 1]")},
+        // 3 × 3 cells across the end face: its embedded triangles cross cells.
+        PatchCase{"fcm_hex8", "fcm", R"({ "cell": "hex8", "resolution": [3, 3, 3] })"},
+        PatchCase{"fcm_hex20", "fcm", R"({ "cell": "hex20", "resolution": [3, 3, 3] })"},
+        PatchCase{"dg_k1", "dg", R"({ "degree": 1, "element": "hex8", "mesh": "grid", "resolution": [2, 2, 2] })"},
+        PatchCase{"dg_k2_tet", "dg", R"({ "degree": 2, "element": "tet4", "mesh": "grid", "resolution": [2, 1, 1] })"},
+        PatchCase{"harmonic_hex", "harmonic", R"({ "convert": )" + grid("element", "hex8", "[4, 2, 2]") + " }"},
+        PatchCase{"harmonic_tet", "harmonic", R"({ "convert": )" + grid("element", "tet4", "[2, 1, 1]") + " }"}),
     [](const auto& info) { return info.param.name; });
 
 }  // namespace
