@@ -4,11 +4,15 @@
 
 #include <Eigen/Core>
 #include <cstdio>
+#include <cstdlib>
 
 #include "app/commands.hpp"
 #include "app/method_registry.hpp"
+#include "app/process_environment.hpp"
 #include "shared/common/data_directory.hpp"
+#include "shared/solve/blas_core_type.hpp"
 #include "shared/solve/blas_info.hpp"
+#include "shared/solve/blas_thread_choice.hpp"
 
 namespace altfem::cli {
 
@@ -20,7 +24,9 @@ int info_command() {
   std::printf("compiler: gcc %d.%d.%d\n", __GNUC__, __GNUC_MINOR__, __GNUC_PATCHLEVEL__);
 #endif
   std::printf("build type: %s\n", ALTFEM_BUILD_TYPE);
-  std::printf("OpenMP threads: %d\n", omp_get_max_threads());
+  const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
+  std::printf("OpenMP threads: %d, waiting %s\n", omp_get_max_threads(),
+              wait_policy != nullptr ? wait_policy : "libgomp's default");
   std::printf("Eigen: %d.%d.%d\n", EIGEN_WORLD_VERSION, EIGEN_MAJOR_VERSION, EIGEN_MINOR_VERSION);
   std::printf("CGAL: %s\n", CGAL_VERSION_STR);
   int cholmod[3] = {0, 0, 0};
@@ -30,6 +36,12 @@ int info_command() {
   const BlasInfo blas = loaded_blas();
   std::printf("BLAS: %s (%s), %d thread%s\n", blas.implementation.c_str(), blas.library.c_str(), blas.threads,
               blas.threads == 1 ? "" : "s");
+  std::printf("BLAS core: %s%s%s\n", loaded_openblas_core().empty() ? "(not OpenBLAS)" : loaded_openblas_core().c_str(),
+              *openblas_core_choice() != '\0' ? ", chosen by altfem: " : "", openblas_core_choice());
+  std::printf(
+      "BLAS threads (docs/conventions.md, \"Threads\"): solves 1; factorisations of %.0e operations or more "
+      "up to %d on %d cores, less the %d threads other processes run now\n",
+      minimum_flops_for_blas_threads, blas_thread_limit(), usable_cores(), runnable_threads_elsewhere());
   if (is_reference_blas(blas))
     std::fprintf(stderr,
                  "altfem: warning: the reference BLAS is loaded: CHOLMOD runs ~10x slower; install "

@@ -8,9 +8,11 @@
 #include "app/commands.hpp"
 #include "app/compare_command.hpp"
 #include "app/method_registry.hpp"
+#include "app/process_environment.hpp"
 #include "shared/common/error.hpp"
 
 int main(int argc, char** argv) {
+  altfem::cli::restart_with_tuned_environment(argv);
   CLI::App app{"altfem: elastic solids with alternative discretizations on identical scenes"};
   std::string method_list;  // the registry's, so a new method needs no edit here
   for (const std::string& name : altfem::cli::available_methods())

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -201,7 +202,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["method"] = method_name;
   summary["options"] = scene.resolved;
   const BlasInfo blas = loaded_blas();
-  summary["environment"] = {{"threads", omp_get_max_threads()}, {"blas", blas.implementation}};
+  const char* wait_policy = std::getenv("OMP_WAIT_POLICY");
+  summary["environment"] = {{"threads", omp_get_max_threads()},
+                            {"openmp_wait_policy", wait_policy != nullptr ? wait_policy : "libgomp's default"},
+                            {"blas", blas.implementation}};
   if (is_reference_blas(blas))
     std::fprintf(stderr,
                  "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
@@ -268,6 +272,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
                           {"solve", statistics.solve_seconds},
                           {"total", total}};
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
+  // What blas_thread_choice.hpp chose for the factorisations (issue #35); the solves ran on one.
+  if (statistics.most_blas_threads > 0)
+    summary["environment"]["factorisation_blas_threads"] = {{"fewest", statistics.fewest_blas_threads},
+                                                            {"most", statistics.most_blas_threads}};
   // The discretization after the last event (each event records its own change).
   summary["dofs"] = simulation.discretization().dof_count();
   summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();

@@ -1,5 +1,6 @@
 #include "shared/simulation/simulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <limits>
@@ -51,6 +52,11 @@ void add_statistics(LinearSolverStatistics& total, const LinearSolverStatistics&
   total.solve_seconds += more.solve_seconds;
   total.factor_entries = more.factor_entries;
   total.factorisation_flops = more.factorisation_flops;
+  if (more.fewest_blas_threads > 0)
+    total.fewest_blas_threads = total.fewest_blas_threads == 0
+                                    ? more.fewest_blas_threads
+                                    : std::min(total.fewest_blas_threads, more.fewest_blas_threads);
+  total.most_blas_threads = std::max(total.most_blas_threads, more.most_blas_threads);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 #include "shared/solve/cholmod_solver.hpp"
 
 #include "shared/common/error.hpp"
+#include "shared/solve/blas_thread_choice.hpp"
+#include "shared/solve/blas_threads.hpp"
 #include "shared/solve/block_fill_reducing_ordering.hpp"
 #include "shared/solve/huge_page_allocation.hpp"
 
@@ -99,6 +101,10 @@ protected:
 
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
     cholmod_sparse view = lower_triangle_view(matrix);
+    const int threads = factorisation_blas_threads(statistics().factorisation_flops, blas_thread_limit(),
+                                                   usable_cores(), runnable_threads_elsewhere());
+    set_blas_threads(threads);
+    record_blas_threads(threads);
     cholmod_factorize(&view, factor_, &common_);
     if (common_.status == CHOLMOD_NOT_POSDEF) {
       const std::string where = "CHOLMOD status " + status() + ", column " + std::to_string(factor_->minor) + ")";
@@ -117,6 +123,7 @@ protected:
     right_hand_side.x = const_cast<double*>(rhs.data());
     right_hand_side.xtype = CHOLMOD_REAL;
     right_hand_side.dtype = CHOLMOD_DOUBLE;
+    set_blas_threads(1);  // one right-hand side: BLAS-2, bound by memory (blas_thread_choice.hpp)
     // cholmod_solve2 reuses its output and workspaces across calls (no allocation per solve).
     if (!cholmod_solve2(CHOLMOD_A, factor_, &right_hand_side, nullptr, &solution_, nullptr, &workspace_y_,
                         &workspace_e_, &common_))

@@ -9,6 +9,7 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <optional>
@@ -32,6 +33,10 @@ struct LinearSolverStatistics {
   /// factorisation (0 when unknown, and for iterative solvers).
   double factor_entries = 0;
   double factorisation_flops = 0;
+  /// Direct solvers: the fewest and the most BLAS threads a factorisation got
+  /// (blas_thread_choice.hpp); 0 before the first, and for solvers without BLAS.
+  int fewest_blas_threads = 0;
+  int most_blas_threads = 0;
 };
 
 enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual };
@@ -88,6 +93,11 @@ protected:
   void record_factor_size(double entries, double flops) {
     statistics_.factor_entries = entries;
     statistics_.factorisation_flops = flops;
+  }
+  void record_blas_threads(int threads) {
+    statistics_.fewest_blas_threads =
+        statistics_.fewest_blas_threads == 0 ? threads : std::min(statistics_.fewest_blas_threads, threads);
+    statistics_.most_blas_threads = std::max(statistics_.most_blas_threads, threads);
   }
 
 private:
