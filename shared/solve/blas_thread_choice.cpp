@@ -4,11 +4,13 @@
 #include <sched.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 
 namespace altfem {
 
@@ -31,7 +33,9 @@ bool thread_stat_is_runnable(const std::string& text) {
   return close != std::string::npos && close + 2 < text.size() && text[close + 2] == 'R';
 }
 
-int runnable_threads_elsewhere() {
+namespace {
+
+int runnable_threads_elsewhere_now() {
   std::ifstream loadavg("/proc/loadavg");
   std::string line;
   std::optional<int> runnable;
@@ -44,6 +48,17 @@ int runnable_threads_elsewhere() {
     if (std::getline(stat, line) && thread_stat_is_runnable(line)) ++own;
   }
   return std::max(0, *runnable - own);
+}
+
+}  // namespace
+
+int runnable_threads_elsewhere() {
+  int fewest = runnable_threads_elsewhere_now();
+  for (int sample = 1; sample < 3 && fewest > 0; ++sample) {
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+    fewest = std::min(fewest, runnable_threads_elsewhere_now());
+  }
+  return fewest;
 }
 
 int usable_cores() {

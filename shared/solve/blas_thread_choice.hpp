@@ -27,8 +27,9 @@ inline constexpr double minimum_flops_for_blas_threads = 1e8;
 int factorisation_blas_threads(double flops, int thread_limit, int cores, int busy_elsewhere);
 
 /// Threads of other processes that are runnable now: the system's runnable threads
-/// (/proc/loadavg) less this process's own (/proc/self/task/*/stat, state R). 0 when
-/// /proc cannot be read.
+/// (/proc/loadavg) less this process's own (/proc/self/task/*/stat, state R), the
+/// fewest of up to three samples 0.5 ms apart so that a thread running for a moment is
+/// not counted as a busy core. 0 when /proc cannot be read.
 int runnable_threads_elsewhere();
 
 /// The runnable threads in the text of /proc/loadavg ("1.99 1.90 2.27 4/89 12892": 4),

@@ -4,6 +4,7 @@
 #include "shared/solve/blas_thread_choice.hpp"
 #include "shared/solve/blas_threads.hpp"
 #include "shared/solve/block_fill_reducing_ordering.hpp"
+#include "shared/solve/factor_memory.hpp"
 #include "shared/solve/huge_page_allocation.hpp"
 
 #include <cholmod.h>
@@ -95,14 +96,27 @@ protected:
     cholmod_sparse view = lower_triangle_view(matrix);
     std::vector<int> order = block_fill_reducing_ordering(matrix);
     factor_ = cholmod_analyze_p(&view, order.data(), nullptr, 0, &common_);
+    // The factor's entries (common_.lnz) are counted before the supernodal symbolic
+    // factor overflows CHOLMOD's int indices (status CHOLMOD_TOO_LARGE), so either
+    // way the memory check can speak first.
+    const double entries = common_.lnz;
+    const double values = factor_ != nullptr && factor_->is_super ? static_cast<double>(factor_->xsize) : entries;
+    if (factor_ != nullptr || common_.status == CHOLMOD_TOO_LARGE)
+      require_factor_fits(entries, sizeof(double) * values, available_memory_bytes());
+    if (factor_ == nullptr && common_.status == CHOLMOD_TOO_LARGE)
+      throw NumericalError("the Cholesky factor has " + std::to_string(static_cast<long long>(entries)) +
+                           " entries, more than CHOLMOD's int indices hold (2^31): set solver.linear to \"pcg\"");
     if (factor_ == nullptr) throw NumericalError("CHOLMOD analysis failed (CHOLMOD status " + status() + ")");
-    record_factor_size(common_.lnz, common_.fl);
+    record_factor_size(entries, common_.fl);
   }
 
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
     cholmod_sparse view = lower_triangle_view(matrix);
-    const int threads = factorisation_blas_threads(statistics().factorisation_flops, blas_thread_limit(),
-                                                   usable_cores(), runnable_threads_elsewhere());
+    const double flops = statistics().factorisation_flops;
+    const int threads =
+        flops < minimum_flops_for_blas_threads
+            ? 1
+            : factorisation_blas_threads(flops, blas_thread_limit(), usable_cores(), runnable_threads_elsewhere());
     set_blas_threads(threads);
     record_blas_threads(threads);
     cholmod_factorize(&view, factor_, &common_);
