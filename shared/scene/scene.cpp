@@ -273,7 +273,8 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
                   kind_from_name<LinearSolverKind>(linear_solver_kind_names, solver["linear"]),
                   solver["preconditioner"].get<std::string>(),
                   solver["linear_tolerance"].get<double>(),
-                  solver["linear_max_iterations"].get<int>()};
+                  solver["linear_max_iterations"].get<int>(),
+                  solver["cutbacks"].get<int>()};
 
   const json& output = resolved["output"];
   scene.output = {output["every"].get<int>(), output["surface"].get<bool>(), output["volume"].get<bool>()};

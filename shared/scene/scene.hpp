@@ -158,6 +158,8 @@ struct SolverSpec {
   std::string preconditioner = "jacobi";  ///< one of preconditioner_names (shared/solve)
   double linear_tolerance = 1e-10;
   int linear_max_iterations = 10000;
+  /// Halvings of a failed implicit step or load step (docs/scene-schema.md, "Solver").
+  int cutbacks = 10;
 };
 
 struct OutputSpec {

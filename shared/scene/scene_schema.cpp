@@ -254,7 +254,12 @@ const ObjectRule solver{
       .default_value = "jacobi",
       .choices = names(preconditioner_names)},
      {.key = "linear_tolerance", .type = ValueType::number, .default_value = 1e-10, .lower = positive},
-     {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one}}};
+     {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one},
+     {.key = "cutbacks",
+      .type = ValueType::integer,
+      .default_value = 10,
+      .lower = non_negative,
+      .upper = Bound{30.0, true}}}};
 
 const ObjectRule output{{{.key = "every", .type = ValueType::integer, .default_value = 1, .lower = at_least_one},
                          flag("surface", true),

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -221,6 +222,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   EventSchedule events(scene, simulation, log);
   const int steps = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
+  int cutbacks = 0;
+  double smallest_increment = 1;
   const double size = geometry.bounds.diagonal().norm();
   std::string status = "ok";
   Progress progress(steps);
@@ -246,6 +249,13 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       newton_iterations += report.newton_iterations;
       lbfgs_evaluations += report.lbfgs_evaluations;
       linear_iterations += report.linear_iterations;
+      if (report.cutbacks > 0) {
+        cutbacks += report.cutbacks;
+        smallest_increment = std::min(smallest_increment, report.smallest_increment);
+        log << "# cutback step " << step << ": " << report.cutbacks << " failed attempt"
+            << (report.cutbacks == 1 ? "" : "s") << ", smallest increment " << report.smallest_increment
+            << " of the step\n";
+      }
       const double total_energy = simulation.integrator().total_energy(state);
       check_state(state, total_energy, size, step, scene.time.dt, simulation.critical_time_step());
       steps_done = step;
@@ -285,6 +295,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["newton_iterations"] = newton_iterations;
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;
   summary["linear_iterations"] = linear_iterations;
+  summary["cutbacks"] = {{"failed_attempts", cutbacks}, {"smallest_increment", smallest_increment}};
   summary["events"] = events.records();
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();

@@ -77,6 +77,7 @@ IntegratorOptions integrator_options(const Scene& scene) {
   options.tolerance = scene.solver.tolerance;
   options.max_iterations = scene.solver.max_iterations;
   options.line_search = scene.solver.line_search;
+  options.cutbacks = scene.solver.cutbacks;
   options.project_spd = scene.solver.project_spd;
   options.rayleigh_mass = scene.time.rayleigh_mass;
   options.rayleigh_stiffness = scene.time.rayleigh_stiffness;

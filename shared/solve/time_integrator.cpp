@@ -1,5 +1,7 @@
 #include "shared/solve/time_integrator.hpp"
 
+#include <cstdio>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -148,20 +150,103 @@ double TimeIntegrator::total_energy(const State& state) const {
 StepReport TimeIntegrator::step(State& state) {
   const long long linear_before = linear_solver_->statistics().iterations;
   failed_step_ = StepReport{};
+  const bool newton =
+      !(options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
+        options_.kind != IntegrationScheme::semi_implicit);
+  const bool retried =
+      newton && options_.cutbacks > 0 &&
+      (options_.kind == IntegrationScheme::static_equilibrium || options_.kind == IntegrationScheme::backward_euler);
+  const State start = retried ? state : State{};
+  std::string failure;
+  int iterations = 0;
   try {
-    if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
-        options_.kind != IntegrationScheme::semi_implicit)
-      return step_lbfgs(state);
-    switch (options_.kind) {
-      case IntegrationScheme::symplectic_euler: return step_symplectic(state);
-      case IntegrationScheme::semi_implicit: return step_implicit(state, true);
-      default: return step_implicit(state, false);
-    }
-  } catch (const NumericalError&) {
+    StepReport report = attempt_step(state);
+    if (options_.kind == IntegrationScheme::static_equilibrium) converged_load_factor_ = state.load_factor;
+    return report;
+  } catch (const NumericalError& error) {
     if (failed_step_.lbfgs_evaluations == 0) failed_step_.newton_iterations = newton_->iterations_of_last_call();
+    failed_step_.linear_iterations = linear_solver_->statistics().iterations - linear_before;
+    if (!retried) throw;
+    failure = error.what();
+    iterations = failed_step_.newton_iterations;
+  }
+  state = start;
+  try {
+    StepReport report = step_in_increments(state, start, failure, iterations);
+    report.linear_iterations = linear_solver_->statistics().iterations - linear_before;
+    if (options_.kind == IntegrationScheme::static_equilibrium) converged_load_factor_ = state.load_factor;
+    return report;
+  } catch (const NumericalError&) {
+    failed_step_.newton_iterations = iterations;
     failed_step_.linear_iterations = linear_solver_->statistics().iterations - linear_before;
     throw;
   }
+}
+
+StepReport TimeIntegrator::attempt_step(State& state) {
+  if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
+      options_.kind != IntegrationScheme::semi_implicit)
+    return step_lbfgs(state);
+  switch (options_.kind) {
+    case IntegrationScheme::symplectic_euler: return step_symplectic(state);
+    case IntegrationScheme::semi_implicit: return step_implicit(state, true);
+    default: return step_implicit(state, false);
+  }
+}
+
+StepReport TimeIntegrator::step_in_increments(State& state, const State& start, const std::string& failure,
+                                              int& iterations) {
+  // Load stepping and time-step cutbacks as nonlinear finite-element codes do them
+  // (e.g. Abaqus's automatic increments): the step is split into increments, halved
+  // when one fails, doubled after one that converged in at most a quarter of the
+  // iteration limit. An increment of a static step moves λ from the last converged
+  // load factor towards the step's; one of backward Euler is a step of h · fraction.
+  const bool is_static = options_.kind == IntegrationScheme::static_equilibrium;
+  const double time_step = options_.time_step;
+  const double smallest_allowed = std::ldexp(1.0, -options_.cutbacks);
+  const double from_load = converged_load_factor_, to_load = start.load_factor;
+  struct RestoreTimeStep {
+    double& value;
+    double saved;
+    ~RestoreTimeStep() { value = saved; }
+  } restore{options_.time_step, time_step};
+  StepReport report;
+  report.cutbacks = 1;  // the whole step failed
+  double done = 0, increment = 0.5;
+  while (done < 1) {
+    increment = std::min(increment, 1 - done);
+    const State before = state;
+    const bool last = done + increment >= 1;
+    if (is_static) state.load_factor = last ? to_load : from_load + (to_load - from_load) * (done + increment);
+    else options_.time_step = last ? time_step * (1 - done) : time_step * increment;
+    try {
+      const StepReport part = step_implicit(state, false);
+      state.step = start.step;  // increments are not steps: failures name the step they belong to
+      iterations += part.newton_iterations;
+      report.residual = part.residual;
+      report.smallest_increment = std::min(report.smallest_increment, increment);
+      done = last ? 1 : done + increment;
+      if (part.newton_iterations <= options_.max_iterations / 4) increment *= 2;
+    } catch (const NumericalError& error) {
+      iterations += newton_->iterations_of_last_call();
+      state = before;
+      ++report.cutbacks;
+      increment /= 2;
+      if (increment < smallest_allowed) {
+        char where[160];
+        std::snprintf(where, sizeof(where), "%s %.6g", is_static ? "load factor" : "time",
+                      is_static ? from_load + (to_load - from_load) * done : start.time + time_step * done);
+        throw NumericalError("step " + std::to_string(start.step + 1) + ": not converged in increments down to 2^-" +
+                             std::to_string(options_.cutbacks) + " of the step (solver.cutbacks), reached " + where +
+                             "; first failure: " + failure + "; last: " + error.what());
+      }
+    }
+  }
+  state.step = start.step + 1;
+  if (is_static) state.load_factor = to_load;
+  else state.time = start.time + time_step;
+  report.newton_iterations = iterations;
+  return report;
 }
 
 StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {

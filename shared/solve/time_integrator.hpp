@@ -3,6 +3,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 #include <memory>
+#include <string>
 #include <string_view>
 
 #include "shared/solve/dirichlet_elimination.hpp"
@@ -29,6 +30,10 @@ struct IntegratorOptions {
   double rayleigh_mass = 0;       ///< α of D = αM + βK
   double rayleigh_stiffness = 0;  ///< β of D = αM + βK, K frozen at the start of each step
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
+  /// Newton steps of static equilibrium and backward Euler that fail are retried in
+  /// increments: halved on failure, doubled after an easy one, down to 2^-cutbacks of
+  /// the step (0: no retry).
+  int cutbacks = 10;
 };
 
 struct State {
@@ -45,6 +50,10 @@ struct StepReport {
   int lbfgs_evaluations = 0;  ///< L-BFGS steps report objective evaluations here, not as Newton iterations
   long long linear_iterations = 0;
   double residual = 0;
+  /// Failed attempts the step was retried after (IntegratorOptions::cutbacks), and the
+  /// smallest increment that converged, as a fraction of the step (1 without retry).
+  int cutbacks = 0;
+  double smallest_increment = 1;
 };
 
 std::string_view integration_scheme_name(IntegrationScheme kind);
@@ -79,6 +88,10 @@ public:
   double absolute_tolerance() const { return absolute_tolerance_; }
 
 private:
+  StepReport attempt_step(State& state);
+  /// The step from `start` (restored in `state`) in increments after it failed whole
+  /// with `failure`; `iterations` accumulates the Newton iterations of every attempt.
+  StepReport step_in_increments(State& state, const State& start, const std::string& failure, int& iterations);
   StepReport step_implicit(State& state, bool single_step);
   StepReport step_symplectic(State& state);
   StepReport step_lbfgs(State& state);
@@ -91,6 +104,7 @@ private:
   Eigen::VectorXd gravity_force_;  // ∫ρ g φ
   StepReport failed_step_;
   double absolute_tolerance_ = 0;
+  double converged_load_factor_ = 0;  // static equilibrium: λ of the last load step that converged
 };
 
 }  // namespace altfem
