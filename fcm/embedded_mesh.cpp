@@ -1,16 +1,19 @@
 #include "fcm/embedded_mesh.hpp"
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/tetrahedra_of_hexahedra.hpp"
 #include "shared/scene/tetrahedralize_geometry.hpp"
 
 namespace altfem::fcm {
 
 VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file) {
   if (geometry.mesh) {
-    if (element_shape(geometry.mesh->element_type) != ElementShape::tetrahedron) {
-      throw InputError(input_message(
-          scene_file, "/geometry/mesh",
-          "fcm needs a tetrahedral geometry mesh, got " + std::string(element_name(geometry.mesh->element_type))));
+    if (element_shape(geometry.mesh->element_type) == ElementShape::hexahedron) {
+      try {
+        return tetrahedra_of_hexahedra(*geometry.mesh);
+      } catch (const InputError& error) {
+        throw InputError(input_message(scene_file, "/geometry/mesh", error.what()));
+      }
     }
     VolumeMesh corners{ElementType::tet4, geometry.mesh->nodes, geometry.mesh->cells.leftCols(4)};
     return corners;

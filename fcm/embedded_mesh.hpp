@@ -7,9 +7,11 @@
 
 namespace altfem::fcm {
 
-/// A Tet4 mesh of the geometry: a Tet4/Tet10 volume mesh's corner tetrahedra; a surface
-/// or shape meshed with cells of at most `max_cell_size`. Throws InputError for a
-/// hexahedral volume mesh (its curved faces have no exact tetrahedralisation).
+/// A Tet4 mesh of the geometry: a Tet4/Tet10 volume mesh's corner tetrahedra; a
+/// hexahedral volume mesh's cells split into 12 tetrahedra each about their centroids
+/// (tetrahedra_of_hexahedra: straight-sided, so a Hex20/Hex27 cell's curved faces and a
+/// Hex8 cell's warped ones are approximated by triangles); a surface or shape meshed with
+/// cells of at most `max_cell_size`.
 VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file);
 
 }  // namespace altfem::fcm

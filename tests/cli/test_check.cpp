@@ -56,6 +56,21 @@ TEST(Check, ResolvesEveryMethodBlockWithoutMethod) {
   EXPECT_TRUE(report["methods"].contains("fem"));
 }
 
+// Issue #35: a hexahedral volume mesh as the geometry made `check` fail for every
+// method, since fcm refused it; fcm now splits its cells into tetrahedra
+// (tetrahedra_of_hexahedra) and every method integrates the cube's volume exactly.
+TEST(Check, AHexahedralGeometryMeshServesEveryMethod) {
+  const CommandResult result =
+      run_altfem({"check", source_path("tests/cli/scenes/hexahedral_geometry_mesh.json").string(), "--json"});
+  ASSERT_EQ(result.exit_code, 0) << result.err;
+  const nlohmann::json report = nlohmann::json::parse(result.out);
+  EXPECT_TRUE(report["methods"].contains("fcm"));
+  for (const auto& [name, facts] : report["methods"].items()) {
+    SCOPED_TRACE(name);
+    EXPECT_LT(std::abs(facts["volume_difference"].get<double>()), 1e-10);
+  }
+}
+
 TEST(Check, UnknownMethodIsBadInput) {
   const CommandResult result = run_altfem({"check", source_path("scenes/cantilever.json").string(), "--method", "fxm"});
   EXPECT_EQ(result.exit_code, 2);
