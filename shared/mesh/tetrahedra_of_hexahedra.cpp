@@ -47,7 +47,9 @@ VolumeMesh tetrahedra_of_hexahedra(const VolumeMesh& hexahedra) {
       tetrahedra.cells.row(row++) << a, d, c, centre;
     }
     for (int tetrahedron = 12 * static_cast<int>(cell); tetrahedron < row; ++tetrahedron) {
-      const auto corner = [&](int k) { return tetrahedra.nodes.row(tetrahedra.cells(tetrahedron, k)).transpose(); };
+      const auto corner = [&](int k) -> Eigen::Vector3d {
+        return tetrahedra.nodes.row(tetrahedra.cells(tetrahedron, k)).transpose();
+      };
       const double six_volume = (corner(1) - corner(0)).cross(corner(2) - corner(0)).dot(corner(3) - corner(0));
       if (!(six_volume > 0))
         throw InputError("hexahedron " + std::to_string(cell) +
