@@ -73,9 +73,13 @@ bool region_meets_points(const RegionSelector& region, const Eigen::MatrixXd& po
 }
 
 // Methods mesh a shape at their own sizes; the surface they all deform is this one, fine
-// enough that its own facets are not what a comparison measures.
+// enough that its own facets are not what a comparison measures. A box-built shape's
+// planes are planes of its exact mesh's grid, so its features (a plate's thickness) are
+// resolved at any size; sizing it by its smallest feature made a 1 m × 1 m × 1 mm plate
+// a 48-million-cell mesh that never finished (issue #35).
 SurfaceMesh shape_surface(const AnalyticShape& shape) {
-  const double size = std::min(shape.bounding_box().diagonal().norm() / 40, shape.smallest_feature() / 2);
+  const double coarse = shape.bounding_box().diagonal().norm() / 40;
+  const double size = shape.axis_planes() ? coarse : std::min(coarse, shape.smallest_feature() / 2);
   const VolumeMesh mesh =
       shape.axis_planes() ? tetrahedralize_box_shape(shape, size) : tetrahedralize_shape(shape, size, false);
   return boundary_surface(mesh).surface;
