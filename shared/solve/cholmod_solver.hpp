@@ -14,9 +14,19 @@ enum class CholmodFactorisation {
   simplicial_ldlt,
 };
 
+enum class CholmodIndices {
+  /// int indices, switching to SuiteSparse_long when the factor outgrows them (2^31 entries)
+  automatic,
+  /// SuiteSparse_long from the start (what the switch leads to; for tests)
+  wide,
+};
+
 /// A CHOLMOD solver; reads only the lower triangle of the matrices it is given.
 /// factorize() throws NumericalError "matrix is not positive definite (CHOLMOD
-/// status 1, column k)" (LLᵀ) or "... has a zero pivot ..." (LDLᵀ).
-std::unique_ptr<LinearSolver> make_cholmod_solver(CholmodFactorisation factorisation);
+/// status 1, column k)" (LLᵀ) or "... has a zero pivot ..." (LDLᵀ), and, before
+/// computing it, "the Cholesky factor needs … GB …" when the factor will not fit in
+/// the memory available (factor_memory.hpp).
+std::unique_ptr<LinearSolver> make_cholmod_solver(CholmodFactorisation factorisation,
+                                                  CholmodIndices indices = CholmodIndices::automatic);
 
 }  // namespace altfem

@@ -1,4 +1,5 @@
 #include "shared/common/error.hpp"
+#include "shared/solve/cholmod_solver.hpp"
 #include "shared/solve/linear_solver.hpp"
 #include "tests/unit/solve/test_matrices.hpp"
 
@@ -29,6 +30,34 @@ TEST(DirectSolvers, SolveSpdSystemToRoundoff) {
     EXPECT_LT(relative_error(solution, exact), 1e-12) << solver->name();
     EXPECT_EQ(solver->statistics().solves, 1);
     EXPECT_EQ(solver->statistics().iterations, 0);
+  }
+}
+
+// CHOLMOD's SuiteSparse_long interface, which the solver switches to when a factor
+// outgrows int indices (2^31 entries, far beyond a unit test), gives the int one's
+// factor and solution: same entries, same flops, same solution to round-off, for a
+// compressed matrix and for one that is not, refactorised with new values.
+TEST(DirectSolvers, CholmodWithLongIndicesSolvesAsWithIntIndices) {
+  Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(10);
+  const Eigen::VectorXd exact = Eigen::VectorXd::LinSpaced(matrix.rows(), -1.0, 2.0);
+  for (const CholmodFactorisation factorisation :
+       {CholmodFactorisation::supernodal_llt, CholmodFactorisation::simplicial_ldlt}) {
+    auto narrow = make_cholmod_solver(factorisation);
+    auto wide = make_cholmod_solver(factorisation, CholmodIndices::wide);
+    for (const double scale : {1.0, 2.5}) {
+      Eigen::SparseMatrix<double> scaled = scale * matrix;
+      if (scale != 1.0) scaled.uncompress();
+      const Eigen::VectorXd rhs = scaled * exact;
+      Eigen::VectorXd narrow_solution, wide_solution;
+      narrow->factorize(scaled);
+      narrow->solve(rhs, narrow_solution);
+      wide->factorize(scaled);
+      wide->solve(rhs, wide_solution);
+      EXPECT_LT(relative_error(wide_solution, exact), 1e-12) << wide->name() << " × " << scale;
+      EXPECT_LT(relative_error(wide_solution, narrow_solution), 1e-13) << wide->name() << " × " << scale;
+    }
+    EXPECT_EQ(wide->statistics().factor_entries, narrow->statistics().factor_entries);
+    EXPECT_EQ(wide->statistics().factorisation_flops, narrow->statistics().factorisation_flops);
   }
 }
 
