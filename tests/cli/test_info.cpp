@@ -20,5 +20,17 @@ TEST(Info, ReferenceBlasIsNamedAndWarnedAbout) {
   EXPECT_NE(result.err.find("warning: the reference BLAS"), std::string::npos) << result.err;
 }
 
+// docs/conventions.md, "Threads": libgomp reads OMP_WAIT_POLICY before main(), so altfem
+// restarts itself with it set to passive; a value the user chose is kept.
+TEST(Info, RestartsWithPassiveOpenMpWaitingUnlessTheUserChoseAPolicy) {
+  const auto unset = run_altfem({"info"}, "env -u OMP_WAIT_POLICY");
+  ASSERT_EQ(unset.exit_code, 0) << unset.err;
+  EXPECT_NE(unset.out.find("waiting passive\n"), std::string::npos) << unset.out;
+  const auto chosen = run_altfem({"info"}, "OMP_WAIT_POLICY=active");
+  ASSERT_EQ(chosen.exit_code, 0) << chosen.err;
+  EXPECT_NE(chosen.out.find("waiting active\n"), std::string::npos) << chosen.out;
+  EXPECT_NE(unset.out.find("BLAS core: "), std::string::npos) << unset.out;
+}
+
 }  // namespace
 }  // namespace altfem::test
