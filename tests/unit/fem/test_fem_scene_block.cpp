@@ -38,8 +38,9 @@ TEST(FemSceneBlock, GridResolutionFollowsTheAspect) {
   EXPECT_EQ(resolution("[1, 1, 0.01]", "hex27"), Eigen::Vector3i(32, 32, 2));
 }
 
-TEST(FemSceneBlock, QuadratureOrderDefaultsToTwiceTheDegree) {
-  EXPECT_EQ(fem_spec(box_scene("[1, 1, 1]", R"({"element": "hex27"})")).quadrature_order, 4);
+TEST(FemSceneBlock, QuadratureOrderDefaultsToTwiceTheDegreeAndSevenForHex27) {
+  EXPECT_EQ(fem_spec(box_scene("[1, 1, 1]", R"({"element": "hex27"})")).quadrature_order, 7);
+  EXPECT_EQ(fem_spec(box_scene("[1, 1, 1]", R"({"element": "hex20"})")).quadrature_order, 4);
   EXPECT_EQ(fem_spec(box_scene("[1, 1, 1]", R"({"element": "tet20"})")).quadrature_order, 6);
   EXPECT_EQ(fem_spec(box_scene("[1, 1, 1]", R"({"element": "tet4"})")).quadrature_order, 2);
 }
