@@ -29,10 +29,11 @@ function(altfem_library name)
   endif()
 endfunction()
 
-# altfem_test(NAME LABEL label SOURCES ... DEPENDS ...): one GoogleTest
-# executable, registered with ctest under the label (unit, verify or cli).
+# altfem_test(NAME LABEL label SOURCES ... DEPENDS ... [TEST_FILTER f]): one GoogleTest
+# executable, registered with ctest under the label (unit, verify or cli); TEST_FILTER
+# is gtest_discover_tests' (tests/CMakeLists.txt: the *FullSize suites ctest leaves out).
 function(altfem_test name)
-  cmake_parse_arguments(ARG "" "LABEL;TIMEOUT" "SOURCES;DEPENDS" ${ARGN})
+  cmake_parse_arguments(ARG "" "LABEL;TIMEOUT;TEST_FILTER" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPENDS} GTest::gtest_main)
   target_compile_definitions(${name} PRIVATE
@@ -41,6 +42,10 @@ function(altfem_test name)
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 600)
   endif()
-  gtest_discover_tests(${name} PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT}
+  set(filter)
+  if(ARG_TEST_FILTER)
+    set(filter TEST_FILTER "${ARG_TEST_FILTER}")
+  endif()
+  gtest_discover_tests(${name} ${filter} PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT}
                        DISCOVERY_TIMEOUT 60)
 endfunction()

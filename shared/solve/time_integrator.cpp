@@ -14,6 +14,12 @@ namespace altfem {
 
 namespace {
 
+// solver.nonlinear = lbfgs replaces Newton in the schemes that minimise a potential.
+bool minimised_by_lbfgs(const IntegratorOptions& options) {
+  return options.nonlinear == Minimizer::lbfgs && options.kind != IntegrationScheme::symplectic_euler &&
+         options.kind != IntegrationScheme::semi_implicit;
+}
+
 // The integrators add the value arrays of the Hessian, the mass and the damping
 // matrix: that is only right when all of them have one pattern.
 void check_same_pattern(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& pattern) {
@@ -150,14 +156,11 @@ double TimeIntegrator::total_energy(const State& state) const {
 StepReport TimeIntegrator::step(State& state) {
   const long long linear_before = linear_solver_->statistics().iterations;
   failed_step_ = StepReport{};
-  const bool newton =
-      !(options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
-        options_.kind != IntegrationScheme::semi_implicit);
   // A constant Hessian (a linear material) makes Newton's convergence independent of the
   // increment: retrying in smaller ones cannot help (a thin plate whose residual stalls
   // at round-off spent 57 s doing so).
   const bool retried =
-      newton && options_.cutbacks > 0 && !discretization_->hessian_is_constant() &&
+      !minimised_by_lbfgs(options_) && options_.cutbacks > 0 && !discretization_->hessian_is_constant() &&
       (options_.kind == IntegrationScheme::static_equilibrium || options_.kind == IntegrationScheme::backward_euler);
   const State start = retried ? state : State{};
   std::string failure;
@@ -187,9 +190,7 @@ StepReport TimeIntegrator::step(State& state) {
 }
 
 StepReport TimeIntegrator::attempt_step(State& state) {
-  if (options_.nonlinear == Minimizer::lbfgs && options_.kind != IntegrationScheme::symplectic_euler &&
-      options_.kind != IntegrationScheme::semi_implicit)
-    return step_lbfgs(state);
+  if (minimised_by_lbfgs(options_)) return step_lbfgs(state);
   switch (options_.kind) {
     case IntegrationScheme::symplectic_euler: return step_symplectic(state);
     case IntegrationScheme::semi_implicit: return step_implicit(state, true);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include "shared/mesh/surface_mesh.hpp"
@@ -25,7 +26,8 @@ SceneGeometry box_geometry(const std::string& max) {
 // The plate used to be meshed at half its thickness (48 million tetrahedra, > 4 GB,
 // never finished); its planes are planes of its exact mesh, so the bounding box sizes it.
 TEST(ThinGeometry, APlateOneThousandthAsThickAsWideHasASurfaceSizedByItsWidth) {
-  const SceneGeometry plate = box_geometry("[1, 1, 0.001]");
+  const SceneGeometry plate =
+      load_scene_geometry(load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/cli/scenes/thin_plate.json"));
   ASSERT_TRUE(plate.shape_surface.has_value());
   const SurfaceMesh& surface = *plate.shape_surface;
   EXPECT_LT(surface.triangles.rows(), 20000);
