@@ -122,9 +122,9 @@ void GridSlicer::compute_face_regions() {
           const GridFaceRegion other = region_from(face, above, false);
           if (other.undetermined != region.undetermined || canonical(other.loops) != canonical(region.loops) ||
               canonical(other.holes) != canonical(region.holes))
-            throw NumericalError("slicing: " + face_name(face) +
-                                 ": the surface lies in this grid plane with material on both sides; "
-                                 "change the resolution or the margin");
+            throw SurfaceInGridPlane("slicing: " + face_name(face) +
+                                     ": the surface lies in this grid plane with material on both sides; "
+                                     "change the resolution or the margin");
         }
         const bool undetermined = region.undetermined;
         Loops loops = region.holes.empty()
@@ -151,7 +151,7 @@ void GridSlicer::decide_undetermined_faces(const std::vector<UndeterminedFace>& 
   for (std::size_t f = 0; f < faces.size(); ++f) {
     if (sides[f] != SurfaceSide::on_surface) continue;
     if (faces[f].both_cut)
-      throw NumericalError(
+      throw SurfaceInGridPlane(
           "slicing: " + face_name(faces[f].face) +
           ": the surface lies in this grid plane between two cut cells; change the resolution or the margin");
     in_plane.push_back(f);
@@ -182,9 +182,9 @@ void GridSlicer::check_next_to_inside_cell(const GridFace& face, const Loops& lo
   if (both_cut || other_cell < 0 || state_[other_cell] != CellState::inside) return;
   const auto corners = corners_up(face);
   if (canonical(loops) != canonical({{corners.begin(), corners.end()}}))
-    throw NumericalError("slicing: " + face_name(face) +
-                         ": the surface lies in this grid plane next to a cell wholly inside; "
-                         "change the resolution or the margin");
+    throw SurfaceInGridPlane("slicing: " + face_name(face) +
+                             ": the surface lies in this grid plane next to a cell wholly inside; "
+                             "change the resolution or the margin");
 }
 
 }  // namespace altfem

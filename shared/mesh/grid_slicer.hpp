@@ -8,11 +8,20 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shared/common/error.hpp"
 #include "shared/mesh/grid_face_region.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/slicing_grid.hpp"
 
 namespace altfem {
+
+/// The surface lies in a grid plane where the slicer cannot tell the two sides' faces
+/// apart (material near both sides, or a cell wholly inside next to a face the surface
+/// only partly covers): slice_into_polyhedra moves the grid and slices again.
+class SurfaceInGridPlane : public NumericalError {
+public:
+  using NumericalError::NumericalError;
+};
 
 /// A grid face: the plane x_axis = planes[axis][node(axis)], from grid node `node` over
 /// one cell along the two other axes. Its lower cell is node − e_axis, its upper cell node.

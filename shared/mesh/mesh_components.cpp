@@ -37,6 +37,13 @@ int volume_mesh_components(const VolumeMesh& mesh) {
   return count_roots(sets, cells, {});
 }
 
+int polyhedral_mesh_components(const PolyhedralMesh& mesh) {
+  DisjointSets sets(mesh.cell_count());
+  for (int face = 0; face < mesh.face_count(); ++face)
+    if (!mesh.is_boundary_face(face)) sets.join(mesh.face_cells(face, 0), mesh.face_cells(face, 1));
+  return count_roots(sets, mesh.cell_count(), {});
+}
+
 int surface_solid_components(const SurfaceMesh& surface) {
   const int triangles = static_cast<int>(surface.triangles.rows());
   DisjointSets sets(triangles);

@@ -2,6 +2,7 @@
 // Connected pieces of meshes and shapes: what `tetrahedralize_geometry` compares so that
 // a mesh never glues together parts that the geometry keeps apart (#21 item 5).
 #include "shared/geometry/analytic_shape.hpp"
+#include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
@@ -10,6 +11,9 @@ namespace altfem {
 /// Pieces of a tetrahedral mesh (any order; its corner tetrahedra count) connected
 /// through shared faces: two cells that meet only at an edge or a node are apart.
 int volume_mesh_components(const VolumeMesh& mesh);
+
+/// Pieces of a polyhedral mesh connected through interior faces (face_cells with two cells).
+int polyhedral_mesh_components(const PolyhedralMesh& mesh);
 
 /// Solid pieces bounded by a closed, outward-oriented surface: its shells (triangles
 /// joined through edges) that enclose positive volume; a cavity's inward shell is not one.

@@ -1,5 +1,6 @@
 #include "shared/mesh/slice_into_polyhedra.hpp"
 
+#include <array>
 #include <cmath>
 
 #include "shared/common/error.hpp"
@@ -27,16 +28,8 @@ double cell_size_for(const SlicingOptions& options, const Eigen::Vector3d& lower
   return options.cell_size > 0 ? options.cell_size : (upper - lower).maxCoeff() / options.resolution;
 }
 
-}  // namespace
-
-SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions& options) {
-  check_options(options);
-  if (surface.triangles.rows() == 0) throw InputError("slicing: the surface has no triangles");
-  const Eigen::Vector3d lower = surface.vertices.colwise().minCoeff(), upper = surface.vertices.colwise().maxCoeff();
-  const SlicingGrid grid =
-      SlicingGrid::covering(lower, upper, cell_size_for(options, lower, upper), options.margin_cells);
-  GridSlicer slicer(surface, grid);
-  SlicedMesh result = slicer.run();
+// Octree grading, the geometry, sliver merging and unused nodes after a successful pass.
+SlicedMesh finish(SlicedMesh result, const SlicingGrid& grid, const GridSlicer& slicer, const SlicingOptions& options) {
   if (options.octree_levels > 0)
     result.coarse_cells =
         grade_interior_hexahedra(result.mesh, grid.cells, slicer.grid_hexahedra(), options.octree_levels);
@@ -48,6 +41,31 @@ SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions
   // freedom with no support (zero mass and stiffness).
   drop_unused_nodes(result.mesh);
   return result;
+}
+
+}  // namespace
+
+SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions& options) {
+  check_options(options);
+  if (surface.triangles.rows() == 0) throw InputError("slicing: the surface has no triangles");
+  const Eigen::Vector3d lower = surface.vertices.colwise().minCoeff(), upper = surface.vertices.colwise().maxCoeff();
+  const double cell_size = cell_size_for(options, lower, upper);
+  // A face of the surface in a grid plane with the slicer unable to tell the sides'
+  // faces apart (two bodies closer than a cell, one of them flush with a plane): move the
+  // grid by a fraction of a cell that no common coordinate shares (golden-ratio steps)
+  // and slice again, rather than ask the user for another resolution.
+  constexpr std::array<double, 4> shifts{0.0, 0.381966011, 0.236067977, 0.145898034};
+  for (std::size_t attempt = 0;; ++attempt) {
+    const SlicingGrid grid = SlicingGrid::covering(lower, upper, cell_size, options.margin_cells + shifts[attempt]);
+    GridSlicer slicer(surface, grid);
+    try {
+      SlicedMesh result = slicer.run();
+      result.grid_shift_cells = shifts[attempt];
+      return finish(std::move(result), grid, slicer, options);
+    } catch (const SurfaceInGridPlane&) {
+      if (attempt + 1 == shifts.size()) throw;
+    }
+  }
 }
 
 SlicedMesh slice_into_polyhedra(const AnalyticShape& shape, const SlicingOptions& options) {

@@ -34,12 +34,18 @@ struct SlicedMesh {
   int split_grid_cells = 0;  ///< cut grid cells with more than one piece
   int merged_slivers = 0;    ///< pieces merged into a neighbour
   int coarse_cells = 0;      ///< octree cells of more than one grid cell
+  /// Cells by which the grid was moved (beyond margin_cells) because the surface lay in a
+  /// grid plane where the two sides' faces could not be told apart; 0 when it was not.
+  double grid_shift_cells = 0.0;
 };
 
-/// Slices the closed, outward-oriented surface. Throws InputError for bad options and
-/// NumericalError naming the grid face where the surface meets the grid in a way this
-/// slicer does not resolve (it lies in a grid plane with material on both sides, or
-/// pierces a grid face without reaching its edges): change the resolution or margin.
+/// Slices the closed, outward-oriented surface. Where the surface lies in a grid plane in
+/// a way the slicer cannot resolve (two bodies closer than a cell, one flush with the
+/// plane), the grid moves by a fraction of a cell and the slicing starts again
+/// (grid_shift_cells). Throws InputError for bad options and NumericalError naming the
+/// grid face where the surface still meets the grid in a way this slicer does not
+/// resolve (after three moves, or a surface piercing a grid face without reaching its
+/// edges): change the resolution or margin.
 SlicedMesh slice_into_polyhedra(const SurfaceMesh& surface, const SlicingOptions& options);
 
 /// Slices an analytic shape (or CSG) through the boundary of its CGAL Mesh_3

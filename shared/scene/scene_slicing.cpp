@@ -84,7 +84,8 @@ json slicing_facts(const SlicedMesh& sliced) {
           {"cut_pieces", sliced.cut_pieces},
           {"grid_cells_split_by_topology", sliced.split_grid_cells},
           {"merged_slivers", sliced.merged_slivers},
-          {"octree_coarse_cells", sliced.coarse_cells}};
+          {"octree_coarse_cells", sliced.coarse_cells},
+          {"grid_shift_cells", sliced.grid_shift_cells}};
 }
 
 }  // namespace altfem

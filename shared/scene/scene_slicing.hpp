@@ -35,7 +35,7 @@ SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const SlicingOpti
 SurfaceMesh sliced_surface(const SceneGeometry& geometry);
 
 /// {"grid": [nx, ny, nz], "cell_size", "hexahedra", "cut_pieces",
-///  "grid_cells_split_by_topology", "merged_slivers", "octree_coarse_cells"}.
+///  "grid_cells_split_by_topology", "merged_slivers", "octree_coarse_cells", "grid_shift_cells"}.
 nlohmann::json slicing_facts(const SlicedMesh& sliced);
 
 }  // namespace altfem

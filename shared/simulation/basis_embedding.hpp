@@ -6,6 +6,7 @@
 // on element boundaries and the sparse product are shared.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <span>
 #include <vector>
 
 #include "shared/simulation/point_embedding.hpp"
@@ -56,6 +57,11 @@ public:
   /// displacement(): f_(3a+i) = Σ_p φ_a(x_p) F_(p,i).
   Eigen::VectorXd load(const Eigen::MatrixXd& forces, int dof_count) const;
   int outside_count() const { return outside_count_; }
+  /// The basis functions that point `point`'s displacement combines (those of every
+  /// element containing it, or of the nearest one).
+  std::span<const int> basis_of(Eigen::Index point) const {
+    return {basis_.data() + offsets_[point], static_cast<size_t>(offsets_[point + 1] - offsets_[point])};
+  }
   /// The largest distance from an outside point to its element (0 if none).
   double max_outside_distance() const { return max_outside_distance_; }
 

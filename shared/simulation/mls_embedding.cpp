@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <span>
 #include <string>
 #include <unordered_map>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/disjoint_sets.hpp"
 
 namespace altfem {
 
@@ -69,6 +71,14 @@ CubeBuckets support_cubes(const Eigen::MatrixXd& samples, const Eigen::VectorXd&
   return cubes;
 }
 
+// The largest basis function index a point of `embedding` uses, plus one.
+int basis_function_bound(const BasisEmbedding& embedding, Eigen::Index point_count) {
+  int bound = 0;
+  for (Eigen::Index point = 0; point < point_count; ++point)
+    for (int function : embedding.basis_of(point)) bound = std::max(bound, function + 1);
+  return bound;
+}
+
 // One embedded point's samples and weights w_i(x) (eq. (32)).
 struct PointWeights {
   std::vector<int> samples;
@@ -80,6 +90,20 @@ struct PointWeights {
 MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples,
                            const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options)
     : stitched_(basis, samples) {
+  // Elements joined through the samples they share (a sample evaluates every element
+  // containing it), as sets of basis functions; a point's piece is its element's.
+  const BasisEmbedding located(basis, points);
+  DisjointSets pieces(
+      std::max(basis_function_bound(stitched_, samples.rows()), basis_function_bound(located, points.rows())));
+  for (Eigen::Index sample = 0; sample < samples.rows(); ++sample)
+    for (int function : stitched_.basis_of(sample)) pieces.join(stitched_.basis_of(sample).front(), function);
+  const auto piece_of = [&pieces](std::span<const int> functions) {
+    return functions.empty() ? -1 : pieces.find(functions.front());
+  };
+  std::vector<int> sample_piece(static_cast<size_t>(samples.rows())), point_piece(static_cast<size_t>(points.rows()));
+  for (Eigen::Index sample = 0; sample < samples.rows(); ++sample)
+    sample_piece[sample] = piece_of(stitched_.basis_of(sample));
+  for (Eigen::Index point = 0; point < points.rows(); ++point) point_piece[point] = piece_of(located.basis_of(point));
   const double largest_radius = options.support * spacing.maxCoeff();
   const CubeBuckets supports = support_cubes(samples, options.support * spacing);
   const CubeBuckets reachable = sample_cubes(samples, largest_radius);  // for enlarged supports (rare)
@@ -101,6 +125,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
         Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
         const double reach = enlarge * largest_radius;
         const auto add = [&](int sample) {
+          if (sample_piece[sample] != point_piece[point]) return;
           const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
           const double distance = (samples.row(sample).transpose() - x).norm();
           if (distance >= radius) return;
@@ -128,8 +153,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
         solved = true;
       }
       if (!solved)
-        throw NumericalError("MLS embedding: embedded point " + std::to_string(point) +
-                             " has fewer than four non-coplanar mesh nodes within 8 times its support");
+        throw NumericalError(
+            "MLS embedding: embedded point " + std::to_string(point) +
+            " has fewer than four non-coplanar mesh nodes of its own piece within 8 times its support");
     } catch (...) {
 #pragma omp critical(mls_embedding_failure)
       if (!failure) failure = std::current_exception();

@@ -9,6 +9,13 @@
 // weights w_i(x) of every embedded point are computed once. Affine fields (rigid
 // motions included) are reproduced exactly, and ũ is continuous in x however
 // discontinuous the field is across element faces.
+//
+// Kaufmann et al. draw the samples from a ball around x; where two bodies pass closer than
+// the support (two bars 4 mm apart on 0.1 m cells), that ball holds both, and the surface
+// of a falling body would follow the body that is held. So a point uses only the samples
+// of its own piece: elements joined through shared samples (a sample on a shared face,
+// edge or node evaluates every element containing it), a point's piece that of the
+// element containing it (or the nearest one).
 #include <Eigen/Core>
 #include <vector>
 

@@ -1,7 +1,8 @@
 // Hexahedral slicing of closed surfaces into polyhedral meshes: an aligned box gives the
 // grid's hexahedra; a sphere, a torus and the bunny give cells whose volumes sum to the
 // enclosed volume, each cell closed (every edge used once each way, Σ area·normal = 0),
-// interior faces shared by exactly two cells; two boxes closer than a cell stay apart;
+// interior faces shared by exactly two cells; two boxes closer than a cell stay apart
+// (also with a face in a grid plane);
 // a U-shape keeps its arms apart; slivers are merged into their neighbours; a CSG shape
 // goes through its Mesh_3 surface; a batch of degenerate surfaces slices into closed cells;
 // a face pierced in a hole is bridged; octree grading is conforming and 2:1.
@@ -14,6 +15,7 @@
 #include "shared/common/error.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/mesh_components.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
 #include "tests/unit/surfaces.hpp"
@@ -159,6 +161,28 @@ TEST(SliceIntoPolyhedra, TwoBoxesInOneGridCellGiveTwoPieces) {
     EXPECT_FALSE(on_left && on_right) << "cell " << cell;
   }
 }
+
+// The bars of tests/cli/scenes/two_boxes.json, 4 mm apart across y ∈ [0.1, 0.104], sliced
+// on a grid with no margin, so grid planes lie at y = k · cell_size: with cell 0.1 the lower
+// bar's top face lies in a grid plane, with cell 0.104 the upper bar's bottom face, with
+// cell 0.102 a grid plane runs through the gap. Issue #35: no face may join the bars. The
+// slicer cannot tell the two sides' faces apart in the flush cases and moves the grid.
+class TwoBarsOnGridPlanes : public ::testing::TestWithParam<double> {};
+
+TEST_P(TwoBarsOnGridPlanes, NeverShareAFace) {
+  const SurfaceMesh lower = box_surface(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0.1, 0.1));
+  const SurfaceMesh upper = box_surface(Eigen::Vector3d(0.3, 0.104, 0), Eigen::Vector3d(1, 0.204, 0.1));
+  const SurfaceMesh both = join(lower, upper);
+  SlicingOptions options;
+  options.cell_size = GetParam();
+  options.margin_cells = 0;
+  const SlicedMesh sliced = slice_into_polyhedra(both, options);
+  expect_valid_slicing(sliced.mesh, surface_volume(both), surface_area(both), 1e-12);
+  EXPECT_EQ(polyhedral_mesh_components(sliced.mesh), 2);
+  EXPECT_EQ(sliced.grid_shift_cells > 0, GetParam() != 0.102);
+}
+
+INSTANTIATE_TEST_SUITE_P(SliceIntoPolyhedra, TwoBarsOnGridPlanes, ::testing::Values(0.1, 0.102, 0.104));
 
 /// A U-shaped prism, y ∈ [0, 1]: bottom [0, 3] × z [0, 1], arms x ∈ [0, 1.45] and
 /// [1.55, 3] up to z = 3, so its gap (0.1 wide) is thinner than a cell; volume 8.8.
