@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <string>
+#include <vector>
 
 #include "polyhedral/harmonic_basis_cache.hpp"
 #include "polyhedral/harmonic_basis_evaluator.hpp"
@@ -14,6 +15,7 @@
 #include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/io/polyhedral_grid.hpp"
+#include "shared/mesh/flat_cells.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
@@ -75,6 +77,11 @@ public:
     }
     surface_.evaluator = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
+    // Trilinear and harmonic bases are complete to degree 1 only (Martin et al. 2008 §4).
+    if (auto warning = flat_cell_locking_warning(
+            mesh_, "harmonic",
+            "use fem (tet10, hex20), fcm (hex20) or dg (degree 2), or cells as thin as the geometry"))
+      warnings_.push_back(std::move(*warning));
   }
 
   const Discretization& discretization() const override { return *discretization_; }
@@ -137,6 +144,7 @@ public:
     }
     return result;
   }
+  std::vector<std::string> warnings() const override { return warnings_; }
   nlohmann::json facts() const override {
     nlohmann::json facts = surface_.facts();
     facts.update(mesh_facts_);
@@ -168,6 +176,7 @@ private:
   std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
   long long mfs_quadrature_points_ = 0;  // the stiffness rule's points on MFS cells
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace

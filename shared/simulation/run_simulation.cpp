@@ -46,13 +46,19 @@ void check_state(const State& state, double total_energy, double size, int step,
 
 // A failure of a near-incompressible problem gets the reason that usually lies behind
 // it: the tangent's condition number grows like λ/μ, so residuals stall at round-off.
-std::string near_incompressible_hint(const Scene& scene) {
+// Near incompressibility (ν ≥ 0.49) makes the tangent ill-conditioned: Newton stalls
+// at the round-off floor, and low-order elements lock. `stopped` says whether Newton
+// stopped there (a warning) rather than failed (appended to the error).
+std::string near_incompressible_hint(const Scene& scene, bool stopped = false) {
   const double nu = scene.material.poisson_ratio;
   if (nu < 0.49) return "";
   std::ostringstream hint;
-  hint << std::setprecision(8) << " — at Poisson's ratio " << nu << " (λ/μ = " << 2 * nu / (1 - 2 * nu)
-       << ") the tangent is ill-conditioned and residuals stall at round-off: use a higher-order element, a looser "
-          "solver.tolerance, or a locking-free discretization";
+  hint << std::setprecision(8) << (stopped ? "" : " — ") << "at Poisson's ratio " << nu
+       << " (λ/μ = " << 2 * nu / (1 - 2 * nu) << ") the tangent is ill-conditioned and residuals "
+       << (stopped ? "stopped at the round-off floor of the assembled forces; low-order elements lock: "
+                   : "stall at round-off: ")
+       << "use a higher-order element, " << (stopped ? "" : "a looser solver.tolerance, ")
+       << "or a locking-free discretization";
   return hint.str();
 }
 
@@ -222,7 +228,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   EventSchedule events(scene, simulation, log);
   const int steps = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
-  int cutbacks = 0;
+  int cutbacks = 0, round_off_stops = 0;
   double smallest_increment = 1;
   const double size = geometry.bounds.diagonal().norm();
   std::string status = "ok";
@@ -256,6 +262,11 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
             << (report.cutbacks == 1 ? "" : "s") << ", smallest increment " << report.smallest_increment
             << " of the step\n";
       }
+      if (report.round_off_floor > 0) {
+        ++round_off_stops;
+        log << "# round-off step " << step << ": residual " << report.residual << " above the tolerance, below "
+            << report.round_off_floor << ", the round-off floor of the assembled forces\n";
+      }
       const double total_energy = simulation.integrator().total_energy(state);
       check_state(state, total_energy, size, step, scene.time.dt, simulation.critical_time_step());
       steps_done = step;
@@ -272,6 +283,12 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     status = std::string("error: ") + error.what() + near_incompressible_hint(scene);
   }
 
+  if (round_off_stops > 0) {
+    if (const std::string hint = near_incompressible_hint(scene, true); !hint.empty()) {
+      std::fprintf(stderr, "altfem: warning: %s\n", hint.c_str());
+      summary["warnings"].push_back(hint);
+    }
+  }
   const LinearSolverStatistics statistics = simulation.linear_statistics();
   const double total = loading_seconds + seconds_since(start);
   summary["timings_s"] = {{"setup", setup_seconds},
@@ -296,6 +313,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;
   summary["linear_iterations"] = linear_iterations;
   summary["cutbacks"] = {{"failed_attempts", cutbacks}, {"smallest_increment", smallest_increment}};
+  summary["round_off_stops"] = round_off_stops;
   summary["events"] = events.records();
   summary["status"] = status;
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "shared/common/error.hpp"
@@ -24,6 +25,7 @@ void NewtonSolver::assemble_hessian(const Objective& objective, const Eigen::Vec
                                     int iteration) {
   try {
     objective.hessian(u, matrix_, project_spd);
+    hessian_assembled_ = true;
   } catch (const NumericalError& error) {
     throw NumericalError(where(step, iteration) + ": " + error.what());
   }
@@ -82,6 +84,15 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
   elimination_.set_constrained(direction_, increment);
 }
 
+double NewtonSolver::round_off_floor(const Eigen::VectorXd& u) {
+  if (!hessian_assembled_) return 0;
+  magnitudes_.setZero(u.size());
+  for (Eigen::Index column = 0; column < matrix_.outerSize(); ++column)
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix_, column); entry; ++entry)
+      magnitudes_[entry.row()] += std::abs(entry.value()) * std::abs(u[column]);
+  return 16 * std::numeric_limits<double>::epsilon() * elimination_.free_norm(magnitudes_);
+}
+
 NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd& u, const Eigen::VectorXd& prescribed,
                                     const NewtonOptions& options, int step) {
   NewtonReport report;
@@ -93,6 +104,13 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
     report.residual = residual;
     const bool constraints_met = increment.lpNorm<Eigen::Infinity>() == 0.0;
     if (constraints_met && residual <= options.tolerance) return report;
+    if (constraints_met && iteration > 0) {
+      const double floor = round_off_floor(u);
+      if (residual <= floor) {
+        report.round_off_floor = floor;
+        return report;
+      }
+    }
     if (!std::isfinite(residual)) throw NumericalError(where(step, iteration) + ": non-finite residual");
     if (iteration >= options.max_iterations)
       throw NumericalError(where(step, iteration) + ": not converged, residual " + scientific(residual) +

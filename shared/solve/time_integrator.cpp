@@ -228,6 +228,7 @@ StepReport TimeIntegrator::step_in_increments(State& state, const State& start, 
       state.step = start.step;  // increments are not steps: failures name the step they belong to
       iterations += part.newton_iterations;
       report.residual = part.residual;
+      report.round_off_floor = std::max(report.round_off_floor, part.round_off_floor);
       report.smallest_increment = std::min(report.smallest_increment, increment);
       done = last ? 1 : done + increment;
       if (part.newton_iterations <= options_.max_iterations / 4) increment *= 2;
@@ -291,7 +292,10 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     state.time = next_time;
     ++state.step;
   }
-  return StepReport{report.iterations, 0, linear_solver_->statistics().iterations - linear_before, report.residual};
+  StepReport step_report{report.iterations, 0, linear_solver_->statistics().iterations - linear_before,
+                         report.residual};
+  step_report.round_off_floor = report.round_off_floor;
+  return step_report;
 }
 
 StepReport TimeIntegrator::step_symplectic(State& state) {

@@ -54,6 +54,9 @@ struct StepReport {
   /// smallest increment that converged, as a fraction of the step (1 without retry).
   int cutbacks = 0;
   double smallest_increment = 1;
+  /// When Newton stopped above the tolerance at the round-off floor of the assembled
+  /// forces (NewtonReport::round_off_floor): the largest such floor of the step; else 0.
+  double round_off_floor = 0;
 };
 
 std::string_view integration_scheme_name(IntegrationScheme kind);

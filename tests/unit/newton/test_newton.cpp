@@ -73,6 +73,7 @@ TEST(Newton, ConvergesQuadraticallyWithOneAnalysisAndOneFactorisationPerIteratio
   }
   EXPECT_GE(measured, 1) << "residuals" << history;
 
+  EXPECT_EQ(report.round_off_floor, 0) << "stopped by the tolerance, not at round-off";
   const LinearSolverStatistics& statistics = solver->statistics();
   EXPECT_EQ(statistics.analyses, 1);
   EXPECT_EQ(statistics.factorisations, report.iterations);
@@ -85,6 +86,33 @@ TEST(Newton, ConvergesQuadraticallyWithOneAnalysisAndOneFactorisationPerIteratio
   EXPECT_GT(second.iterations, 0);
   EXPECT_EQ(solver->statistics().analyses, 1);
   EXPECT_EQ(solver->statistics().factorisations, report.iterations + second.iterations);
+}
+
+// A tolerance of 0 cannot be met: Newton stops once the residual reaches the round-off
+// floor 16 ε ‖(|H||u|)_free‖ of the forces it assembles (issue #35, the 1 mm plate),
+// a linear material after its one solve, a nonlinear one only after converging
+// quadratically to the floor (no earlier: the floor lies 14 orders below the load).
+TEST(Newton, AnUnreachableToleranceStopsAtTheRoundOffFloor) {
+  Block block;
+  for (const MaterialModel model : {MaterialModel::linear, MaterialModel::neo_hookean}) {
+    SCOPED_TRACE(static_cast<int>(model));
+    const auto material = make_material(model, 1e4, 0.3, 1000);
+    const ElasticAssembler assembler(block.elements, {material.get()});
+    const DirichletElimination elimination(assembler.pattern(), block.clamped);
+    LoadedPotential objective(assembler, block.force, elimination);
+    const auto solver = make_linear_solver({});
+    NewtonSolver newton(*solver, assembler.pattern(), elimination);
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(assembler.dof_count());
+    NewtonOptions options;
+    options.tolerance = 0;
+    const Eigen::VectorXd prescribed = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(block.clamped.size()));
+    const NewtonReport report = newton.minimize(objective, u, prescribed, options, 0);
+    EXPECT_GT(report.round_off_floor, 0);
+    EXPECT_LE(report.residual, report.round_off_floor);
+    EXPECT_LT(report.round_off_floor, 1e-12 * block.force.norm());
+    if (model == MaterialModel::linear) EXPECT_LE(report.iterations, 2);
+    else EXPECT_LE(report.iterations, 12);
+  }
 }
 
 // Known bug (see the report to the lead): the Armijo test compares objective values
