@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <random>
 
 #include "dg/dg_discretization.hpp"
 #include "dg/dg_linear_system.hpp"
@@ -24,6 +25,7 @@
 #include "shared/simulation/mls_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
 #include "shared/simulation/stitched_embedding.hpp"
+#include "shared/solve/krylov.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem::dg {
@@ -58,13 +60,44 @@ std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scen
   return faces;
 }
 
-// K positive definite, up to its rigid motions when no condition holds the body: K + δM
-// with δ = 1e-10 · max K_ii / max M_ii admits a Cholesky factor (CHOLMOD).
-bool positive_definite(const DgLinearSystem& system) {
+// K positive definite, up to its rigid motions when no condition holds the body: is
+// K + δM, δ = 1e-10 · max K_ii / max M_ii? With a direct solver, by its Cholesky factor
+// (CHOLMOD). With an iterative one the run needs no factor, and this test's was the
+// run's largest allocation (20 GB at 768k DOFs, issue #35): block-Jacobi PCG on a random
+// right-hand side decides instead. Its curvatures pᵀAp are, up to positive factors, the
+// pivots of the Lanczos tridiagonal T_k (Golub & Van Loan, Matrix Computations, §11.3.5),
+// so PCG breaks down as soon as a Ritz value of K + δM falls below 0, which happens before
+// the residual's component along a negative eigenvector can shrink: an indefinite matrix
+// breaks PCG down before it converges; the cell blocks, principal submatrices, are
+// positive definite when K + δM is. A PCG that neither converges nor breaks down within
+// its iterations decides nothing, and the factorisation does.
+bool positive_definite(const DgLinearSystem& system, const std::vector<std::vector<int>>& element_dofs,
+                       bool iterative) {
   const Eigen::SparseMatrix<double>& stiffness = system.stiffness();
   const Eigen::SparseMatrix<double> mass = system.mass();
   const double shift = 1e-10 * stiffness.diagonal().maxCoeff() / mass.diagonal().maxCoeff();
   const Eigen::SparseMatrix<double> shifted = stiffness + shift * mass;
+  if (iterative) {
+    LinearSolverOptions options;
+    options.kind = LinearSolverKind::pcg;
+    options.custom_preconditioner = block_jacobi_factory(element_dofs);
+    options.tolerance = 1e-8;
+    options.max_iterations = 20000;
+    const auto solver = make_linear_solver(options);
+    std::mt19937 random(35);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    Eigen::VectorXd rhs(shifted.rows()), solution = Eigen::VectorXd::Zero(shifted.rows());
+    for (Eigen::Index i = 0; i < rhs.size(); ++i) rhs[i] = uniform(random);
+    try {
+      solver->factorize(shifted);  // each cell block by Cholesky
+      solver->solve(rhs, solution);
+      return true;
+    } catch (const KrylovBreakdown&) {
+      return false;
+    } catch (const NumericalError&) {
+      if (solver->statistics().factorisations == 0) return false;  // a cell block is not definite
+    }
+  }
   const auto solver = make_linear_solver({});
   try {
     solver->factorize(shifted);
@@ -107,12 +140,20 @@ public:
                  spec_.rule_simplification};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
+    // The functions of a cell are contiguous and do not depend on the penalty.
+    std::vector<std::vector<int>> element_dofs(mesh_.cell_count());
+    for (int cell = 0; cell < mesh_.cell_count(); ++cell)
+      for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
+        element_dofs[cell].push_back(dof);
+    const bool iterative = scene.solver.linear == LinearSolverKind::pcg ||
+                           scene.solver.linear == LinearSolverKind::minres ||
+                           scene.solver.linear == LinearSolverKind::conjugate_residual;
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
     // definite" (K of the linear material). Babuška–Zlámal is definite for any η > 0
     // (§9.1): its K is a sum of semidefinite volume terms and positive jump penalties, so
-    // only interior penalty pays for the test factorisation.
+    // only interior penalty pays for the test.
     while (spec_.double_until_definite && linear() && spec_.flux == Flux::interior_penalty &&
-           !positive_definite(*system_)) {
+           !positive_definite(*system_, element_dofs, iterative)) {
       if (++doublings_ > max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");
@@ -120,10 +161,6 @@ public:
       for (DgMaterial& material : cell_materials_.materials) material.penalty *= 2;
       system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
     }
-    std::vector<std::vector<int>> element_dofs(mesh_.cell_count());
-    for (int cell = 0; cell < mesh_.cell_count(); ++cell)
-      for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
-        element_dofs[cell].push_back(dof);
     auto external_force = [this](double time) { return weak_condition_load(time); };
     // Used only when the scene's solver/linear is iterative (the direct solvers ignore it).
     PreconditionerFactory preconditioner = preconditioner_factory(scene, element_dofs);

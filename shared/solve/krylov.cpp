@@ -34,7 +34,7 @@ bool has_converged(std::string_view method, int iterations, double relative_resi
 void throw_breakdown(std::string_view method, int iterations, std::string_view why) {
   std::ostringstream message;
   message << method << " broke down at iteration " << iterations << ": " << why;
-  throw NumericalError(message.str());
+  throw KrylovBreakdown(message.str());
 }
 
 }  // namespace altfem

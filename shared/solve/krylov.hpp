@@ -12,6 +12,8 @@
 
 #include <string_view>
 
+#include "shared/common/error.hpp"
+
 namespace altfem {
 
 struct KrylovSettings {
@@ -39,7 +41,14 @@ double true_residual(const Eigen::SparseMatrix<double>& matrix, const Eigen::Vec
 /// when the residual is not finite; returns false when iterating may go on.
 bool has_converged(std::string_view method, int iterations, double relative_residual, const KrylovSettings& settings);
 
-/// Throws NumericalError "<method> broke down at iteration N: <why>".
+/// A Krylov method that cannot go on: a curvature pᵀAp ≤ 0 where the matrix should be
+/// positive definite, a preconditioner that is not, a residual that is not finite.
+class KrylovBreakdown : public NumericalError {
+public:
+  using NumericalError::NumericalError;
+};
+
+/// Throws KrylovBreakdown "<method> broke down at iteration N: <why>".
 [[noreturn]] void throw_breakdown(std::string_view method, int iterations, std::string_view why);
 
 }  // namespace altfem

@@ -23,7 +23,9 @@ namespace altfem::dg {
 namespace {
 
 // A 2 × 1 × 1 bar, x = 0 fixed and x = 2 pulled by `pull` along x over one second.
-std::filesystem::path write_bar_scene(const std::string& name, const std::string& material, const std::string& dg) {
+// `solver`: the scene's solver block, or empty for the defaults.
+std::filesystem::path write_bar_scene(const std::string& name, const std::string& material, const std::string& dg,
+                                      const std::string& solver = "") {
   const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
   std::filesystem::create_directories(folder);
   const auto file = folder / (name + ".json");
@@ -34,7 +36,8 @@ std::filesystem::path write_bar_scene(const std::string& name, const std::string
       { "type": "dirichlet", "region": { "box": { "min": [-1, -1, -1], "max": [0, 2, 2] } } },
       { "type": "dirichlet", "region": { "box": { "min": [2, -1, -1], "max": [3, 2, 2] } },
         "motion": { "kind": "translate", "displacement": [0.02, 0, 0], "duration": 1 } } ],
-    "time": { "static": true },
+    "time": { "static": true },)"
+                      << (solver.empty() ? "" : R"( "solver": )" + solver + ",") << R"(
     "discretization": { "dg": )"
                       << dg << R"( } })";
   return file;
@@ -193,6 +196,21 @@ TEST(DgMethod, PenaltyIsDoubledUntilTheStiffnessIsDefinite) {
   const Built halved = build(write_bar_scene("halved", material, block(half, false)));
   EXPECT_FALSE(cholesky_succeeds(halved.method->discretization().hessian_pattern()));
   std::printf("  penalty 0.01 doubled %d times to %g\n", doublings, penalty["value"].get<double>());
+}
+
+// With an iterative solver the run needs no factor, and the test of definiteness takes
+// none either (issue #35): block-Jacobi PCG on a random right-hand side breaks down on an
+// indefinite K. It must double the penalty exactly as often as the Cholesky test.
+TEST(DgMethod, PcgDecidesDefinitenessAsTheFactorisationDoes) {
+  const std::string material = R"({ "model": "linear", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })";
+  for (const double value : {0.01, 0.3, 3.0}) {
+    SCOPED_TRACE(value);
+    const std::string block = R"({ "degree": 2, "element": "tet4", "resolution": [2, 1, 1], "penalty": { "value": )" +
+                              std::to_string(value) + " } }";
+    const Built direct = build(write_bar_scene("definite_direct", material, block));
+    const Built iterative = build(write_bar_scene("definite_pcg", material, block, R"({ "linear": "pcg" })"));
+    EXPECT_EQ(iterative.method->facts()["penalty"]["doublings"], direct.method->facts()["penalty"]["doublings"]);
+  }
 }
 
 TEST(DgMethod, BlockJacobiPcgSolvesTheSystem) {
