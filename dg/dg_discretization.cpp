@@ -1,5 +1,7 @@
 #include "dg/dg_discretization.hpp"
 
+#include <algorithm>
+
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 #include "shared/solve/block_relaxation_preconditioner.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
@@ -7,6 +9,17 @@
 namespace altfem::dg {
 
 namespace {
+
+// Whether every entry of `inner`'s pattern is in `outer`'s (both compressed, sorted).
+bool pattern_contains(const Eigen::SparseMatrix<double>& outer, const Eigen::SparseMatrix<double>& inner) {
+  for (Eigen::Index column = 0; column < inner.outerSize(); ++column) {
+    const int* begin = outer.innerIndexPtr() + outer.outerIndexPtr()[column];
+    const int* end = outer.innerIndexPtr() + outer.outerIndexPtr()[column + 1];
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(inner, column); entry; ++entry)
+      if (!std::binary_search(begin, end, static_cast<int>(entry.row()))) return false;
+  }
+  return true;
+}
 
 // `matrix` on the union of its pattern and `other`'s: the integrators add value arrays
 // of the Hessian and the mass, so both must share one pattern (explicit zeros kept).
@@ -44,20 +57,35 @@ std::unique_ptr<Preconditioner> element_block_jacobi(const std::vector<int>& sta
 
 }  // namespace
 
-LinearDgDiscretization::LinearDgDiscretization(const Eigen::SparseMatrix<double>& stiffness,
-                                               const Eigen::SparseMatrix<double>& mass,
+LinearDgDiscretization::LinearDgDiscretization(Eigen::SparseMatrix<double> stiffness, Eigen::SparseMatrix<double> mass,
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
                                                std::function<Eigen::VectorXd(double)> weak_condition_load,
                                                DirichletDofs strong)
-    : stiffness_(on_union_pattern(stiffness, mass)),
-      mass_(on_union_pattern(mass, stiffness)),
-      function_integrals_(std::move(function_integrals)),
+    : function_integrals_(std::move(function_integrals)),
       element_dofs_(std::move(element_dofs)),
-      explicit_mass_(mass_, element_dofs_),
       weak_condition_load_(std::move(weak_condition_load)),
       strong_(std::move(strong)),
-      preconditioner_(block_jacobi_factory(element_dofs_)) {}
+      preconditioner_(block_jacobi_factory(element_dofs_)) {
+  // Swapped in: Eigen 3.4's SparseMatrix has no move constructor, std::move would copy.
+  stiffness_.swap(stiffness);
+  block_mass_.swap(mass);
+  // K couples every pair of a cell's functions, so its pattern holds the mass's cell
+  // blocks: no copy of K on a union pattern (issue #35: one stiffness fewer in memory).
+  stiffness_.makeCompressed();
+  block_mass_.makeCompressed();
+  if (!pattern_contains(stiffness_, block_mass_)) stiffness_ = on_union_pattern(stiffness_, block_mass_);
+}
+
+const ExplicitMass& LinearDgDiscretization::explicit_mass() const {
+  if (!explicit_mass_.has_value()) explicit_mass_.emplace(block_mass_, element_dofs_);
+  return *explicit_mass_;
+}
+
+const Eigen::SparseMatrix<double>& LinearDgDiscretization::mass_matrix() const {
+  if (!mass_.has_value()) mass_ = on_union_pattern(block_mass_, stiffness_);
+  return *mass_;
+}
 
 Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& acceleration) const {
   Eigen::VectorXd load(dof_count());

@@ -6,6 +6,7 @@
 // boundary data of the weak conditions as a time-dependent load. Strongly imposed
 // conditions (dg/strong_conditions.hpp) constrain DOFs, as fem's nodal ones do.
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "shared/solve/dirichlet_dofs.hpp"
@@ -36,11 +37,12 @@ PreconditionerFactory multilevel_factory(std::vector<std::vector<int>> element_d
 
 class LinearDgDiscretization : public Discretization {
 public:
-  /// stiffness, mass: #dofs square, symmetric; function_integrals: ∫ ρ φ_a dV per basis
-  /// function (#dofs / 3); element_dofs: each element's DOFs (disjoint, covering all);
-  /// weak_condition_load: the Dirichlet data's load at a time (#dofs); strong: the DOFs
-  /// that strongly imposed conditions fix, and their values over time (none by default).
-  LinearDgDiscretization(const Eigen::SparseMatrix<double>& stiffness, const Eigen::SparseMatrix<double>& mass,
+  /// stiffness, mass: #dofs square, symmetric (taken: pass them moved where the caller
+  /// needs no copy); function_integrals: ∫ ρ φ_a dV per basis function (#dofs / 3);
+  /// element_dofs: each element's DOFs (disjoint, covering all); weak_condition_load: the
+  /// Dirichlet data's load at a time (#dofs); strong: the DOFs that strongly imposed
+  /// conditions fix, and their values over time (none by default).
+  LinearDgDiscretization(Eigen::SparseMatrix<double> stiffness, Eigen::SparseMatrix<double> mass,
                          Eigen::VectorXd function_integrals, std::vector<std::vector<int>> element_dofs,
                          std::function<Eigen::VectorXd(double)> weak_condition_load, DirichletDofs strong = {});
 
@@ -52,8 +54,11 @@ public:
   }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return stiffness_; }
   bool hessian_is_constant() const override { return true; }
-  const Eigen::SparseMatrix<double>& mass_matrix() const override { return mass_; }
-  const ExplicitMass& explicit_mass() const override { return explicit_mass_; }
+  /// On the stiffness's pattern, built on the first call (a static run never makes it).
+  /// Not thread-safe on that first call.
+  const Eigen::SparseMatrix<double>& mass_matrix() const override;
+  /// Built on the first call (only symplectic Euler and its time-step estimate ask).
+  const ExplicitMass& explicit_mass() const override;
   /// f_(3a+i) = a_i ∫ ρ φ_a dV.
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override { return weak_condition_load_(time); }
@@ -68,10 +73,12 @@ public:
   void use_preconditioner(PreconditionerFactory factory) { preconditioner_ = std::move(factory); }
 
 private:
-  Eigen::SparseMatrix<double> stiffness_, mass_;  // the same pattern (their union)
+  Eigen::SparseMatrix<double> stiffness_;                    // its pattern holds block_mass_'s
+  Eigen::SparseMatrix<double> block_mass_;                   // block diagonal, each cell's block
+  mutable std::optional<Eigen::SparseMatrix<double>> mass_;  // block_mass_ on the stiffness's pattern
   Eigen::VectorXd function_integrals_;
   std::vector<std::vector<int>> element_dofs_;
-  BlockDiagonalMass explicit_mass_;
+  mutable std::optional<BlockDiagonalMass> explicit_mass_;
   std::function<Eigen::VectorXd(double)> weak_condition_load_;
   DirichletDofs strong_;
   PreconditionerFactory preconditioner_;

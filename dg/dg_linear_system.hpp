@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "dg/face_matrices.hpp"
@@ -117,6 +118,14 @@ public:
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
   const Eigen::SparseMatrix<double>& stiffness() const { return stiffness_; }
+  /// Hands K over (stiffness() is empty afterwards): for the owner whose discretization
+  /// keeps K, so that it is not stored twice.
+  /// (Eigen 3.4's SparseMatrix has no move constructor: std::move would copy; swap does not.)
+  Eigen::SparseMatrix<double> take_stiffness() {
+    Eigen::SparseMatrix<double> taken;
+    taken.swap(stiffness_);
+    return taken;
+  }
   /// The consistent mass ρ ∫ φ_a φ_b δ_ik (3 × Σ #functions square), block-diagonal by cell.
   Eigen::SparseMatrix<double> mass() const;
   /// ∫ φ_a dV of every function (Σ #functions): the load of a unit body force density.

@@ -24,17 +24,18 @@ public:
 
 protected:
   void analyze_pattern(const Eigen::SparseMatrix<double>&) override {}
+  bool analyses_pattern() const override { return false; }
 
+  // The caller's matrix itself, not a copy (LinearSolver::factorize): a copy was one
+  // more stiffness matrix in memory for every run with an iterative solver (issue #35).
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
-    // A copy, so that the caller may reuse or free its matrix before solving;
-    // it costs about one Krylov iteration.
-    matrix_ = matrix;
-    preconditioner_->compute(matrix_);
+    matrix_ = &matrix;
+    preconditioner_->compute(matrix);
   }
 
   long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) override {
     solution.setZero(rhs.size());
-    return method_(matrix_, *preconditioner_, rhs, solution, settings_, workspace_).iterations;
+    return method_(*matrix_, *preconditioner_, rhs, solution, settings_, workspace_).iterations;
   }
 
 private:
@@ -42,7 +43,7 @@ private:
   KrylovMethod<Workspace> method_;
   std::unique_ptr<Preconditioner> preconditioner_;
   KrylovSettings settings_;
-  Eigen::SparseMatrix<double> matrix_;
+  const Eigen::SparseMatrix<double>* matrix_ = nullptr;
   Workspace workspace_;
 };
 

@@ -6,6 +6,7 @@
 #include "shared/solve/lu_solver.hpp"
 
 #include <chrono>
+#include <cstdint>
 #include <stdexcept>
 
 namespace altfem {
@@ -37,6 +38,18 @@ struct ParkBlasThreadsOnExit {
 };
 thread_local int ParkBlasThreadsOnExit::depth = 0;
 
+// FNV-1a over each column's row indices and its end: one number per sparsity pattern.
+std::uint64_t pattern_hash(const Eigen::SparseMatrix<double>& matrix) {
+  std::uint64_t hash = 1469598103934665603ull;
+  const auto mix = [&hash](std::uint64_t value) { hash = (hash ^ value) * 1099511628211ull; };
+  for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry)
+      mix(static_cast<std::uint64_t>(entry.row()));
+    mix(~static_cast<std::uint64_t>(column));
+  }
+  return hash;
+}
+
 }  // namespace
 
 std::string_view linear_solver_kind_name(LinearSolverKind kind) {
@@ -50,7 +63,8 @@ std::optional<LinearSolverKind> linear_solver_kind_from_name(std::string_view na
 }
 
 bool LinearSolver::has_analysed_pattern(const Eigen::SparseMatrix<double>& matrix) const {
-  if (!analysed_ || pattern_column_starts_.size() != static_cast<std::size_t>(matrix.cols() + 1)) return false;
+  if (!analysed_ || pattern_columns_ != matrix.cols()) return false;
+  if (!analyses_pattern()) return pattern_hash_ == pattern_hash(matrix);
   for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
     int position = pattern_column_starts_[column];
     for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry, ++position)
@@ -66,12 +80,17 @@ void LinearSolver::analyze(const Eigen::SparseMatrix<double>& matrix) {
   analysed_ = false;
   factorised_ = false;
   analyze_pattern(matrix);
+  pattern_columns_ = matrix.cols();
   pattern_column_starts_.assign(1, 0);
   pattern_rows_.clear();
-  for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry)
-      pattern_rows_.push_back(static_cast<int>(entry.row()));
-    pattern_column_starts_.push_back(static_cast<int>(pattern_rows_.size()));
+  if (analyses_pattern()) {
+    for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
+      for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry)
+        pattern_rows_.push_back(static_cast<int>(entry.row()));
+      pattern_column_starts_.push_back(static_cast<int>(pattern_rows_.size()));
+    }
+  } else {
+    pattern_hash_ = pattern_hash(matrix);
   }
   analysed_ = true;
   ++statistics_.analyses;
@@ -91,9 +110,9 @@ void LinearSolver::factorize(const Eigen::SparseMatrix<double>& matrix) {
 
 void LinearSolver::solve(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) {
   if (!factorised_) throw std::logic_error("linear solver: solve() called before a successful factorize()");
-  if (rhs.size() + 1 != static_cast<Eigen::Index>(pattern_column_starts_.size()))
+  if (rhs.size() != pattern_columns_)
     throw std::logic_error("linear solver: right-hand side has " + std::to_string(rhs.size()) +
-                           " entries, the matrix " + std::to_string(pattern_column_starts_.size() - 1) + " columns");
+                           " entries, the matrix " + std::to_string(pattern_columns_) + " columns");
   const ParkBlasThreadsOnExit parking;
   const auto start = std::chrono::steady_clock::now();
   const long iterations = solve_system(rhs, solution);

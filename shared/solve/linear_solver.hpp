@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -74,7 +75,9 @@ public:
   /// (iterative). Analyses first when `matrix`'s pattern differs from the
   /// analysed one (or none was analysed), so a changed pattern costs one more
   /// analysis and never a wrong answer. Throws NumericalError when `matrix`
-  /// does not suit the solver (e.g. not positive definite for CHOLMOD LLᵀ).
+  /// does not suit the solver (e.g. not positive definite for CHOLMOD LLᵀ). An
+  /// iterative solver multiplies by `matrix` itself in solve(): it must stay alive and
+  /// unchanged until the next factorize() (a direct solver keeps its factor instead).
   void factorize(const Eigen::SparseMatrix<double>& matrix);
   /// solution = A⁻¹ rhs for the last factorised A; rhs and solution are #dofs
   /// and must be different vectors.
@@ -86,6 +89,11 @@ public:
 
 protected:
   virtual void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) = 0;
+  /// Whether analyze_pattern() computes something from the pattern (a fill-reducing
+  /// ordering): then the whole pattern is kept to tell a changed one; otherwise a 64-bit
+  /// hash of it, which only the statistics' count of analyses depends on (an iterative
+  /// solver held a third of a stiffness matrix for nothing, issue #35).
+  virtual bool analyses_pattern() const { return true; }
   virtual void factorize_values(const Eigen::SparseMatrix<double>& matrix) = 0;
   /// Returns the number of iterations the solve took (0 for a direct solve).
   virtual long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) = 0;
@@ -107,6 +115,8 @@ private:
   // The analysed pattern in compressed-column form: column starts (#dofs + 1) and row indices (#nonzeros).
   std::vector<int> pattern_column_starts_;
   std::vector<int> pattern_rows_;
+  Eigen::Index pattern_columns_ = 0;
+  std::uint64_t pattern_hash_ = 0;  // when !analyses_pattern()
   bool analysed_ = false;
   bool factorised_ = false;
 };

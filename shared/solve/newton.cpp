@@ -48,11 +48,14 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
                               const Eigen::VectorXd& increment, bool project_spd, int step, int iteration) {
   rhs_ = -gradient;
   const bool reuse = objective.hessian_is_constant() && constant_factorised_;
+  // The lifting K_fc Δc needs the Hessian before elimination; without constrained DOFs
+  // there is none to lift, and no second copy of the Hessian is kept.
+  const bool lifts = !elimination_.constrained_dofs().empty();
   if (reuse) {
-    elimination_.lift(constant_hessian_, rhs_, increment);
+    if (lifts) elimination_.lift(constant_hessian_, rhs_, increment);
   } else {
     assemble_hessian(objective, u, project_spd, step, iteration);
-    if (objective.hessian_is_constant()) constant_hessian_ = matrix_;
+    if (objective.hessian_is_constant() && lifts) constant_hessian_ = matrix_;
     elimination_.apply(matrix_, rhs_, increment);
     // factorize() analyses the pattern when it differs from the solver's last one: a
     // Newton solver made after an event with an unchanged pattern analyses nothing.

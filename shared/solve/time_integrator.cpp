@@ -125,7 +125,10 @@ TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolve
 }
 
 void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* linear_solver) {
-  check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
+  // A static run never adds the mass to the Hessian (nor asks for it: dg builds it on
+  // the Hessian's pattern only when asked).
+  if (options_.kind != IntegrationScheme::static_equilibrium)
+    check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
   discretization_ = &discretization;
   if (linear_solver) linear_solver_ = linear_solver;
   elimination_ =
@@ -144,6 +147,7 @@ void TimeIntegrator::apply_constraints(State& state) const {
 }
 
 double TimeIntegrator::kinetic_energy(const State& state) const {
+  if (options_.kind == IntegrationScheme::static_equilibrium) return 0;
   return options_.kind == IntegrationScheme::symplectic_euler
              ? discretization_->explicit_mass().kinetic_energy(state.velocity)
              : 0.5 * state.velocity.dot(discretization_->mass_matrix() * state.velocity);
