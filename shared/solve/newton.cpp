@@ -107,7 +107,7 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
     report.residual = residual;
     const bool constraints_met = increment.lpNorm<Eigen::Infinity>() == 0.0;
     if (constraints_met && residual <= options.tolerance) return report;
-    if (constraints_met && iteration > 0) {
+    if (constraints_met && iteration > 0 && objective.hessian_is_constant()) {
       const double floor = round_off_floor(u);
       if (residual <= floor) {
         report.round_off_floor = floor;

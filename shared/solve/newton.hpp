@@ -46,13 +46,16 @@ struct NewtonReport {
 /// indefinite tangent) is retried once with SPD-projected element Hessians (Smith et
 /// al. 2018 §4.4; Longva et al. 2020 §6 needed it for fine Tet4 meshes).
 ///
-/// Newton also stops when the residual lies below the round-off floor of the gradient it
-/// evaluates, 16 ε ‖(|H| |u|)_free‖ (the componentwise bound of a backward-stable solve
-/// and of assembling sums of such terms, Higham 2002, Accuracy and Stability of
-/// Numerical Algorithms, §7.2 and Thm. 10.4): a 1 mm plate's bending stiffness cancels
-/// its element forces down to ~0.1–0.7 ε ‖|H||u|‖ (thin_plate.json), 100 times the load
-/// tolerance, and no further iteration lowers it. Ordinary scenes reach the tolerance
-/// first (the cantilever's floor lies 5 orders below it).
+/// With a constant Hessian H (a linear material), Newton also stops when the residual
+/// lies below the round-off floor of the gradient it evaluates, 16 ε ‖(|H| |u|)_free‖
+/// (the componentwise bound of a backward-stable solve and of assembling the sums H u,
+/// Higham 2002, Accuracy and Stability of Numerical Algorithms, §7.2 and Thm. 10.4): a
+/// 1 mm plate's bending stiffness cancels its element forces down to ~0.1–0.7 ε ‖|H||u|‖
+/// (thin_plate.json), 100 times the load tolerance, and no further iteration lowers it.
+/// Ordinary scenes reach the tolerance first (the cantilever's floor lies 5 orders below
+/// it). A nonlinear material's forces are not H u, and |H| bounds them badly: a corotated
+/// element near collapse has Hessian entries 10¹⁵ times its forces, a floor that would
+/// accept a step far from equilibrium, so there Newton stops only at the tolerance.
 class NewtonSolver {
 public:
   NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
