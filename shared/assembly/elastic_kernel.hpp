@@ -30,14 +30,15 @@ auto gradients_at(const ElementView& element, int q) {
   else return Eigen::Map<const Eigen::Matrix<double, N, 3, Eigen::RowMajor>>(element.gradients + q * N * 3);
 }
 
-/// F_ij = δ_ij + Σ_a u_ai ∂_j N_a, plus shifts[q] (9 values, column-major) when the
-/// element's points carry a constant shift (`shifts` non-null: DG's lifted Dirichlet data).
+/// G_ij = Σ_a u_ai ∂_j N_a, plus shifts[q] (9 values, column-major) when the element's
+/// points carry a constant shift (`shifts` non-null: DG's lifted Dirichlet data). The
+/// deformation gradient is F = I + G; the materials take G (Material::energy_at) so that
+/// small strains keep their digits.
 template <int N, typename Gradients>
-Eigen::Matrix3d deformation_gradient(const NodeMatrix<N>& u, const Gradients& g, const double* shifts, int q) {
-  Eigen::Matrix3d F = u.transpose() * g;
-  F.diagonal().array() += 1.0;
-  if (shifts) F += Eigen::Map<const Eigen::Matrix3d>(shifts + 9 * q);
-  return F;
+Eigen::Matrix3d displacement_gradient(const NodeMatrix<N>& u, const Gradients& g, const double* shifts, int q) {
+  Eigen::Matrix3d G = u.transpose() * g;
+  if (shifts) G += Eigen::Map<const Eigen::Matrix3d>(shifts + 9 * q);
+  return G;
 }
 
 /// `shifts`: the element's first point's shift of F (9 per point) or nullptr for none.
@@ -45,7 +46,7 @@ template <int N>
 double energy(const ElementView& element, const Material& material, const NodeMatrix<N>& u, const double* shifts) {
   double total = 0;
   for (int q = 0; q < element.point_count(); ++q)
-    total += element.weights[q] * material.energy(deformation_gradient<N>(u, gradients_at<N>(element, q), shifts, q));
+    total += element.weights[q] * material.energy_at(displacement_gradient<N>(u, gradients_at<N>(element, q), shifts, q));
   return total;
 }
 
@@ -56,7 +57,7 @@ void forces(const ElementView& element, const Material& material, const NodeMatr
   forces.setZero();
   for (int q = 0; q < element.point_count(); ++q) {
     const auto g = gradients_at<N>(element, q);
-    const Eigen::Matrix3d P = material.pk1(deformation_gradient<N>(u, g, shifts, q));
+    const Eigen::Matrix3d P = material.pk1_at(displacement_gradient<N>(u, g, shifts, q));
     forces.noalias() += element.weights[q] * g * P.transpose();
   }
 }
@@ -75,7 +76,7 @@ void stiffness(const ElementView& element, const Material& material, const NodeM
   Matrix9d C;
   for (int q = 0; q < element.point_count(); ++q) {
     const auto g = gradients_at<N>(element, q);
-    material.pk1_and_tangent(deformation_gradient<N>(u, g, shifts, q), P, C);
+    material.pk1_and_tangent_at(displacement_gradient<N>(u, g, shifts, q), P, C);
     C *= element.weights[q];
     for (int b = 0; b < n; ++b)
       for (int k = 0; k < 3; ++k)

@@ -13,21 +13,29 @@ LinearElastic::LinearElastic(LameParameters lame, double density) : Material(Mat
   }
 }
 
-double LinearElastic::energy(const Eigen::Matrix3d& F) const {
-  const Eigen::Matrix3d strain = 0.5 * (F + F.transpose()) - Eigen::Matrix3d::Identity();
+double LinearElastic::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
+
+Eigen::Matrix3d LinearElastic::pk1(const Eigen::Matrix3d& F) const { return pk1_at(F - Eigen::Matrix3d::Identity()); }
+
+void LinearElastic::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
+}
+
+double LinearElastic::energy_at(const Eigen::Matrix3d& G) const {
+  const Eigen::Matrix3d strain = 0.5 * (G + G.transpose());
   const double trace = strain.trace();
   return infinite_unless_finite(lame().mu * strain.squaredNorm() + 0.5 * lame().lambda * trace * trace);
 }
 
-Eigen::Matrix3d LinearElastic::pk1(const Eigen::Matrix3d& F) const {
-  const Eigen::Matrix3d strain = 0.5 * (F + F.transpose()) - Eigen::Matrix3d::Identity();
+Eigen::Matrix3d LinearElastic::pk1_at(const Eigen::Matrix3d& G) const {
+  const Eigen::Matrix3d strain = 0.5 * (G + G.transpose());
   Eigen::Matrix3d P = 2.0 * lame().mu * strain + lame().lambda * strain.trace() * Eigen::Matrix3d::Identity();
   infinite_unless_finite(P);
   return P;
 }
 
-void LinearElastic::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  P = pk1(F);
+void LinearElastic::pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+  P = pk1_at(G);
   dPdF = tangent_;
   infinite_unless_finite(P, dPdF);
 }
