@@ -62,6 +62,26 @@ std::string near_incompressible_hint(const Scene& scene, bool stopped = false) {
   return hint.str();
 }
 
+// After a failure: when the last converged state's stresses passed the smallest Young's
+// modulus of a model with no barrier against inverting elements (linear,
+// corotated_linear, st_venant_kirchhoff), its strains were past 100 %, elements may be
+// crushed through inversion, where Newton stalls at a kink of the energy and no smaller
+// step helps (issue #35: a 100 Pa corotated bar under its weight, 1.5e8 Pa at t = 1.1 s).
+std::string large_strain_hint(const Scene& scene, double max_von_mises) {
+  const MaterialSpec* weakest = nullptr;
+  for (const MaterialSpec& material : scene.materials)
+    if (material.model != "neo_hookean" && material.model != "stable_neo_hookean" &&
+        (!weakest || material.youngs_modulus < weakest->youngs_modulus))
+      weakest = &material;
+  if (!weakest || !(max_von_mises > weakest->youngs_modulus)) return "";
+  std::ostringstream hint;
+  hint << std::setprecision(3) << " — the last converged state's von Mises stress was "
+       << max_von_mises / weakest->youngs_modulus << " times " << weakest->pointer
+       << "'s Young's modulus (strains past 100 %), and '" << weakest->model
+       << "' has no barrier against inverting elements: use stable_neo_hookean";
+  return hint.str();
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -280,7 +300,9 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       events.apply_due(scene.time.is_static ? step : state.time);
     }
   } catch (const NumericalError& error) {
-    status = std::string("error: ") + error.what() + near_incompressible_hint(scene);
+    // The state is the last converged one (a step, or an increment of the failed step).
+    status = std::string("error: ") + error.what() + near_incompressible_hint(scene) +
+             large_strain_hint(scene, max_von_mises(simulation.discretization(), state.displacement));
   }
 
   if (round_off_stops > 0) {

@@ -93,5 +93,19 @@ TEST(Cutbacks, AStepThatNeverConvergesNamesTheIncrementItReached) {
       << result.err;
 }
 
+// corotated_linear has no barrier against inverting elements: the 100 Pa bar under its
+// weight (stress 9.8 kPa) crushes elements past any step size, and cutbacks cannot reach
+// t + dt. The failure names the time it reached and says why and what helps (issue #35).
+TEST(Cutbacks, ACrushedCorotatedBarSaysItHasNoBarrierAgainstInversion) {
+  const auto out = fresh_directory("cutbacks-corotated") / "run";
+  const auto result = run_altfem({"run", source_path("tests/cli/scenes/soft_large_step.json").string(), "--method",
+                                  "fem", "--set", "material/model=corotated_linear", "--out", out.string()});
+  ASSERT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_NE(result.err.find("reached time "), std::string::npos) << result.err;
+  EXPECT_NE(result.err.find("'corotated_linear' has no barrier against inverting elements: use stable_neo_hookean"),
+            std::string::npos)
+      << result.err;
+}
+
 }  // namespace
 }  // namespace altfem::test
