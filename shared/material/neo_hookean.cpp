@@ -37,42 +37,14 @@ double x_minus_log1p(double x) {
 
 NeoHookean::NeoHookean(LameParameters lame, double density) : Material(MaterialModel::neo_hookean, lame, density) {}
 
-double NeoHookean::energy(const Eigen::Matrix3d& F) const {
-  const double J = F.determinant();
-  if (!(J > 0.0)) return infinity;
-  const double log_J = std::log(J);
-  return infinite_unless_finite(0.5 * lame().mu * (F.squaredNorm() - 3.0) - lame().mu * log_J +
-                                0.5 * lame().lambda * log_J * log_J);
-}
+// The deformation gradient's forms go through G = F − I (exact where F's entries are
+// near those of I, and F came from I + G anyway): one implementation.
+double NeoHookean::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
 
-// P = μF + (λ log J − μ) F⁻ᵀ, with F⁻ᵀ = cof F / J.
-Eigen::Matrix3d NeoHookean::pk1(const Eigen::Matrix3d& F) const {
-  const double J = F.determinant();
-  if (!(J > 0.0)) return Eigen::Matrix3d::Constant(infinity);
-  Eigen::Matrix3d P = lame().mu * F + ((lame().lambda * std::log(J) - lame().mu) / J) * cofactor(F);
-  infinite_unless_finite(P);
-  return P;
-}
+Eigen::Matrix3d NeoHookean::pk1(const Eigen::Matrix3d& F) const { return pk1_at(F - Eigen::Matrix3d::Identity()); }
 
-// dP/dF = μ I + (λ(1 − log J) + μ)/J² cof ⊗ cof + (λ log J − μ)/J ∂²J/∂F².
 void NeoHookean::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  const double J = F.determinant();
-  if (!(J > 0.0)) {
-    P.setConstant(infinity);
-    dPdF.setConstant(infinity);
-    return;
-  }
-  const double mu = lame().mu;
-  const double lambda = lame().lambda;
-  const double log_J = std::log(J);
-  const double stress_scale = (lambda * log_J - mu) / J;
-  const Eigen::Matrix3d cof = cofactor(F);
-  const Eigen::Map<const Eigen::Matrix<double, 9, 1>> vec_cof(cof.data());
-  P = mu * F + stress_scale * cof;
-  dPdF =
-      ((lambda * (1.0 - log_J) + mu) / (J * J)) * vec_cof * vec_cof.transpose() + stress_scale * determinant_hessian(F);
-  dPdF.diagonal().array() += mu;
-  infinite_unless_finite(P, dPdF);
+  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
 }
 
 // ψ = μ (tr G − log J) + μ/2 |G|² + λ/2 log² J, tr G − log J = (x − log1p x) − (I₂ + I₃)
@@ -85,26 +57,47 @@ double NeoHookean::energy_at(const Eigen::Matrix3d& G) const {
                                 0.5 * lame().mu * G.squaredNorm() + 0.5 * lame().lambda * log_J * log_J);
 }
 
-// P = μ (F − F⁻ᵀ) + λ log J F⁻ᵀ with J F⁻ᵀ = cof F = (1 + tr G) I − Gᵀ + cof G, so
-// F − F⁻ᵀ = G + (Gᵀ − cof G + (I₂ + I₃) I) / J.
+// P = μ (F − F⁻ᵀ) + λ log J F⁻ᵀ. With cof F = J F⁻ᵀ = (1 + tr G) I − Gᵀ + cof G and
+// D = Gᵀ − cof G + (I₂ + I₃) I: cof F = J I − D and F − F⁻ᵀ = G + D / J, both without
+// cancelling O(1) terms. `cof_F` receives cof F.
+Eigen::Matrix3d NeoHookean::pk1_with_cofactor(const Eigen::Matrix3d& G, double J_minus_one, double I2_plus_I3,
+                                              Eigen::Matrix3d& cof_F) const {
+  const double J = 1.0 + J_minus_one;
+  Eigen::Matrix3d D = G.transpose() - cofactor(G);
+  D.diagonal().array() += I2_plus_I3;
+  cof_F = -D;
+  cof_F.diagonal().array() += J;
+  return lame().mu * (G + D / J) + (lame().lambda * std::log1p(J_minus_one) / J) * cof_F;
+}
+
 Eigen::Matrix3d NeoHookean::pk1_at(const Eigen::Matrix3d& G) const {
   const SmallStrain small = small_strain(G);
   if (!(small.J_minus_one > -1.0)) return Eigen::Matrix3d::Constant(infinity);
-  const double J = 1.0 + small.J_minus_one;
-  Eigen::Matrix3d difference = G.transpose() - cofactor(G);
-  difference.diagonal().array() += small.I2_plus_I3;
-  const Eigen::Matrix3d F = G + Eigen::Matrix3d::Identity();
-  Eigen::Matrix3d P =
-      lame().mu * (G + difference / J) + (lame().lambda * std::log1p(small.J_minus_one) / J) * cofactor(F);
+  Eigen::Matrix3d cof_F;
+  Eigen::Matrix3d P = pk1_with_cofactor(G, small.J_minus_one, small.I2_plus_I3, cof_F);
   infinite_unless_finite(P);
   return P;
 }
 
+// dP/dF = μ I + (λ(1 − log J) + μ)/J² cof ⊗ cof + (λ log J − μ)/J ∂²J/∂F².
 void NeoHookean::pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  Eigen::Matrix3d unused;
-  pk1_and_tangent(G + Eigen::Matrix3d::Identity(), unused, dPdF);
-  P = pk1_at(G);
-  if (!P.allFinite()) dPdF.setConstant(infinity);
+  const SmallStrain small = small_strain(G);
+  if (!(small.J_minus_one > -1.0)) {
+    P.setConstant(infinity);
+    dPdF.setConstant(infinity);
+    return;
+  }
+  const double mu = lame().mu;
+  const double lambda = lame().lambda;
+  const double J = 1.0 + small.J_minus_one;
+  const double log_J = std::log1p(small.J_minus_one);
+  Eigen::Matrix3d cof;
+  P = pk1_with_cofactor(G, small.J_minus_one, small.I2_plus_I3, cof);
+  const Eigen::Map<const Eigen::Matrix<double, 9, 1>> vec_cof(cof.data());
+  dPdF = ((lambda * (1.0 - log_J) + mu) / (J * J)) * vec_cof * vec_cof.transpose() +
+         ((lambda * log_J - mu) / J) * determinant_hessian(G + Eigen::Matrix3d::Identity());
+  dPdF.diagonal().array() += mu;
+  infinite_unless_finite(P, dPdF);
 }
 
 }  // namespace altfem

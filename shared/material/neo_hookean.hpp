@@ -17,10 +17,14 @@ public:
   void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
   /// From the displacement gradient G (F = I + G) without cancelling O(1) terms: the
   /// invariants of G give J − 1, log J = log1p(J − 1) and F − F⁻ᵀ directly, so strains of
-  /// 1e-11 (a 1 µm cube under gravity) keep their digits. The tangent is F's.
+  /// 1e-11 (a 1 µm cube under gravity) keep their digits. The F forms call these.
   double energy_at(const Eigen::Matrix3d& G) const override;
   Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
   void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
+
+private:
+  Eigen::Matrix3d pk1_with_cofactor(const Eigen::Matrix3d& G, double J_minus_one, double I2_plus_I3,
+                                    Eigen::Matrix3d& cof_F) const;
 };
 
 }  // namespace altfem

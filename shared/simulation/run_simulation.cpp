@@ -44,22 +44,21 @@ void check_state(const State& state, double total_energy, double size, int step,
   throw NumericalError(message.str());
 }
 
-// A failure of a near-incompressible problem gets the reason that usually lies behind
-// it: the tangent's condition number grows like λ/μ, so residuals stall at round-off.
-// Near incompressibility (ν ≥ 0.49) makes the tangent ill-conditioned: Newton stalls
-// at the round-off floor, and low-order elements lock. `stopped` says whether Newton
-// stopped there (a warning) rather than failed (appended to the error).
+// Near incompressibility (ν ≥ 0.49): the tangent's condition number grows like λ/μ, so
+// residuals stall at round-off, and low-order elements lock. `stopped`: Newton stopped at
+// the round-off floor (a warning of its own) rather than failed (appended to the error).
 std::string near_incompressible_hint(const Scene& scene, bool stopped = false) {
   const double nu = scene.material.poisson_ratio;
   if (nu < 0.49) return "";
   std::ostringstream hint;
-  hint << std::setprecision(8) << (stopped ? "" : " — ") << "at Poisson's ratio " << nu
-       << " (λ/μ = " << 2 * nu / (1 - 2 * nu) << ") the tangent is ill-conditioned and residuals "
-       << (stopped ? "stopped at the round-off floor of the assembled forces; low-order elements lock: "
-                   : "stall at round-off: ")
-       << "use a higher-order element, " << (stopped ? "" : "a looser solver.tolerance, ")
-       << "or a locking-free discretization";
-  return hint.str();
+  hint << std::setprecision(8) << "at Poisson's ratio " << nu << " (λ/μ = " << 2 * nu / (1 - 2 * nu) << ") ";
+  if (stopped)
+    hint << "the tangent is ill-conditioned and residuals stopped at the round-off floor of the assembled forces; "
+            "low-order elements lock: use a higher-order element or a locking-free discretization";
+  else
+    hint << "the tangent is ill-conditioned and residuals stall at round-off: use a higher-order element, a looser "
+            "solver.tolerance, or a locking-free discretization";
+  return stopped ? hint.str() : " — " + hint.str();
 }
 
 // After a failure: when the last converged state's stresses passed the smallest Young's

@@ -25,7 +25,6 @@ void NewtonSolver::assemble_hessian(const Objective& objective, const Eigen::Vec
                                     int iteration) {
   try {
     objective.hessian(u, matrix_, project_spd);
-    hessian_assembled_ = true;
   } catch (const NumericalError& error) {
     throw NumericalError(where(step, iteration) + ": " + error.what());
   }
@@ -88,7 +87,6 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
 }
 
 double NewtonSolver::round_off_floor(const Eigen::VectorXd& u) {
-  if (!hessian_assembled_) return 0;
   magnitudes_.setZero(u.size());
   for (Eigen::Index column = 0; column < matrix_.outerSize(); ++column)
     for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix_, column); entry; ++entry)
@@ -107,6 +105,7 @@ NewtonReport NewtonSolver::minimize(const Objective& objective, Eigen::VectorXd&
     report.residual = residual;
     const bool constraints_met = increment.lpNorm<Eigen::Infinity>() == 0.0;
     if (constraints_met && residual <= options.tolerance) return report;
+    // iteration > 0: solve_step has left the eliminated Hessian in matrix_.
     if (constraints_met && iteration > 0 && objective.hessian_is_constant()) {
       const double floor = round_off_floor(u);
       if (residual <= floor) {

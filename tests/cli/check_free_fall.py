@@ -1,23 +1,17 @@
 """Checks that the points of a run's last surface frame whose rest positions lie inside a
-box fell freely: their displacement is the backward-Euler free fall u_n = g dt^2 n (n + 1) / 2 of every
-step n (exact for a linear material body that nothing holds). Usage:
-check_free_fall.py OUTPUT_DIR XMIN YMIN ZMIN XMAX YMAX ZMAX GZ DT STEPS. Exit 0 when
-every point's z displacement matches to 1e-6 relative."""
-import json
-import pathlib
+box fell freely: their displacement is the backward-Euler free fall
+u_n = g dt^2 n (n + 1) / 2 of every step n (exact for a linear material body that nothing
+holds). Usage: check_free_fall.py OUTPUT_DIR XMIN YMIN ZMIN XMAX YMAX ZMAX GZ DT STEPS.
+Exit 0 when every point's z displacement matches to 1e-6 relative."""
 import sys
 
-import meshio
 import numpy
 
-folder = pathlib.Path(sys.argv[1])
-box_min = numpy.array([float(v) for v in sys.argv[2:5]])
-box_max = numpy.array([float(v) for v in sys.argv[5:8]])
+from surface_frames import in_box, last_surface
+
+surface = last_surface(sys.argv[1])
+inside = in_box(surface, [float(v) for v in sys.argv[2:5]], [float(v) for v in sys.argv[5:8]])
 gravity_z, dt, steps = float(sys.argv[8]), float(sys.argv[9]), int(sys.argv[10])
-summary = json.loads((folder / "summary.json").read_text())
-surface = meshio.read(folder / summary["surface"])
-rest = surface.points - surface.point_data["displacement"]  # the frame's points are deformed
-inside = numpy.all((rest >= box_min) & (rest <= box_max), axis=1)
 if not inside.any():
     sys.exit("no surface point in the box")
 expected = gravity_z * dt * dt * steps * (steps + 1) / 2

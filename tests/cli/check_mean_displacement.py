@@ -1,22 +1,15 @@
 """Checks that the mean of one displacement component over the points of a run's last
-surface frame whose rest positions lie inside a box lies in [LOW, HIGH]. Usage: check_mean_displacement.py
-OUTPUT_DIR XMIN YMIN ZMIN XMAX YMAX ZMAX COMPONENT LOW HIGH (the box closed, widened by
-1e-9 m; COMPONENT 0, 1 or 2). Exit 0 when the mean lies in the interval."""
-import json
-import pathlib
+surface frame whose rest positions lie inside a box is in [LOW, HIGH]. Usage:
+check_mean_displacement.py OUTPUT_DIR XMIN YMIN ZMIN XMAX YMAX ZMAX COMPONENT LOW HIGH (the
+box closed, widened by 1e-9 m; COMPONENT 0, 1 or 2). Exit 0 when the mean lies in the
+interval."""
 import sys
 
-import meshio
-import numpy
+from surface_frames import in_box, last_surface
 
-folder = pathlib.Path(sys.argv[1])
-box_min = numpy.array([float(v) for v in sys.argv[2:5]]) - 1e-9
-box_max = numpy.array([float(v) for v in sys.argv[5:8]]) + 1e-9
+surface = last_surface(sys.argv[1])
+inside = in_box(surface, [float(v) - 1e-9 for v in sys.argv[2:5]], [float(v) + 1e-9 for v in sys.argv[5:8]])
 component, low, high = int(sys.argv[8]), float(sys.argv[9]), float(sys.argv[10])
-summary = json.loads((folder / "summary.json").read_text())
-surface = meshio.read(folder / summary["surface"])
-rest = surface.points - surface.point_data["displacement"]  # the frame's points are deformed
-inside = numpy.all((rest >= box_min) & (rest <= box_max), axis=1)
 if not inside.any():
     sys.exit("no surface point in the box")
 values = surface.point_data["displacement"][inside, component]
