@@ -150,9 +150,7 @@ public:
     for (int cell = 0; cell < mesh_.cell_count(); ++cell)
       for (int dof = 3 * system_->offset(cell); dof < 3 * system_->offset(cell + 1); ++dof)
         element_dofs[cell].push_back(dof);
-    const bool iterative = scene.solver.linear == LinearSolverKind::pcg ||
-                           scene.solver.linear == LinearSolverKind::minres ||
-                           scene.solver.linear == LinearSolverKind::conjugate_residual;
+    const bool iterative = is_iterative(scene.solver.linear);
     // Kaufmann et al. §8: "start with a low value and double it until K is positive
     // definite" (K of the linear material). Babuška–Zlámal is definite for any η > 0
     // (§9.1): its K is a sum of semidefinite volume terms and positive jump penalties, so

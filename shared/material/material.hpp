@@ -35,6 +35,13 @@ inline constexpr std::array<MaterialModel, 5> all_material_models = {
 std::string_view material_model_name(MaterialModel model);
 /// The inverse of material_model_name; nullopt for an unknown name.
 std::optional<MaterialModel> material_model_from_name(std::string_view name);
+/// Whether the model stays well posed through element inversion: Neo-Hookean's energy
+/// grows without bound as J → 0⁺, Stable Neo-Hookean's is smooth through J ≤ 0. The
+/// others (linear, corotated_linear, St. Venant–Kirchhoff) have no barrier: crushed past
+/// 100 % strain, an element can invert and Newton stalls at the energy's kink.
+constexpr bool resists_inversion(MaterialModel model) {
+  return model == MaterialModel::neo_hookean || model == MaterialModel::stable_neo_hookean;
+}
 
 class Material {
 public:

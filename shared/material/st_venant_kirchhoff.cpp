@@ -3,9 +3,12 @@
 namespace altfem {
 namespace {
 
+/// The Green strain E = (FᵀF − I)/2 = (G + Gᵀ + GᵀG)/2 of the displacement gradient G.
+Eigen::Matrix3d green_strain(const Eigen::Matrix3d& G) { return 0.5 * (G + G.transpose() + G.transpose() * G); }
+
 /// Second Piola–Kirchhoff stress S = 2μE + λ tr(E) I.
-Eigen::Matrix3d second_piola_kirchhoff(const Eigen::Matrix3d& F, const LameParameters& lame) {
-  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+Eigen::Matrix3d second_piola_kirchhoff(const Eigen::Matrix3d& G, const LameParameters& lame) {
+  const Eigen::Matrix3d E = green_strain(G);
   return 2.0 * lame.mu * E + lame.lambda * E.trace() * Eigen::Matrix3d::Identity();
 }
 
@@ -14,22 +17,34 @@ Eigen::Matrix3d second_piola_kirchhoff(const Eigen::Matrix3d& F, const LameParam
 StVenantKirchhoff::StVenantKirchhoff(LameParameters lame, double density)
     : Material(MaterialModel::st_venant_kirchhoff, lame, density) {}
 
-double StVenantKirchhoff::energy(const Eigen::Matrix3d& F) const {
-  const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+// The deformation gradient's forms go through G = F − I, as Neo-Hookean's do.
+double StVenantKirchhoff::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
+
+Eigen::Matrix3d StVenantKirchhoff::pk1(const Eigen::Matrix3d& F) const {
+  return pk1_at(F - Eigen::Matrix3d::Identity());
+}
+
+void StVenantKirchhoff::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
+}
+
+double StVenantKirchhoff::energy_at(const Eigen::Matrix3d& G) const {
+  const Eigen::Matrix3d E = green_strain(G);
   const double trace = E.trace();
   return infinite_unless_finite(lame().mu * E.squaredNorm() + 0.5 * lame().lambda * trace * trace);
 }
 
-Eigen::Matrix3d StVenantKirchhoff::pk1(const Eigen::Matrix3d& F) const {
-  Eigen::Matrix3d P = F * second_piola_kirchhoff(F, lame());
+Eigen::Matrix3d StVenantKirchhoff::pk1_at(const Eigen::Matrix3d& G) const {
+  Eigen::Matrix3d P = (G + Eigen::Matrix3d::Identity()) * second_piola_kirchhoff(G, lame());
   infinite_unless_finite(P);
   return P;
 }
 
-void StVenantKirchhoff::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+void StVenantKirchhoff::pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
   const double mu = lame().mu;
   const double lambda = lame().lambda;
-  const Eigen::Matrix3d S = second_piola_kirchhoff(F, lame());
+  const Eigen::Matrix3d F = G + Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d S = second_piola_kirchhoff(G, lame());
   const Eigen::Matrix3d FFt = F * F.transpose();
   P = F * S;
   // ∂P_ij/∂F_kl = δik S_lj + μ F_il F_kj + μ (FFᵀ)_ik δjl + λ F_ij F_kl; the 3 × 3

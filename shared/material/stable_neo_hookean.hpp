@@ -24,6 +24,10 @@ public:
   double energy(const Eigen::Matrix3d& F) const override;
   Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
   void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
+  /// The same from the displacement gradient G, without cancellation where |G| is tiny.
+  double energy_at(const Eigen::Matrix3d& G) const override;
+  Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
+  void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
 
   /// The reparametrised (λ', μ') that appear in ψ.
   LameParameters energy_lame() const { return {lambda_, mu_}; }
@@ -32,7 +36,8 @@ private:
   double lambda_;
   double mu_;
   double alpha_;
-  double rest_energy_;  // ψ(I) before the shift
+
+  Eigen::Matrix3d pk1_with_cofactor(const Eigen::Matrix3d& G, Eigen::Matrix3d& cof_F) const;
 };
 
 }  // namespace altfem

@@ -47,6 +47,11 @@ inline constexpr std::array<std::string_view, 6> linear_solver_kind_names{"cholm
                                                                           "pcg",     "minres", "conjugate_residual"};
 
 std::string_view linear_solver_kind_name(LinearSolverKind kind);
+/// A Krylov method (no factor, a preconditioner), not a direct factorisation.
+constexpr bool is_iterative(LinearSolverKind kind) {
+  return kind == LinearSolverKind::pcg || kind == LinearSolverKind::minres ||
+         kind == LinearSolverKind::conjugate_residual;
+}
 /// The kind called `name` (one of linear_solver_kind_names), or nothing.
 std::optional<LinearSolverKind> linear_solver_kind_from_name(std::string_view name);
 

@@ -2,7 +2,8 @@
 // is the unit cube scaled (issue #35, item 2): with the linear material the displacement
 // scales as ρ g s² / E, so u / s² must equal the unit cube's, for s = 1 µm (strains of
 // 1e-11, which forming F = I + ∇u used to round to a residual above Newton's tolerance)
-// and s = 1,000 km, in every method; a Neo-Hookean 1 µm cube too. Meshes scale exactly (ScaledGeometry, unit_scene).
+// and s = 1,000 km, in every method; 1 µm cubes of Neo-Hookean, Stable Neo-Hookean and
+// St. Venant–Kirchhoff too. Meshes scale exactly (ScaledGeometry, unit_scene).
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -18,11 +19,11 @@ namespace {
 std::filesystem::path run_cube(const std::string& method, const std::string& side,
                                const std::string& model = "linear") {
   const auto out = fresh_directory("scaled_cube_" + method + "_" + side + "_" + model) / "run";
-  const auto result =
-      run_altfem({"run", source_path("tests/cli/scenes/cube_under_gravity.json").string(), "--method", method, "--out",
-                  out.string(), "--set", "geometry/shape/box/max=[" + side + "," + side + "," + side + "]", "--set",
-                  "boundary_conditions/0/region/box/min=[-" + side + ",-" + side + ",-" + side + "]", "--set",
-                  "boundary_conditions/0/region/box/max=[0," + side + "," + side + "]"});
+  const auto result = run_altfem(
+      {"run", source_path("tests/cli/scenes/cube_under_gravity.json").string(), "--method", method, "--out",
+       out.string(), "--set", "geometry/shape/box/max=[" + side + "," + side + "," + side + "]", "--set",
+       "boundary_conditions/0/region/box/min=[-" + side + ",-" + side + ",-" + side + "]", "--set",
+       "boundary_conditions/0/region/box/max=[0," + side + "," + side + "]", "--set", "material/model=" + model});
   EXPECT_EQ(result.exit_code, 0) << side << ": " << result.err;
   return out;
 }
@@ -38,12 +39,15 @@ TEST_P(ScaledCube, IsTheUnitCubeScaled) {
                               unit.string() + " " + scaled.string() + " " + side + " 2";
     EXPECT_EQ(std::system(check.c_str()), 0) << "u / s² differs from the unit cube's (see output above)";
   }
-  // Neo-Hookean at strains of 1e-11 is linear elasticity to 1e-11: it takes the
-  // displacement gradient too (Material::pk1_at), so it keeps the strains' digits.
-  const auto neo_hookean = run_cube(GetParam(), "1e-6", "neo_hookean");
-  const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_scaled_run.py").string() + " " +
-                            unit.string() + " " + neo_hookean.string() + " 1e-6 2";
-  EXPECT_EQ(std::system(check.c_str()), 0) << "the 1 µm Neo-Hookean cube is not the linear unit cube scaled";
+  // The hyperelastic models at strains of 1e-11 are linear elasticity to 1e-11: they take
+  // the displacement gradient too (Material::pk1_at), so they keep the strains' digits.
+  for (const std::string model : {"neo_hookean", "stable_neo_hookean", "st_venant_kirchhoff"}) {
+    SCOPED_TRACE(model);
+    const auto tiny = run_cube(GetParam(), "1e-6", model);
+    const std::string check = "/usr/bin/python3 " + source_path("tests/cli/check_scaled_run.py").string() + " " +
+                              unit.string() + " " + tiny.string() + " 1e-6 2";
+    EXPECT_EQ(std::system(check.c_str()), 0) << "the 1 µm " << model << " cube is not the linear unit cube scaled";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, ScaledCube, ::testing::Values("fem", "fcm", "dg", "harmonic"));

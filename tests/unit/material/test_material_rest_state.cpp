@@ -54,15 +54,15 @@ TEST_P(MaterialRestState, MatchesLinearElasticityAtSmallStrain) {
   }
 }
 
-// The models that take the displacement gradient G themselves (linear, Neo-Hookean;
-// the others inherit Material's F = I + G): their G forms are their F forms at G of
-// 1e-2, and at G of 1e-11 (a 1 µm cube under gravity), where F = I + G keeps 5 digits of
-// G, their stress is linear elasticity's to its O(|G|) nonlinearity, 1e-9 relative
-// (issue #35).
+// The models that take the displacement gradient G themselves (all but corotated_linear,
+// which inherits Material's F = I + G): their G forms are their F forms at G of 1e-2, and
+// at G of 1e-11 (a 1 µm cube under gravity), where F = I + G keeps 5 digits of G, their
+// stress is linear elasticity's to its O(|G|) nonlinearity, 1e-9 relative (issue #35).
 TEST(SmallStrainMaterials, DisplacementGradientFormsKeepTinyStrainsDigits) {
   const auto linear = make_material(MaterialModel::linear, youngs_modulus, 0.3, 1000.0);
   const LameParameters lame = linear->lame();
-  for (const MaterialModel model : {MaterialModel::linear, MaterialModel::neo_hookean}) {
+  for (const MaterialModel model : {MaterialModel::linear, MaterialModel::neo_hookean,
+                                    MaterialModel::stable_neo_hookean, MaterialModel::st_venant_kirchhoff}) {
     SCOPED_TRACE(material_model_name(model));
     const auto material = make_material(model, youngs_modulus, 0.3, 1000.0);
     std::mt19937 random(13);
@@ -87,6 +87,31 @@ TEST(SmallStrainMaterials, DisplacementGradientFormsKeepTinyStrainsDigits) {
       const double energy = lame.mu * symmetric.squaredNorm() + 0.5 * lame.lambda * std::pow(symmetric.trace(), 2);
       EXPECT_NEAR(material->energy_at(G), energy, 1e-8 * energy);
     }
+  }
+}
+
+// The energies in G are the papers' formulas in F where F holds all the digits (|G| of 0.3):
+// Stable Neo-Hookean (Smith et al. 2018, with its Lamé mapping and rest-state shift) and
+// St. Venant–Kirchhoff, each written here from F as the papers write them.
+TEST(SmallStrainMaterials, EnergiesInTheDisplacementGradientAreThePapersFormulas) {
+  const LameParameters lame = make_material(MaterialModel::linear, youngs_modulus, 0.3, 1000.0)->lame();
+  const auto stable = make_material(MaterialModel::stable_neo_hookean, youngs_modulus, 0.3, 1000.0);
+  const auto kirchhoff = make_material(MaterialModel::st_venant_kirchhoff, youngs_modulus, 0.3, 1000.0);
+  const double mu = 4.0 / 3.0 * lame.mu, lambda = lame.lambda + 5.0 / 6.0 * lame.mu, alpha = 1 + 0.75 * mu / lambda;
+  const auto stable_energy = [&](const Eigen::Matrix3d& F) {
+    return 0.5 * mu * (F.squaredNorm() - 3) + 0.5 * lambda * std::pow(F.determinant() - alpha, 2) -
+           0.5 * mu * std::log(F.squaredNorm() + 1);
+  };
+  const double rest = stable_energy(Eigen::Matrix3d::Identity());
+  std::mt19937 random(17);
+  for (int sample = 0; sample < 20; ++sample) {
+    const Eigen::Matrix3d G = 0.3 * test::random_matrix(random);
+    const Eigen::Matrix3d F = Eigen::Matrix3d::Identity() + G;
+    const double expected_stable = stable_energy(F) - rest;
+    EXPECT_NEAR(stable->energy_at(G), expected_stable, 1e-12 * youngs_modulus);
+    const Eigen::Matrix3d E = 0.5 * (F.transpose() * F - Eigen::Matrix3d::Identity());
+    const double expected_kirchhoff = lame.mu * E.squaredNorm() + 0.5 * lame.lambda * std::pow(E.trace(), 2);
+    EXPECT_NEAR(kirchhoff->energy_at(G), expected_kirchhoff, 1e-12 * youngs_modulus);
   }
 }
 
