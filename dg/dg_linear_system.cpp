@@ -12,23 +12,11 @@
 #include "dg/exact_element_matrices.hpp"
 #include "dg/strong_conditions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
-#include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
 
 namespace {
-
-// Centre and size of a cell: its centroid and diameter (Kaufmann et al. §5).
-MonomialBasis cell_basis(const Polyhedron& cell, int degree) {
-  const Eigen::VectorXd first = polyhedron_moments(cell, 1);
-  const Eigen::Vector3d centroid = first.segment<3>(1) / first[0];
-  double diameter = 0;
-  for (Eigen::Index i = 0; i < cell.vertices.rows(); ++i)
-    for (Eigen::Index j = i + 1; j < cell.vertices.rows(); ++j)
-      diameter = std::max(diameter, (cell.vertices.row(i) - cell.vertices.row(j)).norm());
-  return MonomialBasis(degree, centroid, diameter);
-}
 
 // area(∂K): the sum of the face polygons' areas.
 double surface_area(const Polyhedron& cell) {
@@ -104,7 +92,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (id < 0 || id >= static_cast<int>(cell_materials_.materials.size()))
       throw std::invalid_argument("DgLinearSystem: material id " + std::to_string(id) + " of " +
                                   std::to_string(cell_materials_.materials.size()) + " materials");
-  for (const Polyhedron& cell : cells_) bases_.push_back(cell_basis(cell, settings.degree));
+  for (const Polyhedron& cell : cells_) bases_.push_back(cell_monomial_basis(cell, settings.degree));
   offsets_.push_back(0);
   for (const MonomialBasis& basis : bases_) offsets_.push_back(offsets_.back() + basis.size());
   std::vector<std::vector<int>> strong_faces(cells_.size());

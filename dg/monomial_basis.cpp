@@ -1,8 +1,11 @@
 #include "dg/monomial_basis.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
+
+#include "shared/geometry/polyhedron_moments.hpp"
 
 namespace altfem::dg {
 
@@ -43,6 +46,16 @@ void MonomialBasis::combine(Eigen::MatrixXd combination) {
                                 " square, got " + std::to_string(combination.rows()) + " x " +
                                 std::to_string(combination.cols()));
   combination_ = std::move(combination);
+}
+
+MonomialBasis cell_monomial_basis(const Polyhedron& cell, int degree) {
+  const Eigen::VectorXd first = polyhedron_moments(cell, 1);
+  const Eigen::Vector3d centroid = first.segment<3>(1) / first[0];
+  double diameter = 0;
+  for (Eigen::Index i = 0; i < cell.vertices.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < cell.vertices.rows(); ++j)
+      diameter = std::max(diameter, (cell.vertices.row(i) - cell.vertices.row(j)).norm());
+  return MonomialBasis(degree, centroid, diameter);
 }
 
 }  // namespace altfem::dg

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 
 #include "shared/geometry/monomial_index.hpp"
+#include "shared/geometry/polyhedron.hpp"
 
 namespace altfem::dg {
 
@@ -37,5 +38,8 @@ private:
   Eigen::Matrix<int, Eigen::Dynamic, 3> exponents_;
   Eigen::MatrixXd combination_;
 };
+
+/// The basis of `cell`: centred at its centroid, scaled by its diameter (Kaufmann et al. §5).
+MonomialBasis cell_monomial_basis(const Polyhedron& cell, int degree);
 
 }  // namespace altfem::dg

@@ -17,6 +17,7 @@
 #include "shared/io/json_file.hpp"
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
+#include "shared/material/material.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/simulation.hpp"
@@ -62,14 +63,14 @@ std::string near_incompressible_hint(const Scene& scene, bool stopped = false) {
 }
 
 // After a failure: when the last converged state's stresses passed the smallest Young's
-// modulus of a model with no barrier against inverting elements (linear,
-// corotated_linear, st_venant_kirchhoff), its strains were past 100 %, elements may be
-// crushed through inversion, where Newton stalls at a kink of the energy and no smaller
-// step helps (issue #35: a 100 Pa corotated bar under its weight, 1.5e8 Pa at t = 1.1 s).
+// modulus of a model with no barrier against inverting elements (resists_inversion), its
+// strains were past 100 %, elements may be crushed through inversion, where Newton stalls
+// at a kink of the energy and no smaller step helps (issue #35: a 100 Pa corotated bar
+// under its weight, 1.5e8 Pa at t = 1.1 s).
 std::string large_strain_hint(const Scene& scene, double max_von_mises) {
   const MaterialSpec* weakest = nullptr;
   for (const MaterialSpec& material : scene.materials)
-    if (material.model != "neo_hookean" && material.model != "stable_neo_hookean" &&
+    if (!resists_inversion(material_model_from_name(material.model).value()) &&
         (!weakest || material.youngs_modulus < weakest->youngs_modulus))
       weakest = &material;
   if (!weakest || !(max_von_mises > weakest->youngs_modulus)) return "";
@@ -117,12 +118,14 @@ nlohmann::json exact_solution_errors(const MethodInstance& method, const VectorE
 // the embedded surface keeps its vertices, so surface errors stay defined.
 class FrameWriter {
 public:
-  FrameWriter(const Simulation& simulation, const std::filesystem::path& directory, const OutputSpec& output)
+  FrameWriter(const Simulation& simulation, const std::filesystem::path& directory, const OutputSpec& output,
+              FrameObserver observer)
       : simulation_(simulation),
         directory_(directory),
         output_(output),
         volume_(directory / "volume.pvd"),
-        surface_(directory / "surface.pvd") {}
+        surface_(directory / "surface.pvd"),
+        observer_(std::move(observer)) {}
 
   // Stress as cell data, when the discretization's elements are the volume cells.
   void add_stress(UnstructuredGrid& grid, const Eigen::VectorXd& displacement) const {
@@ -134,27 +137,34 @@ public:
 
   void write(const Eigen::VectorXd& displacement, double time) {
     char name[64];
+    RunFrame frame;
+    frame.time = time;
     if (output_.volume) {
       std::snprintf(name, sizeof name, "volume_%06d.vtu", frame_);
-      UnstructuredGrid grid = simulation_.method().volume_grid(displacement);
-      add_stress(grid, displacement);
-      write_vtu(directory_ / name, grid);
+      frame.volume = simulation_.method().volume_grid(displacement);
+      add_stress(frame.volume, displacement);
+      write_vtu(directory_ / name, frame.volume);
       volume_.add(time, name);
       volume_.write();
     }
     if (output_.surface) {
       std::snprintf(name, sizeof name, "surface_%06d.vtu", frame_);
       const SurfaceMesh& surface = simulation_.method().embedded_surface();
-      const Eigen::MatrixXd moved = simulation_.method().embedded_displacement(displacement);
+      frame.surface_displacement = simulation_.method().embedded_displacement(displacement);
       UnstructuredGrid grid;
-      grid.points = surface.vertices + moved;
+      grid.points = surface.vertices + frame.surface_displacement;
       grid.add_triangles(surface.triangles);
-      grid.point_data.emplace_back("displacement", moved);
+      grid.point_data.emplace_back("displacement", frame.surface_displacement);
       write_vtu(directory_ / name, grid);
       surface_.add(time, name);
       surface_.write();
       last_surface_ = directory_ / name;
+      if (observer_) {
+        frame.surface_vertices = surface.vertices;
+        frame.surface_triangles = surface.triangles;
+      }
     }
+    if (observer_) observer_(std::move(frame));
     ++frame_;
   }
   const std::filesystem::path& last_surface() const { return last_surface_; }
@@ -165,6 +175,7 @@ private:
   OutputSpec output_;
   PvdCollection volume_, surface_;
   std::filesystem::path last_surface_;
+  FrameObserver observer_;
   int frame_ = 0;
 };
 
@@ -208,7 +219,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
 
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
                               const MethodDescription& description, const std::filesystem::path& output_directory,
-                              double setup_seconds) {
+                              double setup_seconds, const FrameObserver& on_frame) {
   const auto start = std::chrono::steady_clock::now();
   const double loading_seconds = setup_seconds;
   Simulation simulation(scene, geometry, method_name, description.factory, description.rebuild);
@@ -243,7 +254,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   if (simulation.explicit_steps()) summary["facts"]["critical_time_step"] = critical_time_step;
 
   State& state = simulation.state();
-  FrameWriter frames(simulation, output_directory, scene.output);
+  FrameWriter frames(simulation, output_directory, scene.output, on_frame);
   EventSchedule events(scene, simulation, log);
   const int steps = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
