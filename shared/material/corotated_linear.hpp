@@ -12,9 +12,11 @@ class CorotatedLinear final : public Material {
 public:
   CorotatedLinear(LameParameters lame, double density);
 
-  double energy(const Eigen::Matrix3d& F) const override;
-  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
-  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
+  /// From F = I + G: the polar decomposition needs F, and R − I would keep only
+  /// round-off's digits of a tiny G anyway.
+  double energy_at(const Eigen::Matrix3d& G) const override;
+  Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
+  void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
 };
 
 }  // namespace altfem

@@ -13,14 +13,6 @@ LinearElastic::LinearElastic(LameParameters lame, double density) : Material(Mat
   }
 }
 
-double LinearElastic::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
-
-Eigen::Matrix3d LinearElastic::pk1(const Eigen::Matrix3d& F) const { return pk1_at(F - Eigen::Matrix3d::Identity()); }
-
-void LinearElastic::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
-}
-
 double LinearElastic::energy_at(const Eigen::Matrix3d& G) const {
   const Eigen::Matrix3d strain = 0.5 * (G + G.transpose());
   const double trace = strain.trace();

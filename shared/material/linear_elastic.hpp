@@ -9,10 +9,7 @@ class LinearElastic final : public Material {
 public:
   LinearElastic(LameParameters lame, double density);
 
-  double energy(const Eigen::Matrix3d& F) const override;
-  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
-  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
-  /// From the displacement gradient G: the strain sym(G) without forming I + G.
+  /// The strain sym(G), without forming I + G.
   double energy_at(const Eigen::Matrix3d& G) const override;
   Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
   void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;

@@ -47,20 +47,22 @@ class Material {
 public:
   virtual ~Material() = default;
 
-  /// ψ(F) [J/m³], zero at F = I.
-  virtual double energy(const Eigen::Matrix3d& F) const = 0;
-  /// P(F) = ∂ψ/∂F (3 × 3).
-  virtual Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const = 0;
-  /// P (3 × 3) and dPdF (9 × 9, symmetric, see Matrix9d) together, sharing work.
-  virtual void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const = 0;
-  /// The same three at F = I + G from the displacement gradient G = ∂u/∂X, which the
+  /// A model is written in the displacement gradient G = ∂u/∂X (F = I + G), which the
   /// assembler computes: forming I + G rounds away G's digits below ε, a relative error
   /// ε / |G| in the strain (a 1 µm cube under gravity has |G| ~ 1e-11: 1e-5, more than
-  /// Newton's tolerance). The linear model uses G directly; the others form F.
-  virtual double energy_at(const Eigen::Matrix3d& G) const { return energy(G + Eigen::Matrix3d::Identity()); }
-  virtual Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const { return pk1(G + Eigen::Matrix3d::Identity()); }
-  virtual void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-    pk1_and_tangent(G + Eigen::Matrix3d::Identity(), P, dPdF);
+  /// Newton's tolerance), so the models work from G (corotated_linear alone forms F).
+  /// ψ(I + G) [J/m³], zero at G = 0.
+  virtual double energy_at(const Eigen::Matrix3d& G) const = 0;
+  /// P = ∂ψ/∂F at F = I + G (3 × 3).
+  virtual Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const = 0;
+  /// P (3 × 3) and dPdF (9 × 9, symmetric, see Matrix9d) together, sharing work.
+  virtual void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const = 0;
+  /// The same three of the deformation gradient F (G = F − I is exact where F's entries
+  /// are near those of I), for callers that hold F.
+  double energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
+  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const { return pk1_at(F - Eigen::Matrix3d::Identity()); }
+  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
+    pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
   }
   /// True when dP/dF does not depend on F (only the linear model): the stiffness
   /// matrix can be assembled and factorised once.

@@ -13,16 +13,6 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 
 NeoHookean::NeoHookean(LameParameters lame, double density) : Material(MaterialModel::neo_hookean, lame, density) {}
 
-// The deformation gradient's forms go through G = F − I (exact where F's entries are
-// near those of I, and F came from I + G anyway): one implementation.
-double NeoHookean::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
-
-Eigen::Matrix3d NeoHookean::pk1(const Eigen::Matrix3d& F) const { return pk1_at(F - Eigen::Matrix3d::Identity()); }
-
-void NeoHookean::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
-}
-
 // ψ = μ (tr G − log J) + μ/2 |G|² + λ/2 log² J, tr G − log J = (x − log1p x) − (I₂ + I₃)
 // with x = J − 1 (|F|² − 3 = 2 tr G + |G|²).
 double NeoHookean::energy_at(const Eigen::Matrix3d& G) const {

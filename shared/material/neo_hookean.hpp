@@ -12,12 +12,8 @@ class NeoHookean final : public Material {
 public:
   NeoHookean(LameParameters lame, double density);
 
-  double energy(const Eigen::Matrix3d& F) const override;
-  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
-  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
-  /// From the displacement gradient G (F = I + G) without cancelling O(1) terms: the
-  /// invariants of G give J − 1, log J = log1p(J − 1) and F − F⁻ᵀ directly, so strains of
-  /// 1e-11 (a 1 µm cube under gravity) keep their digits. The F forms call these.
+  /// Without cancelling O(1) terms: the invariants of G give J − 1, log J = log1p(J − 1)
+  /// and F − F⁻ᵀ directly, so strains of 1e-11 (a 1 µm cube under gravity) keep their digits.
   double energy_at(const Eigen::Matrix3d& G) const override;
   Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
   void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;

@@ -17,17 +17,6 @@ Eigen::Matrix3d second_piola_kirchhoff(const Eigen::Matrix3d& G, const LameParam
 StVenantKirchhoff::StVenantKirchhoff(LameParameters lame, double density)
     : Material(MaterialModel::st_venant_kirchhoff, lame, density) {}
 
-// The deformation gradient's forms go through G = F − I, as Neo-Hookean's do.
-double StVenantKirchhoff::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
-
-Eigen::Matrix3d StVenantKirchhoff::pk1(const Eigen::Matrix3d& F) const {
-  return pk1_at(F - Eigen::Matrix3d::Identity());
-}
-
-void StVenantKirchhoff::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
-}
-
 double StVenantKirchhoff::energy_at(const Eigen::Matrix3d& G) const {
   const Eigen::Matrix3d E = green_strain(G);
   const double trace = E.trace();

@@ -10,11 +10,7 @@ class StVenantKirchhoff final : public Material {
 public:
   StVenantKirchhoff(LameParameters lame, double density);
 
-  double energy(const Eigen::Matrix3d& F) const override;
-  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
-  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
-  /// The same from the displacement gradient G: E = (G + Gᵀ + GᵀG)/2 exactly where |G|
-  /// is tiny, instead of FᵀF − I cancelling O(1) terms.
+  /// E = (G + Gᵀ + GᵀG)/2, exact where |G| is tiny, instead of FᵀF − I cancelling O(1) terms.
   double energy_at(const Eigen::Matrix3d& G) const override;
   Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
   void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;

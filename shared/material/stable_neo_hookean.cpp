@@ -13,17 +13,6 @@ StableNeoHookean::StableNeoHookean(LameParameters lame, double density)
       mu_(4.0 / 3.0 * lame.mu),
       alpha_(1.0 + 0.75 * mu_ / lambda_) {}
 
-// The deformation gradient's forms go through G = F − I, as Neo-Hookean's do.
-double StableNeoHookean::energy(const Eigen::Matrix3d& F) const { return energy_at(F - Eigen::Matrix3d::Identity()); }
-
-Eigen::Matrix3d StableNeoHookean::pk1(const Eigen::Matrix3d& F) const {
-  return pk1_at(F - Eigen::Matrix3d::Identity());
-}
-
-void StableNeoHookean::pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const {
-  pk1_and_tangent_at(F - Eigen::Matrix3d::Identity(), P, dPdF);
-}
-
 // With d_I = I_C − 3 = 2 tr G + |G|², d_J = J − 1 and a = α − 1 = 3μ'/(4λ'), ψ − ψ(I) =
 // μ'/2 d_I + λ'/2 (d_J² − 2a d_J) − μ'/2 log(1 + d_I/4), whose first-order terms cancel
 // (the rest state is stress free). Grouped so that none does:

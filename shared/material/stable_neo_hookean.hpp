@@ -21,10 +21,7 @@ public:
   /// `lame`: the small-strain Lamé parameters (as from lame_parameters(E, ν)).
   StableNeoHookean(LameParameters lame, double density);
 
-  double energy(const Eigen::Matrix3d& F) const override;
-  Eigen::Matrix3d pk1(const Eigen::Matrix3d& F) const override;
-  void pk1_and_tangent(const Eigen::Matrix3d& F, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
-  /// The same from the displacement gradient G, without cancellation where |G| is tiny.
+  /// Without cancelling O(μ) terms where |G| is tiny (stable_neo_hookean.cpp).
   double energy_at(const Eigen::Matrix3d& G) const override;
   Eigen::Matrix3d pk1_at(const Eigen::Matrix3d& G) const override;
   void pk1_and_tangent_at(const Eigen::Matrix3d& G, Eigen::Matrix3d& P, Matrix9d& dPdF) const override;
