@@ -9,7 +9,8 @@ Beam theory gives the tip deflection (Timoshenko, shear factor κ = 5/6):
 
 The 3D solid differs from the beam by the clamp's Poisson constraint (about 1 %), so the
 errors below are measured against a finer fem Hex20 run, and beam theory is checked
-to within 2 %. Each method should converge: its error falls as its DOFs grow.
+to within 2 %. Each method should converge: its error falls as its DOFs grow. (fcm's
+cells on this box are fem's elements, none cut: their lines coincide.)
 
     /usr/bin/python3 examples/python/cantilever_convergence.py [--quick] [--out DIR]
 """
