@@ -4,8 +4,8 @@
 
 namespace altfem::python {
 
-/// `_core.SceneError`, `_core.NumericalError`, `_core.resolve_scene`, `_core.apply_overrides`,
-/// `_core.methods`, `_core.executable`.
+/// `_core.SceneError`, `_core.NumericalError`, `_core.resolve_scene`, `_core.methods`,
+/// `_core.executable`.
 void bind_scene(pybind11::module_& module);
 /// `_core.run` and its `RunOutput`.
 void bind_run(pybind11::module_& module);

@@ -1,6 +1,7 @@
 // The compiled part of the Python module `altfem` (python/altfem/__init__.py is the rest
 // and documents the API; docs/python.md). It holds what must run in-process: the scene's
-// validation, a run whose frames stay in memory as numpy arrays, a method's mesh, harmonic bases, DG element matrices.
+// validation, a run whose frames stay in memory as numpy arrays, a method's mesh, harmonic
+// bases and DG element matrices.
 #include <pybind11/pybind11.h>
 
 #include "python/bindings.hpp"

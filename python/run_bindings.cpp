@@ -4,15 +4,14 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "app/method_registry.hpp"
 #include "python/array_views.hpp"
 #include "python/bindings.hpp"
 #include "shared/common/error.hpp"
 #include "shared/io/output_folder.hpp"
+#include "shared/mesh/text_file.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/run_simulation.hpp"
 
@@ -27,13 +26,6 @@ struct RunOutput {
   std::vector<std::string> warnings;
   std::vector<RunFrame> frames;
 };
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream stream(path);
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return text.str();
-}
 
 std::shared_ptr<RunOutput> run(const std::string& file, const std::string& text,
                                const std::vector<std::string>& assignments, const std::string& method,
@@ -54,7 +46,7 @@ std::shared_ptr<RunOutput> run(const std::string& file, const std::string& text,
   } catch (const NumericalError& error) {
     output->error = error.what();
     const std::filesystem::path summary = std::filesystem::path(out) / "summary.json";
-    output->summary = std::filesystem::exists(summary) ? read_text(summary) : "{}";
+    output->summary = std::filesystem::exists(summary) ? read_text_file(summary) : "{}";
   }
   return output;
 }
