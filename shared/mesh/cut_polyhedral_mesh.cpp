@@ -67,7 +67,8 @@ constexpr double snap_fraction = 1e-13;
 
 class CutBuilder {
 public:
-  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane) : mesh_(mesh), blade_(plane) {
+  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry)
+      : mesh_(mesh), blade_(plane), compute_geometry_(compute_geometry) {
     nodes_.reserve(mesh.nodes.rows());
     for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
       nodes_.push_back(mesh.nodes.row(n));
@@ -288,7 +289,7 @@ private:
       const int cell = parent_[piece_index];
       result.cell_kinds.push_back(crossed_[cell] ? PolyhedralCellKind::cut : mesh_.cell_kinds[cell]);
     }
-    compute_polyhedral_geometry(result);
+    if (compute_geometry_) compute_polyhedral_geometry(result);
     cut.parent_cell = parent_;
     cut.node_sources = std::move(sources_);
     cut.crossed_cells = crossed_count_;
@@ -311,12 +312,13 @@ private:
   std::vector<std::map<int, int>> cap_edges_;  ///< per piece: the cap's next node after each node
   std::vector<Face> faces_;
   int crossed_count_ = 0, separated_ = 0, snapped_ = 0;
+  bool compute_geometry_ = true;
 };
 
 }  // namespace
 
-PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane) {
-  return CutBuilder(mesh, plane).build();
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry) {
+  return CutBuilder(mesh, plane, compute_geometry).build();
 }
 
 }  // namespace altfem

@@ -25,7 +25,7 @@ struct NodeSource {
 };
 
 struct PolyhedralCut {
-  PolyhedralMesh mesh;                   ///< the cut mesh, its geometry computed
+  PolyhedralMesh mesh;                   ///< the cut mesh, its geometry computed unless asked not to
   std::vector<int> parent_cell;          ///< #cells of `mesh`: the cell of the input it lies in
   std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
   int crossed_cells = 0;                 ///< input cells split into two pieces
@@ -37,7 +37,10 @@ struct PolyhedralCut {
 /// Cuts `mesh` by `plane`. A crossed cell must be convex (each of its nodes on or behind
 /// the plane of each of its faces); throws NumericalError naming the first that is not
 /// (cutting non-convex cells is not implemented yet). Throws std::invalid_argument for a
-/// zero normal. A plane that misses every cell returns the mesh unchanged.
-PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane);
+/// zero normal. A plane that misses every cell returns the mesh unchanged. Without
+/// `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for
+/// its rounded volume to be positive is the caller's to handle (cut_tetrahedral_mesh);
+/// with it, compute_polyhedral_geometry throws NumericalError for such a piece.
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true);
 
 }  // namespace altfem

@@ -6,15 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
-#include <cstdlib>
 #include <map>
-#include <random>
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "tests/unit/mesh/seeded_cut_planes.hpp"
 
 namespace altfem {
 namespace {
@@ -143,30 +142,12 @@ double clipped_cube_volume(const CuttingPlane& plane) {
   return volume;
 }
 
-// Seeded planes of every degenerate kind: through nodes with axis, diagonal and random
-// normals, nearly parallel to faces, grazing a node, and anywhere: 200 per mesh, or
-// ALTFEM_CUT_PLANES per mesh (docs/verification.md gives the full count's run).
+// Seeded planes of every degenerate kind (seeded_cut_planes.hpp): 200 per mesh.
 TEST(CutPolyhedralMesh, SeededPlanesGiveClosedPiecesOfPositiveVolumeOnEveryKindOfMesh) {
-  std::mt19937_64 random(20261127);
-  std::uniform_real_distribution<double> unit(0.0, 1.0), symmetric(-1.0, 1.0);
-  const auto random_vector = [&] { return Eigen::Vector3d(symmetric(random), symmetric(random), symmetric(random)); };
-  const char* requested = std::getenv("ALTFEM_CUT_PLANES");
-  const int trials = requested ? std::atoi(requested) : 200;
   for (const ElementType type : {ElementType::tet4, ElementType::hex8}) {
     const PolyhedralMesh mesh = unit_cube(type, 3);
-    for (int trial = 0; trial < trials; ++trial) {
-      const Eigen::Vector3d node = mesh.nodes.row(static_cast<Eigen::Index>(unit(random) * (mesh.nodes.rows() - 1)));
-      const Eigen::Vector3d axis = Eigen::Vector3d::Unit(trial % 3);
-      CuttingPlane plane;
-      switch (trial % 5) {
-        case 0: plane = {node, axis}; break;
-        case 1: plane = {node, Eigen::Vector3d(1, trial % 2 ? 1 : -1, (trial / 2) % 3 - 1)}; break;
-        case 2: plane = {node, axis + 1e-9 * random_vector()}; break;
-        case 3: plane = {node + 1e-13 * random_vector(), random_vector()}; break;
-        default: plane = {Eigen::Vector3d(unit(random), unit(random), unit(random)), random_vector()}; break;
-      }
-      if (plane.normal.norm() < 1e-3) plane.normal = axis;
-      SCOPED_TRACE(::testing::Message() << "trial " << trial << ": point " << plane.point.transpose() << ", normal "
+    for (const CuttingPlane& plane : seeded_cut_planes(mesh.nodes, 200)) {
+      SCOPED_TRACE(::testing::Message() << "point " << plane.point.transpose() << ", normal "
                                         << plane.normal.transpose());
       PolyhedralCut cut;
       ASSERT_NO_THROW(cut = cut_polyhedral_mesh(mesh, plane));
