@@ -40,21 +40,10 @@ Plane face_plane(const Corners& corners, const std::array<int, 4>& face) {
   return {normal, normal.dot(a)};
 }
 
-/// Per node, the lowest-numbered node at exactly the same position: a mesh read with
-/// duplicated nodes (a soup of tetrahedra) still has its faces matched.
-std::vector<int> first_node_at_position(const Eigen::MatrixXd& nodes) {
-  std::map<std::array<double, 3>, int> first;
-  std::vector<int> canonical(static_cast<std::size_t>(nodes.rows()));
-  for (int node = 0; node < nodes.rows(); ++node)
-    canonical[node] =
-        first.emplace(std::array<double, 3>{nodes(node, 0), nodes(node, 1), nodes(node, 2)}, node).first->second;
-  return canonical;
-}
-
 /// Per cell and local face (element_faces order), the cell across it in a conforming
-/// mesh (faces matched by the positions of their corners).
+/// mesh (faces matched by their corner nodes, so that the copies a cut made of the nodes
+/// on its blade separate the two sides).
 std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) {
-  const std::vector<int> canonical = first_node_at_position(mesh.nodes);
   const ElementShape shape = element_shape(mesh.element_type);
   const auto faces = element_faces(shape);
   const int corners = face_corner_count(shape);
@@ -64,7 +53,7 @@ std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) 
   for (int cell = 0; cell < mesh.cells.rows(); ++cell)
     for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
       std::array<int, 4> key{-1, -1, -1, -1};
-      for (int c = 0; c < corners; ++c) key[c] = canonical[mesh.cells(cell, faces[f][c])];
+      for (int c = 0; c < corners; ++c) key[c] = mesh.cells(cell, faces[f][c]);
       std::sort(key.begin(), key.begin() + corners);
       const auto [entry, added] = first_side.emplace(key, FaceNeighbour{cell, f});
       if (added) continue;

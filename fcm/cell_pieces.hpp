@@ -30,8 +30,9 @@ struct CellPieces {
 };
 
 /// The pieces of every cell of `background` (tetrahedra or hexahedra with planar faces,
-/// conforming) over the Tet4 mesh `embedded` of the object (conforming; faces are
-/// matched by their corners' positions, so duplicated nodes do not split it).
+/// conforming) over the Tet4 mesh `embedded` of the object (conforming: faces are
+/// matched by their corner nodes, so a soup must be welded first (weld_coincident_nodes)
+/// and the node copies a cut made on its blade keep the two sides apart).
 ///
 /// Decided combinatorially on the clipped embedded tetrahedra (the brief's second
 /// option), not by exact predicates: a fragment is an embedded tetrahedron clipped by a

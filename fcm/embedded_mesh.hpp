@@ -7,11 +7,16 @@
 
 namespace altfem::fcm {
 
-/// A Tet4 mesh of the geometry: a Tet4/Tet10 volume mesh's corner tetrahedra; a
+/// A Tet4 mesh of the geometry, welded (weld_coincident_nodes): a Tet4/Tet10 volume mesh's corner tetrahedra; a
 /// hexahedral volume mesh's cells split into 12 tetrahedra each about their centroids
 /// (tetrahedra_of_hexahedra: straight-sided, so a Hex20/Hex27 cell's curved faces and a
 /// Hex8 cell's warped ones are approximated by triangles); a surface or shape meshed with
 /// cells of at most `max_cell_size`.
 VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file);
+
+/// `mesh` with every set of nodes at exactly the same position made one node (the
+/// lowest-numbered; the rest renumbered in order): a mesh read as a soup of tetrahedra
+/// becomes conforming by node, which find_cell_pieces and a cut's node copies rely on.
+VolumeMesh weld_coincident_nodes(const VolumeMesh& mesh);
 
 }  // namespace altfem::fcm

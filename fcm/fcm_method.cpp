@@ -1,5 +1,6 @@
 #include "fcm/fcm_method.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/cut_tetrahedral_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/embedded_surface.hpp"
@@ -31,6 +33,9 @@ struct FcmMesh {
   VolumeMesh background;
   std::optional<Eigen::Vector3i> resolution;  ///< nullopt: a background mesh file
   VolumeMesh embedded;
+  /// Per embedded tetrahedron, the tetrahedron of the instance it was handed by that it
+  /// lies in (a cut's pieces); empty when the tetrahedra are that instance's own.
+  std::vector<int> parent_tetrahedron;
 };
 
 class FcmMethod final : public EmbeddedSurfaceMethod {
@@ -45,6 +50,7 @@ public:
       background = handed->background;
       resolution_ = handed->resolution;
       embedded_ = handed->embedded;
+      parent_tetrahedron_ = handed->parent_tetrahedron;
     } else {
       // The background grid over the geometry's bounds, or the user's mesh (§3.2).
       BackgroundMesh generated = background_mesh(spec, geometry.bounds);
@@ -78,6 +84,10 @@ public:
                                     materials_.ids_of(corner_centroids(background)), scene.dirichlet, spec.options,
                                     file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_) : NodeRegionFilter{});
     warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
+    for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
+      material_volume_ += fcm_.volume_fractions[cell] *
+                          volume_mesh_volume({fcm_.mesh.element_type, fcm_.mesh.nodes,
+                                              fcm_.mesh.cells.row(static_cast<Eigen::Index>(cell))});
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The surface every method deforms: the scene's own, else the boundary of the
@@ -118,11 +128,36 @@ public:
   }
   std::vector<std::string> warnings() const override { return warnings_; }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{background_, resolution_, embedded_});
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{background_, resolution_, embedded_, {}});
   }
+  /// The material's volume Σ vol(K ∩ Ω) over the kept cells: without the fictitious
+  /// parts that the stabilisation weighs by α (§5.3), which a cut adds to each new piece.
+  std::optional<double> volume() const override { return material_volume_; }
+  std::string cut_refusal() const override {
+    return pieces_ ? "" : "it cuts with topology-aware cells only (/discretization/fcm/topology_aware is false)";
+  }
+  /// The blade cuts the embedded tetrahedra (issue #33); the rebuild finds the cells'
+  /// pieces again, so a cell whose material the blade separates gets a node copy per side.
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    TetrahedralCut cut = cut_tetrahedral_mesh(embedded_, blade);
+    facts = {{"crossed_tetrahedra", cut.crossed_tetrahedra}, {"separated_faces", cut.separated_faces},
+             {"duplicated_nodes", cut.duplicated_nodes},     {"snapped_nodes", cut.snapped_nodes},
+             {"flat_tetrahedra", cut.flat_tetrahedra},       {"tetrahedra", cut.mesh.cells.rows()}};
+    return std::make_shared<MeshOf<FcmMesh>>(
+        FcmMesh{background_, resolution_, std::move(cut.mesh), std::move(cut.parent_tetrahedron)});
+  }
+  /// Nodal values at the nodes (transfer_to_nodes); after a cut a node copy takes the
+  /// values of the copy its material came from, which a position cannot tell apart.
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FcmMethod&>(previous);
-    return transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
+    Eigen::MatrixXd moved = transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
+    if (!pieces_ || !before.pieces_) return moved;
+    const std::vector<int> origin = node_origins(before);
+    for (std::size_t node = 0; node < origin.size(); ++node)
+      if (origin[node] >= 0)
+        moved.middleRows(3 * static_cast<Eigen::Index>(node), 3) =
+            fields.middleRows(3 * static_cast<Eigen::Index>(origin[node]), 3);
+    return moved;
   }
   /// The stiffness rules at any requested strength: cut cells' rules are simplified to
   /// match the moments up to that strength only (§4), so no stronger rule is at hand. The
@@ -154,6 +189,37 @@ public:
   }
 
 private:
+  /// Per kept node, the kept node of `before` (the instance this one was handed the
+  /// embedded tetrahedra by) it copies: a kept cell's tetrahedra lie in one piece of the
+  /// same background cell before, whose kept cell has the node at the same corner; −1
+  /// where that piece was not kept.
+  std::vector<int> node_origins(const FcmMethod& before) const {
+    const PieceMesh& old_pieces = *before.pieces_;
+    std::vector<int> old_kept(old_pieces.mesh.cells.rows(), -1);
+    for (std::size_t cell = 0; cell < before.fcm_.background_cells.size(); ++cell)
+      old_kept[before.fcm_.background_cells[cell]] = static_cast<int>(cell);
+    std::vector<std::vector<int>> old_pieces_of(static_cast<std::size_t>(background_cells_));
+    for (std::size_t piece = 0; piece < old_pieces.background_cell.size(); ++piece)
+      old_pieces_of[old_pieces.background_cell[piece]].push_back(static_cast<int>(piece));
+    std::vector<int> origin(static_cast<std::size_t>(fcm_.mesh.nodes.rows()), -1);
+    for (std::size_t cell = 0; cell < fcm_.background_cells.size(); ++cell) {
+      const int piece = fcm_.background_cells[cell];
+      const std::vector<int>& tetrahedra = pieces_->tetrahedra[piece];
+      if (tetrahedra.empty()) continue;
+      const int parent = parent_tetrahedron_.empty() ? tetrahedra.front() : parent_tetrahedron_[tetrahedra.front()];
+      for (const int old_piece : old_pieces_of[pieces_->background_cell[piece]]) {
+        const std::vector<int>& old_tetrahedra = old_pieces.tetrahedra[old_piece];
+        if (!std::binary_search(old_tetrahedra.begin(), old_tetrahedra.end(), parent)) continue;
+        const int old_cell = old_kept[old_piece];
+        if (old_cell >= 0)
+          for (Eigen::Index k = 0; k < fcm_.mesh.cells.cols(); ++k)
+            origin[fcm_.mesh.cells(static_cast<Eigen::Index>(cell), k)] = before.fcm_.mesh.cells(old_cell, k);
+        break;
+      }
+    }
+    return origin;
+  }
+
   SceneMaterials materials_;
   std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
   VolumeMesh background_;                      ///< the background cells before topology-aware splitting
@@ -161,10 +227,12 @@ private:
   int quadrature_strength_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
   VolumeMesh embedded_;
+  std::vector<int> parent_tetrahedron_;  ///< FcmMesh::parent_tetrahedron of the mesh this was built on
   std::optional<PieceMesh> pieces_;  ///< topology-aware cells only
   int split_cells_ = 0;
   double topology_seconds_ = 0;
   FcmDiscretization fcm_;
+  double material_volume_ = 0;
   std::vector<std::string> warnings_;
   double quadrature_seconds_ = 0;
 };

@@ -120,7 +120,14 @@ TEST(Events, ACutIsSummarisedAndAMethodThatCannotCutRefusesIt) {
   EXPECT_EQ(event["facts"]["crossed_cells"], 1);  // the plane x = 0.55 crosses one of dg's 10 cells
   EXPECT_EQ(summary["dofs"], event["dofs"]["after"]);
   EXPECT_EQ(summary["elements"]["k2_polyhedron"], 11);
-  for (const std::string method : {"fem", "fcm"}) {
+  // fcm cuts its embedded tetrahedra: the cell [0.5, 0.6] of its 10 becomes two pieces.
+  const auto fcm_out = fresh_directory("events-cut-fcm") / "run";
+  const auto fcm = run_altfem({"run", scene, "--method", "fcm", "--out", fcm_out.string()});
+  ASSERT_EQ(fcm.exit_code, 0) << fcm.err;
+  const nlohmann::json fcm_summary = read_summary(fcm_out);
+  EXPECT_GT(fcm_summary["events"][0]["facts"]["crossed_tetrahedra"].get<int>(), 0);
+  EXPECT_EQ(fcm_summary["elements"]["hex20"], 11);
+  for (const std::string method : {"fem"}) {
     const auto refused_out = fresh_directory("events-cut-" + method) / "run";
     const auto refused = run_altfem({"run", scene, "--method", method, "--out", refused_out.string()});
     EXPECT_EQ(refused.exit_code, 2) << refused.err;

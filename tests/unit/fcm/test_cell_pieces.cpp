@@ -9,6 +9,7 @@
 #include <set>
 
 #include "fcm/cell_pieces.hpp"
+#include "fcm/embedded_mesh.hpp"
 #include "fcm/cut_cell_rule.hpp"
 #include "fcm/piece_basis_evaluator.hpp"
 #include "fcm/piece_mesh.hpp"
@@ -109,9 +110,9 @@ TEST_P(TwoBars, EachCellHoldsTwoPiecesAndEveryNodeTwoCopies) {
 
 INSTANTIATE_TEST_SUITE_P(EmbeddedCellsAlongTheBars, TwoBars, ::testing::Values(2, 3));
 
-// Every tetrahedron with nodes of its own (a soup, as some mesh files are): faces are
-// matched by position, so the pieces are those of the shared-node mesh.
-TEST(CellPieces, DuplicatedNodesAreMatchedByPosition) {
+// Every tetrahedron with nodes of its own (a soup, as some mesh files are): welded, its
+// pieces are those of the shared-node mesh; unwelded, every tetrahedron is a piece.
+TEST(CellPieces, ASoupWeldedHasThePiecesOfTheSharedNodeMesh) {
   const VolumeMesh shared = box_tetrahedra({0.5, 0, 0}, {2, 0.4, 1}, Eigen::Vector3i(3, 1, 2));
   VolumeMesh soup{ElementType::tet4, Eigen::MatrixXd(4 * shared.cells.rows(), 3),
                   Eigen::MatrixXi(shared.cells.rows(), 4)};
@@ -122,10 +123,13 @@ TEST(CellPieces, DuplicatedNodesAreMatchedByPosition) {
     }
   const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
                                                 Eigen::Vector3i(2, 1, 1), ElementType::hex8);
-  const CellPieces pieces = find_cell_pieces(background, soup);
+  const VolumeMesh welded = weld_coincident_nodes(soup);
+  EXPECT_EQ(welded.nodes.rows(), shared.nodes.rows());
+  const CellPieces pieces = find_cell_pieces(background, welded);
   EXPECT_EQ(pieces.piece_count(), 2);
   EXPECT_EQ(pieces.tetrahedra, find_cell_pieces(background, shared).tetrahedra);
   EXPECT_EQ(pieces.neighbours[0][0], (std::vector<PieceReference>{{1, 0}}));
+  EXPECT_GT(find_cell_pieces(background, soup).piece_count(), 2);
 }
 
 // A box touching its cell's face from inside leaves the neighbour without material.
