@@ -151,7 +151,7 @@ public:
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FcmMethod&>(previous);
     Eigen::MatrixXd moved = transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
-    if (!pieces_ || !before.pieces_) return moved;
+    if (!pieces_ || !before.pieces_ || !handed_by(before)) return moved;
     const std::vector<int> origin = node_origins(before);
     for (std::size_t node = 0; node < origin.size(); ++node)
       if (origin[node] >= 0)
@@ -189,6 +189,15 @@ public:
   }
 
 private:
+  /// Whether this instance was built on `before`'s background and embedded tetrahedra,
+  /// or on a cut of them (another background, e.g. a finer one, shares no lineage).
+  bool handed_by(const FcmMethod& before) const {
+    const auto same = [](const auto& a, const auto& b) { return a.rows() == b.rows() && a.cols() == b.cols() && a == b; };
+    if (!same(background_.cells, before.background_.cells) || !same(background_.nodes, before.background_.nodes))
+      return false;
+    if (parent_tetrahedron_.empty()) return same(embedded_.cells, before.embedded_.cells);
+    return *std::max_element(parent_tetrahedron_.begin(), parent_tetrahedron_.end()) < before.embedded_.cells.rows();
+  }
   /// Per kept node, the kept node of `before` (the instance this one was handed the
   /// embedded tetrahedra by) it copies: a kept cell's tetrahedra lie in one piece of the
   /// same background cell before, whose kept cell has the node at the same corner; −1
