@@ -15,8 +15,9 @@ VolumeMesh weld_coincident_nodes(const VolumeMesh& mesh) {
   std::vector<int> welded(static_cast<std::size_t>(mesh.nodes.rows()));
   std::vector<Eigen::Index> kept;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
-    const auto [entry, added] = first_at.emplace(
-        std::array<double, 3>{mesh.nodes(node, 0), mesh.nodes(node, 1), mesh.nodes(node, 2)}, static_cast<int>(kept.size()));
+    const auto [entry, added] =
+        first_at.emplace(std::array<double, 3>{mesh.nodes(node, 0), mesh.nodes(node, 1), mesh.nodes(node, 2)},
+                         static_cast<int>(kept.size()));
     if (added) kept.push_back(node);
     welded[node] = entry->second;
   }

@@ -85,9 +85,9 @@ public:
                                     file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_) : NodeRegionFilter{});
     warnings_ = conditions_cutting_cells(fcm_.mesh, scene.dirichlet);
     for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
-      material_volume_ += fcm_.volume_fractions[cell] *
-                          volume_mesh_volume({fcm_.mesh.element_type, fcm_.mesh.nodes,
-                                              fcm_.mesh.cells.row(static_cast<Eigen::Index>(cell))});
+      material_volume_ +=
+          fcm_.volume_fractions[cell] * volume_mesh_volume({fcm_.mesh.element_type, fcm_.mesh.nodes,
+                                                            fcm_.mesh.cells.row(static_cast<Eigen::Index>(cell))});
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // The surface every method deforms: the scene's own, else the boundary of the
@@ -150,7 +150,8 @@ public:
   /// values of the copy its material came from, which a position cannot tell apart.
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FcmMethod&>(previous);
-    Eigen::MatrixXd moved = transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
+    Eigen::MatrixXd moved =
+        transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before.basis_evaluator(), fields);
     if (!pieces_ || !before.pieces_ || !handed_by(before)) return moved;
     const std::vector<int> origin = node_origins(before);
     for (std::size_t node = 0; node < origin.size(); ++node)
@@ -192,7 +193,9 @@ private:
   /// Whether this instance was built on `before`'s background and embedded tetrahedra,
   /// or on a cut of them (another background, e.g. a finer one, shares no lineage).
   bool handed_by(const FcmMethod& before) const {
-    const auto same = [](const auto& a, const auto& b) { return a.rows() == b.rows() && a.cols() == b.cols() && a == b; };
+    const auto same = [](const auto& a, const auto& b) {
+      return a.rows() == b.rows() && a.cols() == b.cols() && a == b;
+    };
     if (!same(background_.cells, before.background_.cells) || !same(background_.nodes, before.background_.nodes))
       return false;
     if (parent_tetrahedron_.empty()) return same(embedded_.cells, before.embedded_.cells);
@@ -237,7 +240,7 @@ private:
   std::shared_ptr<IntersectionStatistics> statistics_;
   VolumeMesh embedded_;
   std::vector<int> parent_tetrahedron_;  ///< FcmMesh::parent_tetrahedron of the mesh this was built on
-  std::optional<PieceMesh> pieces_;  ///< topology-aware cells only
+  std::optional<PieceMesh> pieces_;      ///< topology-aware cells only
   int split_cells_ = 0;
   double topology_seconds_ = 0;
   FcmDiscretization fcm_;

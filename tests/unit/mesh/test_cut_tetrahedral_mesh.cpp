@@ -165,8 +165,8 @@ TEST(CutTetrahedralMesh, APlaneAlongFacesKeepsEveryRowAndSeparatesTheSides) {
 }
 
 // 200 seeded planes of every degenerate kind on a 3³ grid of Kuhn tetrahedra, each
-// valid; and every thirteenth cut (every kind in turn) made on the previous one's result, so cuts of cuts (pieces
-// of pieces, copies of copies) are exercised too.
+// valid; and every thirteenth of the first 200 (every kind in turn) made on the previous one's result, so cuts of cuts
+// (pieces of pieces, copies of copies) are exercised too.
 TEST(CutTetrahedralMesh, SeededPlanesAndCutsOfCutsGiveValidMeshes) {
   const VolumeMesh grid = cube_tetrahedra(3);
   VolumeMesh chained = grid;
@@ -178,7 +178,7 @@ TEST(CutTetrahedralMesh, SeededPlanesAndCutsOfCutsGiveValidMeshes) {
     ASSERT_NO_THROW(cut = cut_tetrahedral_mesh(grid, plane));
     ASSERT_TRUE(is_valid_cut(grid, cut, plane));
     flat += cut.flat_tetrahedra;
-    if (trial++ % 13 == 0) {
+    if (trial++ % 13 == 0 && trial <= 200) {
       ASSERT_NO_THROW(cut = cut_tetrahedral_mesh(chained, plane));
       ASSERT_TRUE(is_valid_cut(chained, cut, plane));
       flat += cut.flat_tetrahedra;
