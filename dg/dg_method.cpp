@@ -202,8 +202,8 @@ public:
         surface_.embedding = std::make_unique<StitchedEmbedding>(evaluator, volume_mesh_.nodes, *lagrange_, vertices);
         break;
       case Embedding::mls:
-        surface_.embedding =
-            std::make_unique<MlsEmbedding>(evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_), vertices);
+        surface_.embedding = std::make_unique<MlsEmbedding>(evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_),
+                                                            vertices, MlsOptions{}, cells_at_nodes(mesh_));
         break;
     }
   }

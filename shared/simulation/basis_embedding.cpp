@@ -6,7 +6,8 @@
 
 namespace altfem {
 
-BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points) {
+BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
+                               const std::vector<std::vector<int>>& point_elements) {
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(evaluator.element_count()));
   for (int e = 0; e < evaluator.element_count(); ++e) boxes[e] = evaluator.element_bounds(e);
   const PointLocator locator(std::move(boxes));
@@ -18,7 +19,8 @@ BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eig
   std::vector<double> values;
   for (Eigen::Index point = 0; point < points.rows(); ++point) {
     const Eigen::Vector3d x = points.row(point).transpose();
-    locator.candidates(x, slack, candidates);
+    if (point_elements.empty()) locator.candidates(x, slack, candidates);
+    else candidates = point_elements[point];
     const size_t begin = basis_.size();
     int containing = 0;
     for (int element : candidates) {

@@ -44,7 +44,12 @@ class BasisEmbedding final : public PointEmbedding {
 public:
   /// points: #points × 3. Points outside every element are extrapolated from the
   /// nearest one (Mesh_3's surface only approximates the input); none is dropped.
-  BasisEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& points);
+  /// `point_elements` (optional, #points lists): the elements a point is evaluated in
+  /// instead of every element containing its position — for mesh nodes, the elements
+  /// holding the node, so that the copies a cut made of a node (one position, two sides)
+  /// each take their own side.
+  BasisEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& points,
+                 const std::vector<std::vector<int>>& point_elements = {});
 
   /// Displacement at every point (#points × 3) from the coefficients u (#dofs; basis
   /// function a carries DOFs 3a..3a+2).

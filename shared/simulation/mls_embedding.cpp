@@ -88,10 +88,11 @@ struct PointWeights {
 }  // namespace
 
 MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples,
-                           const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options)
-    : stitched_(basis, samples) {
+                           const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options,
+                           const std::vector<std::vector<int>>& sample_elements)
+    : stitched_(basis, samples, sample_elements) {
   // Elements joined through the samples they share (a sample evaluates every element
-  // containing it), as sets of basis functions; a point's piece is its element's.
+  // holding it, or containing it), as sets of basis functions; a point's piece is its element's.
   const BasisEmbedding located(basis, points);
   DisjointSets pieces(
       std::max(basis_function_bound(stitched_, samples.rows()), basis_function_bound(located, points.rows())));
@@ -180,6 +181,15 @@ Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh) {
       spacing[b] = std::max(spacing[b], length);
     }
   return spacing;
+}
+
+std::vector<std::vector<int>> cells_at_nodes(const PolyhedralMesh& mesh) {
+  std::vector<std::vector<int>> cells(static_cast<std::size_t>(mesh.nodes.rows()));
+  for (int cell = 0; cell < mesh.cell_count(); ++cell)
+    for (const int face : mesh.cell_faces[cell])
+      for (const int node : mesh.faces[face])
+        if (cells[node].empty() || cells[node].back() != cell) cells[node].push_back(cell);
+  return cells;
 }
 
 Eigen::MatrixXd MlsEmbedding::displacement(const Eigen::VectorXd& u) const {

@@ -38,8 +38,13 @@ public:
   /// (e.g. the longest mesh edge at the node); points: #points × 3, the embedded points.
   /// Where fewer than four non-coplanar samples lie within the support of a point, the
   /// support is enlarged for that point. Throws NumericalError if it stays degenerate.
+  /// sample_elements (optional, #samples lists): the elements holding each sample node
+  /// (cells_at_nodes), which the stitching averages and the pieces are joined through,
+  /// instead of every element containing the sample's position: after a cut, the copies
+  /// of a node on the blade share a position but not a side.
   MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples, const Eigen::VectorXd& spacing,
-               const Eigen::MatrixXd& points, const MlsOptions& options = {});
+               const Eigen::MatrixXd& points, const MlsOptions& options = {},
+               const std::vector<std::vector<int>>& sample_elements = {});
 
   /// Displacement at every embedded point (#points × 3) from the coefficients u.
   Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const override;
@@ -61,5 +66,8 @@ private:
 /// Per node of a polyhedral mesh the longest mesh edge at it (#nodes): the MLS sample
 /// spacing at the mesh nodes.
 Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh);
+/// Per node of a polyhedral mesh the cells holding it (ascending): MlsEmbedding's
+/// sample_elements when the mesh's cells are the evaluator's elements.
+std::vector<std::vector<int>> cells_at_nodes(const PolyhedralMesh& mesh);
 
 }  // namespace altfem

@@ -13,6 +13,7 @@
 #include "dg/monomial_basis_evaluator.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/mls_embedding.hpp"
@@ -104,6 +105,38 @@ TEST(DgEmbedding, MlsAndStitchingAreContinuousAcrossElementFacesPerElementEvalua
     EXPECT_LT(jumps[1], 1e4 * epsilon);
     EXPECT_LT(jumps[2], 1e4 * epsilon);
   }
+}
+
+// A cut along the faces x = 1/3 (cut_polyhedral_mesh) separates the sides: each side's
+// nodes on the blade are copies of their own, and with the cells holding each node as
+// its sample elements the MLS embedding stitches and interpolates each side from its own
+// samples only, so one side at rest and the other moved rigidly are each reproduced
+// exactly up to the blade. By the samples' positions (no sample elements), the copies on
+// the blade averaged both sides and blurred 391 of these points.
+TEST(DgEmbedding, MlsKeepsTheSidesOfACutApart) {
+  const VolumeMesh volume = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
+                                            {3, 3, 3}, ElementType::hex8);
+  const CuttingPlane blade{Eigen::Vector3d(1.0 / 3.0, 0, 0), Eigen::Vector3d::UnitX()};
+  const PolyhedralMesh mesh = cut_polyhedral_mesh(polyhedral_mesh_from_volume_mesh(volume), blade).mesh;
+  const DgLinearSystem system(mesh_cells(mesh), mesh_faces(mesh), DgSettings{});
+  const MonomialBasisEvaluator evaluator(mesh, system);
+  const Eigen::MatrixXd points = random_points(400);
+  const auto beyond = [](const Eigen::Vector3d& x) { return x.x() > 1.0 / 3.0; };
+  const Eigen::VectorXd u = system.interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return beyond(x) ? Eigen::Vector3d(0.1, -0.2, -1.0) : Eigen::Vector3d::Zero();
+  });
+  const MlsEmbedding mls(evaluator, mesh.nodes, longest_edge_at_nodes(mesh), points, MlsOptions{},
+                         cells_at_nodes(mesh));
+  const Eigen::MatrixXd displacement = mls.displacement(u);
+  int checked = 0;
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    if (std::abs(points(p, 0) - 1.0 / 3.0) < 1e-6) continue;
+    const Eigen::RowVector3d expected =
+        beyond(points.row(p).transpose()) ? Eigen::RowVector3d(0.1, -0.2, -1.0) : Eigen::RowVector3d::Zero();
+    EXPECT_LE((displacement.row(p) - expected).cwiseAbs().maxCoeff(), 1e-12) << "point " << points.row(p);
+    ++checked;
+  }
+  EXPECT_GT(checked, 390);
 }
 
 }  // namespace
