@@ -38,7 +38,8 @@ def read_rows(path):
         for key in ("dofs", "elements", "quadrature_points", "steps", "newton_iterations", "linear_iterations",
                     "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
             row[key] = number(row[key])
-        for key in ("report_error", "relative_rms_error", "field_l2_error", "field_h1_error"):  # absent from older tables
+        for key in ("report_error", "relative_rms_error", "field_l2_error", "field_h1_error", "events",
+                    *EVENT_PHASES):  # absent from older tables
             row[key] = number(row.get(key))
         row["series"] = f"{row['method']} {row['element']}".strip()
     return rows
@@ -171,6 +172,27 @@ def field_error_section(rows, out):
             "by the method's own basis and quadrature (summary.json's `field_errors`).", "",
             "![L2 error against DOFs](field_l2_vs_dofs.png)", "", "![H1 error against DOFs](field_h1_vs_dofs.png)", "",
             "\n".join(lines), "", "Fitted rates (error ~ h^rate): " + (rates or "one run per series"), ""]
+
+
+EVENT_PHASES = ("event_geometry_s", "event_integration_s", "event_pattern_s", "event_transfer_s")
+
+
+def event_section(rows, measure):
+    """What the scene's events (cuts, releases) cost each run, beside its error at the end, after them."""
+    with_events = [r for r in rows if r["status"] == "ok" and r["events"] > 0]
+    if not with_events:
+        return []
+    lines = ["| run | events | geometry [s] | integration [s] | pattern [s] | transfer [s] | events / total | "
+             f"error at the end |", "|---|---|---|---|---|---|---|---|"]
+    for r in sorted(with_events, key=lambda r: (r["series"], r["dofs"])):
+        spent = sum(r[key] for key in EVENT_PHASES)
+        error = r[measure.column] if measure else math.nan
+        lines.append(f"| {r['label']} | {r['events']:.0f} | " + " | ".join(f"{r[key]:.3g}" for key in EVENT_PHASES) +
+                     f" | {spent / r['total_s']:.1%} | {'' if math.isnan(error) else f'{error:.3g}'} |")
+    return ["## Events", "",
+            "The scene's events per run (summary.json's `events`): wall seconds per phase summed over them — "
+            "geometry (cutting the mesh), integration (the rebuilt method), pattern (sparsity and solver), "
+            "transfer (the state) — and the run's error at its end, after them.", "", "\n".join(lines), ""]
 
 
 def phase_times(row):
@@ -323,6 +345,7 @@ def write_report(rows, out, target_arg):
                  "Fitted rates (error ~ h^rate): " +
                  ", ".join(f"{name} {rate:.2f}" for name, rate in sorted(rates.items()) if rate is not None), ""]
     text += field_error_section(rows, out)
+    text += event_section(rows, measure if runs else None)
     if any(r["status"] == "ok" for r in rows):
         plot_time_breakdown(rows, os.path.join(out, "time_breakdown.png"))
         text += ["## Time per phase", "", "![time breakdown](time_breakdown.png)", ""]

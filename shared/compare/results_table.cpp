@@ -35,42 +35,48 @@ using Member = std::variant<std::string RunRecord::*, bool RunRecord::*, int Run
                             double RunRecord::*, double PhaseTimings::*>;
 
 const std::vector<std::pair<std::string, Member>>& columns() {
-  static const std::vector<std::pair<std::string, Member>> table{{"hash", &RunRecord::hash},
-                                                                 {"method", &RunRecord::method},
-                                                                 {"element", &RunRecord::element},
-                                                                 {"label", &RunRecord::label},
-                                                                 {"overrides", &RunRecord::overrides},
-                                                                 {"is_reference", &RunRecord::is_reference},
-                                                                 {"status", &RunRecord::status},
-                                                                 {"exit_code", &RunRecord::exit_code},
-                                                                 {"message", &RunRecord::message},
-                                                                 {"dofs", &RunRecord::dofs},
-                                                                 {"elements", &RunRecord::elements},
-                                                                 {"quadrature_points", &RunRecord::quadrature_points},
-                                                                 {"steps", &RunRecord::steps},
-                                                                 {"newton_iterations", &RunRecord::newton_iterations},
-                                                                 {"linear_iterations", &RunRecord::linear_iterations},
-                                                                 {"setup_s", &PhaseTimings::setup},
-                                                                 {"quadrature_s", &PhaseTimings::quadrature},
-                                                                 {"assembly_s", &PhaseTimings::assembly},
-                                                                 {"analysis_s", &PhaseTimings::analysis},
-                                                                 {"factorisation_s", &PhaseTimings::factorisation},
-                                                                 {"solve_s", &PhaseTimings::solve},
-                                                                 {"total_s", &PhaseTimings::total},
-                                                                 {"wall_s", &RunRecord::wall_seconds},
-                                                                 {"peak_memory_mib", &RunRecord::peak_memory_mib},
-                                                                 {"rms_error", &RunRecord::rms_error},
-                                                                 {"max_error", &RunRecord::max_error},
-                                                                 {"relative_rms_error", &RunRecord::relative_rms_error},
-                                                                 {"report_error", &RunRecord::report_error},
-                                                                 {"field_l2_error", &RunRecord::field_l2_error},
-                                                                 {"field_h1_error", &RunRecord::field_h1_error},
-                                                                 {"scene", &RunRecord::scene},
-                                                                 {"date", &RunRecord::date},
-                                                                 {"cpu", &RunRecord::cpu},
-                                                                 {"cores", &RunRecord::cores},
-                                                                 {"threads", &RunRecord::threads},
-                                                                 {"blas", &RunRecord::blas}};
+  static const std::vector<std::pair<std::string, Member>> table{
+      {"hash", &RunRecord::hash},
+      {"method", &RunRecord::method},
+      {"element", &RunRecord::element},
+      {"label", &RunRecord::label},
+      {"overrides", &RunRecord::overrides},
+      {"is_reference", &RunRecord::is_reference},
+      {"status", &RunRecord::status},
+      {"exit_code", &RunRecord::exit_code},
+      {"message", &RunRecord::message},
+      {"dofs", &RunRecord::dofs},
+      {"elements", &RunRecord::elements},
+      {"quadrature_points", &RunRecord::quadrature_points},
+      {"steps", &RunRecord::steps},
+      {"newton_iterations", &RunRecord::newton_iterations},
+      {"linear_iterations", &RunRecord::linear_iterations},
+      {"setup_s", &PhaseTimings::setup},
+      {"quadrature_s", &PhaseTimings::quadrature},
+      {"assembly_s", &PhaseTimings::assembly},
+      {"analysis_s", &PhaseTimings::analysis},
+      {"factorisation_s", &PhaseTimings::factorisation},
+      {"solve_s", &PhaseTimings::solve},
+      {"total_s", &PhaseTimings::total},
+      {"events", &RunRecord::events},
+      {"event_geometry_s", &RunRecord::event_geometry_seconds},
+      {"event_integration_s", &RunRecord::event_integration_seconds},
+      {"event_pattern_s", &RunRecord::event_pattern_seconds},
+      {"event_transfer_s", &RunRecord::event_transfer_seconds},
+      {"wall_s", &RunRecord::wall_seconds},
+      {"peak_memory_mib", &RunRecord::peak_memory_mib},
+      {"rms_error", &RunRecord::rms_error},
+      {"max_error", &RunRecord::max_error},
+      {"relative_rms_error", &RunRecord::relative_rms_error},
+      {"report_error", &RunRecord::report_error},
+      {"field_l2_error", &RunRecord::field_l2_error},
+      {"field_h1_error", &RunRecord::field_h1_error},
+      {"scene", &RunRecord::scene},
+      {"date", &RunRecord::date},
+      {"cpu", &RunRecord::cpu},
+      {"cores", &RunRecord::cores},
+      {"threads", &RunRecord::threads},
+      {"blas", &RunRecord::blas}};
   return table;
 }
 
@@ -174,7 +180,7 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
       const auto found = std::find(header.begin(), header.end(), name);
       // These came later: a cached record.csv from before them has none (NaN).
       const bool later = name == "report_error" || name == "field_l2_error" || name == "field_h1_error" ||
-                         name == "relative_rms_error";
+                         name == "relative_rms_error" || name == "events" || name.starts_with("event_");
       if (found == header.end() && later) continue;
       if (found == header.end()) throw InputError(input_message(where, "", "missing column '" + name + "'"));
       set_field(record, member, fields[found - header.begin()], where, name);

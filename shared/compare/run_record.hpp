@@ -28,6 +28,12 @@ struct RunRecord {
   // What it cost.
   long long dofs = 0, elements = 0, quadrature_points = 0, steps = 0, newton_iterations = 0, linear_iterations = 0;
   PhaseTimings timings;
+  /// The scene's events (summary.json's `events`): how many acted, and their wall seconds
+  /// per phase summed over them (cutting the mesh, integrating the rebuilt method,
+  /// the new sparsity and solver, transferring the state).
+  int events = 0;
+  double event_geometry_seconds = 0, event_integration_seconds = 0, event_pattern_seconds = 0,
+         event_transfer_seconds = 0;
   double wall_seconds = 0;     ///< measured by compare around the process
   double peak_memory_mib = 0;  ///< wait4's ru_maxrss
   // How accurate it is: surface error against the reference run, over the reference's bounding-box diagonal.

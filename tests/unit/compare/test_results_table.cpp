@@ -6,6 +6,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/compare/results_table.hpp"
+#include "shared/compare/run_record.hpp"
 
 namespace altfem {
 namespace {
@@ -26,6 +27,11 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   ok.newton_iterations = 2;
   ok.linear_iterations = 7;
   ok.timings = {0.1, 0.2, 1.0 / 3.0, 0.4, 0.5, 0.6, 2.1};
+  ok.events = 2;
+  ok.event_geometry_seconds = 1.0 / 9.0;
+  ok.event_integration_seconds = 0.25;
+  ok.event_pattern_seconds = 0.125;
+  ok.event_transfer_seconds = 1e-5;
   ok.wall_seconds = 2.25;
   ok.peak_memory_mib = 28.5;
   ok.rms_error = 1.2345678901234567e-7;
@@ -71,8 +77,47 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   EXPECT_EQ(read[0].relative_rms_error, ok.relative_rms_error);
   EXPECT_EQ(read[0].field_l2_error, ok.field_l2_error);
   EXPECT_EQ(read[0].field_h1_error, ok.field_h1_error);
+  EXPECT_EQ(read[0].events, 2);
+  EXPECT_EQ(read[0].event_geometry_seconds, ok.event_geometry_seconds);
+  EXPECT_EQ(read[0].event_transfer_seconds, ok.event_transfer_seconds);
   EXPECT_TRUE(std::isnan(read[1].rms_error));
   std::filesystem::remove(file);
+}
+
+// The events of a run's summary.json: counted, and their seconds per phase summed.
+TEST(ResultsTable, AddsUpTheEventsOfASummary) {
+  const auto event = [](double geometry, double integration, double pattern, double transfer) {
+    return nlohmann::json{
+        {"kind", "cut"},
+        {"seconds",
+         {{"geometry", geometry}, {"integration", integration}, {"pattern", pattern}, {"transfer", transfer}}}};
+  };
+  nlohmann::json summary = {{"dofs", 10},
+                            {"elements", {{"hex20", 2}}},
+                            {"quadrature_points", 54},
+                            {"steps", 3},
+                            {"newton_iterations", 3},
+                            {"linear_iterations", 0},
+                            {"timings_s",
+                             {{"setup", 0.1},
+                              {"quadrature", 0.1},
+                              {"assembly", 0.1},
+                              {"analysis", 0.1},
+                              {"factorisation", 0.1},
+                              {"solve", 0.1},
+                              {"total", 0.6}}},
+                            {"events", {event(0.5, 1.0, 0.25, 0.125), event(0.25, 2.0, 0.5, 0.375)}}};
+  RunRecord record;
+  add_summary(record, summary);
+  EXPECT_EQ(record.events, 2);
+  EXPECT_EQ(record.event_geometry_seconds, 0.75);
+  EXPECT_EQ(record.event_integration_seconds, 3.0);
+  EXPECT_EQ(record.event_pattern_seconds, 0.75);
+  EXPECT_EQ(record.event_transfer_seconds, 0.5);
+  summary.erase("events");
+  add_summary(record, summary);
+  EXPECT_EQ(record.events, 0);
+  EXPECT_EQ(record.event_integration_seconds, 0.0);
 }
 
 TEST(ResultsTable, RejectsMissingColumnsAndBadNumbers) {
