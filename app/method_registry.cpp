@@ -4,7 +4,7 @@
 #include "fcm/fcm_method.hpp"
 #include "polyhedral/harmonic_method.hpp"
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 
 namespace altfem::cli {
 

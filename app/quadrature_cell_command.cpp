@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "app/commands.hpp"
-#include "fcm/cell_rules.hpp"
 #include "fcm/embedded_mesh.hpp"
 #include "shared/common/error.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/io/unstructured_grid.hpp"
@@ -53,7 +53,7 @@ Eigen::Vector3i parse_triple(const std::string& text, const std::string& key, in
 /// The rules of `cells` as one VTU of vertices: physical positions, the reference
 /// weight, the physical weight w·|J| and the background cell index.
 void write_rules(const std::filesystem::path& path, const VolumeMesh& background,
-                 const std::vector<Eigen::Index>& cells, const fcm::CellRules& rules) {
+                 const std::vector<Eigen::Index>& cells, const CellRules& rules) {
   UnstructuredGrid grid;
   Eigen::Index total = 0;
   for (const auto& cell : rules.cells) total += cell.rule.points.rows();
@@ -117,13 +117,13 @@ int quadrature_cell_command(const std::filesystem::path& scene_file, const std::
   VolumeMesh selected{grid.element_type, grid.nodes, grid.cells.middleRows(first, per_cube)};
   for (int i = 0; i < per_cube; ++i) cells.push_back(first + i);
 
-  fcm::CellRuleOptions options;
+  CellRuleOptions options;
   options.order = order;
   options.method = method;
   options.simplify = false;
-  const fcm::CellRules initial = fcm::compute_cell_rules(selected, embedded, options);
+  const CellRules initial = compute_cell_rules(selected, embedded, options);
   options.simplify = true;
-  const fcm::CellRules simplified = fcm::compute_cell_rules(selected, embedded, options);
+  const CellRules simplified = compute_cell_rules(selected, embedded, options);
 
   std::filesystem::create_directories(output);
   const std::filesystem::path initial_path = output / "initial_rule.vtu",

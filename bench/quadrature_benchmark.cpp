@@ -26,8 +26,8 @@
 
 #include "bench/median.hpp"
 #include "bench/process_usage.hpp"
-#include "fcm/cell_rules.hpp"
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/geometry/analytic_shape.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -55,8 +55,8 @@ QuadratureRule hex20_cut_cell_rule() {
     for (int c = 0; c < 4; ++c)
       tetrahedra[t].row(c) = (rotation * box.nodes.row(box.cells(t, c)).transpose()).transpose();
   const ReferenceElement& element = reference_element(ElementType::hex20);
-  const fcm::CellGeometry cell(ElementType::hex20, element.nodes().topRows(8));
-  return fcm::intersection_rule(cell, tetrahedra, 4).rule;
+  const CellGeometry cell(ElementType::hex20, element.nodes().topRows(8));
+  return intersection_rule(cell, tetrahedra, 4).rule;
 }
 
 void simplify_one_cell(int repetitions, const std::vector<SimplificationMethod>& methods) {
@@ -100,15 +100,15 @@ void hollow_cylinder(int repetitions, const std::vector<SimplificationMethod>& m
               static_cast<long long>(embedded.cells.rows()), seconds_since(start), omp_get_max_threads());
   for (const SimplificationMethod method : methods) {
     std::vector<double> generation, total, total_cpu;
-    fcm::CellRules rules;
+    CellRules rules;
     const double cpu_start = bench::process_cpu_seconds();
     for (int r = 0; r < repetitions; ++r) {
       start = std::chrono::steady_clock::now();
-      rules = fcm::compute_cell_rules(grid, embedded, {4, false});
+      rules = compute_cell_rules(grid, embedded, {4, false});
       generation.push_back(seconds_since(start));
       start = std::chrono::steady_clock::now();
       const double run_cpu_start = bench::process_cpu_seconds();
-      rules = fcm::compute_cell_rules(grid, embedded, {4, true, method});
+      rules = compute_cell_rules(grid, embedded, {4, true, method});
       total.push_back(seconds_since(start));
       total_cpu.push_back(bench::process_cpu_seconds() - run_cpu_start);
     }

@@ -26,7 +26,7 @@
 
 #include "bench/median.hpp"
 #include "bench/process_usage.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/scene/scene.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/run_simulation.hpp"

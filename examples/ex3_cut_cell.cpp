@@ -12,12 +12,12 @@
 //      — but they are many (hundreds per cell);
 //   2. simplification (§4.4, eq. (10)): keep at most M = C(m+3, 3) of those points with
 //      new positive weights that integrate the same polynomials to the same values.
-// fcm::compute_cell_rules does exactly this for every cell of a mesh, in parallel.
+// compute_cell_rules does exactly this for every cell of a mesh, in parallel.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/geometry/analytic_shape.hpp"
 #include "shared/mesh/structured_grid.hpp"
@@ -28,7 +28,7 @@ using namespace altfem;
 
 // Σ_q w_q |J| x_q^α, the rule's integral of the monomial x^α over the physical cut cell
 // (the cell is a box, so the map ξ ↦ x is affine and |J| constant).
-double integrate_monomial(const QuadratureRule& rule, const fcm::CellGeometry& cell, const Eigen::Vector3i& exponent) {
+double integrate_monomial(const QuadratureRule& rule, const CellGeometry& cell, const Eigen::Vector3i& exponent) {
   const ReferenceElement& hex8 = reference_element(ElementType::hex8);
   Eigen::VectorXd shape(8);
   double sum = 0;
@@ -48,7 +48,7 @@ int main() {
       structured_grid({Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()}, {1, 1, 1}, ElementType::hex20);
   Eigen::MatrixXd corners(8, 3);
   for (int a = 0; a < 8; ++a) corners.row(a) = background.nodes.row(background.cells(0, a));
-  const fcm::CellGeometry cell(ElementType::hex20, corners);
+  const CellGeometry cell(ElementType::hex20, corners);
 
   // The object: a ball of radius 1 centred off the cell's corner, so its surface cuts
   // the cell along a curved cap; it reaches FCM as a Tet4 mesh (CGAL Mesh_3).
@@ -62,11 +62,11 @@ int main() {
   std::printf("cell: Hex20 [0,1]^3; object: ball r = %.1f, %lld tetrahedra\n", radius,
               static_cast<long long>(tetrahedra.size()));
 
-  // 1. Intersection rule of degree m = 4 (fcm::CellRuleOptions' default order): a
+  // 1. Intersection rule of degree m = 4 (CellRuleOptions' default order): a
   //    degree-4 rule on every piece Q of cell ∩ tetrahedron. Tetrahedra that miss the
   //    cell contribute nothing.
   const int order = 4;
-  const fcm::IntersectionRule intersection = fcm::intersection_rule(cell, tetrahedra, order);
+  const IntersectionRule intersection = intersection_rule(cell, tetrahedra, order);
   const QuadratureRule& exact_rule = intersection.rule;
   const double rule_volume = integrate_monomial(exact_rule, cell, {0, 0, 0});
   std::printf("intersection rule: %lld points, volume %.12f (clipped pieces: %.12f)\n",

@@ -1,7 +1,7 @@
 #pragma once
 #include <Eigen/Geometry>
 
-#include "fcm/cell_quadrature.hpp"
+#include "shared/cut_cells/cell_quadrature.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem::fcm {

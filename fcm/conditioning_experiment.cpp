@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "fcm/box_cell_quadrature.hpp"
-#include "fcm/fcm_discretization.hpp"
-#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/cut_cells/fcm_discretization.hpp"
+#include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"

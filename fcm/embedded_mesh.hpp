@@ -14,9 +14,4 @@ namespace altfem::fcm {
 /// cells of at most `max_cell_size`.
 VolumeMesh embedded_tetrahedra(const SceneGeometry& geometry, double max_cell_size, const std::string& scene_file);
 
-/// `mesh` with every set of nodes at exactly the same position made one node (the
-/// lowest-numbered; the rest renumbered in order): a mesh read as a soup of tetrahedra
-/// becomes conforming by node, which find_cell_pieces and a cut's node copies rely on.
-VolumeMesh weld_coincident_nodes(const VolumeMesh& mesh);
-
 }  // namespace altfem::fcm

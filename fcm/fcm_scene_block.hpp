@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <optional>
 
-#include "fcm/fcm_discretization.hpp"
+#include "shared/cut_cells/fcm_discretization.hpp"
 #include "shared/element/element_type.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/mesh/structured_grid.hpp"
 

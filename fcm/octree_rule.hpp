@@ -4,7 +4,7 @@
 // entirely inside gets a Gauss rule, one entirely outside nothing, and a cut octant is
 // split again until `depth`, where its rule keeps only the points inside. Its error is
 // O(leaf size) for any leaf order: the reason §4.5 clips instead (docs/quadrature.md).
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/geometry/analytic_shape.hpp"
 
 namespace altfem::fcm {

@@ -1,6 +1,6 @@
 #pragma once
 // An on-disk cache of a polyhedral mesh's harmonic bases (issue #19: "cached per mesh
-// like the FCM's rules", fcm/rule_cache.hpp), so a second run of a scene skips the MFS
+// like the FCM's rules", shared/cut_cells/rule_cache.hpp), so a second run of a scene skips the MFS
 // fits. What is stored is everything the method assembles and embeds the surface with:
 // each cell's nodes, its closed-form type or its MFS kernel centres, coefficients, fit
 // misfit and boundary integrals. The key is a 64-bit FNV-1a hash of the mesh (nodes,

@@ -1,4 +1,4 @@
-// Topology-aware cells (fcm/cell_pieces.hpp, fcm/piece_mesh.hpp): the connected pieces
+// Topology-aware cells (shared/cut_cells/cell_pieces.hpp, shared/cut_cells/piece_mesh.hpp): the connected pieces
 // of the material in each background cell, exact piece volumes, and one node copy per
 // connected part of the material around the node.
 #include <gtest/gtest.h>
@@ -8,12 +8,12 @@
 #include <functional>
 #include <set>
 
-#include "fcm/cell_pieces.hpp"
-#include "fcm/embedded_mesh.hpp"
-#include "fcm/cut_cell_rule.hpp"
-#include "fcm/piece_basis_evaluator.hpp"
-#include "fcm/piece_mesh.hpp"
+#include "shared/cut_cells/cell_pieces.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
+#include "shared/cut_cells/piece_basis_evaluator.hpp"
+#include "shared/cut_cells/piece_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "shared/mesh/weld_coincident_nodes.hpp"
 
 namespace altfem::fcm {
 namespace {

@@ -11,7 +11,7 @@
 #include "fcm/fcm_method.hpp"
 #include "fcm/fcm_scene_block.hpp"
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene_geometry.hpp"

@@ -10,8 +10,8 @@
 #include <cmath>
 #include <functional>
 
-#include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/ghost_penalty_kernel.hpp"
+#include "shared/cut_cells/ghost_penalty_faces.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "tests/unit/assembly/face_term.hpp"

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "shared/common/error.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/scene_materials.hpp"
 

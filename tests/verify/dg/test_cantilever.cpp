@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "dg/dg_method.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "tests/support/static_solve.hpp"
 
 namespace altfem::dg {

@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "dg/dg_method.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "tests/support/static_solve.hpp"
 
 namespace altfem::dg {

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "dg/dg_method.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
 #include "tests/support/static_solve.hpp"

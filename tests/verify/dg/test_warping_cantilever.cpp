@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "dg/dg_method.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"

@@ -1,6 +1,7 @@
 // A cut event (docs/scene-schema.md, "Events"; Kaufmann et al. 2009 §9.4, Martin et al.
-// 2008 §8) with the methods that cut, dg, harmonic and fcm (Longva et al. 2020's cells,
-// the blade cutting the embedded tetrahedra):
+// 2008 §8) with every method: dg, harmonic, fcm (Longva et al. 2020's cells, the blade
+// cutting the embedded tetrahedra) and fem (the same cells on its own elements: the
+// virtual node algorithm, Molino et al. 2004):
 //   - A bar held at both ends and cut through its middle, along the faces between its
 //     cells, is two cantilevers: its static solution's elastic energy and ∫ρ u_z dV are
 //     exactly twice those of the half bar meshed alone (the pieces separate, and nothing
@@ -94,8 +95,8 @@ PieceMomentum momentum_beyond(const Simulation& simulation, double blade, double
 constexpr double fcm_stabilization = 1e-6;
 
 // What a cut of the 1 × 0.1 × 0.1 m bar must conserve: the volume of material, and its
-// mass and momentum — exactly for dg (each piece keeps its parent's polynomial) and fcm
-// (each node copy keeps its node's values), to the transfer's accuracy for harmonic. fcm
+// mass and momentum — exactly for dg (each piece keeps its parent's polynomial), fcm and
+// fem (each node copy keeps its node's values), to the transfer's accuracy for harmonic. fcm
 // adds α × the whole cell's rule to every cut cell (Longva et al. 2020 §5.3), so each
 // cell a cut newly makes a cut cell (`new_cut_cells`, of 0.001 m³) adds exactly
 // α ρ 0.001 m³ to the discrete mass, and at most about as much to the momentum.
@@ -126,9 +127,10 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
   for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
   const EventRecord record = simulation.apply(scene.events.at(0));
 
-  if (GetParam() == "fcm") {
-    // The blade cuts the embedded tetrahedra; of the 10 background cells, [0.5, 0.6] holds
-    // two pieces of material after it, each a cell with its own copies of the cell's nodes.
+  if (GetParam() == "fcm" || GetParam() == "fem") {
+    // The blade cuts the embedded tetrahedra (fem: its elements' own); of the 10 cells,
+    // [0.5, 0.6] holds two pieces of material after it, each a cell with its own copies of
+    // the cell's nodes (fem: the virtual node algorithm).
     EXPECT_GT(record.facts["crossed_tetrahedra"].get<int>(), 0);
     EXPECT_EQ(record.facts["flat_tetrahedra"], 0);
     EXPECT_EQ(simulation.method().facts()["cells"]["split"], 1);
@@ -178,12 +180,12 @@ TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
     EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
   } else if (GetParam() == "dg") {  // it crosses every dg cell; each piece keeps its parent's polynomial
     EXPECT_EQ(second.facts["crossed_cells"], 11);
-  } else {  // it splits the material of every fcm background cell; each copy keeps its node's values
+  } else {  // it splits the material of every fcm and fem cell; each copy keeps its node's values
     EXPECT_EQ(simulation.method().facts()["cells"]["split"], 10);
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(CuttingMethods, Cut, ::testing::Values("dg", "harmonic", "fcm"),
+INSTANTIATE_TEST_SUITE_P(CuttingMethods, Cut, ::testing::Values("dg", "harmonic", "fcm", "fem"),
                          [](const auto& info) { return info.param; });
 
 }  // namespace

@@ -24,7 +24,7 @@
 
 #include "fcm/embedded_mesh.hpp"
 #include "fcm/fcm_scene_block.hpp"
-#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"

@@ -17,7 +17,7 @@
 
 #include "fcm/fcm_method.hpp"
 #include "shared/compare/surface_error.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
 

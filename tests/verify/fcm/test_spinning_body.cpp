@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "fcm/box_cell_quadrature.hpp"
-#include "fcm/fcm_discretization.hpp"
+#include "shared/cut_cells/fcm_discretization.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/structured_grid.hpp"

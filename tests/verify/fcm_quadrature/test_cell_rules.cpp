@@ -1,4 +1,4 @@
-// Whole-mesh rule generation (fcm/cell_rules.hpp): cells entirely inside get the
+// Whole-mesh rule generation (shared/cut_cells/cell_rules.hpp): cells entirely inside get the
 // standard rule; over seeded random rigid motions of random convex pieces (tetrahedra),
 // the simplified rules of all cells together integrate every polynomial of degree <= m
 // over the piece exactly, with at most M positive weights per cell.
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <random>
 
-#include "fcm/cell_rules.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "fcm/box_cell_quadrature.hpp"
-#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
 namespace altfem::fcm {

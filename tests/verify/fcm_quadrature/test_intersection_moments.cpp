@@ -8,7 +8,7 @@
 #include <Eigen/Geometry>
 
 #include "embedded_shapes.hpp"
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"

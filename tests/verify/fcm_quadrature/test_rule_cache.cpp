@@ -1,4 +1,4 @@
-// The on-disk rule cache (fcm/rule_cache.hpp): a second run reuses the file and gets
+// The on-disk rule cache (shared/cut_cells/rule_cache.hpp): a second run reuses the file and gets
 // identical rules; other options miss; a truncated file (an interrupted writer without
 // the atomic rename) is recomputed, not trusted; named tetrahedra per cell key apart.
 #include <gtest/gtest.h>
@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "fcm/rule_cache.hpp"
+#include "shared/cut_cells/rule_cache.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
 namespace altfem::fcm {

@@ -9,7 +9,7 @@
 #include <Eigen/Geometry>
 #include <cstdio>
 
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"

@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/time_integrator.hpp"
 

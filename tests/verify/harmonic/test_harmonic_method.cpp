@@ -17,7 +17,7 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 #include "polyhedral/harmonic_method.hpp"
 #include "shared/element/reference_element.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/scene/scene_geometry.hpp"

@@ -10,7 +10,7 @@
 #include <cstdio>
 
 #include "polyhedral/harmonic_method.hpp"
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/time_integrator.hpp"
 

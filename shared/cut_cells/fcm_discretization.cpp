@@ -1,4 +1,4 @@
-#include "fcm/fcm_discretization.hpp"
+#include "shared/cut_cells/fcm_discretization.hpp"
 
 #include <map>
 
@@ -10,7 +10,7 @@
 #include "shared/quadrature/reference_rules.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 namespace {
 
@@ -141,4 +141,4 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   return fcm;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

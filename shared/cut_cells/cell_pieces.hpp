@@ -9,7 +9,7 @@
 
 #include "shared/mesh/volume_mesh.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// A piece of a neighbouring cell: (background cell, piece index in that cell).
 using PieceReference = std::pair<int, int>;
@@ -49,4 +49,4 @@ struct CellPieces {
 /// or a point only do not connect: the material is continuous only across a surface.
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

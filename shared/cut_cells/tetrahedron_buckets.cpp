@@ -1,9 +1,9 @@
-#include "fcm/tetrahedron_buckets.hpp"
+#include "shared/cut_cells/tetrahedron_buckets.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-namespace altfem::fcm {
+namespace altfem {
 
 TetrahedronBuckets::TetrahedronBuckets(const VolumeMesh& mesh) {
   if (element_shape(mesh.element_type) != ElementShape::tetrahedron) {
@@ -67,4 +67,4 @@ void TetrahedronBuckets::candidates(const Eigen::AlignedBox3d& box, std::vector<
   for (const int t : indices) candidates.push_back(tetrahedra_[t]);
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

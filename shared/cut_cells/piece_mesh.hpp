@@ -9,10 +9,10 @@
 // Dirichlet conditions, Schwarz blocks, output) sees an ordinary Lagrange mesh.
 #include <vector>
 
-#include "fcm/cell_pieces.hpp"
+#include "shared/cut_cells/cell_pieces.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 struct PieceMesh {
   /// One cell per piece of every background cell with material, and each cell without
@@ -31,4 +31,4 @@ struct PieceMesh {
 /// The piece mesh of `background` with its `pieces` (find_cell_pieces).
 PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -1,6 +1,6 @@
-#include "fcm/region_cut_check.hpp"
+#include "shared/cut_cells/region_cut_check.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 std::vector<std::string> conditions_cutting_cells(const VolumeMesh& cells,
                                                   const std::vector<DirichletCondition>& dirichlet) {
@@ -28,4 +28,4 @@ std::vector<std::string> conditions_cutting_cells(const VolumeMesh& cells,
   return warnings;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

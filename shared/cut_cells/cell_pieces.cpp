@@ -1,16 +1,16 @@
-#include "fcm/cell_pieces.hpp"
+#include "shared/cut_cells/cell_pieces.hpp"
 
 #include <algorithm>
 #include <array>
 #include <exception>
 #include <map>
 
-#include "fcm/cut_cell_rule.hpp"
-#include "fcm/tetrahedron_buckets.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
+#include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/element/element_faces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 namespace {
 
@@ -259,4 +259,4 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
   return result;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <filesystem>
 
-#include "fcm/cell_rules.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// 64-bit FNV-1a hash of the inputs of compute_cell_rules (bit patterns of the doubles).
 std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
@@ -23,4 +23,4 @@ CellRules cached_cell_rules(const VolumeMesh& background, const VolumeMesh& embe
                             const std::filesystem::path& directory, bool* reused = nullptr,
                             const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -10,7 +10,7 @@
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/quadrature/quadrature_rule.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// The geometry of a background cell: its corner map (affine for tetrahedra,
 /// trilinear for hexahedra; higher-order nodes are not used) of a cell of `type`.
@@ -55,4 +55,4 @@ struct IntersectionRule {
 IntersectionRule intersection_rule(const CellGeometry& cell, const std::vector<TetrahedronCorners>& tetrahedra,
                                    int order);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

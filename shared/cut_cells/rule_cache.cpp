@@ -1,11 +1,11 @@
-#include "fcm/rule_cache.hpp"
+#include "shared/cut_cells/rule_cache.hpp"
 
 #include <optional>
 #include <string>
 
 #include "shared/io/binary_cache.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 namespace {
 
 constexpr char magic[] = "altfem-cell-rules-v2";  // v2: points and weights as BinaryWriter matrices
@@ -96,4 +96,4 @@ CellRules cached_cell_rules(const VolumeMesh& background, const VolumeMesh& embe
   return rules;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

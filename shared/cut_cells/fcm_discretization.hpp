@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "fcm/cell_quadrature.hpp"
-#include "fcm/ghost_penalty_faces.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/cut_cells/cell_quadrature.hpp"
+#include "shared/cut_cells/ghost_penalty_faces.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// Which matrices get the stabilising points (§5.3).
 enum class StabilizedMatrices { none, mass, mass_and_stiffness };
@@ -72,4 +72,4 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                            const std::string& scene_file = "scene",
                                            const NodeRegionFilter& dirichlet_nodes = {});
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -1,4 +1,4 @@
-#include "shared/fem/fem_method.hpp"
+#include "shared/fem/method/fem_method.hpp"
 
 #include <chrono>
 
@@ -7,6 +7,7 @@
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/lagrange_surface_lift.hpp"
 #include "shared/fem/mesh_previews.hpp"
+#include "shared/fem/method/cut_fem_method.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/simulation/basis_embedding.hpp"
@@ -56,7 +57,15 @@ public:
     return interpolate_at_nodes(mesh_.nodes, field);
   }
   nlohmann::json facts() const override { return surface_.facts(); }
-  std::shared_ptr<const MethodMesh> mesh() const override { return std::make_shared<MeshOf<VolumeMesh>>(mesh_); }
+  std::shared_ptr<const MethodMesh> mesh() const override {
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{mesh_, std::nullopt});
+  }
+  std::string cut_refusal() const override { return fem_cut_refusal(mesh_.element_type); }
+  /// The elements' own tetrahedra cut by the blade: the rebuild is a CutFemMethod.
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    return std::make_shared<MeshOf<FemMesh>>(
+        FemMesh{mesh_, cut_embedded_tetrahedra(element_tetrahedra(mesh_), blade, facts)});
+  }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FemMethod&>(previous);
     return transfer_to_nodes(mesh_.nodes, before.mesh_.nodes, before.basis_evaluator(), fields);
@@ -78,6 +87,14 @@ private:
   int quadrature_order_ = 0;
 };
 
+// On handed elements: as they are, or cut (the virtual node algorithm).
+std::unique_ptr<MethodInstance> rebuild_fem(const Scene& scene, const SceneGeometry& geometry,
+                                            const MethodMesh& handed) {
+  const FemMesh& mesh = method_mesh_as<FemMesh>(handed, "fem");
+  if (mesh.material) return make_cut_fem_method(scene, geometry, mesh);
+  return std::make_unique<FemMethod>(scene, geometry, &mesh.elements);
+}
+
 }  // namespace
 
 std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneGeometry& geometry) {
@@ -86,8 +103,8 @@ std::unique_ptr<MethodInstance> make_fem_method(const Scene& scene, const SceneG
 
 const MethodDescription& fem_method() {
   static const MethodDescription method{fem_scene_block(), make_fem_method,
-                                        "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)",
-                                        rebuild_on_handed_mesh<FemMethod, VolumeMesh>("fem"), fem_mesh_preview};
+                                        "conforming Lagrange FEM (Tet4–Tet20, Hex8–Hex27)", rebuild_fem,
+                                        fem_mesh_preview};
   return method;
 }
 

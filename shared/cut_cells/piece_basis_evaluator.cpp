@@ -1,4 +1,4 @@
-#include "fcm/piece_basis_evaluator.hpp"
+#include "shared/cut_cells/piece_basis_evaluator.hpp"
 
 #include <algorithm>
 #include <array>
@@ -7,7 +7,7 @@
 
 #include <Eigen/LU>
 
-namespace altfem::fcm {
+namespace altfem {
 
 namespace {
 
@@ -87,4 +87,4 @@ bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, st
                       [&](int other) { return distance_to_piece(other, x) < distance; });
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

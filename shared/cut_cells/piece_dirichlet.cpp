@@ -1,11 +1,11 @@
-#include "fcm/piece_dirichlet.hpp"
+#include "shared/cut_cells/piece_dirichlet.hpp"
 
 #include <algorithm>
 #include <memory>
 
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 namespace {
 
@@ -56,4 +56,4 @@ NodeRegionFilter piece_dirichlet_nodes(const PieceMesh& pieces, const VolumeMesh
   };
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -9,7 +9,7 @@
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 class TetrahedronBuckets {
 public:
@@ -37,4 +37,4 @@ private:
   Eigen::Vector3i bucket_of(const Eigen::Vector3d& x) const;
 };
 
-}  // namespace altfem::fcm
+}  // namespace altfem

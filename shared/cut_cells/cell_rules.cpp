@@ -1,14 +1,14 @@
-#include "fcm/cell_rules.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
-#include "fcm/cut_cell_rule.hpp"
-#include "fcm/tetrahedron_buckets.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
+#include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 namespace {
 
 /// Relative volume difference under which a cut cell is taken as entirely inside.
@@ -97,4 +97,4 @@ void sum_cell_rule_totals(CellRules& rules) {
   }
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -7,10 +7,10 @@
 #include <memory>
 #include <optional>
 
-#include "fcm/cell_quadrature.hpp"
-#include "fcm/cell_rules.hpp"
+#include "shared/cut_cells/cell_quadrature.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// What the last stiffness rules cost and how exact they are (for summary.json).
 struct IntersectionStatistics {
@@ -34,4 +34,4 @@ CellQuadratureSource intersection_cell_quadrature(
     double tolerance = SimplificationOptions{}.tolerance, const std::filesystem::path& cache_directory = {},
     std::shared_ptr<IntersectionStatistics> statistics = nullptr, std::vector<std::vector<int>> cell_tetrahedra = {});
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -1,10 +1,10 @@
-#include "fcm/piece_mesh.hpp"
+#include "shared/cut_cells/piece_mesh.hpp"
 
 #include <algorithm>
 
 #include "shared/mesh/disjoint_sets.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 int PieceMesh::split_nodes() const {
   std::vector<int> copies;
@@ -91,4 +91,4 @@ PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces) {
   return result;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -9,7 +9,7 @@
 
 #include "shared/quadrature/quadrature_rule.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 struct CellQuadrature {
   double volume_fraction = 0;          ///< vol(K ∩ Ω) / vol(K), in [0, 1]
@@ -23,4 +23,4 @@ enum class RulePurpose { stiffness, mass };
 /// The cells' quadrature for a polynomial strength, one entry per background cell.
 using CellQuadratureSource = std::function<std::vector<CellQuadrature>(int strength, RulePurpose purpose)>;
 
-}  // namespace altfem::fcm
+}  // namespace altfem

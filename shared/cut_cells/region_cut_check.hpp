@@ -9,7 +9,7 @@
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 /// One warning per condition whose region's boundary cuts through the interior of at
 /// least one cell of `cells` (sampled at the 27 points ξ ∈ {1/4, 1/2, 3/4}³ of the
@@ -17,4 +17,4 @@ namespace altfem::fcm {
 std::vector<std::string> conditions_cutting_cells(const VolumeMesh& cells,
                                                   const std::vector<DirichletCondition>& dirichlet);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

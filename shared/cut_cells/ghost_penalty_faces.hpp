@@ -12,7 +12,7 @@
 #include "shared/material/material.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 struct GhostPenaltyFaces {
   TabulatedFaces faces;       ///< minus/plus: kept-cell indices; Hessians if the degree is 2
@@ -34,4 +34,4 @@ std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, E
                                                const std::vector<int>& cell_materials,
                                                const std::vector<const Material*>& materials, double gamma);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -10,7 +10,7 @@
 #include "shared/quadrature/quadrature_rule.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 enum class CellKind { outside, inside, cut };
 
@@ -48,4 +48,4 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
 /// Recomputes the totals of `rules` (points, cell counts, failures, max residual) from its cells.
 void sum_cell_rule_totals(CellRules& rules);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -6,10 +6,10 @@
 #include <memory>
 #include <vector>
 
-#include "fcm/piece_mesh.hpp"
+#include "shared/cut_cells/piece_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 class PieceBasisEvaluator final : public ElementBasisEvaluator {
 public:
@@ -43,4 +43,4 @@ private:
 /// Distance from x to the closed tetrahedron (4 × 3 corners).
 double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners);
 
-}  // namespace altfem::fcm
+}  // namespace altfem

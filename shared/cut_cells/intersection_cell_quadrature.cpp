@@ -1,14 +1,14 @@
-#include "fcm/intersection_cell_quadrature.hpp"
+#include "shared/cut_cells/intersection_cell_quadrature.hpp"
 
 #include <algorithm>
 #include <utility>
 
-#include "fcm/cut_cell_rule.hpp"
-#include "fcm/rule_cache.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
+#include "shared/cut_cells/rule_cache.hpp"
 
 #include <chrono>
 
-namespace altfem::fcm {
+namespace altfem {
 
 CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
                                                   std::optional<SimplificationMethod> method, double tolerance,
@@ -61,4 +61,4 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
   };
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

@@ -1,4 +1,4 @@
-#include "fcm/cut_cell_rule.hpp"
+#include "shared/cut_cells/cut_cell_rule.hpp"
 
 #include <Eigen/LU>
 #include <cmath>
@@ -9,7 +9,7 @@
 #include "shared/element/reference_element.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 CellGeometry::CellGeometry(ElementType type, const Eigen::Ref<const Eigen::MatrixXd>& corners)
     : type_(type),
@@ -102,4 +102,4 @@ IntersectionRule intersection_rule(const CellGeometry& cell, const std::vector<T
   return result;
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

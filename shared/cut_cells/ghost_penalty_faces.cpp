@@ -1,4 +1,4 @@
-#include "fcm/ghost_penalty_faces.hpp"
+#include "shared/cut_cells/ghost_penalty_faces.hpp"
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
@@ -14,7 +14,7 @@
 #include "shared/element/geometry_map.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
-namespace altfem::fcm {
+namespace altfem {
 
 namespace {
 
@@ -199,4 +199,4 @@ std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, E
       faces.faces, GhostPenaltyKernel(faces.faces, std::move(penalties), faces.sizes, element_degree(type)));
 }
 
-}  // namespace altfem::fcm
+}  // namespace altfem

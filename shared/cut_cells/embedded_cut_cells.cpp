@@ -1,0 +1,164 @@
+#include "shared/cut_cells/embedded_cut_cells.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "shared/cut_cells/cell_pieces.hpp"
+#include "shared/cut_cells/piece_basis_evaluator.hpp"
+#include "shared/cut_cells/piece_dirichlet.hpp"
+#include "shared/cut_cells/region_cut_check.hpp"
+#include "shared/fem/lagrange_basis_evaluator.hpp"
+#include "shared/mesh/cut_tetrahedral_mesh.hpp"
+#include "shared/simulation/nodal_basis.hpp"
+
+namespace altfem {
+
+EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded,
+                                   const CutCellSettings& settings, const SceneMaterials& materials,
+                                   const std::vector<DirichletCondition>& dirichlet, const std::string& scene_file)
+    : settings_(settings), background_(background), embedded_(std::move(embedded)) {
+  const auto start = std::chrono::steady_clock::now();
+  // Topology-aware cells (Longva et al. 2020 §7's limitation): one cell per piece of
+  // material, each clipping only its own tetrahedra, with node copies per part.
+  VolumeMesh cells = background;
+  std::vector<std::vector<int>> cell_tetrahedra;
+  if (settings.topology_aware) {
+    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh);
+    split_cells_ = pieces.split_cells();
+    pieces_ = piece_mesh(background, pieces);
+    cells = pieces_->mesh;
+    cell_tetrahedra = pieces_->tetrahedra;
+    topology_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  statistics_ = std::make_shared<IntersectionStatistics>();
+  const CellQuadratureSource rules =
+      intersection_cell_quadrature(cells, embedded_.mesh, settings.simplifier, settings.simplification_tolerance, {},
+                                   statistics_, std::move(cell_tetrahedra));
+  fcm_ = build_fcm_discretization(cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)),
+                                  dirichlet, settings.options, scene_file,
+                                  pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{});
+  warnings_ = conditions_cutting_cells(fcm_.mesh, dirichlet);
+  for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
+    material_volume_ +=
+        fcm_.volume_fractions[cell] * volume_mesh_volume({fcm_.mesh.element_type, fcm_.mesh.nodes,
+                                                          fcm_.mesh.cells.row(static_cast<Eigen::Index>(cell))});
+  seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::unique_ptr<ElementBasisEvaluator> EmbeddedCutCells::basis_evaluator() const {
+  if (pieces_) return std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_.mesh);
+  return std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
+}
+
+UnstructuredGrid EmbeddedCutCells::volume_grid(const Eigen::VectorXd& displacement) const {
+  UnstructuredGrid grid = grid_from_volume_mesh(fcm_.mesh);
+  add_nodal_displacement(grid, displacement);
+  grid.cell_data.emplace_back(
+      "volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(), fcm_.volume_fractions.size()));
+  const TabulatedElements& elements = fcm_.discretization->elements();
+  Eigen::VectorXd points(elements.size());
+  for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
+  grid.cell_data.emplace_back("quadrature_points", points);
+  // Which piece of its background cell a kept cell is (0 unless the cell is split).
+  Eigen::VectorXd piece = Eigen::VectorXd::Zero(elements.size());
+  if (pieces_)
+    for (int e = 0; e < elements.size(); ++e) piece[e] = pieces_->piece[fcm_.background_cells[e]];
+  grid.cell_data.emplace_back("piece", piece);
+  return grid;
+}
+
+nlohmann::json EmbeddedCutCells::facts() const {
+  return {{"cells",
+           {{"inside", fcm_.counts.inside},
+            {"cut", fcm_.counts.cut},
+            {"discarded", fcm_.counts.discarded},
+            {"split", split_cells_},
+            {"outside", fcm_.counts.outside}}},
+          {"cut_cell_points", {{"initial", statistics_->initial_points}, {"final", statistics_->final_points}}},
+          {"worst_moment_residual", statistics_->max_residual},
+          {"failed_simplifications", statistics_->failed_simplifications},
+          {"rule_generation_s", statistics_->seconds},
+          {"piece_finding_s", topology_seconds_},
+          {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
+          {"schwarz_blocks", fcm_.schwarz_blocks},
+          {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}};
+}
+
+std::string EmbeddedCutCells::cut_refusal() const {
+  return pieces_ ? "" : "it cuts with topology-aware cells only (/discretization/fcm/topology_aware is false)";
+}
+
+// The blade cuts the embedded tetrahedra (issue #33); the rebuild finds the cells' pieces
+// again, so a cell whose material the blade separates gets a node copy per side.
+EmbeddedTetrahedra EmbeddedCutCells::cut(const CuttingPlane& blade, nlohmann::json& facts) const {
+  return cut_embedded_tetrahedra(embedded_.mesh, blade, facts);
+}
+
+EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
+                                           nlohmann::json& facts) {
+  TetrahedralCut cut = cut_tetrahedral_mesh(tetrahedra, blade);
+  facts = {{"crossed_tetrahedra", cut.crossed_tetrahedra}, {"separated_faces", cut.separated_faces},
+           {"duplicated_nodes", cut.duplicated_nodes},     {"snapped_nodes", cut.snapped_nodes},
+           {"flat_tetrahedra", cut.flat_tetrahedra},       {"tetrahedra", cut.mesh.cells.rows()}};
+  return {std::move(cut.mesh), std::move(cut.parent_tetrahedron)};
+}
+
+// Built on `before`'s background and embedded tetrahedra, or on a cut of them (another
+// background, e.g. a finer one, shares no lineage).
+bool EmbeddedCutCells::continues(const EmbeddedCutCells& before) const {
+  const auto same = [](const auto& a, const auto& b) { return a.rows() == b.rows() && a.cols() == b.cols() && a == b; };
+  if (!pieces_ || !before.pieces_ || !same(background_.cells, before.background_.cells) ||
+      !same(background_.nodes, before.background_.nodes))
+    return false;
+  if (embedded_.parent.empty()) return same(embedded_.mesh.cells, before.embedded_.mesh.cells);
+  return *std::max_element(embedded_.parent.begin(), embedded_.parent.end()) < before.embedded_.mesh.cells.rows();
+}
+
+std::vector<int> EmbeddedCutCells::node_origins(const EmbeddedCutCells& before) const {
+  if (!continues(before)) return {};
+  const PieceMesh& old_pieces = *before.pieces_;
+  std::vector<int> old_kept(old_pieces.mesh.cells.rows(), -1);
+  for (std::size_t cell = 0; cell < before.fcm_.background_cells.size(); ++cell)
+    old_kept[before.fcm_.background_cells[cell]] = static_cast<int>(cell);
+  std::vector<std::vector<int>> old_pieces_of(static_cast<std::size_t>(background_.cells.rows()));
+  for (std::size_t piece = 0; piece < old_pieces.background_cell.size(); ++piece)
+    old_pieces_of[old_pieces.background_cell[piece]].push_back(static_cast<int>(piece));
+  std::vector<int> origin(static_cast<std::size_t>(fcm_.mesh.nodes.rows()), -1);
+  for (std::size_t cell = 0; cell < fcm_.background_cells.size(); ++cell) {
+    const int piece = fcm_.background_cells[cell];
+    const std::vector<int>& tetrahedra = pieces_->tetrahedra[piece];
+    if (tetrahedra.empty()) continue;
+    const int parent = embedded_.parent.empty() ? tetrahedra.front() : embedded_.parent[tetrahedra.front()];
+    for (const int old_piece : old_pieces_of[pieces_->background_cell[piece]]) {
+      const std::vector<int>& old_tetrahedra = old_pieces.tetrahedra[old_piece];
+      if (!std::binary_search(old_tetrahedra.begin(), old_tetrahedra.end(), parent)) continue;
+      const int old_cell = old_kept[old_piece];
+      if (old_cell >= 0)
+        for (Eigen::Index k = 0; k < fcm_.mesh.cells.cols(); ++k)
+          origin[fcm_.mesh.cells(static_cast<Eigen::Index>(cell), k)] = before.fcm_.mesh.cells(old_cell, k);
+      break;
+    }
+  }
+  return origin;
+}
+
+std::vector<int> EmbeddedCutCells::background_nodes() const {
+  std::vector<int> nodes(static_cast<std::size_t>(fcm_.mesh.nodes.rows()), -1);
+  for (std::size_t cell = 0; cell < fcm_.background_cells.size(); ++cell) {
+    const int row = fcm_.background_cells[cell];
+    for (Eigen::Index k = 0; k < fcm_.mesh.cells.cols(); ++k) {
+      const int node = pieces_ ? pieces_->background_node[pieces_->mesh.cells(row, k)] : background_.cells(row, k);
+      nodes[fcm_.mesh.cells(static_cast<Eigen::Index>(cell), k)] = node;
+    }
+  }
+  return nodes;
+}
+
+void copy_node_values(const std::vector<int>& origin, const Eigen::MatrixXd& fields, Eigen::MatrixXd& moved) {
+  for (std::size_t node = 0; node < origin.size(); ++node)
+    if (origin[node] >= 0)
+      moved.middleRows(3 * static_cast<Eigen::Index>(node), 3) =
+          fields.middleRows(3 * static_cast<Eigen::Index>(origin[node]), 3);
+}
+
+}  // namespace altfem

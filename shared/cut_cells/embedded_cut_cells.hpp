@@ -1,0 +1,103 @@
+#pragma once
+// The cells of a Lagrange mesh with the material of an embedded tetrahedral mesh in them
+// (Longva et al. 2020): their connected pieces of material with node copies (cell_pieces,
+// piece_mesh), their cut-cell rules (intersection_cell_quadrature), the stabilised
+// discretization (build_fcm_discretization), and what events need of them: a cut of the
+// embedded tetrahedra, and which node each node copy continues. fcm builds them on its
+// background grid; fem on its own mesh after a cut — the virtual node algorithm (Molino
+// et al. 2004) at any Lagrange order: a cut element keeps its nodes, gets one copy of them
+// per piece of material, and integrates each copy over its piece.
+#include <Eigen/Core>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "shared/cut_cells/fcm_discretization.hpp"
+#include "shared/cut_cells/intersection_cell_quadrature.hpp"
+#include "shared/cut_cells/piece_mesh.hpp"
+#include "shared/io/unstructured_grid.hpp"
+#include "shared/mesh/cutting_plane.hpp"
+#include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/scene_materials.hpp"
+
+namespace altfem {
+
+/// How the cells are cut and integrated (fcm: its scene block's; fem: exact, kept, unstabilised).
+struct CutCellSettings {
+  FcmOptions options;
+  std::optional<SimplificationMethod> simplifier = SimplificationMethod::caratheodory;  ///< nullopt: none
+  double simplification_tolerance = 1e-12;
+  /// One copy of a cell's nodes per connected piece of material in it (piece_mesh.hpp).
+  bool topology_aware = true;
+};
+
+/// The material: a Tet4 mesh conforming by node, and per tetrahedron the tetrahedron of
+/// the mesh it was cut from that it lies in (empty: not cut, the tetrahedra are their own).
+struct EmbeddedTetrahedra {
+  VolumeMesh mesh;
+  std::vector<int> parent;
+};
+
+class EmbeddedCutCells {
+public:
+  EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded, const CutCellSettings& settings,
+                   const SceneMaterials& materials, const std::vector<DirichletCondition>& dirichlet,
+                   const std::string& scene_file);
+
+  /// The kept cells (a cell per piece of material), nodes renumbered: basis function i = node i.
+  const FcmDiscretization& discretization() const { return fcm_; }
+  const VolumeMesh& background() const { return background_; }
+  const EmbeddedTetrahedra& embedded() const { return embedded_; }
+  int quadrature_strength() const { return settings_.options.quadrature_strength; }
+  /// Seconds spent finding the pieces, generating the rules and building the discretization.
+  double seconds() const { return seconds_; }
+  /// Σ vol(K ∩ Ω) over the kept cells: the material's volume, without the fictitious parts
+  /// that the stabilisation weighs by α (§5.3).
+  double material_volume() const { return material_volume_; }
+  /// Dirichlet regions that cut through cells (conditions_cutting_cells).
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  /// The kept cells' basis at any point: a point in a cell of several pieces takes the
+  /// nearest piece's copy (PieceBasisEvaluator).
+  std::unique_ptr<ElementBasisEvaluator> basis_evaluator() const;
+  /// The kept cells with "volume_fraction", "quadrature_points" and "piece" cell data.
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const;
+  /// {"cells": {inside, cut, discarded, split, outside}, "cut_cell_points", …}.
+  nlohmann::json facts() const;
+
+  /// Why these cells cannot be cut (one phrase); empty when they can.
+  std::string cut_refusal() const;
+  /// The embedded tetrahedra cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
+  EmbeddedTetrahedra cut(const CuttingPlane& blade, nlohmann::json& facts) const;
+  /// Per kept node, the kept node of `before` whose values it continues: a kept cell's
+  /// tetrahedra lie in one piece of the same background cell before, whose kept cell has
+  /// the node at the same corner; −1 where that piece was not kept. Empty when this was
+  /// not built on `before`'s background and embedded tetrahedra, or a cut of them.
+  std::vector<int> node_origins(const EmbeddedCutCells& before) const;
+  /// Per kept node, the background node it is a copy of.
+  std::vector<int> background_nodes() const;
+
+private:
+  bool continues(const EmbeddedCutCells& before) const;
+
+  CutCellSettings settings_;
+  VolumeMesh background_;  ///< before topology-aware splitting
+  EmbeddedTetrahedra embedded_;
+  std::optional<PieceMesh> pieces_;  ///< topology-aware cells only
+  int split_cells_ = 0;
+  double topology_seconds_ = 0, seconds_ = 0, material_volume_ = 0;
+  std::shared_ptr<IntersectionStatistics> statistics_;
+  FcmDiscretization fcm_;
+  std::vector<std::string> warnings_;
+};
+
+/// `tetrahedra` cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
+EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
+                                           nlohmann::json& facts);
+
+/// Nodal fields (#nodes·3 × #fields) carried by node_origins or background_nodes: the
+/// rows of node n of `moved` from those of node origin[n] of `fields`, where origin[n] ≥ 0.
+void copy_node_values(const std::vector<int>& origin, const Eigen::MatrixXd& fields, Eigen::MatrixXd& moved);
+
+}  // namespace altfem

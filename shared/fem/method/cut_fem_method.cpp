@@ -1,0 +1,113 @@
+#include "shared/fem/method/cut_fem_method.hpp"
+
+#include "shared/fem/fem_scene_block.hpp"
+#include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/tetrahedra_of_hexahedra.hpp"
+#include "shared/mesh/weld_coincident_nodes.hpp"
+#include "shared/simulation/embedded_surface.hpp"
+#include "shared/simulation/nodal_basis.hpp"
+
+namespace altfem {
+
+namespace {
+
+// Exact and conservative: every piece kept however small (a cut loses no material),
+// no fictitious domain to stabilise (an element's rule covers only its piece), the
+// stiffness and mass rules of fem's own strength.
+CutCellSettings fem_cut_cell_settings(const Scene& scene) {
+  const FemSpec fem = fem_spec(scene);
+  CutCellSettings settings;
+  settings.options.quadrature_strength = fem.quadrature_order;
+  settings.options.mass_quadrature_strength = fem.quadrature_order;
+  settings.options.discard_fraction = 0;
+  settings.options.stabilization = 0;
+  return settings;
+}
+
+class CutFemMethod final : public EmbeddedSurfaceMethod {
+public:
+  CutFemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh& mesh)
+      : materials_(scene), elements_(mesh.elements) {
+    cells_ = std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
+                                                scene.dirichlet, scene.file.string());
+    // The surface every method deforms; surface loads act on the boundary of the
+    // material, the cut tetrahedra's (the blade's faces included, unloaded by tractions
+    // given on the original boundary's regions).
+    surface_.load_surface = boundary_surface(cells_->embedded().mesh).surface;
+    surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(mesh.elements).surface;
+    surface_.evaluator = cells_->basis_evaluator();
+    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
+  }
+
+  const Discretization& discretization() const override { return *cells_->discretization().discretization; }
+  nlohmann::json element_counts() const override {
+    return {{std::string(element_name(elements_.element_type)), cells_->discretization().mesh.cells.rows()}};
+  }
+  long long quadrature_points() const override {
+    return cells_->discretization().discretization->elements().point_count();
+  }
+  double quadrature_seconds() const override { return cells_->seconds(); }
+  UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
+    return cells_->volume_grid(displacement);
+  }
+  Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
+    return interpolate_at_nodes(cells_->discretization().mesh.nodes, field);
+  }
+  std::vector<std::string> warnings() const override { return cells_->warnings(); }
+  nlohmann::json facts() const override {
+    nlohmann::json facts = surface_.facts();
+    facts.update(cells_->facts());
+    return facts;
+  }
+  std::shared_ptr<const MethodMesh> mesh() const override {
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}});
+  }
+  std::optional<double> volume() const override { return cells_->material_volume(); }
+  std::string cut_refusal() const override { return cells_->cut_refusal(); }
+  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, cells_->cut(blade, facts)});
+  }
+  /// From fem before its first cut, each node copy takes its node's values; from a cut
+  /// fem, the values of the copy its material came from (EmbeddedCutCells::node_origins).
+  Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
+    const auto& nodes = cells_->discretization().mesh.nodes;
+    if (const auto* cut = dynamic_cast<const CutFemMethod*>(&previous)) {
+      Eigen::MatrixXd moved =
+          transfer_to_nodes(nodes, cut->cells_->discretization().mesh.nodes, previous.basis_evaluator(), fields);
+      copy_node_values(cells_->node_origins(*cut->cells_), fields, moved);
+      return moved;
+    }
+    Eigen::MatrixXd moved = Eigen::MatrixXd::Zero(3 * nodes.rows(), fields.cols());
+    copy_node_values(cells_->background_nodes(), fields, moved);
+    return moved;
+  }
+  std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const override {
+    return nodal_field_quadrature(borrowed(cells_->discretization().discretization->elements()),
+                                  cells_->discretization().mesh.nodes, cells_->quadrature_strength());
+  }
+
+private:
+  SceneMaterials materials_;
+  VolumeMesh elements_;
+  std::unique_ptr<EmbeddedCutCells> cells_;
+};
+
+}  // namespace
+
+VolumeMesh element_tetrahedra(const VolumeMesh& elements) {
+  if (element_shape(elements.element_type) == ElementShape::hexahedron)
+    return weld_coincident_nodes(tetrahedra_of_hexahedra(elements));
+  return weld_coincident_nodes(VolumeMesh{ElementType::tet4, elements.nodes, elements.cells.leftCols(4)});
+}
+
+std::string fem_cut_refusal(ElementType type) {
+  return type == ElementType::tet20 ? "it cuts tet4, tet10, hex8, hex20 and hex27 elements (the cut-cell rules' cells)"
+                                    : "";
+}
+
+std::unique_ptr<MethodInstance> make_cut_fem_method(const Scene& scene, const SceneGeometry& geometry,
+                                                    const FemMesh& mesh) {
+  return std::make_unique<CutFemMethod>(scene, geometry, mesh);
+}
+
+}  // namespace altfem

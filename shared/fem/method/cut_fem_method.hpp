@@ -1,0 +1,33 @@
+#pragma once
+// fem after a cut (issue #33): the virtual node algorithm (Molino et al. 2004) at any
+// Lagrange order. The blade cuts the elements' own tetrahedra (their corner tetrahedra,
+// a hexahedron's 12 about its centroid); each element becomes one cell per piece of
+// material in it, with its own copy of the element's nodes, integrated over its piece by
+// cut-cell rules (shared/cut_cells: fcm's cells with the fem mesh as the background, kept
+// whole and unstabilised); an element the blade does not reach keeps its standard rule.
+#include <memory>
+#include <optional>
+
+#include "shared/cut_cells/embedded_cut_cells.hpp"
+#include "shared/simulation/method_instance.hpp"
+
+namespace altfem {
+
+/// What fem is built on: its elements, and once cut, the material as their cut tetrahedra.
+struct FemMesh {
+  VolumeMesh elements;
+  std::optional<EmbeddedTetrahedra> material;
+};
+
+/// The elements' own tetrahedra (uncut): Tet4/Tet10 corners, a hexahedron's 12 about its
+/// centroid, welded; what the first cut cuts.
+VolumeMesh element_tetrahedra(const VolumeMesh& elements);
+
+/// Why fem cannot cut a mesh of this element type (one phrase); empty when it can.
+std::string fem_cut_refusal(ElementType type);
+
+/// fem on `mesh.elements` cut into `*mesh.material`.
+std::unique_ptr<MethodInstance> make_cut_fem_method(const Scene& scene, const SceneGeometry& geometry,
+                                                    const FemMesh& mesh);
+
+}  // namespace altfem
