@@ -1,7 +1,5 @@
 #include "fcm/fcm_method.hpp"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <optional>
 
