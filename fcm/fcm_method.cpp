@@ -86,10 +86,7 @@ public:
   /// values of the copy its material came from, which a position cannot tell apart.
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FcmMethod&>(previous);
-    Eigen::MatrixXd moved =
-        transfer_to_nodes(kept_cells().mesh.nodes, before.kept_cells().mesh.nodes, before.basis_evaluator(), fields);
-    copy_node_values(cells_->node_origins(*before.cells_), fields, moved);
-    return moved;
+    return cells_->transfer(*before.cells_, before.basis_evaluator(), fields);
   }
   /// The stiffness rules at any requested strength: cut cells' rules are simplified to
   /// match the moments up to that strength only (§4), so no stronger rule is at hand. The

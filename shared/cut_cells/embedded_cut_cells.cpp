@@ -13,6 +13,29 @@
 
 namespace altfem {
 
+namespace {
+
+// The rows of node n of `moved` from those of node origin[n] of `fields`, where origin[n] ≥ 0.
+void copy_node_values(const std::vector<int>& origin, const Eigen::MatrixXd& fields, Eigen::MatrixXd& moved) {
+  for (std::size_t node = 0; node < origin.size(); ++node)
+    if (origin[node] >= 0)
+      moved.middleRows(3 * static_cast<Eigen::Index>(node), 3) =
+          fields.middleRows(3 * static_cast<Eigen::Index>(origin[node]), 3);
+}
+
+// The volume of one cell of `mesh` from its own nodes (volume_mesh_volume of that cell
+// alone, without copying every node of the mesh).
+double cell_volume(const VolumeMesh& mesh, Eigen::Index cell) {
+  VolumeMesh alone{mesh.element_type, Eigen::MatrixXd(mesh.cells.cols(), 3), Eigen::MatrixXi(1, mesh.cells.cols())};
+  for (Eigen::Index k = 0; k < mesh.cells.cols(); ++k) {
+    alone.nodes.row(k) = mesh.nodes.row(mesh.cells(cell, k));
+    alone.cells(0, k) = static_cast<int>(k);
+  }
+  return volume_mesh_volume(alone);
+}
+
+}  // namespace
+
 EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded,
                                    const CutCellSettings& settings, const SceneMaterials& materials,
                                    const std::vector<DirichletCondition>& dirichlet, const std::string& scene_file)
@@ -39,9 +62,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
                                   pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{});
   warnings_ = conditions_cutting_cells(fcm_.mesh, dirichlet);
   for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
-    material_volume_ +=
-        fcm_.volume_fractions[cell] * volume_mesh_volume({fcm_.mesh.element_type, fcm_.mesh.nodes,
-                                                          fcm_.mesh.cells.row(static_cast<Eigen::Index>(cell))});
+    material_volume_ += fcm_.volume_fractions[cell] * cell_volume(fcm_.mesh, static_cast<Eigen::Index>(cell));
   seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -154,11 +175,22 @@ std::vector<int> EmbeddedCutCells::background_nodes() const {
   return nodes;
 }
 
-void copy_node_values(const std::vector<int>& origin, const Eigen::MatrixXd& fields, Eigen::MatrixXd& moved) {
-  for (std::size_t node = 0; node < origin.size(); ++node)
-    if (origin[node] >= 0)
-      moved.middleRows(3 * static_cast<Eigen::Index>(node), 3) =
-          fields.middleRows(3 * static_cast<Eigen::Index>(origin[node]), 3);
+Eigen::MatrixXd EmbeddedCutCells::transfer(const EmbeddedCutCells& before, const ElementBasisEvaluator& before_basis,
+                                           const Eigen::MatrixXd& fields) const {
+  const std::vector<int> origin = node_origins(before);
+  const bool every_node_continues =
+      !origin.empty() && std::none_of(origin.begin(), origin.end(), [](int node) { return node < 0; });
+  Eigen::MatrixXd moved = every_node_continues
+                              ? Eigen::MatrixXd(3 * fcm_.mesh.nodes.rows(), fields.cols())
+                              : transfer_to_nodes(fcm_.mesh.nodes, before.fcm_.mesh.nodes, before_basis, fields);
+  copy_node_values(origin, fields, moved);
+  return moved;
+}
+
+Eigen::MatrixXd EmbeddedCutCells::transfer_from_background(const Eigen::MatrixXd& fields) const {
+  Eigen::MatrixXd moved(3 * fcm_.mesh.nodes.rows(), fields.cols());
+  copy_node_values(background_nodes(), fields, moved);  // every kept node copies one
+  return moved;
 }
 
 }  // namespace altfem

@@ -70,6 +70,19 @@ public:
   std::string cut_refusal() const;
   /// The embedded tetrahedra cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
   EmbeddedTetrahedra cut(const CuttingPlane& blade, nlohmann::json& facts) const;
+  /// Nodal fields of `before` (#kept nodes of before · 3 × #fields; `before_basis` its
+  /// basis) on these kept nodes: a node copy takes the values of the copy it continues
+  /// (node_origins) bit for bit; only where some node continues none (another
+  /// background, a piece that was not kept) are the old fields evaluated at the nodes
+  /// (transfer_to_nodes).
+  Eigen::MatrixXd transfer(const EmbeddedCutCells& before, const ElementBasisEvaluator& before_basis,
+                           const Eigen::MatrixXd& fields) const;
+  /// Nodal fields of the background mesh's own nodes (#background nodes · 3 × #fields:
+  /// fem before its first cut) on these kept nodes: each copy takes its node's values.
+  Eigen::MatrixXd transfer_from_background(const Eigen::MatrixXd& fields) const;
+
+private:
+  bool continues(const EmbeddedCutCells& before) const;
   /// Per kept node, the kept node of `before` whose values it continues: a kept cell's
   /// tetrahedra lie in one piece of the same background cell before, whose kept cell has
   /// the node at the same corner; −1 where that piece was not kept. Empty when this was
@@ -77,9 +90,6 @@ public:
   std::vector<int> node_origins(const EmbeddedCutCells& before) const;
   /// Per kept node, the background node it is a copy of.
   std::vector<int> background_nodes() const;
-
-private:
-  bool continues(const EmbeddedCutCells& before) const;
 
   CutCellSettings settings_;
   VolumeMesh background_;  ///< before topology-aware splitting
@@ -95,9 +105,5 @@ private:
 /// `tetrahedra` cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
 EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
                                            nlohmann::json& facts);
-
-/// Nodal fields (#nodes·3 × #fields) carried by node_origins or background_nodes: the
-/// rows of node n of `moved` from those of node origin[n] of `fields`, where origin[n] ≥ 0.
-void copy_node_values(const std::vector<int>& origin, const Eigen::MatrixXd& fields, Eigen::MatrixXd& moved);
 
 }  // namespace altfem

@@ -3,7 +3,6 @@
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/tetrahedra_of_hexahedra.hpp"
-#include "shared/mesh/weld_coincident_nodes.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 
@@ -68,18 +67,11 @@ public:
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, cells_->cut(blade, facts)});
   }
   /// From fem before its first cut, each node copy takes its node's values; from a cut
-  /// fem, the values of the copy its material came from (EmbeddedCutCells::node_origins).
+  /// fem, the values of the copy its material came from (EmbeddedCutCells::transfer).
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
-    const auto& nodes = cells_->discretization().mesh.nodes;
-    if (const auto* cut = dynamic_cast<const CutFemMethod*>(&previous)) {
-      Eigen::MatrixXd moved =
-          transfer_to_nodes(nodes, cut->cells_->discretization().mesh.nodes, previous.basis_evaluator(), fields);
-      copy_node_values(cells_->node_origins(*cut->cells_), fields, moved);
-      return moved;
-    }
-    Eigen::MatrixXd moved = Eigen::MatrixXd::Zero(3 * nodes.rows(), fields.cols());
-    copy_node_values(cells_->background_nodes(), fields, moved);
-    return moved;
+    if (const auto* cut = dynamic_cast<const CutFemMethod*>(&previous))
+      return cells_->transfer(*cut->cells_, previous.basis_evaluator(), fields);
+    return cells_->transfer_from_background(fields);
   }
   std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const override {
     return nodal_field_quadrature(borrowed(cells_->discretization().discretization->elements()),
@@ -95,9 +87,8 @@ private:
 }  // namespace
 
 VolumeMesh element_tetrahedra(const VolumeMesh& elements) {
-  if (element_shape(elements.element_type) == ElementShape::hexahedron)
-    return weld_coincident_nodes(tetrahedra_of_hexahedra(elements));
-  return weld_coincident_nodes(VolumeMesh{ElementType::tet4, elements.nodes, elements.cells.leftCols(4)});
+  if (element_shape(elements.element_type) == ElementShape::hexahedron) return tetrahedra_of_hexahedra(elements);
+  return VolumeMesh{ElementType::tet4, elements.nodes, elements.cells.leftCols(4)};
 }
 
 std::string fem_cut_refusal(ElementType type) {

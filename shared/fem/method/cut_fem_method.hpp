@@ -19,8 +19,9 @@ struct FemMesh {
   std::optional<EmbeddedTetrahedra> material;
 };
 
-/// The elements' own tetrahedra (uncut): Tet4/Tet10 corners, a hexahedron's 12 about its
-/// centroid, welded; what the first cut cuts.
+/// The elements' own tetrahedra (uncut), conforming by node as the elements are: Tet4/Tet10
+/// corners, a hexahedron's 12 about its centroid (tetrahedra_of_hexahedra); what the first
+/// cut cuts.
 VolumeMesh element_tetrahedra(const VolumeMesh& elements);
 
 /// Why fem cannot cut a mesh of this element type (one phrase); empty when it can.
