@@ -118,9 +118,10 @@ EmbeddedTetrahedra EmbeddedCutCells::cut(const CuttingPlane& blade, nlohmann::js
 EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
                                            nlohmann::json& facts) {
   TetrahedralCut cut = cut_tetrahedral_mesh(tetrahedra, blade);
-  facts = {{"crossed_tetrahedra", cut.crossed_tetrahedra}, {"separated_faces", cut.separated_faces},
-           {"duplicated_nodes", cut.duplicated_nodes},     {"snapped_nodes", cut.snapped_nodes},
-           {"flat_tetrahedra", cut.flat_tetrahedra},       {"tetrahedra", cut.mesh.cells.rows()}};
+  facts = {{"crossed_tetrahedra", cut.crossed_tetrahedra}, {"joined_tetrahedra", cut.joined_tetrahedra},
+           {"separated_faces", cut.separated_faces},       {"duplicated_nodes", cut.duplicated_nodes},
+           {"snapped_nodes", cut.snapped_nodes},           {"flat_tetrahedra", cut.flat_tetrahedra},
+           {"tetrahedra", cut.mesh.cells.rows()}};
   return {std::move(cut.mesh), std::move(cut.parent_tetrahedron)};
 }
 

@@ -7,11 +7,9 @@ namespace altfem {
 PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const CuttingPlane& blade,
                                               nlohmann::json& facts) {
   PolyhedralCut cut = cut_polyhedral_mesh(mesh.sliced.mesh, blade);
-  facts = {{"crossed_cells", cut.crossed_cells},
-           {"separated_faces", cut.separated_faces},
-           {"duplicated_nodes", cut.duplicated_nodes},
-           {"snapped_nodes", cut.snapped_nodes},
-           {"cells", cut.mesh.cell_count()}};
+  facts = {{"crossed_cells", cut.crossed_cells},     {"joined_cells", cut.joined_cells},
+           {"separated_faces", cut.separated_faces}, {"duplicated_nodes", cut.duplicated_nodes},
+           {"snapped_nodes", cut.snapped_nodes},     {"cells", cut.mesh.cell_count()}};
   PolyhedralSceneMesh result = mesh;
   result.sliced.mesh = std::move(cut.mesh);
   result.converted.reset();

@@ -12,6 +12,13 @@ namespace altfem {
 int orientation_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                      const Eigen::Vector3d& d);
 
+/// orientation_sign(d, e, f, x) for the point x where the line through p and q meets the
+/// plane through a, b, c (p and q strictly on either side of that plane), x constructed
+/// exactly: on which side of a second plane a blade's crossing point of an edge lies.
+int crossing_orientation_sign(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                              const Eigen::Vector3d& p, const Eigen::Vector3d& q, const Eigen::Vector3d& d,
+                              const Eigen::Vector3d& e, const Eigen::Vector3d& f);
+
 /// Whether a, b, c lie on one line (two or three of them equal included).
 bool collinear(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 

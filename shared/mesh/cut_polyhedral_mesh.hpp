@@ -1,8 +1,12 @@
 #pragma once
 // A polyhedral mesh cut by a planar blade (Kaufmann et al. 2009 §9.4, Martin et al. 2008
-// §8): every cell the plane crosses becomes its two pieces, and what the plane separates
+// §8): every cell the plane crosses becomes its two pieces, and what the blade separates
 // separates — the pieces' faces on the blade, and mesh faces that lie in it, are boundary
-// faces, and the nodes on the blade are duplicated, one copy per side. Every side
+// faces, and the nodes on them are duplicated, one copy per group of pieces they hold
+// that no longer meet through a face. A finite blade (a convex polygon) separates only
+// the sections it covers whole: a cell its edge runs through is split into two pieces
+// that stay joined (the face between them interior), as is every cell the plane crosses
+// that meets those through faces the plane crosses, so the mesh stays conforming. Every side
 // decision is an exact orientation predicate on the nodes as stored, so a blade through
 // nodes, along edges or in faces is an ordinary case; a node a few hundred ulps off the
 // blade is taken on it, so that no piece is thinner than that.
@@ -29,18 +33,19 @@ struct PolyhedralCut {
   std::vector<int> parent_cell;          ///< #cells of `mesh`: the cell of the input it lies in
   std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
   int crossed_cells = 0;                 ///< input cells split into two pieces
+  int joined_cells = 0;                  ///< of those, the ones whose pieces stay joined (finite blades)
   int separated_faces = 0;               ///< interior input faces in the plane, now two boundary faces
-  int duplicated_nodes = 0;              ///< nodes on the plane given a copy for the negative side
+  int duplicated_nodes = 0;              ///< copies of nodes on the opened faces
   int snapped_nodes = 0;                 ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
 };
 
 /// Cuts `mesh` by `plane`. A crossed cell must be convex (each of its nodes on or behind
 /// the plane of each of its faces); throws NumericalError naming the first that is not
 /// (cutting non-convex cells is not implemented yet). Throws std::invalid_argument for a
-/// zero normal. A plane that misses every cell returns the mesh unchanged. Without
-/// `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for
-/// its rounded volume to be positive is the caller's to handle (cut_tetrahedral_mesh);
-/// with it, compute_polyhedral_geometry throws NumericalError for such a piece.
+/// zero normal or a blade polygon with a blade_polygon_problem. A plane that misses every cell returns the mesh
+/// unchanged. Without `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its
+/// rounded volume to be positive is the caller's to handle (cut_tetrahedral_mesh); with it, compute_polyhedral_geometry
+/// throws NumericalError for such a piece.
 PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true);
 
 }  // namespace altfem

@@ -74,6 +74,7 @@ TetrahedralCut cut_tetrahedral_mesh(const VolumeMesh& mesh, const CuttingPlane& 
   const PolyhedralMesh& pieces = cut.mesh;
 
   result.crossed_tetrahedra = cut.crossed_cells;
+  result.joined_tetrahedra = cut.joined_cells;
   result.separated_faces = cut.separated_faces;
   result.duplicated_nodes = cut.duplicated_nodes;
   result.snapped_nodes = cut.snapped_nodes;

@@ -23,8 +23,9 @@ struct TetrahedralCut {
   std::vector<int> parent_tetrahedron;   ///< #cells of `mesh`: the input tetrahedron it lies in
   std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`, in the input's numbering
   int crossed_tetrahedra = 0;            ///< input tetrahedra split into two pieces
+  int joined_tetrahedra = 0;             ///< of those, the ones whose pieces stay joined (finite blades)
   int separated_faces = 0;               ///< interior input faces in the plane, now two boundary faces
-  int duplicated_nodes = 0;              ///< nodes on the plane given a copy for the negative side
+  int duplicated_nodes = 0;              ///< copies of nodes on the opened faces
   int snapped_nodes = 0;                 ///< nodes within 1e-13 of the diagonal of the plane, taken on it
   int flat_tetrahedra = 0;               ///< slivers of the input or of the pieces' cones, left out
 };

@@ -1,14 +1,64 @@
 #pragma once
-// A planar blade: what a scene's `cut` event holds and what the meshes are cut by.
+// A planar blade: what a scene's `cut` event holds and what the meshes are cut by — the
+// whole plane, or a convex polygon in it (a finite blade: partial cuts and notches).
 #include <Eigen/Core>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace altfem {
 
 /// The plane through `point` with normal `normal` (not necessarily unit, non-zero). Its
-/// positive side is where `normal` points.
+/// positive side is where `normal` points. With `polygon` non-empty the blade is that
+/// convex polygon of the plane (its corners in order, either way round, each on the plane
+/// to 1e-9 of the polygon's size) and only what it covers separates.
 struct CuttingPlane {
+  CuttingPlane() = default;
+  CuttingPlane(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, std::vector<Eigen::Vector3d> polygon = {})
+      : point(point), normal(normal), polygon(std::move(polygon)) {}
+
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
+  std::vector<Eigen::Vector3d> polygon;
+};
+
+/// The blade of the polygon `corners`: its plane through the first corner with the
+/// polygon's Newell normal (its positive side the one the corners turn counter-clockwise
+/// around seen from). Check it with blade_polygon_problem.
+CuttingPlane polygon_blade(std::vector<Eigen::Vector3d> corners);
+
+/// Why `blade`'s polygon cannot be a blade ("" when it can, or when it has none): fewer
+/// than 3 corners, corners not finite, off the plane, repeated, collinear, or a polygon
+/// that is not convex.
+std::string blade_polygon_problem(const CuttingPlane& blade);
+
+/// A blade as the cut decides with it: its plane as three points a, b, c on it, (b − a) ×
+/// (c − a) along the blade's normal, so that every side decision is one exact orientation
+/// predicate against the same plane; and, for a polygon, its side planes (through each
+/// edge and the edge moved along the normal), so that whether the blade covers a point of
+/// its plane is exact too.
+class ExactBlade {
+public:
+  /// Throws std::invalid_argument for a zero or non-finite normal or a polygon with a
+  /// blade_polygon_problem.
+  explicit ExactBlade(const CuttingPlane& blade);
+
+  /// −1, 0, +1: the side of the plane `point` lies on.
+  int side(const Eigen::Vector3d& point) const;
+  /// Whether the blade covers `point`, a point of its plane: always for the whole plane,
+  /// within the polygon or on its edges otherwise.
+  bool covers(const Eigen::Vector3d& point) const;
+  /// Whether the blade covers the point where it crosses the edge (p, q), whose ends lie
+  /// strictly on either side of the plane (the crossing point constructed exactly).
+  bool covers_crossing(const Eigen::Vector3d& p, const Eigen::Vector3d& q) const;
+  bool whole_plane() const { return corners_.empty(); }
+
+  Eigen::Vector3d a, b, c;
+  Eigen::Vector3d normal;  ///< (b − a) × (c − a), for placing new nodes only
+
+private:
+  std::vector<Eigen::Vector3d> corners_, raised_;  ///< the polygon; each corner moved along the normal
+  int inside_sign_ = 1;                            ///< the side planes' sign inside the polygon
 };
 
 }  // namespace altfem

@@ -1,8 +1,8 @@
 #pragma once
 // Seeded planes of every degenerate kind for the cut tests: through nodes with axis,
 // diagonal and random normals, nearly parallel to faces, grazing a node, and anywhere
-// in the unit cube. `count` planes, or ALTFEM_CUT_PLANES of them when it is set
-// (docs/verification.md gives the full count's run).
+// in the unit cube; and finite blades in them. `count` blades, or ALTFEM_CUT_PLANES of
+// them when it is set (docs/verification.md gives the full count's run).
 #include <Eigen/Core>
 #include <cstdlib>
 #include <random>
@@ -33,6 +33,37 @@ inline std::vector<CuttingPlane> seeded_cut_planes(const Eigen::MatrixXd& nodes,
     planes.push_back(plane);
   }
   return planes;
+}
+
+/// Finite blades in seeded_cut_planes' planes: a square about the plane's point, a
+/// triangle with a corner at it, or a long strip whose edge runs through it; half-widths
+/// of one or two grid spacings (`spacing`; axis planes give edges along grid lines and
+/// corners on nodes) or random.
+inline std::vector<CuttingPlane> seeded_cut_polygons(const Eigen::MatrixXd& nodes, double spacing, int count) {
+  std::vector<CuttingPlane> blades = seeded_cut_planes(nodes, count);
+  std::mt19937_64 random(20261128);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (std::size_t k = 0; k < blades.size(); ++k) {
+    CuttingPlane& blade = blades[k];
+    Eigen::Index largest = 0;
+    blade.normal.cwiseAbs().maxCoeff(&largest);
+    const Eigen::Vector3d first = blade.normal.cross(Eigen::Vector3d::Unit((largest + 1) % 3)).normalized();
+    const Eigen::Vector3d second = blade.normal.normalized().cross(first);
+    const double width = k % 4 == 3 ? 0.05 + unit(random) : spacing * static_cast<double>(1 + k % 2);
+    const Eigen::Vector3d& point = blade.point;
+    switch (k % 3) {
+      case 0:
+        blade.polygon = {point - width * (first + second), point + width * (first - second),
+                         point + width * (first + second), point - width * (first - second)};
+        break;
+      case 1: blade.polygon = {point, point + width * first, point + width * second}; break;
+      default:
+        blade.polygon = {point - 2 * first, point + 2 * first, point + 2 * first + width * second,
+                         point - 2 * first + width * second};
+        break;
+    }
+  }
+  return blades;
 }
 
 }  // namespace altfem

@@ -13,6 +13,7 @@
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "tests/unit/mesh/every_cell_closed.hpp"
 #include "tests/unit/mesh/seeded_cut_planes.hpp"
 
 namespace altfem {
@@ -21,28 +22,6 @@ namespace {
 PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
   const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
   return polyhedral_mesh_from_volume_mesh(structured_grid(box, Eigen::Vector3i::Constant(cells_per_axis), type));
-}
-
-// Every directed edge of a cell's outward face loops is matched by its reverse: the
-// cell's boundary is closed and consistently oriented.
-::testing::AssertionResult every_cell_closed(const PolyhedralMesh& mesh) {
-  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
-    std::map<std::pair<int, int>, int> edges;
-    for (const int face : mesh.cell_faces[cell]) {
-      std::vector<int> loop = mesh.faces[face];
-      if (loop.size() < 3)
-        return ::testing::AssertionFailure() << "face " << face << " has " << loop.size() << " nodes";
-      if (mesh.face_cells(face, 0) != cell) std::reverse(loop.begin(), loop.end());
-      for (std::size_t k = 0; k < loop.size(); ++k) ++edges[{loop[k], loop[(k + 1) % loop.size()]}];
-    }
-    for (const auto& [edge, count] : edges) {
-      const auto reverse = edges.find({edge.second, edge.first});
-      if (reverse == edges.end() || reverse->second != count)
-        return ::testing::AssertionFailure()
-               << "cell " << cell << ": edge " << edge.first << " → " << edge.second << " has no matching reverse";
-    }
-  }
-  return ::testing::AssertionSuccess();
 }
 
 // The cells whose centroid lies on the positive side of the plane, and their volume.
