@@ -16,11 +16,46 @@ int condition_named(const nlohmann::json& conditions, const std::string& name) {
   return -1;
 }
 
+// A cut event's blade: its plane, or its polygon (already checked by check_cut_blade).
+CuttingPlane blade_from_json(const nlohmann::json& cut) {
+  if (cut.contains("plane")) {
+    CuttingPlane blade;
+    for (int axis = 0; axis < 3; ++axis) {
+      blade.point[axis] = cut["plane"]["point"][axis].get<double>();
+      blade.normal[axis] = cut["plane"]["normal"][axis].get<double>();
+    }
+    return blade;
+  }
+  std::vector<Eigen::Vector3d> corners;
+  for (const nlohmann::json& corner : cut["polygon"])
+    corners.emplace_back(corner[0].get<double>(), corner[1].get<double>(), corner[2].get<double>());
+  return polygon_blade(std::move(corners));
+}
+
 }  // namespace
 
 namespace scene_schema {
 
 using nlohmann::json;
+
+void check_cut_blade(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (!resolved.contains("polygon")) return;
+  const json& polygon = resolved["polygon"];
+  const std::string where = pointer + "/polygon";
+  if (!polygon.is_array() || polygon.size() < 3)
+    validator.fail(where, "expected an array of at least 3 corners [x, y, z], got " + describe(polygon));
+  for (std::size_t k = 0; k < polygon.size(); ++k) {
+    const json& corner = polygon[k];
+    const bool point =
+        corner.is_array() && corner.size() == 3 && std::all_of(corner.begin(), corner.end(), [](const json& value) {
+          return value.is_number() && std::isfinite(value.get<double>());
+        });
+    if (!point)
+      validator.fail(where + "/" + std::to_string(k), "expected [x, y, z] of finite numbers, got " + describe(corner));
+  }
+  if (const std::string problem = blade_polygon_problem(blade_from_json(resolved)); !problem.empty())
+    validator.fail(where, "expected a planar convex polygon: " + problem);
+}
 
 void check_condition_names(const Validator& validator, const json& conditions) {
   // Discretizations record a DOF's conditions as a 64-bit set (shared/solve/dirichlet_dofs.hpp).
@@ -100,12 +135,8 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     result.time = event["time"].get<double>();
     result.pointer = "/events/" + std::to_string(i);
     if (event.contains("cut")) {
-      const nlohmann::json& plane = event["cut"]["plane"];
       result.kind = EventKind::cut;
-      for (int axis = 0; axis < 3; ++axis) {
-        result.blade.point[axis] = plane["point"][axis].get<double>();
-        result.blade.normal[axis] = plane["normal"][axis].get<double>();
-      }
+      result.blade = blade_from_json(event["cut"]);
     } else {
       result.kind = EventKind::release;
       result.condition = condition_named(conditions, event["release"].get<std::string>());

@@ -3,6 +3,7 @@
 // need the whole scene (the conditions they name, the run's time range), and their
 // reading into Scene::events.
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 #include "shared/scene/scene.hpp"
@@ -17,6 +18,10 @@ void check_condition_names(const Validator& validator, const nlohmann::json& con
 /// load-step index 0 … load_steps − 1), naming an existing target, not repeating an
 /// event of its kind at its time on its target, and not releasing a condition twice.
 void check_events(const Validator& validator, const nlohmann::json& resolved);
+/// A cut event's `polygon`: at least 3 corners of [3] finite numbers, planar and convex
+/// (blade_polygon_problem).
+void check_cut_blade(const Validator& validator, const nlohmann::json& input, nlohmann::json& resolved,
+                     const std::string& pointer);
 }  // namespace scene_schema
 
 /// The resolved scene's events, sorted by time (scene order among equal times).

@@ -311,8 +311,13 @@ const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                          check_compare};
 
 // `events` entries: a time and exactly one kind (cross-checked by check_events).
-const ObjectRule cut_event{
-    {{.key = "plane", .type = ValueType::object, .required = true, .object = &region_half_space}}};
+const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object = &region_half_space},
+                            {.key = "polygon", .type = ValueType::any}},
+                           {{"plane", "polygon"}},
+                           {},
+                           {},
+                           false,
+                           check_cut_blade};
 
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
                         {.key = "release", .type = ValueType::string},
