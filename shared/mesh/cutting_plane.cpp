@@ -20,6 +20,45 @@ CuttingPlane polygon_blade(std::vector<Eigen::Vector3d> corners) {
   return blade;
 }
 
+CuttingPlane swept_blade(const CuttingPlane& blade, const Eigen::Vector3d& translation) {
+  // Andrew's monotone chain in the plane's coordinates (Eigen and a dozen corners: CGAL's
+  // convex_hull_2 would need a projection traits class for an arbitrary plane).
+  const Eigen::Vector3d normal = blade.normal.normalized();
+  Eigen::Index smallest = 0;
+  normal.cwiseAbs().minCoeff(&smallest);
+  const Eigen::Vector3d first = normal.cross(Eigen::Vector3d::Unit(smallest)).normalized();
+  const Eigen::Vector3d second = normal.cross(first);
+  std::vector<Eigen::Vector3d> points = blade.polygon;
+  for (const Eigen::Vector3d& corner : blade.polygon) points.push_back(corner + translation);
+  const auto coordinates = [&](const Eigen::Vector3d& x) {
+    return Eigen::Vector2d((x - blade.point).dot(first), (x - blade.point).dot(second));
+  };
+  std::sort(points.begin(), points.end(), [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector2d u = coordinates(a), v = coordinates(b);
+    return u.x() < v.x() || (u.x() == v.x() && u.y() < v.y());
+  });
+  double size = 0;
+  for (const Eigen::Vector3d& point : points) size = std::max(size, (point - points.front()).norm());
+  // Positive when a → b → c turns counter-clockwise about the normal, by more than round-off.
+  const auto turns_left = [&](const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+    const Eigen::Vector2d u = coordinates(b) - coordinates(a), v = coordinates(c) - coordinates(a);
+    return u.x() * v.y() - u.y() * v.x() > 1e-12 * size * size;
+  };
+  std::vector<Eigen::Vector3d> hull;
+  for (int pass = 0; pass < 2; ++pass) {
+    const std::size_t start = hull.size();
+    for (const Eigen::Vector3d& point : points) {
+      while (hull.size() >= start + 2 && !turns_left(hull[hull.size() - 2], hull.back(), point)) hull.pop_back();
+      hull.push_back(point);
+    }
+    hull.pop_back();  // the chain's last point starts the other chain
+    std::reverse(points.begin(), points.end());
+  }
+  CuttingPlane swept = blade;
+  swept.polygon = std::move(hull);
+  return swept;
+}
+
 std::string blade_polygon_problem(const CuttingPlane& blade) {
   const std::vector<Eigen::Vector3d>& corners = blade.polygon;
   if (corners.empty()) return "";
@@ -44,7 +83,9 @@ std::string blade_polygon_problem(const CuttingPlane& blade) {
     const Eigen::Vector3d& previous = corners[(k + corners.size() - 1) % corners.size()];
     const Eigen::Vector3d& next = corners[(k + 1) % corners.size()];
     const double turn = (corners[k] - previous).cross(next - corners[k]).dot(unit);
-    if (turn < 0) return "the blade polygon is not convex (it turns back at corner " + std::to_string(k) + ")";
+    // A corner where the polygon runs straight on may turn either way by round-off.
+    if (turn < -1e-12 * (corners[k] - previous).norm() * (next - corners[k]).norm())
+      return "the blade polygon is not convex (it turns back at corner " + std::to_string(k) + ")";
     winding += std::atan2(turn, (corners[k] - previous).dot(next - corners[k]));
   }
   if (winding > 2 * M_PI * (1 + 1e-9)) return "the blade polygon is not convex (it winds around more than once)";

@@ -27,6 +27,11 @@ struct CuttingPlane {
 /// around seen from). Check it with blade_polygon_problem.
 CuttingPlane polygon_blade(std::vector<Eigen::Vector3d> corners);
 
+/// What the polygon of `blade` sweeps moving by `translation` in its plane: the convex
+/// hull of it and its translate (its corners are theirs; corners where the hull runs
+/// straight on are left out).
+CuttingPlane swept_blade(const CuttingPlane& blade, const Eigen::Vector3d& translation);
+
 /// Why `blade`'s polygon cannot be a blade ("" when it can, or when it has none): fewer
 /// than 3 corners, corners not finite, off the plane, repeated, collinear, or a polygon
 /// that is not convex.

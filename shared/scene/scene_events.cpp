@@ -32,6 +32,29 @@ CuttingPlane blade_from_json(const nlohmann::json& cut) {
   return polygon_blade(std::move(corners));
 }
 
+// A swept blade as the cuts it makes: at the event's time the polygon, then at n more
+// times up to sweep.to_time what it has swept so far (n: sweep.substeps, or one per time
+// step — per load step for a static scene — it moves through).
+void append_sweep(const nlohmann::json& event, const nlohmann::json& time, const SceneEvent& first,
+                  std::vector<SceneEvent>& events) {
+  const nlohmann::json& sweep = event["cut"]["sweep"];
+  const double start = first.time, end = sweep["to_time"].get<double>();
+  const double step = time["static"].get<bool>() ? 1.0 : time["dt"].get<double>();
+  const int cuts = sweep.contains("substeps") ? sweep["substeps"].get<int>()
+                                              : std::max(1, static_cast<int>(std::lround((end - start) / step)));
+  const Eigen::Vector3d translation(sweep["translation"][0].get<double>(), sweep["translation"][1].get<double>(),
+                                    sweep["translation"][2].get<double>());
+  const CuttingPlane blade = blade_from_json(event["cut"]);
+  for (int cut = 0; cut <= cuts; ++cut) {
+    SceneEvent result = first;
+    const double fraction = static_cast<double>(cut) / cuts;
+    result.kind = EventKind::cut;
+    result.time = cut == cuts ? end : start + fraction * (end - start);
+    result.blade = cut == 0 ? blade : swept_blade(blade, fraction * translation);
+    events.push_back(std::move(result));
+  }
+}
+
 }  // namespace
 
 namespace scene_schema {
@@ -39,9 +62,13 @@ namespace scene_schema {
 using nlohmann::json;
 
 void check_cut_blade(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
-  if (!resolved.contains("polygon")) return;
-  const json& polygon = resolved["polygon"];
+  const json& polygon = resolved.contains("polygon") ? resolved["polygon"] : json();
   const std::string where = pointer + "/polygon";
+  if (!resolved.contains("polygon")) {
+    if (resolved.contains("sweep"))
+      validator.fail(pointer + "/sweep", "a sweep moves a finite blade: give a polygon, not a plane");
+    return;
+  }
   if (!polygon.is_array() || polygon.size() < 3)
     validator.fail(where, "expected an array of at least 3 corners [x, y, z], got " + describe(polygon));
   for (std::size_t k = 0; k < polygon.size(); ++k) {
@@ -53,8 +80,17 @@ void check_cut_blade(const Validator& validator, const json&, json& resolved, co
     if (!point)
       validator.fail(where + "/" + std::to_string(k), "expected [x, y, z] of finite numbers, got " + describe(corner));
   }
-  if (const std::string problem = blade_polygon_problem(blade_from_json(resolved)); !problem.empty())
+  const CuttingPlane blade = blade_from_json(resolved);
+  if (const std::string problem = blade_polygon_problem(blade); !problem.empty())
     validator.fail(where, "expected a planar convex polygon: " + problem);
+  if (!resolved.contains("sweep")) return;
+  const json& translation = resolved["sweep"]["translation"];
+  const Eigen::Vector3d moved(translation[0].get<double>(), translation[1].get<double>(), translation[2].get<double>());
+  if (std::abs(moved.dot(blade.normal.normalized())) > 1e-9 * moved.norm())
+    validator.fail(pointer + "/sweep/translation",
+                   "expected a translation in the blade's plane (a blade moving out of it would cut a surface that is "
+                   "not planar), got " +
+                       translation.dump());
 }
 
 void check_condition_names(const Validator& validator, const json& conditions) {
@@ -106,6 +142,14 @@ void check_events(const Validator& validator, const json& resolved) {
   for (std::size_t i = 0; i < events.size(); ++i) {
     const std::string pointer = "/events/" + std::to_string(i);
     check_time_range(validator, resolved["time"], events[i]["time"].get<double>(), pointer + "/time");
+    if (events[i].contains("cut") && events[i]["cut"].contains("sweep")) {
+      const double to_time = events[i]["cut"]["sweep"]["to_time"].get<double>();
+      check_time_range(validator, resolved["time"], to_time, pointer + "/cut/sweep/to_time");
+      if (!(to_time > events[i]["time"].get<double>()))
+        validator.fail(pointer + "/cut/sweep/to_time", "expected a time after the event's " +
+                                                           describe(events[i]["time"]) + ", got " +
+                                                           describe(events[i]["cut"]["sweep"]["to_time"]));
+    }
     if (!events[i].contains("release")) continue;
     const std::string name = events[i]["release"].get<std::string>();
     const int condition = condition_named(conditions, name);
@@ -134,6 +178,10 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     SceneEvent result;
     result.time = event["time"].get<double>();
     result.pointer = "/events/" + std::to_string(i);
+    if (event.contains("cut") && event["cut"].contains("sweep")) {
+      append_sweep(event, resolved["time"], result, events);
+      continue;
+    }
     if (event.contains("cut")) {
       result.kind = EventKind::cut;
       result.blade = blade_from_json(event["cut"]);

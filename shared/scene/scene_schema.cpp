@@ -311,8 +311,12 @@ const ObjectRule compare{{{.key = "methods", .type = ValueType::any},
                          check_compare};
 
 // `events` entries: a time and exactly one kind (cross-checked by check_events).
+const ObjectRule cut_sweep{{{.key = "to_time", .type = ValueType::number, .required = true, .lower = positive},
+                            {.key = "translation", .type = ValueType::vector3, .required = true, .nonzero = true},
+                            {.key = "substeps", .type = ValueType::integer, .lower = at_least_one}}};
 const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object = &region_half_space},
-                            {.key = "polygon", .type = ValueType::any}},
+                            {.key = "polygon", .type = ValueType::any},
+                            {.key = "sweep", .type = ValueType::object, .object = &cut_sweep}},
                            {{"plane", "polygon"}},
                            {},
                            {},

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <array>
 #include <set>
 
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
@@ -90,6 +91,28 @@ TEST(CutByPolygon, ABladeEndingInsideCellsKeepsTheirPiecesJoined) {
   EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0.0);
   EXPECT_NEAR(cut.mesh.cell_volumes.sum(), 1.0, 1e-14);
   for (const int node : nodes_held_across(cut.mesh, 0.4)) EXPECT_LE(cut.mesh.nodes(node, 2), 0.75) << node;
+}
+
+// A square swept along its side is the longer rectangle; a triangle swept along its
+// hypotenuse's normal is a pentagon (the translate's right-angle corner falls inside).
+TEST(CutByPolygon, ASweptPolygonIsTheHullOfItAndItsTranslate) {
+  const auto corners_of = [](const CuttingPlane& blade) {
+    std::set<std::array<double, 3>> corners;
+    for (const Eigen::Vector3d& corner : blade.polygon) corners.insert({corner.x(), corner.y(), corner.z()});
+    return corners;
+  };
+  const CuttingPlane square = polygon_blade(
+      {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0), Eigen::Vector3d(0, 1, 0)});
+  const CuttingPlane rectangle = swept_blade(square, Eigen::Vector3d(0.5, 0, 0));
+  EXPECT_EQ(corners_of(rectangle), (std::set<std::array<double, 3>>{{0, 0, 0}, {1.5, 0, 0}, {1.5, 1, 0}, {0, 1, 0}}));
+  EXPECT_EQ(blade_polygon_problem(rectangle), "");
+  const CuttingPlane triangle =
+      polygon_blade({Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(0, 1, 0)});
+  const CuttingPlane pentagon = swept_blade(triangle, Eigen::Vector3d(1, 1, 0));
+  EXPECT_EQ(corners_of(pentagon),
+            (std::set<std::array<double, 3>>{{0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {1, 2, 0}, {0, 1, 0}}));
+  EXPECT_EQ(blade_polygon_problem(pentagon), "");
+  EXPECT_EQ(swept_blade(square, Eigen::Vector3d::Zero()).polygon.size(), 4u);
 }
 
 TEST(CutByPolygon, RefusesPolygonsThatCannotBeBlades) {

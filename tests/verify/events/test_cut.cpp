@@ -20,7 +20,8 @@
 //     zero, so each backward-Euler step adds exactly m g dt to its momentum.
 //   - A finite blade notching the bar from below (the side in tension) half-way up, along
 //     cell faces or through cells, makes it sag more than the whole bar and less than the
-//     bar cut through, and conserves the volume.
+//     bar cut through, and conserves the volume; swept up through the bar it ends as the
+//     two cantilevers.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -49,16 +50,20 @@ struct StaticAnswer {
   double vertical_mass = 0;  ///< ∫ρ u_z dV [kg m]
 };
 
-// The static solution of a scene, after its events at time 0.
+// The static solution of a scene at its last load step, each event applied after the
+// load step it names.
 StaticAnswer solve_static(const std::filesystem::path& file, const std::string& method_name,
                           const std::vector<SceneOverride>& overrides = {}) {
   const Scene scene = load_scene(file, overrides);
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = method_named(method_name);
   Simulation simulation(scene, geometry, method_name, method.factory, method.rebuild);
-  for (const SceneEvent& event : scene.events)
-    EXPECT_LE(std::abs(simulation.apply(event).conserved["volume_change"].get<double>()), 1e-12);
-  simulation.integrator().step(simulation.state());
+  std::size_t next = 0;  // events act after the load steps they name
+  for (int step = 0; step < scene.time.load_steps; ++step) {
+    for (; next < scene.events.size() && scene.events[next].time <= step; ++next)
+      EXPECT_LE(std::abs(simulation.apply(scene.events[next]).conserved["volume_change"].get<double>()), 1e-12);
+    simulation.integrator().step(simulation.state());
+  }
   const Discretization& discretization = simulation.method().discretization();
   const Eigen::VectorXd& u = simulation.state().displacement;
   return {discretization.energy(u), discretization.body_force(Eigen::Vector3d::UnitZ()).dot(u)};
@@ -132,6 +137,21 @@ TEST_P(Cut, AlongCellFacesTheBarHeldAtBothEndsIsTwoCantilevers) {
 // than the whole bar and less than the bar cut through. At x = 0.5 the blade lies along the faces of the cells (2 × 2
 // across the section for every method); at x = 0.55 it ends inside the upper cells, which
 // are split into pieces that stay joined.
+// A notch over the bottom half of the section swept up through the bar (in two load
+// steps: cuts at 0, 0.5 and 1 covering z ≤ 0.05, 0.1, 0.15) ends cut through: the two
+// cantilevers, as a plane cut gives them.
+TEST_P(Cut, ASweptBladeThatEndsThroughTheBarGivesTwoCantilevers) {
+  const StaticAnswer swept = solve_static(
+      scenes / "bar_held_at_both_ends.json", GetParam(),
+      {parse_scene_override("time/load_steps=2"),
+       parse_scene_override("events=[{\"time\": 0, \"cut\": {\"polygon\": [[0.5, -1, -1], [0.5, 1, -1], "
+                            "[0.5, 1, 0.05], [0.5, -1, 0.05]], \"sweep\": {\"to_time\": 1, \"translation\": "
+                            "[0, 0, 0.1], \"substeps\": 2}}}]")});
+  const StaticAnswer half = solve_static(scenes / "half_bar.json", GetParam());
+  EXPECT_NEAR(swept.vertical_mass, 2 * half.vertical_mass, 1e-10 * std::abs(half.vertical_mass));
+  EXPECT_NEAR(swept.energy, 2 * half.energy, 1e-10 * half.energy);
+}
+
 TEST_P(Cut, APartialNotchSoftensTheBarButDoesNotSeparateIt) {
   const std::string method = GetParam();
   const std::string resolution = method == "harmonic" ? "discretization/harmonic/convert/resolution=[10,2,2]"
@@ -146,8 +166,8 @@ TEST_P(Cut, APartialNotchSoftensTheBarButDoesNotSeparateIt) {
     const StaticAnswer whole = solve("[]");
     const StaticAnswer notched = solve("[{\"time\": 0, \"cut\": {\"polygon\": [[" + at + ", -1, -1], [" + at +
                                        ", 1, -1], [" + at + ", 1, " + up + "], [" + at + ", -1, " + up + "]]}}]");
-    const StaticAnswer cut = solve("[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [" + at +
-                                   ", 0, 0], \"normal\": [1, 0, 0]}}}]");
+    const StaticAnswer cut =
+        solve("[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [" + at + ", 0, 0], \"normal\": [1, 0, 0]}}}]");
     ASSERT_LT(whole.vertical_mass, 0.0);
     EXPECT_LT(notched.vertical_mass, 1.01 * whole.vertical_mass);  // sags at least 1% more
     EXPECT_GT(notched.vertical_mass, 0.99 * cut.vertical_mass);    // and at least 1% less than cut through
