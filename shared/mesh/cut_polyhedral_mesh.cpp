@@ -1,46 +1,17 @@
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <map>
-#include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "shared/common/error.hpp"
-#include "shared/geometry/exact_orientation.hpp"
+#include "shared/mesh/convex_cell.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 
 namespace altfem {
 namespace {
-
-// Each node of `cell` on or behind the plane of each of its faces (the plane of three
-// non-collinear nodes of the face, whose loop is counter-clockwise seen from outside).
-// Not a side decision of the cut, a check that its two-piece construction applies.
-// A piece of an earlier cut has rounded nodes, so its faces are planar only to round-off:
-// a node counts as behind a face up to this fraction of the face's size.
-constexpr double convexity_tolerance = 1e-10;
-
-bool is_convex(const PolyhedralMesh& mesh, int cell, const std::vector<int>& cell_nodes) {
-  for (const int face : mesh.cell_faces[cell]) {
-    std::vector<int> loop = mesh.faces[face];
-    if (mesh.face_cells(face, 0) != cell) std::reverse(loop.begin(), loop.end());
-    const Eigen::Vector3d a = mesh.nodes.row(loop[0]);
-    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-      const Eigen::Vector3d b = mesh.nodes.row(loop[k]), c = mesh.nodes.row(loop[k + 1]);
-      if (collinear(a, b, c)) continue;
-      const Eigen::Vector3d normal = (b - a).cross(c - a);
-      const double allowed = convexity_tolerance * normal.norm() * std::max((b - a).norm(), (c - a).norm());
-      for (const int node : cell_nodes)
-        if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0 &&
-            (mesh.nodes.row(node).transpose() - a).dot(normal) > allowed)
-          return false;
-      break;
-    }
-  }
-  return true;
-}
 
 // Of the mesh's bounding-box diagonal: a few hundred ulps, far below any element.
 constexpr double snap_fraction = 1e-13;
@@ -166,7 +137,7 @@ private:
       parent_.push_back(cell);
       crossed_[cell] = reached[cell] && covered_group[joined.find(cell)];
       if (!crossed_[cell]) continue;
-      if (!is_convex(mesh_, cell, nodes_of(cell)))
+      if (!is_convex_cell(mesh_, cell, nodes_of(cell)))
         throw NumericalError("cut: the blade crosses cell " + std::to_string(cell) +
                              ", which is not convex (cutting non-convex cells is not implemented yet)");
       parent_.push_back(cell);
