@@ -254,8 +254,8 @@ public:
                  "cut no longer matches (use embedding mls or element)"
                : "";
   }
-  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
-    return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "dg");
+  std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
+    return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "dg");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);

@@ -79,8 +79,8 @@ public:
   /// The material's volume Σ vol(K ∩ Ω) over the kept cells (EmbeddedCutCells).
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
-  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(blade, facts)});
+  std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(cut.blade, facts)});
   }
   /// Nodal values at the nodes (transfer_to_nodes); after a cut a node copy takes the
   /// values of the copy its material came from, which a position cannot tell apart.

@@ -127,8 +127,8 @@ public:
                                                                              .converted = std::nullopt});
   }
   std::string cut_refusal() const override { return ""; }
-  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
-    return cut_handed_polyhedral_mesh(*mesh(), blade, facts, "harmonic");
+  std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
+    return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "harmonic");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);

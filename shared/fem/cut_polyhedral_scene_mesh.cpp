@@ -1,26 +1,43 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
+#include "shared/mesh/merge_slivers.hpp"
 
 namespace altfem {
 
-PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const CuttingPlane& blade,
+PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const SceneEvent& cut,
                                               nlohmann::json& facts) {
-  PolyhedralCut cut = cut_polyhedral_mesh(mesh.sliced.mesh, blade);
-  facts = {{"crossed_cells", cut.crossed_cells},     {"joined_cells", cut.joined_cells},
-           {"separated_faces", cut.separated_faces}, {"duplicated_nodes", cut.duplicated_nodes},
-           {"snapped_nodes", cut.snapped_nodes},     {"cells", cut.mesh.cell_count()}};
+  PolyhedralCut result_of_cut = cut_polyhedral_mesh(mesh.sliced.mesh, cut.blade);
+  PolyhedralMesh& pieces = result_of_cut.mesh;
+  std::vector<double> minimum_volume(static_cast<std::size_t>(pieces.cell_count()), 0.0);
+  for (int piece = 0; piece < pieces.cell_count(); ++piece)
+    if (pieces.cell_kinds[piece] == PolyhedralCellKind::cut)
+      minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(result_of_cut.parent_cell[piece]);
+  const MergedPieces merged = merge_small_pieces(pieces, minimum_volume);
+  std::vector<NodeSource> node_sources = std::move(result_of_cut.node_sources);
+  if (!merged.kept_nodes.empty()) {
+    std::vector<NodeSource> kept;
+    for (const int node : merged.kept_nodes) kept.push_back(node_sources[node]);
+    node_sources = std::move(kept);
+  }
+  facts = {{"crossed_cells", result_of_cut.crossed_cells},
+           {"joined_cells", result_of_cut.joined_cells},
+           {"separated_faces", result_of_cut.separated_faces},
+           {"duplicated_nodes", result_of_cut.duplicated_nodes},
+           {"snapped_nodes", result_of_cut.snapped_nodes},
+           {"merged_pieces", merged.merged},
+           {"cells", pieces.cell_count()}};
   PolyhedralSceneMesh result = mesh;
-  result.sliced.mesh = std::move(cut.mesh);
+  result.sliced.mesh = std::move(pieces);
   result.converted.reset();
-  result.node_sources = std::move(cut.node_sources);
+  result.node_sources = std::move(node_sources);
   return result;
 }
 
-std::shared_ptr<const MethodMesh> cut_handed_polyhedral_mesh(const MethodMesh& mesh, const CuttingPlane& blade,
+std::shared_ptr<const MethodMesh> cut_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& cut,
                                                              nlohmann::json& facts, const char* method) {
   return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
-      cut_polyhedral_scene_mesh(method_mesh_as<PolyhedralSceneMesh>(mesh, method), blade, facts));
+      cut_polyhedral_scene_mesh(method_mesh_as<PolyhedralSceneMesh>(mesh, method), cut, facts));
 }
 
 }  // namespace altfem

@@ -7,7 +7,7 @@
 
 namespace altfem {
 
-void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind) {
+std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind) {
   const int cell_count = mesh.cell_count();
   std::vector<int> new_cell(cell_count, -1), group_size(cell_count, 0);
   int new_count = 0;
@@ -40,30 +40,41 @@ void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCel
     for (int side : face_cells[f])
       if (side >= 0) mesh.cell_faces[side].push_back(static_cast<int>(f));
   }
-  drop_unused_nodes(mesh);
+  return drop_unused_nodes(mesh);
 }
 
-void drop_unused_nodes(PolyhedralMesh& mesh) {
-  std::vector<int> node_map(mesh.nodes.rows(), -1);
-  int node_count = 0;
-  for (auto& loop : mesh.faces)
-    for (int& node : loop) {
-      if (node_map[node] < 0) node_map[node] = node_count++;
-      node = node_map[node];
-    }
-  Eigen::MatrixXd nodes(node_count, 3);
+std::vector<int> drop_unused_nodes(PolyhedralMesh& mesh) {
+  std::vector<bool> used(mesh.nodes.rows(), false);
+  for (const auto& loop : mesh.faces)
+    for (const int node : loop) used[node] = true;
+  std::vector<int> node_map(mesh.nodes.rows(), -1), kept;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node)
-    if (node_map[node] >= 0) nodes.row(node_map[node]) = mesh.nodes.row(node);
+    if (used[node]) {
+      node_map[node] = static_cast<int>(kept.size());
+      kept.push_back(static_cast<int>(node));
+    }
+  for (auto& loop : mesh.faces)
+    for (int& node : loop) node = node_map[node];
+  Eigen::MatrixXd nodes(static_cast<Eigen::Index>(kept.size()), 3);
+  for (std::size_t node = 0; node < kept.size(); ++node)
+    nodes.row(static_cast<Eigen::Index>(node)) = mesh.nodes.row(kept[node]);
   mesh.nodes = std::move(nodes);
+  return kept;
 }
 
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
+  return merge_small_pieces(mesh, std::vector<double>(static_cast<std::size_t>(mesh.cell_count()), minimum_volume))
+      .merged;
+}
+
+MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>& minimum_volume) {
   const int cell_count = mesh.cell_count();
   std::vector<int> slivers;
   for (int cell = 0; cell < cell_count; ++cell)
-    if (mesh.cell_kinds[cell] == PolyhedralCellKind::cut && mesh.cell_volumes(cell) < minimum_volume)
+    if (mesh.cell_kinds[cell] == PolyhedralCellKind::cut && mesh.cell_volumes(cell) < minimum_volume[cell])
       slivers.push_back(cell);
-  if (slivers.empty()) return 0;
+  MergedPieces result;
+  if (slivers.empty()) return result;
   std::sort(slivers.begin(), slivers.end(), [&](int a, int b) { return mesh.cell_volumes(a) < mesh.cell_volumes(b); });
 
   DisjointSets groups(cell_count);
@@ -73,7 +84,7 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
   int merged = 0;
   for (int sliver : slivers) {
     const int root = groups.find(sliver);
-    if (group_volume[root] >= minimum_volume) continue;  // already grown by earlier merges
+    if (group_volume[root] >= minimum_volume[sliver]) continue;  // already grown by earlier merges
     // The neighbouring group across the largest face of any cell of this group.
     int best_face = -1;
     for (int member : members[root])
@@ -91,11 +102,12 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
     members[root].clear();
     ++merged;
   }
+  result.merged = merged;
   if (merged > 0) {
-    merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
+    result.kept_nodes = merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
     compute_polyhedral_geometry(mesh);
   }
-  return merged;
+  return result;
 }
 
 }  // namespace altfem

@@ -3,6 +3,8 @@
 // piece much smaller than a grid cell makes the methods' element matrices ill-conditioned,
 // so it joins the neighbour it shares its largest face with; the union may be non-convex —
 // and the groups of octree grading.
+#include <vector>
+
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 
@@ -15,13 +17,26 @@ namespace altfem {
 /// kept. Returns the number of cells merged away. Needs the geometry computed.
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
 
+/// What merge_small_pieces did: the cells merged away, and per node of the result its
+/// index before (nodes keep their order).
+struct MergedPieces {
+  int merged = 0;
+  std::vector<int> kept_nodes;
+};
+
+/// merge_slivers with a threshold per cell (#cells of `mesh`): a `cut` cell whose volume
+/// is below its threshold joins the face-neighbour across its largest interior face.
+MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>& minimum_volume);
+
 /// The mesh with each group of cells (the sets of `groups`, over the cell indices) as one
 /// cell of kind `grouped_kind` (a cell alone keeps its kind): faces inside a group are
 /// dropped and nodes no face uses are removed. The geometry arrays are left stale: call
 /// compute_polyhedral_geometry.
-void merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
+/// Returns, per node of the result, its index before.
+std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
 
-/// Removes the nodes no face uses, renumbering the faces' loops.
-void drop_unused_nodes(PolyhedralMesh& mesh);
+/// Removes the nodes no face uses, renumbering the faces' loops; the others keep their
+/// order. Returns, per node of the result, its index before.
+std::vector<int> drop_unused_nodes(PolyhedralMesh& mesh);
 
 }  // namespace altfem

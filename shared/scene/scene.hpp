@@ -143,9 +143,10 @@ inline constexpr std::array<std::string_view, 2> event_kind_names{"release", "cu
 struct SceneEvent {
   double time = 0.0;
   EventKind kind = EventKind::release;
-  int condition = -1;   ///< release: the index into Scene::dirichlet
-  CuttingPlane blade;   ///< cut: the plane the rest configuration is cut by
-  std::string pointer;  ///< "/events/i", for messages
+  int condition = -1;            ///< release: the index into Scene::dirichlet
+  CuttingPlane blade;            ///< cut: the plane the rest configuration is cut by
+  double merge_fraction = 1e-3;  ///< cut: dg and harmonic merge pieces below this fraction of their cell
+  std::string pointer;           ///< "/events/i", for messages
 };
 
 struct SolverSpec {

@@ -178,6 +178,7 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     SceneEvent result;
     result.time = event["time"].get<double>();
     result.pointer = "/events/" + std::to_string(i);
+    if (event.contains("cut")) result.merge_fraction = event["cut"]["merge_fraction"].get<double>();
     if (event.contains("cut") && event["cut"].contains("sweep")) {
       append_sweep(event, resolved["time"], result, events);
       continue;

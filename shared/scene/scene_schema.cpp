@@ -316,7 +316,12 @@ const ObjectRule cut_sweep{{{.key = "to_time", .type = ValueType::number, .requi
                             {.key = "substeps", .type = ValueType::integer, .lower = at_least_one}}};
 const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object = &region_half_space},
                             {.key = "polygon", .type = ValueType::any},
-                            {.key = "sweep", .type = ValueType::object, .object = &cut_sweep}},
+                            {.key = "sweep", .type = ValueType::object, .object = &cut_sweep},
+                            {.key = "merge_fraction",
+                             .type = ValueType::number,
+                             .default_value = 1e-3,
+                             .lower = non_negative,
+                             .upper = Bound{1.0, false}}},
                            {{"plane", "polygon"}},
                            {},
                            {},

@@ -68,9 +68,10 @@ public:
   /// Why this instance cannot be cut by a scene's `cut` event (one phrase); empty when
   /// it can. Asked before the run writes anything, so a refusal is bad input.
   virtual std::string cut_refusal() const { return "it does not cut yet (dg, harmonic and fcm do)"; }
-  /// mesh() cut by `blade` in the rest configuration (docs/architecture.md, "Events"), for
-  /// the rebuild; `facts` receives what the cut did (counts). Only where cut_refusal() is empty.
-  virtual std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& /*blade*/, nlohmann::json& /*facts*/) const {
+  /// mesh() cut by the blade of the `cut` event in the rest configuration
+  /// (docs/architecture.md, "Events"), for the rebuild; `facts` receives what the cut did
+  /// (counts). Only where cut_refusal() is empty.
+  virtual std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& /*cut*/, nlohmann::json& /*facts*/) const {
     throw std::logic_error("this method cannot cut");
   }
   /// Fields of `previous` — an instance of the same method before an event, their

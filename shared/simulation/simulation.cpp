@@ -239,7 +239,7 @@ EventRecord Simulation::cut(const SceneEvent& event) {
   EventRecord record = start_record("cut", "", event.pointer, event.time);
   const BodyMeasures before = measure();
   const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event.blade, record.facts);
+  const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
   record.seconds.geometry = seconds_since(start);
   rebuild_on(*mesh, record);
   finish_record(record, before);

@@ -62,9 +62,9 @@ public:
   }
   std::string cut_refusal() const override { return fem_cut_refusal(mesh_.element_type); }
   /// The elements' own tetrahedra cut by the blade: the rebuild is a CutFemMethod.
-  std::shared_ptr<const MethodMesh> cut_mesh(const CuttingPlane& blade, nlohmann::json& facts) const override {
+  std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return std::make_shared<MeshOf<FemMesh>>(
-        FemMesh{mesh_, cut_embedded_tetrahedra(element_tetrahedra(mesh_), blade, facts)});
+        FemMesh{mesh_, cut_embedded_tetrahedra(element_tetrahedra(mesh_), cut.blade, facts)});
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FemMethod&>(previous);
