@@ -93,7 +93,11 @@ const scene_schema::ObjectRule fem_rule{
      {.key = "resolution", .type = ValueType::integer3, .lower = scene_schema::at_least_one},
      {.key = "max_cell_size", .type = ValueType::number, .lower = scene_schema::positive},
      {.key = "quadrature_order", .type = ValueType::integer, .lower = scene_schema::at_least_one},
-     scene_schema::flag("curved", false)}};
+     scene_schema::flag("curved", false),
+     {.key = "cut_stabilization",
+      .type = ValueType::number,
+      .default_value = 0.0,
+      .lower = scene_schema::non_negative}}};
 
 }  // namespace
 
@@ -116,6 +120,7 @@ FemSpec fem_spec_from_block(const json& fem) {
   if (fem.contains("max_cell_size")) spec.max_cell_size = fem["max_cell_size"].get<double>();
   spec.quadrature_order = fem["quadrature_order"].get<int>();
   spec.curved = fem["curved"].get<bool>();
+  spec.cut_stabilization = fem["cut_stabilization"].get<double>();
   return spec;
 }
 

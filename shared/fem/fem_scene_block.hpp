@@ -25,6 +25,10 @@ struct FemSpec {
   std::optional<double> max_cell_size;
   int quadrature_order = 4;
   bool curved = false;
+  /// After a cut: α of the cut elements' pieces, each integrated also over its whole
+  /// element with weights × α (fcm's quadrature stabilisation, Longva et al. 2020 §5.3);
+  /// 0: every piece exact, however small.
+  double cut_stabilization = 0;
   /// The block these options come from, for messages (e.g. max_cell_size's key).
   std::string pointer = "/discretization/fem";
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "shared/common/error.hpp"
@@ -19,7 +20,7 @@ constexpr double snap_fraction = 1e-13;
 class CutBuilder {
 public:
   CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry)
-      : mesh_(mesh), blade_(plane), compute_geometry_(compute_geometry) {
+      : mesh_(mesh), blade_(plane), piece_at_(plane.piece_at), compute_geometry_(compute_geometry) {
     nodes_.reserve(mesh.nodes.rows());
     for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
       nodes_.push_back(mesh.nodes.row(n));
@@ -108,6 +109,30 @@ private:
   // split for both of its cells, so the mesh stays conforming. A crossed cell whose section
   // the blade does not cover keeps its two pieces joined (a finite blade's edge runs
   // through it, or it lies beyond the edge): the cut ends at the last cell it covers.
+  // Per cell, whether the blade may cut it: every cell, or with `piece_at` the cells
+  // connected through faces to one holding the node nearest that point.
+  std::vector<bool> cells_of_piece_at() const {
+    const int cells = mesh_.cell_count();
+    if (!piece_at_) return std::vector<bool>(cells, true);
+    DisjointSets pieces(cells);
+    int nearest = -1;
+    double nearest_distance = 0;
+    for (int face = 0; face < mesh_.face_count(); ++face) {
+      if (mesh_.face_cells(face, 1) >= 0) pieces.join(mesh_.face_cells(face, 0), mesh_.face_cells(face, 1));
+      for (const int node : mesh_.faces[face]) {
+        const double distance = (nodes_[node] - *piece_at_).squaredNorm();
+        if (nearest < 0 || distance < nearest_distance) std::tie(nearest, nearest_distance) = std::pair{node, distance};
+      }
+    }
+    std::vector<bool> holds(cells, false), result(cells, false);
+    for (int face = 0; face < mesh_.face_count(); ++face)
+      if (std::find(mesh_.faces[face].begin(), mesh_.faces[face].end(), nearest) != mesh_.faces[face].end())
+        for (const int side : {mesh_.face_cells(face, 0), mesh_.face_cells(face, 1)})
+          if (side >= 0) holds[pieces.find(side)] = true;
+    for (int cell = 0; cell < cells; ++cell) result[cell] = holds[pieces.find(cell)];
+    return result;
+  }
+
   void classify_cells() {
     const int cells = mesh_.cell_count();
     crossed_.assign(cells, false);
@@ -116,13 +141,14 @@ private:
     first_piece_.resize(cells);
     std::vector<bool> reached(cells, false);
     DisjointSets joined(cells);
+    in_piece_ = cells_of_piece_at();
     for (int cell = 0; cell < cells; ++cell) {
       bool positive = false, negative = false;
       for (const int node : nodes_of(cell)) {
         positive |= side_[node] > 0;
         negative |= side_[node] < 0;
       }
-      reached[cell] = positive && negative;
+      reached[cell] = positive && negative && in_piece_[cell];
       cell_sigma_[cell] = negative && !positive ? -1 : +1;
       if (reached[cell]) cap_covered_[cell] = covers_section(cell);
     }
@@ -207,7 +233,7 @@ private:
       negative |= side_[node] < 0;
     }
     if (!positive && !negative) {  // in the plane: an interior face the blade covers separates
-      if (cell1 >= 0 && covers_face(loop)) {
+      if (cell1 >= 0 && in_piece_[cell0] && covers_face(loop)) {
         ++separated_;
         add_face(loop, cell0, -1, cell_sigma_[cell0], true);
         add_face(std::vector<int>(loop.rbegin(), loop.rend()), cell1, -1, cell_sigma_[cell1], true);
@@ -381,6 +407,8 @@ private:
 
   const PolyhedralMesh& mesh_;
   const ExactBlade blade_;
+  const std::optional<Eigen::Vector3d> piece_at_;
+  std::vector<bool> in_piece_;          ///< per input cell: the blade may cut it (piece_at)
   std::vector<Eigen::Vector3d> nodes_;  ///< the input's, then the crossing nodes, then the copies
   std::vector<NodeSource> sources_;     ///< per node of nodes_
   std::vector<int> side_;               ///< per node of nodes_ before the copies: −1, 0, +1

@@ -6,7 +6,9 @@
 // that no longer meet through a face. A finite blade (a convex polygon) separates only
 // the sections it covers whole: a cell its edge runs through is split into two pieces
 // that stay joined (the face between them interior), as is every cell the plane crosses
-// that meets those through faces the plane crosses, so the mesh stays conforming. Every side
+// that meets those through faces the plane crosses, so the mesh stays conforming. A blade
+// with `piece_at` cuts only the piece of the mesh (connected through faces) holding the
+// node nearest that point. Every side
 // decision is an exact orientation predicate on the nodes as stored, so a blade through
 // nodes, along edges or in faces is an ordinary case; a node a few hundred ulps off the
 // blade is taken on it, so that no piece is thinner than that.

@@ -2,6 +2,7 @@
 // A planar blade: what a scene's `cut` event holds and what the meshes are cut by — the
 // whole plane, or a convex polygon in it (a finite blade: partial cuts and notches).
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,10 @@ struct CuttingPlane {
   Eigen::Vector3d point = Eigen::Vector3d::Zero();
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
   std::vector<Eigen::Vector3d> polygon;
+  /// When set, only the piece of the body (cells connected through faces, in the rest
+  /// configuration) holding the node nearest this point is cut: what earlier cuts severed
+  /// from it (a pencil's chips) is left whole.
+  std::optional<Eigen::Vector3d> piece_at;
 };
 
 /// The blade of the polygon `corners`: its plane through the first corner with the

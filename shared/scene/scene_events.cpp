@@ -18,18 +18,20 @@ int condition_named(const nlohmann::json& conditions, const std::string& name) {
 
 // A cut event's blade: its plane, or its polygon (already checked by check_cut_blade).
 CuttingPlane blade_from_json(const nlohmann::json& cut) {
+  const auto vector = [](const nlohmann::json& value) {
+    return Eigen::Vector3d(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
+  };
+  CuttingPlane blade;
   if (cut.contains("plane")) {
-    CuttingPlane blade;
-    for (int axis = 0; axis < 3; ++axis) {
-      blade.point[axis] = cut["plane"]["point"][axis].get<double>();
-      blade.normal[axis] = cut["plane"]["normal"][axis].get<double>();
-    }
-    return blade;
+    blade.point = vector(cut["plane"]["point"]);
+    blade.normal = vector(cut["plane"]["normal"]);
+  } else {
+    std::vector<Eigen::Vector3d> corners;
+    for (const nlohmann::json& corner : cut["polygon"]) corners.push_back(vector(corner));
+    blade = polygon_blade(std::move(corners));
   }
-  std::vector<Eigen::Vector3d> corners;
-  for (const nlohmann::json& corner : cut["polygon"])
-    corners.emplace_back(corner[0].get<double>(), corner[1].get<double>(), corner[2].get<double>());
-  return polygon_blade(std::move(corners));
+  if (cut.contains("piece_at")) blade.piece_at = vector(cut["piece_at"]);
+  return blade;
 }
 
 // A swept blade as the cuts it makes: at the event's time the polygon, then at n more

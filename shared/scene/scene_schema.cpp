@@ -317,6 +317,7 @@ const ObjectRule cut_sweep{{{.key = "to_time", .type = ValueType::number, .requi
 const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object = &region_half_space},
                             {.key = "polygon", .type = ValueType::any},
                             {.key = "sweep", .type = ValueType::object, .object = &cut_sweep},
+                            {.key = "piece_at", .type = ValueType::vector3},
                             {.key = "merge_fraction",
                              .type = ValueType::number,
                              .default_value = 1e-3,

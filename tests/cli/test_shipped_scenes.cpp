@@ -70,6 +70,9 @@ std::vector<SceneRun> scene_runs() {
 
 class ShippedScene : public testing::TestWithParam<SceneRun> {};
 
+// The events a dynamic scene's one-step run keeps, from its first.
+constexpr std::size_t max_events = 5;
+
 TEST_P(ShippedScene, RunsWithExitZeroAndFiniteOutput) {
   const SceneRun& run = GetParam();
   const std::filesystem::path scene_file = source_path("scenes/" + run.scene);
@@ -84,18 +87,21 @@ TEST_P(ShippedScene, RunsWithExitZeroAndFiniteOutput) {
   for (const char* size : {"max_cell_size", "embedded_cell_size"})
     if (own.contains(size))
       arguments.insert(arguments.end(), {"--set", block + size + "=" + std::to_string(2 * own[size].get<double>())});
+  nlohmann::json events = scene.value("events", nlohmann::json::array());
   if (scene.contains("time") && !scene["time"].value("static", false)) {
-    // One step; the scene's events act before it, so they run too.
+    // One step; the scene's first events act before it, so they run too (the pencil's
+    // 50 cuts multiply fcm's and fem's embedded tetrahedra near its tip: minutes).
     arguments.insert(arguments.end(), {"--set", "time/steps=1"});
-    for (std::size_t i = 0; i < scene.value("events", nlohmann::json::array()).size(); ++i)
-      arguments.insert(arguments.end(), {"--set", "events/" + std::to_string(i) + "/time=0"});
+    if (events.size() > max_events) events.erase(events.begin() + max_events, events.end());
+    for (nlohmann::json& event : events) event["time"] = 0;
+    arguments.insert(arguments.end(), {"--set", "events=" + events.dump()});
   }
   const CommandResult result = run_altfem(arguments);
   ASSERT_EQ(result.exit_code, 0) << result.err;
   const nlohmann::json summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_GT(summary["dofs"].get<long long>(), 0);
-  EXPECT_EQ(summary["events"].size(), scene.value("events", nlohmann::json::array()).size());
+  EXPECT_EQ(summary["events"].size(), events.size());
   if (run.method == "dg" || run.method == "harmonic") {
     EXPECT_EQ(summary["facts"]["source"], run.slice ? "slice" : "convert");
     EXPECT_EQ(summary["options"]["discretization"][run.method]["mesh"] == "slice", run.slice);

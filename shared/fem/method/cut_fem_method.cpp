@@ -10,16 +10,17 @@ namespace altfem {
 
 namespace {
 
-// Exact and conservative: every piece kept however small (a cut loses no material),
-// no fictitious domain to stabilise (an element's rule covers only its piece), the
-// stiffness and mass rules of fem's own strength.
+// Exact and conservative: every piece kept however small (a cut loses no material), the
+// stiffness and mass rules of fem's own strength, and by default no fictitious domain to
+// stabilise (an element's rule covers only its piece); `cut_stabilization` gives tiny
+// pieces fcm's remedy at the price of α × the element's mass and stiffness.
 CutCellSettings fem_cut_cell_settings(const Scene& scene) {
   const FemSpec fem = fem_spec(scene);
   CutCellSettings settings;
   settings.options.quadrature_strength = fem.quadrature_order;
   settings.options.mass_quadrature_strength = fem.quadrature_order;
   settings.options.discard_fraction = 0;
-  settings.options.stabilization = 0;
+  settings.options.stabilization = fem.cut_stabilization;
   return settings;
 }
 

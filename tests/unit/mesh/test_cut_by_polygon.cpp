@@ -115,6 +115,23 @@ TEST(CutByPolygon, ASweptPolygonIsTheHullOfItAndItsTranslate) {
   EXPECT_EQ(swept_blade(square, Eigen::Vector3d::Zero()).polygon.size(), 4u);
 }
 
+// A 4³ grid cut in two at x = 0.5, then along the grid plane y = 0.5 with piece_at in
+// the half x < 0.5: only that half's 2 × 4 faces in the plane open (16 without it).
+TEST(CutByPolygon, PieceAtCutsOnlyThePieceHoldingIt) {
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 4));
+  const PolyhedralMesh halves = cut_polyhedral_mesh(mesh, {Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX()}).mesh;
+  CuttingPlane blade{Eigen::Vector3d(0, 0.5, 0), Eigen::Vector3d::UnitY()};
+  EXPECT_EQ(cut_polyhedral_mesh(halves, blade).separated_faces, 16);
+  blade.piece_at = Eigen::Vector3d(0.1, 0.1, 0.1);
+  const PolyhedralCut cut = cut_polyhedral_mesh(halves, blade);
+  EXPECT_EQ(cut.separated_faces, 8);
+  EXPECT_EQ(cut.duplicated_nodes, 3 * 5);  // the nodes of x ∈ {0, 0.25, 0.5} on the plane
+  EXPECT_TRUE(every_cell_closed(cut.mesh));
+  // Through cells: the plane y = 0.6 splits only the 8 cells of that half it crosses.
+  blade.point = Eigen::Vector3d(0, 0.6, 0);
+  EXPECT_EQ(cut_polyhedral_mesh(halves, blade).crossed_cells, 8);
+}
+
 TEST(CutByPolygon, RefusesPolygonsThatCannotBeBlades) {
   const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 1));
   const Eigen::Vector3d a(0.5, 0, 0), b(0.5, 1, 0), c(0.5, 1, 1), d(0.5, 0, 1);
