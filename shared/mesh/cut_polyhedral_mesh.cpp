@@ -104,11 +104,6 @@ private:
     return true;
   }
 
-  // A cell with nodes on both sides is crossed when the blade covers its section or that
-  // of a cell joined to it through faces the plane crosses: a face the plane crosses is
-  // split for both of its cells, so the mesh stays conforming. A crossed cell whose section
-  // the blade does not cover keeps its two pieces joined (a finite blade's edge runs
-  // through it, or it lies beyond the edge): the cut ends at the last cell it covers.
   // Per cell, whether the blade may cut it: every cell, or with `piece_at` the cells
   // connected through faces to one holding the node nearest that point.
   std::vector<bool> cells_of_piece_at() const {
@@ -133,6 +128,11 @@ private:
     return result;
   }
 
+  // A cell with nodes on both sides is crossed when the blade covers its section or that
+  // of a cell joined to it through faces the plane crosses: a face the plane crosses is
+  // split for both of its cells, so the mesh stays conforming. A crossed cell whose section
+  // the blade does not cover keeps its two pieces joined (a finite blade's edge runs
+  // through it, or it lies beyond the edge): the cut ends at the last cell it covers.
   void classify_cells() {
     const int cells = mesh_.cell_count();
     crossed_.assign(cells, false);

@@ -5,6 +5,8 @@
 #include <map>
 #include <string>
 
+#include "shared/scene/scene_shape.hpp"
+
 namespace altfem {
 
 namespace {
@@ -18,19 +20,16 @@ int condition_named(const nlohmann::json& conditions, const std::string& name) {
 
 // A cut event's blade: its plane, or its polygon (already checked by check_cut_blade).
 CuttingPlane blade_from_json(const nlohmann::json& cut) {
-  const auto vector = [](const nlohmann::json& value) {
-    return Eigen::Vector3d(value[0].get<double>(), value[1].get<double>(), value[2].get<double>());
-  };
   CuttingPlane blade;
   if (cut.contains("plane")) {
-    blade.point = vector(cut["plane"]["point"]);
-    blade.normal = vector(cut["plane"]["normal"]);
+    blade.point = vector3_from_json(cut["plane"]["point"]);
+    blade.normal = vector3_from_json(cut["plane"]["normal"]);
   } else {
     std::vector<Eigen::Vector3d> corners;
-    for (const nlohmann::json& corner : cut["polygon"]) corners.push_back(vector(corner));
+    for (const nlohmann::json& corner : cut["polygon"]) corners.push_back(vector3_from_json(corner));
     blade = polygon_blade(std::move(corners));
   }
-  if (cut.contains("piece_at")) blade.piece_at = vector(cut["piece_at"]);
+  if (cut.contains("piece_at")) blade.piece_at = vector3_from_json(cut["piece_at"]);
   return blade;
 }
 
@@ -44,8 +43,7 @@ void append_sweep(const nlohmann::json& event, const nlohmann::json& time, const
   const double step = time["static"].get<bool>() ? 1.0 : time["dt"].get<double>();
   const int cuts = sweep.contains("substeps") ? sweep["substeps"].get<int>()
                                               : std::max(1, static_cast<int>(std::lround((end - start) / step)));
-  const Eigen::Vector3d translation(sweep["translation"][0].get<double>(), sweep["translation"][1].get<double>(),
-                                    sweep["translation"][2].get<double>());
+  const Eigen::Vector3d translation = vector3_from_json(sweep["translation"]);
   const CuttingPlane blade = blade_from_json(event["cut"]);
   for (int cut = 0; cut <= cuts; ++cut) {
     SceneEvent result = first;
@@ -64,13 +62,13 @@ namespace scene_schema {
 using nlohmann::json;
 
 void check_cut_blade(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
-  const json& polygon = resolved.contains("polygon") ? resolved["polygon"] : json();
-  const std::string where = pointer + "/polygon";
   if (!resolved.contains("polygon")) {
     if (resolved.contains("sweep"))
       validator.fail(pointer + "/sweep", "a sweep moves a finite blade: give a polygon, not a plane");
     return;
   }
+  const json& polygon = resolved["polygon"];
+  const std::string where = pointer + "/polygon";
   if (!polygon.is_array() || polygon.size() < 3)
     validator.fail(where, "expected an array of at least 3 corners [x, y, z], got " + describe(polygon));
   for (std::size_t k = 0; k < polygon.size(); ++k) {
@@ -87,7 +85,7 @@ void check_cut_blade(const Validator& validator, const json&, json& resolved, co
     validator.fail(where, "expected a planar convex polygon: " + problem);
   if (!resolved.contains("sweep")) return;
   const json& translation = resolved["sweep"]["translation"];
-  const Eigen::Vector3d moved(translation[0].get<double>(), translation[1].get<double>(), translation[2].get<double>());
+  const Eigen::Vector3d moved = vector3_from_json(translation);
   if (std::abs(moved.dot(blade.normal.normalized())) > 1e-9 * moved.norm())
     validator.fail(pointer + "/sweep/translation",
                    "expected a translation in the blade's plane (a blade moving out of it would cut a surface that is "
