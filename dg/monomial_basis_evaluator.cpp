@@ -32,7 +32,8 @@ bool MonomialBasisEvaluator::evaluate_inside(int element, const Eigen::Vector3d&
   // cells of a sliced mesh may be non-convex: the winding number decides.
   if (plane_distance(element, x) > tolerance) {
     const PolyhedralCellKind kind = mesh_.cell_kinds[element];
-    const bool convex = kind == PolyhedralCellKind::tetrahedron || kind == PolyhedralCellKind::hexahedron;
+    const bool convex = kind == PolyhedralCellKind::tetrahedron || kind == PolyhedralCellKind::hexahedron ||
+                        kind == PolyhedralCellKind::refined;
     if (convex || !cell_holds(mesh_, element, x, tolerance)) return false;
   }
   fill(element, x, basis, values);

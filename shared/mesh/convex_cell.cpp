@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <tuple>
 
 #include "shared/geometry/exact_orientation.hpp"
 
@@ -18,18 +19,21 @@ bool is_convex_cell(const PolyhedralMesh& mesh, int cell, const std::vector<int>
   for (const int face : mesh.cell_faces[cell]) {
     std::vector<int> loop = mesh.faces[face];
     if (mesh.face_cells(face, 0) != cell) std::reverse(loop.begin(), loop.end());
+    // The face's plane: that of its largest fan triangle from the first node, not of the
+    // first three nodes, which may be (nearly) collinear, as the nodes a split put on an edge are.
     const Eigen::Vector3d a = mesh.nodes.row(loop[0]);
+    Eigen::Vector3d b, c, normal = Eigen::Vector3d::Zero();
     for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-      const Eigen::Vector3d b = mesh.nodes.row(loop[k]), c = mesh.nodes.row(loop[k + 1]);
-      if (collinear(a, b, c)) continue;
-      const Eigen::Vector3d normal = (b - a).cross(c - a);
-      const double allowed = convexity_tolerance * normal.norm() * std::max((b - a).norm(), (c - a).norm());
-      for (const int node : cell_nodes)
-        if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0 &&
-            (mesh.nodes.row(node).transpose() - a).dot(normal) > allowed)
-          return false;
-      break;
+      const Eigen::Vector3d p = mesh.nodes.row(loop[k]), q = mesh.nodes.row(loop[k + 1]);
+      const Eigen::Vector3d n = (p - a).cross(q - a);
+      if (n.squaredNorm() > normal.squaredNorm()) std::tie(b, c, normal) = std::tuple(p, q, n);
     }
+    if (!(normal.squaredNorm() > 0) || collinear(a, b, c)) continue;
+    const double allowed = convexity_tolerance * normal.norm() * std::max((b - a).norm(), (c - a).norm());
+    for (const int node : cell_nodes)
+      if (orientation_sign(a, b, c, mesh.nodes.row(node).transpose()) > 0 &&
+          (mesh.nodes.row(node).transpose() - a).dot(normal) > allowed)
+        return false;
   }
   return true;
 }

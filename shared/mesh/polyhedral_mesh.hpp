@@ -18,6 +18,7 @@ enum class PolyhedralCellKind : int {
   cut = 2,          ///< one connected piece of a grid cell cut by a sliced object's surface
   merged = 3,       ///< a cell with sliver pieces merged into it (merge_slivers)
   coarse = 4,       ///< an octree cell: 2^(3L) grid cells wholly inside, its finer neighbours' nodes on its faces
+  refined = 5,      ///< a convex piece of a cell split by refinement (split_polyhedral_cells)
 };
 
 struct PolyhedralMesh {
