@@ -20,6 +20,7 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/fem/mesh_previews.hpp"
+#include "shared/fem/refine_polyhedral_scene_mesh.hpp"
 #include "shared/material/material.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/mls_embedding.hpp"
@@ -123,6 +124,7 @@ public:
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
+    cell_levels_ = std::move(built.cell_levels);
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
     std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
@@ -244,18 +246,20 @@ public:
                              .surface = surface_.surface,
                              .load_surface = surface_.load_surface,
                              .facts = mesh_facts_,
-                             .converted = std::nullopt};
+                             .converted = std::nullopt,
+                             .node_sources = {},
+                             .cell_levels = cell_levels_};
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
   }
-  std::string cut_refusal() const override {
-    return spec_.embedding == Embedding::stitched
-               ? "its stitched embedding interpolates with the converted mesh, which a "
-                 "cut no longer matches (use embedding mls or element)"
-               : "";
-  }
+  std::string cut_refusal() const override { return event_refusal("cut"); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "dg");
+  }
+  std::string refine_refusal() const override { return event_refusal("refinement"); }
+  std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
+                                                nlohmann::json& facts) const override {
+    return refine_handed_polyhedral_mesh(*mesh(), refine, *field_quadrature(0)->elements, materials_, u, facts, "dg");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);
@@ -287,6 +291,12 @@ public:
   }
 
 private:
+  std::string event_refusal(const std::string& event) const {
+    return spec_.embedding == Embedding::stitched
+               ? "its stitched embedding interpolates with the converted mesh, which a " + event +
+                     " no longer matches (use embedding mls or element)"
+               : "";
+  }
   // The scene's preconditioner. The two-level and multilevel ones are refused (bad input)
   // when the vertex space would not be coarse: a cut cell of a detailed surface has far more
   // facet vertices than DOFs, and PᵀKP of the armadillo sliced at resolution 4 (35 cells,
@@ -414,8 +424,9 @@ private:
   int doublings_ = 0;
   VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
-  nlohmann::json mesh_facts_;    // its source (build_polyhedral_scene_mesh)
-  std::vector<Motion> motions_;  // per Dirichlet condition
+  nlohmann::json mesh_facts_;     // its source (build_polyhedral_scene_mesh)
+  std::vector<int> cell_levels_;  // per cell, the refinements it came through (empty: none)
+  std::vector<Motion> motions_;   // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not

@@ -14,6 +14,7 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 #include "shared/fem/mesh_previews.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
+#include "shared/fem/refine_polyhedral_scene_mesh.hpp"
 #include "shared/io/polyhedral_grid.hpp"
 #include "shared/mesh/flat_cells.hpp"
 #include "shared/simulation/embedded_surface.hpp"
@@ -39,6 +40,7 @@ public:
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     node_sources_ = std::move(built.node_sources);
+    cell_levels_ = std::move(built.cell_levels);
     const auto start = std::chrono::steady_clock::now();
     if (spec.cache.empty()) {
       bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
@@ -124,11 +126,18 @@ public:
                                                                              .surface = surface_.surface,
                                                                              .load_surface = surface_.load_surface,
                                                                              .facts = mesh_facts_,
-                                                                             .converted = std::nullopt});
+                                                                             .converted = std::nullopt,
+                                                                             .node_sources = {},
+                                                                             .cell_levels = cell_levels_});
   }
   std::string cut_refusal() const override { return ""; }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "harmonic");
+  }
+  std::string refine_refusal() const override { return ""; }
+  std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
+                                                nlohmann::json& facts) const override {
+    return refine_handed_polyhedral_mesh(*mesh(), refine, *elements_, materials_, u, facts, "harmonic");
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
@@ -169,6 +178,7 @@ private:
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;             // its source (build_polyhedral_scene_mesh)
   std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)
+  std::vector<int> cell_levels_;          // per cell, the refinements it came through (empty: none)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation

@@ -1,5 +1,7 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 
+#include <algorithm>
+
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/merge_slivers.hpp"
 
@@ -27,7 +29,17 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
            {"snapped_nodes", result_of_cut.snapped_nodes},
            {"merged_pieces", merged.merged},
            {"cells", pieces.cell_count()}};
+  // A piece is as refined as its cell; merged pieces as the most refined of them.
+  std::vector<int> levels;
+  if (!mesh.cell_levels.empty()) {
+    levels.assign(static_cast<std::size_t>(pieces.cell_count()), 0);
+    for (std::size_t piece = 0; piece < result_of_cut.parent_cell.size(); ++piece) {
+      const int cell = merged.new_cell.empty() ? static_cast<int>(piece) : merged.new_cell[piece];
+      levels[cell] = std::max(levels[cell], mesh.cell_levels[result_of_cut.parent_cell[piece]]);
+    }
+  }
   PolyhedralSceneMesh result = mesh;
+  result.cell_levels = std::move(levels);
   result.sliced.mesh = std::move(pieces);
   result.converted.reset();
   result.node_sources = std::move(node_sources);

@@ -8,9 +8,6 @@
 
 namespace altfem {
 
-namespace {
-
-// The boundary faces of a polyhedral mesh as outward triangles over the nodes they use.
 SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh) {
   std::vector<int> vertex_of(static_cast<size_t>(mesh.nodes.rows()), -1);
   std::vector<std::array<int, 3>> triangles;
@@ -37,8 +34,6 @@ SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh) {
     surface.triangles.row(static_cast<Eigen::Index>(t)) << triangles[t][0], triangles[t][1], triangles[t][2];
   return surface;
 }
-
-}  // namespace
 
 PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& source, const SceneGeometry& geometry) {
   PolyhedralSceneMesh result;

@@ -37,7 +37,14 @@ struct PolyhedralSceneMesh {
   /// After a cut: per node, the nodes of the mesh before it that it comes from (nodal
   /// methods carry their fields through these); empty otherwise.
   std::vector<NodeSource> node_sources;
+  /// Per cell, how many refinements split the cells it lies in (refine events' max_level);
+  /// empty: none.
+  std::vector<int> cell_levels;
 };
+
+/// The boundary faces of a polyhedral mesh as outward triangles over the nodes they use
+/// (ear-clipped): the surface loads act on.
+SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh);
 
 /// Builds the mesh `source` describes for the scene's geometry. Throws InputError and
 /// NumericalError as build_fem_mesh and slice_scene_geometry do.

@@ -7,7 +7,8 @@
 
 namespace altfem {
 
-std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind) {
+std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind,
+                                   std::vector<int>* new_cell_of) {
   const int cell_count = mesh.cell_count();
   std::vector<int> new_cell(cell_count, -1), group_size(cell_count, 0);
   int new_count = 0;
@@ -21,6 +22,7 @@ std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, P
     }
     new_cell[cell] = new_cell[root];
   }
+  if (new_cell_of) *new_cell_of = new_cell;
   std::vector<std::vector<int>> faces;
   std::vector<std::array<int, 2>> face_cells;
   for (int face = 0; face < mesh.face_count(); ++face) {
@@ -104,7 +106,7 @@ MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>&
   }
   result.merged = merged;
   if (merged > 0) {
-    result.kept_nodes = merge_cell_groups(mesh, groups, PolyhedralCellKind::merged);
+    result.kept_nodes = merge_cell_groups(mesh, groups, PolyhedralCellKind::merged, &result.new_cell);
     compute_polyhedral_geometry(mesh);
   }
   return result;

@@ -22,6 +22,7 @@ int merge_slivers(PolyhedralMesh& mesh, double minimum_volume);
 struct MergedPieces {
   int merged = 0;
   std::vector<int> kept_nodes;
+  std::vector<int> new_cell;  ///< per cell before, the cell it became part of (empty when none merged)
 };
 
 /// merge_slivers with a threshold per cell (#cells of `mesh`): a `cut` cell whose volume
@@ -32,8 +33,10 @@ MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>&
 /// cell of kind `grouped_kind` (a cell alone keeps its kind): faces inside a group are
 /// dropped and nodes no face uses are removed. The geometry arrays are left stale: call
 /// compute_polyhedral_geometry.
-/// Returns, per node of the result, its index before.
-std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind);
+/// Returns, per node of the result, its index before; `new_cell` (optional) receives, per
+/// cell before, the cell of the result it is part of.
+std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, PolyhedralCellKind grouped_kind,
+                                   std::vector<int>* new_cell = nullptr);
 
 /// Removes the nodes no face uses, renumbering the faces' loops; the others keep their
 /// order. Returns, per node of the result, its index before.

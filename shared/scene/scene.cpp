@@ -122,25 +122,6 @@ private:
   std::string duplicate_;
 };
 
-RegionSelector region_from_json(const json& region, const std::string& pointer) {
-  RegionSelector selector;
-  selector.pointer = pointer;
-  if (region.contains("box")) {
-    selector.kind = RegionKind::box;
-    selector.box =
-        Eigen::AlignedBox3d(vector3_from_json(region["box"]["min"]), vector3_from_json(region["box"]["max"]));
-  } else if (region.contains("half_space")) {
-    selector.kind = RegionKind::half_space;
-    selector.point = vector3_from_json(region["half_space"]["point"]);
-    selector.normal = vector3_from_json(region["half_space"]["normal"]).normalized();
-  } else {
-    selector.kind = RegionKind::sphere;
-    selector.centre = vector3_from_json(region["sphere"]["centre"]);
-    selector.radius = region["sphere"]["radius"].get<double>();
-  }
-  return selector;
-}
-
 // The three components of an expression key (validated: strings or numbers).
 VectorExpression expression_from_json(const json& value, const ExpressionConstants& constants, const std::string& file,
                                       const std::string& pointer,
@@ -285,6 +266,25 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
 }
 
 }  // namespace
+
+RegionSelector region_from_json(const json& region, const std::string& pointer) {
+  RegionSelector selector;
+  selector.pointer = pointer;
+  if (region.contains("box")) {
+    selector.kind = RegionKind::box;
+    selector.box =
+        Eigen::AlignedBox3d(vector3_from_json(region["box"]["min"]), vector3_from_json(region["box"]["max"]));
+  } else if (region.contains("half_space")) {
+    selector.kind = RegionKind::half_space;
+    selector.point = vector3_from_json(region["half_space"]["point"]);
+    selector.normal = vector3_from_json(region["half_space"]["normal"]).normalized();
+  } else {
+    selector.kind = RegionKind::sphere;
+    selector.centre = vector3_from_json(region["sphere"]["centre"]);
+    selector.radius = region["sphere"]["radius"].get<double>();
+  }
+  return selector;
+}
 
 Scene parse_scene(std::string_view text, const std::filesystem::path& file) { return parse_scene(text, file, {}); }
 

@@ -60,6 +60,9 @@ struct RegionSelector {
   Eigen::AlignedBox3d bounds() const;
 };
 
+/// The resolved `region` object at `pointer` (its keys checked by the schema).
+RegionSelector region_from_json(const nlohmann::json& region, const std::string& pointer);
+
 /// The regions' tolerance of docs/scene-schema.md: 1e-6 × the geometry's bounding-box diagonal.
 double region_tolerance(const Eigen::AlignedBox3d& geometry_bounds);
 
@@ -134,8 +137,24 @@ struct TimeSpec {
   int load_steps = 1;
 };
 
-enum class EventKind { release, cut };
-inline constexpr std::array<std::string_view, 2> event_kind_names{"release", "cut"};
+enum class EventKind { release, cut, refine };
+inline constexpr std::array<std::string_view, 3> event_kind_names{"release", "cut", "refine"};
+
+/// How a refine event splits a marked cell (Kaufmann et al. 2009 §9.3): into 8 by the three
+/// coordinate planes through its centroid, or into 2 by the plane through it normal to the
+/// principal direction of the largest absolute principal stress.
+enum class RefineSplit { eighths, halves };
+inline constexpr std::array<std::string_view, 2> refine_split_names{"1to8", "1to2"};
+
+/// A refine event's marking and splitting (docs/scene-schema.md, "Events").
+struct RefineSpec {
+  /// Marks a cell whose largest absolute principal stress (of its mean small-strain stress
+  /// σ = λ tr(ε) I + 2μ ε) exceeds this [Pa].
+  double threshold = 0.0;
+  RefineSplit split = RefineSplit::eighths;
+  int max_level = 3;                     ///< a cell split this many times is not split again
+  std::optional<RegionSelector> region;  ///< only cells whose centroid it holds
+};
 
 /// One entry of `events` (docs/scene-schema.md, "events"): something that changes the
 /// scene while it runs. It acts at the first step boundary at or after `time` (dynamic
@@ -146,6 +165,7 @@ struct SceneEvent {
   int condition = -1;            ///< release: the index into Scene::dirichlet
   CuttingPlane blade;            ///< cut: the plane the rest configuration is cut by
   double merge_fraction = 1e-3;  ///< cut: dg and harmonic merge pieces below this fraction of their cell
+  RefineSpec refine;             ///< refine: which cells, split how
   std::string pointer;           ///< "/events/i", for messages
 };
 

@@ -55,6 +55,30 @@ void append_sweep(const nlohmann::json& event, const nlohmann::json& time, const
   }
 }
 
+// A refine event as the refinements it makes: one at its time, and with `every` n one per
+// n time steps (load steps for a static scene) after it until the run ends.
+void append_refinements(const nlohmann::json& event, const nlohmann::json& time, SceneEvent result,
+                        std::vector<SceneEvent>& events) {
+  const nlohmann::json& refine = event["refine"];
+  result.kind = EventKind::refine;
+  result.refine.threshold = refine["threshold"].get<double>();
+  result.refine.split =
+      refine["split"].get<std::string>() == refine_split_names[0] ? RefineSplit::eighths : RefineSplit::halves;
+  result.refine.max_level = refine["max_level"].get<int>();
+  if (refine.contains("region"))
+    result.refine.region = region_from_json(refine["region"], result.pointer + "/refine/region");
+  const bool is_static = time["static"].get<bool>();
+  const double step = is_static ? 1.0 : time["dt"].get<double>();
+  // The last time an event can act: after the last load step but one, or before the last step.
+  const double last = is_static ? time["load_steps"].get<int>() - 1.0 : step * (time["steps"].get<int>() - 0.5);
+  const int every = refine.contains("every") ? refine["every"].get<int>() : 0;
+  const double first = result.time;
+  for (int repeat = 0; repeat == 0 || (every > 0 && first + repeat * every * step <= last); ++repeat) {
+    result.time = first + repeat * every * step;
+    events.push_back(result);
+  }
+}
+
 }  // namespace
 
 namespace scene_schema {
@@ -181,6 +205,10 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
     if (event.contains("cut")) result.merge_fraction = event["cut"]["merge_fraction"].get<double>();
     if (event.contains("cut") && event["cut"].contains("sweep")) {
       append_sweep(event, resolved["time"], result, events);
+      continue;
+    }
+    if (event.contains("refine")) {
+      append_refinements(event, resolved["time"], result, events);
       continue;
     }
     if (event.contains("cut")) {

@@ -329,10 +329,22 @@ const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object 
                            false,
                            check_cut_blade};
 
+const ObjectRule refine_event{
+    {{.key = "criterion",
+      .type = ValueType::string,
+      .default_value = "principal_stress",
+      .choices = {"principal_stress"}},
+     {.key = "threshold", .type = ValueType::number, .required = true, .lower = non_negative},
+     {.key = "split", .type = ValueType::string, .default_value = "1to8", .choices = names(refine_split_names)},
+     {.key = "max_level", .type = ValueType::integer, .default_value = 3, .lower = at_least_one},
+     {.key = "region", .type = ValueType::object, .object = &region},
+     {.key = "every", .type = ValueType::integer, .lower = at_least_one}}};
+
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
                         {.key = "release", .type = ValueType::string},
-                        {.key = "cut", .type = ValueType::object, .object = &cut_event}},
-                       {{"release", "cut"}}};
+                        {.key = "cut", .type = ValueType::object, .object = &cut_event},
+                        {.key = "refine", .type = ValueType::object, .object = &refine_event}},
+                       {{"release", "cut", "refine"}}};
 
 const ObjectRule scene{
     {{.key = "name", .type = ValueType::string},

@@ -74,6 +74,17 @@ public:
   virtual std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& /*cut*/, nlohmann::json& /*facts*/) const {
     throw std::logic_error("this method cannot cut");
   }
+  /// Why this instance cannot be refined by a scene's `refine` event (one phrase); empty
+  /// when it can. Asked before the run writes anything.
+  virtual std::string refine_refusal() const { return "it does not refine yet (dg and harmonic do)"; }
+  /// mesh() with the cells the `refine` event marks, for the displacement u (#dofs), split
+  /// (docs/architecture.md, "Events"), for the rebuild; null when it marks none. `facts`
+  /// receives what it did (counts). Only where refine_refusal() is empty.
+  virtual std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& /*refine*/,
+                                                        const Eigen::VectorXd& /*displacement*/,
+                                                        nlohmann::json& /*facts*/) const {
+    throw std::logic_error("this method cannot refine");
+  }
   /// Fields of `previous` — an instance of the same method before an event, their
   /// coefficients the columns of `fields` (#dofs of previous × #fields: the displacement,
   /// the velocity) — as coefficients in this basis (#dofs × #fields; docs/architecture.md,

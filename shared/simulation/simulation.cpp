@@ -145,11 +145,15 @@ void Simulation::layer_discretization(std::unique_ptr<LinearSolver> solver) {
 void Simulation::check_events() const {
   ConditionSet released = 0;
   for (const SceneEvent& event : scene_.events) {
-    if (event.kind == EventKind::cut) {
-      const std::string why = !rebuild_ ? "the run was built without the method's rebuild" : method_->cut_refusal();
+    if (event.kind == EventKind::cut || event.kind == EventKind::refine) {
+      const bool cut = event.kind == EventKind::cut;
+      const std::string why = !rebuild_ ? "the run was built without the method's rebuild"
+                              : cut     ? method_->cut_refusal()
+                                        : method_->refine_refusal();
       if (!why.empty())
-        throw InputError(input_message(scene_.file.string(), event.pointer + "/cut",
-                                       "cannot cut with " + method_name_ + ": " + why));
+        throw InputError(
+            input_message(scene_.file.string(), event.pointer + (cut ? "/cut" : "/refine"),
+                          std::string("cannot ") + (cut ? "cut" : "refine") + " with " + method_name_ + ": " + why));
       continue;
     }
     const std::string key = event.pointer + "/release";
@@ -209,6 +213,7 @@ void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) 
 
 EventRecord Simulation::apply(const SceneEvent& event) {
   if (event.kind == EventKind::cut) return cut(event);
+  if (event.kind == EventKind::refine) return refine(event);
   const DirichletCondition& condition = scene_.dirichlet[event.condition];
   EventRecord record = start_record("release", condition.name, event.pointer, event.time);
   const BodyMeasures before = measure();
@@ -242,6 +247,20 @@ EventRecord Simulation::cut(const SceneEvent& event) {
   const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
   record.seconds.geometry = seconds_since(start);
   rebuild_on(*mesh, record);
+  finish_record(record, before);
+  return record;
+}
+
+// The rest configuration refined where the stress is high (Kaufmann et al. 2009 §9.3,
+// Martin et al. 2008 §8): the marked cells split, the method rebuilt on the refined mesh,
+// the state transferred. Nothing marked, nothing rebuilt.
+EventRecord Simulation::refine(const SceneEvent& event) {
+  EventRecord record = start_record("refine", "", event.pointer, event.time);
+  const BodyMeasures before = measure();
+  const auto start = std::chrono::steady_clock::now();
+  const std::shared_ptr<const MethodMesh> mesh = method_->refine_mesh(event, state_.displacement, record.facts);
+  record.seconds.geometry = seconds_since(start);
+  if (mesh) rebuild_on(*mesh, record);
   finish_record(record, before);
   return record;
 }

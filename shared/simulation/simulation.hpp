@@ -58,6 +58,7 @@ public:
 private:
   void check_events() const;
   EventRecord cut(const SceneEvent& event);
+  EventRecord refine(const SceneEvent& event);
   // The method rebuilt on `mesh` and the state transferred to it (its phases into `record`).
   void rebuild_on(const MethodMesh& mesh, EventRecord& record);
   // The layers over the method's discretization for the conditions released so far, and

@@ -1,0 +1,111 @@
+#include "shared/fem/refine_polyhedral_scene_mesh.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <stdexcept>
+
+#include "shared/mesh/convex_cell.hpp"
+#include "shared/mesh/split_polyhedral_cells.hpp"
+#include "shared/simulation/cell_stresses.hpp"
+
+namespace altfem {
+
+namespace {
+
+std::vector<int> nodes_of_cell(const PolyhedralMesh& mesh, int cell) {
+  std::vector<int> nodes;
+  for (const int face : mesh.cell_faces[cell])
+    nodes.insert(nodes.end(), mesh.faces[face].begin(), mesh.faces[face].end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+// The point the split planes pass through: the centroid, or the centre of the cell's box
+// when they agree to round-off (a box's centre is its centroid exactly, and halving is exact
+// in binary, so that repeated splits of a grid stay on the dyadic grid).
+Eigen::Vector3d split_centre(const PolyhedralMesh& mesh, int cell, const std::vector<int>& nodes) {
+  Eigen::AlignedBox3d box;
+  for (const int node : nodes) box.extend(mesh.nodes.row(node).transpose());
+  const Eigen::Vector3d centroid = mesh.cell_centroids.row(cell);
+  return (box.center() - centroid).norm() <= 1e-12 * mesh.cell_diameters[cell] ? box.center() : centroid;
+}
+
+}  // namespace
+
+std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
+                                                                const RefineSpec& refine,
+                                                                const std::vector<Eigen::Matrix3d>& stresses,
+                                                                nlohmann::json& facts) {
+  const PolyhedralMesh& cells = mesh.sliced.mesh;
+  if (static_cast<int>(stresses.size()) != cells.cell_count())
+    throw std::invalid_argument("refine_polyhedral_scene_mesh: one stress per cell");
+  const double tolerance =
+      1e-6 * (cells.nodes.colwise().maxCoeff() - cells.nodes.colwise().minCoeff()).norm();  // the regions' rule
+  std::vector<CellSplit> splits;
+  int at_max_level = 0, not_convex = 0;
+  double largest = 0;
+  for (int cell = 0; cell < cells.cell_count(); ++cell) {
+    const PrincipalStress principal = largest_principal_stress(stresses[cell]);
+    largest = std::max(largest, principal.value);
+    if (!(principal.value > refine.threshold)) continue;
+    const Eigen::Vector3d centroid = cells.cell_centroids.row(cell);
+    if (refine.region && !refine.region->contains(centroid, tolerance)) continue;
+    if (!mesh.cell_levels.empty() && mesh.cell_levels[cell] >= refine.max_level) {
+      ++at_max_level;
+      continue;
+    }
+    const std::vector<int> nodes = nodes_of_cell(cells, cell);
+    if (!is_convex_cell(cells, cell, nodes)) {
+      ++not_convex;
+      continue;
+    }
+    const Eigen::Vector3d centre = split_centre(cells, cell, nodes);
+    CellSplit split{cell, {}};
+    if (refine.split == RefineSplit::halves) split.planes.push_back(plane_through(centroid, principal.direction));
+    else
+      for (int axis = 0; axis < 3; ++axis) split.planes.push_back(plane_through(centre, Eigen::Vector3d::Unit(axis)));
+    splits.push_back(std::move(split));
+  }
+  facts = {{"marked_cells", splits.size()},
+           {"at_max_level", at_max_level},
+           {"not_convex", not_convex},
+           {"largest_stress", largest},
+           {"new_nodes", 0},
+           {"hanging_nodes", 0},
+           {"cells", cells.cell_count()}};
+  if (splits.empty()) return std::nullopt;
+  SplitCells split = split_polyhedral_cells(cells, splits);
+  facts["new_nodes"] = split.new_nodes;
+  facts["hanging_nodes"] = split.hanging_nodes;
+  facts["cells"] = split.mesh.cell_count();
+  std::vector<bool> was_split(static_cast<std::size_t>(cells.cell_count()), false);
+  for (const CellSplit& marked : splits) was_split[marked.cell] = true;
+  PolyhedralSceneMesh result = mesh;
+  result.cell_levels.clear();
+  for (const int parent : split.parent_cell)
+    result.cell_levels.push_back((mesh.cell_levels.empty() ? 0 : mesh.cell_levels[parent]) +
+                                 (was_split[parent] ? 1 : 0));
+  result.sliced.mesh = std::move(split.mesh);
+  result.load_surface = boundary_faces_surface(result.sliced.mesh);
+  result.converted.reset();
+  result.node_sources.clear();
+  return result;
+}
+
+std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& refine,
+                                                                const TabulatedElements& elements,
+                                                                const SceneMaterials& materials,
+                                                                const Eigen::VectorXd& u, nlohmann::json& facts,
+                                                                const char* method) {
+  const PolyhedralSceneMesh& handed = method_mesh_as<PolyhedralSceneMesh>(mesh, method);
+  const PolyhedralMesh& cells = handed.sliced.mesh;
+  std::vector<LameParameters> lame;
+  for (const int id : materials.ids_of(cells.cell_centroids)) lame.push_back(materials.pointers()[id]->lame());
+  std::optional<PolyhedralSceneMesh> refined =
+      refine_polyhedral_scene_mesh(handed, refine.refine, mean_cell_stresses(elements, lame, u), facts);
+  if (!refined) return nullptr;
+  return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(*refined));
+}
+
+}  // namespace altfem

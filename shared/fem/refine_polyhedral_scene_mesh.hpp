@@ -1,0 +1,43 @@
+#pragma once
+// A polyhedral method's mesh (dg, harmonic) refined by a scene's `refine` event: the cells
+// whose stress passes the threshold split 1→8 or 1→2 (Kaufmann et al. 2009 §9.3, Martin et
+// al. 2008 §8; split_polyhedral_cells), without balancing their neighbours, the surface
+// loads act on rebuilt from the split boundary faces, and the converted volume mesh
+// dropped, since its cells no longer match.
+#include <Eigen/Core>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
+
+#include "shared/assembly/tabulated_elements.hpp"
+#include "shared/fem/polyhedral_scene_mesh.hpp"
+#include "shared/scene/scene.hpp"
+#include "shared/simulation/method_mesh.hpp"
+#include "shared/simulation/scene_materials.hpp"
+
+namespace altfem {
+
+/// `mesh` with the cells `refine` marks split: a cell whose stress (stresses, one per cell)
+/// has a largest absolute principal value above the threshold, split fewer than max_level
+/// times, its centroid in the region and convex (a merged piece is not split). 1→8 splits
+/// by the three coordinate planes through the centroid — through the bounding box's centre
+/// where the two agree to round-off, so that neighbouring boxes share their mid-planes bit
+/// for bit — 1→2 by the plane through the centroid normal to the principal direction.
+/// nullopt when no cell is marked. `facts` gets marked_cells, at_max_level,
+/// not_convex, largest_stress, new_nodes, hanging_nodes and cells (after).
+std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
+                                                                const RefineSpec& refine,
+                                                                const std::vector<Eigen::Matrix3d>& stresses,
+                                                                nlohmann::json& facts);
+
+/// A polyhedral method's MethodInstance::refine_mesh: its handed mesh refined as above,
+/// by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one element
+/// per cell) with the material at each cell's centroid; null when no cell is marked.
+std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& refine,
+                                                                const TabulatedElements& elements,
+                                                                const SceneMaterials& materials,
+                                                                const Eigen::VectorXd& u, nlohmann::json& facts,
+                                                                const char* method);
+
+}  // namespace altfem

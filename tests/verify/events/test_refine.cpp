@@ -1,0 +1,159 @@
+// A refine event (docs/scene-schema.md, "Events"; Kaufmann et al. 2009 §9.3, Martin et al.
+// 2008 §8) with dg and harmonic, on the 1 × 0.1 × 0.1 m cantilever of 10 cells:
+//   - An affine field is unchanged by any refinement, 1→8 or 1→2: carried across, it is the
+//     refined method's own interpolation of the field, and its strain energy is still the
+//     exact constant density × volume (the patch test's consistency on the refined mesh,
+//     hanging nodes included).
+//   - dg carries a quadratic field (its degree, zero on the clamp) across exactly: each
+//     child keeps its parent's polynomial, a global polynomial has no jumps for the
+//     penalty to weigh, so the total energy does not jump, to round-off, and neither do
+//     the mass and momentum.
+//   - Marking follows the keys: a region splits only the cells whose centroid it holds, a
+//     cell split max_level times is not split again (nothing is rebuilt), and a cell whose
+//     stress is below the threshold stays.
+//   - A method that does not refine is refused before the run, naming the event.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app/method_registry.hpp"
+#include "shared/common/error.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
+#include "shared/simulation/simulation.hpp"
+
+namespace altfem {
+namespace {
+
+const std::filesystem::path scene_file =
+    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
+
+const MethodDescription& method_named(const std::string& name) {
+  for (const auto& method : cli::registered_methods())
+    if (method.scene_block.name == name) return method;
+  throw std::invalid_argument("no method " + name);
+}
+
+int element_count(const MethodInstance& method) {
+  const nlohmann::json counts = method.element_counts();
+  int count = 0;
+  for (const auto& [kind, number] : counts.items()) count += number.get<int>();
+  return count;
+}
+
+// A field zero on the clamp x = 0, so that dg's weak condition there adds nothing.
+Eigen::Vector3d affine(const Eigen::Vector3d& x) { return Eigen::Vector3d(1e-3, 3e-4, -2e-4) * x.x(); }
+
+struct RefineCase {
+  std::string method, split;
+  int cells_after;  // the clamp's half of the bar split: 5 + 5 × 8 or 5 + 5 × 2
+};
+
+// Splits only the 5 cells of the clamp's half, so split cells meet unsplit ones across faces
+// holding hanging nodes.
+const SceneOverride clamp_half =
+    parse_scene_override("events/0/refine/region={\"box\": {\"min\": [0, -1, -1], \"max\": [0.5, 1, 1]}}");
+
+void PrintTo(const RefineCase& test, std::ostream* out) { *out << test.method << " " << test.split; }
+
+class Refine : public ::testing::TestWithParam<RefineCase> {};
+
+TEST_P(Refine, AnAffineFieldIsUnchangedAndKeepsItsExactStrainEnergy) {
+  const RefineCase& test = GetParam();
+  const Scene scene =
+      load_scene(scene_file, {clamp_half, parse_scene_override("events/0/refine/split=\"" + test.split + "\"")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named(test.method);
+  Simulation simulation(scene, geometry, test.method, method.factory, method.rebuild);
+  simulation.state().displacement = simulation.method().interpolate(affine);
+  const EventRecord record = simulation.apply(scene.events.at(0));
+  EXPECT_EQ(record.facts["marked_cells"], 5);  // a uniform stress above the threshold 0
+  EXPECT_EQ(element_count(simulation.method()), test.cells_after);
+  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+
+  const Eigen::VectorXd expected = simulation.method().interpolate(affine);
+  const Eigen::VectorXd& carried = simulation.state().displacement;
+  ASSERT_EQ(carried.size(), expected.size());
+  EXPECT_LE((carried - expected).lpNorm<Eigen::Infinity>(), 1e-12 * expected.lpNorm<Eigen::Infinity>());
+
+  Eigen::Matrix3d gradient = Eigen::Matrix3d::Zero();
+  gradient.col(0) << 1e-3, 3e-4, -2e-4;
+  const Eigen::Matrix3d strain = 0.5 * (gradient + gradient.transpose());
+  const double E = 1e8, nu = 0.3, lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double energy = (0.5 * lambda * strain.trace() * strain.trace() + mu * strain.squaredNorm()) * 0.01;
+  // harmonic: the unsplit neighbour of the split cells holds hanging nodes, so it takes an
+  // MFS basis, which reproduces affine fields to the MFS fit.
+  const double tolerance = test.method == "harmonic" ? 1e-6 : 1e-10;
+  EXPECT_NEAR(simulation.method().discretization().energy(expected), energy, tolerance * energy);
+}
+
+INSTANTIATE_TEST_SUITE_P(RefiningMethods, Refine,
+                         ::testing::Values(RefineCase{"dg", "1to8", 45}, RefineCase{"dg", "1to2", 15},
+                                           RefineCase{"harmonic", "1to8", 45}, RefineCase{"harmonic", "1to2", 15}),
+                         [](const auto& info) { return info.param.method + "_" + info.param.split.substr(2); });
+
+TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
+  const Scene scene = load_scene(scene_file, {clamp_half});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named("dg");
+  Simulation simulation(scene, geometry, "dg", method.factory, method.rebuild);
+  simulation.state().displacement = simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return x.x() * Eigen::Vector3d(2e-3 * x.x() - 1e-3 * x.y(), 5e-4 + 3e-3 * x.z(), -4e-3 * x.x());
+  });
+  simulation.state().velocity = simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return Eigen::Vector3d(0.1 * x.y() * x.z(), -0.2 * x.x() * x.x(), 0.3 * x.x() * x.y());
+  });
+  const EventRecord record = simulation.apply(scene.events.at(0));
+  EXPECT_EQ(record.facts["marked_cells"], 5);
+  EXPECT_EQ(element_count(simulation.method()), 5 + 5 * 8);
+  EXPECT_GT(record.facts["hanging_nodes"].get<int>(), 0);
+  EXPECT_LE(std::abs(record.conserved["energy_jump_relative"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["momentum_change"].get<double>()), 1e-12);
+}
+
+TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
+  for (const std::string name : {"dg", "harmonic"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = load_scene(scene_file);
+    const SceneGeometry geometry = load_scene_geometry(scene);
+    const MethodDescription& method = method_named(name);
+    Simulation simulation(scene, geometry, name, method.factory, method.rebuild);
+    // Shear growing along the bar, u_z = 1e-3 x²: |σ| largest at the tip.
+    const auto shear = [](const Eigen::Vector3d& x) -> Eigen::Vector3d { return {0, 0, 1e-3 * x.x() * x.x()}; };
+    simulation.state().displacement = simulation.method().interpolate(shear);
+    SceneEvent refine = scene.events.at(0);
+    const double tip_stress = simulation.apply(refine).facts["largest_stress"].get<double>();
+    const int cells = element_count(simulation.method());
+    EXPECT_EQ(cells, 80);
+    const EventRecord again = simulation.apply(refine);  // max_level 1: each child is at it
+    EXPECT_EQ(again.facts["marked_cells"], 0);
+    EXPECT_EQ(again.facts["at_max_level"], 80);
+    EXPECT_EQ(again.dofs_after, again.dofs_before);
+    // σ_xz = 2μ · 1e-3 x at the centroid (the mean over a cell is its centroid's value, for
+    // harmonic's trilinear interpolant too — of the field interpolated on the children, not
+    // the coarse one carried over): 0.6 × the last cell's (x = 0.95) marks the children with
+    // centroids x > 0.57, 9 × 4.
+    simulation.state().displacement = simulation.method().interpolate(shear);
+    refine.refine.max_level = 2;
+    refine.refine.threshold = 0.6 * tip_stress;
+    EXPECT_EQ(simulation.apply(refine).facts["marked_cells"], 36);
+  }
+}
+
+TEST(RefineRefusal, AMethodThatDoesNotRefineIsRefusedBeforeTheRun) {
+  const Scene scene = load_scene(
+      scene_file, {parse_scene_override("discretization/fem={\"element\": \"hex8\", \"resolution\": [10, 1, 1]}")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = method_named("fem");
+  try {
+    Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
+    FAIL() << "fem refined";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fem"), std::string::npos)
+        << error.what();
+  }
+}
+
+}  // namespace
+}  // namespace altfem
