@@ -72,3 +72,39 @@ TEST(SceneDefaults, ResolvedSceneParsesToTheSameScene) {
 
 }  // namespace
 }  // namespace altfem
+
+namespace altfem {
+namespace {
+
+// A refine event's defaults, and `every` as one refinement per n steps until the run ends
+// (dynamic: before the last step; static: after the last load step but one).
+TEST(SceneDefaults, ARefineEventRepeatsEveryNStepsUntilTheRunEnds) {
+  const std::string bar = R"({
+    "geometry": { "shape": { "box": { "min": [0, 0, 0], "max": [1, 0.1, 0.1] } } },
+    "material": { "youngs_modulus": 1e6, "poisson_ratio": 0.25 },
+    "time": TIME,
+    "events": [ { "time": START, "refine": { "threshold": 1e3, "every": EVERY } } ] })";
+  const auto times_of = [&](const std::string& time, const std::string& start, const std::string& every) {
+    std::string text = bar;
+    text.replace(text.find("TIME"), 4, time);
+    text.replace(text.find("START"), 5, start);
+    text.replace(text.find("EVERY"), 5, every);
+    std::vector<double> times;
+    for (const SceneEvent& event : parse_scene(text, "bar.json").events) {
+      EXPECT_EQ(event.kind, EventKind::refine);
+      EXPECT_EQ(event.refine.split, RefineSplit::eighths);
+      EXPECT_EQ(event.refine.max_level, 3);
+      EXPECT_EQ(event.refine.threshold, 1e3);
+      EXPECT_FALSE(event.refine.region);
+      times.push_back(event.time);
+    }
+    return times;
+  };
+  const std::vector<double> dynamic = times_of(R"({ "dt": 0.01, "steps": 20 })", "0.05", "5");
+  ASSERT_EQ(dynamic.size(), 3u);  // 0.05, 0.10, 0.15: 0.20 is the run's end
+  EXPECT_NEAR(dynamic[2], 0.15, 1e-15);
+  EXPECT_EQ(times_of(R"({ "static": true, "load_steps": 4 })", "1", "1"), (std::vector<double>{1, 2, 3}));
+}
+
+}  // namespace
+}  // namespace altfem
