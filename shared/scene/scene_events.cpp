@@ -56,7 +56,8 @@ void append_sweep(const nlohmann::json& event, const nlohmann::json& time, const
 }
 
 // A refine event as the refinements it makes: one at its time, and with `every` n one per
-// n time steps (load steps for a static scene) after it until the run ends.
+// n time steps (load steps for a static scene) after it until the run ends; with `cycles` k
+// (static scenes) k after the last load step instead, each followed by a re-solve.
 void append_refinements(const nlohmann::json& event, const nlohmann::json& time, SceneEvent result,
                         std::vector<SceneEvent>& events) {
   const nlohmann::json& refine = event["refine"];
@@ -71,6 +72,15 @@ void append_refinements(const nlohmann::json& event, const nlohmann::json& time,
   const double step = is_static ? 1.0 : time["dt"].get<double>();
   // The last time an event can act: after the last load step but one, or before the last step.
   const double last = is_static ? time["load_steps"].get<int>() - 1.0 : step * (time["steps"].get<int>() - 0.5);
+  if (refine.contains("cycles")) {
+    // After the last load step, one refinement before each re-solve at the full load: times
+    // load_steps, load_steps + 1, … count the solves done (run_simulation).
+    for (int cycle = 0; cycle < refine["cycles"].get<int>(); ++cycle) {
+      result.time = last + 1 + cycle;
+      events.push_back(result);
+    }
+    return;
+  }
   const int every = refine.contains("every") ? refine["every"].get<int>() : 0;
   const double first = result.time;
   for (int repeat = 0; repeat == 0 || (every > 0 && first + repeat * every * step <= last); ++repeat) {
@@ -173,6 +183,13 @@ void check_events(const Validator& validator, const json& resolved) {
         validator.fail(pointer + "/cut/sweep/to_time", "expected a time after the event's " +
                                                            describe(events[i]["time"]) + ", got " +
                                                            describe(events[i]["cut"]["sweep"]["to_time"]));
+    }
+    if (events[i].contains("refine") && events[i]["refine"].contains("cycles")) {
+      if (!resolved["time"]["static"].get<bool>())
+        validator.fail(pointer + "/refine/cycles",
+                       "cycles re-solve a static scene after its last load step: this scene is dynamic (use every)");
+      if (events[i]["refine"].contains("every"))
+        validator.fail(pointer + "/refine", "expected one of 'every' and 'cycles', got both");
     }
     if (!events[i].contains("release")) continue;
     const std::string name = events[i]["release"].get<std::string>();

@@ -338,7 +338,8 @@ const ObjectRule refine_event{
      {.key = "split", .type = ValueType::string, .default_value = "1to8", .choices = names(refine_split_names)},
      {.key = "max_level", .type = ValueType::integer, .default_value = 3, .lower = at_least_one},
      {.key = "region", .type = ValueType::object, .object = &region},
-     {.key = "every", .type = ValueType::integer, .lower = at_least_one}}};
+     {.key = "every", .type = ValueType::integer, .lower = at_least_one},
+     {.key = "cycles", .type = ValueType::integer, .lower = at_least_one}}};
 
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
                         {.key = "release", .type = ValueType::string},

@@ -256,7 +256,14 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   State& state = simulation.state();
   FrameWriter frames(simulation, output_directory, scene.output, on_frame);
   EventSchedule events(scene, simulation, log);
-  const int steps = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
+  // A static scene's refinement cycles re-solve at the full load after its last load step,
+  // one solve per cycle (events at times load_steps, load_steps + 1, …; scene_events.cpp).
+  const int cycles = scene.time.is_static ? static_cast<int>(std::count_if(scene.events.begin(), scene.events.end(),
+                                                                            [&](const SceneEvent& event) {
+                                                                              return event.time >= scene.time.load_steps;
+                                                                            }))
+                                          : 0;
+  const int steps = scene.time.is_static ? scene.time.load_steps + cycles : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
   int cutbacks = 0, round_off_stops = 0;
   double smallest_increment = 1;
@@ -271,7 +278,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     log << "# step time dofs iterations linear_iterations residual total_energy max_von_mises\n";
     events.apply_due(scene.time.is_static ? 0.0 : state.time);
     for (int step = 1; step <= steps; ++step) {
-      if (scene.time.is_static) state.load_factor = static_cast<double>(step) / steps;
+      if (scene.time.is_static)
+        state.load_factor = std::min(1.0, static_cast<double>(step) / scene.time.load_steps);
       StepReport report;
       try {
         report = simulation.integrator().step(state);
@@ -300,7 +308,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       const double total_energy = simulation.integrator().total_energy(state);
       check_state(state, total_energy, size, step, scene.time.dt, simulation.critical_time_step());
       steps_done = step;
-      const double time = scene.time.is_static ? state.load_factor : state.time;
+      // A static frame's time is the load factor, and beyond 1 counts the refinement cycles.
+      const double time = scene.time.is_static ? static_cast<double>(step) / scene.time.load_steps : state.time;
       log << step << ' ' << time << ' ' << simulation.discretization().dof_count() << ' '
           << report.newton_iterations + report.lbfgs_evaluations << ' ' << report.linear_iterations << ' '
           << report.residual << ' ' << total_energy << ' '

@@ -11,6 +11,8 @@
 //   - Marking follows the keys: a region splits only the cells whose centroid it holds, a
 //     cell split max_level times is not split again (nothing is rebuilt), and a cell whose
 //     stress is below the threshold stays.
+//   - A static scene with `cycles` k is solved at its load steps, then k times more, each
+//     after a refinement, with a frame and a log line per solve.
 //   - A method that does not refine is refused before the run, naming the event.
 #include <gtest/gtest.h>
 
@@ -20,6 +22,7 @@
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
+#include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
 
 namespace altfem {
@@ -139,6 +142,28 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
     refine.refine.threshold = 0.6 * tip_stress;
     EXPECT_EQ(simulation.apply(refine).facts["marked_cells"], 36);
   }
+}
+
+TEST(RefineCycles, AStaticSceneIsSolvedOncePerCycleAfterItsLastLoadStep) {
+  const Scene scene = load_scene(
+      scene_file,
+      {parse_scene_override("time={\"static\": true, \"load_steps\": 2}"),
+       parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"cycles\": 2}}]"),
+       parse_scene_override("discretization/dg/degree=1")});
+  ASSERT_EQ(scene.events.size(), 2u);
+  const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_refine_cycles";
+  std::filesystem::remove_all(output);
+  const nlohmann::json summary =
+      run_simulation(scene, load_scene_geometry(scene), "dg", method_named("dg"), output, 0.0);
+  ASSERT_EQ(summary["status"], "ok");
+  // Every cell carries the gravity's stress above 0: 10 → 80 → 640 cells of 4 monomials.
+  const nlohmann::json& events = summary["events"];
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0]["dofs"]["after"], 80 * 12);
+  EXPECT_EQ(events[1]["dofs"]["after"], 640 * 12);
+  for (int frame = 0; frame <= 4; ++frame)  // at rest, 2 load steps, 2 cycles
+    EXPECT_TRUE(std::filesystem::exists(output / ("surface_00000" + std::to_string(frame) + ".vtu"))) << frame;
+  EXPECT_FALSE(std::filesystem::exists(output / "surface_000005.vtu"));
 }
 
 TEST(RefineRefusal, AMethodThatDoesNotRefineIsRefusedBeforeTheRun) {
