@@ -1,7 +1,9 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -23,6 +25,9 @@ using Made = std::vector<std::pair<ExactPoint, int>>;
 
 // A piece of a split cell: 8 × cell + the bit set of the cell's planes it lies in front of.
 constexpr int max_planes = 3;
+// A node this fraction of the mesh's diagonal off a split plane lies on it (as
+// cut_polyhedral_mesh takes nodes on its blade): no piece is thinner.
+constexpr double snap_fraction = 1e-12;
 int piece_key(int cell, int mask) { return (cell << max_planes) | mask; }
 
 ExactPoint to_exact(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
@@ -31,7 +36,11 @@ class CellSplitter {
 public:
   CellSplitter(const PolyhedralMesh& mesh, const std::vector<CellSplit>& splits) : mesh_(mesh) {
     cell_planes_.resize(static_cast<std::size_t>(mesh.cell_count()));
-    for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) points_.push_back(to_exact(mesh.nodes.row(node)));
+    for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+      points_.push_back(to_exact(mesh.nodes.row(node)));
+      positions_.push_back(mesh.nodes.row(node));
+    }
+    snap_ = snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
     std::map<std::array<double, 4>, int> plane_ids;  // equal planes shared, so their crossings are one node
     for (const CellSplit& split : splits) {
       if (split.cell < 0 || split.cell >= mesh.cell_count())
@@ -45,7 +54,11 @@ public:
                                       " has a zero normal");
         const std::array<double, 4> key{plane.normal.x(), plane.normal.y(), plane.normal.z(), plane.offset};
         const auto [found, inserted] = plane_ids.emplace(key, static_cast<int>(planes_.size()));
-        if (inserted) planes_.emplace_back(key[0], key[1], key[2], -key[3]);
+        if (inserted) {
+          planes_.emplace_back(key[0], key[1], key[2], -key[3]);
+          unit_normals_.push_back(plane.normal.normalized());
+          unit_offsets_.push_back(plane.offset / plane.normal.norm());
+        }
         cell_planes_[split.cell].push_back(found->second);
       }
       if (!is_convex_cell(mesh, split.cell, cell_nodes(split.cell)))
@@ -72,13 +85,21 @@ private:
     return nodes;
   }
 
-  int side(int node, int plane) const { return static_cast<int>(planes_[plane].oriented_side(points_[node])); }
+  // A node within `snap_` of a plane lies on it; otherwise the exact side. Neighbours split
+  // 1→2 by the planes normal to nearly equal principal directions cross a shared edge a few
+  // ulps apart: taken exactly, that is two nodes and faces a few ulps wide.
+  int side(int node, int plane) const {
+    if (std::abs(unit_normals_[plane].dot(positions_[node]) - unit_offsets_[plane]) <= snap_) return 0;
+    return static_cast<int>(planes_[plane].oriented_side(points_[node]));
+  }
 
-  // The node at `point`, made once per context.
+  // The node at `point`, made once per context: the same point, or one within `snap_` of it.
   int node_at(const ExactPoint& point, Made& made) {
+    const Eigen::Vector3d position(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z()));
     for (const auto& [existing, node] : made)
-      if (existing == point) return node;
+      if (existing == point || (positions_[node] - position).norm() <= snap_) return node;
     points_.push_back(point);
+    positions_.push_back(position);
     const int node = static_cast<int>(points_.size()) - 1;
     made.emplace_back(point, node);
     return node;
@@ -322,6 +343,10 @@ private:
 
   const PolyhedralMesh& mesh_;
   std::vector<ExactPlane> planes_;
+  std::vector<Eigen::Vector3d> unit_normals_;  // per plane, for the snap
+  std::vector<double> unit_offsets_;
+  std::vector<Eigen::Vector3d> positions_;  // per node, rounded
+  double snap_ = 0;
   std::vector<std::vector<int>> cell_planes_;   // per input cell, its planes (empty: not split)
   std::vector<ExactPoint> points_;              // per node, as constructed
   std::vector<Loop> loops_;                     // per input face, with the edge crossings

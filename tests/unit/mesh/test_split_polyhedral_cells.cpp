@@ -161,3 +161,30 @@ TEST(SplitPolyhedralCells, RefusesACellTwiceNoPlaneOrAZeroNormal) {
 
 }  // namespace
 }  // namespace altfem
+
+namespace altfem {
+namespace {
+
+// Two neighbours split 1→2 by planes normal to principal directions a rounding apart: they
+// cross the edges the neighbours share at points a few ulps apart, which are one node (the
+// snap), not two with faces a few ulps wide between them.
+TEST(SplitPolyhedralCells, NearlyEqualPlanesOfNeighboursMakeOneNodePerSharedEdge) {
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1)),
+                      Eigen::Vector3d(1, 2, 1).cast<int>(), ElementType::hex8));
+  const Eigen::Vector3d tilted = Eigen::Vector3d(1, 0.2, 0.1).normalized();
+  const Eigen::Vector3d tilted_again = (tilted + Eigen::Vector3d(0, 3e-16, -2e-16)).normalized();
+  const SplitCells split = split_polyhedral_cells(
+      mesh,
+      {{0, {plane_through(mesh.cell_centroids.row(0), tilted)}},
+       {1, {plane_through(mesh.cell_centroids.row(0).transpose() + Eigen::Vector3d(0, 1e-16, 0), tilted_again)}}});
+  // The two planes cross the 4 + 4 edges along x of the two boxes, 2 of them shared: 6 nodes.
+  EXPECT_EQ(split.new_nodes, 6);
+  EXPECT_EQ(split.mesh.cell_count(), 4);
+  EXPECT_TRUE(every_cell_closed(split.mesh));
+  EXPECT_TRUE(pieces_fill_their_cells(mesh, split));
+  EXPECT_GT(split.mesh.cell_volumes.minCoeff(), 0.1);
+}
+
+}  // namespace
+}  // namespace altfem
