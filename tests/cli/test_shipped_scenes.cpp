@@ -88,6 +88,12 @@ TEST_P(ShippedScene, RunsWithExitZeroAndFiniteOutput) {
     if (own.contains(size))
       arguments.insert(arguments.end(), {"--set", block + size + "=" + std::to_string(2 * own[size].get<double>())});
   nlohmann::json events = scene.value("events", nlohmann::json::array());
+  if (run.method == "fem" || run.method == "fcm") {
+    // They refuse refinement before the run (hanging-node constraints are not implemented
+    // yet, issue #34): the scene runs without its refine events.
+    std::erase_if(events, [](const nlohmann::json& event) { return event.contains("refine"); });
+    arguments.insert(arguments.end(), {"--set", "events=" + events.dump()});
+  }
   if (scene.contains("time") && !scene["time"].value("static", false)) {
     // One step; the scene's first events act before it, so they run too (the pencil's
     // 50 cuts multiply fcm's and fem's embedded tetrahedra near its tip: minutes).
@@ -101,7 +107,10 @@ TEST_P(ShippedScene, RunsWithExitZeroAndFiniteOutput) {
   const nlohmann::json summary = read_json(out / "summary.json");
   EXPECT_EQ(summary["status"], "ok");
   EXPECT_GT(summary["dofs"].get<long long>(), 0);
-  EXPECT_EQ(summary["events"].size(), events.size());
+  std::size_t event_count = 0;  // a static refinement's cycles are one event each
+  for (const nlohmann::json& event : events)
+    event_count += event.contains("refine") ? event["refine"].value("cycles", 1) : 1;
+  EXPECT_EQ(summary["events"].size(), event_count);
   if (run.method == "dg" || run.method == "harmonic") {
     EXPECT_EQ(summary["facts"]["source"], run.slice ? "slice" : "convert");
     EXPECT_EQ(summary["options"]["discretization"][run.method]["mesh"] == "slice", run.slice);
