@@ -12,15 +12,6 @@ namespace altfem {
 
 namespace {
 
-std::vector<int> nodes_of_cell(const PolyhedralMesh& mesh, int cell) {
-  std::vector<int> nodes;
-  for (const int face : mesh.cell_faces[cell])
-    nodes.insert(nodes.end(), mesh.faces[face].begin(), mesh.faces[face].end());
-  std::sort(nodes.begin(), nodes.end());
-  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  return nodes;
-}
-
 // The point the split planes pass through: the centroid, or the centre of the cell's box
 // when they agree to round-off (a box's centre is its centroid exactly, and halving is exact
 // in binary, so that repeated splits of a grid stay on the dyadic grid).
@@ -55,7 +46,7 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
       ++at_max_level;
       continue;
     }
-    const std::vector<int> nodes = nodes_of_cell(cells, cell);
+    const std::vector<int> nodes = cell_node_set(cells, cell);
     if (!is_convex_cell(cells, cell, nodes)) {
       ++not_convex;
       continue;

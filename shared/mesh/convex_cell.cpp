@@ -38,4 +38,13 @@ bool is_convex_cell(const PolyhedralMesh& mesh, int cell, const std::vector<int>
   return true;
 }
 
+std::vector<int> cell_node_set(const PolyhedralMesh& mesh, int cell) {
+  std::vector<int> nodes;
+  for (const int face : mesh.cell_faces[cell])
+    nodes.insert(nodes.end(), mesh.faces[face].begin(), mesh.faces[face].end());
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
 }  // namespace altfem

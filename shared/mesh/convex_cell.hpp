@@ -14,4 +14,7 @@ namespace altfem {
 /// decision of a cut, a check that its construction applies (cut_polyhedral_mesh, split_polyhedral_cells).
 bool is_convex_cell(const PolyhedralMesh& mesh, int cell, const std::vector<int>& cell_nodes);
 
+/// The nodes of `cell`'s faces, ascending, each once: what is_convex_cell checks.
+std::vector<int> cell_node_set(const PolyhedralMesh& mesh, int cell);
+
 }  // namespace altfem

@@ -66,14 +66,7 @@ private:
     bool opened = false;
   };
 
-  std::vector<int> nodes_of(int cell) const {
-    std::vector<int> cell_nodes;
-    for (const int face : mesh_.cell_faces[cell])
-      cell_nodes.insert(cell_nodes.end(), mesh_.faces[face].begin(), mesh_.faces[face].end());
-    std::sort(cell_nodes.begin(), cell_nodes.end());
-    cell_nodes.erase(std::unique(cell_nodes.begin(), cell_nodes.end()), cell_nodes.end());
-    return cell_nodes;
-  }
+  std::vector<int> nodes_of(int cell) const { return cell_node_set(mesh_, cell); }
 
   bool has_both_sides(const std::vector<int>& loop) const {
     bool positive = false, negative = false;

@@ -61,7 +61,7 @@ public:
         }
         cell_planes_[split.cell].push_back(found->second);
       }
-      if (!is_convex_cell(mesh, split.cell, cell_nodes(split.cell)))
+      if (!is_convex_cell(mesh, split.cell, cell_node_set(mesh, split.cell)))
         throw std::invalid_argument("split_polyhedral_cells: cell " + std::to_string(split.cell) + " is not convex");
     }
   }
@@ -76,15 +76,6 @@ public:
   }
 
 private:
-  std::vector<int> cell_nodes(int cell) const {
-    std::vector<int> nodes;
-    for (const int face : mesh_.cell_faces[cell])
-      nodes.insert(nodes.end(), mesh_.faces[face].begin(), mesh_.faces[face].end());
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    return nodes;
-  }
-
   // A node within `snap_` of a plane lies on it; otherwise the exact side. Neighbours split
   // 1→2 by the planes normal to nearly equal principal directions cross a shared edge a few
   // ulps apart: taken exactly, that is two nodes and faces a few ulps wide.

@@ -31,12 +31,6 @@ namespace {
 const std::filesystem::path scene_file =
     std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
 
-const MethodDescription& method_named(const std::string& name) {
-  for (const auto& method : cli::registered_methods())
-    if (method.scene_block.name == name) return method;
-  throw std::invalid_argument("no method " + name);
-}
-
 int element_count(const MethodInstance& method) {
   const nlohmann::json counts = method.element_counts();
   int count = 0;
@@ -66,7 +60,7 @@ TEST_P(Refine, AnAffineFieldIsUnchangedAndKeepsItsExactStrainEnergy) {
   const Scene scene =
       load_scene(scene_file, {clamp_half, parse_scene_override("events/0/refine/split=\"" + test.split + "\"")});
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(test.method);
+  const MethodDescription& method = cli::find_method(test.method);
   Simulation simulation(scene, geometry, test.method, method.factory, method.rebuild);
   simulation.state().displacement = simulation.method().interpolate(affine);
   const EventRecord record = simulation.apply(scene.events.at(0));
@@ -98,7 +92,7 @@ INSTANTIATE_TEST_SUITE_P(RefiningMethods, Refine,
 TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
   const Scene scene = load_scene(scene_file, {clamp_half});
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named("dg");
+  const MethodDescription& method = cli::find_method("dg");
   Simulation simulation(scene, geometry, "dg", method.factory, method.rebuild);
   simulation.state().displacement = simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     return x.x() * Eigen::Vector3d(2e-3 * x.x() - 1e-3 * x.y(), 5e-4 + 3e-3 * x.z(), -4e-3 * x.x());
@@ -120,7 +114,7 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
     SCOPED_TRACE(name);
     const Scene scene = load_scene(scene_file);
     const SceneGeometry geometry = load_scene_geometry(scene);
-    const MethodDescription& method = method_named(name);
+    const MethodDescription& method = cli::find_method(name);
     Simulation simulation(scene, geometry, name, method.factory, method.rebuild);
     // Shear growing along the bar, u_z = 1e-3 x²: |σ| largest at the tip.
     const auto shear = [](const Eigen::Vector3d& x) -> Eigen::Vector3d { return {0, 0, 1e-3 * x.x() * x.x()}; };
@@ -146,15 +140,14 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
 
 TEST(RefineCycles, AStaticSceneIsSolvedOncePerCycleAfterItsLastLoadStep) {
   const Scene scene = load_scene(
-      scene_file,
-      {parse_scene_override("time={\"static\": true, \"load_steps\": 2}"),
-       parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"cycles\": 2}}]"),
-       parse_scene_override("discretization/dg/degree=1")});
+      scene_file, {parse_scene_override("time={\"static\": true, \"load_steps\": 2}"),
+                   parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"cycles\": 2}}]"),
+                   parse_scene_override("discretization/dg/degree=1")});
   ASSERT_EQ(scene.events.size(), 2u);
   const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_refine_cycles";
   std::filesystem::remove_all(output);
   const nlohmann::json summary =
-      run_simulation(scene, load_scene_geometry(scene), "dg", method_named("dg"), output, 0.0);
+      run_simulation(scene, load_scene_geometry(scene), "dg", cli::find_method("dg"), output, 0.0);
   ASSERT_EQ(summary["status"], "ok");
   // Every cell carries the gravity's stress above 0: 10 → 80 → 640 cells of 4 monomials.
   const nlohmann::json& events = summary["events"];
@@ -170,7 +163,7 @@ TEST(RefineRefusal, AMethodThatDoesNotRefineIsRefusedBeforeTheRun) {
   const Scene scene = load_scene(
       scene_file, {parse_scene_override("discretization/fem={\"element\": \"hex8\", \"resolution\": [10, 1, 1]}")});
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named("fem");
+  const MethodDescription& method = cli::find_method("fem");
   try {
     Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
     FAIL() << "fem refined";
