@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "shared/mesh/convex_cell.hpp"
@@ -24,6 +25,25 @@ Eigen::Vector3d split_centre(const PolyhedralMesh& mesh, int cell, const std::ve
 
 }  // namespace
 
+Eigen::VectorXd traction_jump_indicator(const PolyhedralMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses) {
+  Eigen::VectorXd squared_jumps = Eigen::VectorXd::Zero(mesh.cell_count());
+  Eigen::VectorXd areas = Eigen::VectorXd::Zero(mesh.cell_count());
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    if (mesh.is_boundary_face(face)) continue;
+    const int owner = mesh.face_cells(face, 0), neighbour = mesh.face_cells(face, 1);
+    const Eigen::Vector3d normal = mesh.face_normals.row(face);
+    const double weighted = mesh.face_areas[face] * ((stresses[owner] - stresses[neighbour]) * normal).squaredNorm();
+    for (const int cell : {owner, neighbour}) {
+      squared_jumps[cell] += weighted;
+      areas[cell] += mesh.face_areas[face];
+    }
+  }
+  Eigen::VectorXd indicator = Eigen::VectorXd::Zero(mesh.cell_count());
+  for (int cell = 0; cell < mesh.cell_count(); ++cell)
+    if (areas[cell] > 0) indicator[cell] = std::sqrt(squared_jumps[cell] / areas[cell]);
+  return indicator;
+}
+
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
                                                                 const RefineSpec& refine,
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
@@ -36,10 +56,12 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
   std::vector<CellSplit> splits;
   int at_max_level = 0, not_convex = 0;
   double largest = 0;
+  const bool by_indicator = refine.criterion == RefineCriterion::error_indicator;
+  const Eigen::VectorXd indicator = by_indicator ? traction_jump_indicator(cells, stresses) : Eigen::VectorXd();
   for (int cell = 0; cell < cells.cell_count(); ++cell) {
     const PrincipalStress principal = largest_principal_stress(stresses[cell]);
     largest = std::max(largest, principal.value);
-    if (!(principal.value > refine.threshold)) continue;
+    if (!((by_indicator ? indicator[cell] : principal.value) > refine.threshold)) continue;
     const Eigen::Vector3d centroid = cells.cell_centroids.row(cell);
     if (refine.region && !refine.region->contains(centroid, tolerance)) continue;
     if (!mesh.cell_levels.empty() && mesh.cell_levels[cell] >= refine.max_level) {
@@ -65,6 +87,7 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
            {"new_nodes", 0},
            {"hanging_nodes", 0},
            {"cells", cells.cell_count()}};
+  if (by_indicator) facts["largest_indicator"] = indicator.size() > 0 ? indicator.maxCoeff() : 0.0;
   if (splits.empty()) return std::nullopt;
   SplitCells split = split_polyhedral_cells(cells, splits);
   facts["new_nodes"] = split.new_nodes;

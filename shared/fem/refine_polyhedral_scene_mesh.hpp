@@ -19,17 +19,28 @@
 namespace altfem {
 
 /// `mesh` with the cells `refine` marks split: a cell whose stress (stresses, one per cell)
-/// has a largest absolute principal value above the threshold, split fewer than max_level
+/// has a largest absolute principal value above the threshold (or, by the criterion
+/// error_indicator, a traction_jump_indicator above it), split fewer than max_level
 /// times, its centroid in the region and convex (a merged piece is not split). 1→8 splits
 /// by the three coordinate planes through the centroid — through the bounding box's centre
 /// where the two agree to round-off, so that neighbouring boxes share their mid-planes bit
 /// for bit — 1→2 by the plane through the centroid normal to the principal direction.
 /// nullopt when no cell is marked. `facts` gets marked_cells, at_max_level,
-/// not_convex, largest_stress, new_nodes, hanging_nodes and cells (after).
+/// not_convex, largest_stress (and largest_indicator), new_nodes, hanging_nodes
+/// and cells (after).
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
                                                                 const RefineSpec& refine,
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
                                                                 nlohmann::json& facts);
+
+/// Per cell, the area-weighted RMS jump of the traction across its interior faces,
+/// √(Σ_F |F| |(σ_K − σ_N) n_F|² / Σ_F |F|) [Pa], with σ the cells' mean stresses (one per
+/// cell): a Kelly-type error indicator (Kelly et al. 1983; deal.II's KellyErrorEstimator
+/// integrates the jump of the gradient on the faces, this takes each cell's mean) — the
+/// exact stress is continuous, so its jumps measure the discrete one's error. 0 for a cell
+/// without interior faces; boundary faces are left out (their traction's residual needs
+/// the loads).
+Eigen::VectorXd traction_jump_indicator(const PolyhedralMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses);
 
 /// A polyhedral method's MethodInstance::refine_mesh: its handed mesh refined as above,
 /// by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one element

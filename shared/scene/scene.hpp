@@ -146,10 +146,17 @@ inline constexpr std::array<std::string_view, 3> event_kind_names{"release", "cu
 enum class RefineSplit { eighths, halves };
 inline constexpr std::array<std::string_view, 2> refine_split_names{"1to8", "1to2"};
 
+/// What a refine event marks cells by: the largest absolute principal stress (Kaufmann et
+/// al. 2009 §9.3, "where the stress is high"), or the jump of the traction across the
+/// cell's faces (a Kelly-type indicator, "where the error is").
+enum class RefineCriterion { principal_stress, error_indicator };
+inline constexpr std::array<std::string_view, 2> refine_criterion_names{"principal_stress", "error_indicator"};
+
 /// A refine event's marking and splitting (docs/scene-schema.md, "Events").
 struct RefineSpec {
-  /// Marks a cell whose largest absolute principal stress (of its mean small-strain stress
-  /// σ = λ tr(ε) I + 2μ ε) exceeds this [Pa].
+  RefineCriterion criterion = RefineCriterion::principal_stress;
+  /// Marks a cell whose criterion exceeds this [Pa]: the largest absolute principal value of
+  /// its mean small-strain stress σ = λ tr(ε) I + 2μ ε, or its traction jump indicator.
   double threshold = 0.0;
   RefineSplit split = RefineSplit::eighths;
   int max_level = 3;                     ///< a cell split this many times is not split again

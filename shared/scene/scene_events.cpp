@@ -62,6 +62,9 @@ void append_refinements(const nlohmann::json& event, const nlohmann::json& time,
                         std::vector<SceneEvent>& events) {
   const nlohmann::json& refine = event["refine"];
   result.kind = EventKind::refine;
+  result.refine.criterion = refine["criterion"].get<std::string>() == refine_criterion_names[0]
+                                ? RefineCriterion::principal_stress
+                                : RefineCriterion::error_indicator;
   result.refine.threshold = refine["threshold"].get<double>();
   result.refine.split =
       refine["split"].get<std::string>() == refine_split_names[0] ? RefineSplit::eighths : RefineSplit::halves;

@@ -333,7 +333,7 @@ const ObjectRule refine_event{
     {{.key = "criterion",
       .type = ValueType::string,
       .default_value = "principal_stress",
-      .choices = {"principal_stress"}},
+      .choices = names(refine_criterion_names)},
      {.key = "threshold", .type = ValueType::number, .required = true, .lower = non_negative},
      {.key = "split", .type = ValueType::string, .default_value = "1to8", .choices = names(refine_split_names)},
      {.key = "max_level", .type = ValueType::integer, .default_value = 3, .lower = at_least_one},

@@ -8,6 +8,8 @@
 //     child keeps its parent's polynomial, a global polynomial has no jumps for the
 //     penalty to weigh, so the total energy does not jump, to round-off, and neither do
 //     the mass and momentum.
+//   - The error indicator (the traction's jump across faces) marks where the stress is
+//     discontinuous, whatever its size.
 //   - Marking follows the keys: a region splits only the cells whose centroid it holds, a
 //     cell split max_level times is not split again (nothing is rebuilt), and a cell whose
 //     stress is below the threshold stays.
@@ -135,6 +137,35 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
     refine.refine.max_level = 2;
     refine.refine.threshold = 0.6 * tip_stress;
     EXPECT_EQ(simulation.apply(refine).facts["marked_cells"], 36);
+  }
+}
+
+// The error indicator marks where the stress jumps, not where it is high: the bar in shear
+// growing along it (u_z = 1e-3 x², σ_xz = μ ∂u_z/∂x) has cells whose mean stresses differ by
+// μ · 2e-3 · 0.1 from one cell to the next, jumps of that size in the traction across every
+// face normal to x and none across the others (the bar is one cell thick): each cell's
+// indicator is that jump. Just below it every cell is marked, just above none, though the
+// stress itself grows twentyfold along the bar.
+TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
+  for (const std::string name : {"dg", "harmonic"}) {
+    SCOPED_TRACE(name);
+    const Scene scene = load_scene(scene_file);
+    const SceneGeometry geometry = load_scene_geometry(scene);
+    const MethodDescription& method = cli::find_method(name);
+    const double mu = 1e8 / (2 * 1.3), jump = mu * 2e-3 * 0.1;
+    for (const double fraction : {0.99, 1.01}) {
+      Simulation simulation(scene, geometry, name, method.factory, method.rebuild);
+      simulation.state().displacement =
+          simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+            return {0, 0, 1e-3 * x.x() * x.x()};
+          });
+      SceneEvent refine = scene.events.at(0);
+      refine.refine.criterion = RefineCriterion::error_indicator;
+      refine.refine.threshold = fraction * jump;
+      const EventRecord record = simulation.apply(refine);
+      EXPECT_NEAR(record.facts["largest_indicator"].get<double>(), jump, 1e-9 * jump);
+      EXPECT_EQ(record.facts["marked_cells"], fraction < 1 ? 10 : 0);
+    }
   }
 }
 

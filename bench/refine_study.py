@@ -1,0 +1,94 @@
+#!/usr/bin/python3
+"""Adaptive against uniform refinement, per method (issue #34; Martin et al. 2008 Fig. 6
+in 3D): the bar of scenes/refine_bar.json (clamped, bending under its weight: the clamp's
+edges are stress singularities) solved on uniform grids and by `refine` cycles from the
+coarse grid, every run measured by `altfem compare` against one fine dg reference. Prints a
+convergence table per method (error, DOFs, seconds, the rate against DOFs), then for each
+method the cheapest adaptive run that reaches the finest uniform run's error, with its DOFs
+and time as fractions of that run's.
+
+    /usr/bin/python3 bench/refine_study.py [--altfem build/bin/altfem] [--out out/refine_study]
+        [--criterion error_indicator] [--threshold 2e3] [--cycles 4]
+"""
+import argparse
+import csv
+import json
+import math
+import pathlib
+import subprocess
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+UNIFORM = {"dg": [[9, 2, 2], [18, 4, 4]], "harmonic": [[9, 2, 2], [18, 4, 4], [36, 8, 8]]}
+RESOLUTION_KEY = {"dg": "discretization/dg/resolution", "harmonic": "discretization/harmonic/convert/resolution"}
+REFERENCE = {"method": "dg", "set": {"discretization/dg/resolution": [36, 8, 8], "events": []}}
+
+
+def compare(scene, out, altfem):
+    """Runs `altfem compare` on `scene` (a dict) into `out`; returns results.csv's rows."""
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "scene.json"
+    path.write_text(json.dumps(scene, indent=1))
+    subprocess.run([altfem, "compare", str(path), "--out", str(out)], check=True)
+    with open(out / "results.csv") as table:
+        return [row for row in csv.DictReader(table) if row["status"] == "ok" and row["is_reference"] == "0"]
+
+
+def table(title, rows):
+    print(f"\n{title}")
+    print(f"{'run':44} {'DOFs':>8} {'error':>10} {'time [s]':>9} {'rate':>6}")
+    previous = None
+    for row in rows:
+        dofs, error = int(row["dofs"]), float(row["relative_rms_error"])
+        # error ~ DOFs^(-rate/3): the rate in h of a 3D mesh.
+        rate = "" if previous is None or dofs == previous[0] else \
+            f"{-3 * math.log(error / previous[1]) / math.log(dofs / previous[0]):6.2f}"
+        print(f"{row['label'][:44]:44} {dofs:8d} {error:10.3e} {float(row['total_s']):9.3f} {rate:>6}")
+        previous = (dofs, error)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--altfem", default=str(ROOT / "build/bin/altfem"))
+    parser.add_argument("--out", default=str(ROOT / "out/refine_study"))
+    parser.add_argument("--criterion", default="error_indicator", choices=["error_indicator", "principal_stress"])
+    parser.add_argument("--threshold", type=float, default=2e3)
+    parser.add_argument("--split", default="1to8", choices=["1to8", "1to2"])
+    parser.add_argument("--cycles", type=int, default=4)
+    arguments = parser.parse_args()
+    base = json.loads((ROOT / "scenes/refine_bar.json").read_text())
+    out = pathlib.Path(arguments.out)
+
+    uniform = dict(base, events=[])
+    uniform["compare"] = {"methods": list(UNIFORM), "reference": REFERENCE,
+                          "sweeps": {RESOLUTION_KEY[m]: UNIFORM[m] for m in UNIFORM}}
+    adaptive = dict(base)
+    adaptive["events"] = [{"time": 0, "refine": {"criterion": arguments.criterion, "threshold": arguments.threshold,
+                                                 "split": arguments.split, "max_level": arguments.cycles,
+                                                 "cycles": 1}}]
+    adaptive["compare"] = {"methods": list(UNIFORM), "reference": REFERENCE,
+                           "sweeps": {"events/0/refine/cycles": list(range(1, arguments.cycles + 1))}}
+    uniform_rows = compare(uniform, out / "uniform", arguments.altfem)
+    adaptive_rows = compare(adaptive, out / "adaptive", arguments.altfem)
+
+    print(f"\nrefine_bar: uniform grids against {arguments.criterion} > {arguments.threshold:g} Pa, "
+          f"{arguments.split}, 1-{arguments.cycles} cycles; error: RMS surface error / RMS displacement "
+          "against dg k = 2 on 36x8x8")
+    for method in UNIFORM:
+        by_dofs = lambda rows: sorted((r for r in rows if r["method"] == method), key=lambda r: int(r["dofs"]))
+        uniform_series, adaptive_series = by_dofs(uniform_rows), by_dofs(adaptive_rows)
+        table(f"{method}, uniform", uniform_series)
+        table(f"{method}, adaptive", adaptive_series)
+        finest = uniform_series[-1]
+        target = float(finest["relative_rms_error"])
+        reaching = [r for r in adaptive_series if float(r["relative_rms_error"]) <= target]
+        if not reaching:
+            print(f"{method}: no adaptive run reaches the finest uniform error {target:.3e}")
+            continue
+        best = min(reaching, key=lambda r: float(r["total_s"]))
+        print(f"{method}: the finest uniform error {target:.3e} ({finest['dofs']} DOFs, {float(finest['total_s']):.3f} s) "
+              f"reached by '{best['label']}' with {int(best['dofs']) / int(finest['dofs']):.2f} of the DOFs and "
+              f"{float(best['total_s']) / float(finest['total_s']):.2f} of the time")
+
+
+if __name__ == "__main__":
+    main()
