@@ -106,9 +106,13 @@ TEST(Check, JsonOutputIsTheResolvedSceneAndGeometryFacts) {
 TEST(Check, EveryShippedSceneIsValid) {
   for (const auto& entry : std::filesystem::directory_iterator(source_path("scenes"))) {
     if (entry.path().extension() != ".json") continue;
-    const auto result = run_altfem({"check", entry.path().string(), "--method", "fem"});
+    // fem refuses refine events before the run (issue #34): a refining scene is checked with dg.
+    std::ifstream file(entry.path());
+    const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    const std::string method = text.find("\"refine\"") != std::string::npos ? "dg" : "fem";
+    const auto result = run_altfem({"check", entry.path().string(), "--method", method});
     EXPECT_EQ(result.exit_code, 0) << entry.path() << ": " << result.err;
-    EXPECT_NE(result.out.find("fem: "), std::string::npos) << entry.path() << ": " << result.out;
+    EXPECT_NE(result.out.find(method + ": "), std::string::npos) << entry.path() << ": " << result.out;
   }
 }
 
