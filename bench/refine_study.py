@@ -8,7 +8,7 @@ method the cheapest adaptive run that reaches the finest uniform run's error, wi
 and time as fractions of that run's.
 
     /usr/bin/python3 bench/refine_study.py [--altfem build/bin/altfem] [--out out/refine_study]
-        [--criterion error_indicator] [--threshold 2e3] [--cycles 4]
+        [--criterion error_indicator] [--threshold 5e3] [--cycles 3]
 """
 import argparse
 import csv
@@ -51,9 +51,9 @@ def main():
     parser.add_argument("--altfem", default=str(ROOT / "build/bin/altfem"))
     parser.add_argument("--out", default=str(ROOT / "out/refine_study"))
     parser.add_argument("--criterion", default="error_indicator", choices=["error_indicator", "principal_stress"])
-    parser.add_argument("--threshold", type=float, default=2e3)
+    parser.add_argument("--threshold", type=float, default=5e3)
     parser.add_argument("--split", default="1to8", choices=["1to8", "1to2"])
-    parser.add_argument("--cycles", type=int, default=4)
+    parser.add_argument("--cycles", type=int, default=3)
     arguments = parser.parse_args()
     base = json.loads((ROOT / "scenes/refine_bar.json").read_text())
     out = pathlib.Path(arguments.out)
