@@ -181,14 +181,22 @@ private:
     face_pieces_[face] = split_by_planes({loops_[face]}, planes, made);
   }
 
-  // The planes of `cell` that `loop` lies in front of, as a bit set.
-  int mask_of(const Loop& loop, int cell) const {
+  // The side of `plane` a piece lies on (after every split, its nodes are on one side or
+  // on the plane): the first non-zero side of its nodes, 0 when it lies in the plane.
+  int side_of_piece(const Loop& loop, int plane) const {
+    for (const int node : loop)
+      if (const int sign = side(node, plane); sign != 0) return sign;
+    return 0;
+  }
+
+  // The planes of `cell` that `loop` lies in front of, as a bit set; plane number `skip`
+  // (the one a section lies in) left out.
+  int mask_of(const Loop& loop, int cell, std::size_t skip = max_planes) const {
     int mask = 0;
     const std::vector<int>& planes = cell_planes_[cell];
     for (std::size_t k = 0; k < planes.size(); ++k) {
-      int sign = 0;
-      for (const int node : loop)
-        if ((sign = side(node, planes[k])) != 0) break;
+      if (k == skip) continue;
+      const int sign = side_of_piece(loop, planes[k]);
       if (sign == 0)
         throw NumericalError("refine: a face of cell " + std::to_string(cell) + " lies in one of its split planes");
       if (sign > 0) mask |= 1 << k;
@@ -233,22 +241,9 @@ private:
       if (k != index) others.push_back(cell_planes_[cell][k]);
     Made& made = cell_points_[cell];
     for (const Loop& piece : split_by_planes({section}, others, made)) {
-      const int mask = mask_of_others(piece, cell, index);
+      const int mask = mask_of(piece, cell, index);
       section_faces_.push_back({piece, piece_key(cell, mask | (1 << index)), piece_key(cell, mask)});
     }
-  }
-
-  int mask_of_others(const Loop& loop, int cell, std::size_t index) const {
-    int mask = 0;
-    const std::vector<int>& planes = cell_planes_[cell];
-    for (std::size_t k = 0; k < planes.size(); ++k) {
-      if (k == index) continue;
-      int sign = 0;
-      for (const int node : loop)
-        if ((sign = side(node, planes[k])) != 0) break;
-      if (sign > 0) mask |= 1 << k;
-    }
-    return mask;
   }
 
   struct Face {
