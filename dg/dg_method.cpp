@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
-#include <random>
 
 #include "dg/dg_discretization.hpp"
 #include "dg/dg_linear_system.hpp"
@@ -12,6 +11,7 @@
 #include "dg/dg_volume_grid.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
+#include "dg/penalty_definiteness.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
 #include "dg/vertex_coarse_space.hpp"
@@ -26,7 +26,6 @@
 #include "shared/simulation/mls_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
 #include "shared/simulation/stitched_embedding.hpp"
-#include "shared/solve/krylov.hpp"
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem::dg {
@@ -59,58 +58,6 @@ std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scen
                         "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
   }
   return faces;
-}
-
-// K positive definite, up to its rigid motions when no condition holds the body: is
-// K + δM, δ = 1e-10 · max K_ii / max M_ii? With a direct solver, by its Cholesky factor
-// (CHOLMOD). With an iterative one the run needs no factor, and this test's was the
-// run's largest allocation (20 GB at 768k DOFs, issue #35): block-Jacobi PCG on a random
-// right-hand side decides instead. Its curvatures pᵀAp are, up to positive factors, the
-// pivots of the Lanczos tridiagonal T_k (Golub & Van Loan, Matrix Computations, §11.3.5),
-// so PCG breaks down as soon as a Ritz value of K + δM falls below 0, which happens before
-// the residual's component along a negative eigenvector can shrink: an indefinite matrix
-// breaks PCG down before it converges; the cell blocks, principal submatrices, are
-// positive definite when K + δM is. A PCG that neither converges nor breaks down within
-// its iterations decides nothing, and the factorisation does.
-bool positive_definite(const DgLinearSystem& system, const std::vector<std::vector<int>>& element_dofs,
-                       bool iterative) {
-  const Eigen::SparseMatrix<double>& stiffness = system.stiffness();
-  const Eigen::SparseMatrix<double> mass = system.mass();
-  const double shift = 1e-10 * stiffness.diagonal().maxCoeff() / mass.diagonal().maxCoeff();
-  // K's pattern holds M's cell blocks: δM is added in place into one copy of K (the sum
-  // expression evaluated through temporaries held 2.4 copies, the run's peak).
-  Eigen::SparseMatrix<double> shifted = stiffness;
-  for (Eigen::Index column = 0; column < mass.outerSize(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(mass, column); entry; ++entry)
-      shifted.coeffRef(entry.row(), column) += shift * entry.value();
-  if (iterative) {
-    LinearSolverOptions options;
-    options.kind = LinearSolverKind::pcg;
-    options.custom_preconditioner = block_jacobi_factory(element_dofs);
-    options.tolerance = 1e-8;
-    options.max_iterations = 20000;
-    const auto solver = make_linear_solver(options);
-    std::mt19937 random(35);
-    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
-    Eigen::VectorXd rhs(shifted.rows()), solution = Eigen::VectorXd::Zero(shifted.rows());
-    for (Eigen::Index i = 0; i < rhs.size(); ++i) rhs[i] = uniform(random);
-    try {
-      solver->factorize(shifted);  // each cell block by Cholesky
-      solver->solve(rhs, solution);
-      return true;
-    } catch (const KrylovBreakdown&) {
-      return false;
-    } catch (const NumericalError&) {
-      if (solver->statistics().factorisations == 0) return false;  // a cell block is not definite
-    }
-  }
-  const auto solver = make_linear_solver({});
-  try {
-    solver->factorize(shifted);
-    return true;
-  } catch (const NumericalError&) {
-    return false;
-  }
 }
 
 class DgMethod final : public EmbeddedSurfaceMethod {
