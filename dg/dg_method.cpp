@@ -203,7 +203,7 @@ public:
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "dg");
   }
-  std::string refine_refusal() const override { return event_refusal("refinement"); }
+  std::string refine_refusal(const RefineSpec& /*refine*/) const override { return event_refusal("refinement"); }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
                                                 nlohmann::json& facts) const override {
     return refine_handed_polyhedral_mesh(*mesh(), refine, *field_quadrature(0)->elements, materials_, u, facts, "dg");

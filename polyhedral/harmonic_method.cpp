@@ -134,7 +134,7 @@ public:
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "harmonic");
   }
-  std::string refine_refusal() const override { return ""; }
+  std::string refine_refusal(const RefineSpec& /*refine*/) const override { return ""; }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
                                                 nlohmann::json& facts) const override {
     return refine_handed_polyhedral_mesh(*mesh(), refine, *elements_, materials_, u, facts, "harmonic");

@@ -56,7 +56,8 @@ private:
   std::unique_ptr<Tree> tree_;
 };
 
-LagrangeBasisEvaluator::LagrangeBasisEvaluator(const VolumeMesh& mesh) : mesh_(mesh) {}
+LagrangeBasisEvaluator::LagrangeBasisEvaluator(const VolumeMesh& mesh, const NodeConstraints* constraints)
+    : mesh_(mesh), constraints_(constraints) {}
 LagrangeBasisEvaluator::~LagrangeBasisEvaluator() = default;
 
 Eigen::AlignedBox3d LagrangeBasisEvaluator::element_bounds(int cell) const {
@@ -76,6 +77,7 @@ void LagrangeBasisEvaluator::evaluate(int cell, const Eigen::Vector3d& xi, std::
     basis[a] = mesh_.cells(cell, a);
     values[a] = shape[a];
   }
+  if (constraints_) constraints_->substitute(basis, values);
 }
 
 bool LagrangeBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,

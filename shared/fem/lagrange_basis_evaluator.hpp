@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 
@@ -13,8 +14,8 @@ namespace altfem {
 /// and extrapolated with that cell's inverse map. Basis function i is node i.
 class LagrangeBasisEvaluator final : public ElementBasisEvaluator {
 public:
-  /// Keeps a reference to `mesh`.
-  explicit LagrangeBasisEvaluator(const VolumeMesh& mesh);
+  /// Keeps a reference to `mesh` and `constraints` (null: none).
+  explicit LagrangeBasisEvaluator(const VolumeMesh& mesh, const NodeConstraints* constraints = nullptr);
   ~LagrangeBasisEvaluator() override;
 
   int element_count() const override { return static_cast<int>(mesh_.cells.rows()); }
@@ -30,6 +31,7 @@ private:
   void evaluate(int cell, const Eigen::Vector3d& xi, std::vector<int>& basis, std::vector<double>& values) const;
 
   const VolumeMesh& mesh_;
+  const NodeConstraints* constraints_;
   mutable std::unique_ptr<NearestBoundaryCell> nearest_;
 };
 

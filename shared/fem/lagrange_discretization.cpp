@@ -1,5 +1,6 @@
 #include "shared/fem/lagrange_discretization.hpp"
 
+#include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/quadrature/reference_rules.hpp"
@@ -15,7 +16,8 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(const Volu
 
 std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
     const VolumeMesh& mesh, std::vector<const Material*> materials, std::vector<int> material_ids,
-    const std::vector<DirichletCondition>& dirichlet, int quadrature_strength, const std::string& scene_file) {
+    const std::vector<DirichletCondition>& dirichlet, int quadrature_strength, const std::string& scene_file,
+    const NodeConstraints* constraints) {
   const bool tetrahedra = element_shape(mesh.element_type) == ElementShape::tetrahedron;
   DiscretizationParts parts;
   parts.elements = tabulate_lagrange(
@@ -23,7 +25,10 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
       LagrangeCellRules{
           tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, std::move(material_ids)});
   parts.materials = std::move(materials);
-  parts.dirichlet = nodal_dirichlet(mesh.nodes, dirichlet, scene_file, "the fem mesh");
+  const bool hanging = constraints && !constraints->empty();
+  if (hanging) parts.elements = constrain_lagrange_elements(parts.elements, *constraints);
+  parts.dirichlet = nodal_dirichlet(hanging ? Eigen::MatrixXd(mesh.nodes.topRows(constraints->free_nodes)) : mesh.nodes,
+                                    dirichlet, scene_file, "the fem mesh");
   return std::make_unique<TabulatedDiscretization>(std::move(parts));
 }
 

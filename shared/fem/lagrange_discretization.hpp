@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "shared/assembly/tabulated_discretization.hpp"
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
@@ -19,9 +20,12 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(const Volu
                                                                       int quadrature_strength,
                                                                       const std::string& scene_file = "scene");
 /// The same with several materials: material_ids holds each cell's index into
-/// `materials` (empty: all 0).
+/// `materials` (empty: all 0); with `constraints` (not null), on the free nodes only, hanging
+/// nodes' functions handed to their masters (constrain_lagrange_elements) — a hanging node
+/// on a Dirichlet region lies on its coarse neighbour's face there, whose nodes hold it.
 std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
     const VolumeMesh& mesh, std::vector<const Material*> materials, std::vector<int> material_ids,
-    const std::vector<DirichletCondition>& dirichlet, int quadrature_strength, const std::string& scene_file = "scene");
+    const std::vector<DirichletCondition>& dirichlet, int quadrature_strength, const std::string& scene_file = "scene",
+    const NodeConstraints* constraints = nullptr);
 
 }  // namespace altfem

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "shared/fem/refine_marking.hpp"
 #include "shared/mesh/convex_cell.hpp"
 #include "shared/mesh/split_polyhedral_cells.hpp"
 #include "shared/simulation/cell_stresses.hpp"
@@ -25,25 +26,6 @@ Eigen::Vector3d split_centre(const PolyhedralMesh& mesh, int cell, const std::ve
 
 }  // namespace
 
-Eigen::VectorXd traction_jump_indicator(const PolyhedralMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses) {
-  Eigen::VectorXd squared_jumps = Eigen::VectorXd::Zero(mesh.cell_count());
-  Eigen::VectorXd areas = Eigen::VectorXd::Zero(mesh.cell_count());
-  for (int face = 0; face < mesh.face_count(); ++face) {
-    if (mesh.is_boundary_face(face)) continue;
-    const int owner = mesh.face_cells(face, 0), neighbour = mesh.face_cells(face, 1);
-    const Eigen::Vector3d normal = mesh.face_normals.row(face);
-    const double weighted = mesh.face_areas[face] * ((stresses[owner] - stresses[neighbour]) * normal).squaredNorm();
-    for (const int cell : {owner, neighbour}) {
-      squared_jumps[cell] += weighted;
-      areas[cell] += mesh.face_areas[face];
-    }
-  }
-  Eigen::VectorXd indicator = Eigen::VectorXd::Zero(mesh.cell_count());
-  for (int cell = 0; cell < mesh.cell_count(); ++cell)
-    if (areas[cell] > 0) indicator[cell] = std::sqrt(squared_jumps[cell] / areas[cell]);
-  return indicator;
-}
-
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
                                                                 const RefineSpec& refine,
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
@@ -53,21 +35,18 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
     throw std::invalid_argument("refine_polyhedral_scene_mesh: one stress per cell");
   const double tolerance =
       1e-6 * (cells.nodes.colwise().maxCoeff() - cells.nodes.colwise().minCoeff()).norm();  // the regions' rule
+  std::vector<SharedFace> faces;
+  if (refine.criterion == RefineCriterion::error_indicator)
+    for (int face = 0; face < cells.face_count(); ++face)
+      if (!cells.is_boundary_face(face))
+        faces.push_back({cells.face_cells(face, 0), cells.face_cells(face, 1), cells.face_areas[face],
+                         cells.face_normals.row(face).transpose()});
+  const RefineMarks marks =
+      mark_cells_to_refine(refine, stresses, faces, cells.cell_centroids, mesh.cell_levels, tolerance, facts);
   std::vector<CellSplit> splits;
-  int at_max_level = 0, not_convex = 0;
-  double largest = 0;
-  const bool by_indicator = refine.criterion == RefineCriterion::error_indicator;
-  const Eigen::VectorXd indicator = by_indicator ? traction_jump_indicator(cells, stresses) : Eigen::VectorXd();
-  for (int cell = 0; cell < cells.cell_count(); ++cell) {
-    const PrincipalStress principal = largest_principal_stress(stresses[cell]);
-    largest = std::max(largest, principal.value);
-    if (!((by_indicator ? indicator[cell] : principal.value) > refine.threshold)) continue;
-    const Eigen::Vector3d centroid = cells.cell_centroids.row(cell);
-    if (refine.region && !refine.region->contains(centroid, tolerance)) continue;
-    if (!mesh.cell_levels.empty() && mesh.cell_levels[cell] >= refine.max_level) {
-      ++at_max_level;
-      continue;
-    }
+  int not_convex = 0;
+  for (std::size_t m = 0; m < marks.cells.size(); ++m) {
+    const int cell = marks.cells[m];
     const std::vector<int> nodes = cell_node_set(cells, cell);
     if (!is_convex_cell(cells, cell, nodes)) {
       ++not_convex;
@@ -75,19 +54,17 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
     }
     const Eigen::Vector3d centre = split_centre(cells, cell, nodes);
     CellSplit split{cell, {}};
-    if (refine.split == RefineSplit::halves) split.planes.push_back(plane_through(centroid, principal.direction));
+    if (refine.split == RefineSplit::halves)
+      split.planes.push_back(plane_through(cells.cell_centroids.row(cell).transpose(), marks.directions[m]));
     else
       for (int axis = 0; axis < 3; ++axis) split.planes.push_back(plane_through(centre, Eigen::Vector3d::Unit(axis)));
     splits.push_back(std::move(split));
   }
-  facts = {{"marked_cells", splits.size()},
-           {"at_max_level", at_max_level},
-           {"not_convex", not_convex},
-           {"largest_stress", largest},
-           {"new_nodes", 0},
-           {"hanging_nodes", 0},
-           {"cells", cells.cell_count()}};
-  if (by_indicator) facts["largest_indicator"] = indicator.size() > 0 ? indicator.maxCoeff() : 0.0;
+  facts.update({{"marked_cells", splits.size()},
+                {"not_convex", not_convex},
+                {"new_nodes", 0},
+                {"hanging_nodes", 0},
+                {"cells", cells.cell_count()}});
   if (splits.empty()) return std::nullopt;
   SplitCells split = split_polyhedral_cells(cells, splits);
   facts["new_nodes"] = split.new_nodes;

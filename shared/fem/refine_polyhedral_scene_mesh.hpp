@@ -33,15 +33,6 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
                                                                 nlohmann::json& facts);
 
-/// Per cell, the area-weighted RMS jump of the traction across its interior faces,
-/// √(Σ_F |F| |(σ_K − σ_N) n_F|² / Σ_F |F|) [Pa], with σ the cells' mean stresses (one per
-/// cell): a Kelly-type error indicator (Kelly et al. 1983; deal.II's KellyErrorEstimator
-/// integrates the jump of the gradient on the faces, this takes each cell's mean) — the
-/// exact stress is continuous, so its jumps measure the discrete one's error. 0 for a cell
-/// without interior faces; boundary faces are left out (their traction's residual needs
-/// the loads).
-Eigen::VectorXd traction_jump_indicator(const PolyhedralMesh& mesh, const std::vector<Eigen::Matrix3d>& stresses);
-
 /// A polyhedral method's MethodInstance::refine_mesh: its handed mesh refined as above,
 /// by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one element
 /// per cell) with the material at each cell's centroid; null when no cell is marked.

@@ -74,9 +74,11 @@ public:
   virtual std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& /*cut*/, nlohmann::json& /*facts*/) const {
     throw std::logic_error("this method cannot cut");
   }
-  /// Why this instance cannot be refined by a scene's `refine` event (one phrase); empty
-  /// when it can. Asked before the run writes anything.
-  virtual std::string refine_refusal() const { return "it does not refine yet (dg and harmonic do)"; }
+  /// Why this instance cannot be refined by a scene's `refine` event of these options (one
+  /// phrase); empty when it can. Asked before the run writes anything.
+  virtual std::string refine_refusal(const RefineSpec& /*refine*/) const {
+    return "it does not refine yet (dg, harmonic and fem on hexahedral grids do)";
+  }
   /// mesh() with the cells the `refine` event marks, for the displacement u (#dofs), split
   /// (docs/architecture.md, "Events"), for the rebuild; null when it marks none. `facts`
   /// receives what it did (counts). Only where refine_refusal() is empty.

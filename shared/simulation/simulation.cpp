@@ -149,7 +149,7 @@ void Simulation::check_events() const {
       const bool cut = event.kind == EventKind::cut;
       const std::string why = !rebuild_ ? "the run was built without the method's rebuild"
                               : cut     ? method_->cut_refusal()
-                                        : method_->refine_refusal();
+                                        : method_->refine_refusal(event.refine);
       if (!why.empty())
         throw InputError(
             input_message(scene_.file.string(), event.pointer + (cut ? "/cut" : "/refine"),

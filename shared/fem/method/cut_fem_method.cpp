@@ -60,12 +60,13 @@ public:
     return facts;
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}});
+    return std::make_shared<MeshOf<FemMesh>>(
+        FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}, std::nullopt, {}});
   }
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, cells_->cut(cut.blade, facts)});
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, cells_->cut(cut.blade, facts), std::nullopt, {}});
   }
   /// From fem before its first cut, each node copy takes its node's values; from a cut
   /// fem, the values of the copy its material came from (EmbeddedCutCells::transfer).

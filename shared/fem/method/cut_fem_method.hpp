@@ -9,14 +9,19 @@
 #include <optional>
 
 #include "shared/cut_cells/embedded_cut_cells.hpp"
+#include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/simulation/method_instance.hpp"
 
 namespace altfem {
 
-/// What fem is built on: its elements, and once cut, the material as their cut tetrahedra.
+/// What fem is built on: its elements, and once cut, the material as their cut tetrahedra;
+/// on a hexahedral grid the forest a refine event splits, and its hanging nodes (the last
+/// nodes of `elements`).
 struct FemMesh {
   VolumeMesh elements;
   std::optional<EmbeddedTetrahedra> material;
+  std::optional<HexahedralForest> forest;
+  NodeConstraints constraints;
 };
 
 /// The elements' own tetrahedra (uncut), conforming by node as the elements are: Tet4/Tet10

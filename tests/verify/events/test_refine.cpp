@@ -191,15 +191,14 @@ TEST(RefineCycles, AStaticSceneIsSolvedOncePerCycleAfterItsLastLoadStep) {
 }
 
 TEST(RefineRefusal, AMethodThatDoesNotRefineIsRefusedBeforeTheRun) {
-  const Scene scene = load_scene(
-      scene_file, {parse_scene_override("discretization/fem={\"element\": \"hex8\", \"resolution\": [10, 1, 1]}")});
+  const Scene scene = load_scene(scene_file);
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = cli::find_method("fem");
+  const MethodDescription& method = cli::find_method("fcm");
   try {
-    Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
-    FAIL() << "fem refined";
+    Simulation simulation(scene, geometry, "fcm", method.factory, method.rebuild);
+    FAIL() << "fcm refined";
   } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fem"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fcm"), std::string::npos)
         << error.what();
   }
 }

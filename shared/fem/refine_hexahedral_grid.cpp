@@ -1,0 +1,33 @@
+#include "shared/fem/refine_hexahedral_grid.hpp"
+
+#include "shared/fem/refine_marking.hpp"
+
+namespace altfem {
+
+std::optional<RefinedGrid> refine_hexahedral_grid(const HexahedralForest& forest, const RefineSpec& refine,
+                                                  const std::vector<Eigen::Matrix3d>& stresses, nlohmann::json& facts) {
+  std::vector<SharedFace> faces;
+  if (refine.criterion == RefineCriterion::error_indicator)
+    for (const ForestFace& face : forest_interior_faces(forest))
+      faces.push_back({face.first, face.second, face.area, Eigen::Vector3d::Unit(face.axis)});
+  Eigen::MatrixXd centroids(forest.leaf_count(), 3);
+  for (int leaf = 0; leaf < forest.leaf_count(); ++leaf) {
+    const int edge = HexahedralForest::edge_units(forest.levels[leaf]);
+    centroids.row(leaf) = 0.5 * (forest.position(forest.origins[leaf]) +
+                                 forest.position(forest.origins[leaf] + Eigen::Vector3i::Constant(edge)));
+  }
+  const RefineMarks marks =
+      mark_cells_to_refine(refine, stresses, faces, centroids, forest.levels, region_tolerance(forest.box), facts);
+  facts.update({{"balancing_splits", 0}, {"hanging_nodes", 0}, {"cells", forest.leaf_count()}});
+  if (marks.cells.empty()) return std::nullopt;
+  int balancing = 0;
+  RefinedGrid refined;
+  refined.forest = refine_forest(forest, marks.cells, &balancing);
+  refined.mesh = forest_mesh(refined.forest);
+  facts.update({{"balancing_splits", balancing},
+                {"hanging_nodes", refined.mesh.constraints.hanging_nodes()},
+                {"cells", refined.forest.leaf_count()}});
+  return refined;
+}
+
+}  // namespace altfem

@@ -1,0 +1,45 @@
+#pragma once
+// Which cells a `refine` event marks (docs/scene-schema.md, "Events"), the same for every
+// method: by the largest absolute principal stress (Kaufmann et al. 2009 §9.3, Martin et al.
+// 2008 §8) or by the traction-jump error indicator, above the threshold, below max_level, in
+// the region.
+#include <Eigen/Core>
+#include <nlohmann/json.hpp>
+#include <span>
+#include <vector>
+
+#include "shared/scene/scene.hpp"
+
+namespace altfem {
+
+/// One face two cells share, for the error indicator.
+struct SharedFace {
+  int first = 0, second = 0;  ///< cells
+  double area = 0;
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  ///< unit, either orientation
+};
+
+/// Per cell, the area-weighted RMS jump of the traction across its interior faces,
+/// √(Σ_F |F| |(σ_K − σ_N) n_F|² / Σ_F |F|) [Pa], with σ the cells' mean stresses (one per
+/// cell): a Kelly-type error indicator (Kelly et al. 1983; deal.II's KellyErrorEstimator
+/// integrates the jump of the gradient on the faces, this takes each cell's mean) — the
+/// exact stress is continuous, so its jumps measure the discrete one's error. 0 for a cell
+/// without interior faces; boundary faces are left out (their traction's residual needs
+/// the loads).
+Eigen::VectorXd traction_jump_indicator(int cell_count, std::span<const SharedFace> faces,
+                                        const std::vector<Eigen::Matrix3d>& stresses);
+
+struct RefineMarks {
+  std::vector<int> cells;                   ///< marked, ascending
+  std::vector<Eigen::Vector3d> directions;  ///< each marked cell's principal direction (1→2's normal)
+};
+
+/// The cells `refine` marks: stress (one per cell; with the criterion error_indicator, the
+/// indicator over `faces`) above the threshold, centroid (#cells × 3) in the region within
+/// `tolerance`, level (#cells, empty: all 0) below max_level. `facts` gets marked_cells,
+/// at_max_level, largest_stress (and largest_indicator).
+RefineMarks mark_cells_to_refine(const RefineSpec& refine, const std::vector<Eigen::Matrix3d>& stresses,
+                                 std::span<const SharedFace> faces, const Eigen::MatrixXd& centroids,
+                                 const std::vector<int>& levels, double tolerance, nlohmann::json& facts);
+
+}  // namespace altfem
