@@ -6,7 +6,7 @@
 // 1→8 in ≤ 1 s on 2 cores for dg and harmonic, ≤ 0.5 s for fem grids (Hex8 and Hex27 here:
 // the forest split and balanced, hanging nodes constrained, refine_hexahedral_grid).
 //
-//   bench_refine [--cells N] [--split 1to8|1to2] [--repetitions R] [--method NAME]
+//   bench_refine [--cells N] [--split 1to8|1to2] [--repetitions R] [--method NAME|"fem hex8"|"fem hex27"]
 //
 // (fem runs with 1to8 only: it does not halve hexahedra.)
 //
@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
               "integration", "transfer", "pattern", "event", "per 1000 (s)");
   for (const std::string label : {"dg", "harmonic", "fem hex8", "fem hex27"}) {
     const std::string name = label.substr(0, label.find(' '));
-    if ((!only.empty() && name != only) || (name == "fem" && split != "1to8")) continue;
+    if ((!only.empty() && name != only && label != only) || (name == "fem" && split != "1to8")) continue;
     const Timings timings = measure(name == "fem" ? bar(label.substr(4)) : scene, geometry, name, repetitions);
     const double event = bench::median(timings.total);
     std::printf("%-9s %7lld %7lld %9lld | %9.4f %11.4f %9.4f %9.4f %9.4f | %12.4f\n", label.c_str(),

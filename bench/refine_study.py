@@ -5,7 +5,8 @@ edges are stress singularities) solved on uniform grids and by `refine` cycles f
 coarse grid, every run measured by `altfem compare` against one fine dg reference. Prints a
 convergence table per method (error, DOFs, seconds, the rate against DOFs), then for each
 method the cheapest adaptive run that reaches the finest uniform run's error, with its DOFs
-and time as fractions of that run's.
+and time as fractions of that run's, and plots error against DOFs and against seconds,
+adaptive and uniform per method (refine_study.png in the output folder).
 
     /usr/bin/python3 bench/refine_study.py [--altfem build/bin/altfem] [--out out/refine_study]
         [--criterion error_indicator] [--threshold 5e3] [--cycles 3]
@@ -18,8 +19,10 @@ import pathlib
 import subprocess
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
-UNIFORM = {"dg": [[9, 2, 2], [18, 4, 4]], "harmonic": [[9, 2, 2], [18, 4, 4], [36, 8, 8]]}
-RESOLUTION_KEY = {"dg": "discretization/dg/resolution", "harmonic": "discretization/harmonic/convert/resolution"}
+UNIFORM = {"dg": [[9, 2, 2], [18, 4, 4]], "harmonic": [[9, 2, 2], [18, 4, 4], [36, 8, 8]],
+           "fem": [[9, 2, 2], [18, 4, 4]]}
+RESOLUTION_KEY = {"dg": "discretization/dg/resolution", "harmonic": "discretization/harmonic/convert/resolution",
+                  "fem": "discretization/fem/resolution"}
 REFERENCE = {"method": "dg", "set": {"discretization/dg/resolution": [36, 8, 8], "events": []}}
 
 
@@ -44,6 +47,29 @@ def table(title, rows):
             f"{-3 * math.log(error / previous[1]) / math.log(dofs / previous[0]):6.2f}"
         print(f"{row['label'][:44]:44} {dofs:8d} {error:10.3e} {float(row['total_s']):9.3f} {rate:>6}")
         previous = (dofs, error)
+
+
+def plot(series, path):
+    """Error against DOFs and against seconds, log-log, a uniform and an adaptive line per method."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for (method, kind), rows in series.items():
+        style = dict(marker="o" if kind == "uniform" else "s", linestyle="-" if kind == "uniform" else "--",
+                     color={"dg": "C0", "harmonic": "C1", "fem": "C2"}.get(method, "C3"), label=f"{method} {kind}")
+        errors = [float(r["relative_rms_error"]) for r in rows]
+        axes[0].loglog([int(r["dofs"]) for r in rows], errors, **style)
+        axes[1].loglog([float(r["total_s"]) for r in rows], errors, **style)
+    for axis, label in zip(axes, ["DOFs", "run time [s]"]):
+        axis.set_xlabel(label)
+        axis.set_ylabel("RMS surface error / RMS displacement")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=8)
+    figure.suptitle("refine_bar: adaptive against uniform refinement")
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    print(f"\nplot: {path}")
 
 
 def main():
@@ -73,9 +99,11 @@ def main():
     print(f"\nrefine_bar: uniform grids against {arguments.criterion} > {arguments.threshold:g} Pa, "
           f"{arguments.split}, 1-{arguments.cycles} cycles; error: RMS surface error / RMS displacement "
           "against dg k = 2 on 36x8x8")
+    series = {}
     for method in UNIFORM:
         by_dofs = lambda rows: sorted((r for r in rows if r["method"] == method), key=lambda r: int(r["dofs"]))
         uniform_series, adaptive_series = by_dofs(uniform_rows), by_dofs(adaptive_rows)
+        series[(method, "uniform")], series[(method, "adaptive")] = uniform_series, adaptive_series
         table(f"{method}, uniform", uniform_series)
         table(f"{method}, adaptive", adaptive_series)
         finest = uniform_series[-1]
@@ -88,6 +116,7 @@ def main():
         print(f"{method}: the finest uniform error {target:.3e} ({finest['dofs']} DOFs, {float(finest['total_s']):.3f} s) "
               f"reached by '{best['label']}' with {int(best['dofs']) / int(finest['dofs']):.2f} of the DOFs and "
               f"{float(best['total_s']) / float(finest['total_s']):.2f} of the time")
+    plot(series, out / "refine_study.png")
 
 
 if __name__ == "__main__":

@@ -68,12 +68,20 @@ public:
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_volume_mesh(mesh_);
     add_nodal_displacement(grid, constraints_.empty() ? displacement : constraints_.all_nodes(displacement));
+    // Each cell's refinement level, to colour a refined grid by in ParaView.
+    if (forest_)
+      grid.cell_data.emplace_back(
+          "level", Eigen::Map<const Eigen::VectorXi>(forest_->levels.data(), forest_->leaf_count()).cast<double>());
     return grid;
   }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return interpolate_at_nodes(free_nodes(), field);
   }
-  nlohmann::json facts() const override { return surface_.facts(); }
+  nlohmann::json facts() const override {
+    nlohmann::json facts = surface_.facts();
+    if (forest_) facts["hanging_nodes"] = constraints_.hanging_nodes();
+    return facts;
+  }
   std::shared_ptr<const MethodMesh> mesh() const override {
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{mesh_, std::nullopt, forest_, constraints_});
   }

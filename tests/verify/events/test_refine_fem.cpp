@@ -1,5 +1,6 @@
 // A refine event with fem on hexahedral grids (issue #34; hexahedral_forest.hpp), on the
 // 1 × 0.1 × 0.1 m cantilever of 10 cells, every Lagrange hexahedron:
+//   - The output and the facts show the refinement: each cell's level, the hanging nodes.
 //   - The patch test stays exact across hanging nodes: an affine field carried across is the
 //     refined method's own interpolation of it, its strain energy is the exact density ×
 //     volume, and its internal forces vanish at every free node off the boundary — the
@@ -10,6 +11,7 @@
 //   - A tetrahedral fem mesh and a 1→2 split are refused before the run, saying why.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -59,6 +61,15 @@ TEST_P(RefineFem, ThePatchTestStaysExactAcrossHangingNodes) {
   EXPECT_GT(record.facts["hanging_nodes"].get<int>(), 0);
   EXPECT_EQ(cell_count(simulation.method()), 5 + 5 * 8);
   EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+  EXPECT_EQ(simulation.method().facts()["hanging_nodes"], record.facts["hanging_nodes"]);
+
+  // The output colours cells by level: the 5 unsplit ones 0, the 40 children 1.
+  const UnstructuredGrid grid = simulation.method().volume_grid(simulation.state().displacement);
+  const auto level = std::find_if(grid.cell_data.begin(), grid.cell_data.end(),
+                                  [](const auto& data) { return data.first == "level"; });
+  ASSERT_NE(level, grid.cell_data.end());
+  EXPECT_EQ(level->second.sum(), 40);
+  EXPECT_EQ(level->second.maxCoeff(), 1);
 
   const Eigen::VectorXd expected = simulation.method().interpolate(affine);
   const Eigen::VectorXd& carried = simulation.state().displacement;
