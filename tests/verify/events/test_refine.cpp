@@ -9,8 +9,8 @@
 //     penalty to weigh, so the total energy does not jump, to round-off, and neither do
 //     the mass and momentum.
 //   - The error indicator (the traction's jump across faces) marks where the stress is
-//     discontinuous, whatever its size.
-//   - Marking follows the keys: a region splits only the cells whose centroid it holds, a
+//     discontinuous, whatever its size (dg, harmonic and fem on its Hex8 grid).
+//   - Marking follows the keys (dg, harmonic and fem): a region splits only the cells whose centroid it holds, a
 //     cell split max_level times is not split again (nothing is rebuilt), and a cell whose
 //     stress is below the threshold stays.
 //   - A static scene with `cycles` k is solved at its load steps, then k times more, each
@@ -112,7 +112,7 @@ TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
 }
 
 TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
-  for (const std::string name : {"dg", "harmonic"}) {
+  for (const std::string name : {"dg", "harmonic", "fem"}) {
     SCOPED_TRACE(name);
     const Scene scene = load_scene(scene_file);
     const SceneGeometry geometry = load_scene_geometry(scene);
@@ -147,7 +147,7 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
 // indicator is that jump. Just below it every cell is marked, just above none, though the
 // stress itself grows twentyfold along the bar.
 TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
-  for (const std::string name : {"dg", "harmonic"}) {
+  for (const std::string name : {"dg", "harmonic", "fem"}) {
     SCOPED_TRACE(name);
     const Scene scene = load_scene(scene_file);
     const SceneGeometry geometry = load_scene_geometry(scene);

@@ -128,7 +128,7 @@ INSTANTIATE_TEST_SUITE_P(LagrangeHexahedra, RefineFem, ::testing::Values("hex8",
 
 TEST(RefineFemRefusal, ATetrahedralMeshAndAHalvingSplitAreRefusedBeforeTheRun) {
   const std::vector<std::pair<std::vector<SceneOverride>, std::string>> cases{
-      {{}, "it refines hexahedral grids only"},
+      {{parse_scene_override("discretization/fem={\"element\": \"tet10\"}")}, "it refines hexahedral grids only"},
       {{fem_grid("hex8"), parse_scene_override("events/0/refine/split=\"1to2\"")}, "it splits 1to8 only"}};
   for (const auto& [overrides, why] : cases) {
     const Scene scene = load_scene(scene_file, overrides);
