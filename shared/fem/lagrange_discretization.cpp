@@ -27,7 +27,7 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   parts.materials = std::move(materials);
   const bool hanging = constraints && !constraints->empty();
   if (hanging) parts.elements = constrain_lagrange_elements(parts.elements, *constraints);
-  parts.dirichlet = nodal_dirichlet(hanging ? Eigen::MatrixXd(mesh.nodes.topRows(constraints->free_nodes)) : mesh.nodes,
+  parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
   return std::make_unique<TabulatedDiscretization>(std::move(parts));
 }

@@ -33,8 +33,8 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
   const PolyhedralMesh& cells = mesh.sliced.mesh;
   if (static_cast<int>(stresses.size()) != cells.cell_count())
     throw std::invalid_argument("refine_polyhedral_scene_mesh: one stress per cell");
-  const double tolerance =
-      1e-6 * (cells.nodes.colwise().maxCoeff() - cells.nodes.colwise().minCoeff()).norm();  // the regions' rule
+  const double tolerance = region_tolerance(
+      Eigen::AlignedBox3d(cells.nodes.colwise().minCoeff().transpose(), cells.nodes.colwise().maxCoeff().transpose()));
   std::vector<SharedFace> faces;
   if (refine.criterion == RefineCriterion::error_indicator)
     for (int face = 0; face < cells.face_count(); ++face)
@@ -90,11 +90,8 @@ std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh
                                                                 const Eigen::VectorXd& u, nlohmann::json& facts,
                                                                 const char* method) {
   const PolyhedralSceneMesh& handed = method_mesh_as<PolyhedralSceneMesh>(mesh, method);
-  const PolyhedralMesh& cells = handed.sliced.mesh;
-  std::vector<LameParameters> lame;
-  for (const int id : materials.ids_of(cells.cell_centroids)) lame.push_back(materials.pointers()[id]->lame());
   std::optional<PolyhedralSceneMesh> refined =
-      refine_polyhedral_scene_mesh(handed, refine.refine, mean_cell_stresses(elements, lame, u), facts);
+      refine_polyhedral_scene_mesh(handed, refine.refine, mean_cell_stresses(elements, materials.pointers(), u), facts);
   if (!refined) return nullptr;
   return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(*refined));
 }

@@ -35,7 +35,7 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
 
 /// A polyhedral method's MethodInstance::refine_mesh: its handed mesh refined as above,
 /// by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one element
-/// per cell) with the material at each cell's centroid; null when no cell is marked.
+/// per cell, each with its material id into materials.pointers()); null when no cell is marked.
 std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& refine,
                                                                 const TabulatedElements& elements,
                                                                 const SceneMaterials& materials,

@@ -6,9 +6,10 @@
 namespace altfem {
 
 std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& elements,
-                                                const std::vector<LameParameters>& lame, const Eigen::VectorXd& u) {
-  if (static_cast<int>(lame.size()) != elements.size())
-    throw std::invalid_argument("mean_cell_stresses: one Lamé pair per element");
+                                                const std::vector<const Material*>& materials,
+                                                const Eigen::VectorXd& u) {
+  std::vector<LameParameters> lame;
+  for (const Material* material : materials) lame.push_back(material->lame());
   std::vector<Eigen::Matrix3d> stresses(static_cast<std::size_t>(elements.size()));
 #pragma omp parallel for schedule(dynamic, 16)
   for (int element = 0; element < elements.size(); ++element) {
@@ -23,8 +24,8 @@ std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& element
       volume += view.weights[q];
     }
     const Eigen::Matrix3d strain = 0.5 * (gradient + gradient.transpose()) / volume;
-    stresses[element] =
-        lame[element].lambda * strain.trace() * Eigen::Matrix3d::Identity() + 2 * lame[element].mu * strain;
+    const LameParameters& own = lame.at(view.material);
+    stresses[element] = own.lambda * strain.trace() * Eigen::Matrix3d::Identity() + 2 * own.mu * strain;
   }
   return stresses;
 }

@@ -6,15 +6,18 @@
 
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/material/lame_parameters.hpp"
+#include "shared/material/material.hpp"
 
 namespace altfem {
 
 /// Per element of `elements`, the small-strain stress σ = λ tr(ε) I + 2μ ε of its mean
-/// strain ε = (1/V) ∫ sym(∇u) dV (the rule's weights), with the element's Lamé parameters
-/// `lame` (#elements) and u the coefficients (#dofs; basis function a carries 3a..3a+2).
-/// Exact for any field whose gradient the rule integrates.
+/// strain ε = (1/V) ∫ sym(∇u) dV (the rule's weights), with the Lamé parameters of the
+/// element's own material (materials[element.material], as the tabulation assigned them)
+/// and u the coefficients (#dofs; basis function a carries 3a..3a+2). Exact for any field
+/// whose gradient the rule integrates.
 std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& elements,
-                                                const std::vector<LameParameters>& lame, const Eigen::VectorXd& u);
+                                                const std::vector<const Material*>& materials,
+                                                const Eigen::VectorXd& u);
 
 /// The largest absolute eigenvalue of the symmetric `stress` and its unit eigenvector.
 struct PrincipalStress {

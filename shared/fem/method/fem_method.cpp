@@ -42,20 +42,21 @@ public:
       if (fem.mesh == FemMeshKind::grid && element_shape(fem.element) == ElementShape::hexahedron)
         forest_ = grid_forest(geometry.bounds, fem.resolution, fem.element);
     }
-    const NodeConstraints* constraints = constraints_.empty() ? nullptr : &constraints_;
+    if (constraints_.empty()) constraints_.free_nodes = static_cast<int>(mesh_.nodes.rows());  // none hangs
     const auto start = std::chrono::steady_clock::now();
     discretization_ =
         make_lagrange_discretization(mesh_, materials_.pointers(), materials_.ids_of(corner_centroids(mesh_)),
-                                     scene.dirichlet, fem.quadrature_order, scene.file.string(), constraints);
+                                     scene.dirichlet, fem.quadrature_order, scene.file.string(), &constraints_);
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // The surface every method deforms (SceneGeometry::common_surface), else the mesh's
     // boundary. Surface loads act on the mesh's own boundary lifted to the cells' curved
     // faces: the domain fem solves on.
-    const BoundarySurface boundary = constraints ? forest_boundary_surface(*forest_, mesh_) : boundary_surface(mesh_);
+    const BoundarySurface boundary =
+        constraints_.empty() ? boundary_surface(mesh_) : forest_boundary_surface(*forest_, mesh_);
     surface_.load_surface = boundary.surface;
     surface_.lift = lagrange_surface_lift(mesh_, boundary);
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
-    surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh_, constraints);
+    surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh_, &constraints_);
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, surface_.surface.vertices);
   }
 
@@ -67,7 +68,7 @@ public:
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_volume_mesh(mesh_);
-    add_nodal_displacement(grid, constraints_.empty() ? displacement : constraints_.all_nodes(displacement));
+    add_nodal_displacement(grid, constraints_.all_nodes(displacement));
     // Each cell's refinement level, to colour a refined grid by in ParaView.
     if (forest_)
       grid.cell_data.emplace_back(
@@ -102,10 +103,9 @@ public:
   /// (refine_hexahedral_grid).
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& displacement,
                                                 nlohmann::json& facts) const override {
-    std::vector<LameParameters> lame;
-    for (const int id : materials_.ids_of(corner_centroids(mesh_))) lame.push_back(materials_.pointers()[id]->lame());
     std::optional<RefinedGrid> refined = refine_hexahedral_grid(
-        *forest_, refine.refine, mean_cell_stresses(discretization_->elements(), lame, displacement), facts);
+        *forest_, refine.refine, mean_cell_stresses(discretization_->elements(), materials_.pointers(), displacement),
+        facts);
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{std::move(refined->mesh.mesh), std::nullopt,
                                                      std::move(refined->forest), std::move(refined->mesh.constraints)});
@@ -131,14 +131,12 @@ public:
 
 private:
   // The nodes that carry the basis (#free nodes × 3): all but the hanging ones.
-  Eigen::MatrixXd free_nodes() const {
-    return constraints_.empty() ? mesh_.nodes : Eigen::MatrixXd(mesh_.nodes.topRows(constraints_.free_nodes));
-  }
+  Eigen::MatrixXd free_nodes() const { return mesh_.nodes.topRows(constraints_.free_nodes); }
 
   SceneMaterials materials_;
   VolumeMesh mesh_;
   std::optional<HexahedralForest> forest_;  ///< a hexahedral grid, refined or not
-  NodeConstraints constraints_;             ///< its hanging nodes
+  NodeConstraints constraints_;             ///< its hanging nodes (free_nodes: every node when none hangs)
   bool scene_cuts_ = false, scene_refines_ = false;
   std::unique_ptr<TabulatedDiscretization> discretization_;
   double quadrature_seconds_ = 0;
