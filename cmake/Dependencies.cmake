@@ -31,6 +31,14 @@ altfem_require(CLP_FOUND coinor-libclp-dev "COIN-OR Clp")
 pkg_check_modules(MUPARSER QUIET IMPORTED_TARGET muparser)
 altfem_require(MUPARSER_FOUND libmuparser-dev "muParser")
 
+# PETSc (solver.linear "petsc"): Debian's build has hypre and MUMPS, over Open MPI.
+if(ALTFEM_PETSC)
+  pkg_check_modules(PETSC QUIET PETSc)
+  altfem_require(PETSC_FOUND libpetsc-real3.18-dev "PETSc")
+  find_package(MPI QUIET COMPONENTS CXX)
+  altfem_require(MPI_CXX_FOUND libopenmpi-dev "MPI")
+endif()
+
 # SuiteSparse 5 on Debian ships neither a CMake config nor a .pc file.
 find_path(CHOLMOD_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
 find_library(CHOLMOD_LIBRARY cholmod)

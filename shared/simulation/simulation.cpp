@@ -85,13 +85,17 @@ IntegratorOptions integrator_options(const Scene& scene) {
   return options;
 }
 
-LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization) {
+LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstance& method) {
   LinearSolverOptions options;
   options.kind = scene.solver.linear;
   options.preconditioner = scene.solver.preconditioner;
-  options.custom_preconditioner = discretization.preconditioner_factory();
+  options.custom_preconditioner = method.discretization().preconditioner_factory();
   options.tolerance = scene.solver.linear_tolerance;
   options.max_iterations = scene.solver.linear_max_iterations;
+  if (options.kind == LinearSolverKind::petsc) {
+    options.petsc_options = scene.solver.petsc_options;
+    if (scene.solver.near_null_space) options.near_null_space = rigid_body_modes(method);
+  }
   return options;
 }
 
@@ -101,7 +105,7 @@ Simulation::Simulation(const Scene& scene, const SceneGeometry& geometry, std::s
   method_ = factory(scene, geometry);
   quadrature_seconds_ = method_->quadrature_seconds();
   scene_loads_ = scene_loads(scene, geometry, *method_, method_name_);
-  layer_discretization(make_linear_solver(linear_solver_options(scene, method_->discretization())));
+  layer_discretization(make_linear_solver(linear_solver_options(scene, *method_)));
   integrator_ = std::make_unique<TimeIntegrator>(*timed_, *linear_solver_, integrator_options(scene));
   check_static_supports(scene, *timed_);
   check_events();
@@ -286,7 +290,7 @@ void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   method_ = std::move(rebuilt);
   measure_basis_.reset();
   scene_loads_ = scene_loads(scene_, geometry_, *method_, method_name_);
-  std::unique_ptr<LinearSolver> solver = make_linear_solver(linear_solver_options(scene_, method_->discretization()));
+  std::unique_ptr<LinearSolver> solver = make_linear_solver(linear_solver_options(scene_, *method_));
   layer_discretization(std::move(solver));
   if (explicit_steps_) critical_time_step_ = estimate_critical_time_step(*timed_);
   state_ = std::move(transferred);

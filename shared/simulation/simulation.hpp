@@ -91,8 +91,9 @@ private:
 };
 
 /// The linear solver the scene's `solver` block chooses (kind, its preconditioner — the
-/// discretization's own when it has one — tolerance and iteration limit).
-LinearSolverOptions linear_solver_options(const Scene& scene, const Discretization& discretization);
+/// method's own when it has one — tolerance and iteration limit; for `petsc` its options
+/// and the method's rigid-body modes).
+LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstance& method);
 
 /// The integrator the scene's `time` and `solver` blocks choose.
 IntegratorOptions integrator_options(const Scene& scene);

@@ -4,6 +4,7 @@
 #include "shared/solve/cholmod_solver.hpp"
 #include "shared/solve/iterative_solver.hpp"
 #include "shared/solve/lu_solver.hpp"
+#include "shared/solve/petsc_solver.hpp"
 
 #include <chrono>
 #include <cstdint>
@@ -126,6 +127,7 @@ std::unique_ptr<LinearSolver> make_linear_solver(const LinearSolverOptions& opti
     case LinearSolverKind::cholmod: return make_cholmod_solver(CholmodFactorisation::supernodal_llt);
     case LinearSolverKind::ldlt: return make_cholmod_solver(CholmodFactorisation::simplicial_ldlt);
     case LinearSolverKind::lu: return make_lu_solver();
+    case LinearSolverKind::petsc: return make_petsc_solver(options);
     case LinearSolverKind::pcg:
     case LinearSolverKind::minres:
     case LinearSolverKind::conjugate_residual: {

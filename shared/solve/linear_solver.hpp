@@ -2,7 +2,7 @@
 // Sparse linear solvers behind one interface. Direct: CHOLMOD supernodal LLᵀ
 // (the default, SPD), CHOLMOD simplicial LDLᵀ (quasi-definite indefinite) and
 // UMFPACK LU (general). Iterative: PCG, MINRES and conjugate residual with a
-// run-time preconditioner. Symbolic analysis happens once per sparsity pattern
+// run-time preconditioner, and PETSc's Krylov solvers and preconditioners (petsc_solver.hpp). Symbolic analysis happens once per sparsity pattern
 // and is reused across Newton iterations and time steps; the statistics feed
 // summary.json (timings_s.analysis, timings_s.factorisation, counts.*).
 #include "shared/solve/preconditioner.hpp"
@@ -40,17 +40,18 @@ struct LinearSolverStatistics {
   int most_blas_threads = 0;
 };
 
-enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual };
+enum class LinearSolverKind { cholmod, ldlt, lu, pcg, minres, conjugate_residual, petsc };
 
 /// Scene names of the kinds, indexed by the enum value.
-inline constexpr std::array<std::string_view, 6> linear_solver_kind_names{"cholmod", "ldlt",   "lu",
-                                                                          "pcg",     "minres", "conjugate_residual"};
+inline constexpr std::array<std::string_view, 7> linear_solver_kind_names{
+    "cholmod", "ldlt", "lu", "pcg", "minres", "conjugate_residual", "petsc"};
 
 std::string_view linear_solver_kind_name(LinearSolverKind kind);
-/// A Krylov method (no factor, a preconditioner), not a direct factorisation.
+/// A Krylov method (no factor, a preconditioner), not a direct factorisation; `petsc`
+/// counts as one, its default being CG + GAMG.
 constexpr bool is_iterative(LinearSolverKind kind) {
   return kind == LinearSolverKind::pcg || kind == LinearSolverKind::minres ||
-         kind == LinearSolverKind::conjugate_residual;
+         kind == LinearSolverKind::conjugate_residual || kind == LinearSolverKind::petsc;
 }
 /// The kind called `name` (one of linear_solver_kind_names), or nothing.
 std::optional<LinearSolverKind> linear_solver_kind_from_name(std::string_view name);
@@ -64,6 +65,13 @@ struct LinearSolverOptions {
   /// Iterative solvers: stop when ‖b − A x‖₂ ≤ tolerance · ‖b‖₂.
   double tolerance = 1e-10;
   int max_iterations = 10000;
+  /// `petsc` only: PETSc options (e.g. "-ksp_type cg -pc_type gamg"), applied after
+  /// `tolerance` and `max_iterations`, so they may override both.
+  std::string petsc_options;
+  /// `petsc` only: a basis of the near-null space of the operator without its Dirichlet
+  /// conditions (#dofs × 6: the rigid-body modes, DOF 3b + i being component i of basis
+  /// function b), which smoothed-aggregation AMG builds its coarse spaces from; empty for none.
+  Eigen::MatrixXd near_null_space;
 };
 
 /// Solves A x = b for a sparse square A (#dofs × #dofs, column-major; symmetric

@@ -18,12 +18,12 @@ namespace altfem::test {
 namespace {
 
 // Newton to `tolerance` for static equilibrium at t = 1 s, with the scene's gravity and
-// linear solver when a scene is given (else none and CHOLMOD).
+// linear solver when a scene and its method are given (else none and CHOLMOD).
 Eigen::VectorXd solve(const Discretization& discretization, std::vector<TimeDependentLoad> loads, double tolerance,
-                      const Scene* scene) {
+                      const Scene* scene, const MethodInstance* method) {
   double assembly_seconds = 0;
   const TimedDiscretization loaded(discretization, std::move(loads), assembly_seconds);
-  const auto linear_solver = make_linear_solver(scene ? linear_solver_options(*scene, loaded) : LinearSolverOptions{});
+  const auto linear_solver = make_linear_solver(scene ? linear_solver_options(*scene, *method) : LinearSolverOptions{});
   IntegratorOptions options;
   options.kind = IntegrationScheme::static_equilibrium;
   options.tolerance = tolerance;
@@ -52,7 +52,7 @@ StaticRun static_run(Scene scene, const MethodFactory& factory, double tolerance
   std::vector<TimeDependentLoad> loads;
   if (auto tractions = surface_traction_load(*run.scene, run.geometry->bounds, *run.method))
     loads.push_back(std::move(tractions));
-  run.displacement = solve(run.method->discretization(), std::move(loads), tolerance, run.scene.get());
+  run.displacement = solve(run.method->discretization(), std::move(loads), tolerance, run.scene.get(), run.method.get());
   return run;
 }
 
@@ -69,7 +69,7 @@ StaticRun static_run_text(const std::string& scene_text, const std::string& meth
 
 Eigen::VectorXd solve_static(const Discretization& discretization, std::vector<TimeDependentLoad> loads,
                              double tolerance) {
-  return solve(discretization, std::move(loads), tolerance, nullptr);
+  return solve(discretization, std::move(loads), tolerance, nullptr, nullptr);
 }
 
 RegionSelector half_space(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) {

@@ -219,8 +219,9 @@ TEST(DgMethod, BlockJacobiPcgSolvesTheSystem) {
                             R"({ "degree": 2, "resolution": [4, 2, 2] })"));
   const Discretization& discretization = built.method->discretization();
   const Eigen::VectorXd load = discretization.external_force(1.0) + discretization.body_force({0, 0, -9.81});
-  LinearSolverOptions options{.kind = LinearSolverKind::pcg,
-                              .custom_preconditioner = discretization.preconditioner_factory()};
+  LinearSolverOptions options;
+  options.kind = LinearSolverKind::pcg;
+  options.custom_preconditioner = discretization.preconditioner_factory();
   ASSERT_TRUE(options.custom_preconditioner);
   const auto solver = make_linear_solver(options);
   solver->factorize(discretization.hessian_pattern());
