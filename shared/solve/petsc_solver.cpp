@@ -84,14 +84,20 @@ public:
     PC preconditioner;
     check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
     check(PCSetType(preconditioner, PCGAMG), "PCSetType");
-    // altfem's criterion for every iterative solver: ‖b − A x‖ ≤ tolerance ‖b‖.
-    check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
     check(KSPSetTolerances(ksp_, options.tolerance, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
     const std::string inserted = prefixed_options(options.petsc_options, prefix_, option_names_);
     const PetscErrorCode inserting = PetscOptionsInsertString(nullptr, inserted.c_str());
     const PetscErrorCode reading = inserting ? inserting : KSPSetFromOptions(ksp_);
     if (reading)
       throw InputError("solver.petsc_options: \"" + options.petsc_options + "\": " + petsc_error_text(reading));
+    // CG stops by altfem's criterion for every iterative solver, ‖b − A x‖ ≤ tolerance ‖b‖,
+    // unless the options say otherwise; a method that cannot measure that norm with its
+    // preconditioner's side (GMRES preconditioned on the left) keeps PETSc's default.
+    KSPType method;
+    check(KSPGetType(ksp_, &method), "KSPGetType");
+    const bool norm_chosen = options.petsc_options.find("-ksp_norm_type") != std::string::npos;
+    if (!norm_chosen && std::string(method) == KSPCG)
+      check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
   }
 
   ~PetscSolver() override {

@@ -14,6 +14,8 @@
 //     bit-identical and the energy unchanged.
 #include <gtest/gtest.h>
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -26,6 +28,7 @@
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/field_errors.hpp"
+#include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "tests/unit/conformance/two_hex_monomial_method.hpp"
@@ -118,6 +121,25 @@ TEST_P(Conformance, RigidRotationGivesZeroForce) {
   const Eigen::VectorXd rotation = built.method->interpolate(affine(R - Eigen::Matrix3d::Identity(), {0.1, 0, 0}));
   const double scale = gradient(built, built.method->interpolate(affine(small_strain()))).cwiseAbs().maxCoeff();
   EXPECT_LT(gradient(built, rotation).cwiseAbs().maxCoeff(), 1e-10 * scale);
+}
+
+// What the `petsc` solver hands its algebraic multigrid as the near-null space: six
+// independent vectors that the stiffness of the unconstrained body (at rest, where its
+// kernel is the infinitesimal rigid motions) maps to zero.
+TEST_P(Conformance, RigidBodyModesSpanTheKernelOfTheStiffness) {
+  const Built built = build("free_box.json");
+  const Discretization& discretization = built.method->discretization();
+  const Eigen::MatrixXd modes = rigid_body_modes(*built.method);
+  ASSERT_EQ(modes.rows(), discretization.dof_count());
+  ASSERT_EQ(modes.cols(), 6);
+  EXPECT_EQ(Eigen::FullPivHouseholderQR<Eigen::MatrixXd>(modes).rank(), 6);
+  Eigen::SparseMatrix<double> stiffness = discretization.hessian_pattern();
+  discretization.hessian(Eigen::VectorXd::Zero(discretization.dof_count()), stiffness, false);
+  const Eigen::VectorXd strain = built.method->interpolate(affine(small_strain()));
+  const double scale = (stiffness * strain).norm() / strain.norm();
+  ASSERT_GT(scale, 0);
+  for (int mode = 0; mode < 6; ++mode)
+    EXPECT_LT((stiffness * modes.col(mode)).norm(), 1e-10 * scale * modes.col(mode).norm()) << "mode " << mode;
 }
 
 TEST_P(Conformance, PatchTestGivesTheExactConstantStress) {
