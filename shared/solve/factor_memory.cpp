@@ -23,10 +23,11 @@ double available_memory_bytes() {
 
 void require_factor_fits(double factor_entries, double factor_bytes, double available_bytes) {
   if (available_bytes <= 0 || factor_bytes <= available_bytes) return;
-  char message[320];
+  char message[360];
   std::snprintf(message, sizeof(message),
                 "the Cholesky factor needs %.1f GB (%.3g entries), more than the %.1f GB of memory available: "
-                "set solver.linear to \"pcg\" (an iterative solver stores no factor) or use a coarser "
+                "set solver.linear to \"petsc\" (CG + algebraic multigrid) or \"pcg\" (iterative solvers store no "
+                "factor) or use a coarser "
                 "discretization",
                 factor_bytes / 1e9, factor_entries, available_bytes / 1e9);
   throw NumericalError(message);

@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""PETSc's preconditioners against altfem's own and CHOLMOD (issue #37, step 1): CG
+iterations to a relative residual of 1e-8 and seconds per method and size, for GAMG with
+the rigid-body modes as its near-null space (solver.near_null_space, the default), GAMG
+without them, hypre's BoomerAMG with nodal coarsening, altfem's own PCG (the method's
+preconditioner, or incomplete Cholesky for fem), and CHOLMOD. Each row is one `altfem run`
+of a static scene, read back from its summary.json: set-up is the factorisation phase
+(the preconditioner's set-up for the iterative solvers), solve the solve phase. Prints a
+markdown table; `--largest` adds the biggest grids (minutes).
+
+    /usr/bin/python3 bench/petsc_study.py [--altfem build/bin/altfem] [--out out/petsc_study] [--largest]
+"""
+import argparse
+import json
+import pathlib
+import subprocess
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+CANTILEVER = ROOT / "scenes/cantilever.json"
+HALF_BALL = ROOT / "scenes/manufactured_half_ball.json"
+
+SOLVERS = {
+    "CHOLMOD": ["solver/linear=cholmod"],
+    "GAMG + rigid modes": ["solver/linear=petsc"],
+    "GAMG, translations only": ["solver/linear=petsc", "solver/near_null_space=false"],
+    "BoomerAMG (nodal)": ["solver/linear=petsc",
+                          "solver/petsc_options=-ksp_type cg -pc_type hypre -pc_hypre_type boomeramg "
+                          "-pc_hypre_boomeramg_nodal_coarsen 6"],
+    "altfem PCG": ["solver/linear=pcg"],
+}
+# altfem's own preconditioner per method: fem has none of its own (incomplete Cholesky is
+# its best general one); fcm, dg and harmonic bring theirs (Additive Schwarz, block Jacobi).
+OWN_PRECONDITIONER = {"fem": ["solver/preconditioner=incomplete_cholesky"]}
+
+
+def problems(largest):
+    """(label, method, scene, settings) per problem, coarse to fine."""
+    grids = [[20, 2, 2], [40, 4, 4], [80, 8, 8]] + ([[160, 16, 16]] if largest else [])
+    rows = []
+    for element in ["hex8", "hex20", "tet10"]:
+        for grid in grids[:3] if element == "hex8" else grids[:2 + largest]:
+            rows.append((f"fem {element} {grid}", "fem", CANTILEVER,
+                         [f"discretization/fem/element={element}", f"discretization/fem/resolution={json.dumps(grid)}"]))
+    for resolution in [[8, 8, 4], [16, 16, 8]] + ([[32, 32, 16]] if largest else []):
+        rows.append((f"fcm hex20 half-ball {resolution}", "fcm", HALF_BALL,
+                     [f"discretization/fcm/resolution={json.dumps(resolution)}"]))
+    for degree in [1, 2]:
+        for grid in [[20, 2, 2], [40, 4, 4]]:
+            rows.append((f"dg k={degree} {grid}", "dg", CANTILEVER,
+                         [f"discretization/dg/degree={degree}", f"discretization/dg/resolution={json.dumps(grid)}"]))
+    for grid in [[20, 2, 2], [40, 4, 4]] + ([[80, 8, 8]] if largest else []):
+        rows.append((f"harmonic {grid}", "harmonic", CANTILEVER,
+                     [f"discretization/harmonic/convert/resolution={json.dumps(grid)}"]))
+    return rows
+
+
+def run(altfem, scene, method, settings, out):
+    command = [str(altfem), "run", str(scene), "--method", method, "--out", str(out),
+               "--set", "solver/linear_tolerance=1e-8", "--set", "output/volume=false"]
+    for setting in settings:
+        command += ["--set", setting]
+    finished = subprocess.run(command, capture_output=True, text=True)
+    if finished.returncode != 0:
+        return None, finished.stderr.strip().splitlines()[-1]
+    return json.loads((out / "summary.json").read_text()), ""
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--altfem", default=ROOT / "build/bin/altfem")
+    parser.add_argument("--out", default=ROOT / "out/petsc_study", type=pathlib.Path)
+    parser.add_argument("--largest", action="store_true")
+    arguments = parser.parse_args()
+
+    print("| problem | DOFs | solver | CG iterations | set-up s | solve s |")
+    print("|---|---:|---|---:|---:|---:|")
+    for index, (label, method, scene, settings) in enumerate(problems(arguments.largest)):
+        for solver, solver_settings in SOLVERS.items():
+            extra = OWN_PRECONDITIONER.get(method, []) if solver == "altfem PCG" else []
+            out = arguments.out / f"{index}-{solver.split()[0].strip(',')}-{len(solver_settings)}"
+            summary, error = run(arguments.altfem, scene, method, settings + solver_settings + extra, out)
+            if summary is None:
+                print(f"| {label} | | {solver} | failed: {error} | | |", flush=True)
+                continue
+            timings = summary["timings_s"]
+            iterations = summary["linear_iterations"] if solver != "CHOLMOD" else "direct"
+            print(f"| {label} | {summary['dofs']:,} | {solver} | {iterations} | "
+                  f"{timings['analysis'] + timings['factorisation']:.3f} | {timings['solve']:.3f} |", flush=True)
+
+
+if __name__ == "__main__":
+    main()
