@@ -13,6 +13,7 @@
 #include "shared/solve/blas_core_type.hpp"
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/blas_thread_choice.hpp"
+#include "shared/solve/petsc_solver.hpp"
 
 namespace altfem::cli {
 
@@ -33,6 +34,8 @@ int info_command() {
   cholmod_version(cholmod);
   std::printf("SuiteSparse: %d.%d.%d (CHOLMOD %d.%d.%d)\n", SUITESPARSE_MAIN_VERSION, SUITESPARSE_SUB_VERSION,
               SUITESPARSE_SUBSUB_VERSION, cholmod[0], cholmod[1], cholmod[2]);
+  std::printf("PETSc: %s\n", petsc_available() ? (petsc_version() + " (solver.linear \"petsc\")").c_str()
+                                                : "not in this build (-DALTFEM_PETSC=OFF)");
   const BlasInfo blas = loaded_blas();
   std::printf("BLAS: %s (%s), %d thread%s\n", blas.implementation.c_str(), blas.library.c_str(), blas.threads,
               blas.threads == 1 ? "" : "s");

@@ -250,6 +250,19 @@ private:
 
 bool petsc_available() { return true; }
 
+std::string petsc_version() {
+  std::string version = std::to_string(PETSC_VERSION_MAJOR) + "." + std::to_string(PETSC_VERSION_MINOR) + "." +
+                        std::to_string(PETSC_VERSION_SUBMINOR);
+  std::string packages;
+#ifdef PETSC_HAVE_HYPRE
+  packages += "hypre";
+#endif
+#ifdef PETSC_HAVE_MUMPS
+  packages += packages.empty() ? "MUMPS" : " and MUMPS";
+#endif
+  return packages.empty() ? version : version + ", with " + packages;
+}
+
 std::unique_ptr<LinearSolver> make_petsc_solver(const LinearSolverOptions& options) {
   return std::make_unique<PetscSolver>(options);
 }
@@ -261,6 +274,8 @@ std::unique_ptr<LinearSolver> make_petsc_solver(const LinearSolverOptions& optio
 namespace altfem {
 
 bool petsc_available() { return false; }
+
+std::string petsc_version() { return {}; }
 
 std::unique_ptr<LinearSolver> make_petsc_solver(const LinearSolverOptions&) {
   throw InputError("solver.linear: \"petsc\" needs a build with PETSc (CMake -DALTFEM_PETSC=ON, Debian package "

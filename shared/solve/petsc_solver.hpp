@@ -12,6 +12,8 @@ namespace altfem {
 
 /// Whether this build has PETSc (CMake option ALTFEM_PETSC).
 bool petsc_available();
+/// "3.18.5, with hypre and MUMPS": the PETSc this build has; empty without PETSc.
+std::string petsc_version();
 
 /// The PETSc solver `options` describe (options.petsc_options, near_null_space,
 /// tolerance, max_iterations). The matrix is copied into a PETSc AIJ matrix of block
