@@ -88,6 +88,39 @@ TEST(Run, NewtonFailureExitsThreeNamingStepAndIteration) {
   EXPECT_EQ(summary["status"].get<std::string>().rfind("error: step 1", 0), 0u) << summary["status"];
 }
 
+// PETSc reads solver.petsc_options when the run builds its solver, before anything is
+// written: an unknown type is bad input; a solve that runs out of iterations fails as
+// any numerical failure does, with PETSc's reason.
+#ifndef ALTFEM_HAVE_PETSC
+#define SKIP_WITHOUT_PETSC() GTEST_SKIP() << "built without PETSc (-DALTFEM_PETSC=OFF)"
+#else
+#define SKIP_WITHOUT_PETSC() (void)0
+#endif
+
+TEST(Run, PetscOptionsWithAnUnknownTypeAreOneLineOfBadInputAndNoOutput) {
+  SKIP_WITHOUT_PETSC();
+  const auto out = fresh_directory("petsc-bad-options") / "run";
+  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--set",
+                                  "solver/linear=petsc", "--set", "solver/petsc_options=-pc_type no_such_type", "--out",
+                                  out.string()});
+  EXPECT_EQ(result.exit_code, 2) << result.err;
+  const auto lines = lines_of(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("solver.petsc_options"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[0].find("no_such_type"), std::string::npos) << lines[0];
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST(Run, PetscOutOfIterationsExitsThreeWithPetscsReason) {
+  SKIP_WITHOUT_PETSC();
+  const auto out = fresh_directory("petsc-too-few-iterations") / "run";
+  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--set",
+                                  "solver/linear=petsc", "--set", "solver/linear_max_iterations=2", "--set",
+                                  "solver/cutbacks=0", "--out", out.string()});
+  EXPECT_EQ(result.exit_code, 3) << result.err;
+  EXPECT_NE(result.err.find("DIVERGED_ITS after 2 iterations"), std::string::npos) << result.err;
+}
+
 TEST(Check, JsonOutputIsTheResolvedSceneAndGeometryFacts) {
   const auto result = run_altfem({"check", source_path("scenes/bunny.json").string(), "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
