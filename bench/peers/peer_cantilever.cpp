@@ -103,7 +103,7 @@ int main(int argc, char** argv) {
   constraints.close();
   DynamicSparsityPattern pattern(dof_handler.n_dofs());
   DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
-  SparsityPattern sparsity;  // only the direct path uses it, but building it is part of either set-up
+  SparsityPattern sparsity;  // deal.II's own matrix format, for UMFPACK; Trilinos takes the dynamic pattern
   if (solver == "direct") sparsity.copy_from(pattern);
   const double setup_seconds = setup_timer.seconds();
 

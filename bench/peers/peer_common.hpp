@@ -16,11 +16,11 @@
 #include <deal.II/lac/vector.h>
 
 #include <Teuchos_ParameterList.hpp>
+#include <algorithm>
 #include <array>
 #include <chrono>
-#include <cstdlib>
-#include <iostream>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>

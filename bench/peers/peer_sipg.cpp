@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
   dof_handler.distribute_dofs(fe);
   DynamicSparsityPattern pattern(dof_handler.n_dofs());
   DoFTools::make_flux_sparsity_pattern(dof_handler, pattern);
-  SparsityPattern sparsity;
+  SparsityPattern sparsity;  // deal.II's own matrix format, for UMFPACK; Trilinos takes the dynamic pattern
   if (solver == "direct") sparsity.copy_from(pattern);
   const double setup_seconds = setup_timer.seconds();
 
