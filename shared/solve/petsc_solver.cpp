@@ -113,8 +113,14 @@ public:
 protected:
   // PETSc's AIJ is compressed rows, Eigen's matrix compressed columns: the rows of A are
   // the columns of Aᵀ, so the pattern is transposed once here and each later
-  // factorisation gathers its values through csr_from_csc_.
+  // factorisation gathers its values through csr_from_csc_. PETSc works on these arrays
+  // themselves (MatCreateSeqAIJWithArrays), without a second copy of the matrix.
   void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
+    // The KSP may still hold the old matrix, which reads the arrays rebuilt below; it is
+    // replaced before anything reads it again (factorize_values).
+    MatDestroy(&matrix_);
+    VecDestroy(&rhs_);
+    VecDestroy(&solution_);
     const auto size = static_cast<PetscInt>(matrix.rows());
     row_starts_.assign(size + 1, 0);
     for (Eigen::Index column = 0; column < matrix.outerSize(); ++column)
@@ -131,16 +137,12 @@ protected:
         csr_from_csc_[position] = static_cast<int>(&entry.value() - matrix.valuePtr());
       }
 
-    MatDestroy(&matrix_);
-    VecDestroy(&rhs_);
-    VecDestroy(&solution_);
-    check(MatCreate(PETSC_COMM_SELF, &matrix_), "MatCreate");
-    check(MatSetSizes(matrix_, size, size, size, size), "MatSetSizes");
-    check(MatSetType(matrix_, MATSEQAIJ), "MatSetType");
+    values_.assign(columns_.size(), 0.0);
+    check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(), values_.data(),
+                                    &matrix_),
+          "MatCreateSeqAIJWithArrays");
     // Three DOFs per basis function: GAMG aggregates whole functions, as elasticity needs.
     if (size % 3 == 0) check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
-    check(MatSeqAIJSetPreallocationCSR(matrix_, row_starts_.data(), columns_.data(), nullptr),
-          "MatSeqAIJSetPreallocationCSR");
     check(VecCreateSeq(PETSC_COMM_SELF, size, &rhs_), "VecCreateSeq");
     check(VecDuplicate(rhs_, &solution_), "VecDuplicate");
     if (near_null_space_.cols() > 0) set_near_null_space(size);
@@ -242,6 +244,7 @@ private:
   Vec solution_ = nullptr;
   std::vector<PetscInt> row_starts_;  // #dofs + 1
   std::vector<PetscInt> columns_;     // #nonzeros
+  std::vector<PetscScalar> values_;   // #nonzeros: the matrix's values, which PETSc does not copy
   std::vector<int> csr_from_csc_;     // #nonzeros: the Eigen value index of each AIJ entry
   bool reported_unused_options_ = false;
 };
