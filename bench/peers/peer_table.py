@@ -46,7 +46,7 @@ def cantilever(runs: list[dict[str, str]]) -> None:
     print("| grid | element | DOFs | solver altfem / deal.II | threads | wall altfem | wall deal.II | ratio "
           "| asm+solve altfem | asm+solve deal.II | ratio | CG iterations | w error altfem / deal.II |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
-    solver_names = {"direct": "CHOLMOD / UMFPACK", "iterative": "PCG Jacobi / CG+ML AMG"}
+    solver_names = {"direct": "CHOLMOD / UMFPACK", "iterative": "CG+GAMG / CG+ML AMG"}
     cases = group(runs, "grid", "degree", "solver", "threads")
     for (grid, degree, solver, threads) in sorted(cases, key=lambda case: (grid_size(case[0]), case[1], case[2], case[3])):
         sides = group(cases[(grid, degree, solver, threads)], "side")
