@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """PETSc's preconditioners against altfem's own and CHOLMOD (issue #37, step 1): CG
 iterations to a relative residual of 1e-8 and seconds per method and size, for GAMG with
-the rigid-body modes as its near-null space (solver.near_null_space, the default), GAMG
+the rigid-body modes as its near-null space (solver.rigid_body_modes, the default), GAMG
 without them, hypre's BoomerAMG with nodal coarsening, altfem's own PCG (the method's
 preconditioner, or incomplete Cholesky for fem), and CHOLMOD. Each row is one `altfem run`
 of a static scene, read back from its summary.json: set-up is the factorisation phase
@@ -22,7 +22,7 @@ HALF_BALL = ROOT / "scenes/manufactured_half_ball.json"
 SOLVERS = {
     "CHOLMOD": ["solver/linear=cholmod"],
     "GAMG + rigid modes": ["solver/linear=petsc"],
-    "GAMG, translations only": ["solver/linear=petsc", "solver/near_null_space=false"],
+    "GAMG, translations only": ["solver/linear=petsc", "solver/rigid_body_modes=false"],
     "BoomerAMG (nodal)": ["solver/linear=petsc",
                           "solver/petsc_options=-ksp_type cg -pc_type hypre -pc_hypre_type boomeramg "
                           "-pc_hypre_boomeramg_nodal_coarsen 6"],

@@ -256,7 +256,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
                   solver["linear_tolerance"].get<double>(),
                   solver["linear_max_iterations"].get<int>(),
                   solver["petsc_options"].get<std::string>(),
-                  solver["near_null_space"].get<bool>(),
+                  solver["rigid_body_modes"].get<bool>(),
                   solver["cutbacks"].get<int>()};
 
   const json& output = resolved["output"];

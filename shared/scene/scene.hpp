@@ -186,9 +186,9 @@ struct SolverSpec {
   std::string preconditioner = "jacobi";  ///< one of preconditioner_names (shared/solve)
   double linear_tolerance = 1e-10;
   int linear_max_iterations = 10000;
-  /// `petsc` only: PETSc options, and whether the rigid-body modes are its near-null space.
+  /// `petsc` only: PETSc options, and whether the rigid-body modes are its preconditioner's near-null space.
   std::string petsc_options;
-  bool near_null_space = true;
+  bool rigid_body_modes = true;
   /// Halvings of a failed implicit step or load step (docs/scene-schema.md, "Solver").
   int cutbacks = 10;
 };

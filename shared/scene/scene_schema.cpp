@@ -256,7 +256,7 @@ const ObjectRule solver{
      {.key = "linear_tolerance", .type = ValueType::number, .default_value = 1e-10, .lower = positive},
      {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one},
      {.key = "petsc_options", .type = ValueType::string, .default_value = "-ksp_type cg -pc_type gamg"},
-     flag("near_null_space", true),
+     flag("rigid_body_modes", true),
      {.key = "cutbacks",
       .type = ValueType::integer,
       .default_value = 10,

@@ -94,7 +94,7 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
   options.max_iterations = scene.solver.linear_max_iterations;
   if (options.kind == LinearSolverKind::petsc) {
     options.petsc_options = scene.solver.petsc_options;
-    if (scene.solver.near_null_space) options.near_null_space = rigid_body_modes(method);
+    if (scene.solver.rigid_body_modes) options.near_null_space = rigid_body_modes(method);
   }
   return options;
 }
