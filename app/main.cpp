@@ -10,6 +10,7 @@
 #include "app/method_registry.hpp"
 #include "app/process_environment.hpp"
 #include "shared/common/error.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 int main(int argc, char** argv) {
   altfem::cli::restart_with_tuned_environment(argv);
@@ -113,7 +114,14 @@ int main(int argc, char** argv) {
     return altfem::exit_bad_input;
   }
 
+  // Over several processes (mpirun) every rank fails alike, and rank 0 alone says so.
+  const auto report = [](const char* kind, const std::exception& error) {
+    if (altfem::ranks::index() == 0) std::fprintf(stderr, "altfem: %s: %s\n", kind, error.what());
+  };
   try {
+    altfem::ranks::start();
+    if (altfem::ranks::distributed() && !*run)
+      throw altfem::InputError("mpirun: only `altfem run` runs over several processes");
     if (*info) return altfem::cli::info_command();
     if (*check) return altfem::cli::check_command(check_scene, check_method, check_json);
     if (*mesh) return altfem::cli::mesh_command(mesh_scene, mesh_options);
@@ -130,13 +138,13 @@ int main(int argc, char** argv) {
                                                   quadrature_resolution, quadrature_order, simplifier,
                                                   quadrature_output, quadrature_json);
   } catch (const altfem::InputError& error) {
-    std::fprintf(stderr, "altfem: error: %s\n", error.what());
+    report("error", error);
     return altfem::exit_bad_input;
   } catch (const altfem::NumericalError& error) {
-    std::fprintf(stderr, "altfem: numerical failure: %s\n", error.what());
+    report("numerical failure", error);
     return altfem::exit_numerical;
   } catch (const std::exception& error) {
-    std::fprintf(stderr, "altfem: internal error: %s\n", error.what());
+    report("internal error", error);
     return altfem::exit_internal;
   }
   return altfem::exit_internal;

@@ -8,6 +8,7 @@
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::cli {
 
@@ -26,6 +27,7 @@ int run_command(const std::filesystem::path& scene_file, const std::string& meth
   check_output_folder(out);  // before any work: a bad --out is bad input (exit 2), not an internal error
   const double loading = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const nlohmann::json summary = run_simulation(scene, geometry, method, description, out, loading);
+  if (ranks::index() != 0) return 0;
   std::printf("%s with %s: %lld DOFs, %d steps, %lld Newton iterations, %.3f s; results in %s\n", scene.name.c_str(),
               method.c_str(), summary["dofs"].get<long long>(), summary["steps"].get<int>(),
               summary["newton_iterations"].get<long long>(), summary["timings_s"]["total"].get<double>(), out.c_str());

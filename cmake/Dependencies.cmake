@@ -37,6 +37,14 @@ if(ALTFEM_PETSC)
   altfem_require(PETSC_FOUND libpetsc-real3.18-dev "PETSc")
   find_package(MPI QUIET COMPONENTS CXX)
   altfem_require(MPI_CXX_FOUND libopenmpi-dev "MPI")
+  # METIS partitions the elements among the ranks of an mpirun (element_partition.hpp).
+  find_path(METIS_INCLUDE_DIR metis.h)
+  find_library(METIS_LIBRARY metis)
+  set(METIS_OK FALSE)
+  if(METIS_INCLUDE_DIR AND METIS_LIBRARY)
+    set(METIS_OK TRUE)
+  endif()
+  altfem_require(METIS_OK libmetis-dev "METIS")
 endif()
 
 # SuiteSparse 5 on Debian ships neither a CMake config nor a .pc file.

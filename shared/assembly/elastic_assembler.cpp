@@ -64,6 +64,7 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
       materials_(std::move(materials)),
       sparsity_(elements, extra_couplings),
       colors_(color_elements(elements)),
+      owned_colors_(colors_),
       incidence_(elements),
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
       element_energies_(static_cast<std::size_t>(elements.size())) {
@@ -107,6 +108,21 @@ void ElasticAssembler::set_deformation_shifts(std::span<const double> shifts) {
   shifts_ = shifts.empty() ? nullptr : shifts.data();
 }
 
+void ElasticAssembler::assemble_only(const std::vector<char>& owned) {
+  if (static_cast<int>(owned.size()) != elements_.size())
+    throw std::invalid_argument("ElasticAssembler::assemble_only: one entry per element expected");
+  owned_ = owned;
+  owned_colors_.clear();
+  for (const std::vector<int>& color : colors_) {
+    std::vector<int> mine;
+    for (int e : color)
+      if (owned_[e]) mine.push_back(e);
+    if (!mine.empty()) owned_colors_.push_back(std::move(mine));
+  }
+}
+
+bool ElasticAssembler::assembles(int element) const { return owned_.empty() || owned_[element]; }
+
 const double* ElasticAssembler::element_shifts(int element) const {
   return shifts_ ? shifts_ + 9 * point_offsets_[element] : nullptr;
 }
@@ -123,6 +139,10 @@ double ElasticAssembler::energy(const Eigen::VectorXd& displacement) const {
   std::vector<double>& per_element = element_energies_;
   for_each_index(elements_.size(), active_threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
+    if (!assembles(e)) {
+      per_element[e] = 0;
+      return;
+    }
     const ElementView element = elements_[e];
     Scratch& scratch = scratch_[omp_get_thread_num()];
     dispatch(element.basis_count(), [&]<int N>() {
@@ -160,6 +180,10 @@ void ElasticAssembler::gradient(const Eigen::VectorXd& displacement, Eigen::Vect
     const int e = static_cast<int>(index);
     const ElementView element = elements_[e];
     double* slots = element_forces_.data() + 3 * elements_.basis_offset(e);
+    if (!assembles(e)) {
+      std::fill_n(slots, 3 * element.basis_count(), 0.0);
+      return;
+    }
     dispatch(element.basis_count(), [&]<int N>() {
       const int n = element.basis_count();
       auto run = [&](kernel::NodeMatrix<N>& u, kernel::NodeMatrix<N>& forces) {
@@ -198,7 +222,7 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   const int* outer = hessian.outerIndexPtr();
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure, projection_failure;
-  for_each_colored_element([&](int e) {
+  parallel::for_each_colored(owned_colors_, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
     const ElementView element = elements_[e];
     Scratch& scratch = scratch_[omp_get_thread_num()];
     dispatch(element.basis_count(), [&]<int N>() {

@@ -68,11 +68,18 @@ public:
   /// in the elements' point order; not owned, read at every assembly), or an empty span for
   /// none: F = I + Σ_a u_a ⊗ ∇N_a + shift. DG's lifted Dirichlet data (dg/lifted_gradients.hpp).
   void set_deformation_shifts(std::span<const double> shifts);
+  /// Makes energy(), gradient() and hessian() sum only the elements whose `owned` entry is
+  /// nonzero (#elements), the others counting zero: one rank's share of a run over several
+  /// processes (tabulated_discretization.cpp sums the shares). The mass, the loads and
+  /// the stresses stay whole.
+  void assemble_only(const std::vector<char>& owned);
 
 private:
   struct Scratch;
   /// Element e's first point's deformation shift, or nullptr when there are none.
   const double* element_shifts(int element) const;
+  /// Whether energy(), gradient() and hessian() include element e (assemble_only).
+  bool assembles(int element) const;
   void check_materials() const;
   void check_masses(const ElementMasses& masses) const;
   /// OpenMP's current thread count, at most the number of scratch blocks.
@@ -85,6 +92,8 @@ private:
   std::vector<const Material*> materials_;
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
+  std::vector<char> owned_;                      // empty: every element is assembled
+  std::vector<std::vector<int>> owned_colors_;  // colors_ restricted to the owned elements
   BasisIncidence incidence_;
   std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start
   const double* shifts_ = nullptr;        // set_deformation_shifts', or null

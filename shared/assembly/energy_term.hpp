@@ -4,6 +4,7 @@
 // term declares the block couplings it needs, so that the Hessian, the mass matrix and
 // every matrix the integrators build share one sparsity pattern.
 #include <Eigen/Core>
+#include <vector>
 
 #include "shared/assembly/basis_groups.hpp"
 #include "shared/assembly/block_sparsity.hpp"
@@ -26,6 +27,10 @@ public:
   virtual void add_hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian) const = 0;
   /// True when the term is quadratic in u (its Hessian is constant).
   virtual bool is_quadratic() const = 0;
+  /// Makes energy(), add_gradient() and add_hessian() include only the couplings() lists
+  /// whose `owned` entry is nonzero: one rank's share in a run over several processes.
+  /// False when the term cannot divide itself; then rank 0 assembles it whole.
+  virtual bool assemble_only(const std::vector<char>& /*owned*/) { return false; }
 };
 
 }  // namespace altfem

@@ -55,10 +55,23 @@ public:
   }
   bool is_quadratic() const override { return kernel_.is_quadratic(); }
   const Kernel& kernel() const { return kernel_; }
+  /// Faces are the couplings' lists, one each.
+  bool assemble_only(const std::vector<char>& owned) override {
+    if (static_cast<int>(owned.size()) != faces_.size())
+      throw std::invalid_argument("FaceAssembler::assemble_only: one entry per face expected");
+    owned_ = owned;
+    for (std::vector<int>& color : colors_) std::erase_if(color, [&](int f) { return !owned_[f]; });
+    std::erase_if(colors_, [](const std::vector<int>& color) { return color.empty(); });
+    return true;
+  }
 
   double energy(const Eigen::VectorXd& displacement) const override {
     parallel::for_each_index(static_cast<size_t>(faces_.size()), active_threads(), [&](size_t index) {
       const int f = static_cast<int>(index);
+      if (!owned_.empty() && !owned_[f]) {
+        face_energies_[index] = 0;
+        return;
+      }
       const FaceView face = faces_[f];
       with_local<false>(face, displacement, [&]<int N>(const kernel::NodeMatrix<N>& u, auto&) {
         face_energies_[index] = kernel_.template energy<N>(face, u);
@@ -153,7 +166,8 @@ private:
 
   const TabulatedFaces& faces_;
   Kernel kernel_;
-  std::vector<std::vector<int>> colors_;
+  std::vector<std::vector<int>> colors_;  // the owned faces, by colour
+  std::vector<char> owned_;                // empty: every face
   const BlockSparsity* sparsity_ = nullptr;
   int first_group_ = 0;
   mutable std::vector<double> face_energies_;

@@ -5,7 +5,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "shared/assembly/element_partition.hpp"
 #include "shared/common/error.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -49,9 +51,39 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
 
 }  // namespace
 
+// Each rank assembles the elements METIS gives it, and of each term the lists of
+// couplings (faces) whose lowest-ranked basis function is its: a function belongs to the
+// lowest part among its elements, so a face between two parts goes to the lower one. A
+// term that cannot divide itself stays with rank 0. The sums in energy(), gradient() and
+// hessian() make the whole.
+void TabulatedDiscretization::divide_among_ranks(const BasisGroups& couplings) {
+  const std::vector<int> part = partition_elements(parts_.elements, couplings, ranks::count());
+  std::vector<char> owned(part.size());
+  for (size_t e = 0; e < part.size(); ++e) owned[e] = part[e] == ranks::index();
+  assembler_->assemble_only(owned);
+  std::vector<int> basis_part(static_cast<size_t>(dof_count() / 3), ranks::count());
+  for (int e = 0; e < parts_.elements.size(); ++e)
+    for (int basis : parts_.elements[e].basis) basis_part[basis] = std::min(basis_part[basis], part[e]);
+  term_here_.assign(parts_.terms.size(), 1);
+  for (size_t t = 0; t < parts_.terms.size(); ++t) {
+    const BasisGroups& groups = parts_.terms[t]->couplings();
+    std::vector<char> mine(static_cast<size_t>(groups.size()));
+    for (int g = 0; g < groups.size(); ++g) {
+      int owner = ranks::count();
+      for (int basis : groups[g]) owner = std::min(owner, basis_part[basis]);
+      // A list of functions no element holds (none do today) stays with rank 0.
+      mine[g] = (owner == ranks::count() ? 0 : owner) == ranks::index();
+    }
+    if (!parts_.terms[t]->assemble_only(mine)) term_here_[t] = ranks::index() == 0;
+  }
+}
+
+bool TabulatedDiscretization::assembles_term(size_t term) const { return term_here_.empty() || term_here_[term]; }
+
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
   const BasisGroups couplings = collect_couplings(parts_.terms);
   assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings);
+  if (ranks::distributed()) divide_among_ranks(couplings);
   masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
   parts_.element_masses.reset();
   int first_group = 0;
@@ -83,24 +115,35 @@ void TabulatedDiscretization::set_time(double time) const {
 
 TabulatedDiscretization::~TabulatedDiscretization() = default;
 
+// Over several ranks each assembles its own elements and faces (divide_among_ranks); the
+// sums make every rank's result the whole, so that the integrators run the same on every rank.
 double TabulatedDiscretization::energy(const Eigen::VectorXd& u) const {
-  double total = assembler_->energy(u);
-  for (const auto& term : parts_.terms) {
-    if (!std::isfinite(total)) break;
-    total += term->energy(u);
-  }
-  return total;
+  double total = 0;
+  ranks::collectively([&] {
+    total = assembler_->energy(u);
+    for (size_t t = 0; t < parts_.terms.size() && std::isfinite(total); ++t)
+      if (assembles_term(t)) total += parts_.terms[t]->energy(u);
+  });
+  return ranks::sum(total);
 }
 
 void TabulatedDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
-  assembler_->gradient(u, gradient);
-  for (const auto& term : parts_.terms) term->add_gradient(u, gradient);
+  ranks::collectively([&] {
+    assembler_->gradient(u, gradient);
+    for (size_t t = 0; t < parts_.terms.size(); ++t)
+      if (assembles_term(t)) parts_.terms[t]->add_gradient(u, gradient);
+  });
+  ranks::sum(std::span<double>(gradient.data(), static_cast<size_t>(gradient.size())));
 }
 
 void TabulatedDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian,
                                       bool project_spd) const {
-  assembler_->hessian(u, hessian, project_spd);
-  for (const auto& term : parts_.terms) term->add_hessian(u, hessian);
+  ranks::collectively([&] {
+    assembler_->hessian(u, hessian, project_spd);
+    for (size_t t = 0; t < parts_.terms.size(); ++t)
+      if (assembles_term(t)) parts_.terms[t]->add_hessian(u, hessian);
+  });
+  ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
 }
 
 Eigen::VectorXd TabulatedDiscretization::explicit_body_force(const Eigen::Vector3d& acceleration) const {

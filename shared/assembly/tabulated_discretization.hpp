@@ -88,6 +88,11 @@ public:
   const ElasticAssembler& assembler() const { return *assembler_; }
 
 private:
+  /// This rank's elements and term couplings, in a run over several processes.
+  void divide_among_ranks(const BasisGroups& couplings);
+  /// Whether this rank evaluates term t (its share, or the whole on rank 0).
+  bool assembles_term(size_t term) const;
+
   DiscretizationParts parts_;
   std::unique_ptr<ElasticAssembler> assembler_;
   ElementMasses masses_;  // parts_.element_masses, or those of parts_.elements
@@ -95,6 +100,7 @@ private:
   Eigen::VectorXd lumped_mass_;
   std::unique_ptr<ExplicitMass> explicit_mass_;
   bool constant_hessian_ = false;
+  std::vector<char> term_here_;  // per term, over several ranks: whether this rank evaluates it
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)
 };
 

@@ -22,6 +22,7 @@
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "shared/solve/blas_info.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -136,6 +137,7 @@ public:
   }
 
   void write(const Eigen::VectorXd& displacement, double time) {
+    if (ranks::index() != 0) return;  // rank 0 writes every frame
     char name[64];
     RunFrame frame;
     frame.time = time;
@@ -225,14 +227,16 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   Simulation simulation(scene, geometry, method_name, description.factory, description.rebuild);
   const MethodInstance& method = simulation.method();
   const double critical_time_step = simulation.critical_time_step();
-  if (simulation.explicit_steps() && scene.time.dt > critical_time_step)
+  // Over several processes rank 0 alone writes and warns (every rank holds the same state).
+  const bool reports = ranks::index() == 0;
+  if (reports && simulation.explicit_steps() && scene.time.dt > critical_time_step)
     std::fprintf(stderr,
                  "altfem: warning: time.dt = %g s exceeds the explicit stability limit, about %.3g s (2/omega_max, "
                  "omega_max^2 the largest eigenvalue of M^-1 K at rest): symplectic Euler will diverge\n",
                  scene.time.dt, critical_time_step);
   setup_seconds += seconds_since(start);
 
-  std::filesystem::create_directories(output_directory);
+  if (reports) std::filesystem::create_directories(output_directory);
   std::ostringstream log;
   nlohmann::json summary;
   summary["scene"] = scene.name;
@@ -243,14 +247,22 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["environment"] = {{"threads", omp_get_max_threads()},
                             {"openmp_wait_policy", wait_policy != nullptr ? wait_policy : "libgomp's default"},
                             {"blas", blas.implementation}};
-  if (is_reference_blas(blas))
+  if (reports && is_reference_blas(blas))
     std::fprintf(stderr,
                  "altfem: warning: the reference BLAS is loaded (%s): CHOLMOD runs ~10x slower; "
                  "install libopenblas0-pthread\n",
                  blas.library.c_str());
   summary["facts"] = method.facts();
   summary["warnings"] = method.warnings();
-  for (const std::string& warning : method.warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
+  if (ranks::distributed() && scene.solver.linear != LinearSolverKind::petsc) {
+    const std::string warning = "with " + std::to_string(ranks::count()) + " ranks, solver.linear \"" +
+                                std::string(linear_solver_kind_name(scene.solver.linear)) +
+                                "\" solves the whole system on every rank; \"petsc\" solves it across them";
+    summary["warnings"].push_back(warning);
+    if (reports) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
+  }
+  if (reports)
+    for (const std::string& warning : method.warnings()) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
   if (simulation.explicit_steps()) summary["facts"]["critical_time_step"] = critical_time_step;
 
   State& state = simulation.state();
@@ -326,7 +338,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
 
   if (round_off_stops > 0) {
     if (const std::string hint = near_incompressible_hint(scene, true); !hint.empty()) {
-      std::fprintf(stderr, "altfem: warning: %s\n", hint.c_str());
+      if (reports) std::fprintf(stderr, "altfem: warning: %s\n", hint.c_str());
       summary["warnings"].push_back(hint);
     }
   }
@@ -340,6 +352,16 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
                           {"solve", statistics.solve_seconds},
                           {"total", total}};
   summary["counts"] = {{"analyses", statistics.analyses}, {"factorisations", statistics.factorisations}};
+  // Over several processes, each phase's seconds on every rank (rank order): how evenly
+  // the element partition shared the assembly, and what the solve cost each.
+  if (ranks::distributed())
+    summary["ranks"] = {{"count", ranks::count()},
+                        {"timings_s",
+                         {{"assembly", ranks::gather(simulation.assembly_seconds())},
+                          {"analysis", ranks::gather(statistics.analysis_seconds)},
+                          {"factorisation", ranks::gather(statistics.factorisation_seconds)},
+                          {"solve", ranks::gather(statistics.solve_seconds)},
+                          {"total", ranks::gather(total)}}}};
   // What blas_thread_choice.hpp chose for the factorisations (issue #35); the solves ran on one.
   if (statistics.most_blas_threads > 0)
     summary["environment"]["factorisation_blas_threads"] = {{"fewest", statistics.fewest_blas_threads},
@@ -360,8 +382,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["surface"] = frames.last_surface().empty() ? "" : frames.last_surface().filename().string();
   if (scene.exact_displacement.has_value() && status == "ok")
     summary["field_errors"] = exact_solution_errors(simulation.method(), scene.exact_displacement, state);
-  write_file_atomically(output_directory / "log.txt", log.str());
-  write_json_file(output_directory / "summary.json", summary);
+  if (reports) {
+    write_file_atomically(output_directory / "log.txt", log.str());
+    write_json_file(output_directory / "summary.json", summary);
+  }
   if (status != "ok") throw NumericalError(status.substr(std::string("error: ").size()));
   return summary;
 }

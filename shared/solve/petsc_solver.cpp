@@ -1,6 +1,7 @@
 #include "shared/solve/petsc_solver.hpp"
 
 #include "shared/common/error.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 #ifdef ALTFEM_HAVE_PETSC
 
@@ -78,7 +79,9 @@ public:
       near_null_space_ = qr.householderQ() * Eigen::MatrixXd::Identity(options.near_null_space.rows(),
                                                                          options.near_null_space.cols());
     }
-    check(KSPCreate(PETSC_COMM_SELF, &ksp_), "KSPCreate");
+    // PETSC_COMM_WORLD is MPI's world only once PETSc has started.
+    if (ranks::distributed()) communicator_ = PETSC_COMM_WORLD;
+    check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
     PC preconditioner;
@@ -103,9 +106,7 @@ public:
   ~PetscSolver() override {
     for (const std::string& name : option_names_) PetscOptionsClearValue(nullptr, ("-" + name).c_str());
     KSPDestroy(&ksp_);
-    MatDestroy(&matrix_);
-    VecDestroy(&rhs_);
-    VecDestroy(&solution_);
+    destroy_arrays();
   }
 
   std::string_view name() const override { return "petsc"; }
@@ -118,43 +119,76 @@ protected:
   void analyze_pattern(const Eigen::SparseMatrix<double>& matrix) override {
     // The KSP may still hold the old matrix, which reads the arrays rebuilt below; it is
     // replaced before anything reads it again (factorize_values).
-    MatDestroy(&matrix_);
-    VecDestroy(&rhs_);
-    VecDestroy(&solution_);
+    destroy_arrays();
     const auto size = static_cast<PetscInt>(matrix.rows());
-    row_starts_.assign(size + 1, 0);
+    // Over several ranks each holds a contiguous block of rows (whole basis functions,
+    // in the method's numbering); on one, all of them.
+    const PetscInt block = size % 3 == 0 ? 3 : 1;
+    first_row_ = block * (size / block * ranks::index() / ranks::count());
+    last_row_ = block * (size / block * (ranks::index() + 1) / ranks::count());
+    const PetscInt rows = last_row_ - first_row_;
+    row_starts_.assign(rows + 1, 0);
+    const auto owned = [&](Eigen::Index row) { return row >= first_row_ && row < last_row_; };
     for (Eigen::Index column = 0; column < matrix.outerSize(); ++column)
-      for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry) ++row_starts_[entry.row() + 1];
-    for (PetscInt row = 0; row < size; ++row) row_starts_[row + 1] += row_starts_[row];
-    columns_.resize(row_starts_[size]);
-    csr_from_csc_.resize(row_starts_[size]);
+      for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry)
+        if (owned(entry.row())) ++row_starts_[entry.row() - first_row_ + 1];
+    for (PetscInt row = 0; row < rows; ++row) row_starts_[row + 1] += row_starts_[row];
+    columns_.resize(row_starts_[rows]);
+    csr_from_csc_.resize(row_starts_[rows]);
     std::vector<PetscInt> next(row_starts_.begin(), row_starts_.end() - 1);
     // Columns in increasing order, so every row's column indices come out sorted, as AIJ needs.
     for (Eigen::Index column = 0; column < matrix.outerSize(); ++column)
       for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, column); entry; ++entry) {
-        const PetscInt position = next[entry.row()]++;
+        if (!owned(entry.row())) continue;
+        const PetscInt position = next[entry.row() - first_row_]++;
         columns_[position] = static_cast<PetscInt>(column);
         csr_from_csc_[position] = static_cast<int>(&entry.value() - matrix.valuePtr());
       }
 
     values_.assign(columns_.size(), 0.0);
-    check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(), values_.data(),
-                                    &matrix_),
-          "MatCreateSeqAIJWithArrays");
-    // Three DOFs per basis function: GAMG aggregates whole functions, as elasticity needs.
-    if (size % 3 == 0) check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
-    check(VecCreateSeq(PETSC_COMM_SELF, size, &rhs_), "VecCreateSeq");
+    if (ranks::distributed()) {
+      // MATMPIAIJ keeps its own copy (diagonal and off-diagonal blocks): values are
+      // refreshed row by row (factorize_values).
+      check(MatCreate(communicator_, &matrix_), "MatCreate");
+      check(MatSetSizes(matrix_, rows, rows, size, size), "MatSetSizes");
+      check(MatSetType(matrix_, MATMPIAIJ), "MatSetType");
+      check(MatSetBlockSize(matrix_, block), "MatSetBlockSize");
+      check(MatMPIAIJSetPreallocationCSR(matrix_, row_starts_.data(), columns_.data(), values_.data()),
+            "MatMPIAIJSetPreallocationCSR");
+      check(VecCreateMPI(communicator_, rows, size, &rhs_), "VecCreateMPI");
+      check(VecScatterCreateToAll(rhs_, &gather_, &gathered_), "VecScatterCreateToAll");
+    } else {
+      check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(),
+                                      values_.data(), &matrix_),
+            "MatCreateSeqAIJWithArrays");
+      // Three DOFs per basis function: GAMG aggregates whole functions, as elasticity needs.
+      if (block == 3) check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
+      check(VecCreateSeq(PETSC_COMM_SELF, size, &rhs_), "VecCreateSeq");
+    }
     check(VecDuplicate(rhs_, &solution_), "VecDuplicate");
     if (near_null_space_.cols() > 0) set_near_null_space(size);
   }
 
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
-    PetscScalar* values;
-    check(MatSeqAIJGetArray(matrix_, &values), "MatSeqAIJGetArray");
     const double* source = matrix.valuePtr();
-    for (std::size_t position = 0; position < csr_from_csc_.size(); ++position)
-      values[position] = source[csr_from_csc_[position]];
-    check(MatSeqAIJRestoreArray(matrix_, &values), "MatSeqAIJRestoreArray");
+    if (ranks::distributed()) {
+      for (std::size_t position = 0; position < csr_from_csc_.size(); ++position)
+        values_[position] = source[csr_from_csc_[position]];
+      for (PetscInt row = 0; row + first_row_ < last_row_; ++row) {
+        const PetscInt global_row = first_row_ + row;
+        check(MatSetValues(matrix_, 1, &global_row, row_starts_[row + 1] - row_starts_[row],
+                           columns_.data() + row_starts_[row], values_.data() + row_starts_[row], INSERT_VALUES),
+              "MatSetValues");
+      }
+      check(MatAssemblyBegin(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      check(MatAssemblyEnd(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    } else {
+      PetscScalar* values;
+      check(MatSeqAIJGetArray(matrix_, &values), "MatSeqAIJGetArray");
+      for (std::size_t position = 0; position < csr_from_csc_.size(); ++position)
+        values[position] = source[csr_from_csc_[position]];
+      check(MatSeqAIJRestoreArray(matrix_, &values), "MatSeqAIJRestoreArray");
+    }
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
     if (!reported_unused_options_) report_unused_options();
@@ -163,7 +197,7 @@ protected:
   long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) override {
     PetscScalar* values;
     check(VecGetArray(rhs_, &values), "VecGetArray");
-    std::copy(rhs.data(), rhs.data() + rhs.size(), values);
+    std::copy(rhs.data() + first_row_, rhs.data() + last_row_, values);
     check(VecRestoreArray(rhs_, &values), "VecRestoreArray");
     check(KSPSolve(ksp_, rhs_, solution_), "KSPSolve");
     KSPConvergedReason reason;
@@ -178,28 +212,44 @@ protected:
               << iterations << " iterations (residual norm " << residual << ", right-hand side " << rhs.norm() << ")";
       throw NumericalError(message.str());
     }
+    // Every rank gets the whole solution: the integrators run on every rank.
+    Vec whole = solution_;
+    if (ranks::distributed()) {
+      check(VecScatterBegin(gather_, solution_, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterBegin");
+      check(VecScatterEnd(gather_, solution_, gathered_, INSERT_VALUES, SCATTER_FORWARD), "VecScatterEnd");
+      whole = gathered_;
+    }
     const PetscScalar* result;
-    check(VecGetArrayRead(solution_, &result), "VecGetArrayRead");
+    check(VecGetArrayRead(whole, &result), "VecGetArrayRead");
     solution = Eigen::Map<const Eigen::VectorXd>(result, rhs.size());
-    check(VecRestoreArrayRead(solution_, &result), "VecRestoreArrayRead");
+    check(VecRestoreArrayRead(whole, &result), "VecRestoreArrayRead");
     return iterations;
   }
 
 private:
+  void destroy_arrays() {
+    MatDestroy(&matrix_);
+    VecDestroy(&rhs_);
+    VecDestroy(&solution_);
+    VecScatterDestroy(&gather_);
+    VecDestroy(&gathered_);
+  }
+
   void set_near_null_space(PetscInt size) {
     if (near_null_space_.rows() != size)
       throw std::logic_error("petsc solver: near-null space has " + std::to_string(near_null_space_.rows()) +
                              " rows, the matrix " + std::to_string(size));
     std::vector<Vec> vectors(near_null_space_.cols());
     for (Eigen::Index mode = 0; mode < near_null_space_.cols(); ++mode) {
-      check(VecCreateSeq(PETSC_COMM_SELF, size, &vectors[mode]), "VecCreateSeq");
+      check(VecDuplicate(rhs_, &vectors[mode]), "VecDuplicate");
       PetscScalar* values;
       check(VecGetArray(vectors[mode], &values), "VecGetArray");
-      Eigen::Map<Eigen::VectorXd>(values, size) = near_null_space_.col(mode);
+      Eigen::Map<Eigen::VectorXd>(values, last_row_ - first_row_) =
+          near_null_space_.col(mode).segment(first_row_, last_row_ - first_row_);
       check(VecRestoreArray(vectors[mode], &values), "VecRestoreArray");
     }
     MatNullSpace space;
-    check(MatNullSpaceCreate(PETSC_COMM_SELF, PETSC_FALSE, static_cast<PetscInt>(vectors.size()), vectors.data(), &space),
+    check(MatNullSpaceCreate(communicator_, PETSC_FALSE, static_cast<PetscInt>(vectors.size()), vectors.data(), &space),
           "MatNullSpaceCreate");
     check(MatSetNearNullSpace(matrix_, space), "MatSetNearNullSpace");
     MatNullSpaceDestroy(&space);  // the matrix holds its own reference, as the space holds the vectors'
@@ -235,6 +285,7 @@ private:
                 << "\n";
   }
 
+  MPI_Comm communicator_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD over several ranks
   std::string prefix_;
   std::vector<std::string> option_names_;  // with the prefix, without the leading "-"
   Eigen::MatrixXd near_null_space_;        // orthonormal columns
@@ -242,10 +293,13 @@ private:
   Mat matrix_ = nullptr;
   Vec rhs_ = nullptr;
   Vec solution_ = nullptr;
-  std::vector<PetscInt> row_starts_;  // #dofs + 1
-  std::vector<PetscInt> columns_;     // #nonzeros
-  std::vector<PetscScalar> values_;   // #nonzeros: the matrix's values, which PETSc does not copy
-  std::vector<int> csr_from_csc_;     // #nonzeros: the Eigen value index of each AIJ entry
+  VecScatter gather_ = nullptr;  // over several ranks: the solution to every rank
+  Vec gathered_ = nullptr;
+  PetscInt first_row_ = 0, last_row_ = 0;  // this rank's rows
+  std::vector<PetscInt> row_starts_;       // this rank's #rows + 1
+  std::vector<PetscInt> columns_;          // this rank's #nonzeros, global column indices
+  std::vector<PetscScalar> values_;        // this rank's #nonzeros: on one rank the matrix's own values
+  std::vector<int> csr_from_csc_;          // this rank's #nonzeros: the Eigen value index of each AIJ entry
   bool reported_unused_options_ = false;
 };
 

@@ -31,9 +31,10 @@ std::filesystem::path fresh_directory(const std::string& name) {
   return path;
 }
 
-CommandResult run_altfem(const std::vector<std::string>& arguments, const std::string& environment) {
+namespace {
+CommandResult run_command(const std::string& launcher, const std::vector<std::string>& arguments) {
   const auto capture = fresh_directory("capture");
-  std::string command = environment + " " + quote(ALTFEM_EXECUTABLE);
+  std::string command = launcher + " " + quote(ALTFEM_EXECUTABLE);
   for (const auto& argument : arguments) command += " " + quote(argument);
   command += " > " + quote((capture / "out").string()) + " 2> " + quote((capture / "err").string()) + " < /dev/null";
   const int status = std::system(command.c_str());
@@ -43,6 +44,17 @@ CommandResult run_altfem(const std::vector<std::string>& arguments, const std::s
   result.err = read_all(capture / "err");
   std::filesystem::remove_all(capture);
   return result;
+}
+}  // namespace
+
+CommandResult run_altfem(const std::vector<std::string>& arguments, const std::string& environment) {
+  return run_command(environment, arguments);
+}
+
+CommandResult run_altfem_on_ranks(int ranks, const std::vector<std::string>& arguments) {
+  return run_command("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMP_NUM_THREADS=1 mpirun -n " +
+                         std::to_string(ranks) + " --oversubscribe",
+                     arguments);
 }
 
 std::filesystem::path source_path(const std::string& relative) {

@@ -14,6 +14,9 @@ struct CommandResult {
 
 /// Runs `altfem <arguments>` with optional extra environment ("NAME=value ...").
 CommandResult run_altfem(const std::vector<std::string>& arguments, const std::string& environment = "");
+/// Runs `mpirun -n <ranks> --oversubscribe altfem <arguments>` (allowed as root, one
+/// OpenMP thread per rank).
+CommandResult run_altfem_on_ranks(int ranks, const std::vector<std::string>& arguments);
 /// A fresh empty folder under the system temporary folder.
 std::filesystem::path fresh_directory(const std::string& name);
 std::filesystem::path source_path(const std::string& relative);

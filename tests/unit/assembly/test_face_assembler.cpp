@@ -139,6 +139,26 @@ TEST(FaceAssembler, QuarticKernelDerivativesMatchFiniteDifferencesOnMixedSizes) 
   expect_derivatives_match_finite_differences(test::QuarticJumpKernel());
 }
 
+// One rank's share (EnergyTerm::assemble_only): the shares of disjoint face sets sum to
+// the whole term, on the non-quadratic kernel and faces of fixed and dynamic sizes.
+TEST(FaceAssembler, SharesOfDisjointFacesSumToTheWhole) {
+  const TabulatedFaces faces = mixed_faces();
+  const test::FaceTerm<test::QuarticJumpKernel> whole(faces, test::QuarticJumpKernel());
+  test::FaceTerm<test::QuarticJumpKernel> first(faces, test::QuarticJumpKernel()),
+      second(faces, test::QuarticJumpKernel());
+  const std::vector<char> some{1, 0, 0, 1, 1, 0}, others{0, 1, 1, 0, 0, 1};
+  EXPECT_TRUE(first.assembler.assemble_only(some));
+  EXPECT_TRUE(second.assembler.assemble_only(others));
+  const Eigen::VectorXd u = 0.3 * random_vector(whole.dof_count(), 7);
+  const double energy = whole.assembler.energy(u);
+  EXPECT_NEAR(first.assembler.energy(u) + second.assembler.energy(u), energy, 1e-13 * energy);
+  EXPECT_LE((first.gradient(u) + second.gradient(u) - whole.gradient(u)).norm(), 1e-13 * whole.gradient(u).norm());
+  EXPECT_LE((SparseMatrix(first.hessian(u) + second.hessian(u)) - whole.hessian(u)).norm(),
+            1e-13 * whole.hessian(u).norm());
+  EXPECT_GT(first.gradient(u).norm(), 0.1 * whole.gradient(u).norm()) << "each share is a real part";
+  EXPECT_THROW(first.assembler.assemble_only({1, 0}), std::invalid_argument);
+}
+
 TEST(FaceAssembler, HessianBeforeBindThrows) {
   const TabulatedFaces faces = test::two_cube_face(3);
   const FaceAssembler<JumpPenaltyKernel> assembler(faces, JumpPenaltyKernel(std::vector<double>{penalty}));

@@ -1,0 +1,115 @@
+#include "shared/assembly/element_partition.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "shared/solve/process_ranks.hpp"
+
+#ifdef ALTFEM_HAVE_METIS
+#include <metis.h>
+#endif
+
+namespace altfem {
+namespace {
+
+// Compressed adjacency of the element graph: neighbours of e at offsets[e] … offsets[e + 1].
+struct ElementGraph {
+  std::vector<long long> offsets;
+  std::vector<int> neighbours;
+};
+
+ElementGraph element_graph(const TabulatedElements& elements, const BasisGroups& couplings) {
+  // The elements of each basis function.
+  std::vector<std::vector<int>> holders(static_cast<size_t>(elements.basis_count()));
+  for (int e = 0; e < elements.size(); ++e)
+    for (int basis : elements[e].basis) holders[basis].push_back(e);
+  std::vector<std::vector<int>> adjacent(static_cast<size_t>(elements.size()));
+  const auto connect_all = [&](const std::vector<int>& group) {
+    for (int first : group)
+      for (int second : group)
+        if (first != second) adjacent[first].push_back(second);
+  };
+  for (const std::vector<int>& group : holders) connect_all(group);
+  std::vector<int> group_elements;
+  for (int g = 0; g < couplings.size(); ++g) {
+    group_elements.clear();
+    for (int basis : couplings[g])
+      if (basis < elements.basis_count())
+        group_elements.insert(group_elements.end(), holders[basis].begin(), holders[basis].end());
+    std::sort(group_elements.begin(), group_elements.end());
+    group_elements.erase(std::unique(group_elements.begin(), group_elements.end()), group_elements.end());
+    connect_all(group_elements);
+  }
+  ElementGraph graph;
+  graph.offsets.reserve(adjacent.size() + 1);
+  graph.offsets.push_back(0);
+  for (std::vector<int>& list : adjacent) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    graph.neighbours.insert(graph.neighbours.end(), list.begin(), list.end());
+    graph.offsets.push_back(static_cast<long long>(graph.neighbours.size()));
+  }
+  return graph;
+}
+
+#ifdef ALTFEM_HAVE_METIS
+
+std::vector<int> metis_parts(const TabulatedElements& elements, const ElementGraph& graph, int parts) {
+  idx_t vertices = elements.size(), constraints = 1, part_count = parts, cut = 0;
+  std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
+  std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
+  // An element's assembly costs about points × functions² flops; points × functions keeps
+  // the weights small while ranking cut cells (many points) above plain ones.
+  std::vector<double> work(static_cast<size_t>(vertices));
+  double total = 0;
+  for (int e = 0; e < elements.size(); ++e)
+    total += work[e] = static_cast<double>(elements[e].point_count()) * elements[e].basis_count();
+  // METIS sums the weights in idx_t: scaled so that the total stays below 2^30.
+  const double scale = std::min(1.0, 0x1p30 / std::max(total, 1.0));
+  std::vector<idx_t> weights(static_cast<size_t>(vertices));
+  for (int e = 0; e < elements.size(); ++e) weights[e] = std::max<idx_t>(1, static_cast<idx_t>(scale * work[e]));
+  std::vector<idx_t> part(static_cast<size_t>(vertices), 0);
+  idx_t options[METIS_NOPTIONS];
+  METIS_SetDefaultOptions(options);
+  options[METIS_OPTION_SEED] = 1;
+  options[METIS_OPTION_CONTIG] = 1;
+  int status = METIS_PartGraphKway(&vertices, &constraints, offsets.data(), neighbours.data(), weights.data(), nullptr,
+                                   nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
+  if (status != METIS_OK) {
+    // Contiguous parts need a connected graph: a body a cut has separated is not one.
+    options[METIS_OPTION_CONTIG] = 0;
+    status = METIS_PartGraphKway(&vertices, &constraints, offsets.data(), neighbours.data(), weights.data(), nullptr,
+                                 nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
+  }
+  if (status != METIS_OK)
+    throw std::runtime_error("METIS could not partition " + std::to_string(vertices) + " elements into " +
+                             std::to_string(parts) + " parts (status " + std::to_string(status) + ")");
+  return {part.begin(), part.end()};
+}
+
+#else
+
+std::vector<int> metis_parts(const TabulatedElements&, const ElementGraph&, int) {
+  throw std::logic_error("partition_elements: this build has no METIS (it comes with -DALTFEM_PETSC=ON)");
+}
+
+#endif
+
+}  // namespace
+
+std::vector<int> partition_elements(const TabulatedElements& elements, const BasisGroups& couplings, int parts) {
+  std::vector<int> part(static_cast<size_t>(elements.size()), 0);
+  if (parts <= 1 || elements.size() == 0) return part;
+  if (elements.size() <= parts) {
+    for (int e = 0; e < elements.size(); ++e) part[e] = e;
+    return part;
+  }
+  ranks::collectively([&] {
+    if (ranks::index() == 0) part = metis_parts(elements, element_graph(elements, couplings), parts);
+  });
+  ranks::broadcast(part);
+  return part;
+}
+
+}  // namespace altfem
