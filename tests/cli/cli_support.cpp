@@ -61,6 +61,22 @@ std::filesystem::path source_path(const std::string& relative) {
   return std::filesystem::path(ALTFEM_SOURCE_DIR) / relative;
 }
 
+nlohmann::json read_summary(const std::filesystem::path& folder) {
+  std::ifstream file(folder / "summary.json");
+  return nlohmann::json::parse(file);
+}
+
+std::vector<double> last_step_of_log(const std::filesystem::path& folder) {
+  std::ifstream file(folder / "log.txt");
+  std::string line, last;
+  while (std::getline(file, line))
+    if (!line.empty() && line[0] != '#') last = line;
+  std::istringstream fields(last);
+  std::vector<double> values;
+  for (double value; fields >> value;) values.push_back(value);
+  return values;
+}
+
 std::vector<std::string> lines_of(const std::string& text) {
   std::vector<std::string> lines;
   std::istringstream in(text);

@@ -14,24 +14,6 @@
 namespace altfem::test {
 namespace {
 
-nlohmann::json summary_of(const std::filesystem::path& out) {
-  std::ifstream file(out / "summary.json");
-  return nlohmann::json::parse(file);
-}
-
-// The last step's line of log.txt: step time dofs iterations linear_iterations residual
-// total_energy max_von_mises (docs/conventions.md).
-std::vector<double> last_step_of_log(const std::filesystem::path& out) {
-  std::ifstream file(out / "log.txt");
-  std::string line, last;
-  while (std::getline(file, line))
-    if (!line.empty() && line[0] != '#') last = line;
-  std::istringstream fields(last);
-  std::vector<double> values;
-  for (double value; fields >> value;) values.push_back(value);
-  return values;
-}
-
 std::string log_text(const std::filesystem::path& out) {
   std::ifstream file(out / "log.txt");
   return {std::istreambuf_iterator<char>(file), {}};
@@ -46,7 +28,7 @@ TEST(Cutbacks, AStaticLoadOneStepCannotTakeConvergesInIncrementsToTheLoadStepped
 
   const auto result = run_altfem({"run", scene, "--method", "fem", "--out", whole.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const auto summary = summary_of(whole);
+  const auto summary = read_summary(whole);
   EXPECT_GE(summary["cutbacks"]["failed_attempts"].get<int>(), 1);
   EXPECT_LT(summary["cutbacks"]["smallest_increment"].get<double>(), 1.0);
   EXPECT_NE(log_text(whole).find("# cutback step 1: "), std::string::npos);
@@ -72,7 +54,7 @@ TEST(Cutbacks, ABackwardEulerStepTooLongForNewtonIsCutBackAndKeepsItsTime) {
   const auto out = fresh_directory("cutbacks-dynamic") / "run";
   const auto result = run_altfem({"run", scene, "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const auto summary = summary_of(out);
+  const auto summary = read_summary(out);
   EXPECT_GE(summary["cutbacks"]["failed_attempts"].get<int>(), 1);
   EXPECT_EQ(summary["steps"].get<int>(), 2);
   const std::vector<double> last = last_step_of_log(out);

@@ -14,11 +14,6 @@ namespace {
 
 const std::string held_cantilever = "tests/verify/events/scenes/held_cantilever.json";
 
-nlohmann::json read_summary(const std::filesystem::path& folder) {
-  std::ifstream in(folder / "summary.json");
-  return nlohmann::json::parse(in);
-}
-
 std::string read_text(const std::filesystem::path& file) {
   std::stringstream text;
   text << std::ifstream(file).rdbuf();

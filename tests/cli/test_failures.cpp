@@ -14,11 +14,6 @@
 namespace altfem::test {
 namespace {
 
-nlohmann::json summary_of(const std::filesystem::path& out) {
-  std::ifstream in(out / "summary.json");
-  return nlohmann::json::parse(in);
-}
-
 // No output file holds an `inf` or `nan` token.
 void expect_no_non_finite_token(const std::filesystem::path& out) {
   for (const auto& entry : std::filesystem::directory_iterator(out)) {
@@ -41,7 +36,7 @@ TEST_P(ExplicitBlowUp, StopsWithExitThreeNamingTheStepAndTheStabilityLimit) {
   EXPECT_NE(result.err.find("numerical failure: step "), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("explicit stability limit"), std::string::npos) << result.err;
   EXPECT_EQ(result.err.find("det F"), std::string::npos) << "blames det F: " << result.err;
-  const auto summary = summary_of(out);
+  const auto summary = read_summary(out);
   EXPECT_NE(summary["status"].get<std::string>().find("error"), std::string::npos);
   EXPECT_GT(summary["facts"]["critical_time_step"].get<double>(), 0);
   expect_no_non_finite_token(out);
@@ -83,7 +78,7 @@ TEST(Issue22, FailedRunCountsTheIterationsOfItsFailedStep) {
   const auto result = run_altfem(
       {"run", source_path("tests/cli/scenes/newton_fails.json").string(), "--method", "fem", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 3);
-  const auto summary = summary_of(out);
+  const auto summary = read_summary(out);
   EXPECT_GT(summary["newton_iterations"].get<long long>(), 0);
   EXPECT_GE(summary["newton_iterations"].get<long long>(), summary["counts"]["factorisations"].get<long long>());
 }
@@ -93,7 +88,7 @@ TEST(Issue22, LbfgsReportsEvaluationsUnderItsOwnKey) {
   const auto result = run_altfem(
       {"run", source_path("tests/cli/scenes/lbfgs_cube.json").string(), "--method", "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  const auto summary = summary_of(out);
+  const auto summary = read_summary(out);
   EXPECT_EQ(summary["newton_iterations"].get<long long>(), 0);
   EXPECT_GT(summary["lbfgs_evaluations"].get<long long>(), 0);
 }
@@ -114,7 +109,7 @@ TEST(Issue22, NearIncompressibleStopsAtRoundOffAndSaysWhyAndWhatHelps) {
   const auto result = run_altfem({"run", source_path("tests/cli/scenes/near_incompressible.json").string(), "--method",
                                   "fem", "--out", out.string()});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  EXPECT_EQ(summary_of(out)["round_off_stops"].get<int>(), 1);
+  EXPECT_EQ(read_summary(out)["round_off_stops"].get<int>(), 1);
   EXPECT_NE(result.err.find("ill-conditioned"), std::string::npos) << result.err;
   EXPECT_NE(result.err.find("higher-order element"), std::string::npos) << result.err;
   const double beam = 1000 * 9.81 * 0.01 / (8 * 1e9 * std::pow(0.1, 4) / 12);

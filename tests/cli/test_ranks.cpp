@@ -3,10 +3,9 @@
 // one-process run: one summary, one set of frames, rank 0's line, the same energy.
 #include <gtest/gtest.h>
 
-#include <fstream>
-#include <nlohmann/json.hpp>
-#include <sstream>
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -18,24 +17,6 @@ namespace {
 #else
 #define SKIP_WITHOUT_MPI() (void)0
 #endif
-
-nlohmann::json read_summary(const std::filesystem::path& folder) {
-  std::ifstream in(folder / "summary.json");
-  return nlohmann::json::parse(in);
-}
-
-// The columns of log.txt's last line (step time dofs iterations linear_iterations
-// residual total_energy max_von_mises).
-std::vector<double> last_log_row(const std::filesystem::path& folder) {
-  std::ifstream in(folder / "log.txt");
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#') last = line;
-  std::istringstream columns(last);
-  std::vector<double> row;
-  for (double value; columns >> value;) row.push_back(value);
-  return row;
-}
 
 std::vector<std::string> file_names(const std::filesystem::path& folder) {
   std::vector<std::string> names;
@@ -69,7 +50,7 @@ TEST(Ranks, TwoRanksWriteTheOneRankRun) {
   EXPECT_FALSE(read_summary(folder / "one").contains("ranks"));
   EXPECT_EQ(summary["newton_iterations"], read_summary(folder / "one")["newton_iterations"]);
   // CG to 1e-12 on both: the total energies and largest stresses agree far below it.
-  const std::vector<double> row_one = last_log_row(folder / "one"), row_two = last_log_row(folder / "two");
+  const std::vector<double> row_one = last_step_of_log(folder / "one"), row_two = last_step_of_log(folder / "two");
   ASSERT_EQ(row_one.size(), 8u);
   ASSERT_EQ(row_two.size(), 8u);
   EXPECT_NEAR(row_two[6], row_one[6], 1e-8 * std::abs(row_one[6]));

@@ -12,11 +12,6 @@
 namespace altfem::test {
 namespace {
 
-nlohmann::json read_summary(const std::filesystem::path& folder) {
-  std::ifstream in(folder / "summary.json");
-  return nlohmann::json::parse(in);
-}
-
 TEST(Run, CantileverWritesTheSummaryContractAndReadableFiles) {
   const auto out = fresh_directory("cantilever") / "run";
   const auto result =
