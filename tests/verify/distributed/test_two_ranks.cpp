@@ -10,7 +10,7 @@
 //     differ; the issue asked for 2 iterations, which small problems, whose partition
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
 // fcm on the half-ball has cut cells and ghost-penalty faces on both sides of the
-// partition, dg its interior faces; every rank must reach every collective call, so the
+// partition, dg with a nonlinear material its interior faces; every rank must reach every collective call, so the
 // checks are EXPECTs (an ASSERT's early return would leave the other rank waiting).
 #include <gtest/gtest.h>
 
@@ -45,7 +45,11 @@ const std::vector<Case>& cases() {
        {"discretization/fem/element=tet10", "discretization/fem/resolution=[10,2,2]"}},
       {"fcm_cut_half_ball", "fcm", "scenes/manufactured_half_ball.json",
        {"discretization/fcm/resolution=[4,4,2]", "discretization/fcm/cell=hex8"}},
-      {"dg", "dg", "scenes/cantilever.json", {"discretization/dg/resolution=[10,2,2]"}},
+      // A linear dg integrates its matrices exactly once, whole on every rank
+      // (DgLinearSystem); another material is tabulated and divided, faces included.
+      {"dg_linear", "dg", "scenes/cantilever.json", {"discretization/dg/resolution=[10,2,2]"}},
+      {"dg_neo_hookean", "dg", "scenes/cantilever.json",
+       {"discretization/dg/resolution=[10,2,2]", "material/model=neo_hookean"}},
       {"harmonic", "harmonic", "scenes/cantilever.json", {"discretization/harmonic/convert/resolution=[10,2,2]"}},
   };
   return all;
