@@ -14,6 +14,7 @@
 #include "shared/solve/blas_info.hpp"
 #include "shared/solve/blas_thread_choice.hpp"
 #include "shared/solve/petsc_solver.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::cli {
 
@@ -36,6 +37,9 @@ int info_command() {
               SUITESPARSE_SUBSUB_VERSION, cholmod[0], cholmod[1], cholmod[2]);
   std::printf("PETSc: %s\n", petsc_available() ? (petsc_version() + " (solver.linear \"petsc\")").c_str()
                                                 : "not in this build (-DALTFEM_PETSC=OFF)");
+  std::printf("MPI: %s\n", ranks::library().empty()
+                               ? "not in this build (it comes with PETSc)"
+                               : (ranks::library() + " (mpirun -n N altfem run, docs/scaling.md)").c_str());
   const BlasInfo blas = loaded_blas();
   std::printf("BLAS: %s (%s), %d thread%s\n", blas.implementation.c_str(), blas.library.c_str(), blas.threads,
               blas.threads == 1 ? "" : "s");

@@ -62,6 +62,15 @@ void start() {
   if (launched_processes() > 0) static MpiSession session;
 }
 
+std::string library() {
+  // Callable before MPI starts; its first line names the implementation and version.
+  char text[MPI_MAX_LIBRARY_VERSION_STRING];
+  int length = 0;
+  MPI_Get_library_version(text, &length);
+  const std::string version(text, static_cast<size_t>(length));
+  return version.substr(0, version.find_first_of(",\n"));
+}
+
 int index() { return world().index; }
 int count() { return world().count; }
 
@@ -140,6 +149,7 @@ void start() {
                      " processes, but this build has no MPI (it comes with PETSc: CMake -DALTFEM_PETSC=ON)");
 }
 
+std::string library() { return {}; }
 int index() { return 0; }
 int count() { return 1; }
 Alone::Alone() : index_(0), count_(1) {}

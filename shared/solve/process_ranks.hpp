@@ -7,6 +7,7 @@
 // MPI), there is one rank and every sum is the value itself.
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace altfem::ranks {
@@ -16,6 +17,8 @@ namespace altfem::ranks {
 /// started several processes and the build has no MPI. Without mpirun it does nothing,
 /// so a plain run pays nothing for MPI.
 void start();
+/// The MPI library this build runs over ("Open MPI v4.1.4"); empty without MPI.
+std::string library();
 /// This process's rank (0 … count() − 1).
 int index();
 /// How many processes run the scene.
