@@ -121,8 +121,6 @@ void ElasticAssembler::assemble_only(const std::vector<char>& owned) {
   }
 }
 
-bool ElasticAssembler::assembles(int element) const { return owned_.empty() || owned_[element]; }
-
 const double* ElasticAssembler::element_shifts(int element) const {
   return shifts_ ? shifts_ + 9 * point_offsets_[element] : nullptr;
 }

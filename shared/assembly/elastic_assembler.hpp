@@ -73,13 +73,13 @@ public:
   /// processes (tabulated_discretization.cpp sums the shares). The mass, the loads and
   /// the stresses stay whole.
   void assemble_only(const std::vector<char>& owned);
+  /// Whether energy(), gradient() and hessian() include element e (assemble_only).
+  bool assembles(int element) const { return owned_.empty() || owned_[element]; }
 
 private:
   struct Scratch;
   /// Element e's first point's deformation shift, or nullptr when there are none.
   const double* element_shifts(int element) const;
-  /// Whether energy(), gradient() and hessian() include element e (assemble_only).
-  bool assembles(int element) const;
   void check_materials() const;
   void check_masses(const ElementMasses& masses) const;
   /// OpenMP's current thread count, at most the number of scratch blocks.

@@ -8,6 +8,7 @@
 #include "shared/assembly/element_coloring.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -72,10 +73,12 @@ WarpedLinearDiscretization::WarpedLinearDiscretization(DiscretizationParts parts
 
 WarpedLinearDiscretization::~WarpedLinearDiscretization() = default;
 
-void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u) const {
+void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u, bool own_elements_only) const {
   const TabulatedElements& elements = linear->elements();
+  const ElasticAssembler& assembler = linear->assembler();
   parallel::for_each_index(static_cast<size_t>(elements.size()), threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
+    if (own_elements_only && !assembler.assembles(e)) return;
     const ElementView element = elements[e];
     const int n = element.basis_count();
     NodeScratch& scratch = scratch_[omp_get_thread_num()];
@@ -101,38 +104,49 @@ void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u) const {
   });
 }
 
+// Over several ranks each warps and assembles the elements its linear part assembles
+// (TabulatedDiscretization's partition), and the sums make the whole on every rank.
 double WarpedLinearDiscretization::energy(const Eigen::VectorXd& u) const {
-  warp(u);
   const TabulatedElements& elements = linear->elements();
-  // In element order: the total does not depend on the thread count.
+  const ElasticAssembler& assembler = linear->assembler();
   double total = 0;
-  for (long long i = 0; i < 3 * elements.basis_offset(elements.size()); ++i)
-    total += 0.5 * corotated_[i] * stiffness_forces_[i];
-  return total;
+  ranks::collectively([&] {
+    warp(u, true);
+    // In element order: the total does not depend on the thread count.
+    for (int e = 0; e < elements.size(); ++e)
+      if (assembler.assembles(e))
+        for (long long i = 3 * elements.basis_offset(e); i < 3 * elements.basis_offset(e + 1); ++i)
+          total += 0.5 * corotated_[i] * stiffness_forces_[i];
+  });
+  return ranks::sum(total);
 }
 
 void WarpedLinearDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
-  warp(u);
+  ranks::collectively([&] { warp(u, true); });
   const TabulatedElements& elements = linear->elements();
   gradient.setZero(dof_count());
   for (int e = 0; e < elements.size(); ++e) {
+    if (!linear->assembler().assembles(e)) continue;
     const ElementView element = elements[e];
     const double* forces = stiffness_forces_.data() + 3 * elements.basis_offset(e);
     // f_a = R_e (K_e z_e)_a
     for (int a = 0; a < element.basis_count(); ++a)
       gradient.segment<3>(3 * element.basis[a]) += rotations_[e] * Eigen::Vector3d::Map(forces + 3 * a);
   }
+  ranks::sum(std::span<double>(gradient.data(), static_cast<size_t>(gradient.size())));
 }
 
 void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian,
                                          bool /*project_spd*/) const {
-  warp(u);
+  ranks::collectively([&] { warp(u, true); });
   const TabulatedElements& elements = linear->elements();
-  const BlockSparsity& sparsity = linear->assembler().sparsity();
+  const ElasticAssembler& assembler = linear->assembler();
+  const BlockSparsity& sparsity = assembler.sparsity();
   std::fill(hessian.valuePtr(), hessian.valuePtr() + hessian.nonZeros(), 0.0);
   const int* outer = hessian.outerIndexPtr();
   double* values = hessian.valuePtr();
   parallel::for_each_colored(colors_, static_cast<size_t>(elements.size()), threads(), [&](int e) {
+    if (!assembler.assembles(e)) return;
     const ElementView element = elements[e];
     const int n = element.basis_count();
     const int* offsets = sparsity.pair_offsets(e);
@@ -147,10 +161,11 @@ void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::Sparse
         }
       }
   });
+  ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
 }
 
 Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::VectorXd& u) const {
-  warp(u);
+  warp(u, false);
   const TabulatedElements& elements = linear->elements();
   Eigen::MatrixXd stresses(elements.size(), 9);
   for (int e = 0; e < elements.size(); ++e) {
@@ -172,7 +187,7 @@ Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::V
 }
 
 std::vector<Eigen::Matrix3d> WarpedLinearDiscretization::rotations(const Eigen::VectorXd& u) const {
-  warp(u);
+  warp(u, false);
   return rotations_;
 }
 

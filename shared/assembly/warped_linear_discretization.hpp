@@ -65,8 +65,9 @@ public:
   const TabulatedElements& elements() const { return linear->elements(); }
 
 private:
-  // R_e into rotations_, z_e into corotated_ and K_e z_e into stiffness_forces_.
-  void warp(const Eigen::VectorXd& u) const;
+  // R_e into rotations_, z_e into corotated_ and K_e z_e into stiffness_forces_: for
+  // every element, or with own_elements_only for those this rank assembles.
+  void warp(const Eigen::VectorXd& u, bool own_elements_only) const;
 
   Eigen::MatrixX3d rest_;
   std::vector<Eigen::MatrixXd> stiffness_;    // per element K_e, 3n × 3n, local DOF 3a+i

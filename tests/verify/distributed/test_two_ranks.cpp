@@ -51,6 +51,8 @@ const std::vector<Case>& cases() {
       {"dg_neo_hookean", "dg", "scenes/cantilever.json",
        {"discretization/dg/resolution=[10,2,2]", "material/model=neo_hookean"}},
       {"harmonic", "harmonic", "scenes/cantilever.json", {"discretization/harmonic/convert/resolution=[10,2,2]"}},
+      {"harmonic_warped", "harmonic", "scenes/cantilever.json",
+       {"discretization/harmonic/convert/resolution=[10,2,2]", "discretization/harmonic/warping=true"}},
   };
   return all;
 }
