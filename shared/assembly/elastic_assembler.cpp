@@ -64,7 +64,6 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
       materials_(std::move(materials)),
       sparsity_(elements, extra_couplings),
       colors_(color_elements(elements)),
-      owned_colors_(colors_),
       incidence_(elements),
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
       element_energies_(static_cast<std::size_t>(elements.size())) {
@@ -220,7 +219,8 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   const int* outer = hessian.outerIndexPtr();
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure, projection_failure;
-  parallel::for_each_colored(owned_colors_, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
+  parallel::for_each_colored(owned_.empty() ? colors_ : owned_colors_, static_cast<size_t>(elements_.size()),
+                             active_threads(), [&](int e) {
     const ElementView element = elements_[e];
     Scratch& scratch = scratch_[omp_get_thread_num()];
     dispatch(element.basis_count(), [&]<int N>() {

@@ -93,7 +93,7 @@ private:
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
   std::vector<char> owned_;                      // empty: every element is assembled
-  std::vector<std::vector<int>> owned_colors_;  // colors_ restricted to the owned elements
+  std::vector<std::vector<int>> owned_colors_;  // with owned_: colors_ restricted to the owned elements
   BasisIncidence incidence_;
   std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start
   const double* shifts_ = nullptr;        // set_deformation_shifts', or null
