@@ -36,7 +36,7 @@ int info_command() {
   std::printf("SuiteSparse: %d.%d.%d (CHOLMOD %d.%d.%d)\n", SUITESPARSE_MAIN_VERSION, SUITESPARSE_SUB_VERSION,
               SUITESPARSE_SUBSUB_VERSION, cholmod[0], cholmod[1], cholmod[2]);
   std::printf("PETSc: %s\n", petsc_available() ? (petsc_version() + " (solver.linear \"petsc\")").c_str()
-                                                : "not in this build (-DALTFEM_PETSC=OFF)");
+                                               : "not in this build (-DALTFEM_PETSC=OFF)");
   std::printf("MPI: %s\n", ranks::library().empty()
                                ? "not in this build (it comes with PETSc)"
                                : (ranks::library() + " (mpirun -n N altfem run, docs/scaling.md)").c_str());

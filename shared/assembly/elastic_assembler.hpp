@@ -92,7 +92,7 @@ private:
   std::vector<const Material*> materials_;
   BlockSparsity sparsity_;
   std::vector<std::vector<int>> colors_;
-  std::vector<char> owned_;                      // empty: every element is assembled
+  std::vector<char> owned_;                     // empty: every element is assembled
   std::vector<std::vector<int>> owned_colors_;  // with owned_: colors_ restricted to the owned elements
   BasisIncidence incidence_;
   std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start

@@ -167,7 +167,7 @@ private:
   const TabulatedFaces& faces_;
   Kernel kernel_;
   std::vector<std::vector<int>> colors_;  // the owned faces, by colour
-  std::vector<char> owned_;                // empty: every face
+  std::vector<char> owned_;               // empty: every face
   const BlockSparsity* sparsity_ = nullptr;
   int first_group_ = 0;
   mutable std::vector<double> face_energies_;

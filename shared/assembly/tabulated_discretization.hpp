@@ -100,7 +100,7 @@ private:
   Eigen::VectorXd lumped_mass_;
   std::unique_ptr<ExplicitMass> explicit_mass_;
   bool constant_hessian_ = false;
-  std::vector<char> term_here_;  // per term, over several ranks: whether this rank evaluates it
+  std::vector<char> term_here_;         // per term, over several ranks: whether this rank evaluates it
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)
 };
 

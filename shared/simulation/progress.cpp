@@ -9,7 +9,9 @@
 namespace altfem {
 
 Progress::Progress(int total_steps)
-    : total_(total_steps), enabled_(isatty(STDERR_FILENO) == 1 && ranks::index() == 0), start_(std::chrono::steady_clock::now()) {}
+    : total_(total_steps),
+      enabled_(isatty(STDERR_FILENO) == 1 && ranks::index() == 0),
+      start_(std::chrono::steady_clock::now()) {}
 
 Progress::~Progress() {
   if (printed_) std::fputc('\n', stderr);

@@ -271,9 +271,9 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   // A static scene's refinement cycles re-solve at the full load after its last load step,
   // one solve per cycle (events at times load_steps, load_steps + 1, …; scene_events.cpp).
   const int cycles = scene.time.is_static ? static_cast<int>(std::count_if(scene.events.begin(), scene.events.end(),
-                                                                            [&](const SceneEvent& event) {
-                                                                              return event.time >= scene.time.load_steps;
-                                                                            }))
+                                                                           [&](const SceneEvent& event) {
+                                                                             return event.time >= scene.time.load_steps;
+                                                                           }))
                                           : 0;
   const int steps = scene.time.is_static ? scene.time.load_steps + cycles : scene.time.steps;
   long long newton_iterations = 0, lbfgs_evaluations = 0, linear_iterations = 0;
@@ -290,8 +290,7 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
     log << "# step time dofs iterations linear_iterations residual total_energy max_von_mises\n";
     events.apply_due(scene.time.is_static ? 0.0 : state.time);
     for (int step = 1; step <= steps; ++step) {
-      if (scene.time.is_static)
-        state.load_factor = std::min(1.0, static_cast<double>(step) / scene.time.load_steps);
+      if (scene.time.is_static) state.load_factor = std::min(1.0, static_cast<double>(step) / scene.time.load_steps);
       StepReport report;
       try {
         report = simulation.integrator().step(state);

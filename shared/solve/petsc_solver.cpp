@@ -76,8 +76,8 @@ public:
     if (options.near_null_space.cols() > 0) {
       // MatNullSpaceCreate wants orthonormal vectors.
       const Eigen::HouseholderQR<Eigen::MatrixXd> qr(options.near_null_space);
-      near_null_space_ = qr.householderQ() * Eigen::MatrixXd::Identity(options.near_null_space.rows(),
-                                                                         options.near_null_space.cols());
+      near_null_space_ =
+          qr.householderQ() * Eigen::MatrixXd::Identity(options.near_null_space.rows(), options.near_null_space.cols());
     }
     // PETSC_COMM_WORLD is MPI's world only once PETSc has started.
     if (ranks::distributed()) communicator_ = PETSC_COMM_WORLD;
@@ -158,8 +158,8 @@ protected:
       check(VecCreateMPI(communicator_, rows, size, &rhs_), "VecCreateMPI");
       check(VecScatterCreateToAll(rhs_, &gather_, &gathered_), "VecScatterCreateToAll");
     } else {
-      check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(),
-                                      values_.data(), &matrix_),
+      check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(), values_.data(),
+                                      &matrix_),
             "MatCreateSeqAIJWithArrays");
       // Three DOFs per basis function: GAMG aggregates whole functions, as elasticity needs.
       if (block == 3) check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
@@ -335,8 +335,9 @@ bool petsc_available() { return false; }
 std::string petsc_version() { return {}; }
 
 std::unique_ptr<LinearSolver> make_petsc_solver(const LinearSolverOptions&) {
-  throw InputError("solver.linear: \"petsc\" needs a build with PETSc (CMake -DALTFEM_PETSC=ON, Debian package "
-                   "libpetsc-real3.18-dev)");
+  throw InputError(
+      "solver.linear: \"petsc\" needs a build with PETSc (CMake -DALTFEM_PETSC=ON, Debian package "
+      "libpetsc-real3.18-dev)");
 }
 
 }  // namespace altfem

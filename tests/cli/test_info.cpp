@@ -9,7 +9,8 @@ namespace {
 TEST(Info, NamesVersionsAndTheLoadedBlas) {
   const auto result = run_altfem({"info"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
-  for (const char* word : {"altfem", "Eigen: 3.4", "CGAL: 5.5", "CHOLMOD", "PETSc: ", "MPI: ", "OpenMP threads", "BLAS", "fem"})
+  for (const char* word :
+       {"altfem", "Eigen: 3.4", "CGAL: 5.5", "CHOLMOD", "PETSc: ", "MPI: ", "OpenMP threads", "BLAS", "fem"})
     EXPECT_NE(result.out.find(word), std::string::npos) << word << " missing from:\n" << result.out;
 }
 

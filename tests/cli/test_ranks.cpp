@@ -28,8 +28,10 @@ std::vector<std::string> file_names(const std::filesystem::path& folder) {
 TEST(Ranks, TwoRanksWriteTheOneRankRun) {
   SKIP_WITHOUT_MPI();
   const auto folder = fresh_directory("two-ranks");
-  const std::vector<std::string> scene{"run", source_path("scenes/cantilever.json").string(), "--method", "fem",
-                                       "--set", "solver/linear=petsc", "--set", "solver/linear_tolerance=1e-12",
+  const std::vector<std::string> scene{"run",      source_path("scenes/cantilever.json").string(),
+                                       "--method", "fem",
+                                       "--set",    "solver/linear=petsc",
+                                       "--set",    "solver/linear_tolerance=1e-12",
                                        "--out"};
   std::vector<std::string> one = scene, two = scene;
   one.push_back((folder / "one").string());

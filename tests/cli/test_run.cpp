@@ -95,9 +95,9 @@ TEST(Run, NewtonFailureExitsThreeNamingStepAndIteration) {
 TEST(Run, PetscOptionsWithAnUnknownTypeAreOneLineOfBadInputAndNoOutput) {
   SKIP_WITHOUT_PETSC();
   const auto out = fresh_directory("petsc-bad-options") / "run";
-  const auto result = run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--set",
-                                  "solver/linear=petsc", "--set", "solver/petsc_options=-pc_type no_such_type", "--out",
-                                  out.string()});
+  const auto result =
+      run_altfem({"run", source_path("scenes/cantilever.json").string(), "--method", "fem", "--set",
+                  "solver/linear=petsc", "--set", "solver/petsc_options=-pc_type no_such_type", "--out", out.string()});
   EXPECT_EQ(result.exit_code, 2) << result.err;
   const auto lines = lines_of(result.err);
   ASSERT_EQ(lines.size(), 1u) << result.err;

@@ -41,17 +41,25 @@ void PrintTo(const Case& c, std::ostream* out) { *out << c.name; }
 const std::vector<Case>& cases() {
   static const std::vector<Case> all{
       {"fem_hex20", "fem", "scenes/cantilever.json", {}},
-      {"fem_tet10", "fem", "scenes/cantilever.json",
+      {"fem_tet10",
+       "fem",
+       "scenes/cantilever.json",
        {"discretization/fem/element=tet10", "discretization/fem/resolution=[10,2,2]"}},
-      {"fcm_cut_half_ball", "fcm", "scenes/manufactured_half_ball.json",
+      {"fcm_cut_half_ball",
+       "fcm",
+       "scenes/manufactured_half_ball.json",
        {"discretization/fcm/resolution=[4,4,2]", "discretization/fcm/cell=hex8"}},
       // A linear dg integrates its matrices exactly once, whole on every rank
       // (DgLinearSystem); another material is tabulated and divided, faces included.
       {"dg_linear", "dg", "scenes/cantilever.json", {"discretization/dg/resolution=[10,2,2]"}},
-      {"dg_neo_hookean", "dg", "scenes/cantilever.json",
+      {"dg_neo_hookean",
+       "dg",
+       "scenes/cantilever.json",
        {"discretization/dg/resolution=[10,2,2]", "material/model=neo_hookean"}},
       {"harmonic", "harmonic", "scenes/cantilever.json", {"discretization/harmonic/convert/resolution=[10,2,2]"}},
-      {"harmonic_warped", "harmonic", "scenes/cantilever.json",
+      {"harmonic_warped",
+       "harmonic",
+       "scenes/cantilever.json",
        {"discretization/harmonic/convert/resolution=[10,2,2]", "discretization/harmonic/warping=true"}},
   };
   return all;
@@ -65,8 +73,7 @@ struct Built {
     for (const std::string& assignment : more) overrides.push_back(parse_scene_override(assignment));
     scene = std::make_unique<Scene>(load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / c.scene, overrides));
     geometry = std::make_unique<SceneGeometry>(load_scene_geometry(*scene));
-    simulation =
-        std::make_unique<Simulation>(*scene, *geometry, c.method, test::registered_method(c.method).factory);
+    simulation = std::make_unique<Simulation>(*scene, *geometry, c.method, test::registered_method(c.method).factory);
   }
   std::unique_ptr<Scene> scene;
   std::unique_ptr<SceneGeometry> geometry;
