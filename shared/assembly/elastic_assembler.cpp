@@ -219,43 +219,44 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
   const int* outer = hessian.outerIndexPtr();
   std::fill_n(values, hessian.nonZeros(), 0.0);
   FirstFailure failure, projection_failure;
-  parallel::for_each_colored(
-      owned_.empty() ? colors_ : owned_colors_, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
-        const ElementView element = elements_[e];
-        Scratch& scratch = scratch_[omp_get_thread_num()];
-        dispatch(element.basis_count(), [&]<int N>() {
-          const int n = element.basis_count();
-          auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
-            kernel::gather<N>(element, displacement, u);
-            kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows, element_shifts(e));
-            if (!stiffness.allFinite()) {
-              failure.record(e);
-              return;
-            }
-            if (project_spd) {
-              // An exception must not leave the OpenMP region (it would terminate the program).
-              try {
-                project_to_spd(stiffness);
-              } catch (const NumericalError&) {
-                projection_failure.record(e);
-                return;
-              }
-            }
-            kernel::scatter<N>(element.basis, sparsity_.pair_offsets(e), stiffness, outer, values);
-          };
-          if constexpr (N == Eigen::Dynamic) {
-            scratch.u.conservativeResize(n, 3);
-            scratch.stiffness.conservativeResize(3 * n, 3 * n);
-            scratch.tangent_rows.conservativeResize(3 * n, 9);
-            run(scratch.u, scratch.stiffness, scratch.tangent_rows);
-          } else {
-            kernel::NodeMatrix<N> u;
-            kernel::LocalMatrix<N> stiffness;
-            kernel::TangentRows<N> rows;
-            run(u, stiffness, rows);
+  // Every element, or this rank's (assemble_only).
+  const auto& colors = owned_.empty() ? colors_ : owned_colors_;
+  parallel::for_each_colored(colors, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
+    const ElementView element = elements_[e];
+    Scratch& scratch = scratch_[omp_get_thread_num()];
+    dispatch(element.basis_count(), [&]<int N>() {
+      const int n = element.basis_count();
+      auto run = [&](kernel::NodeMatrix<N>& u, kernel::LocalMatrix<N>& stiffness, kernel::TangentRows<N>& rows) {
+        kernel::gather<N>(element, displacement, u);
+        kernel::stiffness<N>(element, *materials_[element.material], u, stiffness, rows, element_shifts(e));
+        if (!stiffness.allFinite()) {
+          failure.record(e);
+          return;
+        }
+        if (project_spd) {
+          // An exception must not leave the OpenMP region (it would terminate the program).
+          try {
+            project_to_spd(stiffness);
+          } catch (const NumericalError&) {
+            projection_failure.record(e);
+            return;
           }
-        });
-      });
+        }
+        kernel::scatter<N>(element.basis, sparsity_.pair_offsets(e), stiffness, outer, values);
+      };
+      if constexpr (N == Eigen::Dynamic) {
+        scratch.u.conservativeResize(n, 3);
+        scratch.stiffness.conservativeResize(3 * n, 3 * n);
+        scratch.tangent_rows.conservativeResize(3 * n, 9);
+        run(scratch.u, scratch.stiffness, scratch.tangent_rows);
+      } else {
+        kernel::NodeMatrix<N> u;
+        kernel::LocalMatrix<N> stiffness;
+        kernel::TangentRows<N> rows;
+        run(u, stiffness, rows);
+      }
+    });
+  });
   if (failure.item() >= 0)
     throw_non_finite(elements_[failure.item()], failure.item(), displacement,
                      *materials_[elements_[failure.item()].material], "tangent stiffness");

@@ -30,7 +30,6 @@ namespace {
 struct World {
   int index = 0;
   int count = 1;
-  bool started = false;
 };
 
 World& world() {
@@ -47,7 +46,6 @@ struct MpiSession {
     MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided);
     MPI_Comm_rank(MPI_COMM_WORLD, &world().index);
     MPI_Comm_size(MPI_COMM_WORLD, &world().count);
-    world().started = true;
   }
   ~MpiSession() {
     int finalized = 0;
@@ -108,11 +106,7 @@ void broadcast(std::span<int> values) {
   if (distributed()) MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
 }
 
-void collectively(const std::function<void()>& body) {
-  if (!distributed()) {
-    body();
-    return;
-  }
+void collectively_over_ranks(const std::function<void()>& body) {
   int kind = 0;  // the exit code the failure stands for: 2 input, 3 numerical, 1 other
   std::string message;
   try {
@@ -158,7 +152,7 @@ void sum(std::span<double>) {}
 double sum(double value) { return value; }
 std::vector<double> gather(double value) { return {value}; }
 void broadcast(std::span<int>) {}
-void collectively(const std::function<void()>& body) { body(); }
+void collectively_over_ranks(const std::function<void()>& body) { body(); }
 
 #endif
 

@@ -47,9 +47,17 @@ private:
   int index_, count_;
 };
 
+/// The failure exchange of collectively(), which calls it only over several ranks.
+void collectively_over_ranks(const std::function<void()>& body);
+
 /// Runs `body` on every rank; if it throws on any rank, every rank throws: the lowest
 /// failing rank's exception, a NumericalError or InputError with its message (so that no
-/// rank waits forever in a sum the failing one never reaches).
-void collectively(const std::function<void()>& body);
+/// rank waits forever in a sum the failing one never reaches). On one rank it is a plain
+/// call: assembly calls it every time, and a std::function of its captures would allocate.
+template <typename Body>
+void collectively(Body&& body) {
+  if (distributed()) collectively_over_ranks(std::function<void()>(std::ref(body)));
+  else body();
+}
 
 }  // namespace altfem::ranks
