@@ -143,7 +143,7 @@ public:
 
     surface_.evaluator = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
     const ElementBasisEvaluator& evaluator = *surface_.evaluator;
-    const Eigen::MatrixXd& vertices = surface_.surface.vertices;
+    const Eigen::MatrixXd vertices = embedding_points(surface_.surface);
     switch (spec_.embedding) {  // one of the three embeddings of §7
       case Embedding::element: surface_.embedding = std::make_unique<BasisEmbedding>(evaluator, vertices); break;
       case Embedding::stitched:

@@ -97,7 +97,9 @@ SurfaceFrame read_surface_frame(const std::filesystem::path& file) {
 }
 
 Eigen::MatrixX3d reference_at(const SurfaceFrame& reference, const Eigen::MatrixX3d& rest_points) {
-  const SurfaceMesh rest_surface{reference.deformed - reference.displacement, reference.triangles};
+  SurfaceMesh rest_surface;
+  rest_surface.vertices = reference.deformed - reference.displacement;
+  rest_surface.triangles = reference.triangles;
   const SurfaceProjection projection(rest_surface);
   Eigen::MatrixX3d deformed(rest_points.rows(), 3);
   for (Eigen::Index i = 0; i < rest_points.rows(); ++i) {

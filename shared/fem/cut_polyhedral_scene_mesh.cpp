@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
+#include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/merge_slivers.hpp"
 
 namespace altfem {
@@ -39,6 +40,9 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
     }
   }
   PolyhedralSceneMesh result = mesh;
+  // The surface it deforms, cut by the same blade: as Simulation cuts the scene's common
+  // surface, so dg and harmonic deform the same vertices as the other methods.
+  result.surface = cut_surface(mesh.surface, cut.blade).surface;
   result.cell_levels = std::move(levels);
   result.sliced.mesh = std::move(pieces);
   result.converted.reset();

@@ -2,8 +2,9 @@
 // A polyhedral method's mesh (dg, harmonic) cut by a scene's `cut` event: the polyhedra
 // cut (cut_polyhedral_mesh), the pieces below the event's merge fraction of their cell
 // merged into a neighbour (Kaufmann et al. 2009 §9.4: negligible pieces make the element
-// matrices ill-conditioned), the surfaces it deforms and loads kept, and the converted
-// volume mesh dropped, since its cells no longer match.
+// matrices ill-conditioned), the surface it deforms cut by the same blade (cut_surface),
+// the surface loads act on kept, and the converted volume mesh dropped, since its cells no
+// longer match.
 #include <memory>
 #include <nlohmann/json.hpp>
 

@@ -10,7 +10,18 @@ namespace altfem {
 struct SurfaceMesh {
   Eigen::MatrixXd vertices;   ///< #vertices × 3
   Eigen::MatrixXi triangles;  ///< #triangles × 3, counter-clockwise seen from outside
+  /// Empty, or #vertices × 3: where each vertex reads the field it moves with, relative to
+  /// its position. A cut (cut_surface) sets it on the vertices of its cut, a hair inside
+  /// the material they bound, so that the two copies of a point of the cut each move with
+  /// their own side rather than whichever piece a point on the blade is found in.
+  Eigen::MatrixXd embedding_offsets;
 };
+
+/// Where each vertex is embedded in a method's basis: its position plus its offset.
+inline Eigen::MatrixXd embedding_points(const SurfaceMesh& surface) {
+  if (surface.embedding_offsets.size() == 0) return surface.vertices;
+  return surface.vertices + surface.embedding_offsets;
+}
 
 /// Reads OFF, OBJ, STL or PLY through CGAL and checks, in this order: the file exists
 /// and is not empty; (OFF) header counts, finite coordinates and indices, with line

@@ -200,6 +200,14 @@ public:
     }
   }
   const nlohmann::json& records() const { return records_; }
+  // How many times a cut left a piece of the surface whole (cut_surface's facts).
+  int surface_pieces_left_whole() const {
+    const nlohmann::json::json_pointer whole("/facts/surface/pieces_left_whole");
+    int count = 0;
+    for (const nlohmann::json& record : records_)
+      if (record.contains(whole)) count += record[whole].get<int>();
+    return count;
+  }
 
 private:
   const std::vector<SceneEvent>& events_;
@@ -340,6 +348,15 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
       if (reports) std::fprintf(stderr, "altfem: warning: %s\n", hint.c_str());
       summary["warnings"].push_back(hint);
     }
+  }
+  if (const int whole = events.surface_pieces_left_whole(); whole > 0) {
+    const std::string warning =
+        std::to_string(whole) +
+        " time(s) a cut left a piece of the deformed surface uncut: its earlier cuts made it intersect itself (a "
+        "notch's caps on one another, or many cuts through one place), which CGAL's corefinement cannot cut; the "
+        "volume was cut, that piece of the surface was not, and its vertices move with the side each lies in";
+    if (reports) std::fprintf(stderr, "altfem: warning: %s\n", warning.c_str());
+    summary["warnings"].push_back(warning);
   }
   const LinearSolverStatistics statistics = simulation.linear_statistics();
   const double total = loading_seconds + seconds_since(start);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/cut_surface.hpp"
 #include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/surface_traction.hpp"
@@ -101,7 +102,7 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
 
 Simulation::Simulation(const Scene& scene, const SceneGeometry& geometry, std::string method_name,
                        const MethodFactory& factory, MethodRebuilder rebuild)
-    : scene_(scene), geometry_(geometry), method_name_(std::move(method_name)), rebuild_(std::move(rebuild)) {
+    : scene_(scene), geometry_(&geometry), method_name_(std::move(method_name)), rebuild_(std::move(rebuild)) {
   method_ = factory(scene, geometry);
   quadrature_seconds_ = method_->quadrature_seconds();
   scene_loads_ = scene_loads(scene, geometry, *method_, method_name_);
@@ -249,6 +250,16 @@ EventRecord Simulation::cut(const SceneEvent& event) {
   const BodyMeasures before = measure();
   const auto start = std::chrono::steady_clock::now();
   const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
+  // The surface every method deforms is cut by the same blade, so the frames show the body
+  // open and `compare` still measures the same vertices.
+  if (const SurfaceMesh* surface = geometry_->common_surface()) {
+    SurfaceCut cut = cut_surface(*surface, event.blade);
+    record.facts["surface"] = std::move(cut.facts);
+    SceneGeometry cut_geometry = *geometry_;
+    (cut_geometry.surface ? cut_geometry.surface : cut_geometry.shape_surface) = std::move(cut.surface);
+    cut_geometry_ = std::move(cut_geometry);
+    geometry_ = &*cut_geometry_;
+  }
   record.seconds.geometry = seconds_since(start);
   rebuild_on(*mesh, record);
   finish_record(record, before);
@@ -271,7 +282,7 @@ EventRecord Simulation::refine(const SceneEvent& event) {
 
 void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   auto start = std::chrono::steady_clock::now();
-  std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, geometry_, mesh);
+  std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, *geometry_, mesh);
   record.seconds.integration = seconds_since(start);
   quadrature_seconds_ += rebuilt->quadrature_seconds();
 
@@ -289,7 +300,7 @@ void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   const std::unique_ptr<MethodInstance> previous = std::move(method_);
   method_ = std::move(rebuilt);
   measure_basis_.reset();
-  scene_loads_ = scene_loads(scene_, geometry_, *method_, method_name_);
+  scene_loads_ = scene_loads(scene_, *geometry_, *method_, method_name_);
   std::unique_ptr<LinearSolver> solver = make_linear_solver(linear_solver_options(scene_, *method_));
   layer_discretization(std::move(solver));
   if (explicit_steps_) critical_time_step_ = estimate_critical_time_step(*timed_);

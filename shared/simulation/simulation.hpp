@@ -71,7 +71,10 @@ private:
   void finish_record(EventRecord& record, const BodyMeasures& before);
 
   const Scene& scene_;
-  const SceneGeometry& geometry_;
+  // The scene's geometry, or after a cut `cut_geometry_`: its copy with the common surface
+  // cut too (cut_surface), which the methods rebuilt after the cut deform.
+  const SceneGeometry* geometry_;
+  std::optional<SceneGeometry> cut_geometry_;
   std::string method_name_;
   MethodRebuilder rebuild_;
   std::unique_ptr<MethodInstance> method_;

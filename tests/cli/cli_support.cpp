@@ -23,11 +23,27 @@ std::string read_all(const std::filesystem::path& path) {
 }
 }  // namespace
 
+namespace {
+// The folders this test process made; removed when it exits, so a test run leaves
+// nothing under the system temporary folder (ALTFEM_KEEP_TEST_FOLDERS=1 keeps them
+// for a look at what a failing test's run wrote).
+struct MadeFolders {
+  std::vector<std::filesystem::path> paths;
+  ~MadeFolders() {
+    if (std::getenv("ALTFEM_KEEP_TEST_FOLDERS") != nullptr) return;
+    std::error_code ignored;
+    for (const auto& path : paths) std::filesystem::remove_all(path, ignored);
+  }
+};
+}  // namespace
+
 std::filesystem::path fresh_directory(const std::string& name) {
   static std::mt19937 random{std::random_device{}()};
+  static MadeFolders made;
   const auto path = std::filesystem::temp_directory_path() / ("altfem-cli-" + name + "-" + std::to_string(random()));
   std::filesystem::remove_all(path);
   std::filesystem::create_directories(path);
+  made.paths.push_back(path);
   return path;
 }
 

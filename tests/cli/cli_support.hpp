@@ -18,7 +18,8 @@ CommandResult run_altfem(const std::vector<std::string>& arguments, const std::s
 /// Runs `mpirun -n <ranks> --oversubscribe altfem <arguments>` (allowed as root, one
 /// OpenMP thread per rank).
 CommandResult run_altfem_on_ranks(int ranks, const std::vector<std::string>& arguments);
-/// A fresh empty folder under the system temporary folder.
+/// A fresh empty folder under the system temporary folder, removed when the test process
+/// exits unless ALTFEM_KEEP_TEST_FOLDERS is set.
 std::filesystem::path fresh_directory(const std::string& name);
 std::filesystem::path source_path(const std::string& relative);
 /// The summary.json a run wrote into `folder`.

@@ -33,8 +33,11 @@ double surface_difference(const test::StaticSurface& surface, const test::Static
 }
 
 double volume_ratio(const test::StaticSurface& surface) {
-  SurfaceMesh deformed{surface.vertices + surface.displacement, surface.triangles};
-  return surface_volume(deformed) / surface_volume(SurfaceMesh{surface.vertices, surface.triangles});
+  SurfaceMesh rest, deformed;
+  rest.vertices = surface.vertices;
+  rest.triangles = deformed.triangles = surface.triangles;
+  deformed.vertices = surface.vertices + surface.displacement;
+  return surface_volume(deformed) / surface_volume(rest);
 }
 
 TEST(DgWarpingCantilever, WarpedDgFollowsTheCorotatedFemWhileLinearDgInflates) {

@@ -1,0 +1,187 @@
+// cut_surface (issue #33): the surface a method deforms, opened by a blade and closed by
+// caps. Every figure here is exact: a cut moves no material, so each side's enclosed
+// volume is the box's part on that side and the caps cover the cross-section.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <numeric>
+
+#include "shared/mesh/cut_surface.hpp"
+#include "tests/unit/surfaces.hpp"
+
+namespace altfem {
+namespace {
+
+using test::box_surface;
+
+// Triangles grouped by connected pieces (shared vertices).
+std::vector<SurfaceMesh> pieces_of(const SurfaceMesh& surface) {
+  std::vector<int> root(static_cast<std::size_t>(surface.vertices.rows()));
+  std::iota(root.begin(), root.end(), 0);
+  const auto find = [&](int v) {
+    while (root[v] != v) v = root[v] = root[root[v]];
+    return v;
+  };
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    for (int k = 1; k < 3; ++k) root[find(surface.triangles(t, k))] = find(surface.triangles(t, 0));
+  std::map<int, std::vector<Eigen::Index>> triangles_of;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) triangles_of[find(surface.triangles(t, 0))].push_back(t);
+  std::vector<SurfaceMesh> pieces;
+  for (const auto& [root_vertex, triangles] : triangles_of) {
+    SurfaceMesh piece;
+    piece.vertices = surface.vertices;
+    piece.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      piece.triangles.row(static_cast<Eigen::Index>(t)) = surface.triangles.row(triangles[t]);
+    pieces.push_back(piece);
+  }
+  return pieces;
+}
+
+// Every edge is used once in each direction: closed, consistently oriented.
+bool closed_and_oriented(const SurfaceMesh& surface) {
+  std::map<std::pair<int, int>, int> uses;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++uses[{surface.triangles(t, k), surface.triangles(t, (k + 1) % 3)}];
+  for (const auto& [edge, count] : uses)
+    if (count != 1 || uses.count({edge.second, edge.first}) == 0) return false;
+  return true;
+}
+
+// Total area of the triangles lying in the plane x = `x`.
+double area_in_plane(const SurfaceMesh& surface, double x) {
+  double area = 0;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)),
+                          b = surface.vertices.row(surface.triangles(t, 1)),
+                          c = surface.vertices.row(surface.triangles(t, 2));
+    if (std::abs(a.x() - x) < 1e-15 && std::abs(b.x() - x) < 1e-15 && std::abs(c.x() - x) < 1e-15)
+      area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
+TEST(CutSurface, APlaneSplitsABoxIntoTwoClosedPiecesWithTheirExactVolumes) {
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut cut = cut_surface(box, CuttingPlane(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX()));
+  // The input's vertices keep their indices.
+  EXPECT_EQ(cut.surface.vertices.topRows(8), box.vertices);
+  const std::vector<SurfaceMesh> pieces = pieces_of(cut.surface);
+  ASSERT_EQ(pieces.size(), 2u);
+  std::vector<double> volumes = {surface_volume(pieces[0]), surface_volume(pieces[1])};
+  std::sort(volumes.begin(), volumes.end());
+  EXPECT_NEAR(volumes[0], 0.3, 1e-15);
+  EXPECT_NEAR(volumes[1], 0.7, 1e-15);
+  for (const SurfaceMesh& piece : pieces) EXPECT_TRUE(closed_and_oriented(piece));
+  // A cap per side over the unit cross-section.
+  EXPECT_NEAR(area_in_plane(cut.surface, 0.3), 2.0, 1e-15);
+  EXPECT_GT(cut.facts["cap_triangles"].get<int>(), 0);
+}
+
+TEST(CutSurface, EachCopyOfACutPointReadsItsFieldInsideItsOwnSide) {
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut cut = cut_surface(box, CuttingPlane(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX()));
+  const Eigen::MatrixXd points = embedding_points(cut.surface);
+  const double hair = 1e-7 * std::sqrt(3.0);
+  int on_cut = 0;
+  for (Eigen::Index v = 0; v < cut.surface.vertices.rows(); ++v) {
+    if (cut.surface.vertices(v, 0) != 0.5) {
+      EXPECT_EQ(points.row(v), cut.surface.vertices.row(v)) << "vertex " << v;
+      continue;
+    }
+    ++on_cut;
+    // Which side this copy bounds: where its triangles' other corners are.
+    double side = 0;
+    for (Eigen::Index t = 0; t < cut.surface.triangles.rows(); ++t)
+      for (int k = 0; k < 3; ++k)
+        if (cut.surface.triangles(t, k) == v)
+          for (int j = 0; j < 3; ++j) side += cut.surface.vertices(cut.surface.triangles(t, j), 0) - 0.5;
+    ASSERT_NE(side, 0) << "vertex " << v;
+    const Eigen::Vector3d offset = points.row(v) - cut.surface.vertices.row(v);
+    EXPECT_NEAR(offset.norm(), hair, 1e-8 * hair);
+    EXPECT_GT(offset.x() * side, 0) << "vertex " << v;
+    // Into the box, not out of it.
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_GE(points(v, axis), 0.0);
+      EXPECT_LE(points(v, axis), 1.0);
+    }
+  }
+  EXPECT_GE(on_cut, 8);  // the four corners of the section, each twice, at least
+}
+
+TEST(CutSurface, ABladeThroughVerticesAndAlongEdgesIsAnOrdinaryCut) {
+  // The plane x + y = 1 holds the box edges (1, 0, z) and (0, 1, z) and its faces' diagonals.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut cut = cut_surface(box, CuttingPlane(Eigen::Vector3d(1, 0, 0), Eigen::Vector3d(1, 1, 0)));
+  const std::vector<SurfaceMesh> pieces = pieces_of(cut.surface);
+  ASSERT_EQ(pieces.size(), 2u);
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_NEAR(surface_volume(piece), 0.5, 1e-15);
+    EXPECT_TRUE(closed_and_oriented(piece));
+  }
+}
+
+TEST(CutSurface, ABladeOnAFaceOrMissingTheBodySeparatesNothing) {
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  for (const double x : {0.0, 1.0, 2.0}) {
+    const SurfaceCut cut = cut_surface(box, CuttingPlane(Eigen::Vector3d(x, 0, 0), Eigen::Vector3d::UnitX()));
+    EXPECT_EQ(cut.surface.vertices, box.vertices);
+    EXPECT_EQ(cut.surface.triangles, box.triangles);
+    EXPECT_EQ(cut.surface.embedding_offsets.size(), 0);
+    EXPECT_EQ(cut.facts["cap_triangles"], 0);
+  }
+}
+
+TEST(CutSurface, AFiniteBladeNotchesTheBoxWithoutSeparatingIt) {
+  // The plane x = 0.5 where y < 0.4: a notch from the face y = 0 to y = 0.4, through z.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const CuttingPlane blade = polygon_blade({Eigen::Vector3d(0.5, -1, -1), Eigen::Vector3d(0.5, 0.4, -1),
+                                            Eigen::Vector3d(0.5, 0.4, 2), Eigen::Vector3d(0.5, -1, 2)});
+  const SurfaceCut cut = cut_surface(box, blade);
+  ASSERT_EQ(pieces_of(cut.surface).size(), 1u);
+  EXPECT_TRUE(closed_and_oriented(cut.surface));
+  EXPECT_NEAR(surface_volume(cut.surface), 1.0, 1e-15);
+  EXPECT_NEAR(area_in_plane(cut.surface, 0.5), 2 * 0.4, 1e-15);
+}
+
+TEST(CutSurface, APieceAtAPointCutsThatPieceAlone) {
+  SurfaceMesh two = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceMesh other = box_surface(Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(1, 3, 1));
+  two.vertices.conservativeResize(16, 3);
+  two.vertices.bottomRows(8) = other.vertices;
+  two.triangles.conservativeResize(24, 3);
+  two.triangles.bottomRows(12) = other.triangles.array() + 8;
+  CuttingPlane blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX());
+  blade.piece_at = Eigen::Vector3d(0.5, 2.5, 0.5);
+  const SurfaceCut cut = cut_surface(two, blade);
+  const std::vector<SurfaceMesh> pieces = pieces_of(cut.surface);
+  ASSERT_EQ(pieces.size(), 3u);
+  double total = 0;
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    total += surface_volume(piece);
+  }
+  EXPECT_NEAR(total, 2.0, 1e-14);
+  // The first box is as it was.
+  EXPECT_EQ(cut.surface.triangles.topRows(12), two.triangles.topRows(12));
+}
+
+TEST(CutSurface, ASecondCutAcrossTheFirstKeepsEveryPieceClosed) {
+  const SurfaceMesh sphere = test::sphere(1.0, 12, 24, Eigen::Vector3d::Zero());
+  const SurfaceCut first = cut_surface(sphere, CuttingPlane(Eigen::Vector3d(0.1, 0, 0), Eigen::Vector3d(1, 0.2, 0)));
+  EXPECT_TRUE(closed_and_oriented(first.surface));
+  const SurfaceCut second =
+      cut_surface(first.surface, CuttingPlane(Eigen::Vector3d(0, 0.05, 0), Eigen::Vector3d(0.1, 1, 0.3)));
+  const std::vector<SurfaceMesh> pieces = pieces_of(second.surface);
+  ASSERT_EQ(pieces.size(), 4u);
+  double total = 0;
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    total += surface_volume(piece);
+  }
+  EXPECT_NEAR(total, surface_volume(sphere), 1e-13);
+  EXPECT_EQ(second.surface.vertices.topRows(sphere.vertices.rows()), sphere.vertices);
+}
+
+}  // namespace
+}  // namespace altfem
