@@ -17,6 +17,7 @@
 #include <optional>
 
 #include "shared/mesh/cut_surface.hpp"
+#include "shared/mesh/mesh_components.hpp"
 
 namespace altfem {
 
@@ -26,22 +27,6 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-// Per triangle, the connected piece of the surface it belongs to (union–find over shared
-// vertices), numbered by its lowest vertex's root.
-std::vector<int> pieces_of(const SurfaceMesh& surface) {
-  std::vector<int> root(static_cast<std::size_t>(surface.vertices.rows()));
-  std::iota(root.begin(), root.end(), 0);
-  const auto find = [&](int v) {
-    while (root[v] != v) v = root[v] = root[root[v]];
-    return v;
-  };
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
-    for (int k = 1; k < 3; ++k) root[find(surface.triangles(t, k))] = find(surface.triangles(t, 0));
-  std::vector<int> piece(static_cast<std::size_t>(surface.triangles.rows()));
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) piece[t] = find(surface.triangles(t, 0));
-  return piece;
-}
 
 Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
@@ -316,16 +301,15 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
 
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   const ExactBlade exact(blade);
-  const std::vector<int> piece_of = pieces_of(surface);
+  const std::vector<int> piece_of = surface_vertex_pieces(surface);
   std::map<int, std::vector<int>> triangles_of;
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) triangles_of[piece_of[t]].push_back(static_cast<int>(t));
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    triangles_of[piece_of[surface.triangles(t, 0)]].push_back(static_cast<int>(t));
   std::optional<int> only;
   if (blade.piece_at) {
     Eigen::Index nearest = 0;
     (surface.vertices.rowwise() - blade.piece_at->transpose()).rowwise().squaredNorm().minCoeff(&nearest);
-    for (Eigen::Index t = 0; t < surface.triangles.rows() && !only; ++t)
-      for (int k = 0; k < 3; ++k)
-        if (surface.triangles(t, k) == nearest) only = piece_of[t];
+    only = piece_of[nearest];
   }
 
   CutPieces cut;

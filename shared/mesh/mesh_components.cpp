@@ -66,6 +66,19 @@ int surface_solid_components(const SurfaceMesh& surface) {
       std::count_if(shell_volume.begin(), shell_volume.end(), [](const auto& shell) { return shell.second > 0; }));
 }
 
+std::vector<int> surface_vertex_pieces(const SurfaceMesh& surface) {
+  DisjointSets sets(static_cast<int>(surface.vertices.rows()));
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    for (int k = 1; k < 3; ++k) {
+      // The lower vertex stays the root, so each piece is numbered by its lowest vertex.
+      const int a = sets.find(surface.triangles(t, 0)), b = sets.find(surface.triangles(t, k));
+      sets.join(std::min(a, b), std::max(a, b));
+    }
+  std::vector<int> piece(static_cast<std::size_t>(surface.vertices.rows()));
+  for (std::size_t v = 0; v < piece.size(); ++v) piece[v] = sets.find(static_cast<int>(v));
+  return piece;
+}
+
 int shape_components(const AnalyticShape& shape, double spacing) {
   const Eigen::AlignedBox3d box = shape.bounding_box();
   Eigen::Vector3i n;

@@ -1,6 +1,8 @@
 #pragma once
 // Connected pieces of meshes and shapes: what `tetrahedralize_geometry` compares so that
 // a mesh never glues together parts that the geometry keeps apart (#21 item 5).
+#include <vector>
+
 #include "shared/geometry/analytic_shape.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -18,6 +20,11 @@ int polyhedral_mesh_components(const PolyhedralMesh& mesh);
 /// Solid pieces bounded by a closed, outward-oriented surface: its shells (triangles
 /// joined through edges) that enclose positive volume; a cavity's inward shell is not one.
 int surface_solid_components(const SurfaceMesh& surface);
+
+/// Per vertex of `surface`, the piece of it the vertex lies in: triangles joined through
+/// shared vertices, each piece numbered by its lowest vertex. A vertex no triangle uses is
+/// its own piece.
+std::vector<int> surface_vertex_pieces(const SurfaceMesh& surface);
 
 /// Pieces of {level_set < 0} on a voxel grid of the shape's bounding box with at most
 /// `spacing` between samples (face-connected voxels whose centres are inside). Parts

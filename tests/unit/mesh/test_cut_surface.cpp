@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <map>
-#include <numeric>
 
 #include "shared/mesh/cut_surface.hpp"
+#include "shared/mesh/mesh_components.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem {
@@ -14,26 +14,20 @@ namespace {
 
 using test::box_surface;
 
-// Triangles grouped by connected pieces (shared vertices).
+// The surface's pieces, each as the triangles of one piece (surface_vertex_pieces).
 std::vector<SurfaceMesh> pieces_of(const SurfaceMesh& surface) {
-  std::vector<int> root(static_cast<std::size_t>(surface.vertices.rows()));
-  std::iota(root.begin(), root.end(), 0);
-  const auto find = [&](int v) {
-    while (root[v] != v) v = root[v] = root[root[v]];
-    return v;
-  };
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
-    for (int k = 1; k < 3; ++k) root[find(surface.triangles(t, k))] = find(surface.triangles(t, 0));
+  const std::vector<int> piece_of = surface_vertex_pieces(surface);
   std::map<int, std::vector<Eigen::Index>> triangles_of;
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) triangles_of[find(surface.triangles(t, 0))].push_back(t);
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    triangles_of[piece_of[surface.triangles(t, 0)]].push_back(t);
   std::vector<SurfaceMesh> pieces;
-  for (const auto& [root_vertex, triangles] : triangles_of) {
-    SurfaceMesh piece;
-    piece.vertices = surface.vertices;
-    piece.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (const auto& [piece, triangles] : triangles_of) {
+    SurfaceMesh shell;
+    shell.vertices = surface.vertices;
+    shell.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
     for (std::size_t t = 0; t < triangles.size(); ++t)
-      piece.triangles.row(static_cast<Eigen::Index>(t)) = surface.triangles.row(triangles[t]);
-    pieces.push_back(piece);
+      shell.triangles.row(static_cast<Eigen::Index>(t)) = surface.triangles.row(triangles[t]);
+    pieces.push_back(shell);
   }
   return pieces;
 }
@@ -46,6 +40,18 @@ bool closed_and_oriented(const SurfaceMesh& surface) {
   for (const auto& [edge, count] : uses)
     if (count != 1 || uses.count({edge.second, edge.first}) == 0) return false;
   return true;
+}
+
+// The summed volume of the surface's pieces, each checked closed, and their count.
+double volume_of_closed_pieces(const SurfaceMesh& surface, std::size_t count) {
+  const std::vector<SurfaceMesh> pieces = pieces_of(surface);
+  EXPECT_EQ(pieces.size(), count);
+  double total = 0;
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    total += surface_volume(piece);
+  }
+  return total;
 }
 
 // Total area of the triangles lying in the plane x = `x`.
@@ -154,14 +160,7 @@ TEST(CutSurface, APieceAtAPointCutsThatPieceAlone) {
   CuttingPlane blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX());
   blade.piece_at = Eigen::Vector3d(0.5, 2.5, 0.5);
   const SurfaceCut cut = cut_surface(two, blade);
-  const std::vector<SurfaceMesh> pieces = pieces_of(cut.surface);
-  ASSERT_EQ(pieces.size(), 3u);
-  double total = 0;
-  for (const SurfaceMesh& piece : pieces) {
-    EXPECT_TRUE(closed_and_oriented(piece));
-    total += surface_volume(piece);
-  }
-  EXPECT_NEAR(total, 2.0, 1e-14);
+  EXPECT_NEAR(volume_of_closed_pieces(cut.surface, 3), 2.0, 1e-14);
   // The first box is as it was.
   EXPECT_EQ(cut.surface.triangles.topRows(12), two.triangles.topRows(12));
 }
@@ -172,14 +171,7 @@ TEST(CutSurface, ASecondCutAcrossTheFirstKeepsEveryPieceClosed) {
   EXPECT_TRUE(closed_and_oriented(first.surface));
   const SurfaceCut second =
       cut_surface(first.surface, CuttingPlane(Eigen::Vector3d(0, 0.05, 0), Eigen::Vector3d(0.1, 1, 0.3)));
-  const std::vector<SurfaceMesh> pieces = pieces_of(second.surface);
-  ASSERT_EQ(pieces.size(), 4u);
-  double total = 0;
-  for (const SurfaceMesh& piece : pieces) {
-    EXPECT_TRUE(closed_and_oriented(piece));
-    total += surface_volume(piece);
-  }
-  EXPECT_NEAR(total, surface_volume(sphere), 1e-13);
+  EXPECT_NEAR(volume_of_closed_pieces(second.surface, 4), surface_volume(sphere), 1e-13);
   EXPECT_EQ(second.surface.vertices.topRows(sphere.vertices.rows()), sphere.vertices);
 }
 

@@ -42,12 +42,6 @@ namespace {
 
 const std::filesystem::path scenes = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes";
 
-const MethodDescription& method_named(const std::string& name) {
-  for (const auto& method : cli::registered_methods())
-    if (method.scene_block.name == name) return method;
-  throw std::invalid_argument("no method " + name);
-}
-
 struct StaticAnswer {
   double energy = 0;         ///< the method's elastic energy of the solution [J]
   double vertical_mass = 0;  ///< ∫ρ u_z dV [kg m]
@@ -59,7 +53,7 @@ StaticAnswer solve_static(const std::filesystem::path& file, const std::string& 
                           const std::vector<SceneOverride>& overrides = {}) {
   const Scene scene = load_scene(file, overrides);
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(method_name);
+  const MethodDescription& method = cli::find_method(method_name);
   Simulation simulation(scene, geometry, method_name, method.factory, method.rebuild);
   std::size_t next = 0;  // events act after the load steps they name
   for (int step = 0; step < scene.time.load_steps; ++step) {
@@ -182,7 +176,7 @@ TEST_P(Cut, APartialNotchSoftensTheBarButDoesNotSeparateIt) {
 TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
   const Scene scene = load_scene(scenes / "cantilever_cut.json");
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(GetParam());
+  const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
   const int cells_before = element_count(simulation.method());
   for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
@@ -227,7 +221,7 @@ TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
                      "events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
                      "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(GetParam());
+  const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
   for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
   simulation.apply(scene.events.at(0));
@@ -254,7 +248,7 @@ TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
 TEST_P(Cut, AfterACutAnAffineFieldHasItsExactStrainEnergy) {
   const Scene scene = load_scene(scenes / "cantilever_cut.json");
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(GetParam());
+  const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
   simulation.apply(scene.events.at(0));
   // Zero on the clamp x = 0, so that dg's weak condition there adds nothing.
@@ -279,11 +273,11 @@ TEST(CutMerge, APieceOfABillionthOfItsCellIsMergedAndPcgConverges) {
   for (const std::string method : {"dg", "harmonic"}) {
     SCOPED_TRACE(method);
     const auto cut_at = [&](const std::string& x, const std::string& merge_fraction) {
-      return solve_static(scenes / "bar_held_at_both_ends.json", method,
-                          {parse_scene_override("solver/linear=\"pcg\""),
-                           parse_scene_override("events=[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [" + x +
-                                                ", 0, 0], \"normal\": [1, 0, 0]}, \"merge_fraction\": " +
-                                                merge_fraction + "}}]")});
+      return solve_static(
+          scenes / "bar_held_at_both_ends.json", method,
+          {parse_scene_override("solver/linear=\"pcg\""),
+           parse_scene_override("events=[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [" + x +
+                                ", 0, 0], \"normal\": [1, 0, 0]}, \"merge_fraction\": " + merge_fraction + "}}]")});
     };
     EXPECT_THROW(cut_at("0.5999999999", "0"), NumericalError);
     const StaticAnswer merged = cut_at("0.5999999999", "0.001");

@@ -10,9 +10,9 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <numeric>
 
 #include "app/method_registry.hpp"
+#include "shared/mesh/mesh_components.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/simulation/simulation.hpp"
 
@@ -20,30 +20,6 @@ namespace altfem {
 namespace {
 
 const std::filesystem::path scenes = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes";
-
-const MethodDescription& method_named(const std::string& name) {
-  for (const auto& method : cli::registered_methods())
-    if (method.scene_block.name == name) return method;
-  throw std::invalid_argument("no method " + name);
-}
-
-// Per vertex, its connected piece of the surface (the lowest vertex index in it).
-std::vector<int> pieces_of(const SurfaceMesh& surface) {
-  std::vector<int> root(static_cast<std::size_t>(surface.vertices.rows()));
-  std::iota(root.begin(), root.end(), 0);
-  const auto find = [&](int v) {
-    while (root[v] != v) v = root[v] = root[root[v]];
-    return v;
-  };
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
-    for (int k = 1; k < 3; ++k) {
-      const int a = find(surface.triangles(t, 0)), b = find(surface.triangles(t, k));
-      root[std::max(a, b)] = std::min(a, b);
-    }
-  std::vector<int> piece(root.size());
-  for (std::size_t v = 0; v < root.size(); ++v) piece[v] = find(static_cast<int>(v));
-  return piece;
-}
 
 // Enclosed volume of the triangles of `surface` whose first vertex lies in `piece`.
 double piece_volume(const SurfaceMesh& surface, const std::vector<int>& piece_of, int piece) {
@@ -63,7 +39,7 @@ class CutSurface : public ::testing::TestWithParam<std::string> {};
 TEST_P(CutSurface, OpensIntoTwoClosedPiecesAndEachSideMovesWithItsOwnMaterial) {
   const Scene scene = load_scene(scenes / "cantilever_cut.json");
   const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = method_named(GetParam());
+  const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
   const SurfaceMesh before = simulation.method().embedded_surface();
   for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
@@ -74,7 +50,7 @@ TEST_P(CutSurface, OpensIntoTwoClosedPiecesAndEachSideMovesWithItsOwnMaterial) {
   const Eigen::Index kept = before.vertices.rows();
   ASSERT_GT(after.vertices.rows(), kept);
   EXPECT_EQ(after.vertices.topRows(kept), before.vertices);
-  const std::vector<int> piece_of = pieces_of(after);
+  const std::vector<int> piece_of = surface_vertex_pieces(after);
   Eigen::Index nearest_clamp = 0, farthest = 0;
   before.vertices.col(0).minCoeff(&nearest_clamp);
   before.vertices.col(0).maxCoeff(&farthest);

@@ -27,12 +27,6 @@ namespace {
 const std::filesystem::path scene_file =
     std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/held_cantilever.json";
 
-const MethodDescription& method_named(const std::string& name) {
-  for (const auto& method : cli::registered_methods())
-    if (method.scene_block.name == name) return method;
-  throw std::invalid_argument("no method " + name);
-}
-
 // The mean vertical displacement of the embedded surface's vertices at the tip (x = 1).
 double tip_deflection(const Simulation& simulation) {
   const MethodInstance& method = simulation.method();
@@ -54,7 +48,7 @@ double static_free_deflection(const std::string& method_name) {
       load_scene(scene_file, {parse_scene_override("time={\"static\": true}"), parse_scene_override("events=[]")});
   scene.dirichlet.pop_back();  // the tip
   const SceneGeometry geometry = load_scene_geometry(scene);
-  Simulation simulation(scene, geometry, method_name, method_named(method_name).factory);
+  Simulation simulation(scene, geometry, method_name, cli::find_method(method_name).factory);
   simulation.integrator().step(simulation.state());
   return tip_deflection(simulation);
 }
@@ -64,7 +58,7 @@ class Release : public ::testing::TestWithParam<std::string> {};
 TEST_P(Release, TheBeamOscillatesAboutTheFreeStaticDeflection) {
   const Scene scene = load_scene(scene_file);
   const SceneGeometry geometry = load_scene_geometry(scene);
-  Simulation simulation(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  Simulation simulation(scene, geometry, GetParam(), cli::find_method(GetParam()).factory);
   const double free = static_free_deflection(GetParam());
   const double fem = GetParam() == "fem" ? free : static_free_deflection("fem");
   ASSERT_LT(free, 0);
@@ -93,7 +87,7 @@ TEST_P(Release, TheBeamOscillatesAboutTheFreeStaticDeflection) {
 TEST_P(Release, EqualsAFreshRunFromTheReleasedState) {
   const Scene scene = load_scene(scene_file);
   const SceneGeometry geometry = load_scene_geometry(scene);
-  Simulation released(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  Simulation released(scene, geometry, GetParam(), cli::find_method(GetParam()).factory);
   const int steps_before = 25;  // 0.1 s
   for (int step = 0; step < steps_before; ++step) released.integrator().step(released.state());
   released.apply(scene.events.front());
@@ -101,7 +95,7 @@ TEST_P(Release, EqualsAFreshRunFromTheReleasedState) {
   Scene free_scene = scene;
   free_scene.dirichlet.pop_back();
   free_scene.events.clear();
-  Simulation fresh(free_scene, geometry, GetParam(), method_named(GetParam()).factory);
+  Simulation fresh(free_scene, geometry, GetParam(), cli::find_method(GetParam()).factory);
   Eigen::MatrixXd fields(released.state().displacement.size(), 2);
   fields << released.state().displacement, released.state().velocity;
   const Eigen::MatrixXd moved = fresh.method().transfer(released.method(), fields);
@@ -126,7 +120,7 @@ TEST_P(Release, BetweenStaticLoadStepsGivesTheFreeCantilever) {
   const Scene scene = load_scene(scene_file, {parse_scene_override(R"(time={"static": true, "load_steps": 4})"),
                                               parse_scene_override("events/0/time=2")});
   const SceneGeometry geometry = load_scene_geometry(scene);
-  Simulation simulation(scene, geometry, GetParam(), method_named(GetParam()).factory);
+  Simulation simulation(scene, geometry, GetParam(), cli::find_method(GetParam()).factory);
   for (int step = 1; step <= 4; ++step) {
     simulation.state().load_factor = step / 4.0;
     simulation.integrator().step(simulation.state());
@@ -151,7 +145,7 @@ TEST_P(Release, TransferToAFinerMeshReproducesTheBasisPolynomials) {
   };
   const Scene coarse_scene = build("[10, 1, 1]"), fine_scene = build("[20, 2, 2]");
   const SceneGeometry geometry = load_scene_geometry(coarse_scene);
-  const MethodDescription& method = method_named(GetParam());
+  const MethodDescription& method = cli::find_method(GetParam());
   const std::unique_ptr<MethodInstance> coarse = method.factory(coarse_scene, geometry);
   const std::unique_ptr<MethodInstance> fine = method.factory(fine_scene, geometry);
   const bool quadratic = GetParam() != "harmonic";
