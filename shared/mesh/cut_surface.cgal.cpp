@@ -12,9 +12,8 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
-
 #include <optional>
+#include <set>
 
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
@@ -31,21 +30,10 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
-// The blade as triangles, a fan turning counter-clockwise about its normal: its polygon,
-// or for the whole plane a square around `bounds` far larger than it.
-Mesh blade_triangles(const CuttingPlane& blade, const Eigen::AlignedBox3d& bounds) {
+// A finite blade's polygon as triangles, a fan turning counter-clockwise about its normal.
+Mesh blade_triangles(const CuttingPlane& blade) {
   const Eigen::Vector3d normal = blade.normal.normalized();
   std::vector<Eigen::Vector3d> corners = blade.polygon;
-  if (corners.empty()) {
-    Eigen::Index smallest = 0;
-    normal.cwiseAbs().minCoeff(&smallest);
-    const Eigen::Vector3d first = normal.cross(Eigen::Vector3d::Unit(smallest)).normalized();
-    const Eigen::Vector3d second = normal.cross(first);
-    const Eigen::Vector3d centre = bounds.center() - normal * normal.dot(bounds.center() - blade.point);
-    const double half = 2.0 * bounds.diagonal().norm();
-    corners = {centre - half * first - half * second, centre + half * first - half * second,
-               centre + half * first + half * second, centre - half * first + half * second};
-  }
   Eigen::Vector3d newell = Eigen::Vector3d::Zero();
   for (std::size_t k = 0; k < corners.size(); ++k) newell += corners[k].cross(corners[(k + 1) % corners.size()]);
   if (newell.dot(normal) < 0) std::reverse(corners.begin(), corners.end());
@@ -213,7 +201,7 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
 
   // The piece split along the curve where the blade crosses it (its vertices there
   // duplicated, one copy per side), and the blade clipped to the body: the cap.
-  Mesh splitter = blade_triangles(blade, bounds);
+  Mesh splitter = blade_triangles(blade);
   Mesh cap = splitter;
   Mesh clipper = piece;
   PMP::split(piece, splitter);
