@@ -67,7 +67,8 @@ public:
       : spec_(dg_spec(scene)), materials_(scene) {
     PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
-    surface_.surface = std::move(built.surface);
+    surface_.surface = deformed_surface(built, geometry);
+    own_surface_ = built.surface.triangles.rows() > 0;
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
@@ -190,7 +191,7 @@ public:
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
     PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_},
-                             .surface = surface_.surface,
+                             .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
                              .load_surface = surface_.load_surface,
                              .facts = mesh_facts_,
                              .converted = std::nullopt,
@@ -373,6 +374,7 @@ private:
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;     // its source (build_polyhedral_scene_mesh)
   std::vector<int> cell_levels_;  // per cell, the refinements it came through (empty: none)
+  bool own_surface_ = false;      // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::vector<Motion> motions_;   // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;

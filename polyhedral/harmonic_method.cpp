@@ -35,7 +35,8 @@ public:
     // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
     PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
-    surface_.surface = std::move(built.surface);
+    surface_.surface = deformed_surface(built, geometry);
+    own_surface_ = built.surface.triangles.rows() > 0;
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
@@ -122,13 +123,14 @@ public:
     return interpolate_at_nodes(mesh_.nodes, field);
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
-                                                                             .surface = surface_.surface,
-                                                                             .load_surface = surface_.load_surface,
-                                                                             .facts = mesh_facts_,
-                                                                             .converted = std::nullopt,
-                                                                             .node_sources = {},
-                                                                             .cell_levels = cell_levels_});
+    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
+        PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
+                            .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
+                            .load_surface = surface_.load_surface,
+                            .facts = mesh_facts_,
+                            .converted = std::nullopt,
+                            .node_sources = {},
+                            .cell_levels = cell_levels_});
   }
   std::string cut_refusal() const override { return ""; }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
@@ -179,6 +181,7 @@ private:
   nlohmann::json mesh_facts_;             // its source (build_polyhedral_scene_mesh)
   std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)
   std::vector<int> cell_levels_;          // per cell, the refinements it came through (empty: none)
+  bool own_surface_ = false;              // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation

@@ -40,9 +40,9 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
     }
   }
   PolyhedralSceneMesh result = mesh;
-  // The surface it deforms, cut by the same blade: as Simulation cuts the scene's common
-  // surface, so dg and harmonic deform the same vertices as the other methods.
-  result.surface = cut_surface(mesh.surface, cut.blade).surface;
+  // The surface it deforms when it is its own (the geometry has none in common), cut by
+  // the same blade, as Simulation cuts the common one every method deforms.
+  if (mesh.surface.triangles.rows() > 0) result.surface = cut_surface(mesh.surface, cut.blade).surface;
   result.cell_levels = std::move(levels);
   result.sliced.mesh = std::move(pieces);
   result.converted.reset();

@@ -1,5 +1,7 @@
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 
+#include <stdexcept>
+
 #include "shared/fem/fem_mesh.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
@@ -35,11 +37,17 @@ SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh) {
   return surface;
 }
 
+const SurfaceMesh& deformed_surface(const PolyhedralSceneMesh& mesh, const SceneGeometry& geometry) {
+  if (mesh.surface.triangles.rows() > 0) return mesh.surface;
+  if (const SurfaceMesh* surface = geometry.common_surface()) return *surface;
+  throw std::logic_error("deformed_surface: neither the mesh nor the geometry has a surface");
+}
+
 PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& source, const SceneGeometry& geometry) {
   PolyhedralSceneMesh result;
   if (source.slicing) {
     result.sliced = slice_scene_geometry(geometry, *source.slicing);
-    result.surface = sliced_surface(geometry);
+    if (!geometry.common_surface()) result.surface = boundary_surface(*geometry.mesh).surface;
     result.load_surface = boundary_faces_surface(result.sliced.mesh);
     result.facts = {{"source", "slice"}, {"slicing", slicing_facts(result.sliced)}};
     return result;
@@ -47,7 +55,7 @@ PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& sour
   result.converted = build_fem_mesh(source.convert, geometry);
   result.sliced.mesh = polyhedral_mesh_from_volume_mesh(*result.converted);
   result.load_surface = boundary_surface(*result.converted).surface;
-  result.surface = geometry.common_surface() ? *geometry.common_surface() : result.load_surface;
+  if (!geometry.common_surface()) result.surface = result.load_surface;
   result.facts = {{"source", "convert"}};
   return result;
 }

@@ -22,8 +22,10 @@ struct PolyhedralMeshSource {
 struct PolyhedralSceneMesh {
   /// The mesh, and when sliced the slicing's counts (all zero for a converted mesh).
   SlicedMesh sliced;
-  /// The surface the method deforms and loads act on: the geometry's common surface, else
-  /// the boundary of the volume mesh (the converted one, or the scene's own when sliced).
+  /// The surface the method deforms when the geometry has none in common
+  /// (SceneGeometry::common_surface): the boundary of the volume mesh (the converted one,
+  /// or the scene's own when sliced). Empty otherwise: the method deforms the geometry's,
+  /// which Simulation cuts with the body, so that a cut does not cut it twice.
   SurfaceMesh surface;
   /// The surface loads act on: the boundary of the domain integrated, as triangles each
   /// on one cell's face (the converted volume mesh's boundary; the sliced mesh's boundary
@@ -45,6 +47,10 @@ struct PolyhedralSceneMesh {
 /// The boundary faces of a polyhedral mesh as outward triangles over the nodes they use
 /// (ear-clipped): the surface loads act on.
 SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh);
+
+/// The surface a method on `mesh` deforms: `mesh.surface`, or the geometry's common surface
+/// when that is empty.
+const SurfaceMesh& deformed_surface(const PolyhedralSceneMesh& mesh, const SceneGeometry& geometry);
 
 /// Builds the mesh `source` describes for the scene's geometry. Throws InputError and
 /// NumericalError as build_fem_mesh and slice_scene_geometry do.

@@ -67,11 +67,6 @@ SlicingOptions slicing_options_from_block(const json& slice) {
   return options;
 }
 
-SurfaceMesh sliced_surface(const SceneGeometry& geometry) {
-  if (const SurfaceMesh* surface = geometry.common_surface()) return *surface;
-  return boundary_surface(*geometry.mesh).surface;
-}
-
 SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const SlicingOptions& options) {
   if (const SurfaceMesh* surface = geometry.common_surface()) return slice_into_polyhedra(*surface, options);
   return slice_into_polyhedra(boundary_surface(*geometry.mesh).surface, options);

@@ -31,9 +31,6 @@ SlicingOptions slicing_options_from_block(const nlohmann::json& slice);
 /// Throws InputError for bad options, NumericalError where the slicer fails.
 SlicedMesh slice_scene_geometry(const SceneGeometry& geometry, const SlicingOptions& options);
 
-/// The surface slice_scene_geometry slices (the boundary of the sliced cells).
-SurfaceMesh sliced_surface(const SceneGeometry& geometry);
-
 /// {"grid": [nx, ny, nz], "cell_size", "hexahedra", "cut_pieces",
 ///  "grid_cells_split_by_topology", "merged_slivers", "octree_coarse_cells", "grid_shift_cells"}.
 nlohmann::json slicing_facts(const SlicedMesh& sliced);

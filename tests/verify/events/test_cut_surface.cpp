@@ -6,10 +6,12 @@
 //   - the piece cut off falls (½ g t² = 17.7 mm in the 0.06 s after the cut, from its
 //     swing) while the clamped part does not, and every point of the cut moves with its
 //     own side: each copy as the surface next to it on its side, not as the other side.
+// And a geometry without a common surface: dg and harmonic cut their own (OwnSurfaceCut).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 
 #include "app/method_registry.hpp"
 #include "shared/mesh/mesh_components.hpp"
@@ -91,6 +93,31 @@ TEST_P(CutSurface, OpensIntoTwoClosedPiecesAndEachSideMovesWithItsOwnMaterial) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CuttingMethods, CutSurface, ::testing::Values("dg", "harmonic", "fcm", "fem"),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+// A geometry given only as a volume mesh has no surface in common: dg and harmonic deform
+// their mesh's boundary, and cut it themselves (Simulation cuts only a common surface, once
+// for every method). A unit cube cut through at z = 0.5 opens into two closed halves.
+class OwnSurfaceCut : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(OwnSurfaceCut, OpensIntoTwoClosedHalves) {
+  const Scene scene = load_scene(scenes / "mesh_file_cut.json");
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  ASSERT_EQ(geometry.common_surface(), nullptr);
+  const MethodDescription& method = cli::find_method(GetParam());
+  Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
+  const SurfaceMesh before = simulation.method().embedded_surface();
+  simulation.apply(scene.events.at(0));
+  const SurfaceMesh& after = simulation.method().embedded_surface();
+  ASSERT_GT(after.vertices.rows(), before.vertices.rows());
+  EXPECT_EQ(after.vertices.topRows(before.vertices.rows()), before.vertices);
+  const std::vector<int> piece_of = surface_vertex_pieces(after);
+  const std::set<int> pieces(piece_of.begin(), piece_of.end());
+  ASSERT_EQ(pieces.size(), 2u);
+  for (const int piece : pieces) EXPECT_NEAR(piece_volume(after, piece_of, piece), 0.5, 1e-14);
+}
+
+INSTANTIATE_TEST_SUITE_P(PolyhedralMethods, OwnSurfaceCut, ::testing::Values("dg", "harmonic"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace
