@@ -30,11 +30,12 @@ public:
       : materials_(scene), elements_(mesh.elements) {
     cells_ = std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
                                                 scene.dirichlet, scene.file.string());
-    // The surface every method deforms; surface loads act on the boundary of the
-    // material, the cut tetrahedra's (the blade's faces included, unloaded by tractions
-    // given on the original boundary's regions).
+    // The surface every method deforms, else (a volume mesh file) the material's own
+    // boundary, open along the cut. Surface loads act on the boundary of the material, the
+    // cut tetrahedra's (the blade's faces included, unloaded by tractions given on the
+    // original boundary's regions).
     surface_.load_surface = boundary_surface(cells_->embedded().mesh).surface;
-    surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary_surface(mesh.elements).surface;
+    surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
     surface_.evaluator = cells_->basis_evaluator();
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
   }

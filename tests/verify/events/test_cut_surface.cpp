@@ -95,9 +95,10 @@ TEST_P(CutSurface, OpensIntoTwoClosedPiecesAndEachSideMovesWithItsOwnMaterial) {
 INSTANTIATE_TEST_SUITE_P(CuttingMethods, CutSurface, ::testing::Values("dg", "harmonic", "fcm", "fem"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
-// A geometry given only as a volume mesh has no surface in common: dg and harmonic deform
-// their mesh's boundary, and cut it themselves (Simulation cuts only a common surface, once
-// for every method). A unit cube cut through at z = 0.5 opens into two closed halves.
+// A geometry given only as a volume mesh has no surface in common (Simulation cuts only a
+// common one, once for every method): each method deforms its own mesh's boundary, open
+// along the cut. dg and harmonic cut theirs, keeping its vertices' indices; fem and fcm take
+// their cut tetrahedra's. A unit cube cut through at z = 0.5 opens into two closed halves.
 class OwnSurfaceCut : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(OwnSurfaceCut, OpensIntoTwoClosedHalves) {
@@ -109,15 +110,17 @@ TEST_P(OwnSurfaceCut, OpensIntoTwoClosedHalves) {
   const SurfaceMesh before = simulation.method().embedded_surface();
   simulation.apply(scene.events.at(0));
   const SurfaceMesh& after = simulation.method().embedded_surface();
-  ASSERT_GT(after.vertices.rows(), before.vertices.rows());
-  EXPECT_EQ(after.vertices.topRows(before.vertices.rows()), before.vertices);
+  if (GetParam() == "dg" || GetParam() == "harmonic") {
+    ASSERT_GT(after.vertices.rows(), before.vertices.rows());
+    EXPECT_EQ(after.vertices.topRows(before.vertices.rows()), before.vertices);
+  }
   const std::vector<int> piece_of = surface_vertex_pieces(after);
   const std::set<int> pieces(piece_of.begin(), piece_of.end());
   ASSERT_EQ(pieces.size(), 2u);
   for (const int piece : pieces) EXPECT_NEAR(piece_volume(after, piece_of, piece), 0.5, 1e-14);
 }
 
-INSTANTIATE_TEST_SUITE_P(PolyhedralMethods, OwnSurfaceCut, ::testing::Values("dg", "harmonic"),
+INSTANTIATE_TEST_SUITE_P(EveryMethod, OwnSurfaceCut, ::testing::Values("dg", "harmonic", "fcm", "fem"),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 }  // namespace
