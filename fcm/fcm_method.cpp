@@ -7,9 +7,12 @@
 #include "fcm/fcm_scene_block.hpp"
 #include "shared/common/error.hpp"
 #include "shared/cut_cells/embedded_cut_cells.hpp"
+#include "shared/fem/refine_hexahedral_grid.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/cell_stresses.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
 #include "shared/simulation/scene_materials.hpp"
@@ -19,12 +22,28 @@ namespace altfem::fcm {
 namespace {
 
 // What the method is built on: the background cells (§3.2) and the object as
-// embedded tetrahedra (§4.5), cut or not.
+// embedded tetrahedra (§4.5), cut or not. A generated hexahedral grid is kept as a forest
+// too, which a refine event splits (issue #34; the paper does not refine).
 struct FcmMesh {
   VolumeMesh background;
   std::optional<Eigen::Vector3i> resolution;  ///< nullopt: a background mesh file
   EmbeddedTetrahedra embedded;
+  std::optional<HexahedralForest> forest;
+  NodeConstraints constraints;  ///< the forest's hanging nodes, last in `background`
 };
+
+// The stress per leaf of `forest` that marks it: of its kept cells (pieces) the one whose
+// largest absolute principal stress is largest; zero where no cell is kept.
+std::vector<Eigen::Matrix3d> leaf_stresses(const HexahedralForest& forest, const std::vector<int>& leaf_of_kept,
+                                           const std::vector<Eigen::Matrix3d>& kept_stresses) {
+  std::vector<Eigen::Matrix3d> stresses(static_cast<std::size_t>(forest.leaf_count()), Eigen::Matrix3d::Zero());
+  const auto largest = [](const Eigen::Matrix3d& stress) { return largest_principal_stress(stress).value; };
+  for (std::size_t cell = 0; cell < leaf_of_kept.size(); ++cell) {
+    Eigen::Matrix3d& stress = stresses[leaf_of_kept[cell]];
+    if (largest(kept_stresses[cell]) > largest(stress)) stress = kept_stresses[cell];
+  }
+  return stresses;
+}
 
 CutCellSettings cut_cell_settings(const FcmSpec& spec) {
   return {spec.options, spec.simplifier, spec.simplification_tolerance, spec.topology_aware};
@@ -35,6 +54,8 @@ public:
   // On the meshes of the scene, or on meshes an event hands it.
   FcmMethod(const Scene& scene, const SceneGeometry& geometry, const FcmMesh* handed) : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
+    ghost_penalty_ = spec.options.ghost_penalty > 0;
+    for (const SceneEvent& event : scene.events) scene_cuts_ = scene_cuts_ || event.kind == EventKind::cut;
     FcmMesh meshes;
     if (handed) {
       meshes = *handed;
@@ -43,14 +64,25 @@ public:
       BackgroundMesh generated = background_mesh(spec, geometry.bounds);
       meshes.background = std::move(generated.mesh);
       meshes.resolution = generated.resolution;
+      if (generated.resolution && element_shape(spec.cell) == ElementShape::hexahedron) {
+        const Eigen::AlignedBox3d box(meshes.background.nodes.colwise().minCoeff().transpose(),
+                                      meshes.background.nodes.colwise().maxCoeff().transpose());
+        meshes.forest = grid_forest(box, *generated.resolution, spec.cell);
+      }
       // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
       // or shape at the same default size as fem's, so both deform the same surface.
       const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
       meshes.embedded.mesh = embedded_tetrahedra(geometry, embedded_size, scene.file.string());
     }
     resolution_ = meshes.resolution;
+    forest_ = std::move(meshes.forest);
+    std::optional<RefinedBackground> refined;
+    if (!meshes.constraints.empty())
+      refined = RefinedBackground{std::move(meshes.constraints), forest_face_contacts(forest_interior_faces(*forest_))};
     cells_ = std::make_unique<EmbeddedCutCells>(meshes.background, std::move(meshes.embedded), cut_cell_settings(spec),
-                                                materials_, scene.dirichlet, scene.file.string());
+                                                materials_, scene.dirichlet, scene.file.string(),
+                                                refined ? &*refined : nullptr);
+    background_constraints_ = refined ? std::move(refined->constraints) : NodeConstraints{};
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
     // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
@@ -67,14 +99,49 @@ public:
   long long quadrature_points() const override { return kept_cells().discretization->elements().point_count(); }
   double quadrature_seconds() const override { return cells_->seconds(); }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
-    return cells_->volume_grid(displacement);
+    UnstructuredGrid grid = cells_->volume_grid(displacement);
+    // Each cell's refinement level, to colour a refined grid by in ParaView.
+    if (forest_) {
+      Eigen::VectorXd levels(kept_cells().mesh.cells.rows());
+      const std::vector<int> leaves = cells_->background_cell_of_kept();
+      for (Eigen::Index cell = 0; cell < levels.size(); ++cell) levels[cell] = forest_->levels[leaves[cell]];
+      grid.cell_data.emplace_back("level", levels);
+    }
+    return grid;
   }
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
-    return interpolate_at_nodes(kept_cells().mesh.nodes, field);
+    return interpolate_at_nodes(free_nodes(), field);
   }
   std::vector<std::string> warnings() const override { return cells_->warnings(); }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, {cells_->embedded().mesh, {}}});
+    return std::make_shared<MeshOf<FcmMesh>>(
+        FcmMesh{cells_->background(), resolution_, {cells_->embedded().mesh, {}}, forest_, background_constraints_});
+  }
+  std::string refine_refusal(const RefineSpec& refine) const override {
+    if (!forest_)
+      return "it refines generated hexahedral grids only (discretization.fcm: a hex8, hex20 or hex27 `cell`, no "
+             "`background` file)";
+    if (refine.split == RefineSplit::halves)
+      return "it splits 1to8 only: a hexahedron halved across its principal direction is no cell of the grid";
+    if (scene_cuts_) return "it does not refine a grid that a cut event cuts yet";
+    if (ghost_penalty_) return "its ghost penalty's face terms do not take hanging nodes yet";
+    return "";
+  }
+  /// The grid's leaves whose stress the event marks split 1→8, the forest balanced 2:1
+  /// (refine_hexahedral_grid); the embedded tetrahedra stay as they are, and only the
+  /// refined cells get new rules.
+  std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& displacement,
+                                                nlohmann::json& facts) const override {
+    const std::vector<Eigen::Matrix3d> stresses =
+        leaf_stresses(*forest_, cells_->background_cell_of_kept(),
+                      mean_cell_stresses(kept_cells().discretization->elements(), materials_.pointers(), displacement));
+    std::optional<RefinedGrid> refined = refine_hexahedral_grid(*forest_, refine.refine, stresses, facts);
+    if (!refined) return nullptr;
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{std::move(refined->mesh.mesh),
+                                                     resolution_,
+                                                     {cells_->embedded().mesh, {}},
+                                                     std::move(refined->forest),
+                                                     std::move(refined->mesh.constraints)});
   }
   /// The material's volume Σ vol(K ∩ Ω) over the kept cells (EmbeddedCutCells).
   std::optional<double> volume() const override { return cells_->material_volume(); }
@@ -92,12 +159,13 @@ public:
   /// match the moments up to that strength only (§4), so no stronger rule is at hand. The
   /// stabilising points (§5.3, weights × `stabilization`) are included.
   std::optional<FieldQuadrature> field_quadrature(int /*added_strength*/) const override {
-    return nodal_field_quadrature(borrowed(kept_cells().discretization->elements()), kept_cells().mesh.nodes,
+    return nodal_field_quadrature(borrowed(kept_cells().discretization->elements()), free_nodes(),
                                   cells_->quadrature_strength());
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = surface_.facts();
     facts.update(cells_->facts());
+    if (forest_) facts["hanging_nodes"] = kept_cells().constraints.hanging_nodes();
     facts.update(
         {{"background_cells", cells_->background().cells.rows()},
          {"background_resolution", resolution_ ? nlohmann::json{resolution_->x(), resolution_->y(), resolution_->z()}
@@ -107,9 +175,14 @@ public:
 
 private:
   const FcmDiscretization& kept_cells() const { return cells_->discretization(); }
+  // The kept nodes that carry the basis (#free nodes × 3): all but the hanging ones.
+  Eigen::MatrixXd free_nodes() const { return kept_cells().mesh.nodes.topRows(kept_cells().constraints.free_nodes); }
 
   SceneMaterials materials_;
   std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
+  std::optional<HexahedralForest> forest_;     ///< a generated hexahedral grid, refined or not
+  NodeConstraints background_constraints_;     ///< its hanging nodes over the background's nodes
+  bool scene_cuts_ = false, ghost_penalty_ = false;
   std::unique_ptr<EmbeddedCutCells> cells_;
 };
 

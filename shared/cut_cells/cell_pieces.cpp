@@ -63,6 +63,18 @@ std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) 
   return neighbours;
 }
 
+/// The contacts of a conforming mesh's cells: their faces matched by corner nodes.
+std::vector<CellFaceContact> conforming_contacts(const VolumeMesh& mesh) {
+  const std::vector<std::vector<FaceNeighbour>> adjacency = face_neighbours(mesh);
+  std::vector<CellFaceContact> contacts;
+  for (int cell = 0; cell < static_cast<int>(adjacency.size()); ++cell)
+    for (int f = 0; f < static_cast<int>(adjacency[cell].size()); ++f) {
+      const FaceNeighbour across = adjacency[cell][f];
+      if (across.cell > cell) contacts.push_back({cell, f, across.cell, across.face});
+    }
+  return contacts;
+}
+
 /// An embedded tetrahedron clipped by one cell, with the areas by which the clipped
 /// part touches the planes of the cell's faces and of the tetrahedron's faces.
 struct Fragment {
@@ -176,7 +188,8 @@ int CellPieces::piece_count() const {
   return count;
 }
 
-CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded) {
+CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
+                            const std::vector<CellFaceContact>* contacts) {
   const TetrahedronBuckets buckets(embedded);
   const std::vector<std::vector<FaceNeighbour>> tetrahedron_adjacency = face_neighbours(embedded);
   std::vector<std::array<int, 4>> tetrahedron_neighbours(tetrahedron_adjacency.size());
@@ -214,40 +227,38 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
       result.tetrahedra[cell][fragments.piece[i]].push_back(fragments.fragments[i].tetrahedron);
   }
 
-  // Pieces of face neighbours connected through the shared face.
-  const std::vector<std::vector<FaceNeighbour>> cell_adjacency = face_neighbours(background);
+  // Pieces of face neighbours connected through the shared face. Where a coarse cell's face
+  // touches a finer cell's, both lie in one plane and the finer face within the coarser.
+  const std::vector<CellFaceContact> conforming =
+      contacts ? std::vector<CellFaceContact>{} : conforming_contacts(background);
   const auto cell_faces = element_faces(element_shape(background.element_type));
   const auto link = [&](int cell, int piece, int other_cell, int other_piece) {
     result.neighbours[cell][piece].emplace_back(other_cell, other_piece);
     result.neighbours[other_cell][other_piece].emplace_back(cell, piece);
   };
-  for (int cell = 0; cell < cell_count; ++cell) {
-    const CellFragments& here = cells[cell];
-    if (here.fragments.empty()) continue;
-    Eigen::MatrixXd corners(element_corner_count(background.element_type), 3);
+  Eigen::MatrixXd corners(element_corner_count(background.element_type), 3);
+  for (const CellFaceContact& contact : contacts ? *contacts : conforming) {
+    const int cell = contact.cell, f = contact.face, other_cell = contact.other_cell;
+    const CellFragments &here = cells[cell], &there = cells[other_cell];
+    if (here.fragments.empty() || there.fragments.empty()) continue;
     for (Eigen::Index i = 0; i < corners.rows(); ++i) corners.row(i) = background.nodes.row(background.cells(cell, i));
-    for (int f = 0; f < static_cast<int>(cell_faces.size()); ++f) {
-      const FaceNeighbour across = cell_adjacency[cell][f];
-      if (across.cell < cell) continue;  // no neighbour, or the pair was done from the other side
-      const CellFragments& there = cells[across.cell];
-      const Plane plane = face_plane(corners, cell_faces[f]);
-      const auto touches = [&](int fragment) {
-        return fragment >= 0 && there.fragments[fragment].cell_face_area[across.face] > 0;
-      };
-      for (std::size_t i = 0; i < here.fragments.size(); ++i) {
-        const Fragment& fragment = here.fragments[i];
-        if (fragment.cell_face_area[f] <= 0) continue;
-        // The same tetrahedron on both sides: it crosses the face.
-        if (const int same = there.find(fragment.tetrahedron); touches(same))
-          link(cell, here.piece[i], across.cell, there.piece[same]);
-        // A neighbouring tetrahedron through a face lying in the cell face.
-        for (int g = 0; g < 4; ++g) {
-          const int neighbour = tetrahedron_neighbours[fragment.tetrahedron][g];
-          if (neighbour < 0 || !face_in_plane(embedded, fragment.tetrahedron, g, plane, here.distance_threshold))
-            continue;
-          if (const int other = there.find(neighbour); touches(other))
-            link(cell, here.piece[i], across.cell, there.piece[other]);
-        }
+    const Plane plane = face_plane(corners, cell_faces[f]);
+    const auto touches = [&](int fragment) {
+      return fragment >= 0 && there.fragments[fragment].cell_face_area[contact.other_face] > 0;
+    };
+    for (std::size_t i = 0; i < here.fragments.size(); ++i) {
+      const Fragment& fragment = here.fragments[i];
+      if (fragment.cell_face_area[f] <= 0) continue;
+      // The same tetrahedron on both sides: it crosses the face.
+      if (const int same = there.find(fragment.tetrahedron); touches(same))
+        link(cell, here.piece[i], other_cell, there.piece[same]);
+      // A neighbouring tetrahedron through a face lying in the cell face.
+      for (int g = 0; g < 4; ++g) {
+        const int neighbour = tetrahedron_neighbours[fragment.tetrahedron][g];
+        if (neighbour < 0 || !face_in_plane(embedded, fragment.tetrahedron, g, plane, here.distance_threshold))
+          continue;
+        if (const int other = there.find(neighbour); touches(other))
+          link(cell, here.piece[i], other_cell, there.piece[other]);
       }
     }
   }

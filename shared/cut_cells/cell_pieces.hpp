@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "shared/mesh/cell_face_contact.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem {
@@ -47,6 +48,11 @@ struct CellPieces {
 /// clipped part lies in the plane only where the contact is a surface, however small
 /// (a threshold on the area split tiny slivers off spheres). Contacts through an edge
 /// or a point only do not connect: the material is continuous only across a surface.
-CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded);
+///
+/// `contacts` (optional) lists which cells touch across which faces, for a background that
+/// is not conforming (a refined grid's: forest_face_contacts); by default faces are matched
+/// by their corner nodes.
+CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
+                            const std::vector<CellFaceContact>* contacts = nullptr);
 
 }  // namespace altfem

@@ -38,7 +38,8 @@ double cell_volume(const VolumeMesh& mesh, Eigen::Index cell) {
 
 EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded,
                                    const CutCellSettings& settings, const SceneMaterials& materials,
-                                   const std::vector<DirichletCondition>& dirichlet, const std::string& scene_file)
+                                   const std::vector<DirichletCondition>& dirichlet, const std::string& scene_file,
+                                   const RefinedBackground* refined)
     : settings_(settings), background_(background), embedded_(std::move(embedded)) {
   const auto start = std::chrono::steady_clock::now();
   // Topology-aware cells (Longva et al. 2020 §7's limitation): one cell per piece of
@@ -46,7 +47,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   VolumeMesh cells = background;
   std::vector<std::vector<int>> cell_tetrahedra;
   if (settings.topology_aware) {
-    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh);
+    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh, refined ? &refined->contacts : nullptr);
     split_cells_ = pieces.split_cells();
     pieces_ = piece_mesh(background, pieces);
     cells = pieces_->mesh;
@@ -57,9 +58,11 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   const CellQuadratureSource rules =
       intersection_cell_quadrature(cells, embedded_.mesh, settings.simplifier, settings.simplification_tolerance, {},
                                    statistics_, std::move(cell_tetrahedra));
-  fcm_ = build_fcm_discretization(cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)),
-                                  dirichlet, settings.options, scene_file,
-                                  pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{});
+  BackgroundHangingNodes hanging;
+  if (refined) hanging = {&refined->constraints, pieces_ ? pieces_->background_node : std::vector<int>{}};
+  fcm_ = build_fcm_discretization(
+      cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)), dirichlet, settings.options,
+      scene_file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{}, hanging);
   warnings_ = conditions_cutting_cells(fcm_.mesh, dirichlet);
   for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
     material_volume_ += fcm_.volume_fractions[cell] * cell_volume(fcm_.mesh, static_cast<Eigen::Index>(cell));
@@ -67,13 +70,16 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
 }
 
 std::unique_ptr<ElementBasisEvaluator> EmbeddedCutCells::basis_evaluator() const {
-  if (pieces_) return std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_.mesh);
-  return std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh);
+  const NodeConstraints* constraints = fcm_.constraints.empty() ? nullptr : &fcm_.constraints;
+  if (pieces_)
+    return std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_.mesh,
+                                                 constraints);
+  return std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh, constraints);
 }
 
 UnstructuredGrid EmbeddedCutCells::volume_grid(const Eigen::VectorXd& displacement) const {
   UnstructuredGrid grid = grid_from_volume_mesh(fcm_.mesh);
-  add_nodal_displacement(grid, displacement);
+  add_nodal_displacement(grid, fcm_.constraints.all_nodes(displacement));
   grid.cell_data.emplace_back(
       "volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(), fcm_.volume_fractions.size()));
   const TabulatedElements& elements = fcm_.discretization->elements();
@@ -103,6 +109,13 @@ nlohmann::json EmbeddedCutCells::facts() const {
           {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
           {"schwarz_blocks", fcm_.schwarz_blocks},
           {"ghost_penalty_faces", fcm_.ghost ? fcm_.ghost->faces.size() : 0}};
+}
+
+std::vector<int> EmbeddedCutCells::background_cell_of_kept() const {
+  std::vector<int> cells = fcm_.background_cells;
+  if (pieces_)
+    for (int& cell : cells) cell = pieces_->background_cell[cell];
+  return cells;
 }
 
 std::string EmbeddedCutCells::cut_refusal() const {
@@ -178,6 +191,11 @@ std::vector<int> EmbeddedCutCells::background_nodes() const {
 
 Eigen::MatrixXd EmbeddedCutCells::transfer(const EmbeddedCutCells& before, const ElementBasisEvaluator& before_basis,
                                            const Eigen::MatrixXd& fields) const {
+  const auto free_nodes = [](const FcmDiscretization& fcm) {
+    return fcm.mesh.nodes.topRows(fcm.constraints.free_nodes);
+  };
+  if (!fcm_.constraints.empty() || !before.fcm_.constraints.empty())
+    return transfer_to_nodes(free_nodes(fcm_), free_nodes(before.fcm_), before_basis, fields);
   const std::vector<int> origin = node_origins(before);
   const bool every_node_continues =
       !origin.empty() && std::none_of(origin.begin(), origin.end(), [](int node) { return node < 0; });

@@ -18,6 +18,7 @@
 #include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/cut_cells/piece_mesh.hpp"
 #include "shared/io/unstructured_grid.hpp"
+#include "shared/mesh/cell_face_contact.hpp"
 #include "shared/mesh/cutting_plane.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
@@ -40,13 +41,23 @@ struct EmbeddedTetrahedra {
   std::vector<int> parent;
 };
 
+/// A background grid refined 1→8 (hexahedral_forest.hpp): its hanging nodes' constraints
+/// over its nodes, and which cells touch across its faces (a coarse face touches finer ones).
+struct RefinedBackground {
+  NodeConstraints constraints;
+  std::vector<CellFaceContact> contacts;
+};
+
 class EmbeddedCutCells {
 public:
+  /// `refined` (optional): the background's hanging nodes, constrained among the kept cells
+  /// (build_fcm_discretization); the background's nodes then hold them last.
   EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded, const CutCellSettings& settings,
                    const SceneMaterials& materials, const std::vector<DirichletCondition>& dirichlet,
-                   const std::string& scene_file);
+                   const std::string& scene_file, const RefinedBackground* refined = nullptr);
 
-  /// The kept cells (a cell per piece of material), nodes renumbered: basis function i = node i.
+  /// The kept cells (a cell per piece of material), nodes renumbered: basis function i =
+  /// node i, hanging nodes last (FcmDiscretization::constraints).
   const FcmDiscretization& discretization() const { return fcm_; }
   const VolumeMesh& background() const { return background_; }
   const EmbeddedTetrahedra& embedded() const { return embedded_; }
@@ -66,15 +77,18 @@ public:
   /// {"cells": {inside, cut, discarded, split, outside}, "cut_cell_points", …}.
   nlohmann::json facts() const;
 
+  /// Per kept cell, the background cell it is (or is a piece of).
+  std::vector<int> background_cell_of_kept() const;
+
   /// Why these cells cannot be cut (one phrase); empty when they can.
   std::string cut_refusal() const;
   /// The embedded tetrahedra cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
   EmbeddedTetrahedra cut(const CuttingPlane& blade, nlohmann::json& facts) const;
-  /// Nodal fields of `before` (#kept nodes of before · 3 × #fields; `before_basis` its
-  /// basis) on these kept nodes: a node copy takes the values of the copy it continues
+  /// Nodal fields of `before` (#free kept nodes of before · 3 × #fields; `before_basis` its
+  /// basis) on these free kept nodes: a node copy takes the values of the copy it continues
   /// (node_origins) bit for bit; only where some node continues none (another
-  /// background, a piece that was not kept) are the old fields evaluated at the nodes
-  /// (transfer_to_nodes).
+  /// background, a piece that was not kept) or nodes hang are the old fields evaluated at
+  /// the nodes (transfer_to_nodes): exactly, where the spaces are nested (a refinement).
   Eigen::MatrixXd transfer(const EmbeddedCutCells& before, const ElementBasisEvaluator& before_basis,
                            const Eigen::MatrixXd& fields) const;
   /// Nodal fields of the background mesh's own nodes (#background nodes · 3 × #fields:

@@ -1,9 +1,12 @@
 #include "shared/cut_cells/fcm_discretization.hpp"
 
 #include <map>
+#include <stdexcept>
 
 #include "shared/common/error.hpp"
+#include "shared/cut_cells/kept_hanging_nodes.hpp"
 #include "shared/element/reference_element.hpp"
+#include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -56,7 +59,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
                                            const std::vector<DirichletCondition>& dirichlet, const FcmOptions& options,
-                                           const std::string& scene_file, const NodeRegionFilter& dirichlet_nodes) {
+                                           const std::string& scene_file, const NodeRegionFilter& dirichlet_nodes,
+                                           const BackgroundHangingNodes& hanging) {
   const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
   const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
@@ -92,9 +96,24 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
       if (added) used_nodes.push_back(node);
       fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
     }
+  fcm.constraints.free_nodes = static_cast<int>(used_nodes.size());
+  if (hanging.constraints && !hanging.constraints->empty()) {
+    if (options.ghost_penalty > 0)
+      throw std::invalid_argument("build_fcm_discretization: the ghost penalty does not take hanging nodes");
+    std::vector<int> grid_node(used_nodes.size());
+    for (size_t i = 0; i < used_nodes.size(); ++i)
+      grid_node[i] = hanging.grid_node.empty() ? used_nodes[i] : hanging.grid_node[used_nodes[i]];
+    KeptHangingNodes kept_hanging = kept_hanging_nodes(grid_node, *hanging.constraints);
+    std::vector<int> renumbered(used_nodes.size());
+    for (size_t i = 0; i < used_nodes.size(); ++i) renumbered[kept_hanging.new_index[i]] = used_nodes[i];
+    used_nodes = std::move(renumbered);
+    fcm.mesh.cells = fcm.mesh.cells.unaryExpr([&](int node) { return kept_hanging.new_index[node]; }).eval();
+    fcm.constraints = std::move(kept_hanging.constraints);
+  }
   fcm.mesh.nodes.resize(static_cast<Eigen::Index>(used_nodes.size()), 3);
   for (size_t i = 0; i < used_nodes.size(); ++i)
     fcm.mesh.nodes.row(static_cast<Eigen::Index>(i)) = background.nodes.row(used_nodes[i]);
+  const bool constrained = !fcm.constraints.empty();
 
   std::vector<int> kept_materials;
   for (int cell : kept) kept_materials.push_back(background_materials[cell]);
@@ -106,11 +125,14 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                  stabilize_stiffness ? options.stabilization : 0.0);
   stiffness_rules.materials = kept_materials;
   parts.elements = tabulate_lagrange(fcm.mesh, stiffness_rules);
+  if (constrained) parts.elements = constrain_lagrange_elements(parts.elements, fcm.constraints);
   // The mass rules are large (a high strength, never simplified) and used once
   // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
   parts.element_masses = lagrange_element_masses(
       fcm.mesh, kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
                            stabilize_mass ? options.stabilization : 0.0));
+  if (constrained)
+    parts.element_masses = constrain_element_masses(*parts.element_masses, fcm.mesh.cells, fcm.constraints);
   if (options.ghost_penalty > 0) {
     fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(fcm.mesh, fcm.volume_fractions));
     parts.terms.push_back(
@@ -122,16 +144,16 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     kept_dirichlet_nodes = [&](int node, const RegionSelector& region, double tolerance) {
       return dirichlet_nodes(used_nodes[node], region, tolerance);
     };
-  parts.dirichlet =
-      nodal_dirichlet(fcm.mesh.nodes, dirichlet, scene_file, "the kept background cells", kept_dirichlet_nodes);
+  parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes.topRows(fcm.constraints.free_nodes), dirichlet, scene_file,
+                                    "the kept background cells", kept_dirichlet_nodes);
 
-  // §5.2: one Schwarz block per small cut cell: the DOFs of its nodes.
+  // §5.2: one Schwarz block per small cut cell: the DOFs of its basis functions.
   std::vector<std::vector<int>> blocks;
   for (size_t k = 0; k < kept.size(); ++k) {
     if (fcm.volume_fractions[k] >= options.schwarz_fraction) continue;
     std::vector<int> block;
-    for (Eigen::Index a = 0; a < fcm.mesh.cells.cols(); ++a)
-      for (int i = 0; i < 3; ++i) block.push_back(3 * fcm.mesh.cells(static_cast<Eigen::Index>(k), a) + i);
+    for (const int function : parts.elements[static_cast<int>(k)].basis)
+      for (int i = 0; i < 3; ++i) block.push_back(3 * function + i);
     blocks.push_back(std::move(block));
   }
   fcm.schwarz_blocks = static_cast<int>(blocks.size());

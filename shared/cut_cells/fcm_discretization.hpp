@@ -12,6 +12,7 @@
 #include "shared/cut_cells/cell_quadrature.hpp"
 #include "shared/cut_cells/ghost_penalty_faces.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
 
@@ -43,8 +44,19 @@ struct FcmCellCounts {
   int inside = 0, cut = 0, discarded = 0, outside = 0;
 };
 
+/// Hanging nodes of a refined background grid (hexahedral_forest.hpp): `constraints` over
+/// the grid's nodes, and per node of the mesh build_fcm_discretization is handed the grid
+/// node it copies (piece_mesh's background_node; empty: that mesh is the grid).
+struct BackgroundHangingNodes {
+  const NodeConstraints* constraints = nullptr;  ///< null: none hangs
+  std::vector<int> grid_node;
+};
+
 struct FcmDiscretization {
-  VolumeMesh mesh;                       ///< the kept cells, nodes renumbered (basis function i = node i)
+  /// The kept cells, nodes renumbered: basis function i = node i for the free nodes, the
+  /// hanging ones last (`constraints`).
+  VolumeMesh mesh;
+  NodeConstraints constraints;           ///< free_nodes: every node when none hangs
   std::vector<int> background_cells;     ///< per kept cell: its index in the background grid
   std::vector<double> volume_fractions;  ///< per kept cell
   FcmCellCounts counts;
@@ -64,12 +76,17 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
 /// The same with several materials: background_materials holds each background cell's
 /// index into `materials` (a cut cell takes one material whole). `dirichlet_nodes`
 /// (nodes of `background`; optional) narrows the nodes each region selects
-/// (topology-aware cells: piece_dirichlet.hpp).
+/// (topology-aware cells: piece_dirichlet.hpp). With `hanging`, the kept hanging nodes are
+/// constrained to their masters' kept copies (kept_hanging_nodes): the tabulation, the
+/// element masses, the Schwarz blocks and the Dirichlet conditions see the free nodes only.
+/// The ghost penalty is refused there (std::invalid_argument): its face terms do not take
+/// constraints.
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
                                            std::vector<const Material*> materials,
                                            const std::vector<int>& background_materials,
                                            const std::vector<DirichletCondition>& dirichlet, const FcmOptions& options,
                                            const std::string& scene_file = "scene",
-                                           const NodeRegionFilter& dirichlet_nodes = {});
+                                           const NodeRegionFilter& dirichlet_nodes = {},
+                                           const BackgroundHangingNodes& hanging = {});
 
 }  // namespace altfem

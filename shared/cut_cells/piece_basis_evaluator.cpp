@@ -52,8 +52,9 @@ double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<dou
 }
 
 PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh& pieces,
-                                         const std::vector<int>& kept_rows, const VolumeMesh& embedded)
-    : whole_(mesh), embedded_(embedded), piece_tetrahedra_(kept_rows.size()), siblings_(kept_rows.size()) {
+                                         const std::vector<int>& kept_rows, const VolumeMesh& embedded,
+                                         const NodeConstraints* constraints)
+    : whole_(mesh, constraints), embedded_(embedded), piece_tetrahedra_(kept_rows.size()), siblings_(kept_rows.size()) {
   std::map<int, std::vector<int>> kept_pieces;  // background cell → its kept cells
   for (std::size_t cell = 0; cell < kept_rows.size(); ++cell)
     kept_pieces[pieces.background_cell[kept_rows[cell]]].push_back(static_cast<int>(cell));

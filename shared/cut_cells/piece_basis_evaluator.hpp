@@ -14,10 +14,10 @@ namespace altfem {
 class PieceBasisEvaluator final : public ElementBasisEvaluator {
 public:
   /// mesh: the kept cells (basis function i = node i), kept_rows: per kept cell its row
-  /// in `pieces`; embedded: the Tet4 mesh the pieces' tetrahedra index. Keeps
-  /// references to mesh and embedded.
+  /// in `pieces`; embedded: the Tet4 mesh the pieces' tetrahedra index; constraints: the
+  /// kept hanging nodes (null: none). Keeps references to mesh, embedded and constraints.
   PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh& pieces, const std::vector<int>& kept_rows,
-                      const VolumeMesh& embedded);
+                      const VolumeMesh& embedded, const NodeConstraints* constraints = nullptr);
 
   int element_count() const override { return whole_.element_count(); }
   Eigen::AlignedBox3d element_bounds(int cell) const override { return whole_.element_bounds(cell); }

@@ -4,50 +4,80 @@
 
 namespace altfem {
 
+namespace {
+
+// The functions of a cell's nodes `nodes` (some hanging) in the constrained space: `basis`
+// its free nodes and the masters of its hanging ones, `substitution` (#nodes × #basis)
+// column j the function basis[j] in the nodes' functions. Both are rewritten.
+void substitute_hanging(std::span<const int> nodes, const NodeConstraints& constraints, std::vector<int>& basis,
+                        Eigen::MatrixXd& substitution) {
+  basis.clear();
+  const auto column = [&](int node) {
+    const auto found = std::find(basis.begin(), basis.end(), node);
+    if (found != basis.end()) return static_cast<int>(found - basis.begin());
+    basis.push_back(node);
+    return static_cast<int>(basis.size()) - 1;
+  };
+  for (const int node : nodes)
+    if (node < constraints.free_nodes) column(node);
+  for (const int node : nodes)
+    if (node >= constraints.free_nodes)
+      for (const int master : constraints.masters[node - constraints.free_nodes]) column(master);
+  substitution.setZero(static_cast<Eigen::Index>(nodes.size()), static_cast<Eigen::Index>(basis.size()));
+  for (std::size_t a = 0; a < nodes.size(); ++a) {
+    const int node = nodes[a];
+    if (node < constraints.free_nodes) {
+      substitution(static_cast<Eigen::Index>(a), column(node)) = 1;
+      continue;
+    }
+    const int hanging = node - constraints.free_nodes;
+    for (std::size_t k = 0; k < constraints.masters[hanging].size(); ++k)
+      substitution(static_cast<Eigen::Index>(a), column(constraints.masters[hanging][k])) +=
+          constraints.weights[hanging][k];
+  }
+}
+
+bool any_hanging(std::span<const int> nodes, const NodeConstraints& constraints) {
+  return std::any_of(nodes.begin(), nodes.end(), [&](int node) { return node >= constraints.free_nodes; });
+}
+
+}  // namespace
+
 TabulatedElements constrain_lagrange_elements(const TabulatedElements& elements, const NodeConstraints& constraints) {
   TabulatedElements constrained;
   std::vector<int> basis;
   Eigen::MatrixXd substitution, values, gradients;  // reused across elements
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
-    const int local = element.basis_count(), points = element.point_count();
-    const bool any_hanging = std::any_of(element.basis.begin(), element.basis.end(),
-                                         [&](int node) { return node >= constraints.free_nodes; });
-    if (!any_hanging) {
-      const Eigen::Map<const Eigen::MatrixXd> raw_gradients(element.gradients, 3, Eigen::Index(points) * local);
+    const int points = element.point_count();
+    if (!any_hanging(element.basis, constraints)) {
+      const Eigen::Map<const Eigen::MatrixXd> raw_gradients(element.gradients, 3,
+                                                            Eigen::Index(points) * element.basis_count());
       constrained.add(element.basis, element.weights, element.values, raw_gradients.transpose(), element.material);
       continue;
     }
-    // substitution (local × new): column j is the new function basis[j] in the old ones.
-    basis.clear();
-    const auto column = [&](int node) {
-      const auto found = std::find(basis.begin(), basis.end(), node);
-      if (found != basis.end()) return static_cast<int>(found - basis.begin());
-      basis.push_back(node);
-      return static_cast<int>(basis.size()) - 1;
-    };
-    for (const int node : element.basis)
-      if (node < constraints.free_nodes) column(node);
-    for (const int node : element.basis)
-      if (node >= constraints.free_nodes)
-        for (const int master : constraints.masters[node - constraints.free_nodes]) column(master);
-    substitution.setZero(local, static_cast<Eigen::Index>(basis.size()));
-    for (int a = 0; a < local; ++a) {
-      const int node = element.basis[a];
-      if (node < constraints.free_nodes) {
-        substitution(a, column(node)) = 1;
-        continue;
-      }
-      const int hanging = node - constraints.free_nodes;
-      for (std::size_t k = 0; k < constraints.masters[hanging].size(); ++k)
-        substitution(a, column(constraints.masters[hanging][k])) += constraints.weights[hanging][k];
-    }
+    substitute_hanging(element.basis, constraints, basis, substitution);
     values = element.values * substitution;
     gradients.resize(Eigen::Index(points) * substitution.cols(), 3);
     for (int q = 0; q < points; ++q)
       gradients.middleRows(Eigen::Index(q) * substitution.cols(), substitution.cols()) =
           substitution.transpose() * element.gradients_at(q);
     constrained.add(basis, element.weights, values, gradients, element.material);
+  }
+  return constrained;
+}
+
+ElementMasses constrain_element_masses(const ElementMasses& masses, const Eigen::MatrixXi& cells,
+                                       const NodeConstraints& constraints) {
+  ElementMasses constrained = masses;
+  std::vector<int> nodes, basis;
+  Eigen::MatrixXd substitution;
+  for (int e = 0; e < masses.size(); ++e) {
+    nodes.assign(cells.row(e).begin(), cells.row(e).end());
+    if (!any_hanging(nodes, constraints)) continue;
+    substitute_hanging(nodes, constraints, basis, substitution);
+    constrained.matrices[e] = substitution.transpose() * masses.matrices[e] * substitution;
+    constrained.integrals[e] = substitution.transpose() * masses.integrals[e];
   }
   return constrained;
 }

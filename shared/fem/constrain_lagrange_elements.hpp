@@ -1,4 +1,5 @@
 #pragma once
+#include "shared/assembly/element_masses.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/mesh/node_constraints.hpp"
 
@@ -10,5 +11,12 @@ namespace altfem {
 /// constrained space of hanging nodes, u = C ū). An element without hanging nodes is
 /// copied bit for bit.
 TabulatedElements constrain_lagrange_elements(const TabulatedElements& elements, const NodeConstraints& constraints);
+
+/// Element masses reduced over the cells `cells` (#cells × nodes per cell: element e's
+/// basis is row e) in the same constrained basis, in the order constrain_lagrange_elements
+/// gives it: Sᵀ M S and Sᵀ m for an element whose nodes hang (S its substitution), the
+/// others unchanged.
+ElementMasses constrain_element_masses(const ElementMasses& masses, const Eigen::MatrixXi& cells,
+                                       const NodeConstraints& constraints);
 
 }  // namespace altfem

@@ -251,10 +251,21 @@ std::vector<ForestFace> forest_interior_faces(const HexahedralForest& forest) {
         const int level = forest.levels[leaf], other = forest.levels[neighbour];
         // Each face once: from the finer leaf, or the lower index of two at one level.
         if (other > level || (other == level && neighbour < leaf)) continue;
-        faces.push_back({leaf, neighbour, sides.prod() / sides[axis], axis});
+        faces.push_back({leaf, neighbour, sides.prod() / sides[axis], axis, side});
       }
   }
   return faces;
+}
+
+std::vector<CellFaceContact> forest_face_contacts(const std::vector<ForestFace>& faces) {
+  // hexahedron_faces' index of the face on the lower (−) and upper (+) side of each axis.
+  constexpr std::array<std::array<int, 2>, 3> face_on{{{5, 3}, {2, 4}, {0, 1}}};
+  std::vector<CellFaceContact> contacts;
+  contacts.reserve(faces.size());
+  for (const ForestFace& face : faces)
+    contacts.push_back({face.first, face_on[face.axis][face.side > 0 ? 1 : 0], face.second,
+                        face_on[face.axis][face.side > 0 ? 0 : 1]});
+  return contacts;
 }
 
 BoundarySurface forest_boundary_surface(const HexahedralForest& forest, const VolumeMesh& mesh) {

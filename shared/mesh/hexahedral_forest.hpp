@@ -9,6 +9,7 @@
 
 #include "shared/element/element_type.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/cell_face_contact.hpp"
 #include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
@@ -66,9 +67,13 @@ struct ForestFace {
   int first = 0, second = 0;  ///< leaves
   double area = 0;
   int axis = 0;  ///< the face's normal is this coordinate axis
+  int side = 1;  ///< +1: `second` lies on the side of `first` where that coordinate grows; −1: below
 };
 /// Every face between two leaves, each once.
 std::vector<ForestFace> forest_interior_faces(const HexahedralForest& forest);
+/// The same faces as contacts of the leaves' local faces (hexahedron_faces order): a coarse
+/// leaf's face touches the faces of up to four finer ones.
+std::vector<CellFaceContact> forest_face_contacts(const std::vector<ForestFace>& faces);
 
 /// The boundary of forest_mesh's mesh: boundary_surface's faces on the grid's box only — a
 /// coarse face and the finer faces on it, which boundary_surface cannot match, are
