@@ -29,7 +29,9 @@ struct FcmMesh {
   std::optional<Eigen::Vector3i> resolution;  ///< nullopt: a background mesh file
   EmbeddedTetrahedra embedded;
   std::optional<HexahedralForest> forest;
-  NodeConstraints constraints;  ///< the forest's hanging nodes, last in `background`
+  /// The forest's hanging nodes, last in `background` (none: free_nodes is every node).
+  int free_nodes = 0;
+  HangingNodeSources hanging;
 };
 
 // The stress per leaf of `forest` that marks it: of its kept cells (pieces) the one whose
@@ -77,12 +79,16 @@ public:
     resolution_ = meshes.resolution;
     forest_ = std::move(meshes.forest);
     std::optional<RefinedBackground> refined;
-    if (!meshes.constraints.empty())
-      refined = RefinedBackground{std::move(meshes.constraints), forest_face_contacts(forest_interior_faces(*forest_))};
+    if (!meshes.hanging.leaf.empty())
+      refined = RefinedBackground{meshes.free_nodes, std::move(meshes.hanging),
+                                  forest_face_contacts(forest_interior_faces(*forest_))};
     cells_ = std::make_unique<EmbeddedCutCells>(meshes.background, std::move(meshes.embedded), cut_cell_settings(spec),
                                                 materials_, scene.dirichlet, scene.file.string(),
                                                 refined ? &*refined : nullptr);
-    background_constraints_ = refined ? std::move(refined->constraints) : NodeConstraints{};
+    if (refined) {
+      grid_free_nodes_ = refined->free_nodes;
+      grid_hanging_ = std::move(refined->sources);
+    }
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
     // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
@@ -114,8 +120,8 @@ public:
   }
   std::vector<std::string> warnings() const override { return cells_->warnings(); }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FcmMesh>>(
-        FcmMesh{cells_->background(), resolution_, {cells_->embedded().mesh, {}}, forest_, background_constraints_});
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{
+        cells_->background(), resolution_, {cells_->embedded().mesh, {}}, forest_, grid_free_nodes_, grid_hanging_});
   }
   std::string refine_refusal(const RefineSpec& refine) const override {
     if (!forest_)
@@ -141,13 +147,15 @@ public:
                                                      resolution_,
                                                      {cells_->embedded().mesh, {}},
                                                      std::move(refined->forest),
-                                                     std::move(refined->mesh.constraints)});
+                                                     refined->mesh.constraints.free_nodes,
+                                                     std::move(refined->mesh.sources)});
   }
   /// The material's volume Σ vol(K ∩ Ω) over the kept cells (EmbeddedCutCells).
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(cut.blade, facts)});
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(cut.blade, facts),
+                                                     forest_, grid_free_nodes_, grid_hanging_});
   }
   /// Nodal values at the nodes (transfer_to_nodes); after a cut a node copy takes the
   /// values of the copy its material came from, which a position cannot tell apart.
@@ -181,7 +189,8 @@ private:
   SceneMaterials materials_;
   std::optional<Eigen::Vector3i> resolution_;  ///< nullopt: a background mesh file
   std::optional<HexahedralForest> forest_;     ///< a generated hexahedral grid, refined or not
-  NodeConstraints background_constraints_;     ///< its hanging nodes over the background's nodes
+  int grid_free_nodes_ = 0;                    ///< its nodes from here on hang,
+  HangingNodeSources grid_hanging_;            ///< from these
   bool scene_cuts_ = false, ghost_penalty_ = false;
   std::unique_ptr<EmbeddedCutCells> cells_;
 };

@@ -59,7 +59,10 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
       intersection_cell_quadrature(cells, embedded_.mesh, settings.simplifier, settings.simplification_tolerance, {},
                                    statistics_, std::move(cell_tetrahedra));
   BackgroundHangingNodes hanging;
-  if (refined) hanging = {&refined->constraints, pieces_ ? pieces_->background_node : std::vector<int>{}};
+  if (refined)
+    hanging = {&refined->sources, refined->free_nodes, static_cast<int>(background.cells.rows()),
+               pieces_ ? pieces_->background_node : std::vector<int>{},
+               pieces_ ? pieces_->background_cell : std::vector<int>{}};
   fcm_ = build_fcm_discretization(
       cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)), dirichlet, settings.options,
       scene_file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{}, hanging);

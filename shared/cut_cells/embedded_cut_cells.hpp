@@ -41,10 +41,12 @@ struct EmbeddedTetrahedra {
   std::vector<int> parent;
 };
 
-/// A background grid refined 1→8 (hexahedral_forest.hpp): its hanging nodes' constraints
-/// over its nodes, and which cells touch across its faces (a coarse face touches finer ones).
+/// A background grid refined 1→8 (hexahedral_forest.hpp): its nodes from `free_nodes` on
+/// hang, from `sources`; `contacts`: which cells touch across its faces (a coarse face
+/// touches finer ones).
 struct RefinedBackground {
-  NodeConstraints constraints;
+  int free_nodes = 0;
+  HangingNodeSources sources;
   std::vector<CellFaceContact> contacts;
 };
 

@@ -97,13 +97,15 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
       fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
     }
   fcm.constraints.free_nodes = static_cast<int>(used_nodes.size());
-  if (hanging.constraints && !hanging.constraints->empty()) {
+  if (hanging.sources && !hanging.sources->leaf.empty()) {
     if (options.ghost_penalty > 0)
       throw std::invalid_argument("build_fcm_discretization: the ghost penalty does not take hanging nodes");
     std::vector<int> grid_node(used_nodes.size());
     for (size_t i = 0; i < used_nodes.size(); ++i)
       grid_node[i] = hanging.grid_node.empty() ? used_nodes[i] : hanging.grid_node[used_nodes[i]];
-    KeptHangingNodes kept_hanging = kept_hanging_nodes(grid_node, *hanging.constraints);
+    std::vector<char> kept_leaf(static_cast<size_t>(hanging.grid_cells), 0);
+    for (const int cell : kept) kept_leaf[hanging.grid_cell.empty() ? cell : hanging.grid_cell[cell]] = 1;
+    KeptHangingNodes kept_hanging = kept_hanging_nodes(grid_node, hanging.grid_free_nodes, *hanging.sources, kept_leaf);
     std::vector<int> renumbered(used_nodes.size());
     for (size_t i = 0; i < used_nodes.size(); ++i) renumbered[kept_hanging.new_index[i]] = used_nodes[i];
     used_nodes = std::move(renumbered);

@@ -12,6 +12,7 @@
 #include "shared/cut_cells/cell_quadrature.hpp"
 #include "shared/cut_cells/ghost_penalty_faces.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
+#include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/scene/scene.hpp"
@@ -44,12 +45,14 @@ struct FcmCellCounts {
   int inside = 0, cut = 0, discarded = 0, outside = 0;
 };
 
-/// Hanging nodes of a refined background grid (hexahedral_forest.hpp): `constraints` over
-/// the grid's nodes, and per node of the mesh build_fcm_discretization is handed the grid
-/// node it copies (piece_mesh's background_node; empty: that mesh is the grid).
+/// Hanging nodes of a refined background grid (hexahedral_forest.hpp): the grid's nodes from
+/// `grid_free_nodes` on hang, from `sources`; per node and per cell of the mesh
+/// build_fcm_discretization is handed, the grid node and cell it copies or is a piece of
+/// (piece_mesh's background_node and background_cell; empty: that mesh is the grid).
 struct BackgroundHangingNodes {
-  const NodeConstraints* constraints = nullptr;  ///< null: none hangs
-  std::vector<int> grid_node;
+  const HangingNodeSources* sources = nullptr;  ///< null: none hangs
+  int grid_free_nodes = 0, grid_cells = 0;
+  std::vector<int> grid_node, grid_cell;
 };
 
 struct FcmDiscretization {

@@ -2,53 +2,74 @@
 
 #include <string>
 #include <unordered_map>
+#include <utility>
 
 #include "shared/common/error.hpp"
 
 namespace altfem {
 
-KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, const NodeConstraints& background) {
+KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int grid_free_nodes,
+                                    const HangingNodeSources& sources, const std::vector<char>& kept_leaf) {
   const int kept = static_cast<int>(background_node.size());
-  std::unordered_map<int, std::vector<int>> copies;  // background node → its kept nodes
+  std::unordered_map<int, std::vector<int>> copies;  // grid node → its kept nodes
   for (int node = 0; node < kept; ++node) copies[background_node[node]].push_back(node);
 
-  // Per kept node, its masters among the kept nodes (empty: free).
-  std::vector<std::vector<int>> masters(static_cast<std::size_t>(kept));
-  std::vector<int> hanging_index(static_cast<std::size_t>(kept), -1);  // into background.masters
+  // Per kept node, its source leaf's nodes among the kept nodes, some possibly hanging (empty: free).
+  using Terms = std::vector<std::pair<int, double>>;
+  std::vector<Terms> direct(static_cast<std::size_t>(kept));
   for (int node = 0; node < kept; ++node) {
-    const int hanging = background_node[node] - background.free_nodes;
-    if (hanging < 0) continue;
-    std::vector<int> kept_masters;
-    for (const int master : background.masters[hanging]) {
-      const auto found = copies.find(master);
+    const int hanging = background_node[node] - grid_free_nodes;
+    if (hanging < 0 || !kept_leaf[sources.leaf[hanging]]) continue;
+    Terms terms;
+    for (std::size_t k = 0; k < sources.masters[hanging].size(); ++k) {
+      const auto found = copies.find(sources.masters[hanging][k]);
       if (found == copies.end()) {
-        kept_masters.clear();
+        terms.clear();
         break;
       }
       if (found->second.size() > 1)
         throw NumericalError("fcm: a hanging node at the background node " + std::to_string(background_node[node]) +
                              " hangs on a node with " + std::to_string(found->second.size()) +
                              " copies (the material splits where the refinement changes level)");
-      kept_masters.push_back(found->second.front());
+      terms.emplace_back(found->second.front(), sources.weights[hanging][k]);
     }
-    if (kept_masters.empty()) continue;
-    masters[node] = std::move(kept_masters);
-    hanging_index[node] = hanging;
+    direct[node] = std::move(terms);
   }
+
+  // Hanging masters substituted by theirs (a chain climbs one level per step under 2:1 balance).
+  std::vector<Terms> resolved(static_cast<std::size_t>(kept));
+  std::vector<char> done(static_cast<std::size_t>(kept), 0);
+  const auto resolve = [&](auto&& self, int node) -> const Terms& {
+    if (done[node]) return resolved[node];
+    std::unordered_map<int, double> sum;
+    for (const auto& [master, weight] : direct[node]) {
+      if (direct[master].empty()) sum[master] += weight;
+      else
+        for (const auto& [free, inner] : self(self, master)) sum[free] += weight * inner;
+    }
+    resolved[node].assign(sum.begin(), sum.end());
+    done[node] = 1;
+    return resolved[node];
+  };
 
   KeptHangingNodes result;
   result.new_index.assign(static_cast<std::size_t>(kept), -1);
   int next = 0;
   for (int node = 0; node < kept; ++node)
-    if (masters[node].empty()) result.new_index[node] = next++;
+    if (direct[node].empty()) result.new_index[node] = next++;
   result.constraints.free_nodes = next;
   for (int node = 0; node < kept; ++node) {
-    if (masters[node].empty()) continue;
+    if (direct[node].empty()) continue;
     result.new_index[node] = next++;
-    for (int& master : masters[node]) master = result.new_index[master];
-    result.constraints.masters.push_back(std::move(masters[node]));
-    result.constraints.weights.push_back(background.weights[hanging_index[node]]);
+    std::vector<int>& masters = result.constraints.masters.emplace_back();
+    std::vector<double>& weights = result.constraints.weights.emplace_back();
+    for (const auto& [master, weight] : resolve(resolve, node)) {
+      masters.push_back(master);
+      weights.push_back(weight);
+    }
   }
+  for (std::vector<int>& masters : result.constraints.masters)
+    for (int& master : masters) master = result.new_index[master];
   return result;
 }
 

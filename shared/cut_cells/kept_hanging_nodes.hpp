@@ -5,6 +5,7 @@
 // face between cells of different levels.
 #include <vector>
 
+#include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/mesh/node_constraints.hpp"
 
 namespace altfem {
@@ -14,12 +15,14 @@ struct KeptHangingNodes {
   NodeConstraints constraints;  ///< over the renumbered kept nodes
 };
 
-/// `background_node` (#kept nodes): the background node each kept node is (or copies, with
-/// topology-aware cells); `background`: the grid's constraints over its nodes. A kept node
-/// of a hanging background node hangs on the kept copies of its masters. It is free where a
-/// master has no kept copy: the coarse cell it hangs on holds no kept material, so there is
+/// `background_node` (#kept nodes): the grid node each kept node is (or copies, with
+/// topology-aware cells); the grid's nodes from `grid_free_nodes` on hang, from `sources`;
+/// `kept_leaf` (#grid cells): whether a kept cell lies in the grid cell. A kept node of a
+/// hanging grid node hangs on the kept copies of its source leaf's nodes, substituted until
+/// every master is free; it is free where that leaf holds no kept cell, since there is
 /// nothing to conform to. Throws NumericalError where a master has several kept copies (the
 /// material splits at the refinement's edge, and which copy continues it is not decided).
-KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, const NodeConstraints& background);
+KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int grid_free_nodes,
+                                    const HangingNodeSources& sources, const std::vector<char>& kept_leaf);
 
 }  // namespace altfem

@@ -172,6 +172,7 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
   const int node_count = static_cast<int>(lattice.size());
   std::vector<std::vector<std::pair<int, double>>> direct(node_count);  // masters, possibly hanging
   std::vector<char> hanging(node_count, 0);
+  std::vector<int> hanging_leaf(node_count, -1);
   Eigen::VectorXd values(per_cell);
   for (int node = 0; node < node_count; ++node) {
     int coarsest = -1;
@@ -187,6 +188,7 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
     }
     if (coarsest < 0) continue;
     hanging[node] = 1;
+    hanging_leaf[node] = coarsest;
     const int edge = HexahedralForest::edge_units(forest.levels[coarsest]);
     const Eigen::Vector3d xi = (2.0 * (lattice[node] - forest.origins[coarsest]).cast<double>() / edge).array() - 1.0;
     reference.evaluate(xi, values);
@@ -228,6 +230,16 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
     }
     result.constraints.masters.push_back(std::move(masters));
     result.constraints.weights.push_back(std::move(weights));
+  }
+  for (int node = 0; node < node_count; ++node) {
+    if (!hanging[node]) continue;
+    result.sources.leaf.push_back(hanging_leaf[node]);
+    std::vector<int>& masters = result.sources.masters.emplace_back();
+    std::vector<double>& weights = result.sources.weights.emplace_back();
+    for (const auto& [master, weight] : direct[node]) {
+      masters.push_back(number[master]);
+      weights.push_back(weight);
+    }
   }
   result.mesh.element_type = forest.type;
   result.mesh.nodes.resize(node_count, 3);

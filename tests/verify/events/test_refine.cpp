@@ -15,7 +15,6 @@
 //     stress is below the threshold stays.
 //   - A static scene with `cycles` k is solved at its load steps, then k times more, each
 //     after a refinement, with a frame and a log line per solve.
-//   - A method that does not refine is refused before the run, naming the event.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -188,19 +187,6 @@ TEST(RefineCycles, AStaticSceneIsSolvedOncePerCycleAfterItsLastLoadStep) {
   for (int frame = 0; frame <= 4; ++frame)  // at rest, 2 load steps, 2 cycles
     EXPECT_TRUE(std::filesystem::exists(output / ("surface_00000" + std::to_string(frame) + ".vtu"))) << frame;
   EXPECT_FALSE(std::filesystem::exists(output / "surface_000005.vtu"));
-}
-
-TEST(RefineRefusal, AMethodThatDoesNotRefineIsRefusedBeforeTheRun) {
-  const Scene scene = load_scene(scene_file);
-  const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = cli::find_method("fcm");
-  try {
-    Simulation simulation(scene, geometry, "fcm", method.factory, method.rebuild);
-    FAIL() << "fcm refined";
-  } catch (const InputError& error) {
-    EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fcm"), std::string::npos)
-        << error.what();
-  }
 }
 
 }  // namespace

@@ -1,0 +1,145 @@
+// A refine event with fcm (issue #34; the paper does not refine): its generated hexahedral
+// grid split 1→8 as fem's (hexahedral_forest.hpp), with cut cells on both sides of the
+// hanging nodes:
+//   - The patch test stays exact across hanging nodes in cut cells: the 1 × 0.1 × 0.1 m
+//     cantilever on a grid with a margin (every boundary cell cut), its clamp's half split;
+//     an affine field carried across is the refined method's own interpolation of it, and
+//     its strain energy is the exact density × the bar's volume.
+//   - The spaces are nested: a field of the coarse space crosses with energy, mass and
+//     volume unchanged, to round-off.
+//   - Refining every cell that holds material gives the uniformly finer grid: on the
+//     manufactured half-ball, the same number of DOFs, and a smooth field interpolated on
+//     both has the same strain energy — so the kept cells, their hanging nodes next to
+//     cells without material (free: there is nothing to conform to) and their rules agree.
+//   - A halving split, the ghost penalty and a tetrahedral grid are refused before the run.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include "app/method_registry.hpp"
+#include "shared/common/error.hpp"
+#include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
+#include "shared/simulation/simulation.hpp"
+
+namespace altfem {
+namespace {
+
+const std::filesystem::path events_scenes = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes";
+const std::filesystem::path cantilever = events_scenes / "cantilever_refine.json";
+
+// Hex8 cells over the bar's bounds grown by 5% on every side: the bar's faces cut the
+// boundary cells; no stabilising points, so that energies are the material's alone.
+const SceneOverride cut_grid = parse_scene_override(
+    "discretization/fcm={\"cell\": \"hex8\", \"resolution\": [10, 2, 2], \"margin\": 0.05, \"stabilization\": 0}");
+// The clamp's half of the bar split, so split cells meet unsplit ones across hanging nodes.
+const SceneOverride clamp_half =
+    parse_scene_override("events/0/refine/region={\"box\": {\"min\": [-1, -1, -1], \"max\": [0.5, 1, 1]}}");
+
+std::unique_ptr<Simulation> fcm_simulation(const Scene& scene, const SceneGeometry& geometry) {
+  const MethodDescription& method = cli::find_method("fcm");
+  return std::make_unique<Simulation>(scene, geometry, "fcm", method.factory, method.rebuild);
+}
+
+int kept_cells(const MethodInstance& method) { return method.element_counts()["hex8"].get<int>(); }
+
+TEST(RefineFcm, ThePatchTestStaysExactAcrossHangingNodesInCutCells) {
+  const Scene scene = load_scene(cantilever, {cut_grid, clamp_half});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const auto simulation = fcm_simulation(scene, geometry);
+  EXPECT_GT(simulation->method().facts()["cells"]["cut"].get<int>(), 0);
+  const auto affine = [](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return Eigen::Vector3d(1e-3 * x.x() + 2e-4 * x.z(), 3e-4 * x.x() - 1e-4 * x.y(), -2e-4 * x.x() + 5e-4 * x.z());
+  };
+  simulation->state().displacement = simulation->method().interpolate(affine);
+  const EventRecord record = simulation->apply(scene.events.at(0));
+  EXPECT_EQ(record.facts["marked_cells"], 5 * 4);
+  EXPECT_GT(record.facts["hanging_nodes"].get<int>(), 0);
+  EXPECT_EQ(kept_cells(simulation->method()), 5 * 4 + 5 * 4 * 8);
+  EXPECT_GT(simulation->method().facts()["hanging_nodes"].get<int>(), 0);
+  // The material continues across each coarse face into the finer cells on it: no node is
+  // copied, as a face matched by corner nodes alone would have it.
+  EXPECT_EQ(simulation->method().facts()["split_nodes"], 0);
+  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+
+  const Eigen::VectorXd expected = simulation->method().interpolate(affine);
+  const Eigen::VectorXd& carried = simulation->state().displacement;
+  ASSERT_EQ(carried.size(), expected.size());
+  EXPECT_LE((carried - expected).lpNorm<Eigen::Infinity>(), 1e-13 * expected.lpNorm<Eigen::Infinity>());
+
+  Eigen::Matrix3d gradient;
+  gradient << 1e-3, 0, 2e-4, 3e-4, -1e-4, 0, -2e-4, 0, 5e-4;
+  const Eigen::Matrix3d strain = 0.5 * (gradient + gradient.transpose());
+  const double E = 1e8, nu = 0.3, lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double density = 0.5 * lambda * strain.trace() * strain.trace() + mu * strain.squaredNorm();
+  EXPECT_NEAR(simulation->method().discretization().energy(expected), density * 0.01, 1e-12 * density * 0.01);
+}
+
+// Any field of the coarse space (random nodal values, zero on the clamp) crosses unchanged;
+// the Hex8 energy's total degree 4 is within the cut cells' strength-4 rules.
+TEST(RefineFcm, AFieldOfTheCoarseSpaceCrossesWithoutAnEnergyJump) {
+  const Scene scene =
+      load_scene(cantilever, {cut_grid, clamp_half, parse_scene_override("discretization/fcm/quadrature_order=4")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const auto simulation = fcm_simulation(scene, geometry);
+  Eigen::VectorXd& displacement = simulation->state().displacement;
+  std::srand(34);
+  displacement = 1e-3 * Eigen::VectorXd::Random(displacement.size());
+  for (const int dof : simulation->method().discretization().constrained_dofs()) displacement[dof] = 0;
+  const EventRecord record = simulation->apply(scene.events.at(0));
+  EXPECT_EQ(kept_cells(simulation->method()), 180);
+  EXPECT_LE(std::abs(record.conserved["energy_jump_relative"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+}
+
+TEST(RefineFcm, RefiningEveryCellWithMaterialIsTheUniformlyFinerGrid) {
+  const std::filesystem::path half_ball =
+      std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/manufactured_half_ball.json";
+  const auto grid = [](const std::string& resolution) {
+    return parse_scene_override("discretization/fcm={\"cell\": \"hex8\", \"resolution\": " + resolution + "}");
+  };
+  const Scene coarse_scene = load_scene(
+      half_ball, {grid("[4, 4, 2]"),
+                  parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"max_level\": 1}}]")});
+  const Scene fine_scene = load_scene(half_ball, {grid("[8, 8, 4]")});
+  const SceneGeometry geometry = load_scene_geometry(coarse_scene);
+  const auto smooth = [](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return 1e-3 * Eigen::Vector3d(std::sin(2 * x.x()) + x.y(), std::cos(x.y()) * x.z() + x.x(), x.x() * x.z() + x.y());
+  };
+  const auto refined = fcm_simulation(coarse_scene, geometry);
+  refined->state().displacement = refined->method().interpolate(smooth);
+  const EventRecord record = refined->apply(coarse_scene.events.at(0));
+  EXPECT_EQ(record.facts["at_max_level"], 0);
+  const auto uniform = fcm_simulation(fine_scene, geometry);
+
+  EXPECT_EQ(refined->method().discretization().dof_count(), uniform->method().discretization().dof_count());
+  EXPECT_EQ(kept_cells(refined->method()), kept_cells(uniform->method()));
+  EXPECT_EQ(refined->method().discretization().constrained_dofs().size(),
+            uniform->method().discretization().constrained_dofs().size());
+  const double energy = uniform->method().discretization().energy(uniform->method().interpolate(smooth));
+  EXPECT_NEAR(refined->method().discretization().energy(refined->method().interpolate(smooth)), energy, 1e-11 * energy);
+}
+
+TEST(RefineFcmRefusal, AHalvingSplitTheGhostPenaltyAndATetrahedralGridAreRefusedBeforeTheRun) {
+  const std::vector<std::pair<SceneOverride, std::string>> cases{
+      {parse_scene_override("events/0/refine/split=\"1to2\""), "it splits 1to8 only"},
+      {parse_scene_override("discretization/fcm/ghost_penalty=0.1"), "its ghost penalty's face terms"},
+      {parse_scene_override("discretization/fcm/cell=\"tet4\""), "it refines generated hexahedral grids only"}};
+  for (const auto& [override, why] : cases) {
+    const Scene scene = load_scene(cantilever, {cut_grid, override});
+    const SceneGeometry geometry = load_scene_geometry(scene);
+    try {
+      fcm_simulation(scene, geometry);
+      FAIL() << "fcm refined: " << why;
+    } catch (const InputError& error) {
+      EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fcm: " + why), std::string::npos)
+          << error.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace altfem
