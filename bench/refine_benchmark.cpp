@@ -3,12 +3,14 @@
 // repetitions, by phase: geometry (marking by the stress and splitting the mesh,
 // split_polyhedral_cells), integration (the method rebuilt on the refined mesh), transfer,
 // pattern (loads, linear solver, integrator), and the whole event. Targets: 1,000 cells
-// 1→8 in ≤ 1 s on 2 cores for dg and harmonic, ≤ 0.5 s for fem grids (Hex8 and Hex27 here:
-// the forest split and balanced, hanging nodes constrained, refine_hexahedral_grid).
+// 1→8 in ≤ 1 s on 2 cores for dg and harmonic, ≤ 0.5 s for fem and fcm grids (fem Hex8 and
+// Hex27, fcm Hex8 and Hex20 here: the forest split and balanced, hanging nodes constrained,
+// refine_hexahedral_grid; fcm's grid is the bar's bounds grown by 5%, so its boundary cells
+// are cut and get new rules).
 //
-//   bench_refine [--cells N] [--split 1to8|1to2] [--repetitions R] [--method NAME|"fem hex8"|"fem hex27"]
+//   bench_refine [--cells N] [--split 1to8|1to2] [--repetitions R] [--method NAME|"fem hex8"|…]
 //
-// (fem runs with 1to8 only: it does not halve hexahedra.)
+// (fem and fcm run with 1to8 only: they do not halve hexahedra.)
 //
 // The bar is 1 × 0.1 × 0.1 m of N cells (--cells 1000: 40 × 5 × 5), loaded by an affine
 // displacement, so that every cell carries the same stress above the threshold 0.
@@ -75,24 +77,31 @@ int main(int argc, char** argv) {
   const int along = std::max(1, cells / (across * across));
   const std::string resolution =
       "[" + std::to_string(along) + ", " + std::to_string(across) + ", " + std::to_string(across) + "]";
-  const auto bar = [&](const std::string& fem_element) {
-    return load_scene(std::string(ALTFEM_SOURCE_DIR) + "/tests/verify/events/scenes/cantilever_refine.json",
-                      {parse_scene_override("events/0/refine/split=\"" + split + "\""),
-                       parse_scene_override("discretization/dg/resolution=" + resolution),
-                       parse_scene_override("discretization/harmonic/convert/resolution=" + resolution),
-                       parse_scene_override("discretization/fem={\"element\": \"" + fem_element +
-                                            "\", \"mesh\": \"grid\", \"resolution\": " + resolution + "}")});
+  // The scene for a label: "dg", "harmonic", or a grid method and its cell ("fem hex27").
+  const auto bar = [&](const std::string& label) {
+    std::vector<SceneOverride> overrides{
+        parse_scene_override("events/0/refine/split=\"" + split + "\""),
+        parse_scene_override("discretization/dg/resolution=" + resolution),
+        parse_scene_override("discretization/harmonic/convert/resolution=" + resolution)};
+    if (label.starts_with("fem "))
+      overrides.push_back(parse_scene_override("discretization/fem={\"element\": \"" + label.substr(4) +
+                                               "\", \"mesh\": \"grid\", \"resolution\": " + resolution + "}"));
+    if (label.starts_with("fcm "))
+      overrides.push_back(parse_scene_override("discretization/fcm={\"cell\": \"" + label.substr(4) +
+                                               "\", \"resolution\": " + resolution + ", \"margin\": 0.05}"));
+    return load_scene(std::string(ALTFEM_SOURCE_DIR) + "/tests/verify/events/scenes/cantilever_refine.json", overrides);
   };
-  const Scene scene = bar("hex8");
+  const Scene scene = bar("dg");
   const SceneGeometry geometry = load_scene_geometry(scene);
   std::printf("bar of %s cells, every cell split %s, %d repetitions, medians in seconds\n", resolution.c_str(),
               split.c_str(), repetitions);
   std::printf("%-9s %7s %7s %9s | %9s %11s %9s %9s %9s | %12s\n", "method", "cells", "after", "dofs", "geometry",
               "integration", "transfer", "pattern", "event", "per 1000 (s)");
-  for (const std::string label : {"dg", "harmonic", "fem hex8", "fem hex27"}) {
+  for (const std::string label : {"dg", "harmonic", "fem hex8", "fem hex27", "fcm hex8", "fcm hex20"}) {
     const std::string name = label.substr(0, label.find(' '));
-    if ((!only.empty() && name != only && label != only) || (name == "fem" && split != "1to8")) continue;
-    const Timings timings = measure(name == "fem" ? bar(label.substr(4)) : scene, geometry, name, repetitions);
+    const bool grid = name == "fem" || name == "fcm";
+    if ((!only.empty() && name != only && label != only) || (grid && split != "1to8")) continue;
+    const Timings timings = measure(grid ? bar(label) : scene, geometry, name, repetitions);
     const double event = bench::median(timings.total);
     std::printf("%-9s %7lld %7lld %9lld | %9.4f %11.4f %9.4f %9.4f %9.4f | %12.4f\n", label.c_str(),
                 timings.cells_before, timings.cells_after, timings.dofs_after, bench::median(timings.geometry),
