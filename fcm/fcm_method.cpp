@@ -79,7 +79,7 @@ public:
     resolution_ = meshes.resolution;
     forest_ = std::move(meshes.forest);
     std::optional<RefinedBackground> refined;
-    if (!meshes.hanging.leaf.empty())
+    if (!meshes.hanging.empty())
       refined = RefinedBackground{meshes.free_nodes, std::move(meshes.hanging),
                                   forest_face_contacts(forest_interior_faces(*forest_))};
     cells_ = std::make_unique<EmbeddedCutCells>(meshes.background, std::move(meshes.embedded), cut_cell_settings(spec),

@@ -97,7 +97,7 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
       fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
     }
   fcm.constraints.free_nodes = static_cast<int>(used_nodes.size());
-  if (hanging.sources && !hanging.sources->leaf.empty()) {
+  if (hanging.sources && !hanging.sources->empty()) {
     if (options.ghost_penalty > 0)
       throw std::invalid_argument("build_fcm_discretization: the ghost penalty does not take hanging nodes");
     std::vector<int> grid_node(used_nodes.size());

@@ -1,5 +1,6 @@
 #include "shared/cut_cells/kept_hanging_nodes.hpp"
 
+#include <algorithm>
 #include <string>
 #include <unordered_map>
 #include <utility>
@@ -19,10 +20,14 @@ KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int
   std::vector<Terms> direct(static_cast<std::size_t>(kept));
   for (int node = 0; node < kept; ++node) {
     const int hanging = background_node[node] - grid_free_nodes;
-    if (hanging < 0 || !kept_leaf[sources.leaf[hanging]]) continue;
+    if (hanging < 0) continue;
+    const auto& candidates = sources[hanging];
+    const auto source = std::find_if(candidates.begin(), candidates.end(),
+                                     [&](const HangingNodeSource& candidate) { return kept_leaf[candidate.leaf]; });
+    if (source == candidates.end()) continue;
     Terms terms;
-    for (std::size_t k = 0; k < sources.masters[hanging].size(); ++k) {
-      const auto found = copies.find(sources.masters[hanging][k]);
+    for (std::size_t k = 0; k < source->masters.size(); ++k) {
+      const auto found = copies.find(source->masters[k]);
       if (found == copies.end()) {
         terms.clear();
         break;
@@ -31,7 +36,7 @@ KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int
         throw NumericalError("fcm: a hanging node at the background node " + std::to_string(background_node[node]) +
                              " hangs on a node with " + std::to_string(found->second.size()) +
                              " copies (the material splits where the refinement changes level)");
-      terms.emplace_back(found->second.front(), sources.weights[hanging][k]);
+      terms.emplace_back(found->second.front(), source->weights[k]);
     }
     direct[node] = std::move(terms);
   }

@@ -18,10 +18,10 @@ struct KeptHangingNodes {
 /// `background_node` (#kept nodes): the grid node each kept node is (or copies, with
 /// topology-aware cells); the grid's nodes from `grid_free_nodes` on hang, from `sources`;
 /// `kept_leaf` (#grid cells): whether a kept cell lies in the grid cell. A kept node of a
-/// hanging grid node hangs on the kept copies of its source leaf's nodes, substituted until
-/// every master is free; it is free where that leaf holds no kept cell, since there is
-/// nothing to conform to. Throws NumericalError where a master has several kept copies (the
-/// material splits at the refinement's edge, and which copy continues it is not decided).
+/// hanging grid node hangs on the kept copies of the nodes of the first (coarsest) leaf it
+/// hangs on that holds a kept cell, substituted until every master is free; it is free
+/// where no such leaf holds one, since there is nothing to conform to. Throws NumericalError where a master has several
+/// kept copies (the material splits at the refinement's edge, and which copy continues it is not decided).
 KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int grid_free_nodes,
                                     const HangingNodeSources& sources, const std::vector<char>& kept_leaf);
 

@@ -1,5 +1,6 @@
 #include "shared/mesh/hexahedral_forest.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -167,33 +168,45 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
   }
 
   // A node is hanging when a leaf touching it (in one of its 8 octants) does not have it as
-  // a node; the coarsest such leaf's interpolation at it gives its values.
+  // a node; the coarsest such leaf's interpolation at it gives its values. Every such leaf
+  // is kept too, coarsest first, for a method that keeps only some leaves (sources).
   const LeafLocator locator(forest);
   const int node_count = static_cast<int>(lattice.size());
   std::vector<std::vector<std::pair<int, double>>> direct(node_count);  // masters, possibly hanging
+  std::vector<std::vector<HangingNodeSource>> candidates(node_count);
   std::vector<char> hanging(node_count, 0);
-  std::vector<int> hanging_leaf(node_count, -1);
+  std::vector<int> lacking;
   Eigen::VectorXd values(per_cell);
   for (int node = 0; node < node_count; ++node) {
-    int coarsest = -1;
+    lacking.clear();
     for (int octant = 0; octant < 8; ++octant) {
       const Eigen::Vector3i sign(octant & 1 ? 1 : -1, octant & 2 ? 1 : -1, octant & 4 ? 1 : -1);
       const int leaf = locator.locate(2 * lattice[node] + sign);
-      if (leaf < 0 || (coarsest >= 0 && forest.levels[leaf] >= forest.levels[coarsest])) continue;
+      if (leaf < 0 || std::find(lacking.begin(), lacking.end(), leaf) != lacking.end()) continue;
       const int half = HexahedralForest::edge_units(forest.levels[leaf]) / 2;
       const Eigen::Vector3i offset = lattice[node] - forest.origins[leaf];
       const bool on_half_edges = offset.x() % half == 0 && offset.y() % half == 0 && offset.z() % half == 0;
       const Eigen::Vector3i step = offset / half;
-      if (!on_half_edges || !is_node[step.x() + 3 * step.y() + 9 * step.z()]) coarsest = leaf;
+      if (!on_half_edges || !is_node[step.x() + 3 * step.y() + 9 * step.z()]) lacking.push_back(leaf);
     }
-    if (coarsest < 0) continue;
+    if (lacking.empty()) continue;
     hanging[node] = 1;
-    hanging_leaf[node] = coarsest;
-    const int edge = HexahedralForest::edge_units(forest.levels[coarsest]);
-    const Eigen::Vector3d xi = (2.0 * (lattice[node] - forest.origins[coarsest]).cast<double>() / edge).array() - 1.0;
-    reference.evaluate(xi, values);
-    for (int a = 0; a < per_cell; ++a)
-      if (std::abs(values[a]) > 1e-12) direct[node].emplace_back(cells(coarsest, a), values[a]);
+    std::stable_sort(lacking.begin(), lacking.end(), [&](int a, int b) { return forest.levels[a] < forest.levels[b]; });
+    for (const int leaf : lacking) {
+      const int edge = HexahedralForest::edge_units(forest.levels[leaf]);
+      const Eigen::Vector3d xi = (2.0 * (lattice[node] - forest.origins[leaf]).cast<double>() / edge).array() - 1.0;
+      reference.evaluate(xi, values);
+      HangingNodeSource& source = candidates[node].emplace_back();
+      source.leaf = leaf;
+      for (int a = 0; a < per_cell; ++a)
+        if (std::abs(values[a]) > 1e-12) {
+          source.masters.push_back(cells(leaf, a));
+          source.weights.push_back(values[a]);
+        }
+    }
+    const HangingNodeSource& coarsest = candidates[node].front();
+    for (std::size_t k = 0; k < coarsest.masters.size(); ++k)
+      direct[node].emplace_back(coarsest.masters[k], coarsest.weights[k]);
   }
 
   // Hanging masters substituted by theirs (a chain climbs one level per step under 2:1 balance).
@@ -233,13 +246,9 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
   }
   for (int node = 0; node < node_count; ++node) {
     if (!hanging[node]) continue;
-    result.sources.leaf.push_back(hanging_leaf[node]);
-    std::vector<int>& masters = result.sources.masters.emplace_back();
-    std::vector<double>& weights = result.sources.weights.emplace_back();
-    for (const auto& [master, weight] : direct[node]) {
-      masters.push_back(number[master]);
-      weights.push_back(weight);
-    }
+    for (HangingNodeSource& source : candidates[node])
+      for (int& master : source.masters) master = number[master];
+    result.sources.push_back(std::move(candidates[node]));
   }
   result.mesh.element_type = forest.type;
   result.mesh.nodes.resize(node_count, 3);

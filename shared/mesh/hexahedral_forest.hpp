@@ -56,15 +56,19 @@ HexahedralForest refine_forest(const HexahedralForest& forest, const std::vector
 /// leaf across it is hanging: its values are that leaf's interpolation at it (substituted
 /// until every master is free), which keeps the space conforming and, since a child's space
 /// holds its parent's polynomials, nested under refinement.
-/// Where each hanging node's constraint comes from, before hanging masters are substituted:
-/// the leaf whose interpolation gives it, and that interpolation's nodes (some may hang
-/// themselves) and weights. A method that keeps only some cells (fcm) resolves these itself:
-/// a node hanging on a leaf it does not keep is free there.
-struct HangingNodeSources {
-  std::vector<int> leaf;                     ///< per hanging node (constraints' order)
-  std::vector<std::vector<int>> masters;     ///< per hanging node, nodes of `leaf`
-  std::vector<std::vector<double>> weights;  ///< per hanging node, per master
+/// A leaf touching a hanging node that does not have it as a node, and that leaf's
+/// interpolation at it: its nodes (some may hang themselves) and weights.
+struct HangingNodeSource {
+  int leaf = 0;
+  std::vector<int> masters;
+  std::vector<double> weights;
 };
+/// Per hanging node (constraints' order), every leaf it hangs on, coarsest first, before
+/// hanging masters are substituted. A method that keeps only some cells (fcm) constrains
+/// a node to the first of them it keeps, and leaves it free where it keeps none: there is
+/// nothing to conform to.
+using HangingNodeSources = std::vector<std::vector<HangingNodeSource>>;
+
 struct ConstrainedHexahedralMesh {
   VolumeMesh mesh;  ///< free nodes first, then the hanging ones
   NodeConstraints constraints;

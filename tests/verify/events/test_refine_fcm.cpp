@@ -11,17 +11,23 @@
 //     manufactured half-ball, the same number of DOFs, and a smooth field interpolated on
 //     both has the same strain energy — so the kept cells, their hanging nodes next to
 //     cells without material (free: there is nothing to conform to) and their rules agree.
+//   - On an L-shaped beam (cells without material next to kept ones), marking more cells
+//     lowers the static energy: the spaces stay nested and conforming.
 //   - A halving split, the ghost penalty and a tetrahedral grid are refused before the run.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
 
 #include "app/method_registry.hpp"
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
+#include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
 
 namespace altfem {
@@ -121,6 +127,43 @@ TEST(RefineFcm, RefiningEveryCellWithMaterialIsTheUniformlyFinerGrid) {
             uniform->method().discretization().constrained_dofs().size());
   const double energy = uniform->method().discretization().energy(uniform->method().interpolate(smooth));
   EXPECT_NEAR(refined->method().discretization().energy(refined->method().interpolate(smooth)), energy, 1e-11 * energy);
+}
+
+// On an L-shaped beam the grid's cells in the empty quadrant are not kept. A node hanging
+// on such a cell is free, but a node hanging on it and on a kept cell must stay constrained
+// to the kept one: more marked cells then give a larger space and a lower energy. Two runs
+// from the same 4 × 4 × 1 grid (two uniform cycles alike), the third cycle marking more cells
+// in the second: Π_h − Π = ½ |u − u_h|²_E for this conforming, exactly integrated method.
+TEST(RefineFcm, MoreMarkedCellsLowerTheStaticEnergyOnAnLShape) {
+  const auto final_energy = [](double threshold) {
+    const Scene scene =
+        load_scene(events_scenes / "l_beam.json",
+                   {parse_scene_override("events=[{\"time\": 0, \"refine\": {\"criterion\": \"error_indicator\", "
+                                         "\"threshold\": " +
+                                         std::to_string(threshold) + ", \"max_level\": 3, \"cycles\": 3}}]")});
+    const std::filesystem::path output =
+        std::filesystem::path(ALTFEM_BINARY_DIR) / ("verify_refine_fcm_l_beam_" + std::to_string(threshold));
+    std::filesystem::remove_all(output);
+    const nlohmann::json summary =
+        run_simulation(scene, load_scene_geometry(scene), "fcm", cli::find_method("fcm"), output, 0.0);
+    EXPECT_EQ(summary["status"], "ok");
+    EXPECT_EQ(summary["events"].size(), 3u);
+    // The last solve's line of log.txt: step, time, dofs, iterations, linear iterations,
+    // residual, total energy, …
+    std::ifstream log(output / "log.txt");
+    std::string line, last;
+    while (std::getline(log, line))
+      if (!line.empty() && line[0] != '#') last = line;
+    std::istringstream fields(last);
+    double step, time, dofs, iterations, linear_iterations, residual, energy;
+    fields >> step >> time >> dofs >> iterations >> linear_iterations >> residual >> energy;
+    std::filesystem::remove_all(output);
+    return std::make_pair(dofs, energy);
+  };
+  const auto [fewer_dofs, fewer_energy] = final_energy(500);
+  const auto [more_dofs, more_energy] = final_energy(300);
+  EXPECT_GT(more_dofs, fewer_dofs);
+  EXPECT_LT(more_energy, fewer_energy);
 }
 
 TEST(RefineFcmRefusal, AHalvingSplitTheGhostPenaltyAndATetrahedralGridAreRefusedBeforeTheRun) {

@@ -1,0 +1,130 @@
+#!/usr/bin/python3
+"""Adaptive against uniform refinement where the error concentrates (issue #34): an L-shaped
+beam (bench/scenes/l_beam.json: two boxes, 1 x 1 x 0.25 m overall, clamped at y = 1 and
+bending under its weight along -y), whose re-entrant edge at x = y = 0.5 is a stress
+singularity, solved by fcm on uniform Hex8 and Hex20 grids and adaptively from the coarsest
+grid by `refine` cycles of the error indicator (1->8, hanging nodes constrained).
+
+The comparison needs no reference solution. For a conforming method integrated exactly
+(fcm here: every cell is whole or empty, its rules are exact for the stiffness and the
+constant load), the static total energy is the potential energy Pi(u_h), and
+Pi(u_h) - Pi(u) = 1/2 |u - u_h|^2 in the energy norm: a lower energy is a smaller error.
+So an adaptive run "reaches the finest uniform run's error" when its energy is at most
+that run's. For the tables and the plot, the energy-norm error is estimated against Pi(u)
+extrapolated from the three finest uniform runs (Aitken), and printed with its rate.
+
+    /usr/bin/python3 bench/re_entrant_study.py [--altfem build/bin/altfem] [--out out/re_entrant_study]
+"""
+import argparse
+import json
+import math
+import pathlib
+import subprocess
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+UNIFORM = {"hex8": [[4, 4, 1], [8, 8, 2], [16, 16, 4], [32, 32, 8], [64, 64, 16]],
+           "hex20": [[4, 4, 1], [8, 8, 2], [16, 16, 4], [32, 32, 8]]}
+# Error-indicator thresholds [Pa] of the adaptive runs, each refined until nothing is marked
+# (or max_level), from the coarsest grid.
+THRESHOLDS = {"hex8": [4000, 2000, 1400, 1000], "hex20": [1000, 500, 250, 125]}
+
+
+def run(altfem, scene, out):
+    """One `altfem run` of `scene` (a dict); returns (DOFs, final total energy, wall seconds)."""
+    out.mkdir(parents=True, exist_ok=True)
+    path = out / "scene.json"
+    path.write_text(json.dumps(scene, indent=1))
+    start = time.perf_counter()
+    subprocess.run([altfem, "run", str(path), "--method", "fcm", "--out", str(out / "run")], check=True,
+                   stdout=subprocess.DEVNULL)
+    seconds = time.perf_counter() - start
+    last = [line.split() for line in (out / "run/log.txt").read_text().splitlines() if not line.startswith("#")][-1]
+    return int(last[2]), float(last[6]), seconds
+
+
+def extrapolated_energy(energies):
+    """Pi(u) from the last three energies of a sequence refined by one factor (Aitken's delta squared)."""
+    a, b, c = energies[-3:]
+    return c - (c - b) ** 2 / ((c - b) - (b - a))
+
+
+def table(title, rows, limit):
+    print(f"\n{title}")
+    print(f"{'run':28} {'DOFs':>8} {'energy [J]':>12} {'energy error':>13} {'time [s]':>9} {'rate':>6}")
+    previous = None
+    for label, dofs, energy, seconds in rows:
+        error = math.sqrt(max(2 * (energy - limit), 0.0))
+        # error ~ DOFs^(-rate/3): the rate in h of a 3D mesh.
+        rate = "" if previous is None or error == 0 else \
+            f"{-3 * math.log(error / previous[1]) / math.log(dofs / previous[0]):6.2f}"
+        print(f"{label:28} {dofs:8d} {energy:12.6f} {error:13.4e} {seconds:9.2f} {rate:>6}")
+        previous = (dofs, error)
+
+
+def plot(series, limit, path):
+    """Energy-norm error against DOFs and against seconds, log-log, uniform and adaptive per cell."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for (cell, kind), rows in series.items():
+        style = dict(marker="o" if kind == "uniform" else "s", linestyle="-" if kind == "uniform" else "--",
+                     color="C0" if cell == "hex8" else "C1", label=f"fcm {cell} {kind}")
+        errors = [math.sqrt(max(2 * (row[2] - limit[cell]), 1e-30)) for row in rows]
+        axes[0].loglog([row[1] for row in rows], errors, **style)
+        axes[1].loglog([row[3] for row in rows], errors, **style)
+    for axis, label in zip(axes, ["DOFs", "run time [s]"]):
+        axis.set_xlabel(label)
+        axis.set_ylabel("energy-norm error [J^1/2]")
+        axis.grid(True, which="both", alpha=0.3)
+    axes[0].legend(fontsize=8)
+    figure.suptitle("L-shaped beam (re-entrant edge): adaptive against uniform refinement, fcm")
+    figure.tight_layout()
+    figure.savefig(path, dpi=120)
+    print(f"\nplot: {path}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--altfem", default=str(ROOT / "build/bin/altfem"))
+    parser.add_argument("--out", default=str(ROOT / "out/re_entrant_study"))
+    arguments = parser.parse_args()
+    base = json.loads((ROOT / "bench/scenes/l_beam.json").read_text())
+    out = pathlib.Path(arguments.out)
+    series, limit = {}, {}
+    for cell in UNIFORM:
+        uniform = []
+        for resolution in UNIFORM[cell]:
+            scene = json.loads(json.dumps(base))
+            scene["discretization"]["fcm"].update(cell=cell, resolution=resolution)
+            label = f"uniform {resolution[0]}x{resolution[1]}x{resolution[2]}"
+            uniform.append((label, *run(arguments.altfem, scene, out / cell / label.replace(" ", "_"))))
+        adaptive = []
+        for threshold in THRESHOLDS[cell]:
+            scene = json.loads(json.dumps(base))
+            scene["discretization"]["fcm"].update(cell=cell, resolution=UNIFORM[cell][0])
+            scene["events"] = [{"time": 0, "refine": {"criterion": "error_indicator", "threshold": threshold,
+                                                      "max_level": 6, "cycles": 8}}]
+            label = f"adaptive, indicator > {threshold:g}"
+            adaptive.append((label, *run(arguments.altfem, scene, out / cell / f"adaptive_{threshold:g}")))
+        adaptive.sort(key=lambda row: row[1])
+        limit[cell] = extrapolated_energy([row[2] for row in uniform])
+        series[(cell, "uniform")], series[(cell, "adaptive")] = uniform, adaptive
+        print(f"\nfcm {cell}: Pi(u) extrapolated from the uniform runs: {limit[cell]:.6f} J")
+        table(f"fcm {cell}, uniform", uniform, limit[cell])
+        table(f"fcm {cell}, adaptive (error_indicator, 1->8, up to 8 cycles)", adaptive, limit[cell])
+        _, finest_dofs, finest_energy, finest_seconds = uniform[-1]
+        reaching = [row for row in adaptive if row[2] <= finest_energy]
+        if not reaching:
+            print(f"fcm {cell}: no adaptive run reaches the finest uniform energy {finest_energy:.6f}")
+            continue
+        best = min(reaching, key=lambda row: row[3])
+        print(f"fcm {cell}: the finest uniform run's error ({finest_dofs} DOFs, {finest_seconds:.2f} s) is reached by "
+              f"'{best[0]}' with {best[1] / finest_dofs:.2f} of the DOFs and {best[3] / finest_seconds:.2f} of the "
+              "time")
+    plot(series, limit, out / "re_entrant_study.png")
+
+
+if __name__ == "__main__":
+    main()
