@@ -11,13 +11,16 @@ std::optional<RefinedGrid> refine_hexahedral_grid(const HexahedralForest& forest
     for (const ForestFace& face : forest_interior_faces(forest))
       faces.push_back({face.first, face.second, face.area, Eigen::Vector3d::Unit(face.axis)});
   Eigen::MatrixXd centroids(forest.leaf_count(), 3);
+  Eigen::VectorXd volumes(forest.leaf_count());
   for (int leaf = 0; leaf < forest.leaf_count(); ++leaf) {
     const int edge = HexahedralForest::edge_units(forest.levels[leaf]);
-    centroids.row(leaf) = 0.5 * (forest.position(forest.origins[leaf]) +
-                                 forest.position(forest.origins[leaf] + Eigen::Vector3i::Constant(edge)));
+    const Eigen::Vector3d low = forest.position(forest.origins[leaf]),
+                          high = forest.position(forest.origins[leaf] + Eigen::Vector3i::Constant(edge));
+    centroids.row(leaf) = 0.5 * (low + high);
+    volumes[leaf] = (high - low).prod();
   }
-  const RefineMarks marks =
-      mark_cells_to_refine(refine, stresses, faces, centroids, forest.levels, region_tolerance(forest.box), facts);
+  const RefineMarks marks = mark_cells_to_refine(refine, stresses, faces, centroids, volumes, forest.levels,
+                                                 region_tolerance(forest.box), facts);
   facts.update({{"balancing_splits", 0}, {"hanging_nodes", 0}, {"cells", forest.leaf_count()}});
   if (marks.cells.empty()) return std::nullopt;
   int balancing = 0;

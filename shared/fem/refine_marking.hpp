@@ -36,10 +36,16 @@ struct RefineMarks {
 
 /// The cells `refine` marks: stress (one per cell; with the criterion error_indicator, the
 /// indicator over `faces`) above the threshold, centroid (#cells × 3) in the region within
-/// `tolerance`, level (#cells, empty: all 0) below max_level. `facts` gets marked_cells,
-/// at_max_level, largest_stress (and largest_indicator).
+/// `tolerance`, level (#cells, empty: all 0) below max_level. With `fraction`, instead of the
+/// threshold, bulk marking (Dörfler 1996) of the cells in the region: the fewest, largest
+/// estimates first, whose squared estimates carry that fraction of the sum over them, the
+/// estimate of a cell of volume |K| (`volumes`, #cells) and size h = |K|^⅓ being
+/// η² = h Σ_F |F| |[σ n]|² for error_indicator (Kelly et al. 1983's scaling of the energy
+/// norm's error) and |K| σ₁² for principal_stress; marked cells at max_level are then left
+/// out. `facts` gets marked_cells, at_max_level, largest_stress (and largest_indicator).
 RefineMarks mark_cells_to_refine(const RefineSpec& refine, const std::vector<Eigen::Matrix3d>& stresses,
                                  std::span<const SharedFace> faces, const Eigen::MatrixXd& centroids,
-                                 const std::vector<int>& levels, double tolerance, nlohmann::json& facts);
+                                 const Eigen::VectorXd& volumes, const std::vector<int>& levels, double tolerance,
+                                 nlohmann::json& facts);
 
 }  // namespace altfem

@@ -41,8 +41,8 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
       if (!cells.is_boundary_face(face))
         faces.push_back({cells.face_cells(face, 0), cells.face_cells(face, 1), cells.face_areas[face],
                          cells.face_normals.row(face).transpose()});
-  const RefineMarks marks =
-      mark_cells_to_refine(refine, stresses, faces, cells.cell_centroids, mesh.cell_levels, tolerance, facts);
+  const RefineMarks marks = mark_cells_to_refine(refine, stresses, faces, cells.cell_centroids, cells.cell_volumes,
+                                                 mesh.cell_levels, tolerance, facts);
   std::vector<CellSplit> splits;
   int not_convex = 0;
   for (std::size_t m = 0; m < marks.cells.size(); ++m) {

@@ -158,6 +158,10 @@ struct RefineSpec {
   /// Marks a cell whose criterion exceeds this [Pa]: the largest absolute principal value of
   /// its mean small-strain stress σ = λ tr(ε) I + 2μ ε, or its traction jump indicator.
   double threshold = 0.0;
+  /// Instead of `threshold` (when set, in (0, 1]): bulk marking (Dörfler 1996) — the fewest
+  /// cells, largest estimates first, whose squared estimates carry this fraction of their sum
+  /// (mark_cells_to_refine).
+  std::optional<double> fraction;
   RefineSplit split = RefineSplit::eighths;
   int max_level = 3;                     ///< a cell split this many times is not split again
   std::optional<RegionSelector> region;  ///< only cells whose centroid it holds

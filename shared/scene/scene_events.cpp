@@ -65,7 +65,8 @@ void append_refinements(const nlohmann::json& event, const nlohmann::json& time,
   result.refine.criterion = refine["criterion"].get<std::string>() == refine_criterion_names[0]
                                 ? RefineCriterion::principal_stress
                                 : RefineCriterion::error_indicator;
-  result.refine.threshold = refine["threshold"].get<double>();
+  if (refine.contains("threshold")) result.refine.threshold = refine["threshold"].get<double>();
+  if (refine.contains("fraction")) result.refine.fraction = refine["fraction"].get<double>();
   result.refine.split =
       refine["split"].get<std::string>() == refine_split_names[0] ? RefineSplit::eighths : RefineSplit::halves;
   result.refine.max_level = refine["max_level"].get<int>();

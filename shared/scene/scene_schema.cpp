@@ -336,12 +336,14 @@ const ObjectRule refine_event{
       .type = ValueType::string,
       .default_value = "principal_stress",
       .choices = names(refine_criterion_names)},
-     {.key = "threshold", .type = ValueType::number, .required = true, .lower = non_negative},
+     {.key = "threshold", .type = ValueType::number, .lower = non_negative},
+     {.key = "fraction", .type = ValueType::number, .lower = Bound{0.0, false}, .upper = Bound{1.0, true}},
      {.key = "split", .type = ValueType::string, .default_value = "1to8", .choices = names(refine_split_names)},
      {.key = "max_level", .type = ValueType::integer, .default_value = 3, .lower = at_least_one},
      {.key = "region", .type = ValueType::object, .object = &region},
      {.key = "every", .type = ValueType::integer, .lower = at_least_one},
-     {.key = "cycles", .type = ValueType::integer, .lower = at_least_one}}};
+     {.key = "cycles", .type = ValueType::integer, .lower = at_least_one}},
+    {{"threshold", "fraction"}}};
 
 const ObjectRule event{{{.key = "time", .type = ValueType::number, .required = true, .lower = non_negative},
                         {.key = "release", .type = ValueType::string},
