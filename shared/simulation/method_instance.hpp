@@ -77,7 +77,7 @@ public:
   /// Why this instance cannot be refined by a scene's `refine` event of these options (one
   /// phrase); empty when it can. Asked before the run writes anything.
   virtual std::string refine_refusal(const RefineSpec& /*refine*/) const {
-    return "it does not refine yet (dg, harmonic and fem on hexahedral grids do)";
+    return "it does not refine yet (dg, harmonic, and fem and fcm on hexahedral grids do)";
   }
   /// mesh() with the cells the `refine` event marks, for the displacement u (#dofs), split
   /// (docs/architecture.md, "Events"), for the rebuild; null when it marks none. `facts`
