@@ -24,6 +24,8 @@ import pathlib
 import subprocess
 import time
 
+from study_plot import line_style, plot_error_against_cost
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 UNIFORM = {"hex8": [[4, 4, 1], [8, 8, 2], [16, 16, 4], [32, 32, 8], [64, 64, 16]],
            "hex20": [[4, 4, 1], [8, 8, 2], [16, 16, 4], [32, 32, 8]]}
@@ -65,26 +67,13 @@ def table(title, rows, limit):
 
 
 def plot(series, limit, path):
-    """Energy-norm error against DOFs and against seconds, log-log, uniform and adaptive per cell."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    """Energy-norm error against DOFs and against seconds, uniform and adaptive per cell."""
+    lines = {}
     for (cell, kind), rows in series.items():
-        style = dict(marker="o" if kind == "uniform" else "s", linestyle="-" if kind == "uniform" else "--",
-                     color="C0" if cell == "hex8" else "C1", label=f"fcm {cell} {kind}")
-        errors = [math.sqrt(max(2 * (row[2] - limit[cell]), 1e-30)) for row in rows]
-        axes[0].loglog([row[1] for row in rows], errors, **style)
-        axes[1].loglog([row[3] for row in rows], errors, **style)
-    for axis, label in zip(axes, ["DOFs", "run time [s]"]):
-        axis.set_xlabel(label)
-        axis.set_ylabel("energy-norm error [J^1/2]")
-        axis.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=8)
-    figure.suptitle("L-shaped beam (re-entrant edge): adaptive against uniform refinement, fcm")
-    figure.tight_layout()
-    figure.savefig(path, dpi=120)
-    print(f"\nplot: {path}")
+        points = [(row[1], row[3], math.sqrt(max(2 * (row[2] - limit[cell]), 1e-30))) for row in rows]
+        lines[f"fcm {cell} {kind}"] = (line_style(kind == "uniform", "C0" if cell == "hex8" else "C1"), points)
+    plot_error_against_cost(lines, "energy-norm error [J^1/2]",
+                            "L-shaped beam (re-entrant edge): adaptive against uniform refinement, fcm", path)
 
 
 def main():

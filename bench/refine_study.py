@@ -18,6 +18,8 @@ import math
 import pathlib
 import subprocess
 
+from study_plot import line_style, plot_error_against_cost
+
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 UNIFORM = {"dg": [[9, 2, 2], [18, 4, 4]], "harmonic": [[9, 2, 2], [18, 4, 4], [36, 8, 8]],
            "fem": [[9, 2, 2], [18, 4, 4]]}
@@ -50,26 +52,14 @@ def table(title, rows):
 
 
 def plot(series, path):
-    """Error against DOFs and against seconds, log-log, a uniform and an adaptive line per method."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    figure, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    """Error against DOFs and against seconds, a uniform and an adaptive line per method."""
+    lines = {}
     for (method, kind), rows in series.items():
-        style = dict(marker="o" if kind == "uniform" else "s", linestyle="-" if kind == "uniform" else "--",
-                     color={"dg": "C0", "harmonic": "C1", "fem": "C2"}.get(method, "C3"), label=f"{method} {kind}")
-        errors = [float(r["relative_rms_error"]) for r in rows]
-        axes[0].loglog([int(r["dofs"]) for r in rows], errors, **style)
-        axes[1].loglog([float(r["total_s"]) for r in rows], errors, **style)
-    for axis, label in zip(axes, ["DOFs", "run time [s]"]):
-        axis.set_xlabel(label)
-        axis.set_ylabel("RMS surface error / RMS displacement")
-        axis.grid(True, which="both", alpha=0.3)
-    axes[0].legend(fontsize=8)
-    figure.suptitle("refine_bar: adaptive against uniform refinement")
-    figure.tight_layout()
-    figure.savefig(path, dpi=120)
-    print(f"\nplot: {path}")
+        color = {"dg": "C0", "harmonic": "C1", "fem": "C2"}.get(method, "C3")
+        points = [(int(r["dofs"]), float(r["total_s"]), float(r["relative_rms_error"])) for r in rows]
+        lines[f"{method} {kind}"] = (line_style(kind == "uniform", color), points)
+    plot_error_against_cost(lines, "RMS surface error / RMS displacement",
+                            "refine_bar: adaptive against uniform refinement", path)
 
 
 def main():

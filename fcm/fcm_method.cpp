@@ -127,11 +127,8 @@ public:
     if (!forest_)
       return "it refines generated hexahedral grids only (discretization.fcm: a hex8, hex20 or hex27 `cell`, no "
              "`background` file)";
-    if (refine.split == RefineSplit::halves)
-      return "it splits 1to8 only: a hexahedron halved across its principal direction is no cell of the grid";
-    if (scene_cuts_) return "it does not refine a grid that a cut event cuts yet";
     if (ghost_penalty_) return "its ghost penalty's face terms do not take hanging nodes yet";
-    return "";
+    return grid_refine_refusal(refine, scene_cuts_);
   }
   /// The grid's leaves whose stress the event marks split 1→8, the forest balanced 2:1
   /// (refine_hexahedral_grid); the embedded tetrahedra stay as they are, and only the

@@ -4,6 +4,13 @@
 
 namespace altfem {
 
+std::string grid_refine_refusal(const RefineSpec& refine, bool scene_cuts) {
+  if (refine.split == RefineSplit::halves)
+    return "it splits 1to8 only: a hexahedron halved across its principal direction is no cell of the grid";
+  if (scene_cuts) return "it does not refine a grid that a cut event cuts yet";
+  return "";
+}
+
 std::optional<RefinedGrid> refine_hexahedral_grid(const HexahedralForest& forest, const RefineSpec& refine,
                                                   const std::vector<Eigen::Matrix3d>& stresses, nlohmann::json& facts) {
   std::vector<SharedFace> faces;

@@ -6,6 +6,7 @@
 #include <Eigen/Core>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "shared/mesh/hexahedral_forest.hpp"
@@ -17,6 +18,10 @@ struct RefinedGrid {
   HexahedralForest forest;
   ConstrainedHexahedralMesh mesh;  ///< forest_mesh(forest)
 };
+
+/// Why a method on a hexahedral grid's forest refuses `refine` (one phrase; empty when it
+/// does not): a 1→2 split, or a scene that also cuts (`scene_cuts`).
+std::string grid_refine_refusal(const RefineSpec& refine, bool scene_cuts);
 
 /// `forest` with the leaves `refine` marks (mark_cells_to_refine: stresses one per leaf, the
 /// error indicator over forest_interior_faces) split 1→8 and balanced; nullopt when none is

@@ -94,10 +94,7 @@ public:
     if (!forest_)
       return "it refines hexahedral grids only (discretization.fem: \"mesh\": \"grid\", hex8, hex20 or hex27); a "
              "tetrahedral mesh would need red-green closure or bisection to stay conforming, which fem does not have";
-    if (refine.split == RefineSplit::halves)
-      return "it splits 1to8 only: a hexahedron halved across its principal direction is no cell of the grid";
-    if (scene_cuts_) return "it does not refine a mesh that a cut event cuts yet";
-    return "";
+    return grid_refine_refusal(refine, scene_cuts_);
   }
   /// The grid's leaves whose stress the event marks split 1→8, the forest balanced 2:1
   /// (refine_hexahedral_grid).
