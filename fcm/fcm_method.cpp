@@ -32,6 +32,8 @@ struct FcmMesh {
   /// The forest's hanging nodes, last in `background` (none: free_nodes is every node).
   int free_nodes = 0;
   HangingNodeSources hanging;
+  /// The cell rules of the build an event started from, for the cells it left alone.
+  std::shared_ptr<const CellRuleMemory> rules;
 };
 
 // The stress per leaf of `forest` that marks it: of its kept cells (pieces) the one whose
@@ -84,7 +86,7 @@ public:
                                   forest_face_contacts(forest_interior_faces(*forest_))};
     cells_ = std::make_unique<EmbeddedCutCells>(meshes.background, std::move(meshes.embedded), cut_cell_settings(spec),
                                                 materials_, scene.dirichlet, scene.file.string(),
-                                                refined ? &*refined : nullptr);
+                                                CutCellRebuild{refined ? &*refined : nullptr, meshes.rules});
     if (refined) {
       grid_free_nodes_ = refined->free_nodes;
       grid_hanging_ = std::move(refined->sources);
@@ -120,8 +122,13 @@ public:
   }
   std::vector<std::string> warnings() const override { return cells_->warnings(); }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{
-        cells_->background(), resolution_, {cells_->embedded().mesh, {}}, forest_, grid_free_nodes_, grid_hanging_});
+    return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(),
+                                                     resolution_,
+                                                     {cells_->embedded().mesh, {}},
+                                                     forest_,
+                                                     grid_free_nodes_,
+                                                     grid_hanging_,
+                                                     cells_->rule_memory()});
   }
   std::string refine_refusal(const RefineSpec& refine) const override {
     if (!forest_)
@@ -145,14 +152,15 @@ public:
                                                      {cells_->embedded().mesh, {}},
                                                      std::move(refined->forest),
                                                      refined->mesh.constraints.free_nodes,
-                                                     std::move(refined->mesh.sources)});
+                                                     std::move(refined->mesh.sources),
+                                                     cells_->rule_memory()});
   }
   /// The material's volume Σ vol(K ∩ Ω) over the kept cells (EmbeddedCutCells).
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(cut.blade, facts),
-                                                     forest_, grid_free_nodes_, grid_hanging_});
+                                                     forest_, grid_free_nodes_, grid_hanging_, cells_->rule_memory()});
   }
   /// Nodal values at the nodes (transfer_to_nodes); after a cut a node copy takes the
   /// values of the copy its material came from, which a position cannot tell apart.

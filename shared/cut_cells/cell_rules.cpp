@@ -6,6 +6,7 @@
 
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/tetrahedron_buckets.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem {
@@ -14,10 +15,24 @@ namespace {
 /// Relative volume difference under which a cut cell is taken as entirely inside.
 constexpr double inside_tolerance = 1e-12;
 
+// The key of a cell's rule in a CellRuleMemory: everything compute_cell_rules reads for it.
+std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, const Eigen::MatrixXd& corners,
+                            const std::vector<TetrahedronCorners>& candidates) {
+  CacheKeyHasher hasher;
+  hasher.scalar<std::int32_t>(options.order);
+  hasher.scalar<std::int32_t>(options.simplify);
+  hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.method));
+  hasher.scalar<double>(options.tolerance);
+  hasher.scalar<std::int32_t>(static_cast<std::int32_t>(type));
+  hasher.matrix(corners);
+  for (const TetrahedronCorners& tetrahedron : candidates) hasher.matrix(tetrahedron);
+  return hasher.value();
+}
+
 }  // namespace
 
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
-                             const std::vector<std::vector<int>>* cell_tetrahedra) {
+                             const std::vector<std::vector<int>>* cell_tetrahedra, CellRuleReuse* reuse) {
   const TetrahedronBuckets buckets(embedded);
   const ElementType type = background.element_type;
   const int corner_count = element_corner_count(type);
@@ -27,6 +42,9 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   const Eigen::Index cell_count = background.cells.rows();
   CellRules result;
   result.cells.resize(cell_count);
+  // Per cell, its key (0: no tetrahedra, or no memory asked for) and whether it was reused.
+  std::vector<std::uint64_t> keys(reuse ? cell_count : 0, 0);
+  std::vector<char> reused(reuse ? cell_count : 0, 0);
 
   // A cell's work is independent of every other's; exceptions must not escape the
   // parallel region, so the first one is kept and rethrown after it.
@@ -49,6 +67,15 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
         }
         CellRule& cell = result.cells[c];
         if (candidates.empty()) continue;
+        if (reuse) {
+          keys[c] = cell_rule_key(options, type, corners, candidates);
+          if (reuse->previous)
+            if (const auto found = reuse->previous->find(keys[c]); found != reuse->previous->end()) {
+              cell = found->second;
+              reused[c] = 1;
+              continue;
+            }
+        }
         const CellGeometry geometry(type, corners);
         IntersectionRule intersection = intersection_rule(geometry, candidates, options.order);
         cell.clipped_volume = intersection.clipped_volume;
@@ -79,6 +106,12 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   }
   if (failure) std::rethrow_exception(failure);
 
+  if (reuse) {
+    for (Eigen::Index c = 0; c < cell_count; ++c) {
+      reuse->reused += reused[c];
+      if (reuse->computed && keys[c] != 0) reuse->computed->emplace(keys[c], result.cells[c]);
+    }
+  }
   sum_cell_rule_totals(result);
   return result;
 }

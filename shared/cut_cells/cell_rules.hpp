@@ -4,6 +4,8 @@
 // inside the standard reference rule, cut cells the intersection rule simplified to at
 // most M = C(m+3, 3) points. Cells are independent: computed in parallel (OpenMP),
 // each thread with its own scratch, writing only its own cell's entry.
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "shared/mesh/volume_mesh.hpp"
@@ -37,13 +39,27 @@ struct CellRules {
   double max_residual = 0.0;
 };
 
+/// Rules of cells computed before, by a key of everything a cell's rule depends on (the
+/// options, its corners, the corners of the tetrahedra it clips, in order; a 64-bit FNV-1a
+/// hash): a rebuild after an event takes the rules of the cells the event left alone from
+/// here, bit for bit, instead of computing them again.
+using CellRuleMemory = std::unordered_map<std::uint64_t, CellRule>;
+
+/// What compute_cell_rules reuses and remembers (both optional).
+struct CellRuleReuse {
+  const CellRuleMemory* previous = nullptr;  ///< rules taken by key
+  CellRuleMemory* computed = nullptr;        ///< receives the rule of every cell with tetrahedra, by key
+  int reused = 0;                            ///< out: cells whose rule came from `previous`
+};
+
 /// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral
 /// mesh of the object (corner nodes used). A cell counts as inside when its clipped
 /// volume equals its own volume to 1e-12 relative. With `cell_tetrahedra` (one list per
 /// cell), cell c clips exactly the embedded tetrahedra listed for it — a piece of a
 /// background cell (piece_mesh.hpp) — instead of those the bucket grid finds near it.
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
-                             const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
+                             const std::vector<std::vector<int>>* cell_tetrahedra = nullptr,
+                             CellRuleReuse* reuse = nullptr);
 
 /// Recomputes the totals of `rules` (points, cell counts, failures, max residual) from its cells.
 void sum_cell_rule_totals(CellRules& rules);

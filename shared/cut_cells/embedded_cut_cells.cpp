@@ -39,8 +39,9 @@ double cell_volume(const VolumeMesh& mesh, Eigen::Index cell) {
 EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded,
                                    const CutCellSettings& settings, const SceneMaterials& materials,
                                    const std::vector<DirichletCondition>& dirichlet, const std::string& scene_file,
-                                   const RefinedBackground* refined)
+                                   const CutCellRebuild& rebuild)
     : settings_(settings), background_(background), embedded_(std::move(embedded)) {
+  const RefinedBackground* refined = rebuild.refined;
   const auto start = std::chrono::steady_clock::now();
   // Topology-aware cells (Longva et al. 2020 §7's limitation): one cell per piece of
   // material, each clipping only its own tetrahedra, with node copies per part.
@@ -55,9 +56,10 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
     topology_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   statistics_ = std::make_shared<IntersectionStatistics>();
+  rule_memory_ = std::make_shared<CellRuleMemory>();
   const CellQuadratureSource rules =
       intersection_cell_quadrature(cells, embedded_.mesh, settings.simplifier, settings.simplification_tolerance, {},
-                                   statistics_, std::move(cell_tetrahedra));
+                                   statistics_, std::move(cell_tetrahedra), rebuild.rules, rule_memory_);
   BackgroundHangingNodes hanging;
   if (refined)
     hanging = {&refined->sources, refined->free_nodes, static_cast<int>(background.cells.rows()),
@@ -108,6 +110,7 @@ nlohmann::json EmbeddedCutCells::facts() const {
           {"worst_moment_residual", statistics_->max_residual},
           {"failed_simplifications", statistics_->failed_simplifications},
           {"rule_generation_s", statistics_->seconds},
+          {"reused_cell_rules", statistics_->reused_cells},
           {"piece_finding_s", topology_seconds_},
           {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
           {"schwarz_blocks", fcm_.schwarz_blocks},

@@ -50,13 +50,21 @@ struct RefinedBackground {
   std::vector<CellFaceContact> contacts;
 };
 
+/// What a rebuild after an event hands on (both optional).
+struct CutCellRebuild {
+  /// The background's hanging nodes, constrained among the kept cells
+  /// (build_fcm_discretization); the background's nodes then hold them last.
+  const RefinedBackground* refined = nullptr;
+  /// The cell rules built before (rule_memory()): a cell the event left alone (the same
+  /// corners, the same tetrahedra) takes its rules from there instead of being integrated again.
+  std::shared_ptr<const CellRuleMemory> rules;
+};
+
 class EmbeddedCutCells {
 public:
-  /// `refined` (optional): the background's hanging nodes, constrained among the kept cells
-  /// (build_fcm_discretization); the background's nodes then hold them last.
   EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahedra embedded, const CutCellSettings& settings,
                    const SceneMaterials& materials, const std::vector<DirichletCondition>& dirichlet,
-                   const std::string& scene_file, const RefinedBackground* refined = nullptr);
+                   const std::string& scene_file, const CutCellRebuild& rebuild = {});
 
   /// The kept cells (a cell per piece of material), nodes renumbered: basis function i =
   /// node i, hanging nodes last (FcmDiscretization::constraints).
@@ -79,6 +87,8 @@ public:
   /// {"cells": {inside, cut, discarded, split, outside}, "cut_cell_points", …}.
   nlohmann::json facts() const;
 
+  /// Every cell's rules of this build, by key, for the next rebuild (CutCellRebuild::rules).
+  std::shared_ptr<const CellRuleMemory> rule_memory() const { return rule_memory_; }
   /// Per kept cell, the background cell it is (or is a piece of).
   std::vector<int> background_cell_of_kept() const;
 
@@ -114,6 +124,7 @@ private:
   int split_cells_ = 0;
   double topology_seconds_ = 0, seconds_ = 0, material_volume_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
+  std::shared_ptr<CellRuleMemory> rule_memory_;
   FcmDiscretization fcm_;
   std::vector<std::string> warnings_;
 };

@@ -14,7 +14,9 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
                                                   std::optional<SimplificationMethod> method, double tolerance,
                                                   const std::filesystem::path& cache_directory,
                                                   std::shared_ptr<IntersectionStatistics> statistics,
-                                                  std::vector<std::vector<int>> cell_tetrahedra) {
+                                                  std::vector<std::vector<int>> cell_tetrahedra,
+                                                  std::shared_ptr<const CellRuleMemory> previous_rules,
+                                                  std::shared_ptr<CellRuleMemory> remembered_rules) {
   // Each cell's own volume, once: volume fractions are clipped volume over it.
   const int corner_count = element_corner_count(background.element_type);
   std::vector<double> volumes(background.cells.rows());
@@ -24,7 +26,8 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     volumes[c] = CellGeometry(background.element_type, corners).volume();
   }
   return [background, embedded, method, tolerance, cache_directory, volumes, statistics,
-          cell_tetrahedra = std::move(cell_tetrahedra)](int strength, RulePurpose purpose) {
+          cell_tetrahedra = std::move(cell_tetrahedra), previous_rules = std::move(previous_rules),
+          remembered_rules = std::move(remembered_rules)](int strength, RulePurpose purpose) {
     const auto start = std::chrono::steady_clock::now();
     CellRuleOptions options;
     options.order = strength;
@@ -33,9 +36,12 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     if (method) options.method = *method;
     options.tolerance = tolerance;
     const std::vector<std::vector<int>>* tetrahedra = cell_tetrahedra.empty() ? nullptr : &cell_tetrahedra;
-    CellRules rules = cache_directory.empty()
-                          ? compute_cell_rules(background, embedded, options, tetrahedra)
-                          : cached_cell_rules(background, embedded, options, cache_directory, nullptr, tetrahedra);
+    CellRuleReuse reuse{previous_rules.get(), remembered_rules.get()};
+    const bool remembering = previous_rules || remembered_rules;
+    CellRules rules =
+        cache_directory.empty()
+            ? compute_cell_rules(background, embedded, options, tetrahedra, remembering ? &reuse : nullptr)
+            : cached_cell_rules(background, embedded, options, cache_directory, nullptr, tetrahedra);
     if (statistics) {
       statistics->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (purpose == RulePurpose::stiffness) {
@@ -43,6 +49,7 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
         statistics->final_points = rules.final_points;
         statistics->max_residual = rules.max_residual;
         statistics->failed_simplifications = rules.failed_simplifications;
+        statistics->reused_cells = reuse.reused;
       }
     }
     std::vector<CellQuadrature> cells(rules.cells.size());

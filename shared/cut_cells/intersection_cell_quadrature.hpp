@@ -19,6 +19,7 @@ struct IntersectionStatistics {
   double max_residual = 0.0;        ///< worst simplification moment residual
   int failed_simplifications = 0;
   double seconds = 0.0;  ///< generation and simplification, stiffness and mass
+  int reused_cells = 0;  ///< cells whose stiffness rule came from the previous rules
 };
 
 /// background: the FCM mesh (hexahedra with planar faces, or tetrahedra); embedded: a
@@ -27,11 +28,16 @@ struct IntersectionStatistics {
 /// non-empty cache_directory the rules are read from / written to it. The source keeps
 /// copies of both meshes; when `statistics` is given, each call records into it.
 /// A non-empty `cell_tetrahedra` (one list per background cell) names the embedded
-/// tetrahedra each cell clips: the pieces of a PieceMesh (topology-aware cells).
+/// tetrahedra each cell clips: the pieces of a PieceMesh (topology-aware cells). Without a
+/// cache directory, the rules of a cell found in `previous_rules` are taken from there
+/// (a rebuild after an event: only the cells it changed are integrated again), and every
+/// cell's rules go into `remembered_rules` (both optional).
 CellQuadratureSource intersection_cell_quadrature(
     const VolumeMesh& background, const VolumeMesh& embedded,
     std::optional<SimplificationMethod> method = SimplificationOptions{}.method,
     double tolerance = SimplificationOptions{}.tolerance, const std::filesystem::path& cache_directory = {},
-    std::shared_ptr<IntersectionStatistics> statistics = nullptr, std::vector<std::vector<int>> cell_tetrahedra = {});
+    std::shared_ptr<IntersectionStatistics> statistics = nullptr, std::vector<std::vector<int>> cell_tetrahedra = {},
+    std::shared_ptr<const CellRuleMemory> previous_rules = nullptr,
+    std::shared_ptr<CellRuleMemory> remembered_rules = nullptr);
 
 }  // namespace altfem

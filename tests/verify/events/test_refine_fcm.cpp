@@ -4,7 +4,8 @@
 //   - The patch test stays exact across hanging nodes in cut cells: the 1 × 0.1 × 0.1 m
 //     cantilever on a grid with a margin (every boundary cell cut), its clamp's half split;
 //     an affine field carried across is the refined method's own interpolation of it, and
-//     its strain energy is the exact density × the bar's volume.
+//     its strain energy is the exact density × the bar's volume; the cells left whole keep
+//     their rules, reused rather than integrated again.
 //   - The spaces are nested: a field of the coarse space crosses with energy, mass and
 //     volume unchanged, to round-off.
 //   - Refining every cell that holds material gives the uniformly finer grid: on the
@@ -72,6 +73,8 @@ TEST(RefineFcm, ThePatchTestStaysExactAcrossHangingNodesInCutCells) {
   // The material continues across each coarse face into the finer cells on it: no node is
   // copied, as a face matched by corner nodes alone would have it.
   EXPECT_EQ(simulation->method().facts()["split_nodes"], 0);
+  // Only the split cells are integrated again: the 20 others take their rules from before.
+  EXPECT_EQ(simulation->method().facts()["reused_cell_rules"], 5 * 4);
   EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
 
   const Eigen::VectorXd expected = simulation->method().interpolate(affine);
