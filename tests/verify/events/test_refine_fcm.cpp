@@ -29,11 +29,11 @@
 #include <string>
 
 #include "app/method_registry.hpp"
-#include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
+#include "tests/verify/events/refine_refusal.hpp"
 
 namespace altfem {
 namespace {
@@ -194,17 +194,8 @@ TEST(RefineFcmRefusal, AHalvingSplitTheGhostPenaltyAndATetrahedralGridAreRefused
       {parse_scene_override("events/0/refine/split=\"1to2\""), "it splits 1to8 only"},
       {parse_scene_override("discretization/fcm/ghost_penalty=0.1"), "its ghost penalty's face terms"},
       {parse_scene_override("discretization/fcm/cell=\"tet4\""), "it refines generated hexahedral grids only"}};
-  for (const auto& [override, why] : cases) {
-    const Scene scene = load_scene(cantilever, {cut_grid, override});
-    const SceneGeometry geometry = load_scene_geometry(scene);
-    try {
-      fcm_simulation(scene, geometry);
-      FAIL() << "fcm refined: " << why;
-    } catch (const InputError& error) {
-      EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fcm: " + why), std::string::npos)
-          << error.what();
-    }
-  }
+  for (const auto& [override, why] : cases)
+    expect_refine_refused(load_scene(cantilever, {cut_grid, override}), "fcm", why);
 }
 
 }  // namespace

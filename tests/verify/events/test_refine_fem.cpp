@@ -17,10 +17,10 @@
 #include <map>
 
 #include "app/method_registry.hpp"
-#include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
+#include "tests/verify/events/refine_refusal.hpp"
 
 namespace altfem {
 namespace {
@@ -130,18 +130,7 @@ TEST(RefineFemRefusal, ATetrahedralMeshAndAHalvingSplitAreRefusedBeforeTheRun) {
   const std::vector<std::pair<std::vector<SceneOverride>, std::string>> cases{
       {{parse_scene_override("discretization/fem={\"element\": \"tet10\"}")}, "it refines hexahedral grids only"},
       {{fem_grid("hex8"), parse_scene_override("events/0/refine/split=\"1to2\"")}, "it splits 1to8 only"}};
-  for (const auto& [overrides, why] : cases) {
-    const Scene scene = load_scene(scene_file, overrides);
-    const SceneGeometry geometry = load_scene_geometry(scene);
-    const MethodDescription& method = cli::find_method("fem");
-    try {
-      Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
-      FAIL() << "fem refined: " << why;
-    } catch (const InputError& error) {
-      EXPECT_NE(std::string(error.what()).find("/events/0/refine: cannot refine with fem: " + why), std::string::npos)
-          << error.what();
-    }
-  }
+  for (const auto& [overrides, why] : cases) expect_refine_refused(load_scene(scene_file, overrides), "fem", why);
 }
 
 }  // namespace
