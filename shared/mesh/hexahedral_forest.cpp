@@ -172,7 +172,7 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
   // is kept too, coarsest first, for a method that keeps only some leaves (sources).
   const LeafLocator locator(forest);
   const int node_count = static_cast<int>(lattice.size());
-  std::vector<std::vector<std::pair<int, double>>> direct(node_count);  // masters, possibly hanging
+  DirectConstraints direct(node_count);  // masters, possibly hanging
   std::vector<std::vector<HangingNodeSource>> candidates(node_count);
   std::vector<char> hanging(node_count, 0);
   std::vector<int> lacking;
@@ -209,41 +209,10 @@ ConstrainedHexahedralMesh forest_mesh(const HexahedralForest& forest) {
       direct[node].emplace_back(coarsest.masters[k], coarsest.weights[k]);
   }
 
-  // Hanging masters substituted by theirs (a chain climbs one level per step under 2:1 balance).
-  std::vector<std::vector<std::pair<int, double>>> resolved(node_count);
-  std::vector<char> done(node_count, 0);
-  const auto resolve = [&](auto&& self, int node) -> const std::vector<std::pair<int, double>>& {
-    if (done[node]) return resolved[node];
-    std::unordered_map<int, double> sum;
-    for (const auto& [master, weight] : direct[node]) {
-      if (!hanging[master]) sum[master] += weight;
-      else
-        for (const auto& [free, inner] : self(self, master)) sum[free] += weight * inner;
-    }
-    resolved[node].assign(sum.begin(), sum.end());
-    done[node] = 1;
-    return resolved[node];
-  };
-
-  // Free nodes first, in the order met, then the hanging ones.
-  std::vector<int> number(node_count);
-  int next = 0;
-  for (int node = 0; node < node_count; ++node)
-    if (!hanging[node]) number[node] = next++;
+  // Free nodes first, in the order met, then the hanging ones, their chains substituted.
+  std::vector<int> number;
   ConstrainedHexahedralMesh result;
-  result.constraints.free_nodes = next;
-  for (int node = 0; node < node_count; ++node) {
-    if (!hanging[node]) continue;
-    number[node] = next++;
-    std::vector<int> masters;
-    std::vector<double> weights;
-    for (const auto& [master, weight] : resolve(resolve, node)) {
-      masters.push_back(number[master]);
-      weights.push_back(weight);
-    }
-    result.constraints.masters.push_back(std::move(masters));
-    result.constraints.weights.push_back(std::move(weights));
-  }
+  result.constraints = resolve_constraints(direct, number);
   for (int node = 0; node < node_count; ++node) {
     if (!hanging[node]) continue;
     for (HangingNodeSource& source : candidates[node])

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <unordered_map>
 
 namespace altfem {
 
@@ -42,6 +43,43 @@ Eigen::VectorXd NodeConstraints::all_nodes(const Eigen::VectorXd& u) const {
     all.segment<3>(3 * (static_cast<Eigen::Index>(free_nodes) + i)) = value;
   }
   return all;
+}
+
+NodeConstraints resolve_constraints(const DirectConstraints& direct, std::vector<int>& new_index) {
+  const int node_count = static_cast<int>(direct.size());
+  DirectConstraints resolved(direct.size());
+  std::vector<char> done(direct.size(), 0);
+  const auto resolve = [&](auto&& self, int node) -> const std::vector<std::pair<int, double>>& {
+    if (done[node]) return resolved[node];
+    std::unordered_map<int, double> sum;
+    for (const auto& [master, weight] : direct[node]) {
+      if (direct[master].empty()) sum[master] += weight;
+      else
+        for (const auto& [free, inner] : self(self, master)) sum[free] += weight * inner;
+    }
+    resolved[node].assign(sum.begin(), sum.end());
+    done[node] = 1;
+    return resolved[node];
+  };
+
+  NodeConstraints constraints;
+  new_index.assign(direct.size(), -1);
+  int next = 0;
+  for (int node = 0; node < node_count; ++node)
+    if (direct[node].empty()) new_index[node] = next++;
+  constraints.free_nodes = next;
+  for (int node = 0; node < node_count; ++node)
+    if (!direct[node].empty()) new_index[node] = next++;
+  for (int node = 0; node < node_count; ++node) {
+    if (direct[node].empty()) continue;
+    std::vector<int>& masters = constraints.masters.emplace_back();
+    std::vector<double>& weights = constraints.weights.emplace_back();
+    for (const auto& [master, weight] : resolve(resolve, node)) {
+      masters.push_back(new_index[master]);
+      weights.push_back(weight);
+    }
+  }
+  return constraints;
 }
 
 }  // namespace altfem

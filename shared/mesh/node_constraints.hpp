@@ -4,6 +4,7 @@
 // are a fixed combination of free nodes' — the coarser neighbour's interpolation at it — so
 // the space stays conforming across a face between cells of different levels.
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 namespace altfem {
@@ -25,5 +26,15 @@ struct NodeConstraints {
   /// coefficients u of the free nodes (3 × free_nodes).
   Eigen::VectorXd all_nodes(const Eigen::VectorXd& u) const;
 };
+
+/// Per node, the combination of other nodes that gives its values (masters, weights); empty
+/// for a free node. A master may be constrained itself (a chain, which 2:1 balance keeps
+/// one level per step); chains must end in free nodes.
+using DirectConstraints = std::vector<std::vector<std::pair<int, double>>>;
+
+/// `direct`'s nodes renumbered free first, then the constrained ones, each in their order
+/// (`new_index`, #nodes: a node's index in the renumbering), and the constraints over the
+/// renumbered nodes with every chain substituted down to free masters.
+NodeConstraints resolve_constraints(const DirectConstraints& direct, std::vector<int>& new_index);
 
 }  // namespace altfem
