@@ -78,6 +78,48 @@ struct CutPieces {
   int cap_triangles = 0;
 };
 
+// CGAL's corefinement numbers the vertices and faces it makes in an order that follows
+// heap addresses, which differ from run to run, and the cap's remeshing depends on that
+// order: the same cut gave surfaces that differed in a few vertices from run to run.
+// Renumbered by position (copies of a point on the cut curve by their neighbours), and the
+// faces by their renumbered vertices, the same cut gives the same surface every run.
+void renumber_by_position(Mesh& mesh) {
+  const auto [input_of, has_input] = mesh.property_map<Mesh::Vertex_index, int>("v:input");
+  using Key = std::array<double, 7>;
+  std::vector<std::pair<Key, Mesh::Vertex_index>> keyed;
+  for (const Mesh::Vertex_index v : mesh.vertices()) {
+    Eigen::Vector3d ring = Eigen::Vector3d::Zero();
+    if (!mesh.is_isolated(v))
+      for (const Mesh::Vertex_index neighbour : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+        ring += vector_of(mesh.point(neighbour));
+    const Point& p = mesh.point(v);
+    keyed.push_back({{p.x(), p.y(), p.z(), has_input ? double(input_of[v]) : 0.0, ring.x(), ring.y(), ring.z()}, v});
+  }
+  std::sort(keyed.begin(), keyed.end());
+  Mesh sorted;
+  sorted.set_recycle_garbage(false);
+  auto sorted_input = sorted.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
+  std::vector<Mesh::Vertex_index> renumbered(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  for (const auto& [key, v] : keyed) {
+    renumbered[v.idx()] = sorted.add_vertex(mesh.point(v));
+    if (has_input) sorted_input[renumbered[v.idx()]] = input_of[v];
+  }
+  std::vector<std::array<Mesh::Vertex_index, 3>> faces;
+  for (const Mesh::Face_index f : mesh.faces()) {
+    std::array<Mesh::Vertex_index, 3> corners;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners[k++] = renumbered[v.idx()];
+    // The lowest corner first keeps the face's orientation.
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+    faces.push_back(corners);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (const auto& corners : faces) sorted.add_face(corners[0], corners[1], corners[2]);
+  if (!has_input) sorted.remove_property_map(sorted_input);
+  mesh = std::move(sorted);
+}
+
 // The faces of `mesh` that `in_cap` selects, remeshed to edges of about `length` with their
 // border kept: a cap triangulated from its boundary alone has long edges across it, which
 // the next cut crosses one by one, so that the points of the cut curve multiply with
@@ -112,6 +154,7 @@ void cut_piece_by_plane(const Mesh& piece, const CuttingPlane& blade, double edg
     // clip keeps the part on the negative side of its plane.
     PMP::clip(half, side < 0 ? plane : plane.opposite(), CGAL::parameters::clip_volume(true));
     PMP::triangulate_faces(half);
+    renumber_by_position(half);
     const auto input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first;
     // New points (input −1) and the input's on the plane: the cut curve and the cap.
     const auto on_plane = [&](Mesh::Vertex_index v) { return input_of[v] < 0 || plane.has_on(half.point(v)); };
@@ -211,6 +254,8 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
   PMP::triangulate_faces(cap);
+  renumber_by_position(piece);
+  renumber_by_position(cap);
   remesh_cap(
       cap, [](Mesh::Face_index) { return true; }, edge_length);
 
