@@ -13,29 +13,10 @@ MonomialBasisEvaluator::MonomialBasisEvaluator(const PolyhedralMesh& mesh, const
       for (int node : mesh.faces[face]) bounds_[cell].extend(mesh.nodes.row(node).transpose());
 }
 
-double MonomialBasisEvaluator::plane_distance(int element, const Eigen::Vector3d& x) const {
-  double distance = -std::numeric_limits<double>::infinity();
-  for (int face : mesh_.cell_faces[element]) {
-    const double outward = mesh_.face_cells(face, 0) == element ? 1.0 : -1.0;
-    const Eigen::Vector3d normal = outward * mesh_.face_normals.row(face).transpose();
-    distance = std::max(distance, (x - mesh_.face_centroids.row(face).transpose()).dot(normal));
-  }
-  return distance;
-}
-
 bool MonomialBasisEvaluator::evaluate_inside(int element, const Eigen::Vector3d& x, std::vector<int>& basis,
                                              std::vector<double>& values) const {
   const double tolerance = 1e-9 * mesh_.cell_diameters[element];
-  if (bounds_[element].exteriorDistance(x) > tolerance) return false;
-  // Behind every face plane is inside any closed cell (the planes' intersection is its
-  // kernel); in front of one is outside only for a convex cell. Cut, merged and coarse
-  // cells of a sliced mesh may be non-convex: the winding number decides.
-  if (plane_distance(element, x) > tolerance) {
-    const PolyhedralCellKind kind = mesh_.cell_kinds[element];
-    const bool convex = kind == PolyhedralCellKind::tetrahedron || kind == PolyhedralCellKind::hexahedron ||
-                        kind == PolyhedralCellKind::refined;
-    if (convex || !cell_holds(mesh_, element, x, tolerance)) return false;
-  }
+  if (bounds_[element].exteriorDistance(x) > tolerance || !cell_holds(mesh_, element, x, tolerance)) return false;
   fill(element, x, basis, values);
   return true;
 }

@@ -28,8 +28,6 @@ public:
   BoundaryPointRule boundary_rule() const override { return BoundaryPointRule::average; }
 
 private:
-  // max over the cell's faces of (x − face centroid)·(outward normal): ≤ 0 inside.
-  double plane_distance(int element, const Eigen::Vector3d& x) const;
   void fill(int element, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;
 
   const PolyhedralMesh& mesh_;

@@ -14,7 +14,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   PolyhedralMesh& pieces = result_of_cut.mesh;
   std::vector<double> minimum_volume(static_cast<std::size_t>(pieces.cell_count()), 0.0);
   for (int piece = 0; piece < pieces.cell_count(); ++piece)
-    if (pieces.cell_kinds[piece] == PolyhedralCellKind::cut)
+    if (pieces.cell_kinds[piece] == PolyhedralCellKind::split)
       minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(result_of_cut.parent_cell[piece]);
   const MergedPieces merged = merge_small_pieces(pieces, minimum_volume);
   std::vector<NodeSource> node_sources = std::move(result_of_cut.node_sources);

@@ -46,7 +46,7 @@ std::string describe(const std::string& method, const Scene& scene, const nlohma
 }  // namespace
 
 nlohmann::json polyhedral_mesh_facts(const PolyhedralMesh& mesh, double geometry_volume) {
-  int tetrahedra = 0, hexahedra = 0, cut = 0, merged = 0, coarse = 0, refined = 0;
+  int tetrahedra = 0, hexahedra = 0, cut = 0, merged = 0, coarse = 0, refined = 0, split = 0;
   for (PolyhedralCellKind kind : mesh.cell_kinds) {
     switch (kind) {
       case PolyhedralCellKind::tetrahedron: ++tetrahedra; break;
@@ -55,6 +55,7 @@ nlohmann::json polyhedral_mesh_facts(const PolyhedralMesh& mesh, double geometry
       case PolyhedralCellKind::merged: ++merged; break;
       case PolyhedralCellKind::coarse: ++coarse; break;
       case PolyhedralCellKind::refined: ++refined; break;
+      case PolyhedralCellKind::split: ++split; break;
     }
   }
   int boundary_faces = 0;
@@ -67,7 +68,8 @@ nlohmann::json polyhedral_mesh_facts(const PolyhedralMesh& mesh, double geometry
             {"cut", cut},
             {"merged", merged},
             {"coarse", coarse},
-            {"refined", refined}}},
+            {"refined", refined},
+            {"split", split}}},
           {"faces", {{"interior", mesh.face_count() - boundary_faces}, {"boundary", boundary_faces}}},
           {"nodes", mesh.nodes.rows()},
           {"volume", volume},

@@ -385,7 +385,7 @@ private:
     }
     for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index) {
       const int cell = parent_[piece_index];
-      result.cell_kinds.push_back(crossed_[cell] ? PolyhedralCellKind::cut : mesh_.cell_kinds[cell]);
+      result.cell_kinds.push_back(crossed_[cell] ? PolyhedralCellKind::split : mesh_.cell_kinds[cell]);
     }
     if (compute_geometry_) compute_polyhedral_geometry(result);
     cut.parent_cell = parent_;

@@ -90,7 +90,7 @@ TetrahedralCut cut_tetrahedral_mesh(const VolumeMesh& mesh, const CuttingPlane& 
   for (int piece = 0; piece < pieces.cell_count(); ++piece) {
     const int parent = kept_cell[cut.parent_cell[piece]];
     const std::vector<std::vector<int>> loops = outward_loops(pieces, piece);
-    if (pieces.cell_kinds[piece] != PolyhedralCellKind::cut) {
+    if (pieces.cell_kinds[piece] != PolyhedralCellKind::split) {
       // Not crossed: the input row, each corner as the copy this piece holds.
       std::array<int, 4> row{};
       for (int corner = 0; corner < 4; ++corner)

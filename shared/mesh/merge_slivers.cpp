@@ -73,7 +73,8 @@ MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>&
   const int cell_count = mesh.cell_count();
   std::vector<int> slivers;
   for (int cell = 0; cell < cell_count; ++cell)
-    if (mesh.cell_kinds[cell] == PolyhedralCellKind::cut && mesh.cell_volumes(cell) < minimum_volume[cell])
+    if ((mesh.cell_kinds[cell] == PolyhedralCellKind::cut || mesh.cell_kinds[cell] == PolyhedralCellKind::split) &&
+        mesh.cell_volumes(cell) < minimum_volume[cell])
       slivers.push_back(cell);
   MergedPieces result;
   if (slivers.empty()) return result;

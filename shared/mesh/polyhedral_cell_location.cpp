@@ -62,6 +62,18 @@ double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eig
 }
 
 bool cell_holds(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x, double tolerance) {
+  // Behind every face plane is inside any closed cell (the planes' intersection is its
+  // kernel); in front of one is outside a convex cell. Only the rest needs the winding
+  // number: a non-convex cell's points outside its kernel.
+  double plane_distance = -std::numeric_limits<double>::infinity();
+  for (int face : mesh.cell_faces[cell]) {
+    const double outward = mesh.face_cells(face, 0) == cell ? 1.0 : -1.0;
+    plane_distance = std::max(
+        plane_distance,
+        outward * (x - mesh.face_centroids.row(face).transpose()).dot(mesh.face_normals.row(face).transpose()));
+  }
+  if (plane_distance <= tolerance) return true;
+  if (convex_kind(mesh.cell_kinds[cell])) return false;
   // A node of the cell (the stitched and MLS embeddings locate every mesh node) lies on its
   // boundary, where the winding number is about ½ and only the distance to the faces
   // decides; comparing with the nodes costs a fraction of either on a cut cell of

@@ -16,7 +16,9 @@ namespace altfem {
 /// (convex or not).
 double distance_to_cell_boundary(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x);
 
-/// x inside `cell` (winding number > 1/2) or within `tolerance` of its boundary.
+/// x inside `cell` (winding number > 1/2) or within `tolerance` of its boundary. A convex
+/// cell (convex_kind) is decided by its face planes alone, a non-convex one by them where
+/// they can (x behind all of them).
 bool cell_holds(const PolyhedralMesh& mesh, int cell, const Eigen::Vector3d& x, double tolerance);
 
 }  // namespace altfem

@@ -19,7 +19,14 @@ enum class PolyhedralCellKind : int {
   merged = 3,       ///< a cell with sliver pieces merged into it (merge_slivers)
   coarse = 4,       ///< an octree cell: 2^(3L) grid cells wholly inside, its finer neighbours' nodes on its faces
   refined = 5,      ///< a convex piece of a cell split by refinement (split_polyhedral_cells)
+  split = 6,        ///< a convex piece of a convex cell a blade's plane crossed (cut_polyhedral_mesh)
 };
+
+/// Cells of this kind are convex: a point in front of one of their face planes is outside.
+inline bool convex_kind(PolyhedralCellKind kind) {
+  return kind == PolyhedralCellKind::tetrahedron || kind == PolyhedralCellKind::hexahedron ||
+         kind == PolyhedralCellKind::refined || kind == PolyhedralCellKind::split;
+}
 
 struct PolyhedralMesh {
   Eigen::MatrixXd nodes;  ///< #nodes × 3

@@ -63,7 +63,7 @@ TEST(CutPolyhedralMesh, AnAxisPlaneThroughCellsSplitsThemAndSeparatesTheSides) {
   EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0.0);
   for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
     const int parent = cut.parent_cell[cell];
-    EXPECT_TRUE(mesh.cell_centroids(parent, 0) < 0.5 || cut.mesh.cell_kinds[cell] != PolyhedralCellKind::cut) << cell;
+    EXPECT_TRUE(mesh.cell_centroids(parent, 0) < 0.5 || cut.mesh.cell_kinds[cell] != PolyhedralCellKind::split) << cell;
   }
 }
 
