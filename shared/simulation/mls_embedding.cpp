@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <map>
 #include <span>
 #include <string>
 #include <unordered_map>
@@ -49,27 +50,62 @@ private:
   std::unordered_map<long long, std::vector<int>> buckets_;
 };
 
-// Each sample under the cube that holds it (cubes of the largest support): a point's
-// samples within a reach are among those of the cubes its box of that reach overlaps.
-CubeBuckets sample_cubes(const Eigen::MatrixXd& samples, double largest_radius) {
-  CubeBuckets cubes(largest_radius, samples.colwise().minCoeff());
-  for (Eigen::Index i = 0; i < samples.rows(); ++i) cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
-  return cubes;
+// A piece's samples under cubes of the piece's largest support: a point's enlarged
+// supports (rare) reach only its own piece's samples, and only as far as that piece's
+// largest support. One grid of the whole mesh's largest support made each point of a chip
+// a blade took off visit every sample of the body beside it.
+struct PieceSamples {
+  double largest_radius = 0;
+  CubeBuckets cubes;
+};
+
+std::unordered_map<int, PieceSamples> piece_samples(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii,
+                                                    const std::vector<int>& sample_piece) {
+  std::map<int, double> largest;
+  for (Eigen::Index i = 0; i < samples.rows(); ++i)
+    largest[sample_piece[i]] = std::max(largest[sample_piece[i]], radii[i]);
+  const Eigen::RowVector3d origin = samples.colwise().minCoeff();
+  std::unordered_map<int, PieceSamples> pieces;
+  for (const auto& [piece, radius] : largest) {
+    const double side = std::max(radius, 1e-12 * radii.maxCoeff());
+    pieces.emplace(piece, PieceSamples{side, CubeBuckets(side, origin)});
+  }
+  for (Eigen::Index i = 0; i < samples.rows(); ++i)
+    pieces.at(sample_piece[i]).cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
+  return pieces;
 }
 
-// Each sample under every cube its own support ball reaches (its bounding box): a point's
-// candidates are those of its own cube. On a sliced mesh the spacings range from a grid
-// cell's edge to a surface facet's, and a query reaching as far as the largest support
-// visited every surface node near a point; cubes of the median support's side give a point
-// few candidates and list a large ball in few cubes.
-CubeBuckets support_cubes(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii) {
-  std::vector<double> sorted(radii.data(), radii.data() + radii.size());
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2), sorted.end());
-  CubeBuckets cubes(std::max(sorted[sorted.size() / 2], 1e-12 * radii.maxCoeff()), samples.colwise().minCoeff());
-  for (Eigen::Index i = 0; i < samples.rows(); ++i)
-    cubes.insert(static_cast<int>(i), samples.row(i).array() - radii[i], samples.row(i).array() + radii[i]);
-  return cubes;
-}
+// Each sample under every cube its own support ball reaches (its bounding box), in one grid
+// per piece and power of two of the support radius, with cubes of that level's largest
+// radius: a point's candidates are those of its own cube in each level of its own piece.
+// On a sliced mesh the spacings range from a grid cell's edge to a surface facet's, and on
+// a cut one from the body's cells to the chips a blade took off its tip; one grid of the
+// median support's side listed each large ball in (its radius / the median)³ cubes, and
+// one grid for every piece had a point at a pencil's tip visit the samples of every chip
+// beside it. Here a ball is in at most 27 cubes, and a point meets its own piece alone.
+class SupportCubes {
+public:
+  SupportCubes(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii, const std::vector<int>& sample_piece) {
+    const Eigen::RowVector3d origin = samples.colwise().minCoeff();
+    const double smallest = std::max(radii.minCoeff(), 1e-12 * radii.maxCoeff());
+    for (Eigen::Index i = 0; i < samples.rows(); ++i) {
+      const int level = std::max(0, static_cast<int>(std::floor(std::log2(radii[i] / smallest))));
+      const std::pair<int, int> key(sample_piece[i], level);
+      auto slot = grids_.find(key);
+      if (slot == grids_.end()) slot = grids_.emplace(key, CubeBuckets(std::ldexp(smallest, level + 1), origin)).first;
+      slot->second.insert(static_cast<int>(i), samples.row(i).array() - radii[i], samples.row(i).array() + radii[i]);
+    }
+  }
+  /// Visits, once each, the samples of `piece` whose support's box holds x's cube.
+  template <typename Visit>
+  void for_each_at(int piece, const Eigen::RowVector3d& x, Visit&& visit) const {
+    for (auto grid = grids_.lower_bound({piece, 0}); grid != grids_.end() && grid->first.first == piece; ++grid)
+      grid->second.for_each_in(x, x, visit);
+  }
+
+private:
+  std::map<std::pair<int, int>, CubeBuckets> grids_;  // by (piece, level)
+};
 
 // The largest basis function index a point of `embedding` uses, plus one.
 int basis_function_bound(const BasisEmbedding& embedding, Eigen::Index point_count) {
@@ -105,9 +141,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
   for (Eigen::Index sample = 0; sample < samples.rows(); ++sample)
     sample_piece[sample] = piece_of(stitched_.basis_of(sample));
   for (Eigen::Index point = 0; point < points.rows(); ++point) point_piece[point] = piece_of(located.basis_of(point));
-  const double largest_radius = options.support * spacing.maxCoeff();
-  const CubeBuckets supports = support_cubes(samples, options.support * spacing);
-  const CubeBuckets reachable = sample_cubes(samples, largest_radius);  // for enlarged supports (rare)
+  const Eigen::VectorXd radii = options.support * spacing;
+  const SupportCubes supports(samples, radii, sample_piece);
+  const std::unordered_map<int, PieceSamples> reachable = piece_samples(samples, radii, sample_piece);
   std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 256)
@@ -118,15 +154,16 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
       std::vector<double> theta;
       // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
       // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
-      // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)).
+      // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)); ℓ's scale cancels there.
+      const auto own = reachable.find(point_piece[point]);
       bool solved = false;
       for (double enlarge = 1.0; enlarge <= 8.0 && !solved; enlarge *= 1.5) {
         near.clear();
         theta.clear();
         Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
-        const double reach = enlarge * largest_radius;
+        const double reach = enlarge * (own == reachable.end() ? radii.maxCoeff() : own->second.largest_radius);
+        // Both grids hold the point's own piece's samples alone.
         const auto add = [&](int sample) {
-          if (sample_piece[sample] != point_piece[point]) return;
           const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
           const double distance = (samples.row(sample).transpose() - x).norm();
           if (distance >= radius) return;
@@ -138,8 +175,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           near.push_back(sample);
           theta.push_back(weight);
         };
-        if (enlarge == 1.0) supports.for_each_in(x.transpose(), x.transpose(), add);
-        else reachable.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
+        if (enlarge == 1.0) supports.for_each_at(point_piece[point], x.transpose(), add);
+        else if (own != reachable.end())
+          own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
         if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
         const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
