@@ -65,17 +65,17 @@ std::vector<int> drop_unused_nodes(PolyhedralMesh& mesh) {
 }
 
 int merge_slivers(PolyhedralMesh& mesh, double minimum_volume) {
-  return merge_small_pieces(mesh, std::vector<double>(static_cast<std::size_t>(mesh.cell_count()), minimum_volume))
-      .merged;
+  std::vector<double> thresholds(static_cast<std::size_t>(mesh.cell_count()), 0.0);
+  for (int cell = 0; cell < mesh.cell_count(); ++cell)
+    if (mesh.cell_kinds[cell] == PolyhedralCellKind::cut) thresholds[cell] = minimum_volume;
+  return merge_small_pieces(mesh, thresholds).merged;
 }
 
 MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>& minimum_volume) {
   const int cell_count = mesh.cell_count();
   std::vector<int> slivers;
   for (int cell = 0; cell < cell_count; ++cell)
-    if ((mesh.cell_kinds[cell] == PolyhedralCellKind::cut || mesh.cell_kinds[cell] == PolyhedralCellKind::split) &&
-        mesh.cell_volumes(cell) < minimum_volume[cell])
-      slivers.push_back(cell);
+    if (mesh.cell_volumes(cell) < minimum_volume[cell]) slivers.push_back(cell);
   MergedPieces result;
   if (slivers.empty()) return result;
   std::sort(slivers.begin(), slivers.end(), [&](int a, int b) { return mesh.cell_volumes(a) < mesh.cell_volumes(b); });

@@ -25,8 +25,8 @@ struct MergedPieces {
   std::vector<int> new_cell;  ///< per cell before, the cell it became part of (empty when none merged)
 };
 
-/// merge_slivers with a threshold per cell (#cells of `mesh`): a `cut` or `split` piece
-/// whose volume is below its threshold joins the face-neighbour across its largest interior face.
+/// merge_slivers with a threshold per cell (#cells of `mesh`; 0 keeps a cell whatever its
+/// volume): a cell whose volume is below its threshold joins the face-neighbour across its largest interior face.
 MergedPieces merge_small_pieces(PolyhedralMesh& mesh, const std::vector<double>& minimum_volume);
 
 /// The mesh with each group of cells (the sets of `groups`, over the cell indices) as one

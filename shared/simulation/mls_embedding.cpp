@@ -157,11 +157,12 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
       // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)); ℓ's scale cancels there.
       const auto own = reachable.find(point_piece[point]);
       bool solved = false;
-      for (double enlarge = 1.0; enlarge <= 8.0 && !solved; enlarge *= 1.5) {
+      // A point whose piece has no samples has nothing to be embedded by (the error below).
+      for (double enlarge = 1.0; own != reachable.end() && enlarge <= 8.0 && !solved; enlarge *= 1.5) {
         near.clear();
         theta.clear();
         Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
-        const double reach = enlarge * (own == reachable.end() ? radii.maxCoeff() : own->second.largest_radius);
+        const double reach = enlarge * own->second.largest_radius;
         // Both grids hold the point's own piece's samples alone.
         const auto add = [&](int sample) {
           const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
@@ -176,8 +177,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           theta.push_back(weight);
         };
         if (enlarge == 1.0) supports.for_each_at(point_piece[point], x.transpose(), add);
-        else if (own != reachable.end())
-          own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
+        else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
         if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
         const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
