@@ -66,7 +66,9 @@ TEST(Run, Hex27PotentialEnergyFallsUnderRefinementAsTheMinimumPrincipleDemands) 
     std::istringstream fields(last);
     double value = 0, energy = 0;
     for (int column = 0; column < 7 && fields >> value; ++column) energy = value;
-    if (previous != 0) EXPECT_LT(energy, previous) << resolution;
+    if (previous != 0) {
+      EXPECT_LT(energy, previous) << resolution;
+    }
     previous = energy;
   }
 }

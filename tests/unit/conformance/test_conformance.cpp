@@ -103,8 +103,9 @@ TEST_P(Conformance, VolumeIsTheGeometrysVolume) {
   const Built built = build("free_box.json");
   EXPECT_NEAR(volume(built), built.geometry.volume, 1e-12 * built.geometry.volume);
   // What events measure the volume by (MethodInstance::volume), when the method has it.
-  if (const std::optional<double> integrated = built.method->volume())
+  if (const std::optional<double> integrated = built.method->volume()) {
     EXPECT_NEAR(*integrated, built.geometry.volume, 1e-12 * built.geometry.volume);
+  }
 }
 
 TEST_P(Conformance, RigidTranslationGivesZeroForce) {

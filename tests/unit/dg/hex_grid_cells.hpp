@@ -5,11 +5,11 @@
 // polyhedral meshes of shared/mesh feed them.
 #include "dg/dg_linear_system.hpp"
 
-namespace altfem::dg::test {
+namespace altfem::test {
 
 struct GridCells {
   std::vector<Polyhedron> cells;
-  std::vector<DgFace> faces;
+  std::vector<dg::DgFace> faces;
 };
 
 inline GridCells hex_grid_cells(int n) {
@@ -33,7 +33,7 @@ inline GridCells hex_grid_cells(int n) {
           for (int side = 0; side < 2; ++side) {
             const bool boundary = side == 0 ? position[axis] == 0 : position[axis] == n - 1;
             if (side == 0 && !boundary) continue;  // counted from the neighbour below
-            DgFace face;
+            dg::DgFace face;
             const auto& loop = cell.faces[axis_faces[axis][side]];
             face.polygon.resize(4, 3);
             for (int v = 0; v < 4; ++v) face.polygon.row(v) = cell.vertices.row(loop[v]);
@@ -52,4 +52,4 @@ inline GridCells hex_grid_cells(int n) {
   return grid;
 }
 
-}  // namespace altfem::dg::test
+}  // namespace altfem::test

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <string>
 
-namespace altfem::dg::test {
+namespace altfem::test {
 
 inline std::filesystem::path write_scene_file(const std::string& name, const std::string& json) {
   const auto folder = std::filesystem::path(ALTFEM_BINARY_DIR) / "unit_dg";
@@ -14,4 +14,4 @@ inline std::filesystem::path write_scene_file(const std::string& name, const std
   return file;
 }
 
-}  // namespace altfem::dg::test
+}  // namespace altfem::test

@@ -9,11 +9,10 @@
 #include <cstdio>
 
 #include "tests/unit/dg/hex_grid_cells.hpp"
+#include "tests/unit/dg/lame_parameters.hpp"
 
 namespace altfem::dg {
 namespace {
-
-constexpr double lambda = 2.0, mu = 1.5;
 
 // u = (x² + 2yz, xy − z², xz + y²): Δu = (2, −2, 2), ∇ div u = (4, 0, 0), so the body
 // force f = −div σ = −μ Δu − (λ + μ) ∇ div u is constant.

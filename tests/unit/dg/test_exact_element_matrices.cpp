@@ -6,12 +6,13 @@
 
 #include "dg/exact_element_matrices.hpp"
 #include "shared/quadrature/reference_rules.hpp"
+#include "tests/unit/dg/lame_parameters.hpp"
 #include "tests/unit/polyhedra.hpp"
 
 namespace altfem::dg {
 namespace {
 
-constexpr double lambda = 2.0, mu = 1.5, density = 3.0;
+constexpr double density = 3.0;
 
 class EveryDegree : public ::testing::TestWithParam<int> {};
 

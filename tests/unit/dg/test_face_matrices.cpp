@@ -9,12 +9,13 @@
 #include "dg/face_matrices.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/quadrature/reference_rules.hpp"
+#include "tests/unit/dg/lame_parameters.hpp"
 #include "tests/unit/polyhedra.hpp"
 
 namespace altfem::dg {
 namespace {
 
-constexpr double lambda = 2.0, mu = 1.5, penalty = 7.0;
+constexpr double penalty = 7.0;
 
 // The face x = 1, y ∈ [0, 1], z ∈ [0, 2] (counter-clockwise seen from +x).
 Eigen::MatrixXd face_polygon() {

@@ -16,13 +16,12 @@
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
+#include "tests/unit/dg/lame_parameters.hpp"
 #include "tests/unit/dg/scene_file.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem::dg {
 namespace {
-
-constexpr double lambda = 2.0, mu = 1.5;
 
 struct Mesh {
   const char* name;

@@ -194,7 +194,9 @@ TEST(CellPieces, TetrahedralCellsSplitToo) {
     for (int b = 0; b < mesh.mesh.cells.rows(); ++b) {
       if (mesh.tetrahedra[a].empty() || mesh.tetrahedra[b].empty()) continue;
       const bool a_lower = mesh.tetrahedra[a].front() < 24, b_lower = mesh.tetrahedra[b].front() < 24;
-      if (a_lower != b_lower) EXPECT_EQ(shared_nodes(mesh, a, b), 0) << a << " " << b;
+      if (a_lower != b_lower) {
+        EXPECT_EQ(shared_nodes(mesh, a, b), 0) << a << " " << b;
+      }
     }
 }
 

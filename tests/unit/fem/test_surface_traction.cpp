@@ -118,8 +118,9 @@ TEST_P(SurfaceTractionOnGrid, TractionFieldOfPositionDoesItsExactWork) {
       VectorExpression({"0", "0", "x*nz"}, {}, "s.json", "/loads/traction/0/traction", ExpressionVariables::surface);
   const Eigen::VectorXd load = load_vector(field);
   EXPECT_NEAR(work(load, [](const Eigen::Vector3d&) { return Eigen::Vector3d(0, 0, 1); }), 2.0, 1e-12);
-  if (GetParam() != ElementType::tet4 && GetParam() != ElementType::hex8)  // x² is interpolated exactly
+  if (GetParam() != ElementType::tet4 && GetParam() != ElementType::hex8) {  // x² is interpolated exactly
     EXPECT_NEAR(work(load, [](const Eigen::Vector3d& x) { return Eigen::Vector3d(0, 0, x.x()); }), 8.0 / 3.0, 1e-12);
+  }
 }
 
 TEST_P(SurfaceTractionOnGrid, RegionHoldingNoTriangleNamesTheKey) {

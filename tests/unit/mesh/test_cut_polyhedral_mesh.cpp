@@ -11,18 +11,12 @@
 #include "shared/common/error.hpp"
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
-#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
-#include "shared/mesh/structured_grid.hpp"
 #include "tests/unit/mesh/every_cell_closed.hpp"
 #include "tests/unit/mesh/seeded_cut_planes.hpp"
+#include "tests/unit/mesh/unit_cube_mesh.hpp"
 
 namespace altfem {
 namespace {
-
-PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
-  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
-  return polyhedral_mesh_from_volume_mesh(structured_grid(box, Eigen::Vector3i::Constant(cells_per_axis), type));
-}
 
 // The cells whose centroid lies on the positive side of the plane, and their volume.
 double volume_on_positive_side(const PolyhedralMesh& mesh, const CuttingPlane& plane) {

@@ -13,14 +13,10 @@
 #include "shared/mesh/split_polyhedral_cells.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "tests/unit/mesh/every_cell_closed.hpp"
+#include "tests/unit/mesh/unit_cube_mesh.hpp"
 
 namespace altfem {
 namespace {
-
-PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
-  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
-  return polyhedral_mesh_from_volume_mesh(structured_grid(box, Eigen::Vector3i::Constant(cells_per_axis), type));
-}
 
 // The 1→8 split: the three coordinate planes through the cell's centroid.
 CellSplit eighths(const PolyhedralMesh& mesh, int cell) {

@@ -1,18 +1,28 @@
 #pragma once
-// What the refine tests of fem and fcm check alike: the patch test's affine field on the
-// 1 × 0.1 × 0.1 m cantilever (E = 1e8 Pa, ν = 0.3) and its exact energy, and a refine event
-// refused before the run.
+// What the refine tests check alike: the patch test's affine field on the 1 × 0.1 × 0.1 m
+// cantilever (E = 1e8 Pa, ν = 0.3) and its exact energy, the refine event limited to the
+// clamped half, and a refine event refused before the run.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <filesystem>
 #include <string>
 
 #include "app/method_registry.hpp"
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
 
 namespace altfem {
+
+/// The cantilever the refine tests run, clamped at x = 0.
+inline const std::filesystem::path cantilever_refine_scene =
+    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
+
+/// Its refine event limited to the half next to the clamp, x ≤ 0.5 m.
+inline const SceneOverride clamp_half =
+    parse_scene_override("events/0/refine/region={\"box\": {\"min\": [0, -1, -1], \"max\": [0.5, 1, 1]}}");
 
 /// The affine displacement the patch tests carry across a refinement: u = G x.
 inline Eigen::Matrix3d patch_gradient() {

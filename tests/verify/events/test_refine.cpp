@@ -25,19 +25,11 @@
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
+#include "tests/verify/events/element_count.hpp"
+#include "tests/verify/events/refine_checks.hpp"
 
 namespace altfem {
 namespace {
-
-const std::filesystem::path scene_file =
-    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
-
-int element_count(const MethodInstance& method) {
-  const nlohmann::json counts = method.element_counts();
-  int count = 0;
-  for (const auto& [kind, number] : counts.items()) count += number.get<int>();
-  return count;
-}
 
 // A field zero on the clamp x = 0, so that dg's weak condition there adds nothing.
 Eigen::Vector3d affine(const Eigen::Vector3d& x) { return Eigen::Vector3d(1e-3, 3e-4, -2e-4) * x.x(); }
@@ -49,17 +41,14 @@ struct RefineCase {
 
 // Splits only the 5 cells of the clamp's half, so split cells meet unsplit ones across faces
 // holding hanging nodes.
-const SceneOverride clamp_half =
-    parse_scene_override("events/0/refine/region={\"box\": {\"min\": [0, -1, -1], \"max\": [0.5, 1, 1]}}");
-
 void PrintTo(const RefineCase& test, std::ostream* out) { *out << test.method << " " << test.split; }
 
 class Refine : public ::testing::TestWithParam<RefineCase> {};
 
 TEST_P(Refine, AnAffineFieldIsUnchangedAndKeepsItsExactStrainEnergy) {
   const RefineCase& test = GetParam();
-  const Scene scene =
-      load_scene(scene_file, {clamp_half, parse_scene_override("events/0/refine/split=\"" + test.split + "\"")});
+  const Scene scene = load_scene(cantilever_refine_scene,
+                                 {clamp_half, parse_scene_override("events/0/refine/split=\"" + test.split + "\"")});
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method(test.method);
   Simulation simulation(scene, geometry, test.method, method.factory, method.rebuild);
@@ -91,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(RefiningMethods, Refine,
                          [](const auto& info) { return info.param.method + "_" + info.param.split.substr(2); });
 
 TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
-  const Scene scene = load_scene(scene_file, {clamp_half});
+  const Scene scene = load_scene(cantilever_refine_scene, {clamp_half});
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method("dg");
   Simulation simulation(scene, geometry, "dg", method.factory, method.rebuild);
@@ -113,7 +102,7 @@ TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
 TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
   for (const std::string name : {"dg", "harmonic", "fem"}) {
     SCOPED_TRACE(name);
-    const Scene scene = load_scene(scene_file);
+    const Scene scene = load_scene(cantilever_refine_scene);
     const SceneGeometry geometry = load_scene_geometry(scene);
     const MethodDescription& method = cli::find_method(name);
     Simulation simulation(scene, geometry, name, method.factory, method.rebuild);
@@ -148,7 +137,7 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
 TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
   for (const std::string name : {"dg", "harmonic", "fem"}) {
     SCOPED_TRACE(name);
-    const Scene scene = load_scene(scene_file);
+    const Scene scene = load_scene(cantilever_refine_scene);
     const SceneGeometry geometry = load_scene_geometry(scene);
     const MethodDescription& method = cli::find_method(name);
     const double mu = 1e8 / (2 * 1.3), jump = mu * 2e-3 * 0.1;
@@ -169,10 +158,11 @@ TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
 }
 
 TEST(RefineCycles, AStaticSceneIsSolvedOncePerCycleAfterItsLastLoadStep) {
-  const Scene scene = load_scene(
-      scene_file, {parse_scene_override("time={\"static\": true, \"load_steps\": 2}"),
-                   parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"cycles\": 2}}]"),
-                   parse_scene_override("discretization/dg/degree=1")});
+  const Scene scene =
+      load_scene(cantilever_refine_scene,
+                 {parse_scene_override("time={\"static\": true, \"load_steps\": 2}"),
+                  parse_scene_override("events=[{\"time\": 0, \"refine\": {\"threshold\": 0, \"cycles\": 2}}]"),
+                  parse_scene_override("discretization/dg/degree=1")});
   ASSERT_EQ(scene.events.size(), 2u);
   const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_refine_cycles";
   std::filesystem::remove_all(output);

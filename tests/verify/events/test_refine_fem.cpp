@@ -25,18 +25,12 @@
 namespace altfem {
 namespace {
 
-const std::filesystem::path scene_file =
-    std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
-
 SceneOverride fem_grid(const std::string& element) {
   return parse_scene_override("discretization/fem={\"element\": \"" + element +
                               "\", \"mesh\": \"grid\", \"resolution\": [10, 1, 1]}");
 }
 
 // The clamp's half of the bar split, so split cells meet unsplit ones across hanging nodes.
-const SceneOverride clamp_half =
-    parse_scene_override("events/0/refine/region={\"box\": {\"min\": [0, -1, -1], \"max\": [0.5, 1, 1]}}");
-
 int cell_count(const MethodInstance& method) {
   const nlohmann::json counts = method.element_counts();
   int count = 0;
@@ -47,7 +41,7 @@ int cell_count(const MethodInstance& method) {
 class RefineFem : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(RefineFem, ThePatchTestStaysExactAcrossHangingNodes) {
-  const Scene scene = load_scene(scene_file, {fem_grid(GetParam()), clamp_half});
+  const Scene scene = load_scene(cantilever_refine_scene, {fem_grid(GetParam()), clamp_half});
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method("fem");
   Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
@@ -98,9 +92,10 @@ TEST_P(RefineFem, ThePatchTestStaysExactAcrossHangingNodes) {
 // #35: their energies move by that quadrature error, 1e-5 on refine_bar).
 TEST_P(RefineFem, AFieldOfTheCoarseSpaceCrossesWithoutAnEnergyJump) {
   const std::map<std::string, int> exact_strength{{"hex8", 4}, {"hex20", 6}, {"hex27", 10}};
-  const Scene scene = load_scene(scene_file, {fem_grid(GetParam()), clamp_half,
-                                              parse_scene_override("discretization/fem/quadrature_order=" +
-                                                                   std::to_string(exact_strength.at(GetParam())))});
+  const Scene scene = load_scene(
+      cantilever_refine_scene,
+      {fem_grid(GetParam()), clamp_half,
+       parse_scene_override("discretization/fem/quadrature_order=" + std::to_string(exact_strength.at(GetParam())))});
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method("fem");
   Simulation simulation(scene, geometry, "fem", method.factory, method.rebuild);
@@ -122,7 +117,8 @@ TEST(RefineFemRefusal, ATetrahedralMeshAndAHalvingSplitAreRefusedBeforeTheRun) {
   const std::vector<std::pair<std::vector<SceneOverride>, std::string>> cases{
       {{parse_scene_override("discretization/fem={\"element\": \"tet10\"}")}, "it refines hexahedral grids only"},
       {{fem_grid("hex8"), parse_scene_override("events/0/refine/split=\"1to2\"")}, "it splits 1to8 only"}};
-  for (const auto& [overrides, why] : cases) expect_refine_refused(load_scene(scene_file, overrides), "fem", why);
+  for (const auto& [overrides, why] : cases)
+    expect_refine_refused(load_scene(cantilever_refine_scene, overrides), "fem", why);
 }
 
 }  // namespace
