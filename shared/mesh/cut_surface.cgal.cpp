@@ -194,12 +194,10 @@ void cut_piece_by_plane(const Mesh& piece, const CuttingPlane& blade, double edg
   }
 }
 
-// Cuts the closed piece made of `triangles` of `surface` and appends it to `out`; false,
-// appending nothing, when the blade separates none of its vertices.
-bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
-               const ExactBlade& exact, CutPieces& out) {
-  // Only a blade with vertices strictly on both sides of its plane opens the piece; one
-  // through a face or a vertex of it (and its plane through nothing else) separates nothing.
+// Whether the blade's plane has vertices of the piece made of `triangles` strictly on both
+// sides: only then does it open the piece; one through a face or a vertex of it (and its
+// plane through nothing else) separates nothing.
+bool separates(const SurfaceMesh& surface, const std::vector<int>& triangles, const ExactBlade& exact) {
   bool below = false, above = false;
   for (const int t : triangles)
     for (int k = 0; k < 3; ++k) {
@@ -207,8 +205,19 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
       below = below || side < 0;
       above = above || side > 0;
     }
-  if (!below || !above) return false;
+  return below && above;
+}
 
+// What corefinement cannot cut: a piece whose earlier caps lie on one another (a notch) or
+// cross its sides. It stays so, since no later cut changes a piece it leaves whole.
+struct SelfIntersectingPiece : std::runtime_error {
+  SelfIntersectingPiece() : std::runtime_error("the piece intersects itself") {}
+};
+
+// Cuts the closed piece made of `triangles` of `surface`, which the blade separates, and
+// appends it to `out`.
+void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
+               CutPieces& out) {
   // The piece as a CGAL mesh, each vertex with its index in the input ("v:input", −1 for
   // the vertices a cut adds), which CGAL carries through its operations.
   Mesh piece;
@@ -230,16 +239,16 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
     }
     piece.add_face(corners[0], corners[1], corners[2]);
   }
-  // Corefinement's precondition: a piece whose earlier caps lie on one another (a notch)
-  // or cross its sides is left whole rather than cut into garbage.
-  if (PMP::does_self_intersect(piece)) throw std::runtime_error("the piece intersects itself");
+  // Corefinement's precondition: a piece that intersects itself is left whole rather than
+  // cut into garbage.
+  if (PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
   // The caps' edges: a 40th of the piece's diagonal, as a shape's surface is tessellated
   // (SceneGeometry::shape_surface). Not the piece's own edges: those a cut leaves short
   // would shrink the caps of every cut after it.
   const double edge_length = bounds.diagonal().norm() / 40;
   if (blade.polygon.empty()) {
     cut_piece_by_plane(piece, blade, edge_length, out);
-    return true;
+    return;
   }
 
   // The piece split along the curve where the blade crosses it (its vertices there
@@ -327,7 +336,6 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
       out.triangles.push_back(triangle);
       ++out.cap_triangles;
     }
-  return true;
 }
 
 }  // namespace
@@ -347,21 +355,33 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
 
   CutPieces cut;
   cut.input_count = surface.vertices.rows();
+  const bool known = surface.self_intersecting.size() == static_cast<std::size_t>(surface.triangles.rows());
+  std::vector<char> self_intersecting;  // per output triangle
+  std::vector<int> pieces_intersecting_themselves;
   int left_whole = 0;
   for (const auto& [piece, triangles] : triangles_of) {
-    bool opened = false;
-    if (!only || *only == piece) {
-      // A piece an earlier finite blade notched has its two caps on one another, which
-      // corefinement refuses: such a piece is left whole (counted) rather than failing the run.
+    bool opened = false, intersects_itself = known && surface.self_intersecting[triangles.front()];
+    if ((!only || *only == piece) && separates(surface, triangles, exact)) {
+      // A piece an earlier cut made intersect itself is left whole (counted) rather than
+      // failing the run; it is found once, when the cut after the one that made it so
+      // tries it, and remembered in the surface.
       try {
-        opened = cut_piece(surface, triangles, blade, exact, cut);
+        if (!intersects_itself) {
+          cut_piece(surface, triangles, blade, cut);
+          opened = true;
+        }
+      } catch (const SelfIntersectingPiece&) {
+        intersects_itself = true;
       } catch (const std::exception&) {
-        ++left_whole;
+        // Another refusal of corefinement is this blade's: the next one tries again.
       }
+      left_whole += !opened;
     }
     if (!opened)
       for (const int t : triangles)
         cut.triangles.push_back({surface.triangles(t, 0), surface.triangles(t, 1), surface.triangles(t, 2)});
+    self_intersecting.resize(cut.triangles.size(), intersects_itself);
+    if (intersects_itself) pieces_intersecting_themselves.push_back(piece);
   }
 
   SurfaceCut result;
@@ -371,6 +391,12 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
                   {"pieces_left_whole", left_whole}};
   if (cut.cap_triangles == 0) {
     result.surface = surface;
+    if (!pieces_intersecting_themselves.empty()) {
+      std::vector<char>& flags = result.surface.self_intersecting;
+      flags.assign(static_cast<std::size_t>(surface.triangles.rows()), 0);
+      for (const int piece : pieces_intersecting_themselves)
+        for (const int t : triangles_of[piece]) flags[t] = 1;
+    }
     return result;
   }
   SurfaceMesh& out = result.surface;
@@ -381,6 +407,7 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   out.triangles.resize(static_cast<Eigen::Index>(cut.triangles.size()), 3);
   for (std::size_t t = 0; t < cut.triangles.size(); ++t)
     out.triangles.row(static_cast<Eigen::Index>(t)) << cut.triangles[t][0], cut.triangles[t][1], cut.triangles[t][2];
+  if (!pieces_intersecting_themselves.empty()) out.self_intersecting = std::move(self_intersecting);
 
   // The vertices of this cut and of earlier ones read their field a hair inside the
   // material they bound: against their angle-weighted normal, by 1e-7 of the body's size.

@@ -15,6 +15,9 @@ struct SurfaceMesh {
   /// the material they bound, so that the two copies of a point of the cut each move with
   /// their own side rather than whichever piece a point on the blade is found in.
   Eigen::MatrixXd embedding_offsets;
+  /// Empty, or one per triangle: 1 on the triangles of a piece that a cut found intersecting
+  /// itself (cut_surface), so that later cuts leave it whole without testing it again.
+  std::vector<char> self_intersecting;
 };
 
 /// Where each vertex is embedded in a method's basis: its position plus its offset.

@@ -3,6 +3,7 @@
 // volume is the box's part on that side and the caps cover the cross-section.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "shared/mesh/cut_surface.hpp"
@@ -194,6 +195,45 @@ TEST(CutSurface, TheSameCutGivesTheSameSurfaceBitForBit) {
     EXPECT_EQ(runs[run].vertices, runs[0].vertices);
     EXPECT_EQ(runs[run].triangles, runs[0].triangles);
   }
+}
+
+TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
+  // Two boxes, the second's vertex (1, 3, 1) pushed through the first box's top: its
+  // faces cross it, so the second box's piece intersects itself. A cut through both opens
+  // the first, leaves the second whole and marks its triangles; given those marks, a cut
+  // leaves even a sound piece whole without testing it (the same box unmarked opens).
+  SurfaceMesh two = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  SurfaceMesh crossed = box_surface(Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(1, 3, 1));
+  crossed.vertices.row(7) << 0.5, 0.5, 0.5;
+  two.vertices.conservativeResize(16, 3);
+  two.vertices.bottomRows(8) = crossed.vertices;
+  two.triangles.conservativeResize(24, 3);
+  two.triangles.bottomRows(12) = crossed.triangles.array() + 8;
+  const CuttingPlane blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(1, 0.1, 0.2));
+  const SurfaceCut cut = cut_surface(two, blade);
+  EXPECT_EQ(cut.facts["pieces_left_whole"], 1);
+  EXPECT_GT(cut.facts["cap_triangles"].get<int>(), 0);
+  ASSERT_EQ(cut.surface.self_intersecting.size(), static_cast<std::size_t>(cut.surface.triangles.rows()));
+  int marked = 0;
+  for (Eigen::Index t = 0; t < cut.surface.triangles.rows(); ++t) {
+    const bool of_crossed_box =
+        cut.surface.triangles.row(t).minCoeff() >= 8 && cut.surface.triangles.row(t).maxCoeff() < 16;
+    EXPECT_EQ(cut.surface.self_intersecting[t] != 0, of_crossed_box) << t;
+    marked += cut.surface.self_intersecting[t];
+  }
+  EXPECT_EQ(marked, 12);
+  // Cut again: the marked piece is not tested again, and still counted.
+  const SurfaceCut again = cut_surface(cut.surface, CuttingPlane(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX()));
+  EXPECT_EQ(again.facts["pieces_left_whole"], 1);
+  EXPECT_EQ(std::count(again.surface.self_intersecting.begin(), again.surface.self_intersecting.end(), 1), 12);
+
+  SurfaceMesh sound = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const CuttingPlane middle(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX());
+  EXPECT_EQ(cut_surface(sound, middle).facts["pieces_left_whole"], 0);
+  sound.self_intersecting.assign(12, 1);
+  const SurfaceCut trusted = cut_surface(sound, middle);
+  EXPECT_EQ(trusted.facts["pieces_left_whole"], 1);
+  EXPECT_EQ(trusted.surface.triangles, sound.triangles);
 }
 
 }  // namespace
