@@ -20,7 +20,8 @@ namespace altfem {
 inline const std::filesystem::path cantilever_refine_scene =
     std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/cantilever_refine.json";
 
-/// Its refine event limited to the half next to the clamp, x ≤ 0.5 m.
+/// Its refine event limited to the half next to the clamp, x ≤ 0.5 m, so that split cells
+/// meet unsplit ones across faces holding hanging nodes.
 inline const SceneOverride clamp_half =
     parse_scene_override("events/0/refine/region={\"box\": {\"min\": [0, -1, -1], \"max\": [0.5, 1, 1]}}");
 

@@ -39,8 +39,6 @@ struct RefineCase {
   int cells_after;  // the clamp's half of the bar split: 5 + 5 × 8 or 5 + 5 × 2
 };
 
-// Splits only the 5 cells of the clamp's half, so split cells meet unsplit ones across faces
-// holding hanging nodes.
 void PrintTo(const RefineCase& test, std::ostream* out) { *out << test.method << " " << test.split; }
 
 class Refine : public ::testing::TestWithParam<RefineCase> {};
