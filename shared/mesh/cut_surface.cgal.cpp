@@ -355,25 +355,25 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
 
   CutPieces cut;
   cut.input_count = surface.vertices.rows();
-  const bool known = surface.self_intersecting.size() == static_cast<std::size_t>(surface.triangles.rows());
+  const bool marks_apply = surface.self_intersecting.size() == static_cast<std::size_t>(surface.triangles.rows());
   std::vector<char> self_intersecting;  // per output triangle
   std::vector<int> pieces_intersecting_themselves;
   int left_whole = 0;
   for (const auto& [piece, triangles] : triangles_of) {
-    bool opened = false, intersects_itself = known && surface.self_intersecting[triangles.front()];
+    bool opened = false, intersects_itself = marks_apply && surface.self_intersecting[triangles.front()];
     if ((!only || *only == piece) && separates(surface, triangles, exact)) {
       // A piece an earlier cut made intersect itself is left whole (counted) rather than
       // failing the run; it is found once, when the cut after the one that made it so
       // tries it, and remembered in the surface.
-      try {
-        if (!intersects_itself) {
+      if (!intersects_itself) {
+        try {
           cut_piece(surface, triangles, blade, cut);
           opened = true;
+        } catch (const SelfIntersectingPiece&) {
+          intersects_itself = true;
+        } catch (const std::exception&) {
+          // Another refusal of corefinement is this blade's: the next one tries again.
         }
-      } catch (const SelfIntersectingPiece&) {
-        intersects_itself = true;
-      } catch (const std::exception&) {
-        // Another refusal of corefinement is this blade's: the next one tries again.
       }
       left_whole += !opened;
     }

@@ -43,7 +43,7 @@ double volume_on_positive_side(const PolyhedralMesh& mesh, const CuttingPlane& p
 }
 
 TEST(CutPolyhedralMesh, AnAxisPlaneThroughCellsSplitsThemAndSeparatesTheSides) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 2);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 2);
   const CuttingPlane plane{Eigen::Vector3d(0.3, 0.0, 0.0), Eigen::Vector3d::UnitX()};
   const PolyhedralCut cut = cut_polyhedral_mesh(mesh, plane);
   EXPECT_EQ(cut.crossed_cells, 4);
@@ -62,7 +62,7 @@ TEST(CutPolyhedralMesh, AnAxisPlaneThroughCellsSplitsThemAndSeparatesTheSides) {
 }
 
 TEST(CutPolyhedralMesh, APlaneThroughGridNodesSeparatesAlongFaces) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 2);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 2);
   const CuttingPlane plane{Eigen::Vector3d(0.5, 0.5, 0.5), Eigen::Vector3d(0.0, 0.0, -2.0)};
   const PolyhedralCut cut = cut_polyhedral_mesh(mesh, plane);
   EXPECT_EQ(cut.crossed_cells, 0);
@@ -76,7 +76,7 @@ TEST(CutPolyhedralMesh, APlaneThroughGridNodesSeparatesAlongFaces) {
 }
 
 TEST(CutPolyhedralMesh, APlaneAlongEdgesAndDiagonalsOfTetrahedra) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::tet4, 2);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::tet4, 2);
   for (const Eigen::Vector3d& normal :
        {Eigen::Vector3d(1, -1, 0), Eigen::Vector3d(1, 1, 1), Eigen::Vector3d(0, 1, -1)}) {
     const CuttingPlane plane{Eigen::Vector3d(0.5, 0.5, 0.5), normal};
@@ -92,7 +92,7 @@ TEST(CutPolyhedralMesh, APlaneAlongEdgesAndDiagonalsOfTetrahedra) {
 // The unit cube's volume on the positive side of a plane, by clipping its six Kuhn
 // tetrahedra (an independent construction).
 double clipped_cube_volume(const CuttingPlane& plane) {
-  const PolyhedralMesh tetrahedra = unit_cube(ElementType::tet4, 1);
+  const PolyhedralMesh tetrahedra = unit_cube_mesh(ElementType::tet4, 1);
   // The kept side of a ClipPlane is behind (b − a) × (c − a): point it against the normal.
   Eigen::Index smallest = 0;
   plane.normal.cwiseAbs().minCoeff(&smallest);
@@ -118,7 +118,7 @@ double clipped_cube_volume(const CuttingPlane& plane) {
 // Seeded planes of every degenerate kind (seeded_cut_planes.hpp): 200 per mesh.
 TEST(CutPolyhedralMesh, SeededPlanesGiveClosedPiecesOfPositiveVolumeOnEveryKindOfMesh) {
   for (const ElementType type : {ElementType::tet4, ElementType::hex8}) {
-    const PolyhedralMesh mesh = unit_cube(type, 3);
+    const PolyhedralMesh mesh = unit_cube_mesh(type, 3);
     for (const CuttingPlane& plane : seeded_cut_planes(mesh.nodes, 200)) {
       SCOPED_TRACE(::testing::Message() << "point " << plane.point.transpose() << ", normal "
                                         << plane.normal.transpose());
@@ -141,7 +141,7 @@ TEST(CutPolyhedralMesh, SeededPlanesGiveClosedPiecesOfPositiveVolumeOnEveryKindO
 }
 
 TEST(CutPolyhedralMesh, APlaneThatMissesTheMeshChangesNothing) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::tet4, 2);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::tet4, 2);
   const PolyhedralCut cut = cut_polyhedral_mesh(mesh, {Eigen::Vector3d(0, 0, 2), Eigen::Vector3d::UnitZ()});
   EXPECT_EQ(cut.crossed_cells, 0);
   EXPECT_EQ(cut.duplicated_nodes, 0);

@@ -222,7 +222,7 @@ TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
     marked += cut.surface.self_intersecting[t];
   }
   EXPECT_EQ(marked, 12);
-  // Cut again: the marked piece is not tested again, and still counted.
+  // Cut again: the marked piece stays whole, counted and marked.
   const SurfaceCut again = cut_surface(cut.surface, CuttingPlane(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX()));
   EXPECT_EQ(again.facts["pieces_left_whole"], 1);
   EXPECT_EQ(std::count(again.surface.self_intersecting.begin(), again.surface.self_intersecting.end(), 1), 12);

@@ -42,7 +42,7 @@ CellSplit eighths(const PolyhedralMesh& mesh, int cell) {
 }
 
 TEST(SplitPolyhedralCells, OneBoxInEightIsTheOctreeOfItsCorners) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 1);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 1);
   const SplitCells split = split_polyhedral_cells(mesh, {eighths(mesh, 0)});
   EXPECT_EQ(split.mesh.cell_count(), 8);
   EXPECT_EQ(split.mesh.nodes.rows(), 27);
@@ -66,7 +66,7 @@ TEST(SplitPolyhedralCells, OneBoxInEightIsTheOctreeOfItsCorners) {
 }
 
 TEST(SplitPolyhedralCells, AnUnsplitNeighbourHoldsTheNewNodesOnItsFacesAndEdges) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 2);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 2);
   const SplitCells split = split_polyhedral_cells(mesh, {eighths(mesh, 0)});
   EXPECT_EQ(split.mesh.cell_count(), 15);
   EXPECT_EQ(split.new_nodes, 19);
@@ -94,7 +94,7 @@ TEST(SplitPolyhedralCells, NeighboursSplitTogetherShareTheirMidPlanes) {
 }
 
 TEST(SplitPolyhedralCells, AChildSplitAgainLeavesHangingNodesOnItsSiblings) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 1);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 1);
   const SplitCells once = split_polyhedral_cells(mesh, {eighths(mesh, 0)});
   const SplitCells twice = split_polyhedral_cells(once.mesh, {eighths(once.mesh, 3)});
   EXPECT_EQ(twice.mesh.cell_count(), 15);
@@ -104,7 +104,7 @@ TEST(SplitPolyhedralCells, AChildSplitAgainLeavesHangingNodesOnItsSiblings) {
 }
 
 TEST(SplitPolyhedralCells, APlaneThroughAnEdgeAndNodesHalvesABox) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 1);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 1);
   // x = y holds the box's two vertical edges at (0, 0) and (1, 1).
   const SplitCells split =
       split_polyhedral_cells(mesh, {{0, {plane_through(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, -1, 0))}}});
@@ -122,7 +122,7 @@ TEST(SplitPolyhedralCells, PlanesThroughTheCellsAtRandomKeepEveryCellClosedAndFi
   std::uniform_real_distribution<double> uniform(-1.0, 1.0);
   for (const ElementType type : {ElementType::tet4, ElementType::hex8})
     for (int trial = 0; trial < 20; ++trial) {
-      PolyhedralMesh mesh = unit_cube(type, 2);
+      PolyhedralMesh mesh = unit_cube_mesh(type, 2);
       for (int round = 0; round < 2; ++round) {
         std::vector<CellSplit> splits;
         for (int cell = 0; cell < mesh.cell_count(); ++cell) {
@@ -147,7 +147,7 @@ TEST(SplitPolyhedralCells, PlanesThroughTheCellsAtRandomKeepEveryCellClosedAndFi
 }
 
 TEST(SplitPolyhedralCells, RefusesACellTwiceNoPlaneOrAZeroNormal) {
-  const PolyhedralMesh mesh = unit_cube(ElementType::hex8, 1);
+  const PolyhedralMesh mesh = unit_cube_mesh(ElementType::hex8, 1);
   EXPECT_THROW(split_polyhedral_cells(mesh, {eighths(mesh, 0), eighths(mesh, 0)}), std::invalid_argument);
   EXPECT_THROW(split_polyhedral_cells(mesh, {{0, {}}}), std::invalid_argument);
   EXPECT_THROW(split_polyhedral_cells(mesh, {{0, {{Eigen::Vector3d::Zero(), 0.5}}}}), std::invalid_argument);

@@ -8,7 +8,7 @@
 
 namespace altfem {
 
-inline PolyhedralMesh unit_cube(ElementType type, int cells_per_axis) {
+inline PolyhedralMesh unit_cube_mesh(ElementType type, int cells_per_axis) {
   const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
   return polyhedral_mesh_from_volume_mesh(structured_grid(box, Eigen::Vector3i::Constant(cells_per_axis), type));
 }
