@@ -119,13 +119,21 @@ bool SimilarityClasses::similar(const SimilarityKey& a, const SimilarityKey& b) 
   return true;
 }
 
+int SimilarityClasses::find(const SimilarityKey& key) const { return find(key, hash(key)); }
+
+int SimilarityClasses::find(const SimilarityKey& key, std::size_t code) const {
+  if (!enabled_) return -1;
+  const auto [first, last] = buckets_.equal_range(code);
+  for (auto candidate = first; candidate != last; ++candidate)
+    if (similar(representatives_[candidate->second], key)) return candidate->second;
+  return -1;
+}
+
 SimilarityClasses::Assignment SimilarityClasses::classify(SimilarityKey key) {
   ++key_count_;
   if (!enabled_) return {class_count_++, true};
   const std::size_t code = hash(key);
-  const auto [first, last] = buckets_.equal_range(code);
-  for (auto candidate = first; candidate != last; ++candidate)
-    if (similar(representatives_[candidate->second], key)) return {candidate->second, false};
+  if (const int found = find(key, code); found >= 0) return {found, false};
   buckets_.emplace(code, class_count_);
   representatives_.push_back(std::move(key));
   return {class_count_++, true};

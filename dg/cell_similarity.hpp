@@ -75,12 +75,16 @@ public:
     bool created;  ///< a new class: its matrices are to be computed
   };
   Assignment classify(SimilarityKey key);
+  /// The class a key would join, without classifying it; -1 when it would open a new one
+  /// (and always when disabled).
+  int find(const SimilarityKey& key) const;
   int class_count() const { return class_count_; }
   /// Keys classified so far.
   int key_count() const { return key_count_; }
 
 private:
   static std::size_t hash(const SimilarityKey& key);
+  int find(const SimilarityKey& key, std::size_t code) const;
   static bool similar(const SimilarityKey& a, const SimilarityKey& b);
 
   bool enabled_;

@@ -9,6 +9,8 @@
 
 #include "dg/cell_block_pattern.hpp"
 #include "dg/cell_similarity.hpp"
+#include "dg/class_batches.hpp"
+#include "dg/dg_integral_memory.hpp"
 #include "dg/exact_element_matrices.hpp"
 #include "dg/strong_conditions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
@@ -33,53 +35,10 @@ double surface_area(const Polyhedron& cell) {
 // Cells and faces whose translation-invariant geometry agrees to this fraction of the
 // cell's diameter share their matrices (dg/cell_similarity.hpp).
 constexpr double similarity_relative_tolerance = 1e-12;
-// Items whose classes' matrices are computed in parallel before they are added into K:
-// bounds the matrices held at once (a cut cell's faces are mostly classes of one).
-constexpr int batch_size = 256;
-
-// use(item, matrix) for every item in order whose class (classes[item]) is not -1, the
-// matrix of a class computed once by compute(representative item) — in parallel for the
-// classes first met in a batch of items — and freed after the class's last item.
-template <typename Compute, typename Use>
-void for_each_item_by_class(const std::vector<int>& classes, int class_count, Compute&& compute, Use&& use) {
-  const int items = static_cast<int>(classes.size());
-  std::vector<int> representative(class_count, -1), last(class_count, -1);
-  for (int item = 0; item < items; ++item) {
-    if (classes[item] < 0) continue;
-    if (representative[classes[item]] < 0) representative[classes[item]] = item;
-    last[classes[item]] = item;
-  }
-  std::vector<Eigen::MatrixXd> matrices(class_count);
-  std::vector<int> first_met;
-  for (int start = 0; start < items; start += batch_size) {
-    const int end = std::min(items, start + batch_size);
-    first_met.clear();
-    for (int item = start; item < end; ++item)
-      if (classes[item] >= 0 && representative[classes[item]] == item) first_met.push_back(item);
-    std::exception_ptr failure;  // bad input (a face of < 3 vertices, say) must not leave the region
-#pragma omp parallel for schedule(dynamic, 4) if (first_met.size() > 8)
-    for (size_t k = 0; k < first_met.size(); ++k) {
-      try {
-        matrices[classes[first_met[k]]] = compute(first_met[k]);
-      } catch (...) {
-#pragma omp critical(dg_linear_system_failure)
-        if (!failure) failure = std::current_exception();
-      }
-    }
-    if (failure) std::rethrow_exception(failure);
-    for (int item = start; item < end; ++item) {
-      if (classes[item] < 0) continue;
-      Eigen::MatrixXd& matrix = matrices[classes[item]];
-      use(item, matrix);
-      if (last[classes[item]] == item) matrix = Eigen::MatrixXd();
-    }
-  }
-}
-
 }  // namespace
 
 DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
-                               DgCellMaterials cell_materials)
+                               DgCellMaterials cell_materials, IntegralReuse reuse)
     : cells_(std::move(cells)),
       faces_(std::move(faces)),
       settings_(settings),
@@ -120,44 +79,71 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
   const CellBlockPattern pattern(offsets_, couplings);
   pattern.make_zero_matrix(stiffness_);
-  add_element_matrices(pattern);
-  add_face_matrices(pattern);
+  const DgIntegralMemory* previous =
+      reuse.previous && reuse.previous->integrates_as(settings_, cell_materials_.materials) ? reuse.previous.get()
+                                                                                            : nullptr;
+  if (reuse.remember && settings_.reuse_similar_cells)
+    memory_ = std::make_shared<DgIntegralMemory>(DgIntegralMemory{.settings = settings_,
+                                                                  .materials = cell_materials_.materials,
+                                                                  .cell_classes = {},
+                                                                  .cells = {},
+                                                                  .face_classes = {},
+                                                                  .faces = {}});
+  const std::vector<int> previous_cell_classes = add_element_matrices(pattern, previous);
+  add_face_matrices(pattern, previous, previous_cell_classes);
 }
 
-void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
+std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern,
+                                                      const DgIntegralMemory* previous) {
   const int cell_count = static_cast<int>(cells_.size());
 
   // Classes of translates of the same material (deal.II's CellSimilarity::translation);
   // a cell whose functions are combinations for its strongly held faces is a class of
-  // its own.
+  // its own, never taken from the build before (its combination is not in the key).
   SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
+  std::vector<int> previous_classes;  // per class
   for (int c = 0; c < cell_count; ++c) {
     const int own = bases_[c].combination().size() == 0 ? -1 : c;
-    cell_classes_.push_back(cell_similarity
-                                .classify(cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(),
-                                                              {material_id(c), own}, similarity_relative_tolerance))
-                                .index);
+    SimilarityKey key = cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(), {material_id(c), own},
+                                            similarity_relative_tolerance);
+    const int earlier = previous && own < 0 ? previous->cell_classes.find(key) : -1;
+    const SimilarityClasses::Assignment assignment = cell_similarity.classify(std::move(key));
+    if (assignment.created) previous_classes.push_back(earlier);
+    cell_classes_.push_back(assignment.index);
   }
   const int class_count = cell_similarity.class_count();
   masses_.resize(class_count);
   std::vector<Eigen::VectorXd> class_integrals(class_count);
   std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
+  if (memory_) memory_->cells.resize(class_count);
   // Stiffness, mass and ∫ φ_a once per class.
   integrals_.resize(offsets_.back());
   for_each_item_by_class(
       cell_classes_, class_count,
       [&](int c) {
-        const DgMaterial cell_material = material(c);
-        ElementMatrices matrices =
-            exact_element_matrices(cells_[c], bases_[c], cell_material.lambda, cell_material.mu, cell_material.density);
         const int k = cell_classes_[c];
-        // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
-        const Eigen::MatrixXd& combination = bases_[c].combination();
-        class_volumes[k] = combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals);
-        class_inverse_lengths[k] = surface_area(cells_[c]) / (6 * class_volumes[k]);
-        class_integrals[k] = std::move(matrices.integrals);
-        masses_[k] = std::move(matrices.mass);
-        return std::move(matrices.stiffness);
+        DgCellIntegrals integrals;
+        if (previous_classes[k] >= 0) {
+          integrals = previous->cells[previous_classes[k]];
+        } else {
+          const DgMaterial cell_material = material(c);
+          ElementMatrices matrices = exact_element_matrices(cells_[c], bases_[c], cell_material.lambda,
+                                                            cell_material.mu, cell_material.density);
+          // ∫ m₀ dV (m₀ = 1); combined functions integrate to Cᵀ ∫ m, and C is orthogonal.
+          const Eigen::MatrixXd& combination = bases_[c].combination();
+          integrals.volume =
+              combination.size() == 0 ? matrices.integrals[0] : combination.row(0).dot(matrices.integrals);
+          integrals.inverse_length = surface_area(cells_[c]) / (6 * integrals.volume);
+          integrals.integrals = std::move(matrices.integrals);
+          integrals.mass = std::move(matrices.mass);
+          integrals.stiffness = std::move(matrices.stiffness);
+        }
+        if (memory_) memory_->cells[k] = integrals;
+        class_volumes[k] = integrals.volume;
+        class_inverse_lengths[k] = integrals.inverse_length;
+        class_integrals[k] = std::move(integrals.integrals);
+        masses_[k] = std::move(integrals.mass);
+        return std::move(integrals.stiffness);
       },
       [&](int c, const Eigen::MatrixXd& stiffness) {
         const int k = cell_classes_[c];
@@ -168,35 +154,61 @@ void DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern) {
       });
   similarity_.cells = cell_count;
   similarity_.cell_classes = class_count;
+  similarity_.remembered_cell_classes =
+      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
+  if (memory_) memory_->cell_classes = std::move(cell_similarity);
+  return previous_classes;
 }
 
-void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
+void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous,
+                                       const std::vector<int>& previous_cell_classes) {
   // Face matrices once per class of faces between the same classes of cells at the same
   // relative position (their penalty η_f follows from the cells' classes and the face).
   SimilarityClasses face_similarity(settings_.reuse_similar_cells);
   std::vector<int> face_classes(faces_.size(), -1);
+  std::vector<int> previous_classes;  // per class, its class in `previous` (-1: none)
   for (size_t f = 0; f < faces_.size(); ++f) {
     const DgFace& face = faces_[f];
     if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
     const MonomialBasis& minus = bases_[face.minus];
     std::vector<int> structure{cell_classes_[face.minus], face.plus >= 0 ? cell_classes_[face.plus] : -1};
     structure.insert(structure.end(), face.components.begin(), face.components.end());
-    face_classes[f] = face_similarity
-                          .classify(face_similarity_key(face.polygon, face.normal, minus.centre(), minus.scale(),
-                                                        face.plus >= 0 ? &bases_[face.plus].centre() : nullptr,
-                                                        std::move(structure), similarity_relative_tolerance))
-                          .index;
+    SimilarityKey key = face_similarity_key(face.polygon, face.normal, minus.centre(), minus.scale(),
+                                            face.plus >= 0 ? &bases_[face.plus].centre() : nullptr,
+                                            std::move(structure), similarity_relative_tolerance);
+    // There, the key names the cells' classes of that build.
+    int earlier = -1;
+    const int minus_before = previous ? previous_cell_classes[key.structure[0]] : -1;
+    const int plus_before = face.plus >= 0 && minus_before >= 0 ? previous_cell_classes[key.structure[1]] : -1;
+    if (minus_before >= 0 && (face.plus < 0 || plus_before >= 0)) {
+      SimilarityKey there = key;
+      there.structure[0] = minus_before;
+      there.structure[1] = plus_before;
+      earlier = previous->face_classes.find(there);
+    }
+    const SimilarityClasses::Assignment assignment = face_similarity.classify(std::move(key));
+    if (assignment.created) previous_classes.push_back(earlier);
+    face_classes[f] = assignment.index;
   }
+  if (memory_) memory_->faces.resize(face_similarity.class_count());
   for_each_item_by_class(
       face_classes, face_similarity.class_count(),
       [&](int f) {
-        const DgFace& face = faces_[f];
-        const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
-        const DgMaterial minus_material = material(face.minus);
-        const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
-        return exact_face_matrix(face.polygon, face.normal, bases_[face.minus], plus,
-                                 {minus_material.lambda, minus_material.mu}, {plus_material.lambda, plus_material.mu},
-                                 face_penalty(face), settings_.flux, face.components);
+        const int k = face_classes[f];
+        Eigen::MatrixXd matrix;
+        if (previous_classes[k] >= 0) {
+          matrix = previous->faces[previous_classes[k]];
+        } else {
+          const DgFace& face = faces_[f];
+          const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
+          const DgMaterial minus_material = material(face.minus);
+          const DgMaterial plus_material = face.plus >= 0 ? material(face.plus) : minus_material;
+          matrix = exact_face_matrix(
+              face.polygon, face.normal, bases_[face.minus], plus, {minus_material.lambda, minus_material.mu},
+              {plus_material.lambda, plus_material.mu}, face_penalty(face), settings_.flux, face.components);
+        }
+        if (memory_) memory_->faces[k] = matrix;
+        return matrix;
       },
       [&](int f, const Eigen::MatrixXd& matrix) {
         const DgFace& face = faces_[f];
@@ -210,6 +222,9 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern) {
       });
   similarity_.faces = face_similarity.key_count();
   similarity_.face_classes = face_similarity.class_count();
+  similarity_.remembered_face_classes =
+      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
+  if (memory_) memory_->face_classes = std::move(face_similarity);
 }
 
 DgLinearSystem::~DgLinearSystem() = default;

@@ -7,6 +7,7 @@
 #include <Eigen/SparseCore>
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -20,8 +21,9 @@
 
 namespace altfem::dg {
 
-class CellBlockPattern;  // dg/cell_block_pattern.hpp
-struct StrongCell;       // dg/strong_conditions.hpp
+class CellBlockPattern;   // dg/cell_block_pattern.hpp
+struct StrongCell;        // dg/strong_conditions.hpp
+struct DgIntegralMemory;  // dg/dg_integral_memory.hpp
 
 struct DgFace {
   Eigen::MatrixXd polygon;  ///< #vertices × 3, planar
@@ -91,6 +93,15 @@ struct DgSettings {
 struct SimilarityStatistics {
   int cells = 0, cell_classes = 0;
   int faces = 0, face_classes = 0;  ///< faces with a term (free or strong boundary faces have none)
+  /// Of the classes, those whose matrices were taken from the build before (DgIntegralMemory).
+  int remembered_cell_classes = 0, remembered_face_classes = 0;
+};
+
+/// What a system takes from the build an event replaces and what it keeps for the next
+/// (dg/dg_integral_memory.hpp). Both off: every class integrated, nothing kept.
+struct IntegralReuse {
+  std::shared_ptr<const DgIntegralMemory> previous;  ///< null: none; ignored unless it integrates_as this one
+  bool remember = false;                             ///< keep this build's matrices (integral_memory())
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -113,7 +124,7 @@ using ConditionTrajectory = std::function<Eigen::Vector3d(int condition, const E
 class DgLinearSystem {
 public:
   DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace> faces, const DgSettings& settings,
-                 DgCellMaterials cell_materials = {});
+                 DgCellMaterials cell_materials = {}, IntegralReuse reuse = {});
   ~DgLinearSystem();
 
   /// 3 × Σ #functions square; cell c's functions start at offset(c), DOF 3a + i.
@@ -149,6 +160,9 @@ public:
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
   const SimilarityStatistics& similarity() const { return similarity_; }
+  /// This build's matrices by class, for the system an event rebuilds (null unless
+  /// IntegralReuse::remember).
+  std::shared_ptr<const DgIntegralMemory> integral_memory() const { return memory_; }
 
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
@@ -173,9 +187,12 @@ public:
 
 private:
   // K's element blocks (and the per-cell volumes, lengths, integrals and masses) and its
-  // face blocks, each computed once per class of translates (dg/cell_similarity.hpp).
-  void add_element_matrices(const CellBlockPattern& pattern);
-  void add_face_matrices(const CellBlockPattern& pattern);
+  // face blocks, each computed once per class of translates (dg/cell_similarity.hpp) or
+  // taken from `previous` (may be null). add_element_matrices returns per cell class its
+  // class in `previous` (-1: none), which the faces' keys there hold.
+  std::vector<int> add_element_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous);
+  void add_face_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous,
+                         const std::vector<int>& previous_cell_classes);
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>
   void for_each_cell_point(int strength, Body&& body) const;
@@ -196,6 +213,7 @@ private:
   std::vector<int> offsets_;  // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;
   SimilarityStatistics similarity_;
+  std::shared_ptr<DgIntegralMemory> memory_;
 };
 
 }  // namespace altfem::dg

@@ -4,7 +4,9 @@
 #include <chrono>
 #include <limits>
 
+#include "dg/dg_boundary_faces.hpp"
 #include "dg/dg_discretization.hpp"
+#include "dg/dg_integral_memory.hpp"
 #include "dg/dg_linear_system.hpp"
 #include "dg/dg_scene_block.hpp"
 #include "dg/dg_transfer.hpp"
@@ -35,37 +37,21 @@ namespace {
 // Doublings of η before giving up: 2²⁰ × the start is far beyond any useful penalty.
 constexpr int max_doublings = 20;
 
-// The mesh's faces, a boundary face carrying the first Dirichlet condition whose region
-// holds its centroid (the condition is imposed weakly on the whole face, §4.2).
-std::vector<DgFace> faces_with_conditions(const PolyhedralMesh& mesh, const Scene& scene) {
-  const double tolerance = 1e-9 * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
-  std::vector<DgFace> faces = mesh_faces(mesh);
-  std::vector<int> faces_per_condition(scene.dirichlet.size(), 0);
-  for (int f = 0; f < mesh.face_count(); ++f) {
-    DgFace& face = faces[f];
-    if (face.plus >= 0) continue;
-    for (size_t c = 0; c < scene.dirichlet.size() && face.condition < 0; ++c)
-      if (scene.dirichlet[c].region.contains(mesh.face_centroids.row(f).transpose(), tolerance)) {
-        face.condition = static_cast<int>(c);
-        face.components = scene.dirichlet[c].components;
-        ++faces_per_condition[c];
-      }
-  }
-  for (size_t c = 0; c < scene.dirichlet.size(); ++c) {
-    if (faces_per_condition[c] == 0)
-      throw InputError(
-          input_message(scene.file.string(), scene.dirichlet[c].pointer + "/region",
-                        "holds the centroid of no boundary face of the dg mesh (weak conditions act on faces)"));
-  }
-  return faces;
-}
+// What an event hands the rebuild: the mesh, and what the build it replaces integrated and
+// the penalty it reached, so that the cells and faces the event left alone keep their
+// matrices (dg/dg_integral_memory.hpp).
+struct DgMesh {
+  PolyhedralSceneMesh mesh;
+  std::shared_ptr<const DgIntegralMemory> integrals;
+  int doublings = 0;
+};
 
 class DgMethod final : public EmbeddedSurfaceMethod {
 public:
   // On the mesh of the scene, or on a mesh an event hands it.
-  DgMethod(const Scene& scene, const SceneGeometry& geometry, const PolyhedralSceneMesh* handed)
+  DgMethod(const Scene& scene, const SceneGeometry& geometry, const DgMesh* handed)
       : spec_(dg_spec(scene)), materials_(scene) {
-    PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec_.mesh, geometry);
+    PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
     own_surface_ = built.surface.triangles.rows() > 0;
@@ -76,7 +62,7 @@ public:
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
     std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
-    if (spec_.strong_conditions) hold_strongly(scene, faces);
+    if (spec_.strong_conditions) hold_strongly(scene, faces, mesh_.cell_count());
     for (const DirichletCondition& condition : scene.dirichlet) motions_.push_back(condition.motion);
 
     const auto start = std::chrono::steady_clock::now();
@@ -93,8 +79,14 @@ public:
                  first.tangential_fraction,
                  true,
                  spec_.rule_simplification};
+    // After an event, η starts where the run had doubled it to: it never drops during a
+    // run, and the faces the event left alone keep their matrices.
+    if (handed) double_penalty(handed->doublings);
+    // Kept only where an event can rebuild on them (they hold every class's matrices).
+    IntegralReuse reuse{handed ? handed->integrals : nullptr, false};
+    for (const SceneEvent& event : scene.events) reuse.remember |= event.kind != EventKind::release;
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
-    system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
+    system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_, reuse);
     // The functions of a cell are contiguous and do not depend on the penalty.
     std::vector<std::vector<int>> element_dofs(mesh_.cell_count());
     for (int cell = 0; cell < mesh_.cell_count(); ++cell)
@@ -107,12 +99,11 @@ public:
     // only interior penalty pays for the test.
     while (spec_.double_until_definite && linear() && spec_.flux == Flux::interior_penalty &&
            !positive_definite(*system_, element_dofs, iterative)) {
-      if (++doublings_ > max_doublings)
+      if (doublings_ >= max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");
-      settings_.penalty *= 2;
-      for (DgMaterial& material : cell_materials_.materials) material.penalty *= 2;
-      system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_);
+      double_penalty(1);
+      system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_, reuse);
     }
     auto external_force = [this](double time) { return weak_condition_load(time); };
     // Used only when the scene's solver/linear is iterative (the direct solvers ignore it).
@@ -190,24 +181,19 @@ public:
     return volume;
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_},
-                             .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
-                             .load_surface = surface_.load_surface,
-                             .facts = mesh_facts_,
-                             .converted = std::nullopt,
-                             .node_sources = {},
-                             .cell_levels = cell_levels_};
-    if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
-    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(mesh));
+    return std::make_shared<MeshOf<DgMesh>>(handed_mesh(polyhedral_mesh()));
   }
   std::string cut_refusal() const override { return event_refusal("cut"); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "dg");
+    return std::make_shared<MeshOf<DgMesh>>(handed_mesh(cut_polyhedral_scene_mesh(polyhedral_mesh(), cut, facts)));
   }
   std::string refine_refusal(const RefineSpec& /*refine*/) const override { return event_refusal("refinement"); }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
                                                 nlohmann::json& facts) const override {
-    return refine_handed_polyhedral_mesh(*mesh(), refine, *field_quadrature(0)->elements, materials_, u, facts, "dg");
+    std::optional<PolyhedralSceneMesh> refined = refine_polyhedral_scene_mesh_by_stress(
+        polyhedral_mesh(), refine, *field_quadrature(0)->elements, materials_, u, facts);
+    if (!refined) return nullptr;
+    return std::make_shared<MeshOf<DgMesh>>(handed_mesh(std::move(*refined)));
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);
@@ -215,6 +201,7 @@ public:
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;
+    const SimilarityStatistics& similarity = system_->similarity();
     facts.update({{"degree", spec_.degree},
                   {"flux", flux_names[static_cast<int>(spec_.flux)]},
                   {"penalty",
@@ -225,12 +212,16 @@ public:
                     {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
                     {"lame_split", spec_.lame_split}}},
                   {"smallest_cell_volume", smallest_cell_volume()},
-                  // Element and face matrices computed once per class of translates (cell_similarity.hpp).
+                  // Element and face matrices computed once per class of translates
+                  // (cell_similarity.hpp); after an event, the classes whose matrices were
+                  // taken from the build before (dg_integral_memory.hpp).
                   {"similar_cells",
-                   {{"cells", system_->similarity().cells},
-                    {"cell_classes", system_->similarity().cell_classes},
-                    {"faces", system_->similarity().faces},
-                    {"face_classes", system_->similarity().face_classes}}},
+                   {{"cells", similarity.cells},
+                    {"cell_classes", similarity.cell_classes},
+                    {"faces", similarity.faces},
+                    {"face_classes", similarity.face_classes},
+                    {"remembered_cell_classes", similarity.remembered_cell_classes},
+                    {"remembered_face_classes", similarity.remembered_face_classes}}},
                   {"warping", spec_.warping},
                   {"conditions", condition_imposition_names[spec_.strong_conditions ? 1 : 0]},
                   {"embedding", embedding_names[static_cast<int>(spec_.embedding)]}});
@@ -239,6 +230,26 @@ public:
   }
 
 private:
+  // The mesh as built (for an event to change).
+  PolyhedralSceneMesh polyhedral_mesh() const {
+    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_},
+                             .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
+                             .load_surface = surface_.load_surface,
+                             .facts = mesh_facts_,
+                             .converted = std::nullopt,
+                             .node_sources = {},
+                             .cell_levels = cell_levels_};
+    if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
+    return mesh;
+  }
+  DgMesh handed_mesh(PolyhedralSceneMesh mesh) const {
+    return {std::move(mesh), system_->integral_memory(), doublings_};
+  }
+  void double_penalty(int times) {
+    doublings_ += times;
+    settings_.penalty *= 1 << times;
+    for (DgMaterial& material : cell_materials_.materials) material.penalty *= 1 << times;
+  }
   std::string event_refusal(const std::string& event) const {
     return spec_.embedding == Embedding::stitched
                ? "its stitched embedding interpolates with the converted mesh, which a " + event +
@@ -300,24 +311,6 @@ private:
     }
     result.ids = materials_.ids_of(centroids);
     return result;
-  }
-
-  // Marks the Dirichlet faces strong; a cell's strong faces must prescribe the same
-  // components (one change of basis per cell, dg/strong_conditions.hpp).
-  void hold_strongly(const Scene& scene, std::vector<DgFace>& faces) const {
-    std::vector<int> first_condition(mesh_.cell_count(), -1);
-    for (DgFace& face : faces) {
-      if (face.plus >= 0 || face.condition < 0) continue;
-      face.strong = true;
-      int& first = first_condition[face.minus];
-      if (first < 0) first = face.condition;
-      if (scene.dirichlet[first].components != face.components)
-        throw InputError(input_message(
-            scene.file.string(), "/discretization/dg/conditions",
-            "'strong' needs the conditions on one cell's faces to prescribe the same components, but cell " +
-                std::to_string(face.minus) + " touches " + scene.dirichlet[first].pointer + " and " +
-                scene.dirichlet[face.condition].pointer + " (use 'weak')"));
-    }
   }
 
   // c_f of Dirichlet faces: the convention's, the same for every material.
@@ -394,7 +387,7 @@ std::unique_ptr<MethodInstance> make_dg_method(const Scene& scene, const SceneGe
 const MethodDescription& dg_method() {
   static const MethodDescription method{
       dg_scene_block(), make_dg_method, "interior-penalty / Babuska-Zlamal DG, monomials k = 1-3 on polyhedra",
-      rebuild_on_handed_mesh<DgMethod, PolyhedralSceneMesh>("dg"),
+      rebuild_on_handed_mesh<DgMethod, DgMesh>("dg"),
       [](const Scene& scene, const SceneGeometry& geometry, const MeshPreviewOptions& options) {
         return polyhedral_mesh_preview("dg", scene, geometry, dg_spec(scene).mesh, options);
       }};

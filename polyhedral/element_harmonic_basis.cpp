@@ -300,6 +300,13 @@ Eigen::MatrixXd ElementHarmonicBasis::values(const Eigen::MatrixXd& points) cons
 
 Eigen::MatrixXd ElementHarmonicBasis::centres() const { return (centres_ * scale_).rowwise() + origin_.transpose(); }
 
+ElementHarmonicBasis ElementHarmonicBasis::reordered(const std::vector<int>& order) const {
+  ElementHarmonicBasis result = *this;
+  result.coefficients_ = coefficients_(Eigen::all, order);
+  result.boundary_integrals_ = boundary_integrals_(order, Eigen::all);
+  return result;
+}
+
 void ElementHarmonicBasis::write(BinaryWriter& out) const {
   out.matrix(origin_);
   out.put<double>(scale_);

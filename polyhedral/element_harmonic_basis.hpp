@@ -58,6 +58,10 @@ public:
   /// harmonic_tabulation makes the quadrature of the gradients give.
   const Eigen::MatrixXd& boundary_integrals() const { return boundary_integrals_; }
 
+  /// The same basis with its nodes in another order: node i of the result is node
+  /// order[i] of this one (the cell numbered otherwise by a rebuilt mesh).
+  ElementHarmonicBasis reordered(const std::vector<int>& order) const;
+
   /// Everything the basis evaluates from, bit for bit (harmonic_basis_cache).
   void write(BinaryWriter& out) const;
   /// What write wrote, or nullopt when it does not read back whole and consistent.

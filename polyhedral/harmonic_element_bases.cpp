@@ -25,10 +25,12 @@ void record_first(std::atomic<int>& first, int cell) {
 }  // namespace
 
 HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind,
-                                           const MfsOptions& options)
+                                           const MfsOptions& options, const HarmonicBasisMemory* previous,
+                                           HarmonicBasisMemory* remember)
     : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
   const int cells = mesh.cell_count();
-  std::vector<int> mfs_cells;
+  std::vector<int> mfs_cells;  // to fit
+  std::vector<CellGeometryKey> keys(previous || remember ? static_cast<size_t>(cells) : 0);
   for (int cell = 0; cell < cells; ++cell) {
     Cell& entry = cells_[cell];
     if (kind == HarmonicBasisKind::automatic) {
@@ -39,6 +41,12 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       }
     }
     entry.nodes = cell_nodes(mesh, cell);
+    if (!keys.empty()) keys[cell] = cell_geometry_key(mesh, cell);
+    if (std::optional<ElementHarmonicBasis> earlier = previous ? previous->find(keys[cell], options) : std::nullopt) {
+      entry.mfs = std::move(earlier);
+      ++remembered_bases_;
+      continue;
+    }
     mfs_cells.push_back(cell);
   }
   // Each face's coordinates once, shared by its two cells; then the cells.
@@ -60,6 +68,9 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   if (failed_cell < cells)
     throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
                          ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
+  if (remember)
+    for (int cell = 0; cell < cells; ++cell)
+      if (cells_[cell].mfs) remember->add(std::move(keys[cell]), *cells_[cell].mfs);
 }
 
 double HarmonicElementBases::max_boundary_residual() const {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "polyhedral/element_harmonic_basis.hpp"
+#include "polyhedral/harmonic_basis_memory.hpp"
 #include "polyhedral/harmonic_cell_rule.hpp"
 #include "polyhedral/harmonic_scene_block.hpp"
 #include "polyhedral/plain_cells.hpp"
@@ -20,8 +21,11 @@ namespace altfem::harmonic {
 class HarmonicElementBases {
 public:
   /// Keeps a reference to `mesh`. Throws NumericalError naming the cell when an MFS fit
-  /// is not finite.
-  HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options);
+  /// is not finite. An MFS cell whose geometry `previous` holds (an event's rebuild) takes
+  /// that basis instead of a fit (harmonic_basis_memory.hpp); `remember` receives every
+  /// MFS cell's basis, for the next rebuild.
+  HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options,
+                       const HarmonicBasisMemory* previous = nullptr, HarmonicBasisMemory* remember = nullptr);
 
   int cell_count() const { return static_cast<int>(cells_.size()); }
   /// The cell's global basis (node) indices, in the order of its values.
@@ -32,6 +36,8 @@ public:
   const ElementHarmonicBasis* mfs_basis(int cell) const { return cells_[cell].mfs ? &*cells_[cell].mfs : nullptr; }
   /// The largest RMS boundary misfit of the MFS fits (0 without MFS cells).
   double max_boundary_residual() const;
+  /// The MFS cells whose basis came from the build before (`previous`), not a fit.
+  int remembered_bases() const { return remembered_bases_; }
 
   /// Every cell tabulated with a rule of `strength`: tet_rule/hex_rule on plain cells,
   /// harmonic_cell_rule(quadrature) with harmonic_tabulation's consistency correction
@@ -63,6 +69,7 @@ private:
 
   const PolyhedralMesh& mesh_;
   std::vector<Cell> cells_;
+  int remembered_bases_ = 0;
 };
 
 }  // namespace altfem::harmonic

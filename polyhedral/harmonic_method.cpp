@@ -25,15 +25,21 @@ namespace altfem::harmonic {
 
 namespace {
 
+// What an event hands the rebuild: the mesh, and the MFS bases of the build it replaces,
+// which the cells it left alone keep (harmonic_basis_memory.hpp).
+struct HarmonicMesh {
+  PolyhedralSceneMesh mesh;
+  std::shared_ptr<const HarmonicBasisMemory> bases;
+};
+
 class HarmonicMethod final : public EmbeddedSurfaceMethod {
 public:
   // On the mesh of the scene, or on a mesh an event hands it.
-  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry, const PolyhedralSceneMesh* handed)
-      : materials_(scene) {
+  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry, const HarmonicMesh* handed) : materials_(scene) {
     const HarmonicSpec spec = harmonic_spec(scene);
     // fem's tet or hex mesh cell by cell, or the geometry sliced: its grid's hexahedra
     // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
-    PolyhedralSceneMesh built = handed ? *handed : build_polyhedral_scene_mesh(spec.mesh, geometry);
+    PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
     own_surface_ = built.surface.triangles.rows() > 0;
@@ -44,7 +50,12 @@ public:
     cell_levels_ = std::move(built.cell_levels);
     const auto start = std::chrono::steady_clock::now();
     if (spec.cache.empty()) {
-      bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs);
+      // Kept only where an event can rebuild on them.
+      bool events_rebuild = false;
+      for (const SceneEvent& event : scene.events) events_rebuild |= event.kind != EventKind::release;
+      if (events_rebuild) basis_memory_ = std::make_shared<HarmonicBasisMemory>(spec.mfs);
+      bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs,
+                                                      handed ? handed->bases.get() : nullptr, basis_memory_.get());
     } else {
       bool reused = false;
       try {
@@ -122,24 +133,18 @@ public:
   Eigen::VectorXd interpolate(const std::function<Eigen::Vector3d(const Eigen::Vector3d&)>& field) const override {
     return interpolate_at_nodes(mesh_.nodes, field);
   }
-  std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
-        PolyhedralSceneMesh{.sliced = {.mesh = mesh_},
-                            .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
-                            .load_surface = surface_.load_surface,
-                            .facts = mesh_facts_,
-                            .converted = std::nullopt,
-                            .node_sources = {},
-                            .cell_levels = cell_levels_});
-  }
+  std::shared_ptr<const MethodMesh> mesh() const override { return handed_mesh(polyhedral_mesh()); }
   std::string cut_refusal() const override { return ""; }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return cut_handed_polyhedral_mesh(*mesh(), cut, facts, "harmonic");
+    return handed_mesh(cut_polyhedral_scene_mesh(polyhedral_mesh(), cut, facts));
   }
   std::string refine_refusal(const RefineSpec& /*refine*/) const override { return ""; }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
                                                 nlohmann::json& facts) const override {
-    return refine_handed_polyhedral_mesh(*mesh(), refine, *elements_, materials_, u, facts, "harmonic");
+    std::optional<PolyhedralSceneMesh> refined =
+        refine_polyhedral_scene_mesh_by_stress(polyhedral_mesh(), refine, *elements_, materials_, u, facts);
+    if (!refined) return nullptr;
+    return handed_mesh(std::move(*refined));
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const HarmonicMethod&>(previous);
@@ -162,10 +167,26 @@ public:
     facts["max_mfs_boundary_residual"] = bases_->max_boundary_residual();
     facts["mfs_quadrature_points"] = mfs_quadrature_points_;
     if (!basis_cache_.empty()) facts["harmonic_basis_cache"] = basis_cache_;
+    // After an event, the MFS cells it left alone, whose bases were not fitted again.
+    facts["remembered_mfs_bases"] = bases_->remembered_bases();
     return facts;
   }
 
 private:
+  // The mesh as built (for an event to change).
+  PolyhedralSceneMesh polyhedral_mesh() const {
+    return {.sliced = {.mesh = mesh_},
+            .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
+            .load_surface = surface_.load_surface,
+            .facts = mesh_facts_,
+            .converted = std::nullopt,
+            .node_sources = {},
+            .cell_levels = cell_levels_};
+  }
+  std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh) const {
+    return std::make_shared<MeshOf<HarmonicMesh>>(HarmonicMesh{std::move(mesh), basis_memory_});
+  }
+
   // Martin et al. 2008 §6 warp the linear stiffness; the nonlinear models are already
   // rotation-invariant (and corotated_linear is the warping's own continuum model).
   static void check_warped_materials(const Scene& scene) {
@@ -183,8 +204,9 @@ private:
   std::vector<int> cell_levels_;          // per cell, the refinements it came through (empty: none)
   bool own_surface_ = false;              // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::unique_ptr<HarmonicElementBases> bases_;
-  std::unique_ptr<Discretization> discretization_;  // linear, or warped (§6)
-  const TabulatedElements* elements_ = nullptr;     // its stiffness tabulation
+  std::shared_ptr<HarmonicBasisMemory> basis_memory_;  // every MFS basis, where events rebuild
+  std::unique_ptr<Discretization> discretization_;     // linear, or warped (§6)
+  const TabulatedElements* elements_ = nullptr;        // its stiffness tabulation
   double quadrature_seconds_ = 0;
   std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
@@ -201,7 +223,7 @@ std::unique_ptr<MethodInstance> make_harmonic_method(const Scene& scene, const S
 const MethodDescription& harmonic_method() {
   static const MethodDescription method{
       harmonic_scene_block(), make_harmonic_method, "harmonic-basis polyhedral FEM (MFS bases, Martin et al. 2008)",
-      rebuild_on_handed_mesh<HarmonicMethod, PolyhedralSceneMesh>("harmonic"),
+      rebuild_on_handed_mesh<HarmonicMethod, HarmonicMesh>("harmonic"),
       [](const Scene& scene, const SceneGeometry& geometry, const MeshPreviewOptions& options) {
         return polyhedral_mesh_preview("harmonic", scene, geometry, harmonic_spec(scene).mesh, options);
       }};

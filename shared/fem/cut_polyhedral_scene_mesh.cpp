@@ -50,10 +50,4 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   return result;
 }
 
-std::shared_ptr<const MethodMesh> cut_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& cut,
-                                                             nlohmann::json& facts, const char* method) {
-  return std::make_shared<MeshOf<PolyhedralSceneMesh>>(
-      cut_polyhedral_scene_mesh(method_mesh_as<PolyhedralSceneMesh>(mesh, method), cut, facts));
-}
-
 }  // namespace altfem

@@ -5,12 +5,10 @@
 // matrices ill-conditioned), the surface it deforms cut by the same blade (cut_surface),
 // the surface loads act on kept, and the converted volume mesh dropped, since its cells no
 // longer match.
-#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/scene.hpp"
-#include "shared/simulation/method_mesh.hpp"
 
 namespace altfem {
 
@@ -21,10 +19,5 @@ namespace altfem {
 /// merged_pieces and cells (after). Throws NumericalError as cut_polyhedral_mesh does.
 PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const SceneEvent& cut,
                                               nlohmann::json& facts);
-
-/// A polyhedral method's MethodInstance::cut_mesh: its handed mesh (a PolyhedralSceneMesh)
-/// cut as above.
-std::shared_ptr<const MethodMesh> cut_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& cut,
-                                                             nlohmann::json& facts, const char* method);
 
 }  // namespace altfem

@@ -84,16 +84,11 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
   return result;
 }
 
-std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& refine,
-                                                                const TabulatedElements& elements,
-                                                                const SceneMaterials& materials,
-                                                                const Eigen::VectorXd& u, nlohmann::json& facts,
-                                                                const char* method) {
-  const PolyhedralSceneMesh& handed = method_mesh_as<PolyhedralSceneMesh>(mesh, method);
-  std::optional<PolyhedralSceneMesh> refined =
-      refine_polyhedral_scene_mesh(handed, refine.refine, mean_cell_stresses(elements, materials.pointers(), u), facts);
-  if (!refined) return nullptr;
-  return std::make_shared<MeshOf<PolyhedralSceneMesh>>(std::move(*refined));
+std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh_by_stress(
+    const PolyhedralSceneMesh& mesh, const SceneEvent& refine, const TabulatedElements& elements,
+    const SceneMaterials& materials, const Eigen::VectorXd& u, nlohmann::json& facts) {
+  return refine_polyhedral_scene_mesh(mesh, refine.refine, mean_cell_stresses(elements, materials.pointers(), u),
+                                      facts);
 }
 
 }  // namespace altfem

@@ -13,7 +13,6 @@
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/scene.hpp"
-#include "shared/simulation/method_mesh.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
 namespace altfem {
@@ -33,13 +32,11 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
                                                                 nlohmann::json& facts);
 
-/// A polyhedral method's MethodInstance::refine_mesh: its handed mesh refined as above,
-/// by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one element
-/// per cell, each with its material id into materials.pointers()); null when no cell is marked.
-std::shared_ptr<const MethodMesh> refine_handed_polyhedral_mesh(const MethodMesh& mesh, const SceneEvent& refine,
-                                                                const TabulatedElements& elements,
-                                                                const SceneMaterials& materials,
-                                                                const Eigen::VectorXd& u, nlohmann::json& facts,
-                                                                const char* method);
+/// A polyhedral method's refinement (MethodInstance::refine_mesh): `mesh` refined as
+/// above by the stresses of the displacement u (#dofs) in `elements` (its tabulation, one
+/// element per cell, each with its material id into materials.pointers()).
+std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh_by_stress(
+    const PolyhedralSceneMesh& mesh, const SceneEvent& refine, const TabulatedElements& elements,
+    const SceneMaterials& materials, const Eigen::VectorXd& u, nlohmann::json& facts);
 
 }  // namespace altfem

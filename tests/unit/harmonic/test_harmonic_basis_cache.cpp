@@ -1,7 +1,9 @@
 // The on-disk basis cache (polyhedral/harmonic_basis_cache.hpp): a second run reuses the
 // file and gets bit-identical bases; other options or another mesh miss; a truncated or
 // corrupted file is ignored, recomputed and rewritten; the harmonic method reports
-// whether it wrote or reused its cache (facts: harmonic_basis_cache).
+// whether it wrote or reused its cache (facts: harmonic_basis_cache). The in-memory
+// counterpart for events (polyhedral/harmonic_basis_memory.hpp): a rebuild after a cut
+// fits only the cells the cut changed and keeps the others' bases bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include "polyhedral/harmonic_basis_cache.hpp"
 #include "polyhedral/harmonic_method.hpp"
 #include "shared/common/error.hpp"
+#include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -119,6 +122,57 @@ TEST(HarmonicBasisCache, TheMethodReportsWritingThenReusingItsCache) {
   } catch (const InputError& error) {
     EXPECT_NE(std::string(error.what()).find("/discretization/harmonic/cache"), std::string::npos) << error.what();
   }
+}
+
+TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
+  const PolyhedralMesh mesh = hexahedra();  // 2 × 2 × 1 cells of [0, 2] × [0, 1.2] × [0, 0.8]
+  const MfsOptions options;
+  HarmonicBasisMemory memory(options);
+  const HarmonicElementBases before(mesh, HarmonicBasisKind::mfs, options, nullptr, &memory);
+  EXPECT_EQ(memory.size(), 4);
+  EXPECT_EQ(before.remembered_bases(), 0);
+  // x = 0.5 crosses the two cells of x in [0, 1]; those of [1, 2] keep every node and face
+  // (the crossings lie on edges inside [0, 1]).
+  const PolyhedralCut cut =
+      cut_polyhedral_mesh(mesh, CuttingPlane(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX()));
+  ASSERT_EQ(cut.crossed_cells, 2);
+  const HarmonicElementBases after(cut.mesh, HarmonicBasisKind::mfs, options, &memory);
+  const HarmonicElementBases fresh(cut.mesh, HarmonicBasisKind::mfs, options);
+  EXPECT_EQ(after.remembered_bases(), 2);
+  // Every basis is the one a fresh fit gives, as functions (a fit of a cell numbered
+  // otherwise lists its kernel centres in another order).
+  const Eigen::MatrixXd samples = Eigen::MatrixXd::Random(5, 3);
+  for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
+    ASSERT_EQ(after.nodes(cell), fresh.nodes(cell));
+    const Eigen::MatrixXd difference = after.mfs_basis(cell)->values(samples) - fresh.mfs_basis(cell)->values(samples);
+    EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-10) << "cell " << cell;
+  }
+  // The kept bases are the build before's, bit for bit, node by node (the cut mesh
+  // numbers the nodes otherwise: matched by position).
+  int kept = 0;
+  const Eigen::MatrixXd points = Eigen::MatrixXd::Random(5, 3);
+  for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
+    const int parent = cut.parent_cell[cell];
+    if (mesh.cell_centroids(parent, 0) < 1) continue;
+    ++kept;
+    const Eigen::MatrixXd values = after.mfs_basis(cell)->values(points);
+    const Eigen::MatrixXd values_before = before.mfs_basis(parent)->values(points);
+    for (size_t i = 0; i < after.nodes(cell).size(); ++i) {
+      const Eigen::RowVector3d x = cut.mesh.nodes.row(after.nodes(cell)[i]);
+      int same = -1;
+      for (size_t j = 0; j < before.nodes(parent).size(); ++j)
+        if (mesh.nodes.row(before.nodes(parent)[j]) == x) same = static_cast<int>(j);
+      ASSERT_GE(same, 0);
+      EXPECT_EQ(values.col(static_cast<Eigen::Index>(i)), values_before.col(same));
+      EXPECT_EQ(after.mfs_basis(cell)->boundary_integrals().row(static_cast<Eigen::Index>(i)),
+                before.mfs_basis(parent)->boundary_integrals().row(same));
+    }
+  }
+  EXPECT_EQ(kept, 2);
+  // Other options fit every cell again.
+  MfsOptions denser = options;
+  ++denser.edge_samples;
+  EXPECT_EQ(HarmonicElementBases(cut.mesh, HarmonicBasisKind::mfs, denser, &memory).remembered_bases(), 0);
 }
 
 }  // namespace

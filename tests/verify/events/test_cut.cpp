@@ -198,6 +198,17 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
     EXPECT_EQ(record.facts["separated_faces"], 0);
     EXPECT_EQ(record.facts["cells"], cells_before + crossed);
     EXPECT_EQ(element_count(simulation.method()), cells_before + crossed);
+    if (GetParam() == "dg") {
+      // dg integrates again only what the cut touched: the crossed cube's two pieces (each
+      // 0.05 wide, translates: one class) and the two faces joining them to the bar. The
+      // cube's class, its faces' and the clamp's come from the build before
+      // (dg/dg_integral_memory.hpp).
+      const nlohmann::json similar = simulation.method().facts()["similar_cells"];
+      EXPECT_EQ(similar["cell_classes"], 2);
+      EXPECT_EQ(similar["remembered_cell_classes"], 1);
+      EXPECT_EQ(similar["face_classes"], 4);
+      EXPECT_EQ(similar["remembered_face_classes"], 2);
+    }
   }
   expect_conserved(record, GetParam(), 2);
   EXPECT_GT(record.dofs_after, record.dofs_before);
@@ -232,6 +243,10 @@ TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
   expect_conserved(second, GetParam(), 20);
   if (GetParam() == "harmonic") {  // y = 0.05 is a plane of its grid's faces: nothing is interpolated
     EXPECT_EQ(second.facts["crossed_cells"], 0);
+    // Nor fitted again: the first cut's 8 pieces (MFS cells) keep their bases, every other
+    // cell its trilinear one (polyhedral/harmonic_basis_memory.hpp).
+    EXPECT_EQ(simulation.method().element_counts()["mfs_polyhedron"], 8);
+    EXPECT_EQ(simulation.method().facts()["remembered_mfs_bases"], 8);
     EXPECT_LE(std::abs(second.conserved["energy_jump_relative"].get<double>()), 1e-12);
     EXPECT_LE(std::abs(second.conserved["momentum_change"].get<double>()), 1e-12);
   } else if (GetParam() == "dg") {  // it crosses every dg cell; each piece keeps its parent's polynomial

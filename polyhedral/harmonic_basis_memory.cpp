@@ -1,0 +1,73 @@
+#include "polyhedral/harmonic_basis_memory.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "shared/geometry/polyhedron.hpp"
+#include "shared/io/binary_cache.hpp"
+
+namespace altfem::harmonic {
+
+namespace {
+
+bool same_options(const MfsOptions& a, const MfsOptions& b) {
+  return a.edge_samples == b.edge_samples && a.collocation_factor == b.collocation_factor && a.offset == b.offset;
+}
+
+}  // namespace
+
+CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell) {
+  const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
+  const auto count = static_cast<int>(polyhedron.vertices.rows());
+  CellGeometryKey key;
+  key.local.resize(count);
+  std::iota(key.local.begin(), key.local.end(), 0);
+  const auto before = [&](int a, int b) {
+    const auto x = polyhedron.vertices.row(a), y = polyhedron.vertices.row(b);
+    return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
+  };
+  std::sort(key.local.begin(), key.local.end(), before);
+  std::vector<int> sorted(count);  // local vertex → sorted index
+  for (int k = 0; k < count; ++k) sorted[key.local[k]] = k;
+  key.vertices = polyhedron.vertices(key.local, Eigen::all);
+  std::vector<std::vector<int>> loops;
+  for (const std::vector<int>& face : polyhedron.faces) {
+    std::vector<int> loop;
+    for (int vertex : face) loop.push_back(sorted[vertex]);
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
+    loops.push_back(std::move(loop));
+  }
+  std::sort(loops.begin(), loops.end());
+  key.structure.push_back(static_cast<int>(loops.size()));
+  for (const std::vector<int>& loop : loops) {
+    key.structure.push_back(static_cast<int>(loop.size()));
+    key.structure.insert(key.structure.end(), loop.begin(), loop.end());
+  }
+  CacheKeyHasher hasher;
+  hasher.matrix(key.vertices);
+  hasher.bytes(key.structure.data(), sizeof(int) * key.structure.size());
+  key.hash = hasher.value();
+  return key;
+}
+
+std::optional<ElementHarmonicBasis> HarmonicBasisMemory::find(const CellGeometryKey& key,
+                                                              const MfsOptions& options) const {
+  if (!same_options(options, options_)) return std::nullopt;
+  const auto [first, last] = by_hash_.equal_range(key.hash);
+  for (auto candidate = first; candidate != last; ++candidate) {
+    const Entry& entry = entries_[candidate->second];
+    if (!(entry.key == key)) continue;
+    // Node key.local[k] here is node entry.key.local[k] there.
+    std::vector<int> order(key.local.size());
+    for (size_t k = 0; k < order.size(); ++k) order[key.local[k]] = entry.key.local[k];
+    return entry.basis.reordered(order);
+  }
+  return std::nullopt;
+}
+
+void HarmonicBasisMemory::add(CellGeometryKey key, const ElementHarmonicBasis& basis) {
+  by_hash_.emplace(key.hash, static_cast<int>(entries_.size()));
+  entries_.push_back({std::move(key), basis});
+}
+
+}  // namespace altfem::harmonic
