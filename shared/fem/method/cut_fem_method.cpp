@@ -28,8 +28,9 @@ class CutFemMethod final : public EmbeddedSurfaceMethod {
 public:
   CutFemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh& mesh)
       : materials_(scene), elements_(mesh.elements) {
-    cells_ = std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
-                                                scene.dirichlet, scene.file.string());
+    cells_ =
+        std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
+                                           scene.dirichlet, scene.file.string(), CutCellRebuild{nullptr, mesh.rules});
     // The surface every method deforms, else (a volume mesh file) the material's own
     // boundary, open along the cut. Surface loads act on the boundary of the material, the
     // cut tetrahedra's (the blade's faces included, unloaded by tractions given on the
@@ -62,12 +63,13 @@ public:
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
     return std::make_shared<MeshOf<FemMesh>>(
-        FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}, std::nullopt, {}});
+        FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}, std::nullopt, {}, cells_->rule_memory()});
   }
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FemMesh>>(FemMesh{elements_, cells_->cut(cut.blade, facts), std::nullopt, {}});
+    return std::make_shared<MeshOf<FemMesh>>(
+        FemMesh{elements_, cells_->cut(cut.blade, facts), std::nullopt, {}, cells_->rule_memory()});
   }
   /// From fem before its first cut, each node copy takes its node's values; from a cut
   /// fem, the values of the copy its material came from (EmbeddedCutCells::transfer).

@@ -16,12 +16,14 @@ namespace altfem {
 
 /// What fem is built on: its elements, and once cut, the material as their cut tetrahedra;
 /// on a hexahedral grid the forest a refine event splits, and its hanging nodes (the last
-/// nodes of `elements`).
+/// nodes of `elements`); once cut again, the cut-cell rules of the build before, which the
+/// cells the cut left alone take (CutCellRebuild::rules).
 struct FemMesh {
   VolumeMesh elements;
   std::optional<EmbeddedTetrahedra> material;
   std::optional<HexahedralForest> forest;
   NodeConstraints constraints;
+  std::shared_ptr<const CellRuleMemory> rules;
 };
 
 /// The elements' own tetrahedra (uncut), conforming by node as the elements are: Tet4/Tet10

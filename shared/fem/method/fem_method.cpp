@@ -84,7 +84,7 @@ public:
     return facts;
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FemMesh>>(FemMesh{mesh_, std::nullopt, forest_, constraints_});
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{mesh_, std::nullopt, forest_, constraints_, nullptr});
   }
   std::string cut_refusal() const override {
     if (scene_refines_) return "it does not cut a mesh that a refine event refines (hanging nodes) yet";
@@ -105,12 +105,13 @@ public:
         facts);
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{std::move(refined->mesh.mesh), std::nullopt,
-                                                     std::move(refined->forest), std::move(refined->mesh.constraints)});
+                                                     std::move(refined->forest), std::move(refined->mesh.constraints),
+                                                     nullptr});
   }
   /// The elements' own tetrahedra cut by the blade: the rebuild is a CutFemMethod.
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FemMesh>>(
-        FemMesh{mesh_, cut_embedded_tetrahedra(element_tetrahedra(mesh_), cut.blade, facts), std::nullopt, {}});
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{
+        mesh_, cut_embedded_tetrahedra(element_tetrahedra(mesh_), cut.blade, facts), std::nullopt, {}, nullptr});
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FemMethod&>(previous);
