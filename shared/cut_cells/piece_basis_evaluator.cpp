@@ -54,7 +54,11 @@ double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<dou
 PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh& pieces,
                                          const std::vector<int>& kept_rows, const VolumeMesh& embedded,
                                          const NodeConstraints* constraints)
-    : whole_(mesh, constraints), embedded_(embedded), piece_tetrahedra_(kept_rows.size()), siblings_(kept_rows.size()) {
+    : whole_(mesh, constraints),
+      embedded_(embedded),
+      piece_tetrahedra_(kept_rows.size()),
+      piece_boxes_(kept_rows.size()),
+      siblings_(kept_rows.size()) {
   std::map<int, std::vector<int>> kept_pieces;  // background cell → its kept cells
   for (std::size_t cell = 0; cell < kept_rows.size(); ++cell)
     kept_pieces[pieces.background_cell[kept_rows[cell]]].push_back(static_cast<int>(cell));
@@ -62,19 +66,25 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
     if (cells.size() < 2) continue;
     for (const int cell : cells) {
       piece_tetrahedra_[cell] = pieces.tetrahedra[kept_rows[cell]];
+      for (const int t : piece_tetrahedra_[cell]) {
+        Eigen::AlignedBox3d box;
+        for (int i = 0; i < 4; ++i) box.extend(embedded.nodes.row(embedded.cells(t, i)).transpose());
+        piece_boxes_[cell].push_back(box);
+      }
       for (const int other : cells)
         if (other != cell) siblings_[cell].push_back(other);
     }
   }
 }
 
-double PieceBasisEvaluator::distance_to_piece(int cell, const Eigen::Vector3d& x) const {
-  double distance = std::numeric_limits<double>::infinity();
+double PieceBasisEvaluator::distance_to_piece(int cell, const Eigen::Vector3d& x, double bound) const {
+  double distance = bound;
   Eigen::Matrix<double, 4, 3> corners;
-  for (const int t : piece_tetrahedra_[cell]) {
-    for (int i = 0; i < 4; ++i) corners.row(i) = embedded_.nodes.row(embedded_.cells(t, i));
+  const std::vector<int>& tetrahedra = piece_tetrahedra_[cell];
+  for (std::size_t k = 0; k < tetrahedra.size() && distance > 0; ++k) {
+    if (piece_boxes_[cell][k].exteriorDistance(x) >= distance) continue;
+    for (int i = 0; i < 4; ++i) corners.row(i) = embedded_.nodes.row(embedded_.cells(tetrahedra[k], i));
     distance = std::min(distance, distance_to_tetrahedron(x, corners));
-    if (distance == 0.0) break;
   }
   return distance;
 }
@@ -83,9 +93,9 @@ bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, st
                                           std::vector<double>& values) const {
   if (!whole_.evaluate_inside(cell, x, basis, values)) return false;
   if (siblings_[cell].empty()) return true;
-  const double distance = distance_to_piece(cell, x);
+  const double distance = distance_to_piece(cell, x, std::numeric_limits<double>::infinity());
   return std::none_of(siblings_[cell].begin(), siblings_[cell].end(),
-                      [&](int other) { return distance_to_piece(other, x) < distance; });
+                      [&](int other) { return distance_to_piece(other, x, distance) < distance; });
 }
 
 }  // namespace altfem

@@ -3,6 +3,7 @@
 // background cell overlap in space, so a point that lies in the cell belongs to the
 // piece whose material is nearest to it (a surface vertex lies on its own piece's
 // boundary, and only approximately when Mesh_3 meshed the surface).
+#include <Eigen/Geometry>
 #include <memory>
 #include <vector>
 
@@ -31,13 +32,16 @@ public:
   }
 
 private:
-  /// Distance from x to the union of the kept cell's piece tetrahedra.
-  double distance_to_piece(int cell, const Eigen::Vector3d& x) const;
+  /// Distance from x to the union of the kept cell's piece tetrahedra where it is below
+  /// `bound`, else some value ≥ bound: a tetrahedron whose box is that far is skipped (a
+  /// cell near a pencil's tip holds thousands, and every surface vertex asks).
+  double distance_to_piece(int cell, const Eigen::Vector3d& x, double bound) const;
 
   LagrangeBasisEvaluator whole_;
   const VolumeMesh& embedded_;
-  std::vector<std::vector<int>> piece_tetrahedra_;  ///< per kept cell (empty: its background cell is whole)
-  std::vector<std::vector<int>> siblings_;          ///< per kept cell of a split cell: the other kept pieces
+  std::vector<std::vector<int>> piece_tetrahedra_;             ///< per kept cell (empty: its background cell is whole)
+  std::vector<std::vector<Eigen::AlignedBox3d>> piece_boxes_;  ///< their bounding boxes
+  std::vector<std::vector<int>> siblings_;                     ///< per kept cell of a split cell: the other kept pieces
 };
 
 /// Distance from x to the closed tetrahedron (4 × 3 corners).
