@@ -79,9 +79,9 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
   const CellBlockPattern pattern(offsets_, couplings);
   pattern.make_zero_matrix(stiffness_);
-  const DgIntegralMemory* previous =
-      reuse.previous && reuse.previous->integrates_as(settings_, cell_materials_.materials) ? reuse.previous.get()
-                                                                                            : nullptr;
+  DgIntegralMemory* previous = reuse.previous && reuse.previous->integrates_as(settings_, cell_materials_.materials)
+                                   ? reuse.previous.get()
+                                   : nullptr;
   if (reuse.remember && settings_.reuse_similar_cells)
     memory_ = std::make_shared<DgIntegralMemory>(DgIntegralMemory{.settings = settings_,
                                                                   .materials = cell_materials_.materials,
@@ -93,8 +93,7 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   add_face_matrices(pattern, previous, previous_cell_classes);
 }
 
-std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern,
-                                                      const DgIntegralMemory* previous) {
+std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern, DgIntegralMemory* previous) {
   const int cell_count = static_cast<int>(cells_.size());
 
   // Classes of translates of the same material (deal.II's CellSimilarity::translation);
@@ -116,6 +115,7 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   std::vector<Eigen::VectorXd> class_integrals(class_count);
   std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
   if (memory_) memory_->cells.resize(class_count);
+  std::vector<char> taken(class_count, 0);
   // Stiffness, mass and ∫ φ_a once per class.
   integrals_.resize(offsets_.back());
   for_each_item_by_class(
@@ -123,8 +123,13 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
       [&](int c) {
         const int k = cell_classes_[c];
         DgCellIntegrals integrals;
-        if (previous_classes[k] >= 0) {
-          integrals = previous->cells[previous_classes[k]];
+        // Taken once: two classes here within the tolerance of one there (not of each
+        // other) leave the second to be integrated.
+        DgCellIntegrals* earlier = previous_classes[k] >= 0 ? &previous->cells[previous_classes[k]] : nullptr;
+        if (earlier && earlier->stiffness.size() > 0) {
+          integrals = std::move(*earlier);
+          *earlier = {};
+          taken[k] = 1;
         } else {
           const DgMaterial cell_material = material(c);
           ElementMatrices matrices = exact_element_matrices(cells_[c], bases_[c], cell_material.lambda,
@@ -154,13 +159,12 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
       });
   similarity_.cells = cell_count;
   similarity_.cell_classes = class_count;
-  similarity_.remembered_cell_classes =
-      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
+  similarity_.remembered_cell_classes = static_cast<int>(std::count(taken.begin(), taken.end(), 1));
   if (memory_) memory_->cell_classes = std::move(cell_similarity);
   return previous_classes;
 }
 
-void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous,
+void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegralMemory* previous,
                                        const std::vector<int>& previous_cell_classes) {
   // Face matrices once per class of faces between the same classes of cells at the same
   // relative position (their penalty η_f follows from the cells' classes and the face).
@@ -191,13 +195,16 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, const Dg
     face_classes[f] = assignment.index;
   }
   if (memory_) memory_->faces.resize(face_similarity.class_count());
+  std::vector<char> taken(face_similarity.class_count(), 0);
   for_each_item_by_class(
       face_classes, face_similarity.class_count(),
       [&](int f) {
         const int k = face_classes[f];
         Eigen::MatrixXd matrix;
-        if (previous_classes[k] >= 0) {
-          matrix = previous->faces[previous_classes[k]];
+        Eigen::MatrixXd* earlier = previous_classes[k] >= 0 ? &previous->faces[previous_classes[k]] : nullptr;
+        if (earlier && earlier->size() > 0) {
+          matrix.swap(*earlier);
+          taken[k] = 1;
         } else {
           const DgFace& face = faces_[f];
           const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
@@ -222,8 +229,7 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, const Dg
       });
   similarity_.faces = face_similarity.key_count();
   similarity_.face_classes = face_similarity.class_count();
-  similarity_.remembered_face_classes =
-      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
+  similarity_.remembered_face_classes = static_cast<int>(std::count(taken.begin(), taken.end(), 1));
   if (memory_) memory_->face_classes = std::move(face_similarity);
 }
 

@@ -100,8 +100,10 @@ struct SimilarityStatistics {
 /// What a system takes from the build an event replaces and what it keeps for the next
 /// (dg/dg_integral_memory.hpp). Both off: every class integrated, nothing kept.
 struct IntegralReuse {
-  std::shared_ptr<const DgIntegralMemory> previous;  ///< null: none; ignored unless it integrates_as this one
-  bool remember = false;                             ///< keep this build's matrices (integral_memory())
+  /// null: none; ignored unless it integrates_as this one. The matrices taken are moved out
+  /// of it (the build it came from is being replaced), so that they are not held twice.
+  std::shared_ptr<DgIntegralMemory> previous;
+  bool remember = false;  ///< keep this build's matrices (integral_memory())
 };
 
 /// Several materials (a piecewise-constant elasticity tensor): cell c takes
@@ -160,9 +162,9 @@ public:
   const MonomialBasis& basis(int cell) const { return bases_[cell]; }
   int dof_count() const { return 3 * offsets_.back(); }
   const SimilarityStatistics& similarity() const { return similarity_; }
-  /// This build's matrices by class, for the system an event rebuilds (null unless
-  /// IntegralReuse::remember).
-  std::shared_ptr<const DgIntegralMemory> integral_memory() const { return memory_; }
+  /// This build's matrices by class, for the system an event rebuilds, which moves what it
+  /// takes out of them (null unless IntegralReuse::remember).
+  std::shared_ptr<DgIntegralMemory> integral_memory() const { return memory_; }
 
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
@@ -190,8 +192,8 @@ private:
   // face blocks, each computed once per class of translates (dg/cell_similarity.hpp) or
   // taken from `previous` (may be null). add_element_matrices returns per cell class its
   // class in `previous` (-1: none), which the faces' keys there hold.
-  std::vector<int> add_element_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous);
-  void add_face_matrices(const CellBlockPattern& pattern, const DgIntegralMemory* previous,
+  std::vector<int> add_element_matrices(const CellBlockPattern& pattern, DgIntegralMemory* previous);
+  void add_face_matrices(const CellBlockPattern& pattern, DgIntegralMemory* previous,
                          const std::vector<int>& previous_cell_classes);
   // body(cell, x, w, φ(x)) at every point of a rule of `strength` on every cell.
   template <typename Body>

@@ -42,7 +42,7 @@ constexpr int max_doublings = 20;
 // matrices (dg/dg_integral_memory.hpp).
 struct DgMesh {
   PolyhedralSceneMesh mesh;
-  std::shared_ptr<const DgIntegralMemory> integrals;
+  std::shared_ptr<DgIntegralMemory> integrals;  ///< the rebuild moves what it takes out of them
   int doublings = 0;
 };
 

@@ -28,7 +28,7 @@ double largest_difference(const Eigen::SparseMatrix<double>& a, const Eigen::Spa
 // The DG system of `mesh` with every boundary face held weakly (so boundary faces have
 // terms too), reusing `previous`, remembering its own.
 DgLinearSystem system_of(const PolyhedralMesh& mesh, double penalty,
-                         std::shared_ptr<const DgIntegralMemory> previous = nullptr) {
+                         std::shared_ptr<DgIntegralMemory> previous = nullptr) {
   std::vector<DgFace> faces = mesh_faces(mesh);
   for (DgFace& face : faces)
     if (face.plus < 0) face.condition = 0;
