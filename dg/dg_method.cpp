@@ -232,13 +232,8 @@ public:
 private:
   // The mesh as built (for an event to change).
   PolyhedralSceneMesh polyhedral_mesh() const {
-    PolyhedralSceneMesh mesh{.sliced = {.mesh = mesh_},
-                             .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
-                             .load_surface = surface_.load_surface,
-                             .facts = mesh_facts_,
-                             .converted = std::nullopt,
-                             .node_sources = {},
-                             .cell_levels = cell_levels_};
+    PolyhedralSceneMesh mesh = handed_polyhedral_scene_mesh(mesh_, own_surface_ ? &surface_.surface : nullptr,
+                                                            surface_.load_surface, mesh_facts_, cell_levels_);
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return mesh;
   }

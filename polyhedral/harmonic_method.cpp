@@ -175,13 +175,8 @@ public:
 private:
   // The mesh as built (for an event to change).
   PolyhedralSceneMesh polyhedral_mesh() const {
-    return {.sliced = {.mesh = mesh_},
-            .surface = own_surface_ ? surface_.surface : SurfaceMesh{},
-            .load_surface = surface_.load_surface,
-            .facts = mesh_facts_,
-            .converted = std::nullopt,
-            .node_sources = {},
-            .cell_levels = cell_levels_};
+    return handed_polyhedral_scene_mesh(mesh_, own_surface_ ? &surface_.surface : nullptr, surface_.load_surface,
+                                        mesh_facts_, cell_levels_);
   }
   std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh) const {
     return std::make_shared<MeshOf<HarmonicMesh>>(HarmonicMesh{std::move(mesh), basis_memory_});

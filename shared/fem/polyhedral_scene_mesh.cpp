@@ -60,4 +60,16 @@ PolyhedralSceneMesh build_polyhedral_scene_mesh(const PolyhedralMeshSource& sour
   return result;
 }
 
+PolyhedralSceneMesh handed_polyhedral_scene_mesh(const PolyhedralMesh& mesh, const SurfaceMesh* own_surface,
+                                                 const SurfaceMesh& load_surface, const nlohmann::json& facts,
+                                                 const std::vector<int>& cell_levels) {
+  return {.sliced = {.mesh = mesh},
+          .surface = own_surface ? *own_surface : SurfaceMesh{},
+          .load_surface = load_surface,
+          .facts = facts,
+          .converted = std::nullopt,
+          .node_sources = {},
+          .cell_levels = cell_levels};
+}
+
 }  // namespace altfem

@@ -44,6 +44,14 @@ struct PolyhedralSceneMesh {
   std::vector<int> cell_levels;
 };
 
+/// What a polyhedral method was built on, as an event hands it on: `mesh`, the surface it
+/// deforms when that is its own (null: the geometry's common one), the load surface, the
+/// facts and the cells' levels; no converted mesh (the caller sets it where it keeps one)
+/// and no node sources.
+PolyhedralSceneMesh handed_polyhedral_scene_mesh(const PolyhedralMesh& mesh, const SurfaceMesh* own_surface,
+                                                 const SurfaceMesh& load_surface, const nlohmann::json& facts,
+                                                 const std::vector<int>& cell_levels);
+
 /// The boundary faces of a polyhedral mesh as outward triangles over the nodes they use
 /// (ear-clipped): the surface loads act on.
 SurfaceMesh boundary_faces_surface(const PolyhedralMesh& mesh);
