@@ -32,6 +32,17 @@ double surface_area(const Polyhedron& cell) {
   return area;
 }
 
+// A class of the build before that a new class matches (-1: none), unless an earlier new
+// class claimed it: its matrices are moved out once (two classes here within the
+// tolerance of one there, not of each other, leave the second to be integrated). The
+// callers pass -1 for a class already emptied (a rebuild from the same build before that
+// failed, or ran already).
+int claim(int earlier, std::vector<char>& claimed) {
+  if (earlier < 0 || claimed[earlier]) return -1;
+  claimed[earlier] = 1;
+  return earlier;
+}
+
 // Cells and faces whose translation-invariant geometry agrees to this fraction of the
 // cell's diameter share their matrices (dg/cell_similarity.hpp).
 constexpr double similarity_relative_tolerance = 1e-12;
@@ -101,13 +112,16 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   // its own, never taken from the build before (its combination is not in the key).
   SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
   std::vector<int> previous_classes;  // per class
+  std::vector<char> claimed_cells(previous ? previous->cells.size() : 0, 0);
   for (int c = 0; c < cell_count; ++c) {
     const int own = bases_[c].combination().size() == 0 ? -1 : c;
     SimilarityKey key = cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(), {material_id(c), own},
                                             similarity_relative_tolerance);
     const int earlier = previous && own < 0 ? previous->cell_classes.find(key) : -1;
     const SimilarityClasses::Assignment assignment = cell_similarity.classify(std::move(key));
-    if (assignment.created) previous_classes.push_back(earlier);
+    if (assignment.created)
+      previous_classes.push_back(
+          claim(earlier >= 0 && previous->cells[earlier].stiffness.size() > 0 ? earlier : -1, claimed_cells));
     cell_classes_.push_back(assignment.index);
   }
   const int class_count = cell_similarity.class_count();
@@ -115,7 +129,6 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   std::vector<Eigen::VectorXd> class_integrals(class_count);
   std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
   if (memory_) memory_->cells.resize(class_count);
-  std::vector<char> taken(class_count, 0);
   // Stiffness, mass and ∫ φ_a once per class.
   integrals_.resize(offsets_.back());
   for_each_item_by_class(
@@ -123,13 +136,8 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
       [&](int c) {
         const int k = cell_classes_[c];
         DgCellIntegrals integrals;
-        // Taken once: two classes here within the tolerance of one there (not of each
-        // other) leave the second to be integrated.
-        DgCellIntegrals* earlier = previous_classes[k] >= 0 ? &previous->cells[previous_classes[k]] : nullptr;
-        if (earlier && earlier->stiffness.size() > 0) {
-          integrals = std::move(*earlier);
-          *earlier = {};
-          taken[k] = 1;
+        if (previous_classes[k] >= 0) {
+          integrals = std::move(previous->cells[previous_classes[k]]);
         } else {
           const DgMaterial cell_material = material(c);
           ElementMatrices matrices = exact_element_matrices(cells_[c], bases_[c], cell_material.lambda,
@@ -159,7 +167,8 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
       });
   similarity_.cells = cell_count;
   similarity_.cell_classes = class_count;
-  similarity_.remembered_cell_classes = static_cast<int>(std::count(taken.begin(), taken.end(), 1));
+  similarity_.remembered_cell_classes =
+      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
   if (memory_) memory_->cell_classes = std::move(cell_similarity);
   return previous_classes;
 }
@@ -171,6 +180,7 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
   SimilarityClasses face_similarity(settings_.reuse_similar_cells);
   std::vector<int> face_classes(faces_.size(), -1);
   std::vector<int> previous_classes;  // per class, its class in `previous` (-1: none)
+  std::vector<char> claimed_faces(previous ? previous->faces.size() : 0, 0);
   for (size_t f = 0; f < faces_.size(); ++f) {
     const DgFace& face = faces_[f];
     if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
@@ -191,20 +201,19 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
       earlier = previous->face_classes.find(there);
     }
     const SimilarityClasses::Assignment assignment = face_similarity.classify(std::move(key));
-    if (assignment.created) previous_classes.push_back(earlier);
+    if (assignment.created)
+      previous_classes.push_back(
+          claim(earlier >= 0 && previous->faces[earlier].size() > 0 ? earlier : -1, claimed_faces));
     face_classes[f] = assignment.index;
   }
   if (memory_) memory_->faces.resize(face_similarity.class_count());
-  std::vector<char> taken(face_similarity.class_count(), 0);
   for_each_item_by_class(
       face_classes, face_similarity.class_count(),
       [&](int f) {
         const int k = face_classes[f];
         Eigen::MatrixXd matrix;
-        Eigen::MatrixXd* earlier = previous_classes[k] >= 0 ? &previous->faces[previous_classes[k]] : nullptr;
-        if (earlier && earlier->size() > 0) {
-          matrix.swap(*earlier);
-          taken[k] = 1;
+        if (previous_classes[k] >= 0) {
+          matrix.swap(previous->faces[previous_classes[k]]);
         } else {
           const DgFace& face = faces_[f];
           const MonomialBasis* plus = face.plus >= 0 ? &bases_[face.plus] : nullptr;
@@ -229,7 +238,8 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
       });
   similarity_.faces = face_similarity.key_count();
   similarity_.face_classes = face_similarity.class_count();
-  similarity_.remembered_face_classes = static_cast<int>(std::count(taken.begin(), taken.end(), 1));
+  similarity_.remembered_face_classes =
+      static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
   if (memory_) memory_->face_classes = std::move(face_similarity);
 }
 
