@@ -226,12 +226,18 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
   }
 }
 
+// The cantilever cut at x = 0.55 at 0.02 s, then at 0.04 s by the plane through `point`
+// normal to `normal` (JSON arrays).
+Scene cantilever_cut_twice(const std::string& point, const std::string& normal) {
+  return load_scene(scenes / "cantilever_cut.json",
+                    {parse_scene_override("events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], "
+                                          "\"normal\": [1, 0, 0]}}}, {\"time\": 0.04, \"cut\": {\"plane\": "
+                                          "{\"point\": " +
+                                          point + ", \"normal\": " + normal + "}}}]")});
+}
+
 TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
-  const Scene scene =
-      load_scene(scenes / "cantilever_cut.json",
-                 {parse_scene_override(
-                     "events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
-                     "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0, 0.05, 0], \"normal\": [0, 1, 0]}}}]")});
+  const Scene scene = cantilever_cut_twice("[0, 0.05, 0]", "[0, 1, 0]");
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
@@ -265,11 +271,7 @@ TEST_P(Cut, ASecondCutThroughTheFirstsBladeKeepsItsCopiesApart) {
 // Martin et al. 2008 §8): after the cut at x = 0.55, a second at x = 0.25 crosses one
 // slab of cells, and every other cell keeps what it was integrated or fitted with.
 TEST_P(Cut, ASecondCutElsewhereIntegratesOnlyTheCellsItCrosses) {
-  const Scene scene =
-      load_scene(scenes / "cantilever_cut.json",
-                 {parse_scene_override(
-                     "events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}},"
-                     "{\"time\": 0.04, \"cut\": {\"plane\": {\"point\": [0.25, 0, 0], \"normal\": [1, 0, 0]}}}]")});
+  const Scene scene = cantilever_cut_twice("[0.25, 0, 0]", "[1, 0, 0]");
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method(GetParam());
   Simulation simulation(scene, geometry, GetParam(), method.factory, method.rebuild);
