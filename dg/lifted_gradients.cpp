@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "shared/common/dense_decompositions.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {

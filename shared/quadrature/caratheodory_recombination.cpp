@@ -6,6 +6,8 @@
 #include <utility>
 #include <vector>
 
+#include "shared/common/dense_decompositions.hpp"
+
 namespace altfem {
 namespace {
 

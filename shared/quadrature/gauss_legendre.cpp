@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "shared/common/dense_decompositions.hpp"
+
 namespace altfem {
 namespace {
 

@@ -5,6 +5,8 @@
 #include <limits>
 #include <vector>
 
+#include "shared/common/dense_decompositions.hpp"
+
 namespace altfem {
 namespace {
 

@@ -1,3 +1,4 @@
+#include "shared/common/dense_decompositions.hpp"
 #include "shared/material/project_spd.hpp"
 
 #include <gtest/gtest.h>

@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "shared/common/dense_decompositions.hpp"
 #include "shared/solve/critical_time_step.hpp"
 
 namespace altfem {
