@@ -13,7 +13,7 @@
 #include "dg/dg_integral_memory.hpp"
 #include "dg/exact_element_matrices.hpp"
 #include "dg/strong_conditions.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {

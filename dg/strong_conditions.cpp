@@ -5,7 +5,7 @@
 #include <string>
 
 #include "dg/face_polynomials.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {

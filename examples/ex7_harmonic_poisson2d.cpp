@@ -41,7 +41,7 @@
 #include <vector>
 
 #include "polyhedral/face_harmonic_coordinates.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/quadrature/gauss_legendre.hpp"
 
 using namespace altfem;

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "fcm/box_cell_quadrature.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/cut_cells/fcm_discretization.hpp"
 #include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/material/material.hpp"

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 
 namespace altfem {
 namespace {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <vector>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 
 namespace altfem {
 namespace {

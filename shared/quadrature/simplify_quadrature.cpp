@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/quadrature/basic_feasible_point.hpp"
 #include "shared/quadrature/caratheodory_recombination.hpp"
 #include "shared/quadrature/chebyshev_moment_matrix.hpp"

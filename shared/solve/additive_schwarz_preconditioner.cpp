@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 
 namespace altfem {

@@ -7,7 +7,7 @@
 #include <atomic>
 #include <string>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 
 namespace altfem {

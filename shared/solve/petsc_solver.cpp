@@ -1,6 +1,6 @@
 #include "shared/solve/petsc_solver.hpp"
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/solve/process_ranks.hpp"
 

@@ -6,7 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "tests/unit/assembly/assembly_fixture.hpp"
 
 namespace altfem {

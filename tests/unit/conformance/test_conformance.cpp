@@ -23,7 +23,7 @@
 #include <fstream>
 
 #include "app/method_registry.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/material/material.hpp"
 #include "shared/scene/scene_geometry.hpp"

@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "dg/dg_method.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/solve/linear_solver.hpp"

@@ -7,7 +7,7 @@
 #include "dg/dg_linear_system.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 

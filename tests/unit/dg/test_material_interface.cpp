@@ -8,6 +8,7 @@
 
 #include <Eigen/SparseLU>
 
+#include "shared/common/eigen_decompositions.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
 
 namespace altfem::dg {

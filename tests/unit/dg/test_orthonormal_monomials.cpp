@@ -15,7 +15,7 @@
 #include <cstdio>
 
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 #include "shared/solve/conjugate_gradient.hpp"

@@ -9,7 +9,7 @@
 #include <numbers>
 
 #include "polyhedral/mfs_least_squares.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 
 namespace altfem::harmonic {
 namespace {

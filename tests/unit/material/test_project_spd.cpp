@@ -1,4 +1,4 @@
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/material/project_spd.hpp"
 
 #include <gtest/gtest.h>

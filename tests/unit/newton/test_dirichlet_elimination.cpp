@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <random>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/solve/dirichlet_elimination.hpp"
 
 namespace altfem {

@@ -10,7 +10,7 @@
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/jump_penalty_kernel.hpp"
 #include "shared/assembly/tabulated_discretization.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/solve/time_integrator.hpp"

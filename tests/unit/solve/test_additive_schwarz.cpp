@@ -7,7 +7,7 @@
 #include <Eigen/Eigenvalues>
 #include <random>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 

@@ -5,7 +5,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/solve/critical_time_step.hpp"
 
 namespace altfem {

@@ -5,7 +5,7 @@
 #include <random>
 #include <stdexcept>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/solve/explicit_mass.hpp"
 #include "tests/unit/random_vectors.hpp"
 

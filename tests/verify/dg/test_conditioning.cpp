@@ -23,7 +23,7 @@
 
 #include "dg/dg_linear_system.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/material/material.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"

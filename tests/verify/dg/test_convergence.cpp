@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "shared/common/eigen_decompositions.hpp"
 #include "tests/unit/dg/hex_grid_cells.hpp"
 
 namespace altfem::dg {

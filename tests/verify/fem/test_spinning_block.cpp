@@ -6,7 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <chrono>
 
-#include "shared/common/dense_decompositions.hpp"
+#include "shared/common/eigen_decompositions.hpp"
 #include "shared/fem/lagrange_discretization.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/solve/time_integrator.hpp"
