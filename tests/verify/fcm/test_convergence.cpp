@@ -238,22 +238,20 @@ protected:
 
   // The face ghost penalty in place of the stabilisation (γ = 0.01, the conditioning
   // command's default) is consistent: it vanishes on polynomials of the cell's degree, so
-  // the rates stay optimal.
-  static void expect_ghost_penalty_keeps_the_rate(const std::string& cell, const std::vector<int>& sizes, double rate) {
+  // the rates stay optimal. Its weak inconsistency for smooth non-polynomial fields costs
+  // accuracy on Hex20 (measured at h = 1/4: 1.45× the stabilised run's error at γ = 0.01,
+  // 6× at γ = 0.1, none at 0.001; Hex8 unchanged): the bound 2× on the finest grid guards
+  // that trade. `stabilised` is the stabilised run on the finest of `sizes`.
+  static void expect_ghost_penalty_keeps_the_rate_within_twice_the_error(const std::string& cell,
+                                                                         const std::vector<int>& sizes, double rate,
+                                                                         const Row& stabilised) {
     std::vector<Row> rows;
     for (int n : sizes) rows.push_back(fcm_row(cell, n, 0.01));
     print((cell + " FCM, ghost penalty 0.01, no stabilisation").c_str(), rows);
     EXPECT_GE(last_rate(rows), rate);
-  }
-
-  // Its weak inconsistency for smooth non-polynomial fields costs accuracy on Hex20
-  // (measured at h = 1/4: 1.45× the stabilised run's error at γ = 0.01, 6× at γ = 0.1, none
-  // at 0.001; Hex8 unchanged): the bound 2× on the finest grid guards that trade.
-  static void expect_ghost_penalty_error_within_twice_the_stabilised(const std::string& cell, int n) {
-    const Row ghost = fcm_row(cell, n, 0.01), plain = fcm_row(cell, n);
     std::printf("%s FCM at h = %.4f: L2 error %.4e with the ghost penalty 0.01, %.4e with stabilisation 1e-6\n",
-                cell.c_str(), ghost.h, ghost.error, plain.error);
-    EXPECT_LT(ghost.error, 2 * plain.error);
+                cell.c_str(), rows.back().h, rows.back().error, stabilised.error);
+    EXPECT_LT(rows.back().error, 2 * stabilised.error);
   }
 
   static Scene* scene_;
@@ -299,23 +297,20 @@ TEST_F(ClampedHalfBall, VoxelFemStallsNearRateOne) {
   EXPECT_GT(rows[2].error, 1.5 * fcm_row("hex8", 16).error);  // h = 1/8
 }
 
-TEST_F(FreeBall, Hex8FcmConvergesAtRateTwo) { EXPECT_GE(last_rate(fcm_study("hex8", {4, 8, 16}, "Hex8 FCM")), 1.8); }
+// Each process computes the reference again (ctest runs every test on its own), so the
+// Hex8 claims share one test; the Hex20 runs are split in two, each under 20 s.
+TEST_F(FreeBall, Hex8FcmConvergesAtRateTwoStabilisedOrWithTheGhostPenalty) {
+  const std::vector<Row> stabilised = fcm_study("hex8", {4, 8, 16}, "Hex8 FCM");
+  EXPECT_GE(last_rate(stabilised), 1.8);
+  expect_ghost_penalty_keeps_the_rate_within_twice_the_error("hex8", {4, 8, 16}, 1.8, stabilised.back());
+}
 
 TEST_F(FreeBall, Hex20FcmConvergesAtRateThree) {
   EXPECT_GE(last_rate(fcm_study("hex20", {2, 4, 8}, "Hex20 FCM")), 2.6);
 }
 
-// One test per cell and claim: together the Hex20 runs took over 30 s.
-TEST_F(FreeBall, GhostPenaltyKeepsTheHex8Rate) { expect_ghost_penalty_keeps_the_rate("hex8", {4, 8, 16}, 1.8); }
-
-TEST_F(FreeBall, GhostPenaltyKeepsTheHex20Rate) { expect_ghost_penalty_keeps_the_rate("hex20", {2, 4, 8}, 2.6); }
-
-TEST_F(FreeBall, GhostPenaltyHex8ErrorWithinTwiceTheStabilised) {
-  expect_ghost_penalty_error_within_twice_the_stabilised("hex8", 16);
-}
-
-TEST_F(FreeBall, GhostPenaltyHex20ErrorWithinTwiceTheStabilised) {
-  expect_ghost_penalty_error_within_twice_the_stabilised("hex20", 8);
+TEST_F(FreeBall, GhostPenaltyKeepsTheHex20RateWithinTwiceTheStabilisedError) {
+  expect_ghost_penalty_keeps_the_rate_within_twice_the_error("hex20", {2, 4, 8}, 2.6, fcm_row("hex20", 8));
 }
 
 // The staircase boundary moves by O(h) with every refinement: the error falls
