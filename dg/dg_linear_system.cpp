@@ -33,14 +33,13 @@ double surface_area(const Polyhedron& cell) {
   return area;
 }
 
-// A class of the build before that a new class matches (-1: none), unless an earlier new
-// class claimed it: its matrices are moved out once (two classes here within the
-// tolerance of one there, not of each other, leave the second to be integrated). The
-// callers pass -1 for a class already emptied (a rebuild from the same build before that
-// failed, or ran already).
-int claim(int earlier, std::vector<char>& claimed) {
-  if (earlier < 0 || claimed[earlier]) return -1;
-  claimed[earlier] = 1;
+// A class of the build before that a new class matches (-1: none), unless it is gone:
+// `gone` holds the classes an earlier new class claimed (their matrices are moved out
+// once; two classes here within the tolerance of one there, not of each other, leave the
+// second to be integrated) and those that an earlier rebuild from the same build emptied.
+int claim(int earlier, std::vector<char>& gone) {
+  if (earlier < 0 || gone[earlier]) return -1;
+  gone[earlier] = 1;
   return earlier;
 }
 
@@ -113,16 +112,16 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   // its own, never taken from the build before (its combination is not in the key).
   SimilarityClasses cell_similarity(settings_.reuse_similar_cells);
   std::vector<int> previous_classes;  // per class
-  std::vector<char> claimed_cells(previous ? previous->cells.size() : 0, 0);
+  std::vector<char> gone_cells;
+  if (previous)
+    for (const DgCellIntegrals& integrals : previous->cells) gone_cells.push_back(integrals.stiffness.size() == 0);
   for (int c = 0; c < cell_count; ++c) {
     const int own = bases_[c].combination().size() == 0 ? -1 : c;
     SimilarityKey key = cell_similarity_key(cells_[c], bases_[c].centre(), bases_[c].scale(), {material_id(c), own},
                                             similarity_relative_tolerance);
     const int earlier = previous && own < 0 ? previous->cell_classes.find(key) : -1;
     const SimilarityClasses::Assignment assignment = cell_similarity.classify(std::move(key));
-    if (assignment.created)
-      previous_classes.push_back(
-          claim(earlier >= 0 && previous->cells[earlier].stiffness.size() > 0 ? earlier : -1, claimed_cells));
+    if (assignment.created) previous_classes.push_back(claim(earlier, gone_cells));
     cell_classes_.push_back(assignment.index);
   }
   const int class_count = cell_similarity.class_count();
@@ -181,7 +180,9 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
   SimilarityClasses face_similarity(settings_.reuse_similar_cells);
   std::vector<int> face_classes(faces_.size(), -1);
   std::vector<int> previous_classes;  // per class, its class in `previous` (-1: none)
-  std::vector<char> claimed_faces(previous ? previous->faces.size() : 0, 0);
+  std::vector<char> gone_faces;
+  if (previous)
+    for (const Eigen::MatrixXd& matrix : previous->faces) gone_faces.push_back(matrix.size() == 0);
   for (size_t f = 0; f < faces_.size(); ++f) {
     const DgFace& face = faces_[f];
     if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;  // free, or held strongly: no face term
@@ -202,9 +203,7 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
       earlier = previous->face_classes.find(there);
     }
     const SimilarityClasses::Assignment assignment = face_similarity.classify(std::move(key));
-    if (assignment.created)
-      previous_classes.push_back(
-          claim(earlier >= 0 && previous->faces[earlier].size() > 0 ? earlier : -1, claimed_faces));
+    if (assignment.created) previous_classes.push_back(claim(earlier, gone_faces));
     face_classes[f] = assignment.index;
   }
   if (memory_) memory_->faces.resize(face_similarity.class_count());
