@@ -1,9 +1,7 @@
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/clip.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/Geometry>
@@ -15,6 +13,7 @@
 #include <optional>
 #include <set>
 
+#include "shared/mesh/cut_curve_cleanup.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
 
@@ -22,9 +21,9 @@ namespace altfem {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
+using Kernel = cut_curve::Kernel;
+using Point = cut_curve::Point;
+using Mesh = cut_curve::Mesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
@@ -158,6 +157,7 @@ void cut_piece_by_plane(const Mesh& piece, const CuttingPlane& blade, double edg
     const auto input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first;
     // New points (input −1) and the input's on the plane: the cut curve and the cap.
     const auto on_plane = [&](Mesh::Vertex_index v) { return input_of[v] < 0 || plane.has_on(half.point(v)); };
+    cut_curve::clean(half, on_plane, 1e-9 * edge_length, 4.0 / 3 * edge_length);
     remesh_cap(
         half,
         [&](Mesh::Face_index f) {

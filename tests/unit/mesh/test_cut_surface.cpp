@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <map>
 
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
+#include "shared/scene/scene.hpp"
+#include "shared/scene/scene_geometry.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem {
@@ -234,6 +237,38 @@ TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
   const SurfaceCut trusted = cut_surface(sound, middle);
   EXPECT_EQ(trusted.facts["pieces_left_whole"], 1);
   EXPECT_EQ(trusted.surface.triangles, sound.triangles);
+}
+
+TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {
+  // scenes/pencil.json (Kaufmann et al. 2009 §9.4, Fig. 10): 50 planes through points near
+  // the tip, each turned about the axis from the last. Their points pile up near the tip:
+  // before the cut curve was cleaned, the 14th cut found the pencil intersecting itself and
+  // left it whole, and the caps' triangles grew by a third per cut. Each cut must open
+  // the pencil (a piece it cannot cut is counted in pieces_left_whole), every piece stay
+  // closed, the volume stay the block's, and the pencil keep about its initial size.
+  const Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes" / "pencil.json");
+  SurfaceMesh surface = *load_scene_geometry(scene).common_surface();
+  const Eigen::Index initial_triangles = surface.triangles.rows();
+  int cuts = 0;
+  for (const SceneEvent& event : scene.events) {
+    if (event.kind != EventKind::cut) continue;
+    const SurfaceCut cut = cut_surface(surface, event.blade);
+    ASSERT_EQ(cut.facts["pieces_left_whole"], 0) << "cut " << cuts;
+    ASSERT_GT(cut.facts["cap_triangles"].get<int>(), 0) << "cut " << cuts;
+    surface = cut.surface;
+    ++cuts;
+  }
+  ASSERT_EQ(cuts, 50);
+  // The block and its 50 chips.
+  EXPECT_NEAR(volume_of_closed_pieces(surface, 51), 0.1 * 0.1 * 1.0, 1e-14);
+  const std::vector<int> piece_of = surface_vertex_pieces(surface);
+  Eigen::Index held = 0;  // the vertex nearest the centre of the held base
+  (surface.vertices.rowwise() - Eigen::RowVector3d(0.05, 0.05, 0)).rowwise().squaredNorm().minCoeff(&held);
+  const int pencil = piece_of[held];
+  const auto pencil_triangles = std::count_if(surface.triangles.col(0).begin(), surface.triangles.col(0).end(),
+                                              [&](int vertex) { return piece_of[vertex] == pencil; });
+  EXPECT_GT(pencil_triangles, initial_triangles / 2);
+  EXPECT_LT(pencil_triangles, 2 * initial_triangles);
 }
 
 }  // namespace

@@ -1,0 +1,122 @@
+#include "shared/mesh/cut_curve_cleanup.hpp"
+
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <Eigen/Geometry>
+#include <optional>
+#include <vector>
+
+namespace altfem::cut_curve {
+
+namespace {
+
+Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// Collapses `edge` keeping the place and "v:input" of `kept_end`, one of its ends.
+void collapse_onto(Mesh& mesh, Mesh::Edge_index edge, Mesh::Vertex_index kept_end) {
+  auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
+  const Point place = mesh.point(kept_end);
+  const int input = input_of[kept_end];
+  const Mesh::Vertex_index kept = CGAL::Euler::collapse_edge(edge, mesh);
+  mesh.point(kept) = place;
+  input_of[kept] = input;
+}
+
+// Where a plane passes within rounding of an existing vertex, the points it adds there lie
+// a few 1e-13 from it. The pencil's cuts all pass near its tip, so such clusters piled up,
+// and the slivers between them, rounded, crossed one another: from the 14th cut on the
+// piece intersected itself and was left uncut.
+void collapse_short_edges(Mesh& mesh, double shortest) {
+  const auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
+  const auto too_short = [&](Mesh::Edge_index e) {
+    const Mesh::Halfedge_index h = mesh.halfedge(e);
+    return CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))) < shortest * shortest;
+  };
+  std::vector<Mesh::Edge_index> candidates;
+  for (const Mesh::Edge_index e : mesh.edges()) {
+    const Mesh::Halfedge_index h = mesh.halfedge(e);
+    if ((input_of[mesh.source(h)] < 0 || input_of[mesh.target(h)] < 0) && too_short(e)) candidates.push_back(e);
+  }
+  for (const Mesh::Edge_index e : candidates) {
+    if (mesh.is_removed(e) || !too_short(e) || !CGAL::Euler::does_satisfy_link_condition(e, mesh)) continue;
+    const Mesh::Halfedge_index h = mesh.halfedge(e);
+    collapse_onto(mesh, e, input_of[mesh.source(h)] >= 0 ? mesh.source(h) : mesh.target(h));
+  }
+}
+
+// The normal of face f (not unit), with `moved` placed at `place`.
+Eigen::Vector3d face_normal(const Mesh& mesh, Mesh::Face_index f, Mesh::Vertex_index moved, const Point& place) {
+  Eigen::Vector3d corners[3];
+  int k = 0;
+  for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+    corners[k++] = vector_of(v == moved ? place : mesh.point(v));
+  return (corners[1] - corners[0]).cross(corners[2] - corners[0]);
+}
+
+// Why the curve's points multiplied: each cut crosses the caps of the earlier ones near the
+// pencil's tip, every edge of their triangulation adding a point, and a cap's remeshing
+// keeps its border, so a dense curve made a dense cap for the next cut to cross: the cap
+// triangles grew by a third per cut. Points inside a flat region carry no shape.
+bool collapse_flat_curve_point(Mesh& mesh, Mesh::Vertex_index v,
+                               const std::function<bool(Mesh::Vertex_index)>& on_plane, double longest) {
+  const auto is_cap = [&](Mesh::Face_index f) {
+    for (const Mesh::Vertex_index corner : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      if (!on_plane(corner)) return false;
+    return true;
+  };
+  std::vector<Mesh::Halfedge_index> along_curve;  // from v to its neighbours on the curve
+  std::optional<Eigen::Vector3d> flat;            // the unit normal of the faces off the cap
+  for (const Mesh::Halfedge_index in : CGAL::halfedges_around_target(mesh.halfedge(v), mesh)) {
+    const Mesh::Halfedge_index out = mesh.opposite(in);
+    if (mesh.is_border(in) || mesh.is_border(out)) return false;
+    const bool cap_before = is_cap(mesh.face(in)), cap_after = is_cap(mesh.face(out));
+    if (cap_before != cap_after) along_curve.push_back(out);
+    if (cap_before) continue;
+    const Eigen::Vector3d normal = face_normal(mesh, mesh.face(in), v, mesh.point(v));
+    if (normal.norm() == 0) return false;
+    if (!flat) flat = normal.normalized();
+    // Faces of one plane: their normals agree to rounding (an earlier cap's corners are
+    // rounded constructions on its plane).
+    else if (flat->cross(normal.normalized()).norm() > 1e-8 || flat->dot(normal) < 0) return false;
+  }
+  if (along_curve.size() != 2 || !flat) return false;
+  for (const Mesh::Halfedge_index toward : along_curve) {
+    const Mesh::Edge_index edge = mesh.edge(toward);
+    if (!CGAL::Euler::does_satisfy_link_condition(edge, mesh)) continue;
+    const Mesh::Vertex_index neighbour = mesh.target(toward);
+    bool turns_over = false;
+    for (const Mesh::Vertex_index other : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+      turns_over = turns_over || CGAL::squared_distance(mesh.point(other), mesh.point(neighbour)) > longest * longest;
+    for (const Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
+      if (f == mesh.face(toward) || f == mesh.face(mesh.opposite(toward))) continue;
+      const Eigen::Vector3d before = face_normal(mesh, f, v, mesh.point(v));
+      const Eigen::Vector3d after = face_normal(mesh, f, v, mesh.point(neighbour));
+      // Nor becomes a sliver: three points of the curve, which rounding leaves a hair off
+      // one line, would make a face that crosses its neighbours.
+      turns_over = turns_over || after.dot(before) <= 0 || after.norm() <= 1e-6 * longest * longest;
+    }
+    if (turns_over) continue;
+    collapse_onto(mesh, edge, neighbour);
+    return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double shortest, double longest) {
+  collapse_short_edges(mesh, shortest);
+  const auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
+  for (bool collapsed = true; collapsed;) {
+    collapsed = false;
+    std::vector<Mesh::Vertex_index> points;
+    for (const Mesh::Vertex_index v : mesh.vertices())
+      if (input_of[v] < 0) points.push_back(v);
+    for (const Mesh::Vertex_index v : points)
+      if (!mesh.is_removed(v)) collapsed = collapse_flat_curve_point(mesh, v, on_plane, longest) || collapsed;
+  }
+  mesh.collect_garbage();
+}
+
+}  // namespace altfem::cut_curve

@@ -1,0 +1,28 @@
+#pragma once
+// The cut curve a plane leaves on a closed surface, cleaned before its cap is remeshed
+// (cut_surface, issue #33). Only cut_surface's CGAL files include it.
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <functional>
+
+namespace altfem::cut_curve {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Point = Kernel::Point_3;
+/// Each vertex carries "v:input": its index in the surface before the cut, −1 for a point
+/// the cut added.
+using Mesh = CGAL::Surface_mesh<Point>;
+
+/// Two clean-ups of the points a plane cut added to `mesh` (one side, clipped and capped),
+/// `on_plane` telling the cut's points (and the input's on the plane) from the rest:
+/// - edges shorter than `shortest` with a new end collapse onto their other end, which
+///   keeps its place and its "v:input";
+/// - a new point of the curve whose faces off the cap all lie in one plane (it crosses an
+///   edge inside a flat region, e.g. an earlier cap) collapses onto a neighbour on the
+///   curve, where no face around it turns over and no edge grows longer than `longest`:
+///   the region keeps its shape and the curve only the points where it bends, or which
+///   keep the edges short.
+void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double shortest, double longest);
+
+}  // namespace altfem::cut_curve
