@@ -189,9 +189,10 @@ public:
   }
   std::string refine_refusal(const RefineSpec& /*refine*/) const override { return event_refusal("refinement"); }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
+                                                const PrescribedTraction& boundary,
                                                 nlohmann::json& facts) const override {
     std::optional<PolyhedralSceneMesh> refined = refine_polyhedral_scene_mesh_by_stress(
-        polyhedral_mesh(), refine, *field_quadrature(0)->elements, materials_, u, facts);
+        polyhedral_mesh(), refine, *field_quadrature(0)->elements, materials_, u, boundary, facts);
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<DgMesh>>(handed_mesh(std::move(*refined)));
   }

@@ -141,11 +141,13 @@ public:
   /// (refine_hexahedral_grid); the embedded tetrahedra stay as they are, and only the
   /// refined cells get new rules.
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& displacement,
+                                                const PrescribedTraction& /*boundary*/,
                                                 nlohmann::json& facts) const override {
     const std::vector<Eigen::Matrix3d> stresses =
         leaf_stresses(*forest_, cells_->background_cell_of_kept(),
                       mean_cell_stresses(kept_cells().discretization->elements(), materials_.pointers(), displacement));
-    std::optional<RefinedGrid> refined = refine_hexahedral_grid(*forest_, refine.refine, stresses, facts);
+    // The body's boundary crosses the cut cells, not the grid's box: no boundary residual.
+    std::optional<RefinedGrid> refined = refine_hexahedral_grid(*forest_, refine.refine, stresses, nullptr, facts);
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{std::move(refined->mesh.mesh),
                                                      resolution_,

@@ -11,12 +11,41 @@ std::string grid_refine_refusal(const RefineSpec& refine, bool scene_cuts) {
   return "";
 }
 
+namespace {
+
+// The leaves' faces on the grid's box that `boundary` does not hold, with its tractions.
+std::vector<LoadedBoundaryFace> loaded_box_faces(const HexahedralForest& forest, const PrescribedTraction& boundary) {
+  std::vector<LoadedBoundaryFace> faces;
+  const Eigen::Vector3i top = forest.resolution * forest_units_per_cell;
+  for (int leaf = 0; leaf < forest.leaf_count(); ++leaf) {
+    const Eigen::Vector3i low = forest.origins[leaf];
+    const Eigen::Vector3i high = low + Eigen::Vector3i::Constant(HexahedralForest::edge_units(forest.levels[leaf]));
+    const Eigen::Vector3d from = forest.position(low), to = forest.position(high);
+    for (int axis = 0; axis < 3; ++axis)
+      for (const int side : {-1, +1}) {
+        if (side < 0 ? low[axis] != 0 : high[axis] != top[axis]) continue;
+        Eigen::Vector3d centre = 0.5 * (from + to);
+        centre[axis] = side < 0 ? from[axis] : to[axis];
+        const Eigen::Vector3d normal = side * Eigen::Vector3d::Unit(axis);
+        const Eigen::Vector3d extent = to - from;
+        if (const auto traction = boundary.at(centre, normal))
+          faces.push_back({leaf, extent.prod() / extent[axis], normal, *traction});
+      }
+  }
+  return faces;
+}
+
+}  // namespace
+
 std::optional<RefinedGrid> refine_hexahedral_grid(const HexahedralForest& forest, const RefineSpec& refine,
-                                                  const std::vector<Eigen::Matrix3d>& stresses, nlohmann::json& facts) {
-  std::vector<SharedFace> faces;
-  if (refine.criterion == RefineCriterion::error_indicator)
+                                                  const std::vector<Eigen::Matrix3d>& stresses,
+                                                  const PrescribedTraction* boundary, nlohmann::json& facts) {
+  IndicatorFaces faces;
+  if (refine.criterion == RefineCriterion::error_indicator) {
     for (const ForestFace& face : forest_interior_faces(forest))
-      faces.push_back({face.first, face.second, face.area, Eigen::Vector3d::Unit(face.axis)});
+      faces.interior.push_back({face.first, face.second, face.area, Eigen::Vector3d::Unit(face.axis)});
+    if (boundary) faces.boundary = loaded_box_faces(forest, *boundary);
+  }
   Eigen::MatrixXd centroids(forest.leaf_count(), 3);
   Eigen::VectorXd volumes(forest.leaf_count());
   for (int leaf = 0; leaf < forest.leaf_count(); ++leaf) {

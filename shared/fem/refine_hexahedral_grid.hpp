@@ -11,6 +11,7 @@
 
 #include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/scene/scene.hpp"
+#include "shared/simulation/prescribed_traction.hpp"
 
 namespace altfem {
 
@@ -24,10 +25,14 @@ struct RefinedGrid {
 std::string grid_refine_refusal(const RefineSpec& refine, bool scene_cuts);
 
 /// `forest` with the leaves `refine` marks (mark_cells_to_refine: stresses one per leaf, the
-/// error indicator over forest_interior_faces) split 1→8 and balanced; nullopt when none is
-/// marked. `facts` gets marked_cells, at_max_level, largest_stress (and largest_indicator),
-/// balancing_splits, hanging_nodes and cells (after).
+/// error indicator over forest_interior_faces and, with `boundary`, the leaves' faces on
+/// the grid's box with its tractions) split 1→8 and balanced; nullopt when none is marked.
+/// `boundary` is for a grid whose box is the body (fem); null where the body lies inside
+/// the grid (fcm), whose boundary crosses the cut cells and is left out. `facts` gets
+/// marked_cells, at_max_level, largest_stress (and largest_indicator), balancing_splits,
+/// hanging_nodes and cells (after).
 std::optional<RefinedGrid> refine_hexahedral_grid(const HexahedralForest& forest, const RefineSpec& refine,
-                                                  const std::vector<Eigen::Matrix3d>& stresses, nlohmann::json& facts);
+                                                  const std::vector<Eigen::Matrix3d>& stresses,
+                                                  const PrescribedTraction* boundary, nlohmann::json& facts);
 
 }  // namespace altfem

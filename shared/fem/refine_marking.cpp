@@ -11,17 +11,21 @@ namespace altfem {
 
 namespace {
 
-// Per cell, Σ_F |F| |(σ_K − σ_N) n_F|² and Σ_F |F| over its interior faces.
-std::pair<Eigen::VectorXd, Eigen::VectorXd> traction_jumps(int cell_count, std::span<const SharedFace> faces,
+// Per cell, Σ_F |F| |r_F|² and Σ_F |F| over its interior and loaded boundary faces.
+std::pair<Eigen::VectorXd, Eigen::VectorXd> traction_jumps(int cell_count, const IndicatorFaces& faces,
                                                            const std::vector<Eigen::Matrix3d>& stresses) {
   Eigen::VectorXd squared_jumps = Eigen::VectorXd::Zero(cell_count);
   Eigen::VectorXd areas = Eigen::VectorXd::Zero(cell_count);
-  for (const SharedFace& face : faces) {
+  for (const SharedFace& face : faces.interior) {
     const double weighted = face.area * ((stresses[face.first] - stresses[face.second]) * face.normal).squaredNorm();
     for (const int cell : {face.first, face.second}) {
       squared_jumps[cell] += weighted;
       areas[cell] += face.area;
     }
+  }
+  for (const LoadedBoundaryFace& face : faces.boundary) {
+    squared_jumps[face.cell] += face.area * (stresses[face.cell] * face.normal - face.traction).squaredNorm();
+    areas[face.cell] += face.area;
   }
   return {squared_jumps, areas};
 }
@@ -44,7 +48,7 @@ std::vector<char> bulk_marks(const Eigen::VectorXd& estimates, std::vector<int> 
 
 }  // namespace
 
-Eigen::VectorXd traction_jump_indicator(int cell_count, std::span<const SharedFace> faces,
+Eigen::VectorXd traction_jump_indicator(int cell_count, const IndicatorFaces& faces,
                                         const std::vector<Eigen::Matrix3d>& stresses) {
   const auto [squared_jumps, areas] = traction_jumps(cell_count, faces, stresses);
   Eigen::VectorXd indicator = Eigen::VectorXd::Zero(cell_count);
@@ -54,7 +58,7 @@ Eigen::VectorXd traction_jump_indicator(int cell_count, std::span<const SharedFa
 }
 
 RefineMarks mark_cells_to_refine(const RefineSpec& refine, const std::vector<Eigen::Matrix3d>& stresses,
-                                 std::span<const SharedFace> faces, const Eigen::MatrixXd& centroids,
+                                 const IndicatorFaces& faces, const Eigen::MatrixXd& centroids,
                                  const Eigen::VectorXd& volumes, const std::vector<int>& levels, double tolerance,
                                  nlohmann::json& facts) {
   const int cell_count = static_cast<int>(stresses.size());

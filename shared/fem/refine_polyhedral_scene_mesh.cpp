@@ -29,18 +29,23 @@ Eigen::Vector3d split_centre(const PolyhedralMesh& mesh, int cell, const std::ve
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
                                                                 const RefineSpec& refine,
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
+                                                                const PrescribedTraction& boundary,
                                                                 nlohmann::json& facts) {
   const PolyhedralMesh& cells = mesh.sliced.mesh;
   if (static_cast<int>(stresses.size()) != cells.cell_count())
     throw std::invalid_argument("refine_polyhedral_scene_mesh: one stress per cell");
   const double tolerance = region_tolerance(
       Eigen::AlignedBox3d(cells.nodes.colwise().minCoeff().transpose(), cells.nodes.colwise().maxCoeff().transpose()));
-  std::vector<SharedFace> faces;
+  IndicatorFaces faces;
   if (refine.criterion == RefineCriterion::error_indicator)
-    for (int face = 0; face < cells.face_count(); ++face)
+    for (int face = 0; face < cells.face_count(); ++face) {
+      const Eigen::Vector3d normal = cells.face_normals.row(face).transpose();  // out of face_cells(face, 0)
       if (!cells.is_boundary_face(face))
-        faces.push_back({cells.face_cells(face, 0), cells.face_cells(face, 1), cells.face_areas[face],
-                         cells.face_normals.row(face).transpose()});
+        faces.interior.push_back(
+            {cells.face_cells(face, 0), cells.face_cells(face, 1), cells.face_areas[face], normal});
+      else if (const auto traction = boundary.at(cells.face_centroids.row(face).transpose(), normal))
+        faces.boundary.push_back({cells.face_cells(face, 0), cells.face_areas[face], normal, *traction});
+    }
   const RefineMarks marks = mark_cells_to_refine(refine, stresses, faces, cells.cell_centroids, cells.cell_volumes,
                                                  mesh.cell_levels, tolerance, facts);
   std::vector<CellSplit> splits;
@@ -86,9 +91,10 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
 
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh_by_stress(
     const PolyhedralSceneMesh& mesh, const SceneEvent& refine, const TabulatedElements& elements,
-    const SceneMaterials& materials, const Eigen::VectorXd& u, nlohmann::json& facts) {
+    const SceneMaterials& materials, const Eigen::VectorXd& u, const PrescribedTraction& boundary,
+    nlohmann::json& facts) {
   return refine_polyhedral_scene_mesh(mesh, refine.refine, mean_cell_stresses(elements, materials.pointers(), u),
-                                      facts);
+                                      boundary, facts);
 }
 
 }  // namespace altfem

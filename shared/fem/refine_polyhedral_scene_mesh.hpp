@@ -13,13 +13,15 @@
 #include "shared/assembly/tabulated_elements.hpp"
 #include "shared/fem/polyhedral_scene_mesh.hpp"
 #include "shared/scene/scene.hpp"
+#include "shared/simulation/prescribed_traction.hpp"
 #include "shared/simulation/scene_materials.hpp"
 
 namespace altfem {
 
 /// `mesh` with the cells `refine` marks split: a cell whose stress (stresses, one per cell)
 /// has a largest absolute principal value above the threshold (or, by the criterion
-/// error_indicator, a traction_jump_indicator above it), split fewer than max_level
+/// error_indicator, a traction_jump_indicator above it, its boundary faces' tractions
+/// from `boundary`), split fewer than max_level
 /// times, its centroid in the region and convex (a merged piece is not split). 1→8 splits
 /// by the three coordinate planes through the centroid — through the bounding box's centre
 /// where the two agree to round-off, so that neighbouring boxes share their mid-planes bit
@@ -30,6 +32,7 @@ namespace altfem {
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh,
                                                                 const RefineSpec& refine,
                                                                 const std::vector<Eigen::Matrix3d>& stresses,
+                                                                const PrescribedTraction& boundary,
                                                                 nlohmann::json& facts);
 
 /// A polyhedral method's refinement (MethodInstance::refine_mesh): `mesh` refined as
@@ -37,6 +40,7 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
 /// element per cell, each with its material id into materials.pointers()).
 std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh_by_stress(
     const PolyhedralSceneMesh& mesh, const SceneEvent& refine, const TabulatedElements& elements,
-    const SceneMaterials& materials, const Eigen::VectorXd& u, nlohmann::json& facts);
+    const SceneMaterials& materials, const Eigen::VectorXd& u, const PrescribedTraction& boundary,
+    nlohmann::json& facts);
 
 }  // namespace altfem

@@ -20,6 +20,7 @@
 #include "shared/simulation/field_quadrature.hpp"
 #include "shared/simulation/mesh_preview.hpp"
 #include "shared/simulation/method_mesh.hpp"
+#include "shared/simulation/prescribed_traction.hpp"
 #include "shared/simulation/surface_lift.hpp"
 #include "shared/solve/discretization.hpp"
 
@@ -80,10 +81,12 @@ public:
     return "it does not refine yet (dg, harmonic, and fem and fcm on hexahedral grids do)";
   }
   /// mesh() with the cells the `refine` event marks, for the displacement u (#dofs), split
-  /// (docs/architecture.md, "Events"), for the rebuild; null when it marks none. `facts`
-  /// receives what it did (counts). Only where refine_refusal() is empty.
+  /// (docs/architecture.md, "Events"), for the rebuild; null when it marks none. The error
+  /// indicator's boundary residuals take their tractions from `boundary`. `facts` receives
+  /// what it did (counts). Only where refine_refusal() is empty.
   virtual std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& /*refine*/,
                                                         const Eigen::VectorXd& /*displacement*/,
+                                                        const PrescribedTraction& /*boundary*/,
                                                         nlohmann::json& /*facts*/) const {
     throw std::logic_error("this method cannot refine");
   }

@@ -273,7 +273,8 @@ EventRecord Simulation::refine(const SceneEvent& event) {
   EventRecord record = start_record("refine", "", event.pointer, event.time);
   const BodyMeasures before = measure();
   const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const MethodMesh> mesh = method_->refine_mesh(event, state_.displacement, record.facts);
+  const PrescribedTraction boundary(scene_, state_.time, region_tolerance(geometry_->bounds), released_);
+  const std::shared_ptr<const MethodMesh> mesh = method_->refine_mesh(event, state_.displacement, boundary, record.facts);
   record.seconds.geometry = seconds_since(start);
   if (mesh) rebuild_on(*mesh, record);
   finish_record(record, before);

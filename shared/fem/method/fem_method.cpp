@@ -99,10 +99,11 @@ public:
   /// The grid's leaves whose stress the event marks split 1→8, the forest balanced 2:1
   /// (refine_hexahedral_grid).
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& displacement,
+                                                const PrescribedTraction& boundary,
                                                 nlohmann::json& facts) const override {
     std::optional<RefinedGrid> refined = refine_hexahedral_grid(
         *forest_, refine.refine, mean_cell_stresses(discretization_->elements(), materials_.pointers(), displacement),
-        facts);
+        &boundary, facts);
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{std::move(refined->mesh.mesh), std::nullopt,
                                                      std::move(refined->forest), std::move(refined->mesh.constraints),

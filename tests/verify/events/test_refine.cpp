@@ -8,8 +8,9 @@
 //     child keeps its parent's polynomial, a global polynomial has no jumps for the
 //     penalty to weigh, so the total energy does not jump, to round-off, and neither do
 //     the mass and momentum.
-//   - The error indicator (the traction's jump across faces) marks where the stress is
-//     discontinuous, whatever its size (dg, harmonic and fem on its Hex8 grid).
+//   - The error indicator (the traction's jump across faces, its residual against the loads
+//     on the boundary) marks where the stress is discontinuous or misses the load, whatever
+//     its size (dg, harmonic and fem on its Hex8 grid).
 //   - Marking follows the keys (dg, harmonic and fem): a region splits only the cells whose centroid it holds, a
 //     cell split max_level times is not split again (nothing is rebuilt), and a cell whose
 //     stress is below the threshold stays.
@@ -17,6 +18,7 @@
 //     after a refinement, with a frame and a log line per solve.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 
 #include "app/method_registry.hpp"
@@ -129,17 +131,28 @@ TEST(RefineMarking, ACellAtMaxLevelOrBelowTheThresholdIsNotSplit) {
 // The error indicator marks where the stress jumps, not where it is high: the bar in shear
 // growing along it (u_z = 1e-3 x², σ_xz = μ ∂u_z/∂x) has cells whose mean stresses differ by
 // μ · 2e-3 · 0.1 from one cell to the next, jumps of that size in the traction across every
-// face normal to x and none across the others (the bar is one cell thick): each cell's
-// indicator is that jump. Just below it every cell is marked, just above none, though the
-// stress itself grows twentyfold along the bar.
-TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
+// face normal to x and none across the others (the bar is one cell thick). Its boundary is
+// loaded by the field's own traction σn = μ 2e-3 x (n_z, 0, n_x), which each side face
+// meets, at its centroid, with its cell's mean: no residual there; the clamped end's is the
+// reaction, left out. Each cell's indicator is the RMS residual over the faces it has
+// (areas 0.01 m² each): an inner cell's two jumps among six faces, √(2/6) of a jump; the
+// clamped cell's one among five, √(1/5); the free end's one jump and its end face's half
+// jump (the traction at x = 1 against the cell's mean at 0.95) among six, √(1.25/6).
+// Thresholds between those mark 10, 9, 8 and 0 cells, though the stress itself grows
+// twentyfold along the bar: had the clamp's reaction counted, the clamped cell would weigh
+// as the free end's.
+TEST(RefineIndicator, TheTractionResidualMarksWhereTheStressIsDiscontinuousOrMissesTheLoad) {
+  const SceneOverride field_traction = parse_scene_override(
+      "loads/traction=[{\"region\": {\"box\": {\"min\": [-1, -1, -1], \"max\": [2, 2, 2]}}, "
+      "\"traction\": [\"1e8 / 2.6 * 2e-3 * x * nz\", \"0\", \"1e8 / 2.6 * 2e-3 * x * nx\"]}]");
   for (const std::string name : {"dg", "harmonic", "fem"}) {
     SCOPED_TRACE(name);
-    const Scene scene = load_scene(cantilever_refine_scene);
+    const Scene scene = load_scene(cantilever_refine_scene, {field_traction});
     const SceneGeometry geometry = load_scene_geometry(scene);
     const MethodDescription& method = cli::find_method(name);
     const double mu = 1e8 / (2 * 1.3), jump = mu * 2e-3 * 0.1;
-    for (const double fraction : {0.99, 1.01}) {
+    // √(1/5) = 0.4472, √(1.25/6) = 0.4564, √(1/3) = 0.5774
+    for (const auto& [fraction, marked] : {std::pair{0.44, 10}, {0.452, 9}, {0.46, 8}, {0.58, 0}}) {
       Simulation simulation(scene, geometry, name, method.factory, method.rebuild);
       simulation.state().displacement =
           simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
@@ -149,8 +162,8 @@ TEST(RefineIndicator, TheTractionJumpMarksWhereTheStressIsDiscontinuous) {
       refine.refine.criterion = RefineCriterion::error_indicator;
       refine.refine.threshold = fraction * jump;
       const EventRecord record = simulation.apply(refine);
-      EXPECT_NEAR(record.facts["largest_indicator"].get<double>(), jump, 1e-9 * jump);
-      EXPECT_EQ(record.facts["marked_cells"], fraction < 1 ? 10 : 0);
+      EXPECT_NEAR(record.facts["largest_indicator"].get<double>(), jump / std::sqrt(3.0), 1e-9 * jump);
+      EXPECT_EQ(record.facts["marked_cells"], marked) << fraction;
     }
   }
 }
