@@ -142,8 +142,8 @@ public:
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
                                                 const PrescribedTraction& boundary,
                                                 nlohmann::json& facts) const override {
-    std::optional<PolyhedralSceneMesh> refined = refine_polyhedral_scene_mesh_by_stress(
-        polyhedral_mesh(), refine, *elements_, materials_, u, boundary, facts);
+    std::optional<PolyhedralSceneMesh> refined =
+        refine_polyhedral_scene_mesh_by_stress(polyhedral_mesh(), refine, *elements_, materials_, u, boundary, facts);
     if (!refined) return nullptr;
     return handed_mesh(std::move(*refined));
   }

@@ -24,7 +24,7 @@ struct SharedFace {
 struct LoadedBoundaryFace {
   int cell = 0;
   double area = 0;
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();      ///< unit, out of the cell
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();   ///< unit, out of the cell
   Eigen::Vector3d traction = Eigen::Vector3d::Zero();  ///< prescribed [Pa]
 };
 

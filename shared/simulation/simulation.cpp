@@ -274,7 +274,8 @@ EventRecord Simulation::refine(const SceneEvent& event) {
   const BodyMeasures before = measure();
   const auto start = std::chrono::steady_clock::now();
   const PrescribedTraction boundary(scene_, state_.time, region_tolerance(geometry_->bounds), released_);
-  const std::shared_ptr<const MethodMesh> mesh = method_->refine_mesh(event, state_.displacement, boundary, record.facts);
+  const std::shared_ptr<const MethodMesh> mesh =
+      method_->refine_mesh(event, state_.displacement, boundary, record.facts);
   record.seconds.geometry = seconds_since(start);
   if (mesh) rebuild_on(*mesh, record);
   finish_record(record, before);

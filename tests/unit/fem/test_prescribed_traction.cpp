@@ -27,12 +27,12 @@ const char* const cube = R"({
 TEST(PrescribedTraction, HeldPointsHaveNoneLoadedOnesTheLoadsAndFreeOnesZero) {
   const Scene scene = parse_scene(cube, "cube.json");
   const PrescribedTraction boundary(scene, 1.0, 1e-9);
-  EXPECT_FALSE(boundary.at({0, 0.5, 0.5}, -Eigen::Vector3d::UnitX()).has_value());  // clamped
+  EXPECT_FALSE(boundary.at({0, 0.5, 0.5}, -Eigen::Vector3d::UnitX()).has_value());               // clamped
   EXPECT_EQ(*boundary.at({1, 0.5, 0.5}, Eigen::Vector3d::UnitX()), Eigen::Vector3d(0.5, 0, 0));  // 2 Pa × 1/4
   EXPECT_EQ(*boundary.at({0.5, 1, 0.5}, Eigen::Vector3d::UnitY()), Eigen::Vector3d(0, -3, 0));   // −p n
   EXPECT_EQ(*boundary.at({1, 1, 0.5}, Eigen::Vector3d::UnitY()), Eigen::Vector3d(0.5, -3, 0));   // both loads
-  EXPECT_FALSE(boundary.at({0.5, 0.5, 0}, -Eigen::Vector3d::UnitZ()).has_value());  // on the roller
-  EXPECT_EQ(*boundary.at({0.5, 0, 0.5}, -Eigen::Vector3d::UnitY()), Eigen::Vector3d::Zero());  // free
+  EXPECT_FALSE(boundary.at({0.5, 0.5, 0}, -Eigen::Vector3d::UnitZ()).has_value());               // on the roller
+  EXPECT_EQ(*boundary.at({0.5, 0, 0.5}, -Eigen::Vector3d::UnitY()), Eigen::Vector3d::Zero());    // free
 }
 
 TEST(PrescribedTraction, AReleasedConditionHoldsNothing) {
