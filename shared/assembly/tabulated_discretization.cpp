@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -44,8 +45,9 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
     const double lightest = *std::min_element(element.weights.begin(), element.weights.end());
     holders += (holders.empty() ? "" : ", ") + std::to_string(e) + (lightest < 0 ? " (a negative weight)" : "");
   }
-  throw NumericalError("lumped mass of basis function " + std::to_string(basis) + " is " +
-                       std::to_string(lumped_mass[dof]) +
+  std::ostringstream mass;  // std::to_string's fixed six decimals would print 1e-20 as 0.000000
+  mass << lumped_mass[dof];
+  throw NumericalError("lumped mass of basis function " + std::to_string(basis) + " is " + mass.str() +
                        ", not positive; its elements: " + (holders.empty() ? "none" : holders));
 }
 

@@ -66,6 +66,9 @@ public:
   /// What the method was built on, for an event to hand back to its rebuild (the
   /// MethodDescription's); null for a method that cannot rebuild.
   virtual std::shared_ptr<const MethodMesh> mesh() const { return nullptr; }
+  /// What in the method's settings may have caused a numerical failure of the run (exit 3):
+  /// "; " and a clause the message ends with, naming the key that helps; empty for none.
+  virtual std::string failure_hint() const { return ""; }
   /// Why this instance cannot be cut by a scene's `cut` event (one phrase); empty when
   /// it can. Asked before the run writes anything, so a refusal is bad input.
   virtual std::string cut_refusal() const { return "it does not cut yet (dg, harmonic and fcm do)"; }

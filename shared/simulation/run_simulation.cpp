@@ -340,7 +340,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   } catch (const NumericalError& error) {
     // The state is the last converged one (a step, or an increment of the failed step).
     status = std::string("error: ") + error.what() + near_incompressible_hint(scene) +
-             large_strain_hint(scene, max_von_mises(simulation.discretization(), state.displacement));
+             large_strain_hint(scene, max_von_mises(simulation.discretization(), state.displacement)) +
+             simulation.method().failure_hint();
   }
 
   if (round_off_stops > 0) {

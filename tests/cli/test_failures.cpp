@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "tests/cli/cli_support.hpp"
 
@@ -117,6 +118,26 @@ TEST(Issue22, NearIncompressibleStopsAtRoundOffAndSaysWhyAndWhatHelps) {
                             out.string() + " 1 -1 -1 1 1 1 2 " + std::to_string(-1.0 * beam) + " " +
                             std::to_string(-0.9 * beam);
   EXPECT_EQ(std::system(check.c_str()), 0) << "the tip is not within 10% of the beam's " << beam << " m";
+}
+
+// fem cuts exactly by default (issue #33): a plane 1e-10 m past a grid plane leaves a piece
+// of a billionth of its element, and a node copy on it gets no mass at all. The run stops
+// with exit 3 and names the key that helps; with it the same cut runs.
+TEST(Issue22, AFemCutTooThinForItsMassNamesTheStabilization) {
+  const auto scene = source_path("tests/verify/events/scenes/cantilever_cut.json").string();
+  const std::vector<std::string> thin_cut = {"--set", "events/0/cut/plane/point=[0.5000000001,0,0]", "--set",
+                                             "time/steps=6"};
+  const auto out = fresh_directory("thin-fem-cut");
+  std::vector<std::string> arguments = {"run", scene, "--method", "fem", "--out", (out / "exact").string()};
+  arguments.insert(arguments.end(), thin_cut.begin(), thin_cut.end());
+  const auto exact = run_altfem(arguments);
+  EXPECT_EQ(exact.exit_code, 3) << exact.err;
+  EXPECT_NE(exact.err.find("not positive"), std::string::npos) << exact.err;
+  EXPECT_NE(exact.err.find("discretization.fem.cut_stabilization"), std::string::npos) << exact.err;
+  arguments[5] = (out / "stabilised").string();
+  arguments.insert(arguments.end(), {"--set", "discretization/fem/cut_stabilization=1e-6"});
+  const auto stabilised = run_altfem(arguments);
+  EXPECT_EQ(stabilised.exit_code, 0) << stabilised.err;
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "shared/fem/method/cut_fem_method.hpp"
 
+#include <algorithm>
+
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/tetrahedra_of_hexahedra.hpp"
@@ -27,7 +29,7 @@ CutCellSettings fem_cut_cell_settings(const Scene& scene) {
 class CutFemMethod final : public EmbeddedSurfaceMethod {
 public:
   CutFemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh& mesh)
-      : materials_(scene), elements_(mesh.elements) {
+      : materials_(scene), elements_(mesh.elements), failure_hint_(fem_cut_failure_hint(scene)) {
     cells_ =
         std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
                                            scene.dirichlet, scene.file.string(), CutCellRebuild{nullptr, mesh.rules});
@@ -49,6 +51,7 @@ public:
     return cells_->discretization().discretization->elements().point_count();
   }
   double quadrature_seconds() const override { return cells_->seconds(); }
+  std::string failure_hint() const override { return failure_hint_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     return cells_->volume_grid(displacement);
   }
@@ -87,6 +90,7 @@ private:
   SceneMaterials materials_;
   VolumeMesh elements_;
   std::unique_ptr<EmbeddedCutCells> cells_;
+  std::string failure_hint_;
 };
 
 }  // namespace
@@ -99,6 +103,15 @@ VolumeMesh element_tetrahedra(const VolumeMesh& elements) {
 std::string fem_cut_refusal(ElementType type) {
   return type == ElementType::tet20 ? "it cuts tet4, tet10, hex8, hex20 and hex27 elements (the cut-cell rules' cells)"
                                     : "";
+}
+
+std::string fem_cut_failure_hint(const Scene& scene) {
+  const bool cuts = std::any_of(scene.events.begin(), scene.events.end(),
+                                [](const SceneEvent& e) { return e.kind == EventKind::cut; });
+  if (!cuts || fem_spec(scene).cut_stabilization > 0) return "";
+  return "; a cut may have left a piece of an element too small for its functions' mass and stiffness to stay "
+         "positive: discretization.fem.cut_stabilization (e.g. 1e-6) keeps them so, at that fraction of the cut "
+         "elements' mass";
 }
 
 std::unique_ptr<MethodInstance> make_cut_fem_method(const Scene& scene, const SceneGeometry& geometry,

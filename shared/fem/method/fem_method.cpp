@@ -29,6 +29,7 @@ public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh* handed) : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
     quadrature_order_ = fem.quadrature_order;
+    failure_hint_ = fem_cut_failure_hint(scene);
     for (const SceneEvent& event : scene.events) {
       scene_cuts_ = scene_cuts_ || event.kind == EventKind::cut;
       scene_refines_ = scene_refines_ || event.kind == EventKind::refine;
@@ -86,6 +87,7 @@ public:
   std::shared_ptr<const MethodMesh> mesh() const override {
     return std::make_shared<MeshOf<FemMesh>>(FemMesh{mesh_, std::nullopt, forest_, constraints_, nullptr});
   }
+  std::string failure_hint() const override { return failure_hint_; }
   std::string cut_refusal() const override {
     if (scene_refines_) return "it does not cut a mesh that a refine event refines (hanging nodes) yet";
     return fem_cut_refusal(mesh_.element_type);
@@ -137,6 +139,7 @@ private:
   std::optional<HexahedralForest> forest_;  ///< a hexahedral grid, refined or not
   NodeConstraints constraints_;             ///< its hanging nodes (free_nodes: every node when none hangs)
   bool scene_cuts_ = false, scene_refines_ = false;
+  std::string failure_hint_;  // fem_cut_failure_hint
   std::unique_ptr<TabulatedDiscretization> discretization_;
   double quadrature_seconds_ = 0;
   int quadrature_order_ = 0;
