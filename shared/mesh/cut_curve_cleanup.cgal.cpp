@@ -85,18 +85,18 @@ bool collapse_flat_curve_point(Mesh& mesh, Mesh::Vertex_index v,
     const Mesh::Edge_index edge = mesh.edge(toward);
     if (!CGAL::Euler::does_satisfy_link_condition(edge, mesh)) continue;
     const Mesh::Vertex_index neighbour = mesh.target(toward);
-    bool turns_over = false;
+    bool refused = false;
     for (const Mesh::Vertex_index other : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
-      turns_over = turns_over || CGAL::squared_distance(mesh.point(other), mesh.point(neighbour)) > longest * longest;
+      refused = refused || CGAL::squared_distance(mesh.point(other), mesh.point(neighbour)) > longest * longest;
     for (const Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(v), mesh)) {
       if (f == mesh.face(toward) || f == mesh.face(mesh.opposite(toward))) continue;
       const Eigen::Vector3d before = face_normal(mesh, f, v, mesh.point(v));
       const Eigen::Vector3d after = face_normal(mesh, f, v, mesh.point(neighbour));
-      // Nor becomes a sliver: three points of the curve, which rounding leaves a hair off
+      // Nor may a face turn over or become a sliver: three points of the curve, which rounding leaves a hair off
       // one line, would make a face that crosses its neighbours.
-      turns_over = turns_over || after.dot(before) <= 0 || after.norm() <= 1e-6 * longest * longest;
+      refused = refused || after.dot(before) <= 0 || after.norm() <= 1e-6 * longest * longest;
     }
-    if (turns_over) continue;
+    if (refused) continue;
     collapse_onto(mesh, edge, neighbour);
     return true;
   }

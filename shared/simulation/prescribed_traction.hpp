@@ -15,8 +15,6 @@ namespace altfem {
 
 class PrescribedTraction {
 public:
-  /// Everything free of Dirichlet conditions and loads: every boundary face traction-free.
-  PrescribedTraction() = default;
   /// `scene`'s conditions (but those `released`, a bit per index into scene.dirichlet) and
   /// loads at `time`; regions hold a point within
   /// `tolerance` (region_tolerance). Keeps a reference to `scene`.
@@ -27,9 +25,9 @@ public:
   std::optional<Eigen::Vector3d> at(const Eigen::Vector3d& point, const Eigen::Vector3d& normal) const;
 
 private:
-  const Scene* scene_ = nullptr;
-  double time_ = 0, tolerance_ = 0;
-  ConditionSet released_ = 0;
+  const Scene& scene_;
+  double time_, tolerance_;
+  ConditionSet released_;
 };
 
 }  // namespace altfem

@@ -1,7 +1,5 @@
 #include "shared/fem/method/cut_fem_method.hpp"
 
-#include <algorithm>
-
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/mesh/boundary_surface.hpp"
 #include "shared/mesh/tetrahedra_of_hexahedra.hpp"
@@ -29,7 +27,9 @@ CutCellSettings fem_cut_cell_settings(const Scene& scene) {
 class CutFemMethod final : public EmbeddedSurfaceMethod {
 public:
   CutFemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh& mesh)
-      : materials_(scene), elements_(mesh.elements), failure_hint_(fem_cut_failure_hint(scene)) {
+      : materials_(scene),
+        elements_(mesh.elements),
+        failure_hint_(fem_cut_failure_hint(fem_spec(scene).cut_stabilization)) {
     cells_ =
         std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
                                            scene.dirichlet, scene.file.string(), CutCellRebuild{nullptr, mesh.rules});
@@ -105,10 +105,8 @@ std::string fem_cut_refusal(ElementType type) {
                                     : "";
 }
 
-std::string fem_cut_failure_hint(const Scene& scene) {
-  const bool cuts = std::any_of(scene.events.begin(), scene.events.end(),
-                                [](const SceneEvent& e) { return e.kind == EventKind::cut; });
-  if (!cuts || fem_spec(scene).cut_stabilization > 0) return "";
+std::string fem_cut_failure_hint(double cut_stabilization) {
+  if (cut_stabilization > 0) return "";
   return "; a cut may have left a piece of an element too small for its functions' mass and stiffness to stay "
          "positive: discretization.fem.cut_stabilization (e.g. 1e-6) keeps them so, at that fraction of the cut "
          "elements' mass";

@@ -36,8 +36,8 @@ std::string fem_cut_refusal(ElementType type);
 
 /// The failure hint (MethodInstance::failure_hint) of fem in a scene that cuts: without
 /// `cut_stabilization` a piece of a vanishing fraction of its element leaves its functions
-/// almost no mass or stiffness; empty when the scene does not cut or stabilises.
-std::string fem_cut_failure_hint(const Scene& scene);
+/// almost no mass or stiffness; empty when the cut pieces are stabilised.
+std::string fem_cut_failure_hint(double cut_stabilization);
 
 /// fem on `mesh.elements` cut into `*mesh.material`.
 std::unique_ptr<MethodInstance> make_cut_fem_method(const Scene& scene, const SceneGeometry& geometry,

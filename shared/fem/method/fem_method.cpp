@@ -29,11 +29,11 @@ public:
   FemMethod(const Scene& scene, const SceneGeometry& geometry, const FemMesh* handed) : materials_(scene) {
     const FemSpec fem = fem_spec(scene);
     quadrature_order_ = fem.quadrature_order;
-    failure_hint_ = fem_cut_failure_hint(scene);
     for (const SceneEvent& event : scene.events) {
       scene_cuts_ = scene_cuts_ || event.kind == EventKind::cut;
       scene_refines_ = scene_refines_ || event.kind == EventKind::refine;
     }
+    if (scene_cuts_) failure_hint_ = fem_cut_failure_hint(fem.cut_stabilization);
     if (handed) {
       mesh_ = handed->elements;
       forest_ = handed->forest;
@@ -139,7 +139,7 @@ private:
   std::optional<HexahedralForest> forest_;  ///< a hexahedral grid, refined or not
   NodeConstraints constraints_;             ///< its hanging nodes (free_nodes: every node when none hangs)
   bool scene_cuts_ = false, scene_refines_ = false;
-  std::string failure_hint_;  // fem_cut_failure_hint
+  std::string failure_hint_;  // fem_cut_failure_hint in a scene that cuts
   std::unique_ptr<TabulatedDiscretization> discretization_;
   double quadrature_seconds_ = 0;
   int quadrature_order_ = 0;
