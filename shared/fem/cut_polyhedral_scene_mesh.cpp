@@ -12,10 +12,14 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
                                               nlohmann::json& facts) {
   PolyhedralCut result_of_cut = cut_polyhedral_mesh(mesh.sliced.mesh, cut.blade);
   PolyhedralMesh& pieces = result_of_cut.mesh;
+  // The pieces of crossed cells (convex or not) merge below their fraction of the cell.
+  std::vector<int> pieces_of_cell(static_cast<std::size_t>(mesh.sliced.mesh.cell_count()), 0);
+  for (const int cell : result_of_cut.parent_cell) ++pieces_of_cell[cell];
   std::vector<double> minimum_volume(static_cast<std::size_t>(pieces.cell_count()), 0.0);
-  for (int piece = 0; piece < pieces.cell_count(); ++piece)
-    if (pieces.cell_kinds[piece] == PolyhedralCellKind::split)
-      minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(result_of_cut.parent_cell[piece]);
+  for (int piece = 0; piece < pieces.cell_count(); ++piece) {
+    const int cell = result_of_cut.parent_cell[piece];
+    if (pieces_of_cell[cell] > 1) minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(cell);
+  }
   const MergedPieces merged = merge_small_pieces(pieces, minimum_volume);
   std::vector<NodeSource> node_sources = std::move(result_of_cut.node_sources);
   if (!merged.kept_nodes.empty()) {
@@ -28,7 +32,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
            {"separated_faces", result_of_cut.separated_faces},
            {"duplicated_nodes", result_of_cut.duplicated_nodes},
            {"snapped_nodes", result_of_cut.snapped_nodes},
-           {"merged_pieces", merged.merged},
+           {"merged_pieces", merged.merged + result_of_cut.merged_pieces},
            {"cells", pieces.cell_count()}};
   // A piece is as refined as its cell; merged pieces as the most refined of them.
   std::vector<int> levels;

@@ -9,7 +9,9 @@
 
 #include "shared/common/error.hpp"
 #include "shared/mesh/convex_cell.hpp"
+#include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/planar_loops.hpp"
 
 namespace altfem {
 namespace {
@@ -48,24 +50,15 @@ public:
     for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
       if (!crossed_[cell]) continue;
       if (!cap_covered_[cell]) {
-        close_cap(cell, +1, piece(cell, -1));
+        close_caps(cell, +1, true);
         continue;
       }
-      for (const int sigma : {+1, -1}) close_cap(cell, sigma, -1);
+      for (const int sigma : {+1, -1}) close_caps(cell, sigma, false);
     }
     return assemble();
   }
 
 private:
-  // A face of the cut mesh before node duplication: its loop, the pieces on its two
-  // sides (second −1 on the boundary), the side of the blade it lies on, and whether the
-  // cut opened it (a boundary face that was inside the body).
-  struct Face {
-    std::vector<int> loop;
-    int first, second, sigma;
-    bool opened = false;
-  };
-
   std::vector<int> nodes_of(int cell) const { return cell_node_set(mesh_, cell); }
 
   bool has_both_sides(const std::vector<int>& loop) const {
@@ -131,6 +124,7 @@ private:
     crossed_.assign(cells, false);
     cap_covered_.assign(cells, false);
     cell_sigma_.assign(cells, +1);
+    convex_.assign(cells, true);
     first_piece_.resize(cells);
     std::vector<bool> reached(cells, false);
     DisjointSets joined(cells);
@@ -156,9 +150,7 @@ private:
       parent_.push_back(cell);
       crossed_[cell] = reached[cell] && covered_group[joined.find(cell)];
       if (!crossed_[cell]) continue;
-      if (!is_convex_cell(mesh_, cell, nodes_of(cell)))
-        throw NumericalError("cut: the blade crosses cell " + std::to_string(cell) +
-                             ", which is not convex (cutting non-convex cells is not implemented yet)");
+      convex_[cell] = is_convex_cell(mesh_, cell, nodes_of(cell));
       parent_.push_back(cell);
       ++crossed_count_;
       if (!cap_covered_[cell]) ++joined_count_;
@@ -193,28 +185,35 @@ private:
   }
 
   // The cap of a piece holds the blade edges of its faces, traversed the other way.
-  void add_cap_edges(int piece_index, const std::vector<int>& loop, bool closing_only) {
+  void add_cap_edges(int piece_index, const std::vector<int>& loop) {
     const std::size_t n = loop.size();
     for (std::size_t k = 0; k < n; ++k) {
       const int from = loop[k], to = loop[(k + 1) % n];
-      if (side_[from] != 0 || side_[to] != 0) continue;
-      if (closing_only && k + 1 != n) continue;
-      cap_edges_[piece_index].emplace(to, from);
+      if (side_[from] == 0 && side_[to] == 0) cap_edges_[piece_index].emplace_back(to, from);
     }
+  }
+
+  // The side of the blade a crossed cell's face in the blade's plane bounds: the one
+  // the face's outward normal (for that cell, as `loop` runs) points away from. An
+  // uncrossed cell lies on one side.
+  int in_plane_sigma(int cell, const std::vector<int>& loop) const {
+    if (cell < 0 || !crossed_[cell]) return cell < 0 ? +1 : cell_sigma_[cell];
+    Eigen::Vector3d area = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < loop.size(); ++k) area += nodes_[loop[k]].cross(nodes_[loop[(k + 1) % loop.size()]]);
+    return area.dot(blade_.normal) > 0 ? -1 : +1;
   }
 
   bool covers_face(const std::vector<int>& loop) const {
     return std::all_of(loop.begin(), loop.end(), [&](int node) { return blade_.covers(nodes_[node]); });
   }
 
-  void add_face(std::vector<int> loop, int cell0, int cell1, int sigma, bool opened = false) {
-    const int first = piece(cell0, sigma), second = piece(cell1, sigma);
-    if (crossed_[cell0]) add_cap_edges(first, loop, false);
-    if (cell1 >= 0 && crossed_[cell1]) {
-      std::vector<int> reversed(loop.rbegin(), loop.rend());
-      add_cap_edges(second, reversed, false);
-    }
-    faces_.push_back({std::move(loop), first, second, sigma, opened});
+  // A face of the pieces of cell0 and cell1 on sides sigma0 and sigma1 (the same but for
+  // a crossed cell's face in the blade's plane).
+  void add_face(std::vector<int> loop, int cell0, int cell1, int sigma0, int sigma1, bool opened = false) {
+    const int first = piece(cell0, sigma0), second = piece(cell1, sigma1);
+    if (crossed_[cell0]) add_cap_edges(first, loop);
+    if (cell1 >= 0 && crossed_[cell1]) add_cap_edges(second, std::vector<int>(loop.rbegin(), loop.rend()));
+    faces_.push_back({std::move(loop), first, second, sigma0, opened});
   }
 
   void split_face(int face) {
@@ -226,21 +225,24 @@ private:
       negative |= side_[node] < 0;
     }
     if (!positive && !negative) {  // in the plane: an interior face the blade covers separates
+      const std::vector<int> reversed(loop.rbegin(), loop.rend());
+      const int sigma0 = in_plane_sigma(cell0, loop), sigma1 = in_plane_sigma(cell1, reversed);
       if (cell1 >= 0 && in_piece_[cell0] && covers_face(loop)) {
         ++separated_;
-        add_face(loop, cell0, -1, cell_sigma_[cell0], true);
-        add_face(std::vector<int>(loop.rbegin(), loop.rend()), cell1, -1, cell_sigma_[cell1], true);
+        add_face(loop, cell0, -1, sigma0, sigma0, true);
+        add_face(reversed, cell1, -1, sigma1, sigma1, true);
       } else {
-        add_face(loop, cell0, cell1, cell_sigma_[cell0]);
+        add_face(loop, cell0, cell1, sigma0, sigma1);
       }
       return;
     }
     if (!(positive && negative) || !crossed_[cell0]) {
-      add_face(loop, cell0, cell1, negative && !positive ? -1 : +1);
+      const int sigma = negative && !positive ? -1 : +1;
+      add_face(loop, cell0, cell1, sigma, sigma);
       return;
     }
-    // Crossed: the loop with its crossing nodes, then the runs on either side of the
-    // blade between its two nodes on the blade (a convex face has exactly two).
+    // Crossed: the loop with its crossing nodes, then its pieces on either side. A convex
+    // face has two nodes on the blade and a piece on each side: the runs between them.
     std::vector<int> augmented;
     for (std::size_t k = 0; k < loop.size(); ++k) {
       const int u = loop[k], v = loop[(k + 1) % loop.size()];
@@ -250,124 +252,102 @@ private:
     std::vector<std::size_t> on_blade;
     for (std::size_t k = 0; k < augmented.size(); ++k)
       if (side_[augmented[k]] == 0) on_blade.push_back(k);
-    if (on_blade.size() != 2)
-      throw NumericalError("cut: the blade crosses face " + std::to_string(face) + " of cell " + std::to_string(cell0) +
-                           " more than once (a non-convex face; cutting it is not implemented yet)");
-    for (const auto& [start, end] : {std::pair{on_blade[0], on_blade[1]}, std::pair{on_blade[1], on_blade[0]}}) {
-      std::vector<int> run;
-      for (std::size_t k = start;; k = (k + 1) % augmented.size()) {
-        run.push_back(augmented[k]);
-        if (k == end) break;
+    std::vector<PolygonPiece> pieces;
+    if (on_blade.size() == 2) {
+      for (const auto& [start, end] : {std::pair{on_blade[0], on_blade[1]}, std::pair{on_blade[1], on_blade[0]}}) {
+        PolygonPiece& run = pieces.emplace_back();
+        for (std::size_t k = start;; k = (k + 1) % augmented.size()) {
+          run.loop.push_back(augmented[k]);
+          if (k == end) break;
+        }
+        run.side = side_[run.loop[1]];
       }
-      const int sigma = side_[run[1]];
-      // Only the closing edge (end → start) lies in the blade: the cap takes it reversed.
-      const int first = piece(cell0, sigma), second = piece(cell1, sigma);
-      add_cap_edges(first, run, true);
-      if (second >= 0) cap_edges_[second].emplace(run.back(), run.front());
-      faces_.push_back({std::move(run), first, second, sigma});
+    } else {
+      try {
+        pieces = split_polygon_by_plane(augmented, nodes_, side_, blade_.normal);
+      } catch (const NumericalError& error) {
+        throw NumericalError("cut: face " + std::to_string(face) + " of cell " + std::to_string(cell0) +
+                             " crossed by the blade: " + error.what());
+      }
     }
+    for (PolygonPiece& piece : pieces) add_face(std::move(piece.loop), cell0, cell1, piece.side, piece.side);
   }
 
-  // The cap of the piece of `cell` on side `sigma`: a boundary face when the blade covers
-  // it, else the face joining that piece to `other_piece`.
-  void close_cap(int cell, int sigma, int other_piece) {
+  // The caps of the pieces of `cell` on side `sigma`: the polygons their blade edges close
+  // (several where a non-convex cell's section falls apart; an edge that two of its faces
+  // hold both ways — where a face of it lies in the blade's plane — bounds none). Each is a
+  // boundary face when the blade covers the section, else a face joining the pieces on the
+  // two sides.
+  void close_caps(int cell, int sigma, bool joined) {
     const int piece_index = piece(cell, sigma);
-    std::map<int, int>& next = cap_edges_[piece_index];
-    if (next.size() < 3)
-      throw NumericalError("cut: the blade's section of cell " + std::to_string(cell) + " has fewer than 3 corners");
-    std::vector<int> loop{next.begin()->first};
-    while (loop.size() <= next.size()) {
-      const auto found = next.find(loop.back());
-      if (found == next.end()) break;
-      if (found->second == loop.front()) break;
-      loop.push_back(found->second);
+    std::vector<std::pair<int, int>> edges = std::move(cap_edges_[piece_index]);
+    std::sort(edges.begin(), edges.end());
+    std::vector<bool> cancelled(edges.size(), false);
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      if (cancelled[e]) continue;
+      const auto [begin, end] =
+          std::equal_range(edges.begin(), edges.end(), std::pair{edges[e].second, edges[e].first});
+      for (auto it = begin; it != end; ++it)
+        if (!cancelled[it - edges.begin()]) {
+          cancelled[e] = cancelled[it - edges.begin()] = true;
+          break;
+        }
     }
-    if (loop.size() != next.size())
-      throw NumericalError("cut: the blade's section of cell " + std::to_string(cell) + " is not one closed polygon");
-    faces_.push_back({std::move(loop), piece_index, other_piece, sigma, other_piece < 0});
+    std::vector<std::pair<int, int>> kept;
+    for (std::size_t e = 0; e < edges.size(); ++e)
+      if (!cancelled[e]) kept.push_back(edges[e]);
+    const Eigen::Vector3d outward = -sigma * blade_.normal;
+    const std::string where = "cut: the blade's section of cell " + std::to_string(cell);
+    std::vector<std::vector<int>> loops;
+    try {
+      loops = trace_planar_loops(kept, nodes_, outward);
+    } catch (const NumericalError& error) {
+      throw NumericalError(where + " is not made of closed polygons: " + error.what());
+    }
+    if (loops.empty()) throw NumericalError(where + " is empty");
+    for (std::vector<int>& loop : loops) {
+      if (loop.size() < 3) throw NumericalError(where + " has a polygon of fewer than 3 corners");
+      // One loop bounds the section whatever its rounded area; of several, one turning
+      // the other way round bounds a hole, which a face cannot have.
+      Eigen::Vector3d area = Eigen::Vector3d::Zero();
+      for (std::size_t k = 0; k < loop.size(); ++k) area += nodes_[loop[k]].cross(nodes_[loop[(k + 1) % loop.size()]]);
+      if (loops.size() > 1 && !(area.dot(outward) > 0))
+        throw NumericalError(where + " has a hole (cutting such a cell is not implemented)");
+      const int other_piece = joined ? piece(cell, -sigma) : -1;
+      faces_.push_back({std::move(loop), piece_index, other_piece, sigma, !joined});
+    }
   }
 
-  int piece_sigma(int piece_index) const {
-    const int cell = parent_[piece_index];
-    if (!crossed_[cell]) return cell_sigma_[cell];
-    return piece_index == first_piece_[cell] ? +1 : -1;
-  }
-
-  // A node of a face the cut opened is held by pieces that may now lie apart: those joined
-  // through the faces holding it that are not boundary faces form a group, and each group
-  // but one gets a copy of the node — the group kept is the first with a piece on the
-  // positive side, so a cut by the whole plane copies each node once, for the negative side.
-  // At a finite blade's edge the pieces stay joined around the node: it is not copied.
-  int duplicate_separated_nodes() {
+  // The nodes a copy of which each group of pieces apart around it needs: those of faces
+  // the cut opened, and a covered node that cells on both sides touch without a face in
+  // the plane (an earlier cut's slivers left out make such meshes).
+  std::vector<bool> opened_nodes() const {
     std::vector<bool> opened_node(nodes_.size(), false);
     std::vector<int> sides_using(nodes_.size(), 0);  // bit 1: positive, bit 2: negative
-    for (const Face& face : faces_)
+    for (const CutFace& face : faces_)
       for (const int node : face.loop) {
         opened_node[node] = opened_node[node] || face.opened;
         sides_using[node] |= face.sigma > 0 ? 1 : 2;
       }
-    // Also a covered node that cells on both sides touch without a face in the plane (an
-    // earlier cut's slivers left out make such meshes).
     for (std::size_t node = 0; node < nodes_.size(); ++node)
       if (sides_using[node] == 3 && !opened_node[node] && side_[node] == 0)
         opened_node[node] = blade_.covers(nodes_[node]) ||
                             (sources_[node].weight > 0 &&
                              blade_.covers_crossing(nodes_[sources_[node].first], nodes_[sources_[node].second]));
-    std::vector<std::pair<int, int>> holders;  // (node, face)
-    for (std::size_t f = 0; f < faces_.size(); ++f)
-      for (const int node : faces_[f].loop)
-        if (opened_node[node]) holders.emplace_back(node, static_cast<int>(f));
-    std::sort(holders.begin(), holders.end());
-    int duplicated = 0;
-    std::vector<int> pieces, roots, copy_of_root;
-    for (std::size_t begin = 0; begin < holders.size();) {
-      const int node = holders[begin].first;
-      std::size_t end = begin;
-      while (end < holders.size() && holders[end].first == node) ++end;
-      pieces.clear();
-      for (std::size_t k = begin; k < end; ++k) {
-        const Face& face = faces_[holders[k].second];
-        pieces.push_back(face.first);
-        if (face.second >= 0) pieces.push_back(face.second);
-      }
-      std::sort(pieces.begin(), pieces.end());
-      pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
-      const auto local = [&](int piece_index) {
-        return static_cast<int>(std::lower_bound(pieces.begin(), pieces.end(), piece_index) - pieces.begin());
-      };
-      DisjointSets groups(static_cast<int>(pieces.size()));
-      for (std::size_t k = begin; k < end; ++k) {
-        const Face& face = faces_[holders[k].second];
-        if (face.second >= 0) groups.join(local(face.first), local(face.second));
-      }
-      roots.clear();
-      for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
-        if (std::find(roots.begin(), roots.end(), groups.find(i)) == roots.end()) roots.push_back(groups.find(i));
-      const auto kept = std::find_if(roots.begin(), roots.end(), [&](int root) {
-        for (int i = 0; i < static_cast<int>(pieces.size()); ++i)
-          if (groups.find(i) == root && piece_sigma(pieces[i]) > 0) return true;
-        return false;
-      });
-      if (kept != roots.end()) std::rotate(roots.begin(), kept, kept + 1);
-      copy_of_root.assign(pieces.size(), node);
-      for (std::size_t r = 1; r < roots.size(); ++r) {
-        copy_of_root[roots[r]] = static_cast<int>(nodes_.size());
-        nodes_.push_back(nodes_[node]);
-        sources_.push_back(sources_[node]);
-        ++duplicated;
-      }
-      for (std::size_t k = begin; k < end; ++k) {
-        Face& face = faces_[holders[k].second];
-        const int copy = copy_of_root[groups.find(local(face.first))];
-        if (copy != node) std::replace(face.loop.begin(), face.loop.end(), node, copy);
-      }
-      begin = end;
-    }
-    return duplicated;
+    return opened_node;
   }
 
   PolyhedralCut assemble() {
-    const int duplicated = duplicate_separated_nodes();
+    std::vector<bool> separates(parent_.size());
+    std::vector<int> half_sigma(parent_.size());
+    for (std::size_t half = 0; half < parent_.size(); ++half) {
+      const int cell = parent_[half];
+      separates[half] = crossed_[cell] && !convex_[cell];
+      half_sigma[half] = !crossed_[cell] ? cell_sigma_[cell] : static_cast<int>(half) == first_piece_[cell] ? +1 : -1;
+    }
+    const CutPieces pieces = separate_disconnected_parts(faces_, parent_, half_sigma, separates);
+    parent_ = pieces.parent;
+    const int duplicated = duplicate_separated_nodes(faces_, opened_nodes(), pieces.sigma, nodes_, sources_);
     PolyhedralCut cut;
     PolyhedralMesh& result = cut.mesh;
     result.nodes.resize(static_cast<Eigen::Index>(nodes_.size()), 3);
@@ -376,7 +356,7 @@ private:
     result.face_cells.resize(static_cast<Eigen::Index>(faces_.size()), 2);
     result.cell_faces.resize(parent_.size());
     for (std::size_t f = 0; f < faces_.size(); ++f) {
-      Face& face = faces_[f];
+      CutFace& face = faces_[f];
       result.faces.push_back(std::move(face.loop));
       result.face_cells(static_cast<Eigen::Index>(f), 0) = face.first;
       result.face_cells(static_cast<Eigen::Index>(f), 1) = face.second;
@@ -385,9 +365,17 @@ private:
     }
     for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index) {
       const int cell = parent_[piece_index];
-      result.cell_kinds.push_back(crossed_[cell] ? PolyhedralCellKind::split : mesh_.cell_kinds[cell]);
+      result.cell_kinds.push_back(!crossed_[cell] ? mesh_.cell_kinds[cell]
+                                  : convex_[cell] ? PolyhedralCellKind::split
+                                                  : PolyhedralCellKind::cut);
     }
-    if (compute_geometry_) compute_polyhedral_geometry(result);
+    if (compute_geometry_) {
+      std::vector<bool> is_piece(parent_.size());
+      for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index)
+        is_piece[piece_index] = crossed_[parent_[piece_index]];
+      cut.merged_pieces = merge_pieces_without_volume(result, parent_, sources_, is_piece);
+      compute_polyhedral_geometry(result);
+    }
     cut.parent_cell = parent_;
     cut.node_sources = std::move(sources_);
     cut.crossed_cells = crossed_count_;
@@ -406,14 +394,15 @@ private:
   std::vector<NodeSource> sources_;     ///< per node of nodes_
   std::vector<int> side_;               ///< per node of nodes_ before the copies: −1, 0, +1
   std::vector<bool> crossed_;
+  std::vector<bool> convex_;       ///< per input cell the blade crosses: whether it is convex
   std::vector<bool> cap_covered_;  ///< per input cell the plane crosses: the blade covers its section
   std::map<std::pair<int, int>, bool> crossing_covered_;  ///< per edge the plane crosses
   std::vector<int> cell_sigma_;   ///< the side of an uncrossed cell (+1 when it has no node off the blade)
   std::vector<int> first_piece_;  ///< per input cell, its first piece
   std::vector<int> parent_;       ///< per piece, its input cell
   std::map<std::pair<int, int>, int> crossings_;
-  std::vector<std::map<int, int>> cap_edges_;  ///< per piece: the cap's next node after each node
-  std::vector<Face> faces_;
+  std::vector<std::vector<std::pair<int, int>>> cap_edges_;  ///< per piece: its cap's edges
+  std::vector<CutFace> faces_;
   int crossed_count_ = 0, joined_count_ = 0, separated_ = 0, snapped_ = 0;
   bool compute_geometry_ = true;
 };

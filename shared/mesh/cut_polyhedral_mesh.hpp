@@ -34,20 +34,24 @@ struct PolyhedralCut {
   PolyhedralMesh mesh;                   ///< the cut mesh, its geometry computed unless asked not to
   std::vector<int> parent_cell;          ///< #cells of `mesh`: the cell of the input it lies in
   std::vector<NodeSource> node_sources;  ///< #nodes of `mesh`
-  int crossed_cells = 0;                 ///< input cells split into two pieces
+  int crossed_cells = 0;                 ///< input cells split into pieces (two, or a non-convex cell's parts)
   int joined_cells = 0;                  ///< of those, the ones whose pieces stay joined (finite blades)
   int separated_faces = 0;               ///< interior input faces in the plane, now two boundary faces
   int duplicated_nodes = 0;              ///< copies of nodes on the opened faces
   int snapped_nodes = 0;                 ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
+  int merged_pieces = 0;                 ///< pieces without a positive rounded volume, merged into a neighbour
 };
 
-/// Cuts `mesh` by `plane`. A crossed cell must be convex (each of its nodes on or behind
-/// the plane of each of its faces); throws NumericalError naming the first that is not
-/// (cutting non-convex cells is not implemented yet). Throws std::invalid_argument for a
-/// zero normal or a blade polygon with a blade_polygon_problem. A plane that misses every cell returns the mesh
-/// unchanged. Without `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its
-/// rounded volume to be positive is the caller's to handle (cut_tetrahedral_mesh); with it, compute_polyhedral_geometry
-/// throws NumericalError for such a piece.
+/// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);
+/// a crossed non-convex one becomes the connected parts of each side (kind cut): a face
+/// falls into as many polygons as the plane leaves of it, a section into as many caps.
+/// Two parts of a side that meet only along an edge in the plane stay one piece. Throws
+/// NumericalError naming the cell when a section has a hole (a cap would be a face with a
+/// hole) or does not close. Throws std::invalid_argument for a zero normal or a blade polygon with a
+/// blade_polygon_problem. A plane that misses every cell returns the mesh unchanged. Without
+/// `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its rounded volume
+/// to be positive is the caller's to handle (cut_tetrahedral_mesh); with it, such a piece is merged into the
+/// cell across its largest interior face (merge_pieces_without_volume; NumericalError when it has none).
 PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true);
 
 }  // namespace altfem

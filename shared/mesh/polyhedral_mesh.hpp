@@ -15,11 +15,12 @@ namespace altfem {
 enum class PolyhedralCellKind : int {
   tetrahedron = 0,  ///< a tetrahedron of a converted volume mesh
   hexahedron = 1,   ///< a hexahedron of a converted volume mesh, or a grid cell wholly inside a sliced object
-  cut = 2,          ///< one connected piece of a grid cell cut by a sliced object's surface
-  merged = 3,       ///< a cell with sliver pieces merged into it (merge_slivers)
-  coarse = 4,       ///< an octree cell: 2^(3L) grid cells wholly inside, its finer neighbours' nodes on its faces
-  refined = 5,      ///< a convex piece of a cell split by refinement (split_polyhedral_cells)
-  split = 6,        ///< a convex piece of a convex cell a blade's plane crossed (cut_polyhedral_mesh)
+  cut = 2,     ///< one connected piece of a grid cell cut by a sliced object's surface, or of a non-convex cell a blade
+               ///< crossed
+  merged = 3,  ///< a cell with sliver pieces merged into it (merge_slivers)
+  coarse = 4,  ///< an octree cell: 2^(3L) grid cells wholly inside, its finer neighbours' nodes on its faces
+  refined = 5,  ///< a convex piece of a cell split by refinement (split_polyhedral_cells)
+  split = 6,    ///< a convex piece of a convex cell a blade's plane crossed (cut_polyhedral_mesh)
 };
 
 /// Cells of this kind are convex: a point in front of one of their face planes is outside.

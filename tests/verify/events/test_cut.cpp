@@ -37,6 +37,7 @@
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "tests/verify/events/element_count.hpp"
+#include "tests/verify/events/piece_momentum.hpp"
 
 namespace altfem {
 namespace {
@@ -67,31 +68,9 @@ StaticAnswer solve_static(const std::filesystem::path& file, const std::string& 
   return {discretization.energy(u), discretization.body_force(Eigen::Vector3d::UnitZ()).dot(u)};
 }
 
-struct PieceMomentum {
-  double mass = 0;        ///< ∫ρ dV beyond the blade [kg]
-  double momentum_z = 0;  ///< ∫ρ v_z dV beyond the blade [kg m/s]
-};
-
-// By the method's volume rule: the points beyond the plane x = `blade` are the cut-off
-// piece's (a piece's interior points lie strictly on its side).
+// The piece beyond the plane x = `blade`.
 PieceMomentum momentum_beyond(const Simulation& simulation, double blade, double density) {
-  const std::optional<FieldQuadrature> quadrature = simulation.method().field_quadrature(0);
-  const TabulatedElements& elements = *quadrature->elements;
-  const Eigen::VectorXd& velocity = simulation.state().velocity;
-  PieceMomentum piece;
-  Eigen::Index row = 0;
-  for (int e = 0; e < elements.size(); ++e) {
-    const ElementView element = elements[e];
-    for (int q = 0; q < element.point_count(); ++q, ++row) {
-      if (quadrature->points(row, 0) <= blade) continue;
-      double v_z = 0;
-      for (int a = 0; a < element.basis_count(); ++a)
-        v_z += element.values(q, a) * velocity[3 * static_cast<Eigen::Index>(element.basis[a]) + 2];
-      piece.mass += density * element.weights[q];
-      piece.momentum_z += density * element.weights[q] * v_z;
-    }
-  }
-  return piece;
+  return momentum_beyond(simulation, Eigen::Vector3d(blade, 0, 0), Eigen::Vector3d::UnitX(), density);
 }
 
 // The fcm scenes' stabilisation α (the default of /discretization/fcm/stabilization).

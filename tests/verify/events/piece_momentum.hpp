@@ -1,0 +1,39 @@
+#pragma once
+// The mass and vertical momentum of what lies beyond a blade, by the method's volume
+// rule: a piece's interior points lie strictly on its side, so the points beyond the
+// plane are the cut-off piece's. What the free-fall checks of the cut tests compare.
+#include <Eigen/Core>
+#include <optional>
+
+#include "shared/simulation/simulation.hpp"
+
+namespace altfem {
+
+struct PieceMomentum {
+  double mass = 0;        ///< ∫ρ dV beyond the blade [kg]
+  double momentum_z = 0;  ///< ∫ρ v_z dV beyond the blade [kg m/s]
+};
+
+/// Over the volume rule's points on the side of the plane (point, normal) that `normal` points to.
+inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::Vector3d& point,
+                                     const Eigen::Vector3d& normal, double density) {
+  const std::optional<FieldQuadrature> quadrature = simulation.method().field_quadrature(0);
+  const TabulatedElements& elements = *quadrature->elements;
+  const Eigen::VectorXd& velocity = simulation.state().velocity;
+  PieceMomentum piece;
+  Eigen::Index row = 0;
+  for (int e = 0; e < elements.size(); ++e) {
+    const ElementView element = elements[e];
+    for (int q = 0; q < element.point_count(); ++q, ++row) {
+      if ((quadrature->points.row(row).transpose() - point).dot(normal) <= 0) continue;
+      double v_z = 0;
+      for (int a = 0; a < element.basis_count(); ++a)
+        v_z += element.values(q, a) * velocity[3 * static_cast<Eigen::Index>(element.basis[a]) + 2];
+      piece.mass += density * element.weights[q];
+      piece.momentum_z += density * element.weights[q] * v_z;
+    }
+  }
+  return piece;
+}
+
+}  // namespace altfem
