@@ -162,12 +162,7 @@ TEST(CutByPolygon, SeededPolygonsGiveClosedPiecesAndConformingTetrahedra) {
       ASSERT_TRUE(every_cell_closed(cut.mesh));
       ASSERT_GT(cut.mesh.cell_volumes.minCoeff(), 0.0);
       EXPECT_NEAR(cut.mesh.cell_volumes.sum(), 1.0, 1e-13);
-      for (Eigen::Index node = 0; node < cut.mesh.nodes.rows(); ++node) {
-        const NodeSource& source = cut.node_sources[node];
-        const Eigen::RowVector3d placed =
-            (1 - source.weight) * mesh.nodes.row(source.first) + source.weight * mesh.nodes.row(source.second);
-        ASSERT_LE((cut.mesh.nodes.row(node) - placed).norm(), 1e-15) << "node " << node;
-      }
+      ASSERT_TRUE(every_node_at_its_source(mesh.nodes, cut));
       if (type != ElementType::tet4) continue;
       TetrahedralCut tetrahedra;
       ASSERT_NO_THROW(tetrahedra = cut_tetrahedral_mesh(grid, blade));

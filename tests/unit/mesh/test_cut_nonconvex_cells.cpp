@@ -210,13 +210,7 @@ TEST(CutNonConvexCells, APieceThinnerThanRoundOffIsMergedIntoItsNeighbour) {
   EXPECT_TRUE(every_cell_closed(cut.mesh));
   EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0.0);
   EXPECT_NEAR(cut.mesh.cell_volumes.sum(), mesh.cell_volumes.sum(), 1e-13 * mesh.cell_volumes.sum());
-  ASSERT_EQ(cut.node_sources.size(), static_cast<std::size_t>(cut.mesh.nodes.rows()));
-  for (Eigen::Index node = 0; node < cut.mesh.nodes.rows(); ++node) {
-    const NodeSource& source = cut.node_sources[node];
-    const Eigen::RowVector3d placed =
-        (1 - source.weight) * mesh.nodes.row(source.first) + source.weight * mesh.nodes.row(source.second);
-    ASSERT_LE((cut.mesh.nodes.row(node) - placed).norm(), 1e-15) << "node " << node;
-  }
+  ASSERT_TRUE(every_node_at_its_source(mesh.nodes, cut));
 }
 
 }  // namespace

@@ -127,14 +127,7 @@ TEST(CutPolyhedralMesh, SeededPlanesGiveClosedPiecesOfPositiveVolumeOnEveryKindO
       ASSERT_TRUE(every_cell_closed(cut.mesh));
       ASSERT_GT(cut.mesh.cell_volumes.minCoeff(), 0.0);
       EXPECT_NEAR(cut.mesh.cell_volumes.sum(), 1.0, 1e-13);
-      // Every node where its sources put it.
-      ASSERT_EQ(cut.node_sources.size(), static_cast<std::size_t>(cut.mesh.nodes.rows()));
-      for (Eigen::Index node = 0; node < cut.mesh.nodes.rows(); ++node) {
-        const NodeSource& source = cut.node_sources[node];
-        const Eigen::RowVector3d placed =
-            (1 - source.weight) * mesh.nodes.row(source.first) + source.weight * mesh.nodes.row(source.second);
-        ASSERT_LE((cut.mesh.nodes.row(node) - placed).norm(), 1e-15) << "node " << node;
-      }
+      ASSERT_TRUE(every_node_at_its_source(mesh.nodes, cut));
       EXPECT_NEAR(volume_on_positive_side(cut.mesh, plane), clipped_cube_volume(plane), 1e-9);
     }
   }
