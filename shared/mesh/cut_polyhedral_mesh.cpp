@@ -198,9 +198,7 @@ private:
   // uncrossed cell lies on one side.
   int in_plane_sigma(int cell, const std::vector<int>& loop) const {
     if (cell < 0 || !crossed_[cell]) return cell < 0 ? +1 : cell_sigma_[cell];
-    Eigen::Vector3d area = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < loop.size(); ++k) area += nodes_[loop[k]].cross(nodes_[loop[(k + 1) % loop.size()]]);
-    return area.dot(blade_.normal) > 0 ? -1 : +1;
+    return loop_area_vector(loop, nodes_).dot(blade_.normal) > 0 ? -1 : +1;
   }
 
   bool covers_face(const std::vector<int>& loop) const {
@@ -309,9 +307,7 @@ private:
       if (loop.size() < 3) throw NumericalError(where + " has a polygon of fewer than 3 corners");
       // One loop bounds the section whatever its rounded area; of several, one turning
       // the other way round bounds a hole, which a face cannot have.
-      Eigen::Vector3d area = Eigen::Vector3d::Zero();
-      for (std::size_t k = 0; k < loop.size(); ++k) area += nodes_[loop[k]].cross(nodes_[loop[(k + 1) % loop.size()]]);
-      if (loops.size() > 1 && !(area.dot(outward) > 0))
+      if (loops.size() > 1 && !(loop_area_vector(loop, nodes_).dot(outward) > 0))
         throw NumericalError(where + " has a hole (cutting such a cell is not implemented)");
       const int other_piece = joined ? piece(cell, -sigma) : -1;
       faces_.push_back({std::move(loop), piece_index, other_piece, sigma, !joined});
@@ -370,11 +366,17 @@ private:
                                                   : PolyhedralCellKind::cut);
     }
     if (compute_geometry_) {
-      std::vector<bool> is_piece(parent_.size());
-      for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index)
-        is_piece[piece_index] = crossed_[parent_[piece_index]];
-      cut.merged_pieces = merge_pieces_without_volume(result, parent_, sources_, is_piece);
-      compute_polyhedral_geometry(result);
+      try {
+        compute_polyhedral_geometry(result);
+      } catch (const NumericalError&) {
+        // Rare (a blade a few 1e-12 off nodes): only then are the pieces' volumes checked.
+        std::vector<bool> is_piece(parent_.size());
+        for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index)
+          is_piece[piece_index] = crossed_[parent_[piece_index]];
+        cut.merged_pieces = merge_pieces_without_volume(result, parent_, sources_, is_piece);
+        if (cut.merged_pieces == 0) throw;
+        compute_polyhedral_geometry(result);
+      }
     }
     cut.parent_cell = parent_;
     cut.node_sources = std::move(sources_);

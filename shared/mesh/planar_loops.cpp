@@ -11,12 +11,6 @@
 namespace altfem {
 namespace {
 
-Eigen::Vector3d area_vector(const std::vector<int>& loop, const std::vector<Eigen::Vector3d>& positions) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < loop.size(); ++k) sum += positions[loop[k]].cross(positions[loop[(k + 1) % loop.size()]]);
-  return sum / 2;
-}
-
 // Whether `point` of the polygon's plane lies inside it: the crossing number of the
 // polygon projected along the axis its normal is largest in. Only asked of midpoints of
 // stretches no edge crosses, so rounding cannot flip it but for slivers the caller refuses.
@@ -37,6 +31,12 @@ bool inside_polygon(const Eigen::Vector3d& point, const std::vector<int>& loop,
 }
 
 }  // namespace
+
+Eigen::Vector3d loop_area_vector(const std::vector<int>& loop, const std::vector<Eigen::Vector3d>& positions) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < loop.size(); ++k) sum += positions[loop[k]].cross(positions[loop[(k + 1) % loop.size()]]);
+  return sum / 2;
+}
 
 std::vector<std::vector<int>> trace_planar_loops(const std::vector<std::pair<int, int>>& edges,
                                                  const std::vector<Eigen::Vector3d>& positions,
@@ -77,7 +77,7 @@ std::vector<std::vector<int>> trace_planar_loops(const std::vector<std::pair<int
 std::vector<PolygonPiece> split_polygon_by_plane(const std::vector<int>& loop,
                                                  const std::vector<Eigen::Vector3d>& positions,
                                                  const std::vector<int>& side, const Eigen::Vector3d& plane_normal) {
-  const Eigen::Vector3d normal = area_vector(loop, positions);
+  const Eigen::Vector3d normal = loop_area_vector(loop, positions);
   // Along the line where the plane meets the polygon's plane: its left (normal × line) is
   // the plane's negative side, so a stretch of the line inside the polygon is an edge of
   // the negative pieces run along `line` and of the positive ones run against it.

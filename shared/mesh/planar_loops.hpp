@@ -9,6 +9,10 @@
 
 namespace altfem {
 
+/// Newell's area vector ½ Σ p_k × p_{k+1} of the loop of node indices `loop` into
+/// `positions`: its area times the normal it turns counter-clockwise about.
+Eigen::Vector3d loop_area_vector(const std::vector<int>& loop, const std::vector<Eigen::Vector3d>& positions);
+
 /// The closed loops that `edges` (directed node pairs, each used once) form, each counter-
 /// clockwise about `normal`. Where several edges leave a node, a loop arriving there turns
 /// left as far as it can: the loop keeps the region on its left and two loops that touch
