@@ -146,6 +146,51 @@ struct OwnFaces {
   }
 };
 
+// The MFS sampling of one spacing (eq. (12)-(13)): kernel centres, dropped where they land
+// inside the element or closer than half the offset to its boundary (non-convex
+// elements), or closer than half a spacing to a centre kept before (a cut cell's nodes
+// can be much closer than the spacing; nearly coincident kernels only make the system
+// rank-deficient); collocation points m ≈ 3n, the same sampling 3 times denser along
+// edges and in area, also by coordinate (x, y, z: m each) so that every distance test and
+// kernel column is one vectorised expression over them.
+struct MfsSampling {
+  BoundarySamples collocation;
+  std::array<Eigen::ArrayXd, 3> coordinates;
+  std::vector<Eigen::Vector3d> centres;
+};
+
+MfsSampling sample_mfs(const Polyhedron& element, std::span<const ElementFace> faces, double spacing, double offset,
+                       int collocation_factor) {
+  MfsSampling sampling;
+  const BoundarySamples samples = sample_boundary(element, faces, spacing, spacing, false);
+  sampling.collocation = sample_boundary(element, faces, spacing / collocation_factor,
+                                         spacing / std::sqrt(static_cast<double>(collocation_factor)), true);
+  const auto m = static_cast<Eigen::Index>(sampling.collocation.points.size());
+  for (int d = 0; d < 3; ++d) {
+    sampling.coordinates[d].resize(m);
+    for (Eigen::Index i = 0; i < m; ++i) sampling.coordinates[d][i] = sampling.collocation.points[i][d];
+  }
+  const auto& coordinates = sampling.coordinates;
+  const auto closest_squared = [&](const Eigen::Vector3d& centre) {
+    return ((coordinates[0] - centre.x()).square() + (coordinates[1] - centre.y()).square() +
+            (coordinates[2] - centre.z()).square())
+        .minCoeff();
+  };
+  const Eigen::AlignedBox3d bounds(element.vertices.colwise().minCoeff().transpose(),
+                                   element.vertices.colwise().maxCoeff().transpose());
+  for (size_t s = 0; s < samples.points.size(); ++s) {
+    const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
+    if (std::any_of(sampling.centres.begin(), sampling.centres.end(),
+                    [&](const Eigen::Vector3d& kept) { return (kept - centre).squaredNorm() < spacing * spacing / 4; }))
+      continue;
+    if (closest_squared(centre) < offset * offset / 4) continue;
+    // Outside the bounding box is outside; only the others need the winding number.
+    if (bounds.contains(centre) && std::abs(winding_number(element, centre)) > 0.5) continue;
+    sampling.centres.push_back(centre);
+  }
+  return sampling;
+}
+
 }  // namespace
 
 ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, const MfsOptions& options)
@@ -170,7 +215,7 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   // (tying the spacing to the mean edge length gave cut cells of the bunny ~1000 kernels).
   double area = 0;
   for (const auto& face : element.faces) area += polygon_area_vector(face_polygon(element, face)).norm();
-  const double spacing = std::sqrt(area / 6) / (options.edge_samples + 1);
+  double spacing = std::sqrt(area / 6) / (options.edge_samples + 1);
 
   boundary_integrals_ = Eigen::MatrixXd::Zero(nodes, 3);
   for (size_t f = 0; f < element.faces.size(); ++f) {
@@ -182,41 +227,29 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
       boundary_integrals_.row(faces[f].nodes[k]) += integrals[static_cast<Eigen::Index>(k)] * normal.transpose();
   }
 
-  // Kernel centres (eq. (12)), dropped where they land inside the element or closer
-  // than half the offset to its boundary (non-convex elements), or closer than half a
-  // spacing to a centre kept before (a cut cell's nodes can be much closer than the
-  // spacing; nearly coincident kernels only make the system rank-deficient). Collocation
-  // points m ≈ 3n (eq. (13)): the same sampling, 3 times denser along edges and in area.
-  const BoundarySamples samples = sample_boundary(element, faces, spacing, spacing, false);
-  const BoundarySamples collocation =
-      sample_boundary(element, faces, spacing / options.collocation_factor,
-                      spacing / std::sqrt(static_cast<double>(options.collocation_factor)), true);
-  const auto m = static_cast<Eigen::Index>(collocation.points.size());
-  // The collocation points by coordinate (x, y, z: m each), physical, then local: every
-  // distance test and kernel column below is one vectorised expression over them.
-  std::array<Eigen::ArrayXd, 3> collocation_coordinates;
-  for (int d = 0; d < 3; ++d) {
-    collocation_coordinates[d].resize(m);
-    for (Eigen::Index i = 0; i < m; ++i) collocation_coordinates[d][i] = collocation.points[i][d];
+  const double offset = options.offset * diameter;
+  MfsSampling sampling = sample_mfs(element, faces, spacing, offset, options.collocation_factor);
+  // A cut cell of a detailed surface holds facet vertices much closer than the spacing,
+  // whose kernels merge: more nodes than kernels, and its n functions span at most
+  // #centres + 4 dimensions. Such dependent functions leave combinations of nodal values
+  // without energy on the nodes no other cell holds (the sliced tube: 220 nodes against
+  // 170 kernels; its cantilever bent 1.8 times as far as beam theory, and at quadrature
+  // order 4 its matrix was singular). The spacing shrinks by 3/4 until the kernels
+  // outnumber the nodes by a quarter, at most twice: more kernels at the same offset do
+  // not resolve hats narrower than it, and a cell of 800 nodes shrunk 4 times took 14 s
+  // and lost its partition of unity to 5e-6 (cells with few nodes never shrink).
+  for (int shrink = 0; shrink < 2 && 4 * (sampling.centres.size() + 4) < 5 * static_cast<size_t>(nodes); ++shrink) {
+    spacing *= 0.75;
+    sampling = sample_mfs(element, faces, spacing, offset, options.collocation_factor);
   }
+  const BoundarySamples& collocation = sampling.collocation;
+  std::array<Eigen::ArrayXd, 3>& collocation_coordinates = sampling.coordinates;
+  const std::vector<Eigen::Vector3d>& centres = sampling.centres;
+  const auto m = static_cast<Eigen::Index>(collocation.points.size());
   const auto squared_distances = [&](const Eigen::Vector3d& centre) {
     return (collocation_coordinates[0] - centre.x()).square() + (collocation_coordinates[1] - centre.y()).square() +
            (collocation_coordinates[2] - centre.z()).square();
   };
-  std::vector<Eigen::Vector3d> centres;
-  const double offset = options.offset * diameter;
-  const Eigen::AlignedBox3d bounds(element.vertices.colwise().minCoeff().transpose(),
-                                   element.vertices.colwise().maxCoeff().transpose());
-  for (size_t s = 0; s < samples.points.size(); ++s) {
-    const Eigen::Vector3d centre = samples.points[s] + offset * samples.normals[s];
-    if (std::any_of(centres.begin(), centres.end(),
-                    [&](const Eigen::Vector3d& kept) { return (kept - centre).squaredNorm() < spacing * spacing / 4; }))
-      continue;
-    if (squared_distances(centre).minCoeff() < offset * offset / 4) continue;
-    // Outside the bounding box is outside; only the others need the winding number.
-    if (bounds.contains(centre) && std::abs(winding_number(element, centre)) > 0.5) continue;
-    centres.push_back(centre);
-  }
   centres_.resize(static_cast<Eigen::Index>(centres.size()), 3);
   for (size_t j = 0; j < centres.size(); ++j)
     centres_.row(static_cast<Eigen::Index>(j)) = ((centres[j] - origin_) / scale_).transpose();

@@ -1,13 +1,18 @@
 #include "shared/quadrature/basic_feasible_point.hpp"
 
 #include <ClpSimplex.hpp>
+#include <Eigen/Cholesky>
 #include <limits>
 #include <vector>
 
 namespace altfem {
 
-std::optional<Eigen::VectorXd> basic_feasible_point(const Eigen::Ref<const Eigen::MatrixXd>& A,
-                                                    const Eigen::Ref<const Eigen::VectorXd>& b) {
+namespace {
+
+// min cᵀx subject to A x = b, x >= 0 (Clp, dense columns), or nullopt when not proven optimal.
+std::optional<Eigen::VectorXd> solve_standard_lp(const Eigen::Ref<const Eigen::MatrixXd>& A,
+                                                 const Eigen::Ref<const Eigen::VectorXd>& b,
+                                                 const std::vector<double>& objective) {
   const int rows = static_cast<int>(A.rows()), columns = static_cast<int>(A.cols());
   // Dense column-major storage in Clp's compressed-column form.
   std::vector<CoinBigIndex> starts(columns + 1);
@@ -21,7 +26,7 @@ std::optional<Eigen::VectorXd> basic_feasible_point(const Eigen::Ref<const Eigen
     }
   }
   starts[columns] = static_cast<CoinBigIndex>(columns) * rows;
-  const std::vector<double> lower(columns, 0.0), upper(columns, COIN_DBL_MAX), objective(columns, 0.0);
+  const std::vector<double> lower(columns, 0.0), upper(columns, COIN_DBL_MAX);
   const std::vector<double> rhs(b.data(), b.data() + rows);
 
   ClpSimplex simplex;
@@ -35,6 +40,34 @@ std::optional<Eigen::VectorXd> basic_feasible_point(const Eigen::Ref<const Eigen
   const double* solution = simplex.primalColumnSolution();
   Eigen::VectorXd x(columns);
   for (int j = 0; j < columns; ++j) x(j) = solution[j] > 0.0 ? solution[j] : 0.0;
+  return x;
+}
+
+}  // namespace
+
+std::optional<Eigen::VectorXd> basic_feasible_point(const Eigen::Ref<const Eigen::MatrixXd>& A,
+                                                    const Eigen::Ref<const Eigen::VectorXd>& b) {
+  // No objective: Clp's phase 1 stops at the first feasible basis.
+  return solve_standard_lp(A, b, std::vector<double>(A.cols(), 0.0));
+}
+
+std::optional<Eigen::VectorXd> spread_feasible_point(const Eigen::Ref<const Eigen::MatrixXd>& A,
+                                                     const Eigen::Ref<const Eigen::VectorXd>& b,
+                                                     const Eigen::Ref<const Eigen::VectorXd>& prior) {
+  // Columns [A | A·prior] over (s, t): maximise t, i.e. minimise −t.
+  Eigen::MatrixXd extended(A.rows(), A.cols() + 1);
+  extended.leftCols(A.cols()) = A;
+  extended.col(A.cols()) = A * prior;
+  std::vector<double> objective(A.cols() + 1, 0.0);
+  objective.back() = -1.0;
+  const std::optional<Eigen::VectorXd> solution = solve_standard_lp(extended, b, objective);
+  if (!solution || (*solution)[A.cols()] <= 0.0) return std::nullopt;
+  Eigen::VectorXd x = solution->head(A.cols()) + (*solution)[A.cols()] * prior;
+  // Clp meets A x = b to its tolerance; the minimum-norm correction Aᵀ(AAᵀ)⁻¹(b − Ax)
+  // meets it to round-off, and is far smaller than t·prior, which keeps x positive.
+  const Eigen::MatrixXd normal = A * A.transpose();
+  x += A.transpose() * normal.ldlt().solve(b - A * x);
+  if (x.minCoeff() <= 0.0) return std::nullopt;
   return x;
 }
 

@@ -117,9 +117,16 @@ namespace {
 // minutes per cell. Far fewer suffice: the candidates are visited in an order that strides
 // across all tetrahedra, and the LP first gets the first 20 × #moments inside ones, then
 // twice as many, until it is feasible or every candidate has been offered.
+//
+// Such a rule has at most #moments points (10 at strength 2), too few for a basis with
+// more functions than that (an MFS cell of a sliced surface has hundreds of nodes, its
+// stiffness then rank 3 × #points: hourglass modes). With `minimum_points`, candidates
+// are gathered until there are that many, and the weights are spread over all of them
+// (spread_feasible_point: each at least t times its cone weight, t maximal).
 std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron, int strength,
                                                    const Eigen::Vector3d& apex,
-                                                   const std::vector<Eigen::Matrix3d>& jacobians, double size) {
+                                                   const std::vector<Eigen::Matrix3d>& jacobians, double size,
+                                                   int minimum_points) {
   const QuadratureRule tet = tet_rule(2 * strength + 2);
   std::vector<Eigen::Matrix3d> inverses;
   std::vector<int> signs;
@@ -143,14 +150,17 @@ std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron,
   long stride = 7919;
   while (std::gcd(stride, candidate_count) != 1) stride += 2;
   std::vector<Eigen::Vector3d> candidates;
+  std::vector<double> cone_weights;                // each candidate's |weight| in the signed cone rule
   Eigen::MatrixXd monomials(exponents.rows(), 0);  // one column per candidate, kept across batches
   long visited = 0;
-  for (auto batch = static_cast<size_t>(20 * exponents.rows());; batch *= 2) {
+  for (auto batch = static_cast<size_t>(std::max<Eigen::Index>(20 * exponents.rows(), minimum_points));; batch *= 2) {
     const size_t evaluated = candidates.size();
     for (; visited < candidate_count && candidates.size() < batch; ++visited) {
       const long index = (visited * stride) % candidate_count;
       const Eigen::Vector3d x = apex + jacobians[index / per_tet] * tet.points.row(index % per_tet).transpose();
-      if (inside(x)) candidates.push_back(x);
+      if (!inside(x)) continue;
+      candidates.push_back(x);
+      cone_weights.push_back(std::abs(tet.weights[index % per_tet] * jacobians[index / per_tet].determinant()));
     }
     // Monomials about the apex scaled by the size, so every entry is O(1): only the new
     // candidates' columns are evaluated.
@@ -161,8 +171,18 @@ std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron,
         monomials(i, static_cast<Eigen::Index>(q)) =
             std::pow(x.x(), exponents(i, 0)) * std::pow(x.y(), exponents(i, 1)) * std::pow(x.z(), exponents(i, 2));
     }
-    const std::optional<Eigen::VectorXd> weights = basic_feasible_point(monomials, moments);
-    if (weights && (monomials * *weights - moments).cwiseAbs().maxCoeff() <= 1e-10 * moments[0]) {
+    const auto exact = [&](const std::optional<Eigen::VectorXd>& weights) {
+      return weights && (monomials * *weights - moments).cwiseAbs().maxCoeff() <= 1e-10 * moments[0];
+    };
+    // A spread rule that Clp does not find exact gets more candidates; the basic rule is
+    // the last resort.
+    const bool exhausted = visited == candidate_count;
+    std::optional<Eigen::VectorXd> weights;
+    if (minimum_points > 0)
+      weights = spread_feasible_point(monomials, moments,
+                                      Eigen::Map<const Eigen::VectorXd>(cone_weights.data(), cone_weights.size()));
+    if (!exact(weights) && (minimum_points == 0 || exhausted)) weights = basic_feasible_point(monomials, moments);
+    if (exact(weights)) {
       PolyhedronRule rule;
       const auto count = static_cast<Eigen::Index>((weights->array() > 0).count());
       rule.points.resize(count, 3);
@@ -174,13 +194,13 @@ std::optional<PolyhedronRule> positive_moment_rule(const Polyhedron& polyhedron,
         }
       return rule;
     }
-    if (visited == candidate_count) return std::nullopt;
+    if (exhausted) return std::nullopt;
   }
 }
 
 }  // namespace
 
-PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
+PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength, int minimum_points) {
   if (polyhedron.faces.empty()) throw std::invalid_argument("polyhedron_rule: the polyhedron has no face");
   const QuadratureRule tet = tet_rule(strength);
   // The centroid as apex: it sees the whole cell whenever the cell is convex, and the
@@ -225,13 +245,14 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength) {
     rule.positive = rule.positive && determinant > 0;
   }
   if (!rule.positive)
-    if (auto positive = positive_moment_rule(polyhedron, strength, apex, jacobians, size)) return std::move(*positive);
+    if (auto positive = positive_moment_rule(polyhedron, strength, apex, jacobians, size, minimum_points))
+      return std::move(*positive);
   return rule;
 }
 
 PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
-                                          std::optional<SimplificationMethod> method) {
-  PolyhedronRule rule = polyhedron_rule(polyhedron, strength);
+                                          std::optional<SimplificationMethod> method, int minimum_points) {
+  PolyhedronRule rule = polyhedron_rule(polyhedron, strength, minimum_points);
   if (!method || !rule.positive) return rule;  // no positive-weight simplifier starts from negative weights
   SimplificationOptions options;
   options.degree = strength;

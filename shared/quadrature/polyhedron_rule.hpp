@@ -35,8 +35,12 @@ std::vector<std::array<int, 3>> triangulate_face(const Eigen::MatrixXd& vertices
 PolyhedronRule polygon_rule(const Eigen::MatrixXd& polygon, int strength);
 
 /// The rule of `strength` (tet_rule) on each cone tetrahedron about the centroid (or the kernel point). Throws
-/// std::invalid_argument for a polyhedron without faces.
-PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
+/// std::invalid_argument for a polyhedron without faces. A cell star-shaped about no point
+/// gets positive weights on points inside it that integrate every polynomial of degree
+/// `strength` as the cone rule does: at most C(strength + 3, 3) of them, or, with
+/// `minimum_points` > 0, at least that many (when the cone rule has them inside the cell),
+/// for integrands that are not polynomials and need the points (harmonic bases).
+PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength, int minimum_points = 0);
 
 /// polyhedron_rule(polyhedron, strength) with at most C(strength + 3, 3) points: the cone
 /// rule of a cell bounded by many facets (a cut cell of a detailed surface carries one
@@ -46,6 +50,6 @@ PolyhedronRule polyhedron_rule(const Polyhedron& polyhedron, int strength);
 /// cut-cell rules). The cone rule as it is when `method` is nullopt (a scene's simplifier
 /// `none`), has negative weights, or the simplifier fails on it.
 PolyhedronRule simplified_polyhedron_rule(const Polyhedron& polyhedron, int strength,
-                                          std::optional<SimplificationMethod> method);
+                                          std::optional<SimplificationMethod> method, int minimum_points = 0);
 
 }  // namespace altfem

@@ -2,7 +2,8 @@
 // properties the method relies on — partition of unity and exact linear reproduction
 // (no ghost forces), the linear basis of a tet and the trilinear basis of a hex
 // recovered, kernel centres outside non-convex elements, gradients that differentiate
-// the values — and the C0 mismatch across a shared face shrinking with more samples.
+// the values, more kernels than nodes on a cell of many close nodes — and the C0
+// mismatch across a shared face shrinking with more samples.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -150,6 +151,36 @@ TEST_P(EveryShape, InterpolatesTheNodesToTheFitsAccuracy) {
 INSTANTIATE_TEST_SUITE_P(HarmonicBasis, EveryShape, ::testing::Values(0, 1, 2), [](const auto& info) {
   return std::string(info.param == 0 ? "cube" : info.param == 1 ? "tet" : "l_prism");
 });
+
+// A cell with more nodes than its area's spacing gives kernels (a cut cell of a detailed
+// surface: facet vertices close together), here a prism over a 120-gon with fanned caps
+// (242 nodes). Kernels merged within half a spacing left such a cell fewer kernels than
+// nodes, so its functions spanned fewer dimensions than it has nodes: the sliced tube's
+// cells gave combinations of nodal values without energy (tests/verify/harmonic,
+// SlicedTube). The spacing shrinks until the kernels outnumber the nodes, and the basis
+// keeps its partition of unity and linear reproduction. (Hats narrower than the kernels'
+// offset still fit poorly: more kernels at the same offset do not resolve them.)
+TEST(HarmonicBasis, ACellOfManyCloseNodesGetsMoreKernelsThanNodes) {
+  const int sides = 200;
+  std::vector<Eigen::Vector2d> circle;
+  for (int k = 0; k < sides; ++k) circle.emplace_back(std::cos(2 * M_PI * k / sides), std::sin(2 * M_PI * k / sides));
+  Polyhedron element = test::prism(circle, 0.3);
+  element.vertices.conservativeResize(2 * sides + 2, 3);
+  element.vertices.row(2 * sides) << 0, 0, 0;
+  element.vertices.row(2 * sides + 1) << 0, 0, 0.3;
+  element.faces.erase(element.faces.begin(), element.faces.begin() + 2);  // the caps, fanned instead
+  for (int k = 0; k < sides; ++k) {
+    element.faces.push_back({2 * sides, (k + 1) % sides, k});
+    element.faces.push_back({2 * sides + 1, sides + k, sides + (k + 1) % sides});
+  }
+  const Eigen::Index n = element.vertices.rows();
+  const ElementHarmonicBasis basis(element, MfsOptions{});
+  EXPECT_GE(basis.centres().rows() + 4, n);
+  const Eigen::MatrixXd points = interior_points(element, 200, 5);
+  const Eigen::MatrixXd values = basis.values(points);
+  EXPECT_LT((values.rowwise().sum().array() - 1.0).abs().maxCoeff(), 1e-9);
+  EXPECT_LT((values * element.vertices - points).cwiseAbs().maxCoeff(), 1e-9);
+}
 
 TEST(HarmonicBasis, IsTheBarycentricBasisOnATetrahedron) {
   const Polyhedron tet = tetrahedron();

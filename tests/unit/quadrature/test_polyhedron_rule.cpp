@@ -3,7 +3,8 @@
 // non-convex one (positive weights), one star-shaped only about points away from its
 // centroid (the kernel point as apex: positive) and one that is not star-shaped at all
 // (the moment-fitted rule on its inside points: positive and exact all the same), also
-// when its faces are many; and the simplified rules of cells of many facets (at most one
+// when its faces are many, or with at least as many points as asked (spread over its
+// inside points instead of one per moment); and the simplified rules of cells of many facets (at most one
 // point per moment, exact all the same).
 #include <gtest/gtest.h>
 
@@ -91,6 +92,27 @@ TEST(PolyhedronRule, CellOfManyFacesThatIsNotStarShapedGetsAPositiveExactRule) {
   expect_exact(rule, u_prism, 4, 1e-10);
   EXPECT_TRUE(rule.positive);
   EXPECT_LE(rule.weights.size(), monomial_count(4));
+}
+
+TEST(PolyhedronRule, CellThatIsNotStarShapedGetsAtLeastTheRequiredPointsPositiveAndExact) {
+  // A harmonic cell with hundreds of nodes needs more points than moments: the U of 8 × 60
+  // side faces (482 vertices) asked for twice as many points as it has vertices.
+  const Polyhedron u_prism = test::prism(refined(u_outline, 60), 0.7);
+  const int vertices = static_cast<int>(u_prism.vertices.rows());
+  for (int strength : {2, 4}) {
+    const PolyhedronRule rule = polyhedron_rule(u_prism, strength, 2 * vertices);
+    EXPECT_GE(rule.weights.size(), 2 * vertices);
+    EXPECT_GT(rule.weights.minCoeff(), 0);
+    EXPECT_TRUE(rule.positive);
+    expect_exact(rule, u_prism, strength, 1e-12);
+    // Every point inside the U: within its bounding box and off the gap between its arms
+    // (0.2 < x < 2.8, y > 0.2).
+    for (Eigen::Index q = 0; q < rule.points.rows(); ++q) {
+      const Eigen::Vector3d x = rule.points.row(q).transpose();
+      EXPECT_TRUE(x.x() >= 0 && x.x() <= 3 && x.y() >= 0 && x.y() <= 3 && x.z() >= 0 && x.z() <= 0.7) << x.transpose();
+      EXPECT_FALSE(x.x() > 0.2 && x.x() < 2.8 && x.y() > 0.2) << x.transpose();
+    }
+  }
 }
 
 TEST(PolyhedronRule, SimplifiedRuleOfACellOfManyFacetsHasOnePointPerMomentAtMost) {

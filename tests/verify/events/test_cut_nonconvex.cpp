@@ -6,6 +6,8 @@
 //     parent's polynomial), and the piece cut off falls freely: nothing holds it and its
 //     internal forces sum to zero, so each backward-Euler step adds exactly m g dt to its
 //     momentum.
+//   - harmonic, the tube: volume and mass are kept to round-off, the energy moves by less
+//     than 1% (the carried field is interpolated, not exact), and the run goes on.
 //   - harmonic, the shell: volume and mass are kept to round-off and the run goes on.
 #include <gtest/gtest.h>
 
@@ -48,6 +50,25 @@ TEST(CutNonConvexCells, DgSplitsTheTubesCurvedCellsAndThePieceCutOffFallsFreely)
         << "step " << step;
     before = after;
   }
+}
+
+TEST(CutNonConvexCells, HarmonicCutsTheSlicedTubeWithoutAnEnergyJump) {
+  const Scene scene = load_scene(scenes / "tube_cut.json");
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const MethodDescription& method = cli::find_method("harmonic");
+  Simulation simulation(scene, geometry, "harmonic", method.factory, method.rebuild);
+  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
+  const EventRecord record = simulation.apply(scene.events.at(0));
+  EXPECT_EQ(record.facts["crossed_cells"], 4);
+  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
+  // The field carried to the pieces' nodes, linear along the cut edges, and their new
+  // bases: 0.19% of the energy (dg's exact transfer: 0.19% too, the penalty's share). With
+  // pieces whose functions were dependent (more nodes than kernels) it was 97 times the
+  // energy before the cut.
+  EXPECT_LE(std::abs(record.conserved["energy_jump_relative"].get<double>()), 1e-2);
+  for (int step = 0; step < 2; ++step) ASSERT_NO_THROW(simulation.integrator().step(simulation.state()));
+  EXPECT_TRUE(simulation.state().displacement.allFinite());
 }
 
 TEST(CutNonConvexCells, HarmonicCutsTheSlicedShellsCurvedCellsAndKeepsVolumeAndMass) {
