@@ -340,6 +340,12 @@ ElementHarmonicBasis ElementHarmonicBasis::reordered(const std::vector<int>& ord
   return result;
 }
 
+ElementHarmonicBasis ElementHarmonicBasis::translated(const Eigen::Vector3d& offset) const {
+  ElementHarmonicBasis result = *this;
+  result.origin_ += offset;  // centres and coefficients are in coordinates about the origin
+  return result;
+}
+
 void ElementHarmonicBasis::write(BinaryWriter& out) const {
   out.matrix(origin_);
   out.put<double>(scale_);

@@ -61,6 +61,9 @@ public:
   /// The same basis with its nodes in another order: node i of the result is node
   /// order[i] of this one (the cell numbered otherwise by a rebuilt mesh).
   ElementHarmonicBasis reordered(const std::vector<int>& order) const;
+  /// The same basis moved by `offset`: that of the cell's translate (harmonic_element_bases
+  /// fits one of several translated cells and moves it to the others).
+  ElementHarmonicBasis translated(const Eigen::Vector3d& offset) const;
 
   /// Everything the basis evaluates from, bit for bit (harmonic_basis_cache).
   void write(BinaryWriter& out) const;

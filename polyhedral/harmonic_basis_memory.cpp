@@ -1,6 +1,7 @@
 #include "polyhedral/harmonic_basis_memory.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 #include "shared/geometry/polyhedron.hpp"
@@ -45,6 +46,39 @@ CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell) {
   }
   CacheKeyHasher hasher;
   hasher.matrix(key.vertices);
+  hasher.bytes(key.structure.data(), sizeof(int) * key.structure.size());
+  key.hash = hasher.value();
+  return key;
+}
+
+CellShapeKey cell_shape_key(const PolyhedralMesh& mesh, int cell) {
+  CellGeometryKey geometry = cell_geometry_key(mesh, cell);
+  CellShapeKey key;
+  key.anchor = geometry.vertices.row(0).transpose();
+  const Eigen::MatrixX3d relative = geometry.vertices.rowwise() - key.anchor.transpose();
+  const double size = (relative.colwise().maxCoeff() - relative.colwise().minCoeff()).norm();
+  // A power of two, so translates whose sizes differ in the last bits still round alike.
+  const double unit = std::exp2(std::floor(std::log2(1e-9 * size)));
+  key.offsets.reserve(static_cast<size_t>(3 * relative.rows()));
+  for (Eigen::Index v = 0; v < relative.rows(); ++v)
+    for (int d = 0; d < 3; ++d) key.offsets.push_back(std::llround(relative(v, d) / unit));
+  // The faces as the cell lists them, each loop from where the cell starts it: the fit
+  // samples faces in this order from frames their loops set, and keeps the first of close
+  // kernel centres, so cells that list them alike get the same samples, moved, and fits
+  // that agree to round-off. Listed otherwise, the fits agree only to their accuracy (1e-4
+  // on a box), and a moved basis would no longer share its faces' data with its
+  // neighbours' (their face integrals cancel only when both read the same face function).
+  const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
+  std::vector<int> sorted(geometry.local.size());  // local vertex → sorted index
+  for (size_t k = 0; k < sorted.size(); ++k) sorted[geometry.local[k]] = static_cast<int>(k);
+  key.structure.push_back(static_cast<int>(polyhedron.faces.size()));
+  for (const std::vector<int>& face : polyhedron.faces) {
+    key.structure.push_back(static_cast<int>(face.size()));
+    for (int vertex : face) key.structure.push_back(sorted[vertex]);
+  }
+  key.local = std::move(geometry.local);
+  CacheKeyHasher hasher;
+  hasher.bytes(key.offsets.data(), sizeof(std::int64_t) * key.offsets.size());
   hasher.bytes(key.structure.data(), sizeof(int) * key.structure.size());
   key.hash = hasher.value();
   return key;

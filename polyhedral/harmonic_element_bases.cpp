@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <string>
+#include <unordered_map>
 
 #include "polyhedral/harmonic_tabulation.hpp"
 #include "polyhedral/mesh_face_coordinates.hpp"
@@ -49,14 +50,30 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
     }
     mfs_cells.push_back(cell);
   }
+  // Cells that are translates of one another share one fit: a blade through a grid cuts
+  // every crossed cell alike (the 1,024 cells of docs/performance.md's cut: 2 fits, not
+  // 2,048), and so does a refinement. The first of them in cell order is fitted.
+  std::vector<CellShapeKey> shapes(cells);
+  std::vector<int> fitted_for(cells, -1);  // the translate whose fit a cell takes
+  std::vector<int> to_fit;
+  std::unordered_multimap<std::uint64_t, int> fitted_shapes;
+  for (int cell : mfs_cells) {
+    shapes[cell] = cell_shape_key(mesh, cell);
+    const auto [first, last] = fitted_shapes.equal_range(shapes[cell].hash);
+    for (auto candidate = first; candidate != last && fitted_for[cell] < 0; ++candidate)
+      if (shapes[candidate->second] == shapes[cell]) fitted_for[cell] = candidate->second;
+    if (fitted_for[cell] >= 0) continue;
+    fitted_shapes.emplace(shapes[cell].hash, cell);
+    to_fit.push_back(cell);
+  }
   // Each face's coordinates once, shared by its two cells; then the cells.
-  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, mfs_cells, options);
+  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, to_fit, options);
   // A cell whose basis fails is recorded and its basis left empty.
   std::atomic<int> failed_cell{cells};
-  const auto count = static_cast<int>(mfs_cells.size());
+  const auto count = static_cast<int>(to_fit.size());
 #pragma omp parallel for schedule(dynamic, 4)
   for (int k = 0; k < count; ++k) {
-    const int cell = mfs_cells[k];
+    const int cell = to_fit[k];
     Cell& entry = cells_[cell];
     try {
       entry.mfs.emplace(cell_harmonic_basis(mesh, cell, faces, options));
@@ -68,6 +85,15 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   if (failed_cell < cells)
     throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
                          ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
+  for (int cell : mfs_cells) {
+    const int source = fitted_for[cell];
+    if (source < 0) continue;
+    // Node local[k] here is node local[k] of the source, both sorted by position.
+    std::vector<int> order(shapes[cell].local.size());
+    for (size_t k = 0; k < order.size(); ++k) order[shapes[cell].local[k]] = shapes[source].local[k];
+    cells_[cell].mfs = cells_[source].mfs->reordered(order).translated(shapes[cell].anchor - shapes[source].anchor);
+    ++translated_bases_;
+  }
   if (remember)
     for (int cell = 0; cell < cells; ++cell)
       if (cells_[cell].mfs) remember->add(std::move(keys[cell]), *cells_[cell].mfs);

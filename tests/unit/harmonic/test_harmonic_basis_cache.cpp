@@ -3,15 +3,18 @@
 // corrupted file is ignored, recomputed and rewritten; the harmonic method reports
 // whether it wrote or reused its cache (facts: harmonic_basis_cache). The in-memory
 // counterpart for events (polyhedral/harmonic_basis_memory.hpp): a rebuild after a cut
-// fits only the cells the cut changed and keeps the others' bases bit for bit.
+// fits only the cells the cut changed and keeps the others' bases bit for bit; and cells
+// that are translates of one another share one fit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
 
 #include "polyhedral/harmonic_basis_cache.hpp"
 #include "polyhedral/harmonic_method.hpp"
+#include "polyhedral/mesh_face_coordinates.hpp"
 #include "shared/common/error.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
@@ -173,6 +176,37 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
   MfsOptions denser = options;
   ++denser.edge_samples;
   EXPECT_EQ(HarmonicElementBases(cut.mesh, HarmonicBasisKind::mfs, denser, &memory).remembered_bases(), 0);
+}
+
+// Cells that are translates of one another, and list their faces alike, take one fit,
+// moved (cell_shape_key): a plane through a 4 × 4 grid cuts its crossed cells alike. Each
+// moved basis is the fit its own cell gets on the mesh's shared face coordinates, to
+// round-off, node by node, so it still shares its faces' data with its neighbours.
+TEST(HarmonicElementBases, TranslatesOfACellShareItsFit) {
+  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 2, 0.5));
+  const PolyhedralMesh grid = polyhedral_mesh_from_volume_mesh(structured_grid(box, {4, 4, 1}, ElementType::hex8));
+  const PolyhedralCut cut =
+      cut_polyhedral_mesh(grid, CuttingPlane(Eigen::Vector3d(0.8, 0, 0), Eigen::Vector3d(1, 0, 0)));
+  ASSERT_EQ(cut.crossed_cells, 4);
+  const MfsOptions options;
+  const HarmonicElementBases bases(cut.mesh, HarmonicBasisKind::mfs, options);
+  EXPECT_GT(bases.translated_bases(), cut.mesh.cell_count() / 2);
+  std::vector<int> every(cut.mesh.cell_count());
+  std::iota(every.begin(), every.end(), 0);
+  const auto faces = mesh_face_coordinates(cut.mesh, every, options);
+  for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
+    const ElementHarmonicBasis own = cell_harmonic_basis(cut.mesh, cell, faces, options);
+    const Polyhedron polyhedron = cell_polyhedron(cut.mesh, cell);
+    const Eigen::Vector3d low = polyhedron.vertices.colwise().minCoeff(),
+                          high = polyhedron.vertices.colwise().maxCoeff();
+    const Eigen::ArrayXXd unit = (Eigen::ArrayXXd::Random(20, 3) + 1) / 2;
+    const Eigen::MatrixXd points =
+        (unit.rowwise() * (high - low).transpose().array()).rowwise() + low.transpose().array();
+    const Eigen::MatrixXd difference = bases.mfs_basis(cell)->values(points) - own.values(points);
+    EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-10) << "cell " << cell;
+    EXPECT_LE((bases.mfs_basis(cell)->boundary_integrals() - own.boundary_integrals()).cwiseAbs().maxCoeff(), 1e-12)
+        << "cell " << cell;
+  }
 }
 
 }  // namespace
