@@ -13,6 +13,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <string>
 
 #include "app/method_registry.hpp"
 #include "shared/scene/scene_geometry.hpp"
@@ -52,38 +53,36 @@ TEST(CutNonConvexCells, DgSplitsTheTubesCurvedCellsAndThePieceCutOffFallsFreely)
   }
 }
 
-TEST(CutNonConvexCells, HarmonicCutsTheSlicedTubeWithoutAnEnergyJump) {
-  const Scene scene = load_scene(scenes / "tube_cut.json");
+// harmonic on `scene_file`, cut after `steps` steps: volume and mass kept to round-off,
+// and two more steps finite. Returns the cut's record.
+EventRecord harmonic_cut_after(const std::string& scene_file, int steps) {
+  const Scene scene = load_scene(scenes / scene_file);
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method("harmonic");
   Simulation simulation(scene, geometry, "harmonic", method.factory, method.rebuild);
-  for (int step = 0; step < 5; ++step) simulation.integrator().step(simulation.state());
+  for (int step = 0; step < steps; ++step) simulation.integrator().step(simulation.state());
   const EventRecord record = simulation.apply(scene.events.at(0));
-  EXPECT_EQ(record.facts["crossed_cells"], 4);
   EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
   EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
+  for (int step = 0; step < 2; ++step) EXPECT_NO_THROW(simulation.integrator().step(simulation.state()));
+  EXPECT_TRUE(simulation.state().displacement.allFinite());
+  return record;
+}
+
+TEST(CutNonConvexCells, HarmonicCutsTheSlicedTubeWithoutAnEnergyJump) {
+  const EventRecord record = harmonic_cut_after("tube_cut.json", 5);
+  EXPECT_EQ(record.facts["crossed_cells"], 4);
   // The field carried to the pieces' nodes, linear along the cut edges, and their new
   // bases: 0.19% of the energy (dg's exact transfer: 0.19% too, the penalty's share). With
   // pieces whose functions were dependent (more nodes than kernels) it was 97 times the
   // energy before the cut.
   EXPECT_LE(std::abs(record.conserved["energy_jump_relative"].get<double>()), 1e-2);
-  for (int step = 0; step < 2; ++step) ASSERT_NO_THROW(simulation.integrator().step(simulation.state()));
-  EXPECT_TRUE(simulation.state().displacement.allFinite());
 }
 
 TEST(CutNonConvexCells, HarmonicCutsTheSlicedShellsCurvedCellsAndKeepsVolumeAndMass) {
-  const Scene scene = load_scene(scenes / "shell_cut.json");
-  const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = cli::find_method("harmonic");
-  Simulation simulation(scene, geometry, "harmonic", method.factory, method.rebuild);
-  for (int step = 0; step < 3; ++step) simulation.integrator().step(simulation.state());
-  const EventRecord record = simulation.apply(scene.events.at(0));
+  const EventRecord record = harmonic_cut_after("shell_cut.json", 3);
   EXPECT_GT(record.facts["crossed_cells"].get<int>(), 20);
-  EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
-  EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
   EXPECT_GT(record.dofs_after, record.dofs_before);
-  for (int step = 0; step < 2; ++step) ASSERT_NO_THROW(simulation.integrator().step(simulation.state()));
-  EXPECT_TRUE(simulation.state().displacement.allFinite());
 }
 
 }  // namespace
