@@ -51,8 +51,8 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
     mfs_cells.push_back(cell);
   }
   // Cells that are translates of one another share one fit: a blade through a grid cuts
-  // every crossed cell alike (the 1,024 cells of docs/performance.md's cut: 2 fits, not
-  // 2,048), and so does a refinement. The first of them in cell order is fitted.
+  // every crossed cell alike (the 2,048 pieces of docs/performance.md's cut take a few
+  // fits), and so does a refinement. The first of them in cell order is fitted.
   std::vector<CellShapeKey> shapes(cells);
   std::vector<int> fitted_for(cells, -1);  // the translate whose fit a cell takes
   std::vector<int> to_fit;
