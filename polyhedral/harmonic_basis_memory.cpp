@@ -15,26 +15,39 @@ bool same_options(const MfsOptions& a, const MfsOptions& b) {
   return a.edge_samples == b.edge_samples && a.collocation_factor == b.collocation_factor && a.offset == b.offset;
 }
 
+// A cell's polyhedron with its vertices ordered by position (lexicographically), which
+// both keys number them by whatever the mesh's numbering.
+struct PositionOrder {
+  Polyhedron polyhedron;
+  std::vector<int> local;   // per sorted vertex, its index in cell_polyhedron order
+  std::vector<int> sorted;  // per local vertex, its sorted index
+};
+
+PositionOrder position_order(const PolyhedralMesh& mesh, int cell) {
+  PositionOrder order{cell_polyhedron(mesh, cell), {}, {}};
+  const Eigen::MatrixXd& vertices = order.polyhedron.vertices;
+  const auto count = static_cast<int>(vertices.rows());
+  order.local.resize(count);
+  std::iota(order.local.begin(), order.local.end(), 0);
+  std::sort(order.local.begin(), order.local.end(), [&](int a, int b) {
+    const auto x = vertices.row(a), y = vertices.row(b);
+    return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
+  });
+  order.sorted.resize(count);
+  for (int k = 0; k < count; ++k) order.sorted[order.local[k]] = k;
+  return order;
+}
+
 }  // namespace
 
 CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell) {
-  const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
-  const auto count = static_cast<int>(polyhedron.vertices.rows());
+  PositionOrder order = position_order(mesh, cell);
   CellGeometryKey key;
-  key.local.resize(count);
-  std::iota(key.local.begin(), key.local.end(), 0);
-  const auto before = [&](int a, int b) {
-    const auto x = polyhedron.vertices.row(a), y = polyhedron.vertices.row(b);
-    return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
-  };
-  std::sort(key.local.begin(), key.local.end(), before);
-  std::vector<int> sorted(count);  // local vertex → sorted index
-  for (int k = 0; k < count; ++k) sorted[key.local[k]] = k;
-  key.vertices = polyhedron.vertices(key.local, Eigen::all);
+  key.vertices = order.polyhedron.vertices(order.local, Eigen::all);
   std::vector<std::vector<int>> loops;
-  for (const std::vector<int>& face : polyhedron.faces) {
+  for (const std::vector<int>& face : order.polyhedron.faces) {
     std::vector<int> loop;
-    for (int vertex : face) loop.push_back(sorted[vertex]);
+    for (int vertex : face) loop.push_back(order.sorted[vertex]);
     std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
     loops.push_back(std::move(loop));
   }
@@ -44,6 +57,7 @@ CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell) {
     key.structure.push_back(static_cast<int>(loop.size()));
     key.structure.insert(key.structure.end(), loop.begin(), loop.end());
   }
+  key.local = std::move(order.local);
   CacheKeyHasher hasher;
   hasher.matrix(key.vertices);
   hasher.bytes(key.structure.data(), sizeof(int) * key.structure.size());
@@ -52,10 +66,11 @@ CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell) {
 }
 
 CellShapeKey cell_shape_key(const PolyhedralMesh& mesh, int cell) {
-  CellGeometryKey geometry = cell_geometry_key(mesh, cell);
+  PositionOrder order = position_order(mesh, cell);
   CellShapeKey key;
-  key.anchor = geometry.vertices.row(0).transpose();
-  const Eigen::MatrixX3d relative = geometry.vertices.rowwise() - key.anchor.transpose();
+  const Eigen::MatrixXd& vertices = order.polyhedron.vertices;
+  key.anchor = vertices.row(order.local.front()).transpose();
+  const Eigen::MatrixX3d relative = vertices(order.local, Eigen::all).rowwise() - key.anchor.transpose();
   const double size = (relative.colwise().maxCoeff() - relative.colwise().minCoeff()).norm();
   // A power of two, so translates whose sizes differ in the last bits still round alike.
   const double unit = std::exp2(std::floor(std::log2(1e-9 * size)));
@@ -68,15 +83,12 @@ CellShapeKey cell_shape_key(const PolyhedralMesh& mesh, int cell) {
   // that agree to round-off. Listed otherwise, the fits agree only to their accuracy (1e-4
   // on a box), and a moved basis would no longer share its faces' data with its
   // neighbours' (their face integrals cancel only when both read the same face function).
-  const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
-  std::vector<int> sorted(geometry.local.size());  // local vertex → sorted index
-  for (size_t k = 0; k < sorted.size(); ++k) sorted[geometry.local[k]] = static_cast<int>(k);
-  key.structure.push_back(static_cast<int>(polyhedron.faces.size()));
-  for (const std::vector<int>& face : polyhedron.faces) {
+  key.structure.push_back(static_cast<int>(order.polyhedron.faces.size()));
+  for (const std::vector<int>& face : order.polyhedron.faces) {
     key.structure.push_back(static_cast<int>(face.size()));
-    for (int vertex : face) key.structure.push_back(sorted[vertex]);
+    for (int vertex : face) key.structure.push_back(order.sorted[vertex]);
   }
-  key.local = std::move(geometry.local);
+  key.local = std::move(order.local);
   CacheKeyHasher hasher;
   hasher.bytes(key.offsets.data(), sizeof(std::int64_t) * key.offsets.size());
   hasher.bytes(key.structure.data(), sizeof(int) * key.structure.size());
