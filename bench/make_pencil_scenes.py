@@ -46,10 +46,7 @@ def pencil(name, cuts, steps, compare):
         },
     }
     if compare:
-        # fcm and fem cut their embedded tetrahedra, which multiply near the tip (every cut
-        # crosses the last ones' pieces): their 50-cut runs take minutes, so the study
-        # compares the polyhedral methods, as the paper's figure shows dg.
-        scene["compare"] = {"methods": ["dg", "harmonic"],
+        scene["compare"] = {"methods": ["dg", "harmonic", "fem", "fcm"],
                             "reference": {"method": "dg", "set": {"discretization/dg/resolution": [2, 2, 8]}}}
     return scene
 

@@ -76,7 +76,7 @@ public:
       // The object as tetrahedra (§4.5): the scene's tet mesh, or Mesh_3 of its surface
       // or shape at the same default size as fem's, so both deform the same surface.
       const double embedded_size = spec.embedded_cell_size.value_or(geometry.bounds.diagonal().norm() / 15.0);
-      meshes.embedded.mesh = embedded_tetrahedra(geometry, embedded_size, scene.file.string());
+      meshes.embedded.material.mesh = embedded_tetrahedra(geometry, embedded_size, scene.file.string());
     }
     resolution_ = meshes.resolution;
     forest_ = std::move(meshes.forest);
@@ -94,7 +94,7 @@ public:
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
     // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
-    surface_.load_surface = boundary_surface(cells_->embedded().mesh).surface;
+    surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
     surface_.evaluator = cells_->basis_evaluator();
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
@@ -124,7 +124,7 @@ public:
   std::shared_ptr<const MethodMesh> mesh() const override {
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(),
                                                      resolution_,
-                                                     {cells_->embedded().mesh, {}},
+                                                     {cells_->embedded().material, {}},
                                                      forest_,
                                                      grid_free_nodes_,
                                                      grid_hanging_,
@@ -151,7 +151,7 @@ public:
     if (!refined) return nullptr;
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{std::move(refined->mesh.mesh),
                                                      resolution_,
-                                                     {cells_->embedded().mesh, {}},
+                                                     {cells_->embedded().material, {}},
                                                      std::move(refined->forest),
                                                      refined->mesh.constraints.free_nodes,
                                                      std::move(refined->mesh.sources),

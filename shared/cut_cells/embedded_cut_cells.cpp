@@ -48,7 +48,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   VolumeMesh cells = background;
   std::vector<std::vector<int>> cell_tetrahedra;
   if (settings.topology_aware) {
-    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh, refined ? &refined->contacts : nullptr);
+    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh(), refined ? &refined->contacts : nullptr);
     split_cells_ = pieces.split_cells();
     pieces_ = piece_mesh(background, pieces);
     cells = pieces_->mesh;
@@ -58,7 +58,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   statistics_ = std::make_shared<IntersectionStatistics>();
   rule_memory_ = std::make_shared<CellRuleMemory>();
   const CellQuadratureSource rules =
-      intersection_cell_quadrature(cells, embedded_.mesh, settings.simplifier, settings.simplification_tolerance, {},
+      intersection_cell_quadrature(cells, embedded_.mesh(), settings.simplifier, settings.simplification_tolerance, {},
                                    statistics_, std::move(cell_tetrahedra), rebuild.rules, rule_memory_);
   BackgroundHangingNodes hanging;
   if (refined)
@@ -67,7 +67,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
                pieces_ ? pieces_->background_cell : std::vector<int>{}};
   fcm_ = build_fcm_discretization(
       cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)), dirichlet, settings.options,
-      scene_file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh) : NodeRegionFilter{}, hanging);
+      scene_file, pieces_ ? piece_dirichlet_nodes(*pieces_, embedded_.mesh()) : NodeRegionFilter{}, hanging);
   warnings_ = conditions_cutting_cells(fcm_.mesh, dirichlet);
   for (std::size_t cell = 0; cell < fcm_.volume_fractions.size(); ++cell)
     material_volume_ += fcm_.volume_fractions[cell] * cell_volume(fcm_.mesh, static_cast<Eigen::Index>(cell));
@@ -77,7 +77,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
 std::unique_ptr<ElementBasisEvaluator> EmbeddedCutCells::basis_evaluator() const {
   const NodeConstraints* constraints = fcm_.constraints.empty() ? nullptr : &fcm_.constraints;
   if (pieces_)
-    return std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_.mesh,
+    return std::make_unique<PieceBasisEvaluator>(fcm_.mesh, *pieces_, fcm_.background_cells, embedded_.mesh(),
                                                  constraints);
   return std::make_unique<LagrangeBasisEvaluator>(fcm_.mesh, constraints);
 }
@@ -131,17 +131,17 @@ std::string EmbeddedCutCells::cut_refusal() const {
 // The blade cuts the embedded tetrahedra (issue #33); the rebuild finds the cells' pieces
 // again, so a cell whose material the blade separates gets a node copy per side.
 EmbeddedTetrahedra EmbeddedCutCells::cut(const CuttingPlane& blade, nlohmann::json& facts) const {
-  return cut_embedded_tetrahedra(embedded_.mesh, blade, facts);
+  return cut_embedded_tetrahedra(embedded_.material, blade, facts);
 }
 
-EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
+EmbeddedTetrahedra cut_embedded_tetrahedra(const FragmentedTetrahedra& material, const CuttingPlane& blade,
                                            nlohmann::json& facts) {
-  TetrahedralCut cut = cut_tetrahedral_mesh(tetrahedra, blade);
-  facts = {{"crossed_tetrahedra", cut.crossed_tetrahedra}, {"joined_tetrahedra", cut.joined_tetrahedra},
-           {"separated_faces", cut.separated_faces},       {"duplicated_nodes", cut.duplicated_nodes},
-           {"snapped_nodes", cut.snapped_nodes},           {"flat_tetrahedra", cut.flat_tetrahedra},
-           {"tetrahedra", cut.mesh.cells.rows()}};
-  return {std::move(cut.mesh), std::move(cut.parent_tetrahedron)};
+  TetrahedralCut cut = cut_tetrahedral_mesh(material, blade);
+  facts = {{"crossed_fragments", cut.crossed_fragments}, {"joined_fragments", cut.joined_fragments},
+           {"separated_faces", cut.separated_faces},     {"duplicated_nodes", cut.duplicated_nodes},
+           {"snapped_nodes", cut.snapped_nodes},         {"flat_tetrahedra", cut.flat_tetrahedra},
+           {"fragments", cut.result.fragment_count()},   {"tetrahedra", cut.result.mesh.cells.rows()}};
+  return {std::move(cut.result), std::move(cut.parent_fragment)};
 }
 
 // Built on `before`'s background and embedded tetrahedra, or on a cut of them (another
@@ -151,8 +151,9 @@ bool EmbeddedCutCells::continues(const EmbeddedCutCells& before) const {
   if (!pieces_ || !before.pieces_ || !same(background_.cells, before.background_.cells) ||
       !same(background_.nodes, before.background_.nodes))
     return false;
-  if (embedded_.parent.empty()) return same(embedded_.mesh.cells, before.embedded_.mesh.cells);
-  return *std::max_element(embedded_.parent.begin(), embedded_.parent.end()) < before.embedded_.mesh.cells.rows();
+  if (embedded_.parent.empty()) return same(embedded_.mesh().cells, before.embedded_.mesh().cells);
+  return *std::max_element(embedded_.parent.begin(), embedded_.parent.end()) <
+         before.embedded_.material.fragment_count();
 }
 
 std::vector<int> EmbeddedCutCells::node_origins(const EmbeddedCutCells& before) const {
@@ -169,10 +170,16 @@ std::vector<int> EmbeddedCutCells::node_origins(const EmbeddedCutCells& before) 
     const int piece = fcm_.background_cells[cell];
     const std::vector<int>& tetrahedra = pieces_->tetrahedra[piece];
     if (tetrahedra.empty()) continue;
-    const int parent = embedded_.parent.empty() ? tetrahedra.front() : embedded_.parent[tetrahedra.front()];
+    // The fragment before the cut that the piece's first tetrahedron lies in: convex, so
+    // its part in this background cell lay in one piece there.
+    const int fragment = embedded_.material.fragment_of(tetrahedra.front());
+    const int parent = embedded_.parent.empty() ? fragment : embedded_.parent[fragment];
+    const FragmentedTetrahedra& old_material = before.embedded_.material;
     for (const int old_piece : old_pieces_of[pieces_->background_cell[piece]]) {
       const std::vector<int>& old_tetrahedra = old_pieces.tetrahedra[old_piece];
-      if (!std::binary_search(old_tetrahedra.begin(), old_tetrahedra.end(), parent)) continue;
+      if (std::none_of(old_tetrahedra.begin(), old_tetrahedra.end(),
+                       [&](int old) { return old_material.fragment_of(old) == parent; }))
+        continue;
       const int old_cell = old_kept[old_piece];
       if (old_cell >= 0)
         for (Eigen::Index k = 0; k < fcm_.mesh.cells.cols(); ++k)

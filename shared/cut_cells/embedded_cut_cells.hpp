@@ -19,6 +19,7 @@
 #include "shared/cut_cells/piece_mesh.hpp"
 #include "shared/io/unstructured_grid.hpp"
 #include "shared/mesh/cell_face_contact.hpp"
+#include "shared/mesh/cut_tetrahedral_mesh.hpp"
 #include "shared/mesh/cutting_plane.hpp"
 #include "shared/simulation/basis_embedding.hpp"
 #include "shared/simulation/scene_materials.hpp"
@@ -34,11 +35,14 @@ struct CutCellSettings {
   bool topology_aware = true;
 };
 
-/// The material: a Tet4 mesh conforming by node, and per tetrahedron the tetrahedron of
-/// the mesh it was cut from that it lies in (empty: not cut, the tetrahedra are their own).
+/// The material: Tet4 cells conforming by node in the convex fragments they fill
+/// (cut_tetrahedral_mesh.hpp), and per fragment the fragment of the material before the
+/// last cut that it lies in (empty: not cut, the fragments are their own).
 struct EmbeddedTetrahedra {
-  VolumeMesh mesh;
+  FragmentedTetrahedra material;
   std::vector<int> parent;
+
+  const VolumeMesh& mesh() const { return material.mesh; }
 };
 
 /// A background grid refined 1→8 (hexahedral_forest.hpp): its nodes from `free_nodes` on
@@ -129,8 +133,8 @@ private:
   std::vector<std::string> warnings_;
 };
 
-/// `tetrahedra` cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
-EmbeddedTetrahedra cut_embedded_tetrahedra(const VolumeMesh& tetrahedra, const CuttingPlane& blade,
+/// `material` cut by `blade` (cut_tetrahedral_mesh); `facts` receives its counts.
+EmbeddedTetrahedra cut_embedded_tetrahedra(const FragmentedTetrahedra& material, const CuttingPlane& blade,
                                            nlohmann::json& facts);
 
 }  // namespace altfem

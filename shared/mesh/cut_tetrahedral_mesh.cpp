@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <stdexcept>
 
 #include "shared/geometry/exact_orientation.hpp"
@@ -10,7 +11,37 @@
 namespace altfem {
 namespace {
 
-// The piece's node loops, each counter-clockwise seen from outside the piece.
+using TetrahedronRow = std::array<int, 4>;
+
+TetrahedronRow row_of(const VolumeMesh& mesh, int cell) {
+  return {mesh.cells(cell, 0), mesh.cells(cell, 1), mesh.cells(cell, 2), mesh.cells(cell, 3)};
+}
+
+// Below this fraction of its longest edge cubed, a tetrahedron is a sliver whose pieces'
+// rounded volumes may have either sign (a blade nearly parallel to a face leaves such
+// slivers): it is left out, losing no more volume than that, so that every kept one and
+// its pieces have positive volumes in floating point too and can be cut again.
+constexpr double flat_fraction = 1e-14;
+
+// Flat: not positively oriented (exact predicate) or a sliver by its rounded volume.
+bool is_flat(const Eigen::MatrixXd& nodes, const TetrahedronRow& row) {
+  const Eigen::Vector3d origin = nodes.row(row[0]), a = nodes.row(row[1]), b = nodes.row(row[2]), c = nodes.row(row[3]);
+  if (orientation_sign(a, b, c, origin) >= 0) return true;
+  const double longest = std::max(
+      {(a - origin).norm(), (b - origin).norm(), (c - origin).norm(), (b - a).norm(), (c - a).norm(), (c - b).norm()});
+  return (a - origin).cross(b - origin).dot(c - origin) / 6 <= flat_fraction * longest * longest * longest;
+}
+
+// Node a before node b by position (lexicographic coordinates; equal positions by index):
+// an order no cut changes, since nodes never move and a copy sits where its node does, so
+// a face fanned from its first node is fanned alike before and after any later cut.
+bool comes_before(const Eigen::MatrixXd& nodes, int a, int b) {
+  for (int axis = 0; axis < 3; ++axis)
+    if (nodes(a, axis) != nodes(b, axis)) return nodes(a, axis) < nodes(b, axis);
+  return a < b;
+}
+
+// The cell's node loops, each counter-clockwise seen from outside it.
 std::vector<std::vector<int>> outward_loops(const PolyhedralMesh& mesh, int cell) {
   std::vector<std::vector<int>> loops;
   for (const int face : mesh.cell_faces[cell]) {
@@ -21,107 +52,171 @@ std::vector<std::vector<int>> outward_loops(const PolyhedralMesh& mesh, int cell
   return loops;
 }
 
-// Below this fraction of its longest edge cubed, a tetrahedron is a sliver whose pieces'
-// rounded volumes may have either sign (a blade nearly parallel to a face leaves such
-// slivers): it is left out, losing no more volume than that, so that every kept one and
-// its pieces have positive volumes in floating point too and can be cut again.
-constexpr double flat_fraction = 1e-14;
-
-// Flat: not positively oriented (exact predicate) or a sliver by its rounded volume.
-bool is_flat(const Eigen::MatrixXd& nodes, const std::array<int, 4>& row) {
-  const Eigen::Vector3d origin = nodes.row(row[0]), a = nodes.row(row[1]), b = nodes.row(row[2]), c = nodes.row(row[3]);
-  if (orientation_sign(a, b, c, origin) >= 0) return true;
-  const double longest = std::max(
-      {(a - origin).norm(), (b - origin).norm(), (c - origin).norm(), (b - a).norm(), (c - a).norm(), (c - b).norm()});
-  return (a - origin).cross(b - origin).dot(c - origin) / 6 <= flat_fraction * longest * longest * longest;
+// The mesh without the cells `keep` drops (their faces with a kept cell become that
+// cell's boundary faces); nodes keep their numbers. `kept` receives each kept cell's index.
+PolyhedralMesh with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep, std::vector<int>& kept) {
+  std::vector<int> new_index(keep.size(), -1);
+  for (std::size_t cell = 0; cell < keep.size(); ++cell)
+    if (keep[cell]) {
+      new_index[cell] = static_cast<int>(kept.size());
+      kept.push_back(static_cast<int>(cell));
+    }
+  PolyhedralMesh result;
+  result.nodes = mesh.nodes;
+  result.cell_faces.resize(kept.size());
+  for (const int cell : kept) result.cell_kinds.push_back(mesh.cell_kinds[cell]);
+  std::vector<std::array<int, 2>> face_cells;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    const int kept_first = first >= 0 ? new_index[first] : -1, kept_second = second >= 0 ? new_index[second] : -1;
+    if (kept_first < 0 && kept_second < 0) continue;
+    std::vector<int> loop = mesh.faces[face];
+    if (kept_first < 0) std::reverse(loop.begin(), loop.end());  // now oriented for the second
+    const int index = static_cast<int>(result.faces.size());
+    result.faces.push_back(std::move(loop));
+    face_cells.push_back(kept_first >= 0 ? std::array<int, 2>{kept_first, kept_second}
+                                         : std::array<int, 2>{kept_second, -1});
+    for (const int cell : {kept_first, kept_second})
+      if (cell >= 0) result.cell_faces[cell].push_back(index);
+  }
+  result.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
+  for (std::size_t face = 0; face < face_cells.size(); ++face)
+    result.face_cells.row(static_cast<Eigen::Index>(face)) << face_cells[face][0], face_cells[face][1];
+  return result;
 }
 
-// The input without its flat tetrahedra (an earlier cut's slivers), with each kept
-// row's index in the input.
-VolumeMesh without_flat_tetrahedra(const VolumeMesh& mesh, std::vector<int>& kept, int& flat) {
-  VolumeMesh result{ElementType::tet4, mesh.nodes, Eigen::MatrixXi(mesh.cells.rows(), 4)};
-  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell) {
-    const std::array<int, 4> row{mesh.cells(cell, 0), mesh.cells(cell, 1), mesh.cells(cell, 2), mesh.cells(cell, 3)};
-    if (is_flat(mesh.nodes, row)) {
-      ++flat;
-      continue;
-    }
-    result.cells.row(static_cast<Eigen::Index>(kept.size())) = mesh.cells.row(cell);
-    kept.push_back(static_cast<int>(cell));
+// The input's fragments that hold a tetrahedron that is not flat, as the polyhedral mesh
+// the blade cuts: per kept fragment its input index and non-flat tetrahedra, and per
+// node of that mesh its input node.
+struct CutInput {
+  PolyhedralMesh mesh;
+  std::vector<int> fragment;                 ///< per cell of `mesh`
+  std::vector<std::vector<int>> tetrahedra;  ///< per cell of `mesh`
+  std::vector<int> input_node;               ///< per node of `mesh`
+};
+
+CutInput cut_input(const FragmentedTetrahedra& input, int& flat) {
+  const VolumeMesh& mesh = input.mesh;
+  std::vector<std::vector<int>> tetrahedra_of(static_cast<std::size_t>(input.fragment_count()));
+  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell) {
+    if (is_flat(mesh.nodes, row_of(mesh, cell))) ++flat;
+    else tetrahedra_of[input.fragment_of(cell)].push_back(cell);
   }
-  result.cells.conservativeResize(static_cast<Eigen::Index>(kept.size()), 4);
+  CutInput result;
+  std::vector<bool> keep(tetrahedra_of.size());
+  for (std::size_t fragment = 0; fragment < keep.size(); ++fragment) keep[fragment] = !tetrahedra_of[fragment].empty();
+  if (input.fragments.cell_count() > 0) {
+    result.mesh = with_cells(input.fragments, keep, result.fragment);
+    result.input_node.resize(static_cast<std::size_t>(mesh.nodes.rows()));
+    for (std::size_t node = 0; node < result.input_node.size(); ++node)
+      result.input_node[node] = static_cast<int>(node);
+  } else {
+    // Each tetrahedron its own fragment: polyhedral_mesh_from_volume_mesh keeps the used
+    // nodes in their order.
+    VolumeMesh kept{ElementType::tet4, mesh.nodes, Eigen::MatrixXi(mesh.cells.rows(), 4)};
+    for (std::size_t fragment = 0; fragment < keep.size(); ++fragment)
+      if (keep[fragment]) {
+        kept.cells.row(static_cast<Eigen::Index>(result.fragment.size())) =
+            mesh.cells.row(static_cast<Eigen::Index>(fragment));
+        result.fragment.push_back(static_cast<int>(fragment));
+      }
+    kept.cells.conservativeResize(static_cast<Eigen::Index>(result.fragment.size()), 4);
+    std::vector<bool> used(static_cast<std::size_t>(mesh.nodes.rows()), false);
+    for (Eigen::Index cell = 0; cell < kept.cells.rows(); ++cell)
+      for (int corner = 0; corner < 4; ++corner) used[kept.cells(cell, corner)] = true;
+    for (std::size_t node = 0; node < used.size(); ++node)
+      if (used[node]) result.input_node.push_back(static_cast<int>(node));
+    result.mesh = polyhedral_mesh_from_volume_mesh(kept);
+  }
+  for (const int fragment : result.fragment) result.tetrahedra.push_back(std::move(tetrahedra_of[fragment]));
   return result;
+}
+
+// The tetrahedra of a convex piece: a cone from its first node (by position) over the
+// faces that do not hold it, each fanned from its own first node; flat ones left out.
+void split_into_tetrahedra(const PolyhedralMesh& pieces, int piece, std::vector<TetrahedronRow>& rows, int& flat) {
+  const Eigen::MatrixXd& nodes = pieces.nodes;
+  const auto before = [&](int a, int b) { return comes_before(nodes, a, b); };
+  const std::vector<std::vector<int>> loops = outward_loops(pieces, piece);
+  int apex = loops[0][0];
+  for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
+  for (std::vector<int> loop : loops) {
+    if (std::find(loop.begin(), loop.end(), apex) != loop.end()) continue;
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      const TetrahedronRow row{apex, loop[0], loop[k], loop[k + 1]};
+      if (is_flat(nodes, row)) ++flat;
+      else rows.push_back(row);
+    }
+  }
+}
+
+// The input tetrahedra of a piece the blade did not cross, each corner taken as the copy
+// of its node that the piece holds; false when a corner has none (then it is split afresh).
+bool carry_tetrahedra(const PolyhedralMesh& pieces, int piece, const std::vector<NodeSource>& sources,
+                      const VolumeMesh& input, const std::vector<int>& tetrahedra, std::vector<TetrahedronRow>& rows) {
+  std::map<int, int> copy_of;
+  for (const int face : pieces.cell_faces[piece])
+    for (const int node : pieces.faces[face])
+      if (sources[node].weight == 0) copy_of[sources[node].first] = node;
+  const std::size_t start = rows.size();
+  for (const int tetrahedron : tetrahedra) {
+    TetrahedronRow row = row_of(input, tetrahedron);
+    for (int& corner : row) {
+      const auto found = copy_of.find(corner);
+      if (found == copy_of.end()) {
+        rows.resize(start);
+        return false;
+      }
+      corner = found->second;
+    }
+    rows.push_back(row);
+  }
+  return true;
 }
 
 }  // namespace
 
-TetrahedralCut cut_tetrahedral_mesh(const VolumeMesh& mesh, const CuttingPlane& plane) {
-  if (mesh.element_type != ElementType::tet4)
+int FragmentedTetrahedra::fragment_count() const {
+  return fragments.cell_count() > 0 ? fragments.cell_count() : static_cast<int>(mesh.cells.rows());
+}
+
+TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane) {
+  if (input.mesh.element_type != ElementType::tet4)
     throw std::invalid_argument("cut_tetrahedral_mesh: the mesh must be of Tet4 cells");
   TetrahedralCut result;
-  std::vector<int> kept_cell;
-  const VolumeMesh input = without_flat_tetrahedra(mesh, kept_cell, result.flat_tetrahedra);
-  // polyhedral_mesh_from_volume_mesh keeps the used nodes in their order.
-  std::vector<int> input_node;
-  {
-    std::vector<bool> used(static_cast<std::size_t>(mesh.nodes.rows()), false);
-    for (Eigen::Index cell = 0; cell < input.cells.rows(); ++cell)
-      for (int corner = 0; corner < 4; ++corner) used[input.cells(cell, corner)] = true;
-    for (std::size_t node = 0; node < used.size(); ++node)
-      if (used[node]) input_node.push_back(static_cast<int>(node));
-  }
-  const PolyhedralCut cut = cut_polyhedral_mesh(polyhedral_mesh_from_volume_mesh(input), plane, false);
-  const PolyhedralMesh& pieces = cut.mesh;
-
-  result.crossed_tetrahedra = cut.crossed_cells;
-  result.joined_tetrahedra = cut.joined_cells;
+  const CutInput fragments = cut_input(input, result.flat_tetrahedra);
+  PolyhedralCut cut = cut_polyhedral_mesh(fragments.mesh, plane, false);
+  result.crossed_fragments = cut.crossed_cells;
+  result.joined_fragments = cut.joined_cells;
   result.separated_faces = cut.separated_faces;
   result.duplicated_nodes = cut.duplicated_nodes;
   result.snapped_nodes = cut.snapped_nodes;
-  result.mesh.element_type = ElementType::tet4;
-  result.mesh.nodes = pieces.nodes;
   for (const NodeSource& source : cut.node_sources)
-    result.node_sources.push_back({input_node[source.first], input_node[source.second], source.weight});
+    result.node_sources.push_back(
+        {fragments.input_node[source.first], fragments.input_node[source.second], source.weight});
 
-  // Input node → the cut node of the same input node used by one piece (its copy on the
-  // piece's side when it lies on the blade).
-  std::vector<std::array<int, 4>> rows;
-  rows.reserve(static_cast<std::size_t>(input.cells.rows()) + 2 * static_cast<std::size_t>(cut.crossed_cells));
-  for (int piece = 0; piece < pieces.cell_count(); ++piece) {
-    const int parent = kept_cell[cut.parent_cell[piece]];
-    const std::vector<std::vector<int>> loops = outward_loops(pieces, piece);
-    if (pieces.cell_kinds[piece] != PolyhedralCellKind::split) {
-      // Not crossed: the input row, each corner as the copy this piece holds.
-      std::array<int, 4> row{};
-      for (int corner = 0; corner < 4; ++corner)
-        for (const auto& loop : loops)
-          for (const int node : loop)
-            if (result.node_sources[node].weight == 0 && result.node_sources[node].first == mesh.cells(parent, corner))
-              row[corner] = node;
-      rows.push_back(row);
-      result.parent_tetrahedron.push_back(parent);
-      continue;
-    }
-    int apex = loops[0][0];
-    for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end()));
-    for (std::vector<int> loop : loops) {
-      if (std::find(loop.begin(), loop.end(), apex) != loop.end()) continue;
-      std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end()), loop.end());
-      for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-        const std::array<int, 4> row{apex, loop[0], loop[k], loop[k + 1]};
-        if (is_flat(pieces.nodes, row)) {
-          ++result.flat_tetrahedra;
-          continue;
-        }
-        rows.push_back(row);
-        result.parent_tetrahedron.push_back(parent);
-      }
-    }
+  std::vector<int> pieces_of(fragments.tetrahedra.size(), 0);
+  for (const int parent : cut.parent_cell) ++pieces_of[parent];
+  std::vector<TetrahedronRow> rows;
+  rows.reserve(static_cast<std::size_t>(input.mesh.cells.rows()) + 4 * static_cast<std::size_t>(cut.crossed_cells));
+  FragmentedTetrahedra& output = result.result;
+  for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
+    const int parent = cut.parent_cell[piece];
+    const std::size_t first_row = rows.size();
+    if (pieces_of[parent] > 1 ||
+        !carry_tetrahedra(cut.mesh, piece, result.node_sources, input.mesh, fragments.tetrahedra[parent], rows))
+      split_into_tetrahedra(cut.mesh, piece, rows, result.flat_tetrahedra);
+    output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
+    result.parent_fragment.push_back(fragments.fragment[parent]);
   }
-  result.mesh.cells.resize(static_cast<Eigen::Index>(rows.size()), 4);
+  output.mesh.element_type = ElementType::tet4;
+  output.mesh.nodes = cut.mesh.nodes;
+  output.mesh.cells.resize(static_cast<Eigen::Index>(rows.size()), 4);
   for (std::size_t row = 0; row < rows.size(); ++row)
     for (int corner = 0; corner < 4; ++corner)
-      result.mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+      output.mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+  output.fragments = std::move(cut.mesh);
   return result;
 }
 

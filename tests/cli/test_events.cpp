@@ -120,7 +120,7 @@ TEST(Events, ACutIsSummarisedAndAMethodThatCannotCutRefusesIt) {
   const auto fcm = run_altfem({"run", scene, "--method", "fcm", "--out", fcm_out.string()});
   ASSERT_EQ(fcm.exit_code, 0) << fcm.err;
   const nlohmann::json fcm_summary = read_summary(fcm_out);
-  EXPECT_GT(fcm_summary["events"][0]["facts"]["crossed_tetrahedra"].get<int>(), 0);
+  EXPECT_GT(fcm_summary["events"][0]["facts"]["crossed_fragments"].get<int>(), 0);
   EXPECT_EQ(fcm_summary["elements"]["hex20"], 11);
   // fcm without topology-aware cells has no node copies to separate the sides.
   for (const std::string method : {"fcm"}) {

@@ -37,7 +37,7 @@ public:
     // boundary, open along the cut. Surface loads act on the boundary of the material, the
     // cut tetrahedra's (the blade's faces included, unloaded by tractions given on the
     // original boundary's regions).
-    surface_.load_surface = boundary_surface(cells_->embedded().mesh).surface;
+    surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
     surface_.evaluator = cells_->basis_evaluator();
     surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
@@ -65,8 +65,8 @@ public:
     return facts;
   }
   std::shared_ptr<const MethodMesh> mesh() const override {
-    return std::make_shared<MeshOf<FemMesh>>(
-        FemMesh{elements_, EmbeddedTetrahedra{cells_->embedded().mesh, {}}, std::nullopt, {}, cells_->rule_memory()});
+    return std::make_shared<MeshOf<FemMesh>>(FemMesh{
+        elements_, EmbeddedTetrahedra{cells_->embedded().material, {}}, std::nullopt, {}, cells_->rule_memory()});
   }
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }

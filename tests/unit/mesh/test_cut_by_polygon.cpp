@@ -165,15 +165,15 @@ TEST(CutByPolygon, SeededPolygonsGiveClosedPiecesAndConformingTetrahedra) {
       ASSERT_TRUE(every_node_at_its_source(mesh.nodes, cut));
       if (type != ElementType::tet4) continue;
       TetrahedralCut tetrahedra;
-      ASSERT_NO_THROW(tetrahedra = cut_tetrahedral_mesh(grid, blade));
+      ASSERT_NO_THROW(tetrahedra = cut_tetrahedral_mesh({grid}, blade));
       double volume = 0;
       std::map<std::array<int, 3>, int> face_count;
-      for (Eigen::Index cell = 0; cell < tetrahedra.mesh.cells.rows(); ++cell) {
-        const auto row = tetrahedra.mesh.cells.row(cell);
-        const Eigen::Vector3d origin = tetrahedra.mesh.nodes.row(row(0));
-        const double cell_volume = (Eigen::Vector3d(tetrahedra.mesh.nodes.row(row(1))) - origin)
-                                       .cross(Eigen::Vector3d(tetrahedra.mesh.nodes.row(row(2))) - origin)
-                                       .dot(Eigen::Vector3d(tetrahedra.mesh.nodes.row(row(3))) - origin) /
+      for (Eigen::Index cell = 0; cell < tetrahedra.result.mesh.cells.rows(); ++cell) {
+        const auto row = tetrahedra.result.mesh.cells.row(cell);
+        const Eigen::Vector3d origin = tetrahedra.result.mesh.nodes.row(row(0));
+        const double cell_volume = (Eigen::Vector3d(tetrahedra.result.mesh.nodes.row(row(1))) - origin)
+                                       .cross(Eigen::Vector3d(tetrahedra.result.mesh.nodes.row(row(2))) - origin)
+                                       .dot(Eigen::Vector3d(tetrahedra.result.mesh.nodes.row(row(3))) - origin) /
                                    6;
         ASSERT_GT(cell_volume, 0.0) << "tetrahedron " << cell;
         volume += cell_volume;
@@ -189,8 +189,9 @@ TEST(CutByPolygon, SeededPolygonsGiveClosedPiecesAndConformingTetrahedra) {
         ASSERT_LE(count, 2);
         if (count == 2) continue;
         const auto on = [&](auto&& predicate) {
-          return std::all_of(face.begin(), face.end(),
-                             [&](int node) { return predicate(Eigen::Vector3d(tetrahedra.mesh.nodes.row(node))); });
+          return std::all_of(face.begin(), face.end(), [&](int node) {
+            return predicate(Eigen::Vector3d(tetrahedra.result.mesh.nodes.row(node)));
+          });
         };
         const bool on_boundary = [&] {
           for (int axis = 0; axis < 3; ++axis)

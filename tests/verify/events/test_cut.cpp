@@ -160,7 +160,7 @@ TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
     // The blade cuts the embedded tetrahedra (fem: its elements' own); of the 10 cells,
     // [0.5, 0.6] holds two pieces of material after it, each a cell with its own copies of
     // the cell's nodes (fem: the virtual node algorithm).
-    EXPECT_GT(record.facts["crossed_tetrahedra"].get<int>(), 0);
+    EXPECT_GT(record.facts["crossed_fragments"].get<int>(), 0);
     EXPECT_EQ(record.facts["flat_tetrahedra"], 0);
     EXPECT_EQ(simulation.method().facts()["cells"]["split"], 1);
     EXPECT_EQ(element_count(simulation.method()), cells_before + 1);
