@@ -2,6 +2,8 @@
 #include "shared/fem/fem_scene_block.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <string>
 
 #include "shared/mesh/structured_grid.hpp"
@@ -42,6 +44,29 @@ void resolve_file_element(const Validator& validator, const json& geometry, json
                                              fem["element"].get<std::string>() + "'");
 }
 
+// A grid over a shape built of boxes holds it exactly when each of the shape's planes is
+// one of the grid's: then every cell lies wholly inside or outside it.
+void check_grid_holds_faces(const Validator& validator, const AnalyticShape& shape, const json& fem,
+                            const std::string& pointer) {
+  const Eigen::AlignedBox3d bounds = shape.bounding_box();
+  const AxisPlanes planes = *shape.axis_planes();
+  for (int axis = 0; axis < 3; ++axis) {
+    const int cells = fem["resolution"][axis].get<int>();
+    const double spacing = bounds.sizes()[axis] / cells;
+    for (const double plane : planes[axis]) {
+      const double index = (plane - bounds.min()[axis]) / spacing;
+      if (std::abs(index - std::round(index)) > 1e-9 * cells) {
+        std::ostringstream message;
+        message << "must put a grid plane on each face of the shape: "
+                << "xyz"[axis] << " = " << plane << " falls between the planes " << bounds.min()[axis] << " + k · "
+                << spacing;
+        validator.fail(pointer + "/resolution", message.str());
+        return;
+      }
+    }
+  }
+}
+
 // The defaults that depend on the geometry (docs/scene-schema.md, "fem").
 void complete_fem(const Validator& validator, const json& scene, json& fem, const std::string& pointer) {
   const json& geometry = scene["geometry"];
@@ -54,8 +79,13 @@ void complete_fem(const Validator& validator, const json& scene, json& fem, cons
   if (!fem.contains("element")) fem["element"] = "tet10";
   const ElementType element = *element_type_from_name(fem["element"].get<std::string>());
   const bool hex = element_shape(element) == ElementShape::hexahedron;
-  if (mesh == "grid" && !is_box)
-    validator.fail(pointer + "/mesh", "'grid' needs an analytic box geometry, got " + geometry_kind(geometry));
+  const ShapePointer shape = geometry.contains("shape") ? shape_from_json(geometry["shape"]) : nullptr;
+  const bool built_of_boxes = shape && shape->axis_planes();
+  if (mesh == "grid" && !built_of_boxes)
+    validator.fail(pointer + "/mesh", "'grid' needs a box or a shape built of boxes, got " + geometry_kind(geometry));
+  if (mesh == "grid" && !is_box && !fem.contains("resolution"))
+    validator.fail(pointer + "/resolution",
+                   "is required for 'grid' on a shape built of boxes: cells whose faces hold the shape's faces");
   if (mesh == "tetrahedralize" && geometry.contains("mesh"))
     validator.fail(pointer + "/mesh",
                    "'tetrahedralize' needs a surface or shape geometry, got " + geometry_kind(geometry));
@@ -67,6 +97,8 @@ void complete_fem(const Validator& validator, const json& scene, json& fem, cons
   if (mesh != "tetrahedralize" && fem.contains("max_cell_size"))
     validator.fail(pointer + "/max_cell_size", "applies only to mesh 'tetrahedralize', got mesh '" + mesh + "'");
 
+  if (mesh == "grid" && !is_box && built_of_boxes && fem.contains("resolution"))
+    check_grid_holds_faces(validator, *shape, fem, pointer);
   const double scale = geometry["scale"].get<double>();
   if (mesh == "grid" && !fem.contains("resolution")) {
     const Eigen::Vector3d extent = scale * (vector3_from_json(geometry["shape"]["box"]["max"]) -

@@ -110,6 +110,19 @@ HexahedralForest grid_forest(const Eigen::AlignedBox3d& box, const Eigen::Vector
   return forest;
 }
 
+void keep_leaves(HexahedralForest& forest, const std::vector<bool>& keep) {
+  if (keep.size() != forest.levels.size()) throw std::invalid_argument("keep_leaves: a flag per leaf");
+  std::size_t kept = 0;
+  for (std::size_t leaf = 0; leaf < keep.size(); ++leaf)
+    if (keep[leaf]) {
+      forest.origins[kept] = forest.origins[leaf];
+      forest.levels[kept] = forest.levels[leaf];
+      ++kept;
+    }
+  forest.origins.resize(kept);
+  forest.levels.resize(kept);
+}
+
 HexahedralForest refine_forest(const HexahedralForest& forest, const std::vector<int>& marked, int* balancing_splits) {
   std::vector<char> split(static_cast<std::size_t>(forest.leaf_count()), 0);
   for (const int leaf : marked) split.at(leaf) = 1;
@@ -260,23 +273,39 @@ std::vector<CellFaceContact> forest_face_contacts(const std::vector<ForestFace>&
 
 BoundarySurface forest_boundary_surface(const HexahedralForest& forest, const VolumeMesh& mesh) {
   const BoundarySurface all = boundary_surface(mesh);
-  const double tolerance = 1e-9 * forest.box.diagonal().norm();
-  const auto on_box_plane = [&](const Eigen::Index triangle) {
-    for (int axis = 0; axis < 3; ++axis)
-      for (const double plane : {forest.box.min()[axis], forest.box.max()[axis]}) {
-        bool all_on = true;
-        for (int c = 0; c < 3; ++c)
-          all_on =
-              all_on && std::abs(all.surface.vertices(all.surface.triangles(triangle, c), axis) - plane) <= tolerance;
-        if (all_on) return true;
-      }
-    return false;
+  const LeafLocator locator(forest);
+  const Eigen::Array3d units_per_length =
+      (forest.resolution.cast<double>() * units).array() / forest.box.sizes().array();
+  // A triangle with a leaf on both sides (a coarse face and the finer ones on it, which
+  // boundary_surface cannot match) is interior: half a lattice unit either way from its
+  // centroid, across the grid plane it lies in, are points of leaves.
+  const auto interior = [&](const Eigen::Index triangle) {
+    Eigen::Matrix3d lattice;  // rows: the corners in lattice units
+    for (int c = 0; c < 3; ++c)
+      lattice.row(c) = ((all.surface.vertices.row(all.surface.triangles(triangle, c)).transpose().array() -
+                         forest.box.min().array()) *
+                        units_per_length)
+                           .transpose();
+    const Eigen::Vector3d centroid = lattice.colwise().mean().transpose();
+    int axis = -1;
+    for (int a = 0; a < 3; ++a)
+      if (lattice.col(a).maxCoeff() - lattice.col(a).minCoeff() < 1e-6) axis = a;
+    if (axis < 0) return false;
+    Eigen::Vector3i doubled;
+    for (int a = 0; a < 3; ++a)
+      doubled[a] = static_cast<int>(a == axis ? std::lround(2 * centroid[a]) : std::floor(2 * centroid[a]));
+    for (const int side : {-1, 1}) {
+      Eigen::Vector3i probe = doubled;
+      probe[axis] += side;
+      if (locator.locate(probe) < 0) return false;
+    }
+    return true;
   };
   BoundarySurface kept;
   std::vector<int> vertex_of(all.mesh_nodes.size(), -1);
   std::vector<Eigen::RowVector3i> triangles;
   for (Eigen::Index t = 0; t < all.surface.triangles.rows(); ++t) {
-    if (!on_box_plane(t)) continue;
+    if (interior(t)) continue;
     Eigen::RowVector3i triangle;
     for (int c = 0; c < 3; ++c) {
       int& vertex = vertex_of[all.surface.triangles(t, c)];

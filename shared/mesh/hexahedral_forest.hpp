@@ -42,6 +42,11 @@ struct HexahedralForest {
 /// empty box or resolution.
 HexahedralForest grid_forest(const Eigen::AlignedBox3d& box, const Eigen::Vector3i& resolution, ElementType type);
 
+/// Leaves out the leaves `keep` (a flag per leaf) does not keep: a grid over a shape built
+/// of boxes keeps its cells inside the shape. What is left is refined, balanced and meshed
+/// like any forest; where a leaf is missing is outside.
+void keep_leaves(HexahedralForest& forest, const std::vector<bool>& keep);
+
 /// `forest` with the `marked` leaves (indices) split into their eighths — children in place
 /// of their parent, x fastest — and then every leaf that a face or edge neighbour more than
 /// one level finer touches split too, until none does: the 2:1 balance under which each
@@ -89,9 +94,9 @@ std::vector<ForestFace> forest_interior_faces(const HexahedralForest& forest);
 /// leaf's face touches the faces of up to four finer ones.
 std::vector<CellFaceContact> forest_face_contacts(const std::vector<ForestFace>& faces);
 
-/// The boundary of forest_mesh's mesh: boundary_surface's faces on the grid's box only — a
-/// coarse face and the finer faces on it, which boundary_surface cannot match, are
-/// interior. Vertices no kept triangle uses are dropped.
+/// The boundary of forest_mesh's mesh: boundary_surface's faces without a leaf on their
+/// other side — a coarse face and the finer faces on it, which boundary_surface cannot
+/// match, are interior. Vertices no kept triangle uses are dropped.
 BoundarySurface forest_boundary_surface(const HexahedralForest& forest, const VolumeMesh& mesh);
 
 }  // namespace altfem

@@ -40,8 +40,11 @@ public:
       constraints_ = handed->constraints;
     } else {
       mesh_ = build_fem_mesh(fem, geometry);
-      if (fem.mesh == FemMeshKind::grid && element_shape(fem.element) == ElementShape::hexahedron)
+      if (fem.mesh == FemMeshKind::grid && element_shape(fem.element) == ElementShape::hexahedron) {
         forest_ = grid_forest(geometry.bounds, fem.resolution, fem.element);
+        const std::vector<bool> inside = grid_cells_in_shape(fem, geometry);
+        if (!inside.empty()) keep_leaves(*forest_, inside);
+      }
     }
     if (constraints_.empty()) constraints_.free_nodes = static_cast<int>(mesh_.nodes.rows());  // none hangs
     const auto start = std::chrono::steady_clock::now();

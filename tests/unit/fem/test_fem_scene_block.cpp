@@ -79,5 +79,31 @@ TEST(FemSceneBlock, BadCombinationsNameTheKey) {
   EXPECT_NE(message(R"({"elemnt": "hex8"})").find("did you mean 'element'"), std::string::npos);
 }
 
+// A grid over a shape built of boxes (an L: two boxes) keeps the cells inside it, so each
+// of the shape's planes must be a plane of the grid, and its resolution is not guessed.
+TEST(FemSceneBlock, AGridOnAShapeBuiltOfBoxesNeedsPlanesOnItsFaces) {
+  const auto message = [](const std::string& block) {
+    try {
+      (void)fem_spec(parse_scene(R"({"geometry": {"shape": {"union": [
+                                       {"box": {"min": [0, 0, 0], "max": [1, 0.5, 0.25]}},
+                                       {"box": {"min": [0, 0, 0], "max": [0.5, 1, 0.25]}}]}},
+                                     "material": {"youngs_modulus": 1, "poisson_ratio": 0},
+                                     "discretization": {"fem": )" +
+                                     block + "}}",
+                                 "l.json"));
+    } catch (const InputError& error) {
+      return std::string(error.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(R"({"mesh": "grid", "element": "hex8", "resolution": [4, 2, 1]})"), "no error");
+  EXPECT_EQ(message(R"({"mesh": "grid", "element": "hex8", "resolution": [3, 2, 1]})"),
+            "l.json: /discretization/fem/resolution: must put a grid plane on each face of the shape: x = 0.5 falls "
+            "between the planes 0 + k · 0.333333");
+  EXPECT_EQ(message(R"({"mesh": "grid", "element": "hex8"})"),
+            "l.json: /discretization/fem/resolution: is required for 'grid' on a shape built of boxes: cells whose "
+            "faces hold the shape's faces");
+}
+
 }  // namespace
 }  // namespace altfem

@@ -125,6 +125,36 @@ TEST(HexahedralForest, InteriorFacesAndTheBoundaryCoverTheirAreasOnce) {
   EXPECT_NEAR(area, 2 * (0.5 + 0.25 + 0.125), 1e-14);
 }
 
+// A grid over an L-shape: the 2 × 2 × 1 grid without its cell at x, y > 1/2, the cell at
+// the re-entrant edge split twice. The boundary holds the faces into the missing cell (the
+// re-entrant faces, which lie on no plane of the box) and none of the faces between a leaf
+// and its finer neighbours: its area is the L's, and every edge of it is shared by two
+// triangles (closed).
+TEST(HexahedralForest, TheBoundaryOfAGridWithoutACellHoldsTheFacesIntoIt) {
+  HexahedralForest forest = grid_forest(unit_box, Eigen::Vector3i(2, 2, 1), ElementType::hex8);
+  keep_leaves(forest, {true, true, true, false});
+  ASSERT_EQ(forest.leaf_count(), 3);
+  forest = refine_forest(forest, {0});
+  forest = refine_forest(forest, {3});  // its eighth at the re-entrant edge (x, y = 1/2)
+  const ConstrainedHexahedralMesh mesh = forest_mesh(forest);
+  const BoundarySurface boundary = forest_boundary_surface(forest, mesh.mesh);
+  double area = 0, re_entrant = 0;
+  for (Eigen::Index t = 0; t < boundary.surface.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = boundary.surface.vertices.row(boundary.surface.triangles(t, 0));
+    const Eigen::Vector3d b = boundary.surface.vertices.row(boundary.surface.triangles(t, 1));
+    const Eigen::Vector3d c = boundary.surface.vertices.row(boundary.surface.triangles(t, 2));
+    const double triangle = 0.5 * (b - a).cross(c - a).norm();
+    area += triangle;
+    const Eigen::Vector3d centroid = (a + b + c) / 3;
+    const bool on_x_half = std::abs(a.x() - 0.5) + std::abs(b.x() - 0.5) + std::abs(c.x() - 0.5) < 1e-15;
+    const bool on_y_half = std::abs(a.y() - 0.5) + std::abs(b.y() - 0.5) + std::abs(c.y() - 0.5) < 1e-15;
+    if ((on_x_half && centroid.y() > 0.5) || (on_y_half && centroid.x() > 0.5)) re_entrant += triangle;
+  }
+  // Top and bottom 3/4 each, the outer sides 1 + 1 + 1/2 + 1/2, the re-entrant ones 1/2 + 1/2.
+  EXPECT_NEAR(area, 2 * 0.75 + 3 + 1, 1e-14);
+  EXPECT_NEAR(re_entrant, 1, 1e-15);
+}
+
 TEST(HexahedralForest, ALeafAtTheDeepestLevelIsRefused) {
   HexahedralForest forest = grid_forest(unit_box, Eigen::Vector3i::Ones(), ElementType::hex8);
   for (int level = 0; level < max_forest_level; ++level) forest = refine_forest(forest, {0});

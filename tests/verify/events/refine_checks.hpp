@@ -1,17 +1,23 @@
 #pragma once
 // What the refine tests check alike: the patch test's affine field on the 1 × 0.1 × 0.1 m
 // cantilever (E = 1e8 Pa, ν = 0.3) and its exact energy, the refine event limited to the
-// clamped half, and a refine event refused before the run.
+// clamped half, a refine event refused before the run, and the static L-shaped beam's
+// energy after refinement cycles.
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "app/method_registry.hpp"
 #include "shared/common/error.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
+#include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
 
 namespace altfem {
@@ -53,6 +59,38 @@ inline void expect_refine_refused(const Scene& scene, const std::string& method_
               std::string::npos)
         << error.what();
   }
+}
+
+/// The DOFs and the total energy of the last solve of the static L-shaped beam
+/// (tests/verify/events/scenes/l_beam.json) with `overrides`, run by `method`: the last line
+/// of log.txt (step, time, dofs, iterations, linear iterations, residual, total energy, …).
+inline std::pair<double, double> l_beam_solution(const std::string& method, const std::vector<SceneOverride>& overrides,
+                                                 const std::string& name) {
+  const Scene scene =
+      load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes/l_beam.json", overrides);
+  const std::filesystem::path output =
+      std::filesystem::path(ALTFEM_BINARY_DIR) / ("verify_refine_" + method + "_" + name);
+  std::filesystem::remove_all(output);
+  const nlohmann::json summary =
+      run_simulation(scene, load_scene_geometry(scene), method, cli::find_method(method), output, 0.0);
+  EXPECT_EQ(summary["status"], "ok") << name;
+  std::ifstream log(output / "log.txt");
+  std::string line, last;
+  while (std::getline(log, line))
+    if (!line.empty() && line[0] != '#') last = line;
+  std::istringstream fields(last);
+  double step, time, dofs, iterations, linear_iterations, residual, energy;
+  fields >> step >> time >> dofs >> iterations >> linear_iterations >> residual >> energy;
+  std::filesystem::remove_all(output);
+  return {dofs, energy};
+}
+
+/// A refine event at t = 0 by the error indicator with `marking` ("\"fraction\": 0.5" or a
+/// threshold), re-solving `cycles` times.
+inline SceneOverride refine_cycles(const std::string& marking, int max_level, int cycles) {
+  return parse_scene_override("events=[{\"time\": 0, \"refine\": {\"criterion\": \"error_indicator\", " + marking +
+                              ", \"max_level\": " + std::to_string(max_level) +
+                              ", \"cycles\": " + std::to_string(cycles) + "}}]");
 }
 
 }  // namespace altfem

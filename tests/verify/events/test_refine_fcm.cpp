@@ -133,36 +133,9 @@ TEST(RefineFcm, RefiningEveryCellWithMaterialIsTheUniformlyFinerGrid) {
 // to the kept one: more marked cells then give a larger space and a lower energy. Two runs
 // from the same 4 × 4 × 1 grid (two uniform cycles alike), the third cycle marking more cells
 // in the second: Π_h − Π = ½ |u − u_h|²_E for this conforming, exactly integrated method.
-// The DOFs and the total energy of the last solve of the static L-shaped beam with
-// `overrides`: the last line of log.txt (step, time, dofs, iterations, linear iterations,
-// residual, total energy, …).
-std::pair<double, double> l_beam_solution(const std::vector<SceneOverride>& overrides, const std::string& name) {
-  const Scene scene = load_scene(events_scenes / "l_beam.json", overrides);
-  const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / ("verify_refine_fcm_" + name);
-  std::filesystem::remove_all(output);
-  const nlohmann::json summary =
-      run_simulation(scene, load_scene_geometry(scene), "fcm", cli::find_method("fcm"), output, 0.0);
-  EXPECT_EQ(summary["status"], "ok") << name;
-  std::ifstream log(output / "log.txt");
-  std::string line, last;
-  while (std::getline(log, line))
-    if (!line.empty() && line[0] != '#') last = line;
-  std::istringstream fields(last);
-  double step, time, dofs, iterations, linear_iterations, residual, energy;
-  fields >> step >> time >> dofs >> iterations >> linear_iterations >> residual >> energy;
-  std::filesystem::remove_all(output);
-  return {dofs, energy};
-}
-
-SceneOverride refine_cycles(const std::string& marking, int max_level, int cycles) {
-  return parse_scene_override("events=[{\"time\": 0, \"refine\": {\"criterion\": \"error_indicator\", " + marking +
-                              ", \"max_level\": " + std::to_string(max_level) +
-                              ", \"cycles\": " + std::to_string(cycles) + "}}]");
-}
-
 TEST(RefineFcm, MoreMarkedCellsLowerTheStaticEnergyOnAnLShape) {
-  const auto [fewer_dofs, fewer_energy] = l_beam_solution({refine_cycles("\"threshold\": 500", 3, 3)}, "500");
-  const auto [more_dofs, more_energy] = l_beam_solution({refine_cycles("\"threshold\": 300", 3, 3)}, "300");
+  const auto [fewer_dofs, fewer_energy] = l_beam_solution("fcm", {refine_cycles("\"threshold\": 500", 3, 3)}, "500");
+  const auto [more_dofs, more_energy] = l_beam_solution("fcm", {refine_cycles("\"threshold\": 300", 3, 3)}, "300");
   EXPECT_GT(more_dofs, fewer_dofs);
   EXPECT_LT(more_energy, fewer_energy);
 }
@@ -174,9 +147,9 @@ TEST(RefineFcm, MoreMarkedCellsLowerTheStaticEnergyOnAnLShape) {
 TEST(RefineFcm, AdaptiveRefinementReachesTheUniformErrorWithAThirdOfTheDofsOnAnLShape) {
   const SceneOverride hex20 = parse_scene_override("discretization/fcm/cell=\"hex20\"");
   const auto [uniform_dofs, uniform_energy] =
-      l_beam_solution({hex20, parse_scene_override("discretization/fcm/resolution=[16, 16, 4]")}, "uniform");
+      l_beam_solution("fcm", {hex20, parse_scene_override("discretization/fcm/resolution=[16, 16, 4]")}, "uniform");
   const auto [adaptive_dofs, adaptive_energy] =
-      l_beam_solution({hex20, refine_cycles("\"fraction\": 0.5", 10, 4)}, "adaptive");
+      l_beam_solution("fcm", {hex20, refine_cycles("\"fraction\": 0.5", 10, 4)}, "adaptive");
   EXPECT_LE(adaptive_energy, uniform_energy);
   EXPECT_LE(adaptive_dofs, uniform_dofs / 3);
 }
