@@ -2,13 +2,18 @@
 """Adaptive against uniform refinement where the error concentrates (issue #34): an L-shaped
 beam (bench/scenes/l_beam.json: two boxes, 1 x 1 x 0.25 m overall, clamped at y = 1 and
 bending under its weight along -y), whose re-entrant edge at x = y = 0.5 is a stress
-singularity, solved by fcm on uniform Hex8 and Hex20 grids and adaptively from the coarsest
-grid by `refine` cycles of the error indicator with bulk marking (`fraction`: the cells
-carrying that share of h |[sigma n]|^2; 1->8, hanging nodes constrained).
+singularity, solved by fcm and fem on uniform Hex8 and Hex20 grids and adaptively from the
+coarsest grid by `refine` cycles of the error indicator with bulk marking (`fraction`: the
+cells carrying that share of h |[sigma n]|^2; 1->8, hanging nodes constrained). fem's grid
+is the beam's bounds without the empty quadrant's cells (`grid` on a shape built of boxes);
+fcm keeps the same cells, so their uniform runs are the same space, and their adaptive runs
+differ by the indicator (fem's weighs the boundary faces against the loads, fcm's leaves
+them out: the body's boundary crosses its cut cells in general).
 
 The comparison needs no reference solution. For a conforming method integrated exactly
-(fcm here: every cell is whole or empty, its rules are exact for the stiffness and the
-constant load), the static total energy is the potential energy Pi(u_h), and
+(fcm: every cell is whole or empty, its rules are exact for the stiffness and the constant
+load; fem: Hex8 at its default strength 2, Hex20 at strength 6), the static total energy is
+the potential energy Pi(u_h), and
 Pi(u_h) - Pi(u) = 1/2 |u - u_h|^2 in the energy norm: a lower energy is a smaller error.
 So an adaptive run "reaches the finest uniform run's error" when its energy is at most
 that run's. For the tables and the plot, the energy-norm error is estimated against Pi(u)
@@ -32,15 +37,25 @@ UNIFORM = {"hex8": [[4, 4, 1], [8, 8, 2], [16, 16, 4], [32, 32, 8], [64, 64, 16]
 # Refinement cycles of the adaptive runs, each a run of its own from the coarsest grid (so
 # that its time is the whole road to its mesh).
 CYCLES = {"hex8": range(3, 10), "hex20": range(2, 8)}
+METHODS = ["fcm", "fem"]
 
 
-def run(altfem, scene, out):
+def discretization(method, cell, resolution):
+    """The method's block for `cell` on the grid of `resolution`."""
+    if method == "fcm":
+        return {"fcm": {"cell": cell, "resolution": resolution, "stabilization": 0}}
+    # Strength 6 integrates an affine Hex20's stiffness exactly (degree <= 4 per axis).
+    return {"fem": {"element": cell, "mesh": "grid", "resolution": resolution,
+                    "quadrature_order": 6 if cell == "hex20" else 2}}
+
+
+def run(altfem, method, scene, out):
     """One `altfem run` of `scene` (a dict); returns (DOFs, final total energy, wall seconds)."""
     out.mkdir(parents=True, exist_ok=True)
     path = out / "scene.json"
     path.write_text(json.dumps(scene, indent=1))
     start = time.perf_counter()
-    subprocess.run([altfem, "run", str(path), "--method", "fcm", "--out", str(out / "run")], check=True,
+    subprocess.run([altfem, "run", str(path), "--method", method, "--out", str(out / "run")], check=True,
                    stdout=subprocess.DEVNULL)
     seconds = time.perf_counter() - start
     last = [line.split() for line in (out / "run/log.txt").read_text().splitlines() if not line.startswith("#")][-1]
@@ -69,11 +84,12 @@ def table(title, rows, limit):
 def plot(series, limit, path):
     """Energy-norm error against DOFs and against seconds, uniform and adaptive per cell."""
     lines = {}
-    for (cell, kind), rows in series.items():
-        points = [(row[1], row[3], math.sqrt(max(2 * (row[2] - limit[cell]), 1e-30))) for row in rows]
-        lines[f"fcm {cell} {kind}"] = (line_style(kind == "uniform", "C0" if cell == "hex8" else "C1"), points)
+    colours = {("fcm", "hex8"): "C0", ("fcm", "hex20"): "C1", ("fem", "hex8"): "C2", ("fem", "hex20"): "C3"}
+    for (method, cell, kind), rows in series.items():
+        points = [(row[1], row[3], math.sqrt(max(2 * (row[2] - limit[(method, cell)]), 1e-30))) for row in rows]
+        lines[f"{method} {cell} {kind}"] = (line_style(kind == "uniform", colours[(method, cell)]), points)
     plot_error_against_cost(lines, "energy-norm error [J^1/2]",
-                            "L-shaped beam (re-entrant edge): adaptive against uniform refinement, fcm", path)
+                            "L-shaped beam (re-entrant edge): adaptive against uniform refinement, fcm and fem", path)
 
 
 def main():
@@ -85,36 +101,40 @@ def main():
     base = json.loads((ROOT / "bench/scenes/l_beam.json").read_text())
     out = pathlib.Path(arguments.out)
     series, limit = {}, {}
-    for cell in UNIFORM:
-        uniform = []
-        for resolution in UNIFORM[cell]:
-            scene = json.loads(json.dumps(base))
-            scene["discretization"]["fcm"].update(cell=cell, resolution=resolution)
-            label = f"uniform {resolution[0]}x{resolution[1]}x{resolution[2]}"
-            uniform.append((label, *run(arguments.altfem, scene, out / cell / label.replace(" ", "_"))))
-        adaptive = []
-        for cycles in CYCLES[cell]:
-            scene = json.loads(json.dumps(base))
-            scene["discretization"]["fcm"].update(cell=cell, resolution=UNIFORM[cell][0])
-            scene["events"] = [{"time": 0, "refine": {"criterion": "error_indicator", "fraction": arguments.fraction,
-                                                      "max_level": 10, "cycles": cycles}}]
-            label = f"adaptive, {cycles} cycles"
-            adaptive.append((label, *run(arguments.altfem, scene, out / cell / f"adaptive_{cycles}")))
-        adaptive.sort(key=lambda row: row[1])
-        limit[cell] = extrapolated_energy([row[2] for row in uniform])
-        series[(cell, "uniform")], series[(cell, "adaptive")] = uniform, adaptive
-        print(f"\nfcm {cell}: Pi(u) extrapolated from the uniform runs: {limit[cell]:.6f} J")
-        table(f"fcm {cell}, uniform", uniform, limit[cell])
-        table(f"fcm {cell}, adaptive (error_indicator, fraction {arguments.fraction:g}, 1->8)", adaptive, limit[cell])
-        _, finest_dofs, finest_energy, finest_seconds = uniform[-1]
-        reaching = [row for row in adaptive if row[2] <= finest_energy]
-        if not reaching:
-            print(f"fcm {cell}: no adaptive run reaches the finest uniform energy {finest_energy:.6f}")
-            continue
-        best = min(reaching, key=lambda row: row[3])
-        print(f"fcm {cell}: the finest uniform run's error ({finest_dofs} DOFs, {finest_seconds:.2f} s) is reached by "
-              f"'{best[0]}' with {best[1] / finest_dofs:.2f} of the DOFs and {best[3] / finest_seconds:.2f} of the "
-              "time")
+    for method in METHODS:
+        for cell in UNIFORM:
+            uniform = []
+            for resolution in UNIFORM[cell]:
+                scene = dict(base, discretization=discretization(method, cell, resolution))
+                label = f"uniform {resolution[0]}x{resolution[1]}x{resolution[2]}"
+                uniform.append((label, *run(arguments.altfem, method, scene,
+                                            out / method / cell / label.replace(" ", "_"))))
+            adaptive = []
+            for cycles in CYCLES[cell]:
+                scene = dict(base, discretization=discretization(method, cell, UNIFORM[cell][0]))
+                scene["events"] = [{"time": 0, "refine": {"criterion": "error_indicator",
+                                                          "fraction": arguments.fraction,
+                                                          "max_level": 10, "cycles": cycles}}]
+                label = f"adaptive, {cycles} cycles"
+                adaptive.append((label, *run(arguments.altfem, method, scene,
+                                             out / method / cell / f"adaptive_{cycles}")))
+            adaptive.sort(key=lambda row: row[1])
+            name = f"{method} {cell}"
+            limit[(method, cell)] = extrapolated_energy([row[2] for row in uniform])
+            series[(method, cell, "uniform")], series[(method, cell, "adaptive")] = uniform, adaptive
+            print(f"\n{name}: Pi(u) extrapolated from the uniform runs: {limit[(method, cell)]:.6f} J")
+            table(f"{name}, uniform", uniform, limit[(method, cell)])
+            table(f"{name}, adaptive (error_indicator, fraction {arguments.fraction:g}, 1->8)", adaptive,
+                  limit[(method, cell)])
+            _, finest_dofs, finest_energy, finest_seconds = uniform[-1]
+            reaching = [row for row in adaptive if row[2] <= finest_energy]
+            if not reaching:
+                print(f"{name}: no adaptive run reaches the finest uniform energy {finest_energy:.6f}")
+                continue
+            best = min(reaching, key=lambda row: row[3])
+            print(f"{name}: the finest uniform run's error ({finest_dofs} DOFs, {finest_seconds:.2f} s) is reached "
+                  f"by '{best[0]}' with {best[1] / finest_dofs:.2f} of the DOFs and {best[3] / finest_seconds:.2f} "
+                  "of the time")
     plot(series, limit, out / "re_entrant_study.png")
 
 
