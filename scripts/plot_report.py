@@ -39,9 +39,11 @@ def read_rows(path):
                     "exit_code", "total_s", "wall_s", "peak_memory_mib", "rms_error", "max_error", *PHASES):
             row[key] = number(row[key])
         for key in ("report_error", "relative_rms_error", "field_l2_error", "field_h1_error", "events",
-                    *EVENT_PHASES):  # absent from older tables
+                    "refinements", *EVENT_PHASES):  # absent from older tables
             row[key] = number(row.get(key))
-        row["series"] = f"{row['method']} {row['element']}".strip()
+        # A run that refined is adaptive: its own series beside the method's uniform runs.
+        adaptive = " adaptive" if row["refinements"] and row["refinements"] > 0 else ""
+        row["series"] = f"{row['method']} {row['element']}".strip() + adaptive
     return rows
 
 

@@ -59,6 +59,7 @@ const std::vector<std::pair<std::string, Member>>& columns() {
       {"solve_s", &PhaseTimings::solve},
       {"total_s", &PhaseTimings::total},
       {"events", &RunRecord::events},
+      {"refinements", &RunRecord::refinements},
       {"event_geometry_s", &RunRecord::event_geometry_seconds},
       {"event_integration_s", &RunRecord::event_integration_seconds},
       {"event_pattern_s", &RunRecord::event_pattern_seconds},

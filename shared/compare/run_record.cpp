@@ -19,11 +19,12 @@ void add_summary(RunRecord& record, const json& summary) {
   const auto& t = summary.at("timings_s");
   record.timings = {t.at("setup"),         t.at("quadrature"), t.at("assembly"), t.at("analysis"),
                     t.at("factorisation"), t.at("solve"),      t.at("total")};
-  record.events = 0;
+  record.events = record.refinements = 0;
   record.event_geometry_seconds = record.event_integration_seconds = 0;
   record.event_pattern_seconds = record.event_transfer_seconds = 0;
   for (const json& event : summary.value("events", json::array())) {
     ++record.events;
+    if (event.value("kind", "") == "refine") ++record.refinements;
     const json& seconds = event.at("seconds");
     record.event_geometry_seconds += seconds.at("geometry").get<double>();
     record.event_integration_seconds += seconds.at("integration").get<double>();

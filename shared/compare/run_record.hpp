@@ -32,6 +32,9 @@ struct RunRecord {
   /// per phase summed over them (cutting the mesh, integrating the rebuilt method,
   /// the new sparsity and solver, transferring the state).
   int events = 0;
+  /// Of those, the refine events: a run that refined is an adaptive run, a series of its
+  /// own in the report (beside the same method's uniform runs).
+  int refinements = 0;
   double event_geometry_seconds = 0, event_integration_seconds = 0, event_pattern_seconds = 0,
          event_transfer_seconds = 0;
   double wall_seconds = 0;     ///< measured by compare around the process

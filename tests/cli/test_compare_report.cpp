@@ -20,6 +20,7 @@ struct Row {
   std::string method, element, label;
   double total_s, field_l2_error, relative_rms_error;
   bool is_reference = false;
+  int refinements = 0;
 };
 
 // A results.csv with the columns plot_report.py reads; `nan` fields are left empty, as
@@ -47,6 +48,7 @@ void write_table(const std::filesystem::path& file, const std::vector<Row>& rows
                                          "factorisation_s",
                                          "solve_s",
                                          "total_s",
+                                         "refinements",
                                          "wall_s",
                                          "peak_memory_mib",
                                          "rms_error",
@@ -77,6 +79,7 @@ void write_table(const std::filesystem::path& file, const std::vector<Row>& rows
                                              {"newton_iterations", "1"},
                                              {"total_s", number(row.total_s)},
                                              {"wall_s", number(row.total_s)},
+                                             {"refinements", std::to_string(row.refinements)},
                                              {"field_l2_error", number(row.field_l2_error)},
                                              {"field_h1_error", number(row.field_l2_error)},
                                              {"relative_rms_error", number(row.relative_rms_error)},
@@ -152,6 +155,18 @@ TEST(CompareReport, SaysSoWhenOnlyOneMethodReachesTheTarget) {
                         "1 of 3 method–element series reach it; dg k2_polyhedron, fem tet10 do not."),
             std::string::npos)
       << report;
+}
+
+// A run that refined is its own series: fcm hex20's adaptive run reaches 0.02 in 3 s, its
+// uniform runs in 4 s, and the report ranks them apart.
+TEST(CompareReport, AnAdaptiveRunIsASeriesOfItsOwn) {
+  std::vector<Row> with_adaptive = table;
+  with_adaptive.insert(with_adaptive.begin() + 2, Row{"fcm", "hex20", "fcm adaptive", 3.0, 0.005, 0.005});
+  with_adaptive[2].refinements = 2;
+  const std::string report = report_of(with_adaptive, 0.02, "report-adaptive");
+  EXPECT_NE(report.find("3 of 4 method–element series reach it; fem tet10 does not."), std::string::npos) << report;
+  EXPECT_NE(report.find("| fcm hex20 adaptive | fcm adaptive |"), std::string::npos) << report;
+  EXPECT_NE(report.find("| fcm hex20 | fcm coarse |"), std::string::npos) << report;
 }
 
 }  // namespace

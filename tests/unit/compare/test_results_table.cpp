@@ -28,6 +28,7 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   ok.linear_iterations = 7;
   ok.timings = {0.1, 0.2, 1.0 / 3.0, 0.4, 0.5, 0.6, 2.1};
   ok.events = 2;
+  ok.refinements = 1;
   ok.event_geometry_seconds = 1.0 / 9.0;
   ok.event_integration_seconds = 0.25;
   ok.event_pattern_seconds = 0.125;
@@ -78,17 +79,19 @@ TEST(ResultsTable, RoundTripsEveryFieldExactly) {
   EXPECT_EQ(read[0].field_l2_error, ok.field_l2_error);
   EXPECT_EQ(read[0].field_h1_error, ok.field_h1_error);
   EXPECT_EQ(read[0].events, 2);
+  EXPECT_EQ(read[0].refinements, 1);
   EXPECT_EQ(read[0].event_geometry_seconds, ok.event_geometry_seconds);
   EXPECT_EQ(read[0].event_transfer_seconds, ok.event_transfer_seconds);
   EXPECT_TRUE(std::isnan(read[1].rms_error));
   std::filesystem::remove(file);
 }
 
-// The events of a run's summary.json: counted, and their seconds per phase summed.
+// The events of a run's summary.json: counted (the refine ones apart: they make the run
+// adaptive), and their seconds per phase summed.
 TEST(ResultsTable, AddsUpTheEventsOfASummary) {
   const auto event = [](double geometry, double integration, double pattern, double transfer) {
     return nlohmann::json{
-        {"kind", "cut"},
+        {"kind", geometry > 0.3 ? "cut" : "refine"},
         {"seconds",
          {{"geometry", geometry}, {"integration", integration}, {"pattern", pattern}, {"transfer", transfer}}}};
   };
@@ -110,6 +113,7 @@ TEST(ResultsTable, AddsUpTheEventsOfASummary) {
   RunRecord record;
   add_summary(record, summary);
   EXPECT_EQ(record.events, 2);
+  EXPECT_EQ(record.refinements, 1);
   EXPECT_EQ(record.event_geometry_seconds, 0.75);
   EXPECT_EQ(record.event_integration_seconds, 3.0);
   EXPECT_EQ(record.event_pattern_seconds, 0.75);
@@ -117,6 +121,7 @@ TEST(ResultsTable, AddsUpTheEventsOfASummary) {
   summary.erase("events");
   add_summary(record, summary);
   EXPECT_EQ(record.events, 0);
+  EXPECT_EQ(record.refinements, 0);
   EXPECT_EQ(record.event_integration_seconds, 0.0);
 }
 
