@@ -42,8 +42,8 @@ ComparePlan plan_of(const CompareArguments& arguments, const Scene& scene) {
   ComparePlan plan = plan_from_scene(scene.resolved.value("compare", json()), available);
   if (!arguments.methods.empty()) plan.methods = arguments.methods;
   if (!arguments.sweeps.empty()) {
-    plan.sweeps.clear();
-    for (const auto& sweep : arguments.sweeps) plan.sweeps.push_back(parse_sweep(sweep));
+    plan.sweeps = {{}};
+    for (const auto& sweep : arguments.sweeps) plan.sweeps.front().push_back(parse_sweep(sweep));
   }
   if (!arguments.reference.empty()) plan.reference = parse_reference(arguments.reference);
   for (const auto& method : plan.methods) (void)find_method(method, "--methods");  // throws naming the available ones

@@ -104,6 +104,16 @@ def series_of(rows):
     return groups
 
 
+def series_styles(names):
+    """A colour per method and element, solid for uniform runs and dashed for the adaptive
+    series of the same method and element, so the two read as a pair."""
+    bases = sorted({name.removesuffix(" adaptive") for name in names})
+    colours = {base: f"C{k % 10}" for k, base in enumerate(bases)}
+    return {name: dict(color=colours[name.removesuffix(" adaptive")],
+                       linestyle="--" if name.endswith(" adaptive") else "-",
+                       marker="s" if name.endswith(" adaptive") else "o") for name in names}
+
+
 def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel):
     """Labels, grid and legend (outside, so it hides no point) of a log-log error plot; saves it."""
     ax.set_xlabel(xlabel)
@@ -111,16 +121,17 @@ def finish_error_plot(fig, ax, path, xlabel, title, legend_title, ylabel):
     ax.set_title(title)
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(title=legend_title, loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # the legend outside stays in the picture
     plt.close(fig)
 
 
 def plot_error_vs_time(rows, path, measure):
     fig, ax = plt.subplots(figsize=(9, 5))
-    for name, group in sorted(series_of(rows).items()):
+    series = series_of(rows)
+    styles = series_styles(series)
+    for name, group in sorted(series.items()):
         group = sorted(group, key=lambda r: r["dofs"])  # the line follows refinement
-        ax.loglog([r["total_s"] for r in group], [r["error"] for r in group], "o-", label=name)
+        ax.loglog([r["total_s"] for r in group], [r["error"] for r in group], label=name, **styles[name])
     front = pareto_front(rows)
     ax.loglog([r["total_s"] for r in front], [r["error"] for r in front], "k--", lw=1, zorder=0,
               drawstyle="steps-post", label="Pareto front (circled runs:\nnone other is both faster\nand more accurate)")
@@ -142,12 +153,14 @@ def fitted_rate(group, key):
 def plot_error_vs_dofs(rows, path, key, ylabel, title="Convergence: error against DOFs (h ~ DOFs^(-1/3))"):
     fig, ax = plt.subplots(figsize=(9, 5))
     rates = {}
-    for name, group in sorted(series_of(rows).items()):
+    series = series_of(rows)
+    styles = series_styles(series)
+    for name, group in sorted(series.items()):
         group = sorted(group, key=lambda r: r["dofs"])
         rate = fitted_rate(group, key)
         rates[name] = rate
         label = name + (f" (rate {rate:.2f} in h)" if rate is not None else "")
-        ax.loglog([r["dofs"] for r in group], [r[key] for r in group], "o-", label=label)
+        ax.loglog([r["dofs"] for r in group], [r[key] for r in group], label=label, **styles[name])
     finish_error_plot(fig, ax, path, "degrees of freedom [-]", title, "method, element (fitted rate)", ylabel)
     return rates
 
@@ -223,8 +236,7 @@ def plot_time_breakdown(rows, path):
     ax.set_title("Where the time goes, per run")
     ax.invert_yaxis()
     ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.0, 1.0))
-    fig.tight_layout()
-    fig.savefig(path, dpi=110)
+    fig.savefig(path, dpi=110, bbox_inches="tight")  # long labels and the legend stay in the picture
     plt.close(fig)
 
 

@@ -1,5 +1,8 @@
 #include "shared/compare/compare_plan.hpp"
 
+#include <algorithm>
+#include <set>
+
 #include "shared/common/error.hpp"
 
 namespace altfem {
@@ -19,6 +22,17 @@ std::string method_of_pointer(const std::string& pointer) {
 SceneOverride make_override(const std::string& pointer, const json& value) {
   const std::string shown = value.is_string() ? value.get<std::string>() : value.dump();
   return {pointer, value, pointer.substr(1) + "=" + shown};
+}
+
+// What a configuration sets, whatever the order: two groups that make it run it once.
+std::string overrides_key(const Configuration& configuration) {
+  std::vector<std::string> texts;
+  for (const SceneOverride& override_ : configuration.overrides)
+    texts.push_back(override_.pointer + "=" + override_.value.dump());
+  std::sort(texts.begin(), texts.end());
+  std::string key;
+  for (const std::string& text : texts) key += text + "\n";
+  return key;
 }
 
 }  // namespace
@@ -87,12 +101,17 @@ ComparePlan plan_from_scene(const json& compare_block, const std::vector<std::st
   if (present && compare_block.contains("methods"))
     for (const auto& name : compare_block["methods"]) plan.methods.push_back(name.get<std::string>());
   else plan.methods = available_methods;
-  if (present && compare_block.contains("sweeps"))
-    for (const auto& [key, values] : compare_block["sweeps"].items()) {
-      Sweep sweep{key.front() == '/' ? key : "/" + key, {}};
-      for (const auto& value : values) sweep.values.push_back(value);
-      plan.sweeps.push_back(std::move(sweep));
+  if (present && compare_block.contains("sweeps")) {
+    const json& sweeps = compare_block["sweeps"];
+    for (const json& group : sweeps.is_array() ? sweeps : json::array({sweeps})) {
+      SweepGroup& swept = plan.sweeps.emplace_back();
+      for (const auto& [key, values] : group.items()) {
+        Sweep sweep{key.front() == '/' ? key : "/" + key, {}};
+        for (const auto& value : values) sweep.values.push_back(value);
+        swept.push_back(std::move(sweep));
+      }
     }
+  }
   if (present && compare_block.contains("error")) plan.error = compare_block["error"].get<double>();
   if (present && compare_block.contains("reference")) {
     const json& reference = compare_block["reference"];
@@ -106,22 +125,26 @@ ComparePlan plan_from_scene(const json& compare_block, const std::vector<std::st
 
 std::vector<Configuration> expand_configurations(const ComparePlan& plan) {
   std::vector<Configuration> configurations;
+  const std::vector<SweepGroup> groups = plan.sweeps.empty() ? std::vector<SweepGroup>{{}} : plan.sweeps;
   for (const std::string& method : plan.methods) {
-    std::vector<const Sweep*> applicable;
-    for (const Sweep& sweep : plan.sweeps) {
-      const std::string owner = method_of_pointer(sweep.pointer);
-      if (owner.empty() || owner == method) applicable.push_back(&sweep);
-    }
-    // An odometer over the applicable sweeps; the last one varies fastest.
-    std::vector<std::size_t> index(applicable.size(), 0);
-    while (true) {
-      Configuration configuration{method, {}, false};
-      for (std::size_t k = 0; k < applicable.size(); ++k)
-        configuration.overrides.push_back(make_override(applicable[k]->pointer, applicable[k]->values[index[k]]));
-      configurations.push_back(std::move(configuration));
-      std::size_t k = applicable.size();
-      while (k > 0 && ++index[k - 1] == applicable[k - 1]->values.size()) index[--k] = 0;
-      if (k == 0) break;
+    std::set<std::string> made;  // labels of this method's configurations
+    for (const SweepGroup& group : groups) {
+      std::vector<const Sweep*> applicable;
+      for (const Sweep& sweep : group) {
+        const std::string owner = method_of_pointer(sweep.pointer);
+        if (owner.empty() || owner == method) applicable.push_back(&sweep);
+      }
+      // An odometer over the applicable sweeps; the last one varies fastest.
+      std::vector<std::size_t> index(applicable.size(), 0);
+      while (true) {
+        Configuration configuration{method, {}, false};
+        for (std::size_t k = 0; k < applicable.size(); ++k)
+          configuration.overrides.push_back(make_override(applicable[k]->pointer, applicable[k]->values[index[k]]));
+        if (made.insert(overrides_key(configuration)).second) configurations.push_back(std::move(configuration));
+        std::size_t k = applicable.size();
+        while (k > 0 && ++index[k - 1] == applicable[k - 1]->values.size()) index[--k] = 0;
+        if (k == 0) break;
+      }
     }
   }
   if (plan.reference) configurations.push_back({plan.reference->method, plan.reference->overrides, true});

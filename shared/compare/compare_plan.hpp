@@ -1,7 +1,7 @@
 #pragma once
-// What `altfem compare` runs: methods × the Cartesian product of the sweeps, plus a
-// reference run (docs/scene-schema.md, "Compare"). Each configuration is an `altfem run`
-// with `--set` overrides, so it is reproducible by hand.
+// What `altfem compare` runs: methods × the Cartesian product of the sweeps (or the union
+// of several groups' products), plus a reference run (docs/scene-schema.md, "Compare"). Each configuration is an
+// `altfem run` with `--set` overrides, so it is reproducible by hand.
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -25,9 +25,14 @@ struct ReferenceSpec {
   std::vector<SceneOverride> overrides;
 };
 
+/// Sweeps run as the Cartesian product of their values.
+using SweepGroup = std::vector<Sweep>;
+
 struct ComparePlan {
   std::vector<std::string> methods;
-  std::vector<Sweep> sweeps;
+  /// The union of the groups' products: e.g. uniform resolutions in one group and adaptive
+  /// refinement cycles in another, without running every resolution × every cycle count.
+  std::vector<SweepGroup> sweeps;
   std::optional<ReferenceSpec> reference;
   /// The RMS error of the report's equal-accuracy table (nullopt: the report's default).
   std::optional<double> error;
@@ -51,9 +56,10 @@ ReferenceSpec parse_reference(std::string_view text);
 /// The plan of a resolved scene's `compare` block (null or absent: every method, no sweep).
 ComparePlan plan_from_scene(const nlohmann::json& compare_block, const std::vector<std::string>& available_methods);
 
-/// Every method × every combination of sweep values (the first sweep varies slowest),
-/// then the reference. A sweep pointer under /discretization/<m>/ applies to method m only,
-/// so other methods do not run once per value of a key they ignore.
+/// Every method × every combination of each group's sweep values (the first sweep varies
+/// slowest; the groups in order, a configuration an earlier group made not repeated), then
+/// the reference. A sweep pointer under /discretization/<m>/ applies to method m only, so
+/// other methods do not run once per value of a key they ignore.
 std::vector<Configuration> expand_configurations(const ComparePlan& plan);
 
 }  // namespace altfem

@@ -281,12 +281,19 @@ void check_compare(const Validator& validator, const json&, json& resolved, cons
   if (resolved.contains("methods")) check_compare_methods(validator, resolved["methods"], pointer + "/methods");
   if (!resolved.contains("sweeps")) return;
   const json& sweeps = resolved["sweeps"];
-  if (!sweeps.is_object())
-    validator.fail(pointer + "/sweeps", "expected an object of JSON pointer: [values], got " + describe(sweeps));
-  for (const auto& [key, values] : sweeps.items())
-    if (!values.is_array() || values.empty())
-      validator.fail(pointer + "/sweeps/" + pointer_token(key),
-                     "expected a non-empty array of values, got " + describe(values));
+  if (!sweeps.is_object() && !(sweeps.is_array() && !sweeps.empty()))
+    validator.fail(
+        pointer + "/sweeps",
+        "expected an object of JSON pointer: [values], or a non-empty array of them, got " + describe(sweeps));
+  const json groups = sweeps.is_array() ? sweeps : json::array({sweeps});
+  for (std::size_t group = 0; group < groups.size(); ++group) {
+    const std::string at = pointer + "/sweeps" + (sweeps.is_array() ? "/" + std::to_string(group) : "");
+    if (!groups[group].is_object())
+      validator.fail(at, "expected an object of JSON pointer: [values], got " + describe(groups[group]));
+    for (const auto& [key, values] : groups[group].items())
+      if (!values.is_array() || values.empty())
+        validator.fail(at + "/" + pointer_token(key), "expected a non-empty array of values, got " + describe(values));
+  }
 }
 
 void check_compare_reference(const Validator& validator, const json&, json& resolved, const std::string& pointer) {

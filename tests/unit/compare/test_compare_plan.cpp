@@ -33,8 +33,8 @@ TEST(ComparePlan, ParsesSweepsAndReference) {
 TEST(ComparePlan, ExpandsTheProductAndAppliesMethodKeysToTheirMethodOnly) {
   ComparePlan plan;
   plan.methods = {"fem", "dg"};
-  plan.sweeps = {parse_sweep("discretization/fem/element=tet4,hex8"),
-                 parse_sweep("material/poisson_ratio=0.3,0.4,0.45")};
+  plan.sweeps = {
+      {parse_sweep("discretization/fem/element=tet4,hex8"), parse_sweep("material/poisson_ratio=0.3,0.4,0.45")}};
   plan.reference = parse_reference("fem:discretization/fem/element=hex27");
   const auto configurations = expand_configurations(plan);
   // fem: 2 × 3; dg: the scene-wide sweep only, 3; the reference last.
@@ -55,13 +55,29 @@ TEST(ComparePlan, ReadsTheSceneBlockAndDefaultsToEveryMethod) {
   const ComparePlan plan = plan_from_scene(block, {"fem", "fcm"});
   EXPECT_EQ(plan.methods, std::vector<std::string>{"fem"});
   ASSERT_EQ(plan.sweeps.size(), 1u);
-  EXPECT_EQ(plan.sweeps[0].pointer, "/discretization/fem/resolution");
+  ASSERT_EQ(plan.sweeps[0].size(), 1u);
+  EXPECT_EQ(plan.sweeps[0][0].pointer, "/discretization/fem/resolution");
   ASSERT_TRUE(plan.reference);
   EXPECT_EQ(plan.reference->overrides[0].text, "discretization/fem/element=hex27");
   const ComparePlan defaults = plan_from_scene(json(), {"fem", "fcm"});
   EXPECT_EQ(defaults.methods, (std::vector<std::string>{"fem", "fcm"}));
   EXPECT_EQ(expand_configurations(defaults).size(), 2u);
   EXPECT_FALSE(defaults.reference);
+}
+
+// Sweeps as an array of groups run the union of the groups' products: uniform grids in
+// one, refinement cycles from the coarse grid in the other — 2 + 1 runs, not 2 × 2. A
+// configuration two groups both make (the third group's) runs once.
+TEST(ComparePlan, RunsTheUnionOfSweepGroups) {
+  const json block = json::parse(R"({"methods": ["fem"], "sweeps": [
+    {"discretization/fem/resolution": [[4,4,1], [8,8,2]]},
+    {"discretization/fem/resolution": [[4,4,1]], "events": [[{"time": 0, "refine": {"cycles": 2}}]]},
+    {"discretization/fem/resolution": [[8,8,2]]}]})");
+  const auto configurations = expand_configurations(plan_from_scene(block, {"fem"}));
+  ASSERT_EQ(configurations.size(), 3u);
+  EXPECT_EQ(configurations[0].label(), "fem resolution=[4,4,1]");
+  EXPECT_EQ(configurations[1].label(), "fem resolution=[8,8,2]");
+  EXPECT_EQ(configurations[2].label(), R"(fem resolution=[4,4,1] events=[{"refine":{"cycles":2},"time":0}])");
 }
 
 }  // namespace
