@@ -177,6 +177,25 @@ bool carry_tetrahedra(const PolyhedralMesh& pieces, int piece, const std::vector
 
 }  // namespace
 
+FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells) {
+  std::vector<TetrahedronRow> rows;
+  FragmentedTetrahedra result;
+  int flat = 0;
+  for (int cell = 0; cell < cells.cell_count(); ++cell) {
+    const std::size_t first_row = rows.size();
+    split_into_tetrahedra(cells, cell, rows, flat);
+    result.fragment.insert(result.fragment.end(), rows.size() - first_row, cell);
+  }
+  result.mesh.element_type = ElementType::tet4;
+  result.mesh.nodes = cells.nodes;
+  result.mesh.cells.resize(static_cast<Eigen::Index>(rows.size()), 4);
+  for (std::size_t row = 0; row < rows.size(); ++row)
+    for (int corner = 0; corner < 4; ++corner)
+      result.mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+  result.fragments = std::move(cells);
+  return result;
+}
+
 int FragmentedTetrahedra::fragment_count() const {
   return fragments.cell_count() > 0 ? fragments.cell_count() : static_cast<int>(mesh.cells.rows());
 }

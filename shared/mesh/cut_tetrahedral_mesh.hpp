@@ -52,6 +52,13 @@ struct TetrahedralCut {
   int flat_tetrahedra = 0;               ///< slivers of the input or of the pieces' cones, left out
 };
 
+/// The cells of `cells` (convex, with planar faces: a grid's hexahedra) as fragments, each
+/// split into tetrahedra as a cut splits a piece (a cone from its first node by position),
+/// so the tetrahedra conform wherever the cells do: a hexahedron's 6, without the inner
+/// point tetrahedra_of_hexahedra adds (the cone's apex is the first node of every face it
+/// lies on, so every face is fanned from its first node). Its slivers are left out.
+FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells);
+
 /// Cuts `input` by `plane`. A fragment the plane does not cross keeps its tetrahedra (each
 /// corner taken as the copy this fragment holds, for a node on the blade); a crossed one
 /// becomes the tetrahedra of its two pieces. Throws std::invalid_argument for another

@@ -2,6 +2,8 @@
 
 #include "shared/fem/fem_scene_block.hpp"
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/convex_cell.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/tetrahedra_of_hexahedra.hpp"
 #include "shared/simulation/embedded_surface.hpp"
 #include "shared/simulation/nodal_basis.hpp"
@@ -95,9 +97,13 @@ private:
 
 }  // namespace
 
-VolumeMesh element_tetrahedra(const VolumeMesh& elements) {
-  if (element_shape(elements.element_type) == ElementShape::hexahedron) return tetrahedra_of_hexahedra(elements);
-  return VolumeMesh{ElementType::tet4, elements.nodes, elements.cells.leftCols(4)};
+FragmentedTetrahedra element_material(const VolumeMesh& elements) {
+  if (element_shape(elements.element_type) != ElementShape::hexahedron)
+    return {VolumeMesh{ElementType::tet4, elements.nodes, elements.cells.leftCols(4)}};
+  PolyhedralMesh cells = polyhedral_mesh_from_volume_mesh(elements);
+  for (int cell = 0; cell < cells.cell_count(); ++cell)
+    if (!is_convex_cell(cells, cell, cell_node_set(cells, cell))) return {tetrahedra_of_hexahedra(elements)};
+  return convex_cells_as_fragments(std::move(cells));
 }
 
 std::string fem_cut_refusal(ElementType type) {

@@ -1,7 +1,7 @@
 #pragma once
 // fem after a cut (issue #33): the virtual node algorithm (Molino et al. 2004) at any
-// Lagrange order. The blade cuts the elements' own tetrahedra (their corner tetrahedra,
-// a hexahedron's 12 about its centroid); each element becomes one cell per piece of
+// Lagrange order. The blade cuts the elements' own material (element_material: their
+// corner tetrahedra, a grid's hexahedra whole); each element becomes one cell per piece of
 // material in it, with its own copy of the element's nodes, integrated over its piece by
 // cut-cell rules (shared/cut_cells: fcm's cells with the fem mesh as the background, kept
 // whole and unstabilised); an element the blade does not reach keeps its standard rule.
@@ -26,10 +26,11 @@ struct FemMesh {
   std::shared_ptr<const CellRuleMemory> rules;
 };
 
-/// The elements' own tetrahedra (uncut), conforming by node as the elements are: Tet4/Tet10
-/// corners, a hexahedron's 12 about its centroid (tetrahedra_of_hexahedra); what the first
-/// cut cuts.
-VolumeMesh element_tetrahedra(const VolumeMesh& elements);
+/// The elements' material as tetrahedra (uncut), conforming by node as the elements are,
+/// what the first cut cuts: Tet4/Tet10 corners; convex hexahedra (a grid's) as fragments of
+/// 6 (convex_cells_as_fragments), which a cut cuts whole; other hexahedra 12 about their
+/// centroid (tetrahedra_of_hexahedra).
+FragmentedTetrahedra element_material(const VolumeMesh& elements);
 
 /// Why fem cannot cut a mesh of this element type (one phrase); empty when it can.
 std::string fem_cut_refusal(ElementType type);

@@ -116,8 +116,8 @@ public:
   }
   /// The elements' own tetrahedra cut by the blade: the rebuild is a CutFemMethod.
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return std::make_shared<MeshOf<FemMesh>>(FemMesh{
-        mesh_, cut_embedded_tetrahedra({element_tetrahedra(mesh_)}, cut.blade, facts), std::nullopt, {}, nullptr});
+    return std::make_shared<MeshOf<FemMesh>>(
+        FemMesh{mesh_, cut_embedded_tetrahedra(element_material(mesh_), cut.blade, facts), std::nullopt, {}, nullptr});
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const FemMethod&>(previous);

@@ -19,6 +19,7 @@
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/geometry/exact_orientation.hpp"
 #include "shared/mesh/cut_tetrahedral_mesh.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "tests/unit/mesh/seeded_cut_planes.hpp"
 
@@ -251,6 +252,25 @@ TEST(CutTetrahedralMesh, RepeatedCutsOfAPencilKeepTheTetrahedraFew) {
   std::printf("%lld tetrahedra in %d fragments after %d cuts of %lld tetrahedra\n",
               static_cast<long long>(pencil.mesh.cells.rows()), pencil.fragment_count(), cuts,
               static_cast<long long>(bar.cells.rows()));
+}
+
+// A grid's hexahedra as fragments (fem's material before its first cut): 6 tetrahedra
+// each, a cone from the first corner by position, conforming without a centroid (every
+// face fanned from its own first corner), filling the cube; a cut through them is valid
+// and splits each crossed hexahedron into two fragments.
+TEST(CutTetrahedralMesh, HexahedraAsFragmentsConformAndCutWhole) {
+  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const VolumeMesh grid = structured_grid(box, Eigen::Vector3i::Constant(3), ElementType::hex8);
+  const FragmentedTetrahedra hexahedra = convex_cells_as_fragments(polyhedral_mesh_from_volume_mesh(grid));
+  ASSERT_EQ(hexahedra.fragment_count(), 27);
+  ASSERT_EQ(hexahedra.mesh.cells.rows(), 27 * 6);
+  EXPECT_NEAR(volume_mesh_volume(hexahedra.mesh), 1.0, 1e-14);
+  EXPECT_EQ(unmatched_faces(hexahedra.mesh).size(), 6u * 9 * 2);  // the cube's 54 squares, 2 triangles each
+  const CuttingPlane plane{Eigen::Vector3d(0.4, 0.5, 0.5), Eigen::Vector3d(1, 0.3, 0.2)};
+  const TetrahedralCut cut = cut_tetrahedral_mesh(hexahedra, plane);
+  EXPECT_GT(cut.crossed_fragments, 0);
+  EXPECT_EQ(cut.result.fragment_count(), 27 + cut.crossed_fragments);
+  EXPECT_TRUE(is_valid_cut(hexahedra, cut, plane));
 }
 
 TEST(CutTetrahedralMesh, RefusesHexahedra) {
