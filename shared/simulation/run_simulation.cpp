@@ -388,6 +388,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();
   summary["elements"] = simulation.method().element_counts();
   summary["quadrature_points"] = simulation.method().quadrature_points();
+  // `facts` are the method's at the start; after events the one that ran last has its own.
+  if (!events.records().empty()) summary["facts_at_end"] = simulation.method().facts();
   summary["steps"] = steps_done;
   summary["newton_iterations"] = newton_iterations;
   if (scene.solver.nonlinear == NonlinearSolverKind::lbfgs) summary["lbfgs_evaluations"] = lbfgs_evaluations;

@@ -122,6 +122,9 @@ TEST(Events, ACutIsSummarisedAndAMethodThatCannotCutRefusesIt) {
   const nlohmann::json fcm_summary = read_summary(fcm_out);
   EXPECT_GT(fcm_summary["events"][0]["facts"]["crossed_fragments"].get<int>(), 0);
   EXPECT_EQ(fcm_summary["elements"]["hex20"], 11);
+  // `facts` are the method's before the cut, `facts_at_end` after it: the cut cell is kept as two.
+  EXPECT_EQ(fcm_summary["facts"]["cells"]["split"], 0);
+  EXPECT_EQ(fcm_summary["facts_at_end"]["cells"]["split"], 1);
   // fcm without topology-aware cells has no node copies to separate the sides.
   for (const std::string method : {"fcm"}) {
     const auto refused_out = fresh_directory("events-cut-" + method) / "run";

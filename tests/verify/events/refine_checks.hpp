@@ -93,4 +93,18 @@ inline SceneOverride refine_cycles(const std::string& marking, int max_level, in
                               ", \"cycles\": " + std::to_string(cycles) + "}}]");
 }
 
+/// Issue #34's claim on the L-shaped beam, for `method` with `base` overrides: `cycles`
+/// of bulk marking (half the estimated error) from the base grid reach the energy of the
+/// uniform grid `uniform` sets with at most a third of its DOFs. For a conforming method
+/// integrated exactly, Π(u_h) − Π(u) = ½ |u − u_h|²_E: a lower energy is a smaller error.
+inline void expect_adaptive_reaches_uniform_with_a_third_of_the_dofs(const std::string& method,
+                                                                     const SceneOverride& base,
+                                                                     const SceneOverride& uniform, int cycles) {
+  const auto [uniform_dofs, uniform_energy] = l_beam_solution(method, {base, uniform}, "uniform");
+  const auto [adaptive_dofs, adaptive_energy] =
+      l_beam_solution(method, {base, refine_cycles("\"fraction\": 0.5", 10, cycles)}, "adaptive");
+  EXPECT_LE(adaptive_energy, uniform_energy);
+  EXPECT_LE(adaptive_dofs, uniform_dofs / 3);
+}
+
 }  // namespace altfem
