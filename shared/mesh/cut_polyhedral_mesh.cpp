@@ -12,6 +12,7 @@
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/planar_loops.hpp"
+#include "shared/mesh/split_holes.hpp"
 
 namespace altfem {
 namespace {
@@ -303,15 +304,21 @@ private:
       throw NumericalError(where + " is not made of closed polygons: " + error.what());
     }
     if (loops.empty()) throw NumericalError(where + " is empty");
+    // One loop bounds the section whatever its rounded area; of several, one turning the
+    // other way round bounds a hole (a cell that is a ring around the blade's path), which
+    // a face cannot have: each hole is bridged to its outer loop, splitting the cap into
+    // simple polygons on the same nodes.
+    std::vector<std::vector<int>> outer, holes;
     for (std::vector<int>& loop : loops) {
       if (loop.size() < 3) throw NumericalError(where + " has a polygon of fewer than 3 corners");
-      // One loop bounds the section whatever its rounded area; of several, one turning
-      // the other way round bounds a hole, which a face cannot have.
-      if (loops.size() > 1 && !(loop_area_vector(loop, nodes_).dot(outward) > 0))
-        throw NumericalError(where + " has a hole (cutting such a cell is not implemented)");
-      const int other_piece = joined ? piece(cell, -sigma) : -1;
-      faces_.push_back({std::move(loop), piece_index, other_piece, sigma, !joined});
+      const bool hole = loops.size() > 1 && !(loop_area_vector(loop, nodes_).dot(outward) > 0);
+      (hole ? holes : outer).push_back(std::move(loop));
     }
+    if (!holes.empty())
+      outer = split_holes(std::move(outer), holes, plane_coordinates(nodes_, outward),
+                          where + " has holes that cannot be bridged");
+    const int other_piece = joined ? piece(cell, -sigma) : -1;
+    for (std::vector<int>& loop : outer) faces_.push_back({std::move(loop), piece_index, other_piece, sigma, !joined});
   }
 
   // The nodes a copy of which each group of pieces apart around it needs: those of faces

@@ -45,13 +45,14 @@ struct PolyhedralCut {
 /// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);
 /// a crossed non-convex one becomes the connected parts of each side (kind cut): a face
 /// falls into as many polygons as the plane leaves of it, a section into as many caps.
-/// Two parts of a side that meet only along an edge in the plane stay one piece. Throws
-/// NumericalError naming the cell when a section has a hole (a cap would be a face with a
-/// hole) or does not close. Throws std::invalid_argument for a zero normal or a blade polygon with a
-/// blade_polygon_problem. A plane that misses every cell returns the mesh unchanged. Without
-/// `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its rounded volume
-/// to be positive is the caller's to handle (cut_tetrahedral_mesh); with it, such a piece is merged into the
-/// cell across its largest interior face (merge_pieces_without_volume; NumericalError when it has none).
+/// Two parts of a side that meet only along an edge in the plane stay one piece. A section
+/// with holes (a cell that is a ring around the blade's path) becomes caps that are simple
+/// polygons, each hole bridged to its outer loop (split_holes). Throws NumericalError naming
+/// the cell when a section does not close or its holes cannot be bridged. Throws std::invalid_argument for a zero
+/// normal or a blade polygon with a blade_polygon_problem. A plane that misses every cell returns the mesh unchanged.
+/// Without `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its rounded volume to
+/// be positive is the caller's to handle (cut_tetrahedral_mesh); with it, such a piece is merged into the cell across
+/// its largest interior face (merge_pieces_without_volume; NumericalError when it has none).
 PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true);
 
 }  // namespace altfem

@@ -36,16 +36,4 @@ struct GridFaceRegion {
 GridFaceRegion grid_face_region(const GridFaceView& face, const std::vector<std::array<int, 2>>& segments,
                                 const std::vector<Eigen::Vector3d>& points);
 
-/// Simple polygons covering `outer` (loops counter-clockwise about +e_axis) minus `holes`
-/// (clockwise, each inside one outer loop), without new nodes: each hole is joined to its
-/// outer loop by two bridges between existing vertices — from its vertex of largest
-/// coordinate u = x_(axis+1) along +u and from its vertex of smallest u along −u, to a
-/// vertex they see (Eberly's hole bridging) — which cut the ring into two simple polygons
-/// that share the bridges. Throws NumericalError naming `face_name` when a bridge would
-/// meet another hole first.
-std::vector<std::vector<int>> split_holes(std::vector<std::vector<int>> outer,
-                                          const std::vector<std::vector<int>>& holes,
-                                          const std::vector<Eigen::Vector3d>& points, int axis,
-                                          const std::string& face_name);
-
 }  // namespace altfem

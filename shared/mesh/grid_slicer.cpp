@@ -1,13 +1,26 @@
 #include "shared/mesh/grid_slicer.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <string>
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/points_inside_surface.hpp"
 #include "shared/mesh/grid_face_region.hpp"
+#include "shared/mesh/split_holes.hpp"
 
 namespace altfem {
+
+namespace {
+
+// A grid face's in-plane coordinates (u, v) = (x_(axis+1), x_(axis+2)): counter-clockwise
+// about +e_axis is counter-clockwise in (u, v).
+std::function<Eigen::Vector2d(int)> grid_face_coordinates(const std::vector<Eigen::Vector3d>& points, int axis) {
+  return
+      [&points, axis](int node) { return Eigen::Vector2d(points[node]((axis + 1) % 3), points[node]((axis + 2) % 3)); };
+}
+
+}  // namespace
 
 SlicedMesh GridSlicer::run() {
   grid_node_ids_.assign(static_cast<std::size_t>((grid_.cells.array() + 1).prod()), -1);
@@ -127,9 +140,13 @@ void GridSlicer::compute_face_regions() {
                                      "change the resolution or the margin");
         }
         const bool undetermined = region.undetermined;
-        Loops loops = region.holes.empty()
-                          ? std::move(region.loops)
-                          : split_holes(std::move(region.loops), region.holes, nodes_.points(), axis, face_name(face));
+        Loops loops =
+            region.holes.empty()
+                ? std::move(region.loops)
+                : split_holes(std::move(region.loops), region.holes, grid_face_coordinates(nodes_.points(), axis),
+                              "slicing: " + face_name(face) +
+                                  ": the surface pierces the face in several holes that cannot be "
+                                  "bridged; change the resolution or the margin");
         if (undetermined) undetermined_faces.push_back({face, lower_cut && upper_cut, lower_cut ? -1.0 : 1.0});
         else check_next_to_inside_cell(face, loops, lower_cut ? above : lower, lower_cut && upper_cut);
         regions_.emplace(key, std::move(loops));

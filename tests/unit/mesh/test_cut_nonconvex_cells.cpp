@@ -158,6 +158,49 @@ double cell_volume_on_positive_side(const PolyhedralMesh& mesh, int cell, const 
 // them (whose pieces beyond the blade's edge stay joined): every piece closed with
 // positive volume, the volume kept, no piece on both sides, and the pieces on the
 // positive side holding what clipping the uncut cells leaves there.
+// One cell that is a square ring around the z axis through (1.5, 1.5): [0,3]² without
+// [1,2]², z in [0, 1], volume 8; its top and bottom are 4 trapezoids each (a face has no hole).
+PolyhedralMesh ring_cell() {
+  const std::vector<Eigen::Vector2d> outer{{0, 0}, {3, 0}, {3, 3}, {0, 3}}, inner{{1, 1}, {2, 1}, {2, 2}, {1, 2}};
+  PolyhedralMesh mesh;
+  mesh.nodes.resize(16, 3);
+  for (int k = 0; k < 4; ++k)
+    for (int level = 0; level < 2; ++level) {
+      mesh.nodes.row(8 * level + k) << outer[k].x(), outer[k].y(), level;
+      mesh.nodes.row(8 * level + 4 + k) << inner[k].x(), inner[k].y(), level;
+    }
+  for (int k = 0; k < 4; ++k) {
+    const int next = (k + 1) % 4;
+    mesh.faces.push_back({k, next, 8 + next, 8 + k});            // outer side, out
+    mesh.faces.push_back({4 + next, 4 + k, 12 + k, 12 + next});  // inner side, into the hole
+    mesh.faces.push_back({4 + k, 4 + next, next, k});            // bottom trapezoid, down
+    mesh.faces.push_back({8 + k, 8 + next, 12 + next, 12 + k});  // top trapezoid, up
+  }
+  mesh.face_cells = Eigen::MatrixXi::Constant(16, 2, -1);
+  mesh.face_cells.col(0).setZero();
+  mesh.cell_faces = {std::vector<int>(16)};
+  std::iota(mesh.cell_faces[0].begin(), mesh.cell_faces[0].end(), 0);
+  mesh.cell_kinds = {PolyhedralCellKind::cut};
+  compute_polyhedral_geometry(mesh);
+  return mesh;
+}
+
+// A blade through the ring all round: each side's section is an annulus, a cap with a hole,
+// which becomes simple polygons bridged to the outer loop; the two rings come apart whole.
+// Through the centre of symmetry the sides have equal volumes, level or tilted.
+TEST(CutNonConvexCells, ASectionWithAHoleBecomesCapsWithoutOne) {
+  const PolyhedralMesh ring = ring_cell();
+  ASSERT_NEAR(ring.cell_volumes.sum(), 8.0, 1e-14);
+  for (const Eigen::Vector3d& normal : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0.1, -0.2, 1)}) {
+    PolyhedralCut cut;
+    ASSERT_NO_THROW(cut = cut_polyhedral_mesh(ring, {Eigen::Vector3d(1.5, 1.5, 0.5), normal}));
+    EXPECT_EQ(cut.crossed_cells, 1);
+    EXPECT_TRUE(every_cell_closed(cut.mesh));
+    expect_volumes(cut.mesh, {4.0, 4.0});
+    for (int face = 0; face < cut.mesh.face_count(); ++face) EXPECT_TRUE(cut.mesh.is_boundary_face(face));
+  }
+}
+
 TEST(CutNonConvexCells, SeededPlanesThroughASlicedTorusGiveClosedPiecesEachOnOneSide) {
   SlicingOptions options;
   options.resolution = 6;
