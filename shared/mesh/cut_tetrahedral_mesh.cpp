@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "shared/geometry/exact_orientation.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
@@ -153,17 +153,21 @@ void split_into_tetrahedra(const PolyhedralMesh& pieces, int piece, std::vector<
 
 // The input tetrahedra of a piece the blade did not cross, each corner taken as the copy
 // of its node that the piece holds; false when a corner has none (then it is split afresh).
+// `copy_of`: scratch, (input node, the piece's copy) pairs, reused from piece to piece.
 bool carry_tetrahedra(const PolyhedralMesh& pieces, int piece, const std::vector<NodeSource>& sources,
-                      const VolumeMesh& input, const std::vector<int>& tetrahedra, std::vector<TetrahedronRow>& rows) {
-  std::map<int, int> copy_of;
+                      const VolumeMesh& input, const std::vector<int>& tetrahedra, std::vector<TetrahedronRow>& rows,
+                      std::vector<std::pair<int, int>>& copy_of) {
+  copy_of.clear();
   for (const int face : pieces.cell_faces[piece])
     for (const int node : pieces.faces[face])
-      if (sources[node].weight == 0) copy_of[sources[node].first] = node;
+      if (sources[node].weight == 0) copy_of.emplace_back(sources[node].first, node);
   const std::size_t start = rows.size();
   for (const int tetrahedron : tetrahedra) {
     TetrahedronRow row = row_of(input, tetrahedron);
     for (int& corner : row) {
-      const auto found = copy_of.find(corner);
+      // A fragment has a few dozen nodes at most: a linear search, no tree.
+      const auto found = std::find_if(copy_of.begin(), copy_of.end(),
+                                      [corner](const std::pair<int, int>& copy) { return copy.first == corner; });
       if (found == copy_of.end()) {
         rows.resize(start);
         return false;
@@ -218,13 +222,14 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
   std::vector<int> pieces_of(fragments.tetrahedra.size(), 0);
   for (const int parent : cut.parent_cell) ++pieces_of[parent];
   std::vector<TetrahedronRow> rows;
+  std::vector<std::pair<int, int>> copy_of;
   rows.reserve(static_cast<std::size_t>(input.mesh.cells.rows()) + 4 * static_cast<std::size_t>(cut.crossed_cells));
   FragmentedTetrahedra& output = result.result;
   for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
     const int parent = cut.parent_cell[piece];
     const std::size_t first_row = rows.size();
-    if (pieces_of[parent] > 1 ||
-        !carry_tetrahedra(cut.mesh, piece, result.node_sources, input.mesh, fragments.tetrahedra[parent], rows))
+    if (pieces_of[parent] > 1 || !carry_tetrahedra(cut.mesh, piece, result.node_sources, input.mesh,
+                                                   fragments.tetrahedra[parent], rows, copy_of))
       split_into_tetrahedra(cut.mesh, piece, rows, result.flat_tetrahedra);
     output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
     result.parent_fragment.push_back(fragments.fragment[parent]);
