@@ -1,8 +1,5 @@
 #include "shared/compare/compare_plan.hpp"
 
-#include <algorithm>
-#include <set>
-
 #include "shared/common/error.hpp"
 
 namespace altfem {
@@ -22,17 +19,6 @@ std::string method_of_pointer(const std::string& pointer) {
 SceneOverride make_override(const std::string& pointer, const json& value) {
   const std::string shown = value.is_string() ? value.get<std::string>() : value.dump();
   return {pointer, value, pointer.substr(1) + "=" + shown};
-}
-
-// What a configuration sets, whatever the order: two groups that make it run it once.
-std::string overrides_key(const Configuration& configuration) {
-  std::vector<std::string> texts;
-  for (const SceneOverride& override_ : configuration.overrides)
-    texts.push_back(override_.pointer + "=" + override_.value.dump());
-  std::sort(texts.begin(), texts.end());
-  std::string key;
-  for (const std::string& text : texts) key += text + "\n";
-  return key;
 }
 
 }  // namespace
@@ -127,7 +113,6 @@ std::vector<Configuration> expand_configurations(const ComparePlan& plan) {
   std::vector<Configuration> configurations;
   const std::vector<SweepGroup> groups = plan.sweeps.empty() ? std::vector<SweepGroup>{{}} : plan.sweeps;
   for (const std::string& method : plan.methods) {
-    std::set<std::string> made;  // labels of this method's configurations
     for (const SweepGroup& group : groups) {
       std::vector<const Sweep*> applicable;
       for (const Sweep& sweep : group) {
@@ -140,7 +125,7 @@ std::vector<Configuration> expand_configurations(const ComparePlan& plan) {
         Configuration configuration{method, {}, false};
         for (std::size_t k = 0; k < applicable.size(); ++k)
           configuration.overrides.push_back(make_override(applicable[k]->pointer, applicable[k]->values[index[k]]));
-        if (made.insert(overrides_key(configuration)).second) configurations.push_back(std::move(configuration));
+        configurations.push_back(std::move(configuration));
         std::size_t k = applicable.size();
         while (k > 0 && ++index[k - 1] == applicable[k - 1]->values.size()) index[--k] = 0;
         if (k == 0) break;

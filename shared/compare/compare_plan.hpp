@@ -57,9 +57,9 @@ ReferenceSpec parse_reference(std::string_view text);
 ComparePlan plan_from_scene(const nlohmann::json& compare_block, const std::vector<std::string>& available_methods);
 
 /// Every method × every combination of each group's sweep values (the first sweep varies
-/// slowest; the groups in order, a configuration an earlier group made not repeated), then
-/// the reference. A sweep pointer under /discretization/<m>/ applies to method m only, so
-/// other methods do not run once per value of a key they ignore.
+/// slowest; the groups in order), then the reference. A configuration two groups both make
+/// is listed twice: compare runs each resolved scene once (run_hash). A sweep pointer under /discretization/<m>/
+/// applies to method m only, so other methods do not run once per value of a key they ignore.
 std::vector<Configuration> expand_configurations(const ComparePlan& plan);
 
 }  // namespace altfem

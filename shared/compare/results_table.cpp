@@ -181,7 +181,8 @@ std::vector<RunRecord> read_results_csv(const std::filesystem::path& file) {
       const auto found = std::find(header.begin(), header.end(), name);
       // These came later: a cached record.csv from before them has none (NaN).
       const bool later = name == "report_error" || name == "field_l2_error" || name == "field_h1_error" ||
-                         name == "relative_rms_error" || name == "events" || name.starts_with("event_");
+                         name == "relative_rms_error" || name == "events" || name.starts_with("event_") ||
+                         name == "refinements";
       if (found == header.end() && later) continue;
       if (found == header.end()) throw InputError(input_message(where, "", "missing column '" + name + "'"));
       set_field(record, member, fields[found - header.begin()], where, name);

@@ -8,37 +8,10 @@
 #include "shared/mesh/spatial_order.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/mesh/surface_projection.hpp"
+#include "shared/mesh/volume_mesh_cells.hpp"
 #include "shared/scene/tetrahedralize_geometry.hpp"
 
 namespace altfem {
-
-namespace {
-
-// The grid's cells that `keep` marks, the nodes they use renumbered in their order.
-VolumeMesh kept_cells(const VolumeMesh& grid, const std::vector<bool>& keep) {
-  std::vector<int> new_index(static_cast<std::size_t>(grid.nodes.rows()), -1);
-  Eigen::Index kept = 0;
-  for (Eigen::Index cell = 0; cell < grid.cells.rows(); ++cell)
-    if (keep[cell]) {
-      ++kept;
-      for (Eigen::Index k = 0; k < grid.cells.cols(); ++k) new_index[grid.cells(cell, k)] = 0;
-    }
-  int node_count = 0;
-  for (int& index : new_index)
-    if (index == 0) index = node_count++;
-  VolumeMesh result{grid.element_type, Eigen::MatrixXd(node_count, 3), Eigen::MatrixXi(kept, grid.cells.cols())};
-  for (std::size_t node = 0; node < new_index.size(); ++node)
-    if (new_index[node] >= 0) result.nodes.row(new_index[node]) = grid.nodes.row(static_cast<Eigen::Index>(node));
-  Eigen::Index row = 0;
-  for (Eigen::Index cell = 0; cell < grid.cells.rows(); ++cell)
-    if (keep[cell]) {
-      for (Eigen::Index k = 0; k < grid.cells.cols(); ++k) result.cells(row, k) = new_index[grid.cells(cell, k)];
-      ++row;
-    }
-  return result;
-}
-
-}  // namespace
 
 std::vector<bool> grid_cells_in_shape(const FemSpec& fem, const SceneGeometry& geometry) {
   if (!geometry.shape) return {};
@@ -59,7 +32,11 @@ VolumeMesh build_fem_mesh(const FemSpec& fem, const SceneGeometry& geometry) {
     case FemMeshKind::grid: {
       VolumeMesh grid = structured_grid(geometry.bounds, fem.resolution, fem.element);
       const std::vector<bool> inside = grid_cells_in_shape(fem, geometry);
-      return inside.empty() ? grid : kept_cells(grid, inside);
+      if (inside.empty()) return grid;
+      std::vector<int> kept;
+      for (std::size_t cell = 0; cell < inside.size(); ++cell)
+        if (inside[cell]) kept.push_back(static_cast<int>(cell));
+      return volume_mesh_cells(grid, kept);
     }
     case FemMeshKind::tetrahedralize: {
       // fem_scene_block has checked that fem.element is a tetrahedron.

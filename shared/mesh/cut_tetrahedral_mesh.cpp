@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -15,6 +17,13 @@ using TetrahedronRow = std::array<int, 4>;
 
 TetrahedronRow row_of(const VolumeMesh& mesh, int cell) {
   return {mesh.cells(cell, 0), mesh.cells(cell, 1), mesh.cells(cell, 2), mesh.cells(cell, 3)};
+}
+
+VolumeMesh tetrahedra_of_rows(const Eigen::MatrixXd& nodes, const std::vector<TetrahedronRow>& rows) {
+  VolumeMesh mesh{ElementType::tet4, nodes, Eigen::MatrixXi(static_cast<Eigen::Index>(rows.size()), 4)};
+  for (std::size_t row = 0; row < rows.size(); ++row)
+    for (int corner = 0; corner < 4; ++corner) mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+  return mesh;
 }
 
 // Below this fraction of its longest edge cubed, a tetrahedron is a sliver whose pieces'
@@ -89,10 +98,14 @@ PolyhedralMesh with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& k
 // the blade cuts: per kept fragment its input index and non-flat tetrahedra, and per
 // node of that mesh its input node.
 struct CutInput {
-  PolyhedralMesh mesh;
-  std::vector<int> fragment;                 ///< per cell of `mesh`
-  std::vector<std::vector<int>> tetrahedra;  ///< per cell of `mesh`
-  std::vector<int> input_node;               ///< per node of `mesh`
+  std::optional<PolyhedralMesh> built;        ///< when not the input's own fragments, whole
+  const PolyhedralMesh* fragments = nullptr;  ///< the input's, when it keeps every one
+  std::vector<int> fragment;                  ///< per cell of mesh()
+  std::vector<std::vector<int>> tetrahedra;   ///< per cell of mesh()
+  std::vector<int> input_node;                ///< per node of mesh(); empty: the same numbers
+
+  const PolyhedralMesh& mesh() const { return built ? *built : *fragments; }
+  int input_node_of(int node) const { return input_node.empty() ? node : input_node[node]; }
 };
 
 CutInput cut_input(const FragmentedTetrahedra& input, int& flat) {
@@ -106,10 +119,14 @@ CutInput cut_input(const FragmentedTetrahedra& input, int& flat) {
   std::vector<bool> keep(tetrahedra_of.size());
   for (std::size_t fragment = 0; fragment < keep.size(); ++fragment) keep[fragment] = !tetrahedra_of[fragment].empty();
   if (input.fragments.cell_count() > 0) {
-    result.mesh = with_cells(input.fragments, keep, result.fragment);
-    result.input_node.resize(static_cast<std::size_t>(mesh.nodes.rows()));
-    for (std::size_t node = 0; node < result.input_node.size(); ++node)
-      result.input_node[node] = static_cast<int>(node);
+    // Usually every fragment holds a tetrahedron: cut the input's own, not a copy.
+    if (std::all_of(keep.begin(), keep.end(), [](bool kept) { return kept; })) {
+      result.fragments = &input.fragments;
+      result.fragment.resize(keep.size());
+      std::iota(result.fragment.begin(), result.fragment.end(), 0);
+    } else {
+      result.built = with_cells(input.fragments, keep, result.fragment);
+    }
   } else {
     // Each tetrahedron its own fragment: polyhedral_mesh_from_volume_mesh keeps the used
     // nodes in their order.
@@ -126,7 +143,7 @@ CutInput cut_input(const FragmentedTetrahedra& input, int& flat) {
       for (int corner = 0; corner < 4; ++corner) used[kept.cells(cell, corner)] = true;
     for (std::size_t node = 0; node < used.size(); ++node)
       if (used[node]) result.input_node.push_back(static_cast<int>(node));
-    result.mesh = polyhedral_mesh_from_volume_mesh(kept);
+    result.built = polyhedral_mesh_from_volume_mesh(kept);
   }
   for (const int fragment : result.fragment) result.tetrahedra.push_back(std::move(tetrahedra_of[fragment]));
   return result;
@@ -190,12 +207,7 @@ FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells) {
     split_into_tetrahedra(cells, cell, rows, flat);
     result.fragment.insert(result.fragment.end(), rows.size() - first_row, cell);
   }
-  result.mesh.element_type = ElementType::tet4;
-  result.mesh.nodes = cells.nodes;
-  result.mesh.cells.resize(static_cast<Eigen::Index>(rows.size()), 4);
-  for (std::size_t row = 0; row < rows.size(); ++row)
-    for (int corner = 0; corner < 4; ++corner)
-      result.mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+  result.mesh = tetrahedra_of_rows(cells.nodes, rows);
   result.fragments = std::move(cells);
   return result;
 }
@@ -209,7 +221,7 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
     throw std::invalid_argument("cut_tetrahedral_mesh: the mesh must be of Tet4 cells");
   TetrahedralCut result;
   const CutInput fragments = cut_input(input, result.flat_tetrahedra);
-  PolyhedralCut cut = cut_polyhedral_mesh(fragments.mesh, plane, false);
+  PolyhedralCut cut = cut_polyhedral_mesh(fragments.mesh(), plane, false);
   result.crossed_fragments = cut.crossed_cells;
   result.joined_fragments = cut.joined_cells;
   result.separated_faces = cut.separated_faces;
@@ -217,7 +229,7 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
   result.snapped_nodes = cut.snapped_nodes;
   for (const NodeSource& source : cut.node_sources)
     result.node_sources.push_back(
-        {fragments.input_node[source.first], fragments.input_node[source.second], source.weight});
+        {fragments.input_node_of(source.first), fragments.input_node_of(source.second), source.weight});
 
   std::vector<int> pieces_of(fragments.tetrahedra.size(), 0);
   for (const int parent : cut.parent_cell) ++pieces_of[parent];
@@ -234,12 +246,7 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
     output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
     result.parent_fragment.push_back(fragments.fragment[parent]);
   }
-  output.mesh.element_type = ElementType::tet4;
-  output.mesh.nodes = cut.mesh.nodes;
-  output.mesh.cells.resize(static_cast<Eigen::Index>(rows.size()), 4);
-  for (std::size_t row = 0; row < rows.size(); ++row)
-    for (int corner = 0; corner < 4; ++corner)
-      output.mesh.cells(static_cast<Eigen::Index>(row), corner) = rows[row][corner];
+  output.mesh = tetrahedra_of_rows(cut.mesh.nodes, rows);
   output.fragments = std::move(cut.mesh);
   return result;
 }

@@ -6,6 +6,7 @@
 #include "shared/common/error.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
+#include "shared/mesh/volume_mesh_cells.hpp"
 
 namespace altfem {
 
@@ -48,21 +49,7 @@ VolumeMesh tetrahedralize_box_shape(const AnalyticShape& shape, double max_cell_
   }
   if (kept_cells.empty()) throw InputError("tetrahedralize: the shape holds no grid cell");
 
-  std::vector<int> new_index(static_cast<std::size_t>(grid.nodes.rows()), -1);
-  VolumeMesh mesh;
-  mesh.element_type = ElementType::tet4;
-  mesh.cells.resize(static_cast<Eigen::Index>(kept_cells.size()), 4);
-  int nodes = 0;
-  for (std::size_t i = 0; i < kept_cells.size(); ++i)
-    for (int corner = 0; corner < 4; ++corner) {
-      int& index = new_index[grid.cells(kept_cells[i], corner)];
-      if (index < 0) index = nodes++;
-      mesh.cells(static_cast<Eigen::Index>(i), corner) = index;
-    }
-  mesh.nodes.resize(nodes, 3);
-  for (Eigen::Index node = 0; node < grid.nodes.rows(); ++node)
-    if (new_index[node] >= 0) mesh.nodes.row(new_index[node]) = grid.nodes.row(node);
-  return mesh;
+  return volume_mesh_cells(grid, kept_cells);
 }
 
 }  // namespace altfem

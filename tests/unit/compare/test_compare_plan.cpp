@@ -67,17 +67,19 @@ TEST(ComparePlan, ReadsTheSceneBlockAndDefaultsToEveryMethod) {
 
 // Sweeps as an array of groups run the union of the groups' products: uniform grids in
 // one, refinement cycles from the coarse grid in the other — 2 + 1 runs, not 2 × 2. A
-// configuration two groups both make (the third group's) runs once.
+// configuration two groups both make (the third group's) is listed again; compare runs it
+// once, by its resolved scene's hash.
 TEST(ComparePlan, RunsTheUnionOfSweepGroups) {
   const json block = json::parse(R"({"methods": ["fem"], "sweeps": [
     {"discretization/fem/resolution": [[4,4,1], [8,8,2]]},
     {"discretization/fem/resolution": [[4,4,1]], "events": [[{"time": 0, "refine": {"cycles": 2}}]]},
     {"discretization/fem/resolution": [[8,8,2]]}]})");
   const auto configurations = expand_configurations(plan_from_scene(block, {"fem"}));
-  ASSERT_EQ(configurations.size(), 3u);
+  ASSERT_EQ(configurations.size(), 4u);
   EXPECT_EQ(configurations[0].label(), "fem resolution=[4,4,1]");
   EXPECT_EQ(configurations[1].label(), "fem resolution=[8,8,2]");
   EXPECT_EQ(configurations[2].label(), R"(fem resolution=[4,4,1] events=[{"refine":{"cycles":2},"time":0}])");
+  EXPECT_EQ(configurations[3].label(), "fem resolution=[8,8,2]");
 }
 
 }  // namespace

@@ -3,6 +3,9 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "shared/common/error.hpp"
 #include "shared/compare/results_table.hpp"
@@ -123,6 +126,41 @@ TEST(ResultsTable, AddsUpTheEventsOfASummary) {
   EXPECT_EQ(record.events, 0);
   EXPECT_EQ(record.refinements, 0);
   EXPECT_EQ(record.event_integration_seconds, 0.0);
+}
+
+// A run cached before `refinements` was a column (runs/<hash>/record.csv) still reads, as
+// a run that did not refine.
+TEST(ResultsTable, ReadsACachedRecordWithoutTheRefinementsColumn) {
+  RunRecord record;
+  record.method = "fem";
+  record.refinements = 3;
+  const auto file = std::filesystem::temp_directory_path() / "altfem_unit_results_older.csv";
+  write_results_csv(file, {record});
+  std::ifstream in(file);
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  in.close();
+  // No field of this record holds a comma: drop the column by position.
+  const auto drop = [](const std::string& line, std::size_t column) {
+    std::vector<std::string> fields{""};  // empty fields kept, the last one too
+    for (const char c : line)
+      if (c == ',') fields.emplace_back();
+      else fields.back() += c;
+    fields.erase(fields.begin() + static_cast<std::ptrdiff_t>(column));
+    std::string joined;
+    for (std::size_t k = 0; k < fields.size(); ++k) joined += (k ? "," : "") + fields[k];
+    return joined;
+  };
+  std::stringstream names(header);
+  std::size_t column = 0;
+  for (std::string name; std::getline(names, name, ',') && name != "refinements";) ++column;
+  std::ofstream(file) << drop(header, column) << "\n" << drop(row, column) << "\n";
+  const std::vector<RunRecord> read = read_results_csv(file);
+  ASSERT_EQ(read.size(), 1u);
+  EXPECT_EQ(read[0].method, "fem");
+  EXPECT_EQ(read[0].refinements, 0);
+  std::filesystem::remove(file);
 }
 
 TEST(ResultsTable, RejectsMissingColumnsAndBadNumbers) {
