@@ -126,6 +126,7 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   }
   const int class_count = cell_similarity.class_count();
   masses_.resize(class_count);
+  stiffnesses_.resize(class_count);
   std::vector<Eigen::VectorXd> class_integrals(class_count);
   std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
   if (memory_) memory_->cells.resize(class_count);
@@ -156,7 +157,8 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
         class_inverse_lengths[k] = integrals.inverse_length;
         class_integrals[k] = std::move(integrals.integrals);
         masses_[k] = std::move(integrals.mass);
-        return std::move(integrals.stiffness);
+        stiffnesses_[k] = std::move(integrals.stiffness);
+        return stiffnesses_[k];
       },
       [&](int c, const Eigen::MatrixXd& stiffness) {
         const int k = cell_classes_[c];
@@ -178,7 +180,8 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
   // Face matrices once per class of faces between the same classes of cells at the same
   // relative position (their penalty η_f follows from the cells' classes and the face).
   SimilarityClasses face_similarity(settings_.reuse_similar_cells);
-  std::vector<int> face_classes(faces_.size(), -1);
+  std::vector<int>& face_classes = face_classes_;
+  face_classes.assign(faces_.size(), -1);
   std::vector<int> previous_classes;  // per class, its class in `previous` (-1: none)
   std::vector<char> gone_faces;
   if (previous)
@@ -260,19 +263,20 @@ Eigen::VectorXd DgLinearSystem::constrained_values(const ConditionData& data) co
 }
 
 JumpPenalty DgLinearSystem::face_penalty(const DgFace& face) const {
-  // Each side's own η over its length: eq. (20)'s vol(K)/area(f), or ℓ(K) (PenaltyScaling).
+  JumpPenalty penalty = side_penalty(face, face.minus);
+  if (face.plus < 0) return penalty;
+  const JumpPenalty plus = side_penalty(face, face.plus);
+  return {penalty.normal + plus.normal, penalty.tangential + plus.tangential};
+}
+
+JumpPenalty DgLinearSystem::side_penalty(const DgFace& face, int cell) const {
+  // The cell's own η over its length: eq. (20)'s vol(K)/area(f), or ℓ(K) (PenaltyScaling).
   const bool by_face = settings_.scaling == PenaltyScaling::face_area;
   const double area = by_face && face.polygon.rows() >= 3 ? polygon_area_vector(face.polygon).norm() : 0.0;
   const double factor = face.plus >= 0 ? 1.0 : settings_.boundary_penalty_factor;
-  JumpPenalty penalty{0.0, 0.0};
-  for (int side : {face.minus, face.plus}) {
-    if (side < 0) continue;
-    const DgMaterial side_material = material(side);
-    const double eta = factor * side_material.penalty * (by_face ? area / volumes_[side] : inverse_lengths_[side]);
-    penalty.normal += eta;
-    penalty.tangential += side_material.tangential_fraction * eta;
-  }
-  return penalty;
+  const DgMaterial cell_material = material(cell);
+  const double eta = factor * cell_material.penalty * (by_face ? area / volumes_[cell] : inverse_lengths_[cell]);
+  return {eta, cell_material.tangential_fraction * eta};
 }
 
 DgMaterial DgLinearSystem::material(int cell) const {

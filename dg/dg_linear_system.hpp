@@ -153,6 +153,15 @@ public:
   /// η_f of one of faces() by the settings' scaling (× boundary_penalty_factor on a boundary
   /// face), its normal and tangential parts (each side's η times its tangential_fraction).
   JumpPenalty face_penalty(const DgFace& face) const;
+  /// The share of face_penalty(face) that `cell`, one of the face's sides, contributes: its
+  /// own η over its length (face_penalty sums the two sides' shares).
+  JumpPenalty side_penalty(const DgFace& face, int cell) const;
+  /// A cell's class of translates, and that class's volume stiffness (3 #functions square).
+  int cell_class(int cell) const { return cell_classes_[cell]; }
+  const Eigen::MatrixXd& class_stiffness(int cell_class) const { return stiffnesses_[cell_class]; }
+  /// A face's class (faces of a class are translates between cells of the same classes);
+  /// −1 for a face without a term (free, or held strongly).
+  int face_class(int face) const { return face_classes_[face]; }
   int offset(int cell) const { return offsets_[cell]; }
   double volume(int cell) const { return volumes_[cell]; }
   /// The index into cell_materials.materials of a cell's material (0 with a single material).
@@ -211,6 +220,8 @@ private:
   std::vector<double> inverse_lengths_;  // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
   std::vector<int> cell_classes_;        // per cell, its class of translates
   std::vector<Eigen::MatrixXd> masses_;  // per class of cells, #functions square
+  std::vector<Eigen::MatrixXd> stiffnesses_;  // per class of cells, 3 #functions square
+  std::vector<int> face_classes_;             // per face, its class (-1: no term)
   Eigen::VectorXd integrals_;
   std::vector<int> offsets_;  // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;

@@ -13,6 +13,7 @@
 #include "dg/dg_volume_grid.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
+#include "dg/definiteness_certificate.hpp"
 #include "dg/penalty_definiteness.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
@@ -59,6 +60,7 @@ public:
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
     cell_levels_ = std::move(built.cell_levels);
+    parent_cells_ = std::move(built.parent_cells);
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
     std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
@@ -98,7 +100,7 @@ public:
     // (§9.1): its K is a sum of semidefinite volume terms and positive jump penalties, so
     // only interior penalty pays for the test.
     while (spec_.double_until_definite && linear() && spec_.flux == Flux::interior_penalty &&
-           !positive_definite(*system_, element_dofs, iterative)) {
+           !definite(element_dofs, iterative)) {
       if (doublings_ >= max_doublings)
         throw NumericalError("dg: K is not positive definite after doubling the penalty " +
                              std::to_string(max_doublings) + " times");
@@ -198,7 +200,7 @@ public:
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);
-    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), fields);
+    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), fields, parent_cells_);
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;
@@ -209,6 +211,8 @@ public:
                    {{"convention", penalty_convention_names[static_cast<int>(spec_.convention)]},
                     {"value", spec_.penalty_value * (1 << doublings_)},
                     {"doublings", doublings_},
+                    {"definiteness", definiteness_},
+                    {"trace_ratio", trace_ratio_},
                     {"eta_pa", settings_.penalty},
                     {"scaling", penalty_scaling_names[static_cast<int>(spec_.scaling)]},
                     {"lame_split", spec_.lame_split}}},
@@ -241,6 +245,20 @@ private:
   DgMesh handed_mesh(PolyhedralSceneMesh mesh) const {
     return {std::move(mesh), system_->integral_memory(), doublings_};
   }
+  // Whether K is definite: by the cell-by-cell certificate when it holds, which costs a small
+  // eigenproblem per class of cells, else by the test that factorises K (it is sufficient
+  // only, so the η reached is the same either way).
+  bool definite(const std::vector<std::vector<int>>& element_dofs, bool iterative) {
+    const DefinitenessCertificate certificate = certify_definiteness(*system_);
+    trace_ratio_ = certificate.largest_ratio;
+    if (certificate.certified) {
+      definiteness_ = "certified";
+      return true;
+    }
+    definiteness_ = iterative ? "pcg" : "factorisation";
+    return positive_definite(*system_, element_dofs, iterative);
+  }
+
   void double_penalty(int times) {
     doublings_ += times;
     settings_.penalty *= 1 << times;
@@ -359,10 +377,15 @@ private:
   DgSettings settings_;  // with the first material's λ, μ, ρ, η
   DgCellMaterials cell_materials_;
   int doublings_ = 0;
+  // What decided that K is definite ("certified", "factorisation", "pcg"; "untested" when
+  // nothing had to), and the certificate's largest eigenvalue ratio (< 1 certifies).
+  std::string definiteness_ = "untested";
+  double trace_ratio_ = 0;
   VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;     // its source (build_polyhedral_scene_mesh)
   std::vector<int> cell_levels_;  // per cell, the refinements it came through (empty: none)
+  std::vector<int> parent_cells_;  // per cell, the cell of the build before holding it (empty: not an event's)
   bool own_surface_ = false;      // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::vector<Motion> motions_;   // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;

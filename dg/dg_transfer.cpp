@@ -1,7 +1,10 @@
 #include "dg/dg_transfer.hpp"
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 #include <vector>
+
+#include "dg/face_polynomials.hpp"
 
 namespace altfem::dg {
 
@@ -22,10 +25,20 @@ bool same_cell(const DgLinearSystem& system, const DgLinearSystem& previous, int
          same_matrix(system.cell(cell).vertices, previous.cell(cell).vertices);
 }
 
+// The parent's functions as polynomials in the child's frame (#monomials × #parent
+// functions), then in the child's functions: φ_child = Σ_a C_aj m_a, so the
+// coefficients over the child's functions are C⁻¹ times those over its monomials.
+Eigen::MatrixXd parent_in_child(const MonomialBasis& parent, const MonomialBasis& child) {
+  const Eigen::MatrixXd monomials = in_frame(parent, child.centre(), child.scale(), child.degree()).values;
+  if (child.combination().size() == 0) return monomials;
+  return child.combination().partialPivLu().solve(monomials);
+}
+
 }  // namespace
 
 Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSystem& previous,
-                                  const ElementBasisEvaluator& previous_basis, const Eigen::MatrixXd& fields) {
+                                  const ElementBasisEvaluator& previous_basis, const Eigen::MatrixXd& fields,
+                                  const std::vector<int>& parent_cells) {
   const Eigen::Index field_count = fields.cols();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(system.dof_count(), field_count);
   // The cells to project, their rules, and all their points for one embedding.
@@ -37,6 +50,19 @@ Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
     const int size = 3 * system.basis(cell).size();
     if (same_cell(system, previous, cell)) {
       result.middleRows(3 * system.offset(cell), size) = fields.middleRows(3 * previous.offset(cell), size);
+      continue;
+    }
+    const int parent = parent_cells.empty() ? -1 : parent_cells[cell];
+    if (parent >= 0 && system.basis(cell).degree() == previous.basis(parent).degree()) {
+      // Coefficient of function a, component i: Σ_b R_ab c_parent(b, i), R = parent_in_child.
+      const Eigen::MatrixXd restriction = parent_in_child(previous.basis(parent), system.basis(cell));
+      const Eigen::Index parent_size = restriction.cols();
+      for (Eigen::Index field = 0; field < field_count; ++field) {
+        const Eigen::Map<const Eigen::MatrixXd> coefficients(fields.col(field).data() + 3 * previous.offset(parent), 3,
+                                                             parent_size);  // component × function
+        Eigen::Map<Eigen::MatrixXd>(result.col(field).data() + 3 * system.offset(cell), 3, restriction.rows()) =
+            coefficients * restriction.transpose();
+      }
       continue;
     }
     projected.push_back(cell);

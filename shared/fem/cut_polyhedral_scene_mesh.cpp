@@ -43,6 +43,13 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
       levels[cell] = std::max(levels[cell], mesh.cell_levels[result_of_cut.parent_cell[piece]]);
     }
   }
+  // A cell holds its parent's piece, or pieces of several cells merged (-1).
+  std::vector<int> parents(static_cast<std::size_t>(pieces.cell_count()), -2);
+  for (std::size_t piece = 0; piece < result_of_cut.parent_cell.size(); ++piece) {
+    const int cell = merged.new_cell.empty() ? static_cast<int>(piece) : merged.new_cell[piece];
+    const int parent = result_of_cut.parent_cell[piece];
+    parents[cell] = parents[cell] == -2 || parents[cell] == parent ? parent : -1;
+  }
   PolyhedralSceneMesh result = mesh;
   // The surface it deforms when it is its own (the geometry has none in common), cut by
   // the same blade, as Simulation cuts the common one every method deforms.
@@ -51,6 +58,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   result.sliced.mesh = std::move(pieces);
   result.converted.reset();
   result.node_sources = std::move(node_sources);
+  result.parent_cells = std::move(parents);
   return result;
 }
 

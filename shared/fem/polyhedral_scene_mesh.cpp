@@ -69,6 +69,7 @@ PolyhedralSceneMesh handed_polyhedral_scene_mesh(const PolyhedralMesh& mesh, con
           .facts = facts,
           .converted = std::nullopt,
           .node_sources = {},
+          .parent_cells = {},
           .cell_levels = cell_levels};
 }
 

@@ -39,6 +39,10 @@ struct PolyhedralSceneMesh {
   /// After a cut: per node, the nodes of the mesh before it that it comes from (nodal
   /// methods carry their fields through these); empty otherwise.
   std::vector<NodeSource> node_sources;
+  /// After a cut or a refinement: per cell, the cell of the mesh before that holds it whole
+  /// (-1 for a cell merged from pieces of several); empty otherwise. Methods whose basis is
+  /// per cell carry a field through these exactly (dg re-expands the parent's polynomial).
+  std::vector<int> parent_cells;
   /// Per cell, how many refinements split the cells it lies in (refine events' max_level);
   /// empty: none.
   std::vector<int> cell_levels;
@@ -47,7 +51,7 @@ struct PolyhedralSceneMesh {
 /// What a polyhedral method was built on, as an event hands it on: `mesh`, the surface it
 /// deforms when that is its own (null: the geometry's common one), the load surface, the
 /// facts and the cells' levels; no converted mesh (the caller sets it where it keeps one)
-/// and no node sources.
+/// and no node sources or parent cells.
 PolyhedralSceneMesh handed_polyhedral_scene_mesh(const PolyhedralMesh& mesh, const SurfaceMesh* own_surface,
                                                  const SurfaceMesh& load_surface, const nlohmann::json& facts,
                                                  const std::vector<int>& cell_levels);

@@ -86,6 +86,7 @@ std::optional<PolyhedralSceneMesh> refine_polyhedral_scene_mesh(const Polyhedral
   result.load_surface = boundary_faces_surface(result.sliced.mesh);
   result.converted.reset();
   result.node_sources.clear();
+  result.parent_cells = std::move(split.parent_cell);
   return result;
 }
 

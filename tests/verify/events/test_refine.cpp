@@ -84,9 +84,10 @@ TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
   const SceneGeometry geometry = load_scene_geometry(scene);
   const MethodDescription& method = cli::find_method("dg");
   Simulation simulation(scene, geometry, "dg", method.factory, method.rebuild);
-  simulation.state().displacement = simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+  const auto quadratic = [](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     return x.x() * Eigen::Vector3d(2e-3 * x.x() - 1e-3 * x.y(), 5e-4 + 3e-3 * x.z(), -4e-3 * x.x());
-  });
+  };
+  simulation.state().displacement = simulation.method().interpolate(quadratic);
   simulation.state().velocity = simulation.method().interpolate([](const Eigen::Vector3d& x) -> Eigen::Vector3d {
     return Eigen::Vector3d(0.1 * x.y() * x.z(), -0.2 * x.x() * x.x(), 0.3 * x.x() * x.y());
   });
@@ -95,6 +96,10 @@ TEST(RefineDg, AQuadraticFieldCrossesWithoutAnEnergyJump) {
   EXPECT_EQ(element_count(simulation.method()), 5 + 5 * 8);
   EXPECT_GT(record.facts["hanging_nodes"].get<int>(), 0);
   EXPECT_LE(std::abs(record.conserved["energy_jump_relative"].get<double>()), 1e-12);
+  // Each child holds its parent's polynomial, re-expanded in its own monomials.
+  const Eigen::VectorXd expected = simulation.method().interpolate(quadratic);
+  EXPECT_LE((simulation.state().displacement - expected).lpNorm<Eigen::Infinity>(),
+            1e-12 * expected.lpNorm<Eigen::Infinity>());
   EXPECT_LE(std::abs(record.conserved["mass_change"].get<double>()), 1e-12);
   EXPECT_LE(std::abs(record.conserved["momentum_change"].get<double>()), 1e-12);
 }
