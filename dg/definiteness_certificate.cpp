@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "dg/face_polynomials.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::dg {
 namespace {
@@ -34,7 +35,8 @@ Eigen::MatrixXd trace_matrix(const DgFace& face, const MonomialBasis& basis, con
     for (int k = 0; k < 3; ++k)
       for (int i = 0; i < 3; ++i) {
         auto column = traction[i].col(3 * b + k);
-        column = material.mu * n[k] * functions.gradients[i].col(b) + material.lambda * n[i] * functions.gradients[k].col(b);
+        column =
+            material.mu * n[k] * functions.gradients[i].col(b) + material.lambda * n[i] * functions.gradients[k].col(b);
         if (i == k) column += material.mu * normal_derivative;
       }
   }
@@ -77,8 +79,8 @@ double relative_eigenvalue(const Eigen::MatrixXd& stiffness, const Eigen::Matrix
   const Eigen::VectorXd& values = decomposition.eigenvalues();
   const Eigen::Index rest = values.size() - rigid_modes;
   if (rest <= 0 || values[rigid_modes] <= 1e-12 * values.tail(1)[0]) return std::numeric_limits<double>::infinity();
-  const Eigen::MatrixXd scaled = decomposition.eigenvectors().rightCols(rest) *
-                                 values.tail(rest).cwiseSqrt().cwiseInverse().asDiagonal();
+  const Eigen::MatrixXd scaled =
+      decomposition.eigenvectors().rightCols(rest) * values.tail(rest).cwiseSqrt().cwiseInverse().asDiagonal();
   const Eigen::MatrixXd relative = scaled.transpose() * traces * scaled;
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(relative, Eigen::EigenvaluesOnly).eigenvalues().tail(1)[0];
 }
@@ -98,7 +100,7 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
       side_representative.resize(2 * (face_class + 1), -1);
     for (const int side : {0, 1}) {
       const int cell = side == 0 ? faces[f].minus : faces[f].plus;
-      if (cell < 0) continue;
+      if (cell < 0 || !system.owns_cell(cell)) continue;
       cell_sides[cell].push_back(2 * face_class + side);
       if (side_representative[2 * face_class + side] < 0) side_representative[2 * face_class + side] = f;
     }
@@ -107,6 +109,7 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
   std::map<std::vector<int>, int> combination_index;
   std::vector<int> combination_cell;
   for (int cell = 0; cell < system.cell_count(); ++cell) {
+    if (!system.owns_cell(cell)) continue;  // another rank's: it holds that class's stiffness
     std::vector<int> key = cell_sides[cell];
     std::sort(key.begin(), key.end());
     key.push_back(system.cell_class(cell));
@@ -144,6 +147,11 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
   DefinitenessCertificate certificate;
   certificate.cells_checked = static_cast<int>(ratios.size());
   certificate.largest_ratio = ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end());
+  if (ranks::distributed()) {  // each rank checked its own cells
+    certificate.cells_checked = static_cast<int>(ranks::sum(static_cast<double>(certificate.cells_checked)));
+    const std::vector<double> largest = ranks::gather(certificate.largest_ratio);
+    certificate.largest_ratio = *std::max_element(largest.begin(), largest.end());
+  }
   certificate.certified = certificate.largest_ratio <= 1 - margin;
   return certificate;
 }

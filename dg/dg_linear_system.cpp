@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <span>
 #include <stdexcept>
 #include <string>
 
 #include "dg/cell_block_pattern.hpp"
+#include "dg/cell_partition.hpp"
 #include "dg/cell_similarity.hpp"
 #include "dg/class_batches.hpp"
 #include "dg/dg_integral_memory.hpp"
@@ -16,6 +18,7 @@
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::dg {
 
@@ -88,6 +91,12 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   std::vector<std::array<int, 2>> couplings;
   for (const DgFace& face : faces_)
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
+  // Over several ranks each integrates its part of the cells and the faces it owns, and K
+  // is their sum (docs/scaling.md); the pattern is every rank's.
+  if (ranks::distributed()) {
+    rank_ = ranks::index();
+    cell_parts_ = partition_cells(cells_, bases_, couplings, ranks::count());
+  }
   const CellBlockPattern pattern(offsets_, couplings);
   pattern.make_zero_matrix(stiffness_);
   DgIntegralMemory* previous = reuse.previous && reuse.previous->integrates_as(settings_, cell_materials_.materials)
@@ -102,6 +111,11 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
                                                                   .faces = {}});
   const std::vector<int> previous_cell_classes = add_element_matrices(pattern, previous);
   add_face_matrices(pattern, previous, previous_cell_classes);
+  if (!cell_parts_.empty()) {
+    ranks::sum(std::span<double>(stiffness_.valuePtr(), static_cast<std::size_t>(stiffness_.nonZeros())));
+    distributed_mass_ = mass();
+    ranks::sum(std::span<double>(distributed_mass_.valuePtr(), static_cast<std::size_t>(distributed_mass_.nonZeros())));
+  }
 }
 
 std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pattern, DgIntegralMemory* previous) {
@@ -131,9 +145,14 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
   std::vector<double> class_volumes(class_count), class_inverse_lengths(class_count);
   if (memory_) memory_->cells.resize(class_count);
   // Stiffness, mass and ∫ φ_a once per class.
-  integrals_.resize(offsets_.back());
+  integrals_ = Eigen::VectorXd::Zero(offsets_.back());
+  volumes_.assign(cells_.size(), 0.0);
+  inverse_lengths_.assign(cells_.size(), 0.0);
+  std::vector<int> integrated = cell_classes_;  // -1: another rank's cell
+  for (int c = 0; c < cell_count; ++c)
+    if (!owns_cell(c)) integrated[c] = -1;
   for_each_item_by_class(
-      cell_classes_, class_count,
+      integrated, class_count,
       [&](int c) {
         const int k = cell_classes_[c];
         DgCellIntegrals integrals;
@@ -162,11 +181,16 @@ std::vector<int> DgLinearSystem::add_element_matrices(const CellBlockPattern& pa
       },
       [&](int c, const Eigen::MatrixXd& stiffness) {
         const int k = cell_classes_[c];
-        volumes_.push_back(class_volumes[k]);
-        inverse_lengths_.push_back(class_inverse_lengths[k]);
+        volumes_[c] = class_volumes[k];
+        inverse_lengths_[c] = class_inverse_lengths[k];
         integrals_.segment(offsets_[c], bases_[c].size()) = class_integrals[k];
         pattern.add_block(stiffness_, c, c, stiffness);
       });
+  if (!cell_parts_.empty()) {  // every rank needs every cell's size (the faces' penalties) and ∫ φ_a
+    ranks::sum(volumes_);
+    ranks::sum(inverse_lengths_);
+    ranks::sum(std::span<double>(integrals_.data(), static_cast<std::size_t>(integrals_.size())));
+  }
   similarity_.cells = cell_count;
   similarity_.cell_classes = class_count;
   similarity_.remembered_cell_classes =
@@ -210,8 +234,11 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
     face_classes[f] = assignment.index;
   }
   if (memory_) memory_->faces.resize(face_similarity.class_count());
+  std::vector<int> integrated = face_classes;  // -1: a face another rank owns
+  for (std::size_t f = 0; f < faces_.size(); ++f)
+    if (!owns_face(faces_[f])) integrated[f] = -1;
   for_each_item_by_class(
-      face_classes, face_similarity.class_count(),
+      integrated, face_similarity.class_count(),
       [&](int f) {
         const int k = face_classes[f];
         Eigen::MatrixXd matrix;
@@ -248,20 +275,6 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
 
 DgLinearSystem::~DgLinearSystem() = default;
 
-Eigen::VectorXd DgLinearSystem::constrained_values(const ConditionData& data) const {
-  Eigen::VectorXd values(static_cast<Eigen::Index>(constrained_dofs_.size()));
-  Eigen::Index next = 0;
-  for (const StrongCell& strong : strong_cells_) {
-    const MonomialBasis& basis = bases_[strong.cell];
-    const MonomialBasis monomials(basis.degree(), basis.centre(), basis.scale());
-    const Eigen::MatrixXd cell_values = dg::constrained_values(strong, monomials, faces_, data);
-    // In constrained_dofs_ order: combination j, then component.
-    for (int j = 0; j < strong.constrained; ++j)
-      for (Eigen::Index row = 0; row < cell_values.rows(); ++row) values[next++] = cell_values(row, j);
-  }
-  return values;
-}
-
 JumpPenalty DgLinearSystem::face_penalty(const DgFace& face) const {
   JumpPenalty penalty = side_penalty(face, face.minus);
   if (face.plus < 0) return penalty;
@@ -286,116 +299,21 @@ DgMaterial DgLinearSystem::material(int cell) const {
 }
 
 Eigen::SparseMatrix<double> DgLinearSystem::mass() const {
+  if (distributed_mass_.size() > 0) return distributed_mass_;
   std::vector<Eigen::Triplet<double>> triplets;
   for (size_t c = 0; c < cells_.size(); ++c) {
-    const int first = offsets_[c];
-    const Eigen::MatrixXd& cell_mass = masses_[cell_classes_[c]];
-    for (Eigen::Index a = 0; a < cell_mass.rows(); ++a)
-      for (Eigen::Index b = 0; b < cell_mass.cols(); ++b)
-        for (int i = 0; i < 3; ++i) triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, cell_mass(a, b));
+    const int first = offsets_[c], size = bases_[c].size();
+    // Another rank's cell: its block with zeros, so that every rank's pattern is the same.
+    const bool own = owns_cell(static_cast<int>(c));
+    for (int a = 0; a < size; ++a)
+      for (int b = 0; b < size; ++b) {
+        const double value = own ? masses_[cell_classes_[c]](a, b) : 0.0;
+        for (int i = 0; i < 3; ++i) triplets.emplace_back(3 * (first + a) + i, 3 * (first + b) + i, value);
+      }
   }
   Eigen::SparseMatrix<double> matrix(dof_count(), dof_count());
   matrix.setFromTriplets(triplets.begin(), triplets.end());
   return matrix;
-}
-
-PolyhedronRule DgLinearSystem::cell_rule(int cell, int strength) const {
-  return simplified_polyhedron_rule(cells_[cell], strength, settings_.rule_simplification);
-}
-
-template <typename Body>
-void DgLinearSystem::for_each_cell_point(int strength, Body&& body) const {
-  Eigen::VectorXd phi;
-  Eigen::MatrixXd unused;
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    const PolyhedronRule rule = polyhedron_rule(cells_[c], strength);
-    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
-      const Eigen::Vector3d x = rule.points.row(q).transpose();
-      bases_[c].evaluate(x, phi, unused);
-      body(static_cast<int>(c), x, rule.weights[q], phi);
-    }
-  }
-}
-
-Eigen::VectorXd DgLinearSystem::body_load(const VectorField& force_density) const {
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
-  for_each_cell_point(2 * settings_.degree + 2,
-                      [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
-                        const Eigen::Vector3d f = w * force_density(x);
-                        for (int a = 0; a < bases_[c].size(); ++a) load.segment<3>(3 * (offsets_[c] + a)) += phi[a] * f;
-                      });
-  return load;
-}
-
-double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const VectorField& field) const {
-  double squared = 0;
-  for_each_cell_point(2 * settings_.degree + 4,
-                      [&](int c, const Eigen::Vector3d& x, double w, const Eigen::VectorXd& phi) {
-                        Eigen::Vector3d value = Eigen::Vector3d::Zero();
-                        for (int a = 0; a < bases_[c].size(); ++a)
-                          value += phi[a] * coefficients.segment<3>(3 * (offsets_[c] + a));
-                        squared += w * (value - field(x)).squaredNorm();
-                      });
-  return std::sqrt(squared);
-}
-
-Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
-  Eigen::VectorXd coefficients(dof_count());
-  for (size_t c = 0; c < cells_.size(); ++c) {
-    const MonomialBasis& basis = bases_[c];
-    // Collocation on a (k+2)³ grid of the frame's [-¼, ¼]³: exact for fields in P_k.
-    const int per_axis = basis.degree() + 2;
-    const int points = per_axis * per_axis * per_axis;
-    Eigen::MatrixXd system(points, basis.size()), values(points, 3);
-    Eigen::VectorXd phi;
-    Eigen::MatrixXd unused;
-    int row = 0;
-    for (int i = 0; i < per_axis; ++i)
-      for (int j = 0; j < per_axis; ++j)
-        for (int k = 0; k < per_axis; ++k, ++row) {
-          const Eigen::Vector3d xi = (Eigen::Vector3d(i, j, k) / (per_axis - 1)).array() * 0.5 - 0.25;
-          const Eigen::Vector3d x = basis.centre() + basis.scale() * xi;
-          basis.evaluate(x, phi, unused);
-          system.row(row) = phi.transpose();
-          values.row(row) = field(x).transpose();
-        }
-    const Eigen::MatrixXd solution = system.colPivHouseholderQr().solve(values);  // #functions × 3
-    for (int a = 0; a < basis.size(); ++a) coefficients.segment<3>(3 * (offsets_[c] + a)) = solution.row(a).transpose();
-  }
-  return coefficients;
-}
-
-Eigen::VectorXd DgLinearSystem::dirichlet_load(const ConditionData& data, bool penalty_only) const {
-  Eigen::VectorXd load = Eigen::VectorXd::Zero(dof_count());
-  Eigen::VectorXd phi;
-  Eigen::MatrixXd gradients;
-  for (const DgFace& face : faces_) {
-    if (face.plus >= 0 || face.condition < 0 || face.strong) continue;
-    const MonomialBasis& basis = bases_[face.minus];
-    const DgMaterial side = material(face.minus);
-    const PolyhedronRule rule = polygon_rule(face.polygon, 2 * settings_.degree + 2);
-    const Eigen::Vector3d& n = face.normal;
-    const Eigen::Matrix3d penalty = face_penalty(face).tensor(n);
-    for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
-      const Eigen::Vector3d x = rule.points.row(q).transpose();
-      Eigen::Vector3d g = data(face.condition, x);
-      for (int i = 0; i < 3; ++i)
-        if (!face.components[i]) g[i] = 0;  // P g
-      basis.evaluate(x, phi, gradients);
-      for (int a = 0; a < basis.size(); ++a) {
-        // η_f (T Pg)·φ_a e_i, and for IP −g·σ(φ_a e_i)n with
-        // (σ(φ_a e_i)n)_k = μ(δ_ik ∇φ_a·n + n_i ∂_kφ_a) + λ n_k ∂_iφ_a.
-        const Eigen::Vector3d grad = gradients.row(a).transpose();
-        Eigen::Vector3d entry = phi[a] * (penalty * g);
-        for (int i = 0; i < 3; ++i)
-          if (!face.components[i]) entry[i] = 0;  // P T P g
-        if (settings_.flux == Flux::interior_penalty && !penalty_only)
-          entry -= side.mu * (grad.dot(n) * g + g.dot(grad) * n) + side.lambda * g.dot(n) * grad;
-        load.segment<3>(3 * (offset(face.minus) + a)) += rule.weights[q] * entry;
-      }
-    }
-  }
-  return load;
 }
 
 }  // namespace altfem::dg

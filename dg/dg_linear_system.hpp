@@ -5,6 +5,7 @@
 // of Dirichlet data imposed weakly on boundary faces (Nitsche for interior penalty, the
 // penalty alone for Babuška–Zlámal).
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <array>
 #include <functional>
 #include <memory>
@@ -156,7 +157,18 @@ public:
   /// The share of face_penalty(face) that `cell`, one of the face's sides, contributes: its
   /// own η over its length (face_penalty sums the two sides' shares).
   JumpPenalty side_penalty(const DgFace& face, int cell) const;
-  /// A cell's class of translates, and that class's volume stiffness (3 #functions square).
+  /// Over several ranks (docs/scaling.md), whether this rank integrates a cell's matrices
+  /// and a face's (the lower part of its cells'); always on one rank. K, the mass and the
+  /// cells' sizes and integrals are the sums of every rank's parts.
+  bool owns_cell(int cell) const { return cell_parts_.empty() || cell_parts_[cell] == rank_; }
+  bool owns_face(const DgFace& face) const {
+    if (cell_parts_.empty()) return true;
+    const int part =
+        face.plus < 0 ? cell_parts_[face.minus] : std::min(cell_parts_[face.minus], cell_parts_[face.plus]);
+    return part == rank_;
+  }
+  /// A cell's class of translates, and that class's volume stiffness (3 #functions square;
+  /// over several ranks, only the classes of this rank's cells).
   int cell_class(int cell) const { return cell_classes_[cell]; }
   const Eigen::MatrixXd& class_stiffness(int cell_class) const { return stiffnesses_[cell_class]; }
   /// A face's class (faces of a class are translates between cells of the same classes);
@@ -217,11 +229,14 @@ private:
   std::vector<int> constrained_dofs_;
   std::vector<ConstraintHolders> constraint_holders_;
   std::vector<double> volumes_;
-  std::vector<double> inverse_lengths_;  // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
-  std::vector<int> cell_classes_;        // per cell, its class of translates
-  std::vector<Eigen::MatrixXd> masses_;  // per class of cells, #functions square
+  std::vector<double> inverse_lengths_;       // per cell, area(∂K) / (6 vol(K)) = 1/ℓ(K)
+  std::vector<int> cell_classes_;             // per cell, its class of translates
+  std::vector<Eigen::MatrixXd> masses_;       // per class of cells, #functions square
   std::vector<Eigen::MatrixXd> stiffnesses_;  // per class of cells, 3 #functions square
   std::vector<int> face_classes_;             // per face, its class (-1: no term)
+  std::vector<int> cell_parts_;               // per cell, the rank integrating it (empty: one rank)
+  int rank_ = 0;
+  Eigen::SparseMatrix<double> distributed_mass_;  // over several ranks, the summed mass (else empty)
   Eigen::VectorXd integrals_;
   std::vector<int> offsets_;  // #cells + 1
   Eigen::SparseMatrix<double> stiffness_;

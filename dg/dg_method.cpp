@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 
+#include "dg/definiteness_certificate.hpp"
 #include "dg/dg_boundary_faces.hpp"
 #include "dg/dg_discretization.hpp"
 #include "dg/dg_integral_memory.hpp"
@@ -13,7 +14,6 @@
 #include "dg/dg_volume_grid.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
-#include "dg/definiteness_certificate.hpp"
 #include "dg/penalty_definiteness.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
@@ -383,11 +383,11 @@ private:
   double trace_ratio_ = 0;
   VolumeMesh volume_mesh_;  // the mesh converted into mesh_
   PolyhedralMesh mesh_;
-  nlohmann::json mesh_facts_;     // its source (build_polyhedral_scene_mesh)
-  std::vector<int> cell_levels_;  // per cell, the refinements it came through (empty: none)
+  nlohmann::json mesh_facts_;      // its source (build_polyhedral_scene_mesh)
+  std::vector<int> cell_levels_;   // per cell, the refinements it came through (empty: none)
   std::vector<int> parent_cells_;  // per cell, the cell of the build before holding it (empty: not an event's)
-  bool own_surface_ = false;      // the mesh's surface; false: the geometry's common one (deformed_surface)
-  std::vector<Motion> motions_;   // per Dirichlet condition
+  bool own_surface_ = false;       // the mesh's surface; false: the geometry's common one (deformed_surface)
+  std::vector<Motion> motions_;    // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not

@@ -1,6 +1,7 @@
 #include "shared/assembly/element_partition.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -13,13 +14,7 @@
 namespace altfem {
 namespace {
 
-// Compressed adjacency of the element graph: neighbours of e at offsets[e] … offsets[e + 1].
-struct ElementGraph {
-  std::vector<long long> offsets;
-  std::vector<int> neighbours;
-};
-
-ElementGraph element_graph(const TabulatedElements& elements, const BasisGroups& couplings) {
+PartitionGraph element_graph(const TabulatedElements& elements, const BasisGroups& couplings) {
   // The elements of each basis function.
   std::vector<std::vector<int>> holders(static_cast<size_t>(elements.basis_count()));
   for (int e = 0; e < elements.size(); ++e)
@@ -41,7 +36,7 @@ ElementGraph element_graph(const TabulatedElements& elements, const BasisGroups&
     group_elements.erase(std::unique(group_elements.begin(), group_elements.end()), group_elements.end());
     connect_all(group_elements);
   }
-  ElementGraph graph;
+  PartitionGraph graph;
   graph.offsets.reserve(adjacent.size() + 1);
   graph.offsets.push_back(0);
   for (std::vector<int>& list : adjacent) {
@@ -55,20 +50,16 @@ ElementGraph element_graph(const TabulatedElements& elements, const BasisGroups&
 
 #ifdef ALTFEM_HAVE_METIS
 
-std::vector<int> metis_parts(const TabulatedElements& elements, const ElementGraph& graph, int parts) {
-  idx_t vertices = elements.size(), constraints = 1, part_count = parts, cut = 0;
+std::vector<int> metis_parts(const PartitionGraph& graph, const std::vector<double>& work, int parts) {
+  idx_t vertices = static_cast<idx_t>(work.size()), constraints = 1, part_count = parts, cut = 0;
   std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
   std::vector<idx_t> neighbours(graph.neighbours.begin(), graph.neighbours.end());
-  // An element's assembly costs about points × functions² flops; points × functions keeps
-  // the weights small while ranking cut cells (many points) above plain ones.
-  std::vector<double> work(static_cast<size_t>(vertices));
   double total = 0;
-  for (int e = 0; e < elements.size(); ++e)
-    total += work[e] = static_cast<double>(elements[e].point_count()) * elements[e].basis_count();
+  for (const double w : work) total += w;
   // METIS sums the weights in idx_t: scaled so that the total stays below 2^30.
   const double scale = std::min(1.0, 0x1p30 / std::max(total, 1.0));
   std::vector<idx_t> weights(static_cast<size_t>(vertices));
-  for (int e = 0; e < elements.size(); ++e) weights[e] = std::max<idx_t>(1, static_cast<idx_t>(scale * work[e]));
+  for (idx_t e = 0; e < vertices; ++e) weights[e] = std::max<idx_t>(1, static_cast<idx_t>(scale * work[e]));
   std::vector<idx_t> part(static_cast<size_t>(vertices), 0);
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
@@ -83,33 +74,44 @@ std::vector<int> metis_parts(const TabulatedElements& elements, const ElementGra
                                  nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
   }
   if (status != METIS_OK)
-    throw std::runtime_error("METIS could not partition " + std::to_string(vertices) + " elements into " +
+    throw std::runtime_error("METIS could not partition " + std::to_string(vertices) + " vertices into " +
                              std::to_string(parts) + " parts (status " + std::to_string(status) + ")");
   return {part.begin(), part.end()};
 }
 
 #else
 
-std::vector<int> metis_parts(const TabulatedElements&, const ElementGraph&, int) {
-  throw std::logic_error("partition_elements: this build has no METIS (it comes with -DALTFEM_PETSC=ON)");
+std::vector<int> metis_parts(const PartitionGraph&, const std::vector<double>&, int) {
+  throw std::logic_error("partition_graph: this build has no METIS (it comes with -DALTFEM_PETSC=ON)");
 }
 
 #endif
 
 }  // namespace
 
-std::vector<int> partition_elements(const TabulatedElements& elements, const BasisGroups& couplings, int parts) {
-  std::vector<int> part(static_cast<size_t>(elements.size()), 0);
-  if (parts <= 1 || elements.size() == 0) return part;
-  if (elements.size() <= parts) {
-    for (int e = 0; e < elements.size(); ++e) part[e] = e;
+std::vector<int> partition_graph(const std::function<PartitionGraph()>& graph, const std::vector<double>& work,
+                                 int parts) {
+  const int vertices = static_cast<int>(work.size());
+  std::vector<int> part(static_cast<size_t>(vertices), 0);
+  if (parts <= 1 || vertices == 0) return part;
+  if (vertices <= parts) {
+    for (int e = 0; e < vertices; ++e) part[e] = e;
     return part;
   }
   ranks::collectively([&] {
-    if (ranks::index() == 0) part = metis_parts(elements, element_graph(elements, couplings), parts);
+    if (ranks::index() == 0) part = metis_parts(graph(), work, parts);
   });
   ranks::broadcast(part);
   return part;
+}
+
+std::vector<int> partition_elements(const TabulatedElements& elements, const BasisGroups& couplings, int parts) {
+  // An element's assembly costs about points × functions² flops; points × functions keeps
+  // the weights small while ranking cut cells (many points) above plain ones.
+  std::vector<double> work(static_cast<size_t>(elements.size()));
+  for (int e = 0; e < elements.size(); ++e)
+    work[e] = static_cast<double>(elements[e].point_count()) * elements[e].basis_count();
+  return partition_graph([&] { return element_graph(elements, couplings); }, work, parts);
 }
 
 }  // namespace altfem

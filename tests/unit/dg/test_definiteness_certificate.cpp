@@ -20,10 +20,10 @@ namespace {
 struct Variant {
   const char* name;
   int degree = 2;
-  bool free = false;                    // no condition: K keeps the six rigid motions
-  bool partial = false;                 // the faces z = 0 and z = 1 prescribe x and z only
-  double tangential_fraction = 1;       // < 1: Hansbo & Larson's split penalty
-  bool two_materials = false;           // a checkerboard of two Lamé pairs
+  bool free = false;               // no condition: K keeps the six rigid motions
+  bool partial = false;            // the faces z = 0 and z = 1 prescribe x and z only
+  double tangential_fraction = 1;  // < 1: Hansbo & Larson's split penalty
+  bool two_materials = false;      // a checkerboard of two Lamé pairs
   PenaltyScaling scaling = PenaltyScaling::cell_surface;
 };
 

@@ -19,13 +19,16 @@
 #include <memory>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "dg/definiteness_certificate.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "shared/solve/process_ranks.hpp"
 #include "tests/support/static_solve.hpp"
+#include "tests/unit/dg/hex_grid_cells.hpp"
 
 namespace altfem {
 namespace {
@@ -146,6 +149,35 @@ TEST_P(TwoRanks, PetscSolutionIsTheOneProcessSolution) {
 
 INSTANTIATE_TEST_SUITE_P(EveryMethod, TwoRanks, ::testing::ValuesIn(cases()),
                          [](const auto& info) { return info.param.name; });
+
+// dg's exact linear system (its default path): each rank integrates the cells METIS gave
+// it and the faces it owns, every cell and face a class of its own here, and K, the mass
+// and the definiteness certificate are one process's.
+TEST(TwoRanksDg, EachRankIntegratesItsCellsAndKIsTheWhole) {
+  const test::GridCells grid = test::hex_grid_cells(4);
+  dg::DgSettings settings{2, dg::Flux::interior_penalty, 30, 2.0, 1.5};
+  settings.reuse_similar_cells = false;
+  const dg::DgLinearSystem together(grid.cells, grid.faces, settings);
+  int owned = 0;
+  for (int cell = 0; cell < together.cell_count(); ++cell) owned += together.owns_cell(cell);
+  EXPECT_GT(owned, 0);
+  EXPECT_LT(owned, together.cell_count());
+  EXPECT_EQ(static_cast<int>(ranks::sum(owned)), together.cell_count());
+  const dg::DefinitenessCertificate certificate = dg::certify_definiteness(together);
+  const ranks::Alone one_process;
+  const dg::DgLinearSystem alone(grid.cells, grid.faces, settings);
+  for (const auto& [two, one] : {std::pair{together.stiffness(), alone.stiffness()}, {together.mass(), alone.mass()}}) {
+    EXPECT_EQ(two.nonZeros(), one.nonZeros());
+    if (two.nonZeros() != one.nonZeros()) continue;
+    const Eigen::Map<const Eigen::VectorXd> two_values(two.valuePtr(), two.nonZeros());
+    const Eigen::Map<const Eigen::VectorXd> one_values(one.valuePtr(), one.nonZeros());
+    EXPECT_LE((two_values - one_values).lpNorm<Eigen::Infinity>(), 1e-13 * one_values.lpNorm<Eigen::Infinity>());
+  }
+  EXPECT_LE((together.function_integrals() - alone.function_integrals()).lpNorm<Eigen::Infinity>(), 1e-15);
+  const dg::DefinitenessCertificate whole = dg::certify_definiteness(alone);
+  EXPECT_EQ(certificate.cells_checked, whole.cells_checked);
+  EXPECT_NEAR(certificate.largest_ratio, whole.largest_ratio, 1e-12 * whole.largest_ratio);
+}
 
 }  // namespace
 }  // namespace altfem
