@@ -21,15 +21,56 @@ SceneOverride make_override(const std::string& pointer, const json& value) {
   return {pointer, value, pointer.substr(1) + "=" + shown};
 }
 
+// Values longer than this are named by their leaves in labels.
+constexpr std::size_t longest_shown_value = 24;
+
+std::string shown(const json& value) { return value.is_string() ? value.get<std::string>() : value.dump(); }
+
+// The last token of a flattened pointer that is not an array index ("/0/refine/cycles" → "cycles").
+std::string leaf_name(const std::string& pointer) {
+  std::string name;
+  std::size_t end = pointer.size();
+  while (end > 0) {
+    const std::size_t slash = pointer.rfind('/', end - 1);
+    name = pointer.substr(slash + 1, end - slash - 1);
+    if (!name.empty() && name.find_first_not_of("0123456789") != std::string::npos) return name;
+    end = slash;
+  }
+  return name;
+}
+
+// A long value as "name=value,…" over the leaves in which it differs from its siblings (the
+// other values of its sweep), or over all its leaves when none differ: refinement events
+// read "cycles=4", not their whole JSON. "" for a value short enough to show whole.
+std::string value_label(const json& value, const std::vector<json>& siblings) {
+  if (!value.is_structured() || shown(value).size() <= longest_shown_value) return "";
+  const json leaves = value.flatten();
+  std::vector<std::string> differing;
+  for (const auto& [pointer, leaf] : leaves.items())
+    for (const json& sibling : siblings) {
+      const json other = sibling.is_structured() ? sibling.flatten() : json::object();
+      if (!other.contains(pointer) || other[pointer] != leaf) {
+        differing.push_back(pointer);
+        break;
+      }
+    }
+  if (differing.empty())
+    for (const auto& [pointer, leaf] : leaves.items()) differing.push_back(pointer);
+  std::string text;
+  for (const std::string& pointer : differing)
+    text += (text.empty() ? "" : ",") + leaf_name(pointer) + "=" + shown(leaves[pointer]);
+  return text;
+}
+
 }  // namespace
 
 std::string Configuration::label() const {
   std::string text = method;
-  for (const auto& override_ : overrides) {
-    const auto slash = override_.pointer.rfind('/');
-    const std::string key = override_.pointer.substr(slash + 1);
-    text +=
-        " " + key + "=" + (override_.value.is_string() ? override_.value.get<std::string>() : override_.value.dump());
+  for (std::size_t k = 0; k < overrides.size(); ++k) {
+    const SceneOverride& override_ = overrides[k];
+    const std::string key = override_.pointer.substr(override_.pointer.rfind('/') + 1);
+    const std::string named = k < value_labels.size() ? value_labels[k] : "";
+    text += " " + (named.empty() ? key + "=" + shown(override_.value) : key + "(" + named + ")");
   }
   return text;
 }
@@ -122,9 +163,12 @@ std::vector<Configuration> expand_configurations(const ComparePlan& plan) {
       // An odometer over the applicable sweeps; the last one varies fastest.
       std::vector<std::size_t> index(applicable.size(), 0);
       while (true) {
-        Configuration configuration{method, {}, false};
-        for (std::size_t k = 0; k < applicable.size(); ++k)
-          configuration.overrides.push_back(make_override(applicable[k]->pointer, applicable[k]->values[index[k]]));
+        Configuration configuration{method, {}, false, {}};
+        for (std::size_t k = 0; k < applicable.size(); ++k) {
+          const json& value = applicable[k]->values[index[k]];
+          configuration.overrides.push_back(make_override(applicable[k]->pointer, value));
+          configuration.value_labels.push_back(value_label(value, applicable[k]->values));
+        }
         configurations.push_back(std::move(configuration));
         std::size_t k = applicable.size();
         while (k > 0 && ++index[k - 1] == applicable[k - 1]->values.size()) index[--k] = 0;
@@ -132,7 +176,12 @@ std::vector<Configuration> expand_configurations(const ComparePlan& plan) {
       }
     }
   }
-  if (plan.reference) configurations.push_back({plan.reference->method, plan.reference->overrides, true});
+  if (plan.reference) {
+    Configuration reference{plan.reference->method, plan.reference->overrides, true, {}};
+    for (const SceneOverride& override_ : reference.overrides)
+      reference.value_labels.push_back(value_label(override_.value, {}));
+    configurations.push_back(std::move(reference));
+  }
   return configurations;
 }
 

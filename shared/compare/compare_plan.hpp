@@ -42,7 +42,11 @@ struct Configuration {
   std::string method;
   std::vector<SceneOverride> overrides;  ///< in sweep order
   bool is_reference = false;
-  /// "fem element=tet4 resolution=[10,1,1]": the method and the last token of each override.
+  /// Per override, its value named by the leaves that tell it from the sweep's other values
+  /// ("cycles=4") when its JSON is long; "" (or missing) shows the value whole.
+  std::vector<std::string> value_labels;
+  /// "fem element=tet4 resolution=[10,1,1] events(cycles=4)": the method and the last token of
+  /// each override with its value or, for a long one, its value label.
   std::string label() const;
 };
 

@@ -78,8 +78,22 @@ TEST(ComparePlan, RunsTheUnionOfSweepGroups) {
   ASSERT_EQ(configurations.size(), 4u);
   EXPECT_EQ(configurations[0].label(), "fem resolution=[4,4,1]");
   EXPECT_EQ(configurations[1].label(), "fem resolution=[8,8,2]");
-  EXPECT_EQ(configurations[2].label(), R"(fem resolution=[4,4,1] events=[{"refine":{"cycles":2},"time":0}])");
+  EXPECT_EQ(configurations[2].label(), "fem resolution=[4,4,1] events(cycles=2,time=0)");
   EXPECT_EQ(configurations[3].label(), "fem resolution=[8,8,2]");
+}
+
+// A long swept value is named by the leaves in which it differs from the sweep's other
+// values: refinement events by their cycles, not their whole JSON.
+TEST(ComparePlan, NamesLongSweptValuesByWhatTellsThemApart) {
+  const json block = json::parse(R"({"methods": ["fem"], "sweeps": {"events": [
+    [{"time": 0, "refine": {"criterion": "error_indicator", "fraction": 0.5, "cycles": 2}}],
+    [{"time": 0, "refine": {"criterion": "error_indicator", "fraction": 0.5, "cycles": 4}}]]},
+    "reference": {"method": "fem", "set": {"discretization/fem/element": "hex27"}}})");
+  const auto configurations = expand_configurations(plan_from_scene(block, {"fem"}));
+  ASSERT_EQ(configurations.size(), 3u);
+  EXPECT_EQ(configurations[0].label(), "fem events(cycles=2)");
+  EXPECT_EQ(configurations[1].label(), "fem events(cycles=4)");
+  EXPECT_EQ(configurations[2].label(), "fem element=hex27");
 }
 
 }  // namespace
