@@ -109,6 +109,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   if (reuse) {
     for (Eigen::Index c = 0; c < cell_count; ++c) {
       reuse->reused += reused[c];
+      reuse->integrated += keys[c] != 0 && !reused[c];
       if (reuse->computed && keys[c] != 0) reuse->computed->emplace(keys[c], result.cells[c]);
     }
   }

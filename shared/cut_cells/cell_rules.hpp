@@ -50,6 +50,7 @@ struct CellRuleReuse {
   const CellRuleMemory* previous = nullptr;  ///< rules taken by key
   CellRuleMemory* computed = nullptr;        ///< receives the rule of every cell with tetrahedra, by key
   int reused = 0;                            ///< out: cells whose rule came from `previous`
+  int integrated = 0;                        ///< out: cells with tetrahedra whose rule was computed
 };
 
 /// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral

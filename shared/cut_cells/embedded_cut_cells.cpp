@@ -111,6 +111,7 @@ nlohmann::json EmbeddedCutCells::facts() const {
           {"failed_simplifications", statistics_->failed_simplifications},
           {"rule_generation_s", statistics_->seconds},
           {"reused_cell_rules", statistics_->reused_cells},
+          {"integrated_cell_rules", statistics_->integrated_cells},
           {"piece_finding_s", topology_seconds_},
           {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
           {"schwarz_blocks", fcm_.schwarz_blocks},

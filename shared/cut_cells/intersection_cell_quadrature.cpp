@@ -50,6 +50,7 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
         statistics->max_residual = rules.max_residual;
         statistics->failed_simplifications = rules.failed_simplifications;
         statistics->reused_cells = reuse.reused;
+        statistics->integrated_cells = reuse.integrated;
       }
     }
     std::vector<CellQuadrature> cells(rules.cells.size());

@@ -18,8 +18,9 @@ struct IntersectionStatistics {
   Eigen::Index final_points = 0;    ///< … and after
   double max_residual = 0.0;        ///< worst simplification moment residual
   int failed_simplifications = 0;
-  double seconds = 0.0;  ///< generation and simplification, stiffness and mass
-  int reused_cells = 0;  ///< cells whose stiffness rule came from the previous rules
+  double seconds = 0.0;      ///< generation and simplification, stiffness and mass
+  int reused_cells = 0;      ///< cells whose stiffness rule came from the previous rules
+  int integrated_cells = 0;  ///< cells whose stiffness rule was computed (when rules are remembered)
 };
 
 /// background: the FCM mesh (hexahedra with planar faces, or tetrahedra); embedded: a
