@@ -1,6 +1,6 @@
 #include "dg/cell_partition.hpp"
 
-#include <algorithm>
+#include <utility>
 
 #include "shared/assembly/element_partition.hpp"
 
@@ -20,15 +20,7 @@ std::vector<int> partition_cells(const std::vector<Polyhedron>& cells, const std
       adjacent[first].push_back(second);
       adjacent[second].push_back(first);
     }
-    PartitionGraph result;
-    result.offsets.push_back(0);
-    for (std::vector<int>& list : adjacent) {
-      std::sort(list.begin(), list.end());
-      list.erase(std::unique(list.begin(), list.end()), list.end());
-      result.neighbours.insert(result.neighbours.end(), list.begin(), list.end());
-      result.offsets.push_back(static_cast<long long>(result.neighbours.size()));
-    }
-    return result;
+    return compressed_graph(std::move(adjacent));
   };
   return partition_graph(graph, work, parts);
 }

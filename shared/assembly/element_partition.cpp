@@ -4,6 +4,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "shared/solve/process_ranks.hpp"
 
@@ -36,16 +37,7 @@ PartitionGraph element_graph(const TabulatedElements& elements, const BasisGroup
     group_elements.erase(std::unique(group_elements.begin(), group_elements.end()), group_elements.end());
     connect_all(group_elements);
   }
-  PartitionGraph graph;
-  graph.offsets.reserve(adjacent.size() + 1);
-  graph.offsets.push_back(0);
-  for (std::vector<int>& list : adjacent) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    graph.neighbours.insert(graph.neighbours.end(), list.begin(), list.end());
-    graph.offsets.push_back(static_cast<long long>(graph.neighbours.size()));
-  }
-  return graph;
+  return compressed_graph(std::move(adjacent));
 }
 
 #ifdef ALTFEM_HAVE_METIS
@@ -88,6 +80,19 @@ std::vector<int> metis_parts(const PartitionGraph&, const std::vector<double>&, 
 #endif
 
 }  // namespace
+
+PartitionGraph compressed_graph(std::vector<std::vector<int>> adjacent) {
+  PartitionGraph graph;
+  graph.offsets.reserve(adjacent.size() + 1);
+  graph.offsets.push_back(0);
+  for (std::vector<int>& list : adjacent) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    graph.neighbours.insert(graph.neighbours.end(), list.begin(), list.end());
+    graph.offsets.push_back(static_cast<long long>(graph.neighbours.size()));
+  }
+  return graph;
+}
 
 std::vector<int> partition_graph(const std::function<PartitionGraph()>& graph, const std::vector<double>& work,
                                  int parts) {

@@ -24,6 +24,10 @@ struct PartitionGraph {
   std::vector<int> neighbours;
 };
 
+/// The compressed form of the graph whose vertex v neighbours the vertices of adjacent[v]
+/// (repeats dropped, neighbours sorted; give each edge from both ends).
+PartitionGraph compressed_graph(std::vector<std::vector<int>> adjacent);
+
 /// The part of each vertex (#work entries) by METIS's k-way partition of `graph` (built
 /// on rank 0 only), each vertex weighted by its `work`; the same on every rank, contiguous
 /// where the graph is connected. Throws std::logic_error for parts > 1 without METIS.
