@@ -1,6 +1,7 @@
 #include "dg/dg_discretization.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 #include "shared/solve/block_relaxation_preconditioner.hpp"
@@ -85,6 +86,24 @@ const ExplicitMass& LinearDgDiscretization::explicit_mass() const {
 const Eigen::SparseMatrix<double>& LinearDgDiscretization::mass_matrix() const {
   if (!mass_.has_value()) mass_ = on_union_pattern(block_mass_, stiffness_);
   return *mass_;
+}
+
+void LinearDgDiscretization::add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const {
+  if (matrix.nonZeros() != stiffness_.nonZeros() || matrix.outerSize() != stiffness_.outerSize())
+    throw std::logic_error("LinearDgDiscretization::add_mass: the matrix does not have the Hessian's pattern");
+  if (mass_positions_.empty() && block_mass_.nonZeros() > 0) {
+    mass_positions_.reserve(static_cast<std::size_t>(block_mass_.nonZeros()));
+    for (Eigen::Index column = 0; column < block_mass_.outerSize(); ++column) {
+      const int* begin = stiffness_.innerIndexPtr() + stiffness_.outerIndexPtr()[column];
+      const int* end = stiffness_.innerIndexPtr() + stiffness_.outerIndexPtr()[column + 1];
+      for (Eigen::SparseMatrix<double>::InnerIterator entry(block_mass_, column); entry; ++entry)
+        mass_positions_.push_back(std::lower_bound(begin, end, static_cast<int>(entry.row())) -
+                                  stiffness_.innerIndexPtr());
+    }
+  }
+  const double* mass = block_mass_.valuePtr();
+  double* values = matrix.valuePtr();
+  for (std::size_t k = 0; k < mass_positions_.size(); ++k) values[mass_positions_[k]] += factor * mass[k];
 }
 
 Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& acceleration) const {

@@ -54,9 +54,15 @@ public:
   }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return stiffness_; }
   bool hessian_is_constant() const override { return true; }
-  /// On the stiffness's pattern, built on the first call (a static run never makes it).
+  /// On the stiffness's pattern, built on the first call. The integrators do not ask for it
+  /// (mass_times, add_mass): it would hold as many entries as K, most of them zeros.
   /// Not thread-safe on that first call.
   const Eigen::SparseMatrix<double>& mass_matrix() const override;
+  /// M v by the element blocks.
+  Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override { return block_mass_ * vector; }
+  /// matrix += factor M, each element block's entries added where K's pattern holds them
+  /// (their positions found on the first call; not thread-safe on that call).
+  void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const override;
   /// Built on the first call (only symplectic Euler and its time-step estimate ask).
   const ExplicitMass& explicit_mass() const override;
   /// f_(3a+i) = a_i ∫ ρ φ_a dV.
@@ -76,6 +82,7 @@ private:
   Eigen::SparseMatrix<double> stiffness_;                    // its pattern holds block_mass_'s
   Eigen::SparseMatrix<double> block_mass_;                   // block diagonal, each cell's block
   mutable std::optional<Eigen::SparseMatrix<double>> mass_;  // block_mass_ on the stiffness's pattern
+  mutable std::vector<Eigen::Index> mass_positions_;         // per block_mass_ entry, its index in K's values
   Eigen::VectorXd function_integrals_;
   std::vector<std::vector<int>> element_dofs_;
   mutable std::optional<BlockDiagonalMass> explicit_mass_;

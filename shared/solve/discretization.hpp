@@ -6,6 +6,7 @@
 // penalty) and constrain no DOF at all.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <stdexcept>
 #include <vector>
 
 #include "shared/solve/dirichlet_dofs.hpp"
@@ -40,6 +41,19 @@ public:
 
   /// Consistent mass matrix, with hessian_pattern().
   virtual const Eigen::SparseMatrix<double>& mass_matrix() const = 0;
+  /// M v: what the implicit integrators take of the mass, besides add_mass(). A method
+  /// whose mass is much sparser than its Hessian (dg's element blocks) overrides both, so
+  /// that no copy of the mass on the Hessian's pattern is built.
+  virtual Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const { return mass_matrix() * vector; }
+  /// matrix += factor M, for a matrix with hessian_pattern(): by default the value arrays
+  /// added, which is only right when mass_matrix() has that pattern too.
+  virtual void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const {
+    const Eigen::SparseMatrix<double>& mass = mass_matrix();
+    if (mass.nonZeros() != matrix.nonZeros() || mass.outerSize() != matrix.outerSize())
+      throw std::logic_error("Discretization::add_mass: the mass matrix and the Hessian patterns differ");
+    Eigen::Map<Eigen::VectorXd>(matrix.valuePtr(), matrix.nonZeros()) +=
+        factor * Eigen::Map<const Eigen::VectorXd>(mass.valuePtr(), matrix.nonZeros());
+  }
   /// The mass explicit integration multiplies and inverts (lumped for Lagrange bases,
   /// block-diagonal for DG).
   virtual const ExplicitMass& explicit_mass() const = 0;

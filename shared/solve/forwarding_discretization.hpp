@@ -24,6 +24,8 @@ public:
   bool hessian_is_constant() const override { return inner_->hessian_is_constant(); }
   bool forces_have_potential() const override { return inner_->forces_have_potential(); }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return inner_->mass_matrix(); }
+  Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override { return inner_->mass_times(vector); }
+  void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const override { inner_->add_mass(factor, matrix); }
   const ExplicitMass& explicit_mass() const override { return inner_->explicit_mass(); }
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
     return inner_->body_force(acceleration);

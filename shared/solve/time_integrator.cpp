@@ -20,17 +20,6 @@ bool minimised_by_lbfgs(const IntegratorOptions& options) {
          options.kind != IntegrationScheme::semi_implicit;
 }
 
-// The integrators add the value arrays of the Hessian, the mass and the damping
-// matrix: that is only right when all of them have one pattern.
-void check_same_pattern(const Eigen::SparseMatrix<double>& mass, const Eigen::SparseMatrix<double>& pattern) {
-  const bool same =
-      mass.rows() == pattern.rows() && mass.cols() == pattern.cols() && mass.nonZeros() == pattern.nonZeros() &&
-      mass.isCompressed() && pattern.isCompressed() &&
-      std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1, mass.outerIndexPtr()) &&
-      std::equal(pattern.innerIndexPtr(), pattern.innerIndexPtr() + pattern.nonZeros(), mass.innerIndexPtr());
-  if (!same) throw std::logic_error("TimeIntegrator: the discretization's mass matrix and Hessian patterns differ");
-}
-
 // Static equilibrium: minimise Ψ(u) − f·u.
 class StaticPotential final : public Objective {
 public:
@@ -74,7 +63,7 @@ public:
     const double elastic = discretization_.energy(u);
     if (!std::isfinite(elastic)) return elastic;
     const Eigen::VectorXd inertial = u - target_;
-    double value = 0.5 / (h_ * h_) * inertial.dot(discretization_.mass_matrix() * inertial) + elastic - force_.dot(u);
+    double value = 0.5 / (h_ * h_) * inertial.dot(discretization_.mass_times(inertial)) + elastic - force_.dot(u);
     if (damping_) {
       const Eigen::VectorXd moved = u - previous_;
       value += 0.5 / h_ * moved.dot(*damping_ * moved);
@@ -83,16 +72,16 @@ public:
   }
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override {
     discretization_.gradient(u, gradient);
-    gradient.noalias() += discretization_.mass_matrix() * ((u - target_) / (h_ * h_));
+    gradient.noalias() += discretization_.mass_times((u - target_) / (h_ * h_));
     if (damping_) gradient.noalias() += *damping_ * ((u - previous_) / h_);
     gradient -= force_;
   }
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override {
     discretization_.hessian(u, hessian, project_spd);
-    auto values = Eigen::Map<Eigen::VectorXd>(hessian.valuePtr(), hessian.nonZeros());
-    values +=
-        Eigen::Map<const Eigen::VectorXd>(discretization_.mass_matrix().valuePtr(), hessian.nonZeros()) / (h_ * h_);
-    if (damping_) values += Eigen::Map<const Eigen::VectorXd>(damping_->valuePtr(), hessian.nonZeros()) / h_;
+    discretization_.add_mass(1 / (h_ * h_), hessian);
+    if (damping_)
+      Eigen::Map<Eigen::VectorXd>(hessian.valuePtr(), hessian.nonZeros()) +=
+          Eigen::Map<const Eigen::VectorXd>(damping_->valuePtr(), hessian.nonZeros()) / h_;
   }
   bool hessian_is_constant() const override { return discretization_.hessian_is_constant(); }
   bool gradient_has_potential() const override { return discretization_.forces_have_potential(); }
@@ -125,10 +114,6 @@ TimeIntegrator::TimeIntegrator(const Discretization& discretization, LinearSolve
 }
 
 void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* linear_solver) {
-  // A static run never adds the mass to the Hessian (nor asks for it: dg builds it on
-  // the Hessian's pattern only when asked).
-  if (options_.kind != IntegrationScheme::static_equilibrium)
-    check_same_pattern(discretization.mass_matrix(), discretization.hessian_pattern());
   discretization_ = &discretization;
   if (linear_solver) linear_solver_ = linear_solver;
   elimination_ =
@@ -150,7 +135,7 @@ double TimeIntegrator::kinetic_energy(const State& state) const {
   if (options_.kind == IntegrationScheme::static_equilibrium) return 0;
   return options_.kind == IntegrationScheme::symplectic_euler
              ? discretization_->explicit_mass().kinetic_energy(state.velocity)
-             : 0.5 * state.velocity.dot(discretization_->mass_matrix() * state.velocity);
+             : 0.5 * state.velocity.dot(discretization_->mass_times(state.velocity));
 }
 
 double TimeIntegrator::total_energy(const State& state) const {
@@ -283,10 +268,8 @@ StepReport TimeIntegrator::step_implicit(State& state, bool single_step) {
     if (damped) {
       damping = discretization_->hessian_pattern();
       if (options_.rayleigh_stiffness > 0) discretization_->hessian(previous, damping, true);
-      auto values = Eigen::Map<Eigen::VectorXd>(damping.valuePtr(), damping.nonZeros());
-      values = options_.rayleigh_stiffness * values +
-               options_.rayleigh_mass *
-                   Eigen::Map<const Eigen::VectorXd>(discretization_->mass_matrix().valuePtr(), damping.nonZeros());
+      Eigen::Map<Eigen::VectorXd>(damping.valuePtr(), damping.nonZeros()) *= options_.rayleigh_stiffness;
+      discretization_->add_mass(options_.rayleigh_mass, damping);
     }
     IncrementalPotential potential(*discretization_, h, target, previous, damped ? &damping : nullptr, force);
     const Eigen::VectorXd prescribed = discretization_->prescribed_displacement(next_time);

@@ -11,6 +11,7 @@
 #include <Eigen/SparseLU>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <tuple>
 
 #include "dg/dg_method.hpp"
@@ -178,6 +179,30 @@ TEST(DgMethod, BabuskaZlamalOnlyApproximatesTheAffineSolution) {
 bool cholesky_succeeds(const Eigen::SparseMatrix<double>& matrix) {
   Eigen::SimplicialLLT<Eigen::SparseMatrix<double>> factor(matrix);
   return factor.info() == Eigen::Success;
+}
+
+// The implicit integrators take dg's mass as M v and as M added into the Hessian, from its
+// element blocks: the same as the mass on K's pattern (which they no longer build, a copy
+// of K's size), to round-off.
+TEST(DgMethod, MassTimesAndAddMassAgreeWithTheMassMatrix) {
+  const Built built =
+      build(write_bar_scene("mass_bar", linear_no_contraction, R"({ "degree": 2, "resolution": [3, 2, 2] })"));
+  const Discretization& discretization = built.method->discretization();
+  const Eigen::SparseMatrix<double>& mass = discretization.mass_matrix();
+  const Eigen::VectorXd v = Eigen::VectorXd::LinSpaced(discretization.dof_count(), -1.0, 2.0);
+  const Eigen::VectorXd expected = mass * v;
+  EXPECT_LE((discretization.mass_times(v) - expected).norm(), 1e-14 * expected.norm());
+  // Into zeros on the Hessian's pattern, which the mass matrix shares.
+  Eigen::SparseMatrix<double> added = discretization.hessian_pattern();
+  Eigen::Map<Eigen::VectorXd> values(added.valuePtr(), added.nonZeros());
+  values.setZero();
+  discretization.add_mass(2.5, added);
+  const Eigen::Map<const Eigen::VectorXd> mass_values(mass.valuePtr(), mass.nonZeros());
+  ASSERT_EQ(added.nonZeros(), mass.nonZeros());
+  EXPECT_LE((values - 2.5 * mass_values).lpNorm<Eigen::Infinity>(), 1e-14 * mass_values.lpNorm<Eigen::Infinity>());
+  Eigen::SparseMatrix<double> other_pattern(discretization.dof_count(), discretization.dof_count());
+  other_pattern.makeCompressed();
+  EXPECT_THROW(discretization.add_mass(1.0, other_pattern), std::logic_error);
 }
 
 // A penalty far too small for IP on tetrahedra: doubling stops at the first η whose K
