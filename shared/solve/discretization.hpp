@@ -30,7 +30,7 @@ public:
   virtual void hessian(const Eigen::VectorXd& displacement, Eigen::SparseMatrix<double>& hessian,
                        bool project_spd) const = 0;
   /// The sparsity of hessian(), mass_matrix() and every matrix the integrators build
-  /// (they add value arrays; TimeIntegrator checks the patterns are identical).
+  /// (the default add_mass adds value arrays and refuses a mass of another pattern).
   virtual const Eigen::SparseMatrix<double>& hessian_pattern() const = 0;
   /// True when the Hessian does not depend on u (linear elasticity).
   virtual bool hessian_is_constant() const = 0;
