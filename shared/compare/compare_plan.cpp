@@ -1,5 +1,7 @@
 #include "shared/compare/compare_plan.hpp"
 
+#include <algorithm>
+
 #include "shared/common/error.hpp"
 
 namespace altfem {
@@ -45,15 +47,13 @@ std::string leaf_name(const std::string& pointer) {
 std::string value_label(const json& value, const std::vector<json>& siblings) {
   if (!value.is_structured() || shown(value).size() <= longest_shown_value) return "";
   const json leaves = value.flatten();
+  std::vector<json> others;
+  for (const json& sibling : siblings) others.push_back(sibling.is_structured() ? sibling.flatten() : json::object());
   std::vector<std::string> differing;
   for (const auto& [pointer, leaf] : leaves.items())
-    for (const json& sibling : siblings) {
-      const json other = sibling.is_structured() ? sibling.flatten() : json::object();
-      if (!other.contains(pointer) || other[pointer] != leaf) {
-        differing.push_back(pointer);
-        break;
-      }
-    }
+    if (std::any_of(others.begin(), others.end(),
+                    [&](const json& other) { return !other.contains(pointer) || other[pointer] != leaf; }))
+      differing.push_back(pointer);
   if (differing.empty())
     for (const auto& [pointer, leaf] : leaves.items()) differing.push_back(pointer);
   std::string text;

@@ -34,21 +34,15 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
            {"snapped_nodes", result_of_cut.snapped_nodes},
            {"merged_pieces", merged.merged + result_of_cut.merged_pieces},
            {"cells", pieces.cell_count()}};
-  // A piece is as refined as its cell; merged pieces as the most refined of them.
-  std::vector<int> levels;
-  if (!mesh.cell_levels.empty()) {
-    levels.assign(static_cast<std::size_t>(pieces.cell_count()), 0);
-    for (std::size_t piece = 0; piece < result_of_cut.parent_cell.size(); ++piece) {
-      const int cell = merged.new_cell.empty() ? static_cast<int>(piece) : merged.new_cell[piece];
-      levels[cell] = std::max(levels[cell], mesh.cell_levels[result_of_cut.parent_cell[piece]]);
-    }
-  }
-  // A cell holds its parent's piece, or pieces of several cells merged (-1).
+  // Per cell of the result: its parent, the cell before that held it whole (-1: pieces of
+  // several merged), and its level, its parent's (merged pieces: the most refined one's).
   std::vector<int> parents(static_cast<std::size_t>(pieces.cell_count()), -2);
+  std::vector<int> levels(mesh.cell_levels.empty() ? 0 : parents.size(), 0);
   for (std::size_t piece = 0; piece < result_of_cut.parent_cell.size(); ++piece) {
     const int cell = merged.new_cell.empty() ? static_cast<int>(piece) : merged.new_cell[piece];
     const int parent = result_of_cut.parent_cell[piece];
     parents[cell] = parents[cell] == -2 || parents[cell] == parent ? parent : -1;
+    if (!levels.empty()) levels[cell] = std::max(levels[cell], mesh.cell_levels[parent]);
   }
   PolyhedralSceneMesh result = mesh;
   // The surface it deforms when it is its own (the geometry has none in common), cut by

@@ -6,6 +6,7 @@
 // penalty) and constrain no DOF at all.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -14,6 +15,13 @@
 #include "shared/solve/linear_solver.hpp"
 
 namespace altfem {
+
+/// Whether two compressed matrices store the same entries (sizes and index arrays equal).
+inline bool same_pattern(const Eigen::SparseMatrix<double>& a, const Eigen::SparseMatrix<double>& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() && a.nonZeros() == b.nonZeros() && a.isCompressed() &&
+         b.isCompressed() && std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+         std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
+}
 
 class Discretization {
 public:
@@ -49,7 +57,7 @@ public:
   /// added, which is only right when mass_matrix() has that pattern too.
   virtual void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const {
     const Eigen::SparseMatrix<double>& mass = mass_matrix();
-    if (mass.nonZeros() != matrix.nonZeros() || mass.outerSize() != matrix.outerSize())
+    if (!same_pattern(mass, matrix))
       throw std::logic_error("Discretization::add_mass: the mass matrix and the Hessian patterns differ");
     Eigen::Map<Eigen::VectorXd>(matrix.valuePtr(), matrix.nonZeros()) +=
         factor * Eigen::Map<const Eigen::VectorXd>(mass.valuePtr(), matrix.nonZeros());
