@@ -268,22 +268,43 @@ void ElasticAssembler::hessian(const Eigen::VectorXd& displacement, SparseMatrix
 void ElasticAssembler::mass_matrix(SparseMatrix& mass) const { mass_matrix(element_masses(elements_), mass); }
 
 void ElasticAssembler::mass_matrix(const ElementMasses& masses, SparseMatrix& mass) const {
-  check_masses(masses);
   mass = pattern();
-  double* values = mass.valuePtr();
-  const int* outer = mass.outerIndexPtr();
+  add_mass(masses, 1.0, mass);
+}
+
+void ElasticAssembler::add_mass(const ElementMasses& masses, double factor, SparseMatrix& matrix) const {
+  check_masses(masses);
+  double* values = matrix.valuePtr();
+  const int* outer = matrix.outerIndexPtr();
   for_each_colored_element([&](int e) {
     const ElementView element = elements_[e];
-    const double density = materials_[element.material]->density();
+    const double scale = factor * materials_[element.material]->density();
     const int n = element.basis_count();
     const int* offsets = sparsity_.pair_offsets(e);
-    const Eigen::MatrixXd& matrix = masses.matrices[e];
+    const Eigen::MatrixXd& element_mass = masses.matrices[e];
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
-        const double m = density * matrix(a, b);
+        const double m = scale * element_mass(a, b);
         for (int k = 0; k < 3; ++k) values[outer[3 * element.basis[b] + k] + offsets[b * n + a] + k] += m;
       }
   });
+}
+
+Eigen::VectorXd ElasticAssembler::mass_times(const ElementMasses& masses, const Eigen::VectorXd& vector) const {
+  check_masses(masses);
+  Eigen::VectorXd product = Eigen::VectorXd::Zero(pattern().rows());
+  for_each_colored_element([&](int e) {
+    const ElementView element = elements_[e];
+    const int n = element.basis_count();
+    // The element's nodal values, n × 3 (the mass acts alike on each component); per
+    // thread, reallocated only when n changes.
+    thread_local Eigen::MatrixX3d nodal, result;
+    nodal.resize(n, 3);
+    for (int a = 0; a < n; ++a) nodal.row(a) = vector.segment<3>(3 * element.basis[a]).transpose();
+    result.noalias() = materials_[element.material]->density() * masses.matrices[e] * nodal;
+    for (int a = 0; a < n; ++a) product.segment<3>(3 * element.basis[a]) += result.row(a).transpose();
+  });
+  return product;
 }
 
 Eigen::VectorXd ElasticAssembler::body_force(const Eigen::Vector3d& acceleration) const {

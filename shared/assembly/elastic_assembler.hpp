@@ -56,6 +56,11 @@ public:
   /// The same three from other rules of the same elements, reduced per element (one
   /// entry per element, in order; ElementMasses): the FCM's mass rules.
   void mass_matrix(const ElementMasses& masses, SparseMatrix& mass) const;
+  /// matrix += factor · M, element by element, into a matrix with pattern(): what
+  /// mass_matrix() would add, without a matrix of the mass of its own.
+  void add_mass(const ElementMasses& masses, double factor, SparseMatrix& matrix) const;
+  /// M v (#dofs), element by element.
+  Eigen::VectorXd mass_times(const ElementMasses& masses, const Eigen::VectorXd& vector) const;
   Eigen::VectorXd body_force(const ElementMasses& masses, const Eigen::Vector3d& acceleration) const;
   Eigen::VectorXd lumped_mass(const ElementMasses& masses) const;
   /// Per element the Cauchy stress σ = P Fᵀ / det F averaged over its quadrature points

@@ -93,14 +93,10 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
     term->bind(assembler_->sparsity(), first_group);
     first_group += term->couplings().size();
   }
-  assembler_->mass_matrix(masses_, mass_);
   lumped_mass_ = assembler_->lumped_mass(masses_);
   if (parts_.explicit_mass == ExplicitMassKind::lumped) {
     check_lumped_mass_positive(lumped_mass_, parts_.elements);
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
-  } else {
-    explicit_mass_ = std::make_unique<BlockDiagonalMass>(
-        mass_, parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);
   }
   constant_hessian_ = assembler_->is_linear();
   for (const auto& term : parts_.terms) constant_hessian_ = constant_hessian_ && term->is_quadratic();
@@ -109,6 +105,31 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
     assembler_->set_deformation_shifts(shifts_);
     set_time(0);
   }
+}
+
+const Eigen::SparseMatrix<double>& TabulatedDiscretization::mass_matrix() const {
+  if (!mass_) {
+    mass_.emplace();
+    assembler_->mass_matrix(masses_, *mass_);
+  }
+  return *mass_;
+}
+
+void TabulatedDiscretization::add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const {
+  // The sizes and column starts: comparing every row index would read the whole
+  // pattern at each Newton iteration, for what the element scatter writes anyway.
+  const Eigen::SparseMatrix<double>& pattern = assembler_->pattern();
+  if (matrix.rows() != pattern.rows() || matrix.nonZeros() != pattern.nonZeros() ||
+      !std::equal(pattern.outerIndexPtr(), pattern.outerIndexPtr() + pattern.outerSize() + 1, matrix.outerIndexPtr()))
+    throw std::logic_error("TabulatedDiscretization::add_mass: the matrix does not have the Hessian's pattern");
+  assembler_->add_mass(masses_, factor, matrix);
+}
+
+const ExplicitMass& TabulatedDiscretization::explicit_mass() const {
+  if (!explicit_mass_)
+    explicit_mass_ = std::make_unique<BlockDiagonalMass>(
+        mass_matrix(), parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);
+  return *explicit_mass_;
 }
 
 void TabulatedDiscretization::set_time(double time) const {

@@ -66,8 +66,15 @@ public:
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override;
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return assembler_->pattern(); }
   bool hessian_is_constant() const override { return constant_hessian_; }
-  const Eigen::SparseMatrix<double>& mass_matrix() const override { return mass_; }
-  const ExplicitMass& explicit_mass() const override { return *explicit_mass_; }
+  /// Assembled on first use: the integrators take the mass element by element
+  /// (mass_times, add_mass), so a run holds no matrix of it as large as the Hessian.
+  const Eigen::SparseMatrix<double>& mass_matrix() const override;
+  Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override {
+    return assembler_->mass_times(masses_, vector);
+  }
+  /// matrix (with hessian_pattern()) += factor · M.
+  void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const override;
+  const ExplicitMass& explicit_mass() const override;
   Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
     return assembler_->body_force(masses_, acceleration);
   }
@@ -95,10 +102,10 @@ private:
 
   DiscretizationParts parts_;
   std::unique_ptr<ElasticAssembler> assembler_;
-  ElementMasses masses_;  // parts_.element_masses, or those of parts_.elements
-  Eigen::SparseMatrix<double> mass_;
+  ElementMasses masses_;                                     // parts_.element_masses, or those of parts_.elements
+  mutable std::optional<Eigen::SparseMatrix<double>> mass_;  // mass_matrix(), once asked for
   Eigen::VectorXd lumped_mass_;
-  std::unique_ptr<ExplicitMass> explicit_mass_;
+  mutable std::unique_ptr<ExplicitMass> explicit_mass_;  // the lumped one at once, a block one once asked for
   bool constant_hessian_ = false;
   std::vector<char> term_here_;         // per term, over several ranks: whether this rank evaluates it
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)

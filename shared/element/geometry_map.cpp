@@ -50,6 +50,21 @@ Eigen::Matrix3d map_jacobian(const ReferenceElement& element, const Eigen::Ref<c
   return jacobian(element, element_nodes, xi);
 }
 
+std::optional<Eigen::Matrix3d> affine_jacobian(const ReferenceElement& element,
+                                               const Eigen::Ref<const Eigen::MatrixXd>& element_nodes) {
+  check_shape(element, element_nodes);
+  const Eigen::Vector3d centre = element.centroid();
+  const Eigen::Matrix3d jacobian_at_centre = jacobian(element, element_nodes, centre);
+  const Eigen::Vector3d image_of_centre = physical_point(element, element_nodes, centre);
+  const Eigen::Vector3d extent = element_nodes.colwise().maxCoeff() - element_nodes.colwise().minCoeff();
+  const double tolerance = 1e-12 * extent.norm();
+  for (int a = 0; a < element.node_count(); ++a) {
+    const Eigen::Vector3d affine = image_of_centre + jacobian_at_centre * (element.nodes().row(a).transpose() - centre);
+    if ((element_nodes.row(a).transpose() - affine).norm() > tolerance) return std::nullopt;
+  }
+  return jacobian_at_centre;
+}
+
 InverseMapResult map_to_reference(const ReferenceElement& element,
                                   const Eigen::Ref<const Eigen::MatrixXd>& element_nodes, const Eigen::Vector3d& x,
                                   double tolerance, int max_iterations) {

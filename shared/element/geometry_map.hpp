@@ -2,6 +2,7 @@
 // The isoparametric geometry map of one element, x(ξ) = Σ_i N_i(ξ) x_i, its
 // Jacobian, and its inverse (point location in an element, embedding).
 #include <Eigen/Core>
+#include <optional>
 
 #include "shared/element/reference_element.hpp"
 
@@ -14,6 +15,13 @@ Eigen::Vector3d map_to_physical(const ReferenceElement& element, const Eigen::Re
 /// J_ij = ∂x_i/∂ξ_j at ξ (3 × 3); element_nodes is #nodes × 3.
 Eigen::Matrix3d map_jacobian(const ReferenceElement& element, const Eigen::Ref<const Eigen::MatrixXd>& element_nodes,
                              const Eigen::Vector3d& xi);
+
+/// The constant Jacobian when the map is affine (x(ξ) = x(ξ_c) + J (ξ − ξ_c), every node
+/// within 1e-12 × the element's extent of it), else nothing. The nodes determine the map,
+/// so then J holds at every point of the element: a rule of many points needs no
+/// gradients there (the grids' cells, straight tetrahedra).
+std::optional<Eigen::Matrix3d> affine_jacobian(const ReferenceElement& element,
+                                               const Eigen::Ref<const Eigen::MatrixXd>& element_nodes);
 
 struct InverseMapResult {
   Eigen::Vector3d xi;  ///< the reference point found (extrapolated when outside)

@@ -103,6 +103,48 @@ void ReferenceElement::evaluate_hessians(const Eigen::Vector3d& xi, Eigen::Ref<E
   hessians.noalias() = coefficients_.lazyProduct(derivatives);
 }
 
+// Column q of the result holds the monomials (lowered by `derivative` when it is 0–2,
+// with the factor the lowering brings) at point q, contiguous per point; then one
+// product with the coefficients gives every basis function at every point.
+namespace {
+void monomials_at(const Eigen::Ref<const Eigen::MatrixXd>& points, const std::vector<Eigen::Vector3i>& exponents,
+                  int derivative, Eigen::MatrixXd& monomials) {
+  const auto count = static_cast<int>(exponents.size());
+  monomials.resize(count, points.rows());
+  for (Eigen::Index q = 0; q < points.rows(); ++q) {
+    const Powers powers = powers_of(Eigen::Vector3d(points(q, 0), points(q, 1), points(q, 2)));
+    double* column = monomials.col(q).data();
+    for (int j = 0; j < count; ++j) {
+      const Eigen::Vector3i& exponent = exponents[j];
+      if (derivative < 0) {
+        column[j] = monomial(powers, exponent);
+      } else if (exponent[derivative] == 0) {
+        column[j] = 0.0;
+      } else {
+        Eigen::Vector3i lowered = exponent;
+        --lowered[derivative];
+        column[j] = exponent[derivative] * monomial(powers, lowered);
+      }
+    }
+  }
+}
+}  // namespace
+
+void ReferenceElement::evaluate_at(const Eigen::Ref<const Eigen::MatrixXd>& points, Eigen::MatrixXd& values) const {
+  Eigen::MatrixXd monomials;
+  monomials_at(points, exponents_, -1, monomials);
+  values.noalias() = monomials.transpose() * coefficients_.transpose();
+}
+
+void ReferenceElement::evaluate_gradients_at(const Eigen::Ref<const Eigen::MatrixXd>& points,
+                                             std::array<Eigen::MatrixXd, 3>& gradients) const {
+  Eigen::MatrixXd monomials;
+  for (int j = 0; j < 3; ++j) {
+    monomials_at(points, exponents_, j, monomials);
+    gradients[j].noalias() = monomials.transpose() * coefficients_.transpose();
+  }
+}
+
 bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {
   if (shape() == ElementShape::tetrahedron) return xi.minCoeff() >= -tolerance && xi.sum() <= 1.0 + tolerance;
   return xi.cwiseAbs().maxCoeff() <= 1.0 + tolerance;

@@ -2,6 +2,7 @@
 // Lagrange shape functions of one element type on its reference domain (tets: the
 // UNIT tet; hexes: [-1,1]^3), nodes in VTK order (reference_nodes.hpp).
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "shared/element/element_type.hpp"
@@ -39,6 +40,14 @@ public:
   /// matrix). Writes into the caller's storage; no allocation. For derivative-jump
   /// terms on faces (ghost penalties, Burman 2010) on quadratic cells.
   void evaluate_hessians(const Eigen::Vector3d& xi, Eigen::Ref<Eigen::MatrixXd> hessians) const;
+
+  /// The same at many points at once (points: #points × 3), as matrix products over all
+  /// of them: values (#points × #nodes), row q = N(ξ_q)ᵀ. For rules of many points (cut
+  /// cells' rules), where one point at a time spends its time in small products.
+  void evaluate_at(const Eigen::Ref<const Eigen::MatrixXd>& points, Eigen::MatrixXd& values) const;
+  /// gradients[j] (#points × #nodes), row q = ∂N/∂ξ_j(ξ_q)ᵀ.
+  void evaluate_gradients_at(const Eigen::Ref<const Eigen::MatrixXd>& points,
+                             std::array<Eigen::MatrixXd, 3>& gradients) const;
 
   /// Whether ξ lies in the reference domain enlarged by `tolerance` (in reference
   /// coordinates): tets ξ_j ≥ −tol and Σξ_j ≤ 1 + tol; hexes |ξ_j| ≤ 1 + tol.

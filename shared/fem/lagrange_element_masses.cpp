@@ -1,10 +1,13 @@
 #include "shared/fem/lagrange_element_masses.hpp"
 
 #include <Eigen/LU>
+#include <array>
 #include <atomic>
+#include <optional>
 #include <string>
 
 #include "shared/common/error.hpp"
+#include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 
 namespace altfem {
@@ -20,36 +23,48 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
   std::atomic<int> failed_cell{-1};
 #pragma omp parallel
   {
-    // Per-thread scratch: no allocation inside the loop over points.
-    Eigen::VectorXd values(n);
-    Eigen::MatrixXd gradients(n, 3);
-    Eigen::MatrixXd nodes(n, 3);
+    // Per-thread scratch. All of a cell's points at once: its rules run to thousands of
+    // points, and products over all of them beat a small product per point.
+    Eigen::MatrixXd values, weighted, nodes(n, 3);
+    std::array<Eigen::MatrixXd, 3> gradients, jacobian_columns;  // #points × #nodes; #points × 3
+    Eigen::VectorXd weights;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cells; ++cell) {
       const auto custom = rules.custom.find(cell);
       const QuadratureRule& rule = custom != rules.custom.end() ? custom->second : rules.standard;
       for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-      Eigen::MatrixXd& matrix = masses.matrices[cell];
-      Eigen::VectorXd& integral = masses.integrals[cell];
-      double volume = 0;
-      for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
-        const Eigen::Vector3d xi = rule.points.row(q).transpose();
-        element.evaluate(xi, values);
-        element.evaluate_gradients(xi, gradients);
-        const Eigen::Matrix3d jacobian = nodes.transpose().lazyProduct(gradients);  // no GEMM for 3 × n × 3
-        const double determinant = jacobian.determinant();
-        if (!(determinant > 0)) {
-          int expected = -1;
-          failed_cell.compare_exchange_strong(expected, cell);
-          break;
+      element.evaluate_at(rule.points, values);
+      weights.resize(rule.weights.size());
+      bool degenerate = false;
+      if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, nodes)) {
+        // An affine cell (every grid cell): one determinant for all its points.
+        const double determinant = jacobian->determinant();
+        degenerate = !(determinant > 0);
+        weights = rule.weights * determinant;
+      } else {
+        element.evaluate_gradients_at(rule.points, gradients);
+        // Row q of jacobian_columns[j] is ∂x/∂ξ_j at point q.
+        for (int j = 0; j < 3; ++j) jacobian_columns[j].noalias() = gradients[j] * nodes;
+        for (Eigen::Index q = 0; q < rule.weights.size() && !degenerate; ++q) {
+          Eigen::Matrix3d jacobian_at_point;
+          for (int j = 0; j < 3; ++j) jacobian_at_point.col(j) = jacobian_columns[j].row(q).transpose();
+          const double determinant = jacobian_at_point.determinant();
+          degenerate = !(determinant > 0);
+          weights[q] = rule.weights[q] * determinant;
         }
-        const double weight = rule.weights[q] * determinant;
-        volume += weight;
-        integral.noalias() += weight * values;
-        matrix.selfadjointView<Eigen::Lower>().rankUpdate(values, weight);
       }
+      if (degenerate) {
+        int expected = -1;
+        failed_cell.compare_exchange_strong(expected, cell);
+        continue;
+      }
+      masses.volumes[cell] = weights.sum();
+      masses.integrals[cell].noalias() = values.transpose() * weights;
+      weighted = values.array().colwise() * weights.array();
+      Eigen::MatrixXd& matrix = masses.matrices[cell];
+      matrix.noalias() = values.transpose() * weighted;
+      // Exactly symmetric, as the matrix is: the lower triangle mirrored.
       matrix = matrix.selfadjointView<Eigen::Lower>();
-      masses.volumes[cell] = volume;
     }
   }
   if (failed_cell >= 0)

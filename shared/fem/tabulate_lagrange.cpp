@@ -1,6 +1,7 @@
 #include "shared/fem/tabulate_lagrange.hpp"
 
 #include <Eigen/LU>
+#include <array>
 #include <atomic>
 #include <string>
 #include <vector>
@@ -23,13 +24,12 @@ struct ReferenceTable {
 ReferenceTable reference_table(const ReferenceElement& element, const QuadratureRule& rule) {
   const int n = element.node_count();
   const auto points = static_cast<int>(rule.weights.size());
-  ReferenceTable table{Eigen::MatrixXd(points, n), std::vector<Eigen::MatrixXd>(points, Eigen::MatrixXd(n, 3))};
-  Eigen::VectorXd row(n);
-  for (int q = 0; q < points; ++q) {
-    element.evaluate(rule.points.row(q).transpose(), row);
-    table.values.row(q) = row.transpose();
-    element.evaluate_gradients(rule.points.row(q).transpose(), table.gradients[q]);
-  }
+  ReferenceTable table{Eigen::MatrixXd(), std::vector<Eigen::MatrixXd>(points, Eigen::MatrixXd(n, 3))};
+  element.evaluate_at(rule.points, table.values);
+  std::array<Eigen::MatrixXd, 3> gradients;
+  element.evaluate_gradients_at(rule.points, gradients);
+  for (int q = 0; q < points; ++q)
+    for (int j = 0; j < 3; ++j) table.gradients[q].col(j) = gradients[j].row(q).transpose();
   return table;
 }
 

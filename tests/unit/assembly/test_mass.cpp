@@ -1,6 +1,10 @@
 // Consistent and lumped (HRZ) mass: exact totals on distorted meshes.
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
+#include "shared/assembly/element_masses.hpp"
+#include "shared/assembly/tabulated_discretization.hpp"
 #include "tests/unit/assembly/assembly_fixture.hpp"
 
 namespace altfem {
@@ -44,6 +48,36 @@ TEST_P(MassOfType, LumpedMassPositiveAndConserved) {
     EXPECT_EQ(lumped[3 * node], lumped[3 * node + 1]);
     EXPECT_EQ(lumped[3 * node], lumped[3 * node + 2]);
   }
+}
+
+// What the integrators take of the mass, element by element, without a matrix of its own:
+// M v and A + c M equal the assembled matrix's, for the assembler and for the
+// discretization that assembles its mass only when asked.
+TEST_P(MassOfType, ElementByElementProductAndSumEqualTheAssembledMass) {
+  const test::AssemblyProblem problem(GetParam(), {2, 3, 2}, MaterialModel::linear, density);
+  SparseMatrix mass;
+  problem.assembler->mass_matrix(mass);
+  const ElementMasses masses = element_masses(problem.elements);
+  const Eigen::VectorXd vector = Eigen::VectorXd::Random(mass.rows());
+  const Eigen::VectorXd product = mass * vector;
+  EXPECT_LT((problem.assembler->mass_times(masses, vector) - product).norm(), 1e-14 * product.norm());
+  SparseMatrix sum = problem.assembler->pattern();
+  for (Eigen::Index k = 0; k < sum.nonZeros(); ++k) sum.valuePtr()[k] = 1.0 + k % 7;
+  const SparseMatrix expected = sum + 2.5 * mass;
+  problem.assembler->add_mass(masses, 2.5, sum);
+  EXPECT_LT((sum - expected).norm(), 1e-14 * expected.norm());
+
+  DiscretizationParts parts;
+  parts.elements = problem.elements;
+  parts.materials = {problem.material.get()};
+  const TabulatedDiscretization discretization(std::move(parts));
+  EXPECT_LT((discretization.mass_times(vector) - product).norm(), 1e-14 * product.norm());
+  SparseMatrix hessian = discretization.hessian_pattern();
+  discretization.add_mass(2.0, hessian);
+  EXPECT_LT((hessian - 2.0 * mass).norm(), 1e-14 * mass.norm());
+  EXPECT_LT((discretization.mass_matrix() - mass).norm(), 1e-14 * mass.norm());
+  SparseMatrix other(hessian.rows(), hessian.cols());
+  EXPECT_THROW(discretization.add_mass(1.0, other), std::logic_error);
 }
 
 // Tet10 is the case plain row sums get wrong (zero or negative corner masses).

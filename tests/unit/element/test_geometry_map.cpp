@@ -70,6 +70,24 @@ TEST(GeometryMap, AffineElementsReproduceTheAffineMap) {
   }
 }
 
+// affine_jacobian finds the map's matrix on affine elements of every type and declines
+// once one node leaves the affine position by more than its tolerance (curved Hex8 too:
+// its trilinear map is affine only on parallelepipeds).
+TEST(GeometryMap, AffineJacobianIsTheMatrixOfAffineElementsOnly) {
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    const Affine affine = random_affine(43 + static_cast<unsigned>(type));
+    Eigen::MatrixXd nodes = affine_nodes(element, affine);
+    const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, nodes);
+    ASSERT_TRUE(jacobian.has_value()) << element_name(type);
+    EXPECT_LT((*jacobian - affine.matrix).norm(), 1e-13) << element_name(type);
+    if (type == ElementType::tet4) continue;     // any four points span an affine map
+    nodes(element.node_count() - 1, 1) += 1e-9;  // far above 1e-12 of the extent
+    EXPECT_FALSE(affine_jacobian(element, nodes).has_value()) << element_name(type);
+    EXPECT_FALSE(affine_jacobian(element, curved_nodes(element, 47, 0.05)).has_value()) << element_name(type);
+  }
+}
+
 TEST(GeometryMap, JacobianMatchesCentralFiniteDifferences) {
   const double h = 1e-6;
   for (ElementType type : all_element_types) {

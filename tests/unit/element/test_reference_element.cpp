@@ -3,6 +3,7 @@
 // against central finite differences.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -176,6 +177,34 @@ TEST(ReferenceElement, HessiansReproduceEveryMonomialsSecondDerivatives) {
                 << element_name(type) << " monomial " << e.transpose() << " d " << d << " c " << c;
           }
       }
+    }
+  }
+}
+
+// The batched evaluation (one product over all points) is the pointwise one, column by
+// column: only the summation order of the products may differ.
+TEST(ReferenceElement, EvaluationAtManyPointsEqualsOnePointAtATime) {
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    const std::vector<Eigen::Vector3d> points = random_reference_points(type, 37, 41);
+    Eigen::MatrixXd stacked(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t q = 0; q < points.size(); ++q) stacked.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
+    Eigen::MatrixXd values;
+    std::array<Eigen::MatrixXd, 3> gradients;
+    element.evaluate_at(stacked, values);
+    element.evaluate_gradients_at(stacked, gradients);
+    ASSERT_EQ(values.rows(), stacked.rows());
+    ASSERT_EQ(values.cols(), element.node_count());
+    Eigen::VectorXd one(element.node_count());
+    Eigen::MatrixXd one_gradients(element.node_count(), 3);
+    for (size_t q = 0; q < points.size(); ++q) {
+      const auto row = static_cast<Eigen::Index>(q);
+      element.evaluate(points[q], one);
+      element.evaluate_gradients(points[q], one_gradients);
+      EXPECT_LT((values.row(row).transpose() - one).cwiseAbs().maxCoeff(), 1e-13) << element_name(type);
+      for (int j = 0; j < 3; ++j)
+        EXPECT_LT((gradients[j].row(row).transpose() - one_gradients.col(j)).cwiseAbs().maxCoeff(), 1e-12)
+            << element_name(type) << " ∂/∂ξ_" << j;
     }
   }
 }
