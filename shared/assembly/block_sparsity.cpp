@@ -1,56 +1,89 @@
 #include "shared/assembly/block_sparsity.hpp"
 
 #include <algorithm>
+#include <span>
 
 namespace altfem {
 
+// Three parallel passes over flat arrays (a 213,000-DOF Hex27 grid has 40 million
+// entries): each basis function's neighbours from the groups that hold it, the pattern's
+// rows column by column, and each group's pair offsets.
 BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroups& extra)
     : element_count_(elements.size()) {
   int basis_count = elements.basis_count();
   for (int g = 0; g < extra.size(); ++g)
     for (int index : extra[g]) basis_count = std::max(basis_count, index + 1);
-  // Every coupling group, elements first.
-  const auto for_each_group = [&](auto&& body) {
-    for (int e = 0; e < elements.size(); ++e) body(elements[e].basis);
-    for (int g = 0; g < extra.size(); ++g) body(extra[g]);
+  const int group_count = elements.size() + extra.size();
+  // Group g's basis list: elements first, then the extra groups.
+  const auto group = [&](int g) -> std::span<const int> {
+    return g < elements.size() ? elements[g].basis : extra[g - elements.size()];
   };
 
-  std::vector<std::vector<int>> neighbours(basis_count);
-  for_each_group([&](std::span<const int> basis) {
-    for (int column : basis) neighbours[column].insert(neighbours[column].end(), basis.begin(), basis.end());
-  });
-  long long nonzeros = 0;
-  for (auto& list : neighbours) {
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    nonzeros += 9 * static_cast<long long>(list.size());
+  // The groups holding each basis function, in compressed rows.
+  std::vector<long long> holder_starts(static_cast<size_t>(basis_count) + 1, 0);
+  for (int g = 0; g < group_count; ++g)
+    for (int column : group(g)) ++holder_starts[column + 1];
+  for (int column = 0; column < basis_count; ++column) holder_starts[column + 1] += holder_starts[column];
+  std::vector<int> holders(static_cast<size_t>(holder_starts.back()));
+  {
+    std::vector<long long> next(holder_starts.begin(), holder_starts.end() - 1);
+    for (int g = 0; g < group_count; ++g)
+      for (int column : group(g)) holders[next[column]++] = g;
   }
 
+  // Each basis function's neighbours, ascending and unique.
+  std::vector<std::vector<int>> neighbours(static_cast<size_t>(basis_count));
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int column = 0; column < basis_count; ++column) {
+    std::vector<int>& list = neighbours[column];
+    for (long long k = holder_starts[column]; k < holder_starts[column + 1]; ++k) {
+      const std::span<const int> basis = group(holders[k]);
+      list.insert(list.end(), basis.begin(), basis.end());
+    }
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+
+  // Column 3g+k starts after the 3 × 3 blocks of every basis function before g.
   const Eigen::Index dofs = 3 * static_cast<Eigen::Index>(basis_count);
+  std::vector<long long> block_starts(static_cast<size_t>(basis_count) + 1, 0);
+  for (int column = 0; column < basis_count; ++column)
+    block_starts[column + 1] = block_starts[column] + 9 * static_cast<long long>(neighbours[column].size());
+  const long long nonzeros = block_starts.back();
   pattern_.resize(dofs, dofs);
   pattern_.resizeNonZeros(nonzeros);
   auto* outer = pattern_.outerIndexPtr();
   auto* inner = pattern_.innerIndexPtr();
-  std::fill_n(pattern_.valuePtr(), nonzeros, 0.0);
-  long long position = 0;
-  for (int column = 0; column < basis_count; ++column)
+  double* values = pattern_.valuePtr();
+#pragma omp parallel for schedule(dynamic, 256)
+  for (int column = 0; column < basis_count; ++column) {
+    const std::vector<int>& list = neighbours[column];
     for (int k = 0; k < 3; ++k) {
+      long long position = block_starts[column] + 3 * k * static_cast<long long>(list.size());
       outer[3 * column + k] = static_cast<int>(position);
-      for (int row : neighbours[column])
+      std::fill_n(values + position, 3 * list.size(), 0.0);
+      for (int row : list)
         for (int i = 0; i < 3; ++i) inner[position++] = 3 * row + i;
     }
-  outer[dofs] = static_cast<int>(position);
+  }
+  outer[dofs] = static_cast<int>(nonzeros);
 
-  group_offsets_.reserve(elements.size() + extra.size() + 1);
-  group_offsets_.push_back(0);
-  for_each_group([&](std::span<const int> basis) {
+  // Each group's pair offsets (#basis × #basis, column-major), at its own place.
+  group_offsets_.resize(static_cast<size_t>(group_count) + 1);
+  group_offsets_[0] = 0;
+  for (int g = 0; g < group_count; ++g)
+    group_offsets_[g + 1] = group_offsets_[g] + static_cast<long long>(group(g).size() * group(g).size());
+  offsets_.resize(static_cast<size_t>(group_offsets_.back()));
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int g = 0; g < group_count; ++g) {
+    const std::span<const int> basis = group(g);
+    long long position = group_offsets_[g];
     for (int column : basis) {
-      const auto& list = neighbours[column];
+      const std::vector<int>& list = neighbours[column];
       for (int row : basis)
-        offsets_.push_back(3 * static_cast<int>(std::lower_bound(list.begin(), list.end(), row) - list.begin()));
+        offsets_[position++] = 3 * static_cast<int>(std::lower_bound(list.begin(), list.end(), row) - list.begin());
     }
-    group_offsets_.push_back(static_cast<long long>(offsets_.size()));
-  });
+  }
 }
 
 }  // namespace altfem

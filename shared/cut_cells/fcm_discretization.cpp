@@ -2,6 +2,7 @@
 
 #include <map>
 #include <stdexcept>
+#include <utility>
 
 #include "shared/common/error.hpp"
 #include "shared/cut_cells/kept_hanging_nodes.hpp"
@@ -32,15 +33,16 @@ QuadratureRule stabilized(const QuadratureRule& rule, const QuadratureRule& stan
   return result;
 }
 
-// Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked.
-LagrangeCellRules kept_rules(const std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
+// Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked; the
+// rules are moved out of `cells` (mass rules run to thousands of points per cell).
+LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
                              int strength, double stabilization) {
   LagrangeCellRules rules{standard_rule(type, strength), {}, {}};
   for (size_t k = 0; k < kept.size(); ++k) {
-    const CellQuadrature& cell = cells[kept[k]];
+    CellQuadrature& cell = cells[kept[k]];
     if (!cell.rule) continue;
-    rules.custom.emplace(static_cast<int>(k),
-                         stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization) : *cell.rule);
+    rules.custom.emplace(static_cast<int>(k), stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization)
+                                                                : std::move(*cell.rule));
   }
   return rules;
 }
@@ -61,8 +63,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
                                            const std::vector<DirichletCondition>& dirichlet, const FcmOptions& options,
                                            const std::string& scene_file, const NodeRegionFilter& dirichlet_nodes,
                                            const BackgroundHangingNodes& hanging) {
-  const std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
-  const std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
+  std::vector<CellQuadrature> stiffness_cells = quadrature(options.quadrature_strength, RulePurpose::stiffness);
+  std::vector<CellQuadrature> mass_cells = quadrature(options.mass_quadrature_strength, RulePurpose::mass);
 
   // Classify the cells and keep those with enough material.
   FcmDiscretization fcm;
