@@ -37,7 +37,8 @@ if(ALTFEM_PETSC)
   altfem_require(PETSC_FOUND libpetsc-real3.18-dev "PETSc")
   find_package(MPI QUIET COMPONENTS CXX)
   altfem_require(MPI_CXX_FOUND libopenmpi-dev "MPI")
-  # METIS partitions the elements among the ranks of an mpirun (element_partition.hpp).
+  # METIS partitions the elements and the matrix rows among the ranks of an mpirun
+  # (shared/solve/graph_partition.hpp).
   find_path(METIS_INCLUDE_DIR metis.h)
   find_library(METIS_LIBRARY metis)
   set(METIS_OK FALSE)
