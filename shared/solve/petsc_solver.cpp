@@ -2,7 +2,7 @@
 
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
-#include "shared/solve/graph_partition.hpp"
+#include "shared/solve/partitioned_rows.hpp"
 #include "shared/solve/process_ranks.hpp"
 
 #ifdef ALTFEM_HAVE_PETSC
@@ -71,41 +71,6 @@ std::string prefixed_options(const std::string& options, const std::string& pref
     result += token + " ";
   }
   return result;
-}
-
-// The blocks (of `block` DOFs) of a pattern grouped by equal columns, the same rows: a
-// dg cell's functions couple to exactly the same DOFs, so a partition of the groups never
-// divides a cell (dividing them raised GAMG's iterations by a tenth on the test's dg
-// cantilever). Returns each block's group (#blocks); `groups` receives their count.
-std::vector<int> equal_column_groups(const Eigen::SparseMatrix<double>& matrix, PetscInt block, int& groups) {
-  const PetscInt blocks = matrix.cols() / block;
-  std::vector<std::vector<int>> rows(static_cast<size_t>(blocks));
-  std::vector<std::pair<std::uint64_t, int>> keys(static_cast<size_t>(blocks));
-  for (PetscInt b = 0; b < blocks; ++b) {
-    std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over the rows
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, b * block); entry; ++entry) {
-      rows[b].push_back(static_cast<int>(entry.row()));
-      hash = (hash ^ static_cast<std::uint64_t>(entry.row())) * 1099511628211ull;
-    }
-    keys[b] = {hash, static_cast<int>(b)};
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<int> group(static_cast<size_t>(blocks), -1);
-  groups = 0;
-  for (size_t begin = 0, end = 0; begin < keys.size(); begin = end) {
-    end = begin;
-    while (end < keys.size() && keys[end].first == keys[begin].first) ++end;
-    // Within blocks of one hash, a group per distinct list of rows.
-    for (size_t i = begin; i < end; ++i) {
-      const int b = keys[i].second;
-      if (group[b] >= 0) continue;
-      group[b] = groups;
-      for (size_t j = i + 1; j < end; ++j)
-        if (group[keys[j].second] < 0 && rows[keys[j].second] == rows[b]) group[keys[j].second] = groups;
-      ++groups;
-    }
-  }
-  return group;
 }
 
 class PetscSolver final : public LinearSolver {
@@ -270,53 +235,15 @@ protected:
   }
 
 private:
-  // Over several ranks, rank r holds the rows of the basis functions METIS gives it (on
-  // the graph of the matrix's blocks), numbered after those of the ranks before it, so
-  // that a rank's rows couple mostly to its own and few entries cross ranks; on one rank
-  // PETSc's numbering is the method's.
+  // Over several ranks PETSc's rows are METIS's parts of the matrix graph (partitioned_rows);
+  // on one they are the method's.
   void number_rows(const Eigen::SparseMatrix<double>& matrix, PetscInt block) {
-    const auto size = static_cast<PetscInt>(matrix.rows());
-    petsc_of_method_.clear();
-    method_of_petsc_.clear();
-    if (!ranks::distributed()) {
-      first_row_ = 0;
-      last_row_ = size;
-      return;
-    }
-    const PetscInt blocks = size / block;
-    // The graph of the blocks' groups (equal_column_groups), each weighted by its blocks.
-    int groups = 0;
-    const std::vector<int> group = equal_column_groups(matrix, block, groups);
-    std::vector<double> weights(static_cast<size_t>(groups), 0.0);
-    for (const int g : group) weights[g] += 1.0;
-    const std::vector<int> group_part = partition_graph(
-        [&] {
-          std::vector<std::vector<int>> adjacent(static_cast<size_t>(groups));
-          for (PetscInt first = 0; first < blocks; ++first)
-            for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, first * block); entry; ++entry)
-              if (const int second = group[entry.row() / block]; second != group[first]) {
-                adjacent[group[first]].push_back(second);
-                adjacent[second].push_back(group[first]);
-              }
-          return compressed_graph(std::move(adjacent));
-        },
-        weights, ranks::count());
-    std::vector<int> part(static_cast<size_t>(blocks));
-    for (PetscInt b = 0; b < blocks; ++b) part[b] = group_part[group[b]];
-    std::vector<PetscInt> first_of_part(static_cast<size_t>(ranks::count()) + 1, 0);
-    for (const int p : part) ++first_of_part[p + 1];
-    for (int p = 0; p < ranks::count(); ++p) first_of_part[p + 1] += first_of_part[p];
-    first_row_ = block * first_of_part[ranks::index()];
-    last_row_ = block * first_of_part[ranks::index() + 1];
-    petsc_of_method_.resize(static_cast<size_t>(size));
-    method_of_petsc_.resize(static_cast<size_t>(size));
-    for (PetscInt b = 0; b < blocks; ++b) {
-      const PetscInt placed = first_of_part[part[b]]++;
-      for (PetscInt k = 0; k < block; ++k) {
-        petsc_of_method_[block * b + k] = block * placed + k;
-        method_of_petsc_[block * placed + k] = block * b + k;
-      }
-    }
+    PartitionedRows rows = ranks::distributed() ? partitioned_rows(matrix, static_cast<int>(block)) : PartitionedRows{};
+    if (!ranks::distributed()) rows.last_row = matrix.rows();
+    first_row_ = static_cast<PetscInt>(rows.first_row);
+    last_row_ = static_cast<PetscInt>(rows.last_row);
+    petsc_of_method_.assign(rows.new_of_old.begin(), rows.new_of_old.end());
+    method_of_petsc_.assign(rows.old_of_new.begin(), rows.old_of_new.end());
   }
   PetscInt petsc_index(Eigen::Index dof) const {
     return petsc_of_method_.empty() ? static_cast<PetscInt>(dof) : petsc_of_method_[dof];

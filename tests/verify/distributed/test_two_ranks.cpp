@@ -11,7 +11,7 @@
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
 // fcm on the half-ball has cut cells and ghost-penalty faces on both sides of the
 // partition, dg with a nonlinear material its interior faces. PETSc's rows are numbered by
-// METIS too (petsc_solver.cpp): each rank holds the rows of a part of the matrix's graph.
+// METIS too (partitioned_rows.hpp): each rank holds the rows of a part of the matrix's graph.
 // Every rank must reach every collective call, so the
 // checks are EXPECTs (an ASSERT's early return would leave the other rank waiting).
 #include <gtest/gtest.h>
