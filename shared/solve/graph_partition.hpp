@@ -1,7 +1,7 @@
 #pragma once
 // METIS's k-way partition of a graph, the same on every rank (docs/scaling.md): which
 // rank assembles which element (element_partition.hpp, dg/cell_partition.hpp) and which
-// rows of a distributed matrix each rank holds (petsc_solver.cpp).
+// rows of a distributed matrix each rank holds (partitioned_rows.hpp).
 #include <functional>
 #include <vector>
 
