@@ -65,21 +65,37 @@ FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
 }  // namespace
 
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points) {
+  // Each cell's rule (a polyhedron's, simplified) and tabulation in parallel, then
+  // appended in cell order.
+  const int cells = system.cell_count();
+  std::vector<PolyhedronRule> rules(static_cast<size_t>(cells));
+  std::vector<Eigen::MatrixXd> values(static_cast<size_t>(cells)), gradients(static_cast<size_t>(cells));
+#pragma omp parallel for schedule(dynamic, 8)
+  for (int cell = 0; cell < cells; ++cell) {
+    rules[cell] = system.cell_rule(cell, strength);
+    const Eigen::Index count = rules[cell].weights.size(), n = system.basis(cell).size();
+    values[cell].resize(count, n);
+    gradients[cell].resize(count * n, 3);
+    tabulate_basis(system.basis(cell), rules[cell].points, 0, values[cell], gradients[cell]);
+  }
   TabulatedElements elements;
-  std::vector<Eigen::MatrixXd> cell_points;
-  for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const PolyhedronRule rule = system.cell_rule(cell, strength);
-    const int n = system.basis(cell).size();
-    Eigen::MatrixXd values(rule.weights.size(), n), gradients(rule.weights.size() * n, 3);
-    tabulate_basis(system.basis(cell), rule.points, 0, values, gradients);
+  long long point_total = 0, basis_total = 0, value_total = 0;
+  for (int cell = 0; cell < cells; ++cell) {
+    point_total += rules[cell].weights.size();
+    basis_total += system.basis(cell).size();
+    value_total += values[cell].size();
+  }
+  elements.reserve(cells, basis_total, point_total, value_total);
+  for (int cell = 0; cell < cells; ++cell) {
+    const PolyhedronRule& rule = rules[cell];
     elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()),
-                 values, gradients, system.material_id(cell));
-    if (points) cell_points.push_back(rule.points);
+                 values[cell], gradients[cell], system.material_id(cell));
   }
   if (points) {
     points->resize(elements.point_count(), 3);
     Eigen::Index row = 0;
-    for (const Eigen::MatrixXd& block : cell_points) points->middleRows(row, block.rows()) = block, row += block.rows();
+    for (const PolyhedronRule& rule : rules)
+      points->middleRows(row, rule.points.rows()) = rule.points, row += rule.points.rows();
   }
   return elements;
 }
