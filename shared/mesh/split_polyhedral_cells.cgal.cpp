@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -108,6 +109,10 @@ private:
   // face holding the edge gets them as nodes, in order along it (hanging nodes included).
   void insert_edge_crossings() {
     std::map<std::pair<int, int>, Made> edge_nodes;
+    // An edge's crossing with one plane is made once: its other faces and the neighbours
+    // that share the plane would construct the same point again, and comparing equal lazy
+    // points computes both exactly.
+    std::set<std::array<int, 3>> crossed;
     for (int cell = 0; cell < mesh_.cell_count(); ++cell)
       for (const int plane : cell_planes_[cell])
         for (const int face : mesh_.cell_faces[cell]) {
@@ -115,7 +120,8 @@ private:
           for (std::size_t k = 0; k < loop.size(); ++k) {
             const int a = std::min(loop[k], loop[(k + 1) % loop.size()]);
             const int b = std::max(loop[k], loop[(k + 1) % loop.size()]);
-            if (side(a, plane) * side(b, plane) < 0) crossing(a, b, plane, edge_nodes[{a, b}]);
+            if (side(a, plane) * side(b, plane) < 0 && crossed.insert({a, b, plane}).second)
+              crossing(a, b, plane, edge_nodes[{a, b}]);
           }
         }
     for (auto& [edge, made] : edge_nodes)
