@@ -10,10 +10,8 @@
 #include <petscksp.h>
 
 #include <Eigen/QR>
-#include <algorithm>
 #include <atomic>
 #include <cctype>
-#include <cstdint>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -238,8 +236,14 @@ private:
   // Over several ranks PETSc's rows are METIS's parts of the matrix graph (partitioned_rows);
   // on one they are the method's.
   void number_rows(const Eigen::SparseMatrix<double>& matrix, PetscInt block) {
-    PartitionedRows rows = ranks::distributed() ? partitioned_rows(matrix, static_cast<int>(block)) : PartitionedRows{};
-    if (!ranks::distributed()) rows.last_row = matrix.rows();
+    petsc_of_method_.clear();
+    method_of_petsc_.clear();
+    if (!ranks::distributed()) {
+      first_row_ = 0;
+      last_row_ = static_cast<PetscInt>(matrix.rows());
+      return;
+    }
+    const PartitionedRows rows = partitioned_rows(matrix, static_cast<int>(block));
     first_row_ = static_cast<PetscInt>(rows.first_row);
     last_row_ = static_cast<PetscInt>(rows.last_row);
     petsc_of_method_.assign(rows.new_of_old.begin(), rows.new_of_old.end());
