@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <span>
 #include <utility>
 
 #include "shared/solve/graph_partition.hpp"
@@ -12,15 +13,23 @@ namespace altfem {
 // The blocks sorted by a hash of their first column's rows; within one hash, a group per
 // distinct list of rows.
 std::vector<int> equal_column_groups(const Eigen::SparseMatrix<double>& matrix, int block, int& groups) {
+  // The rows of a block's first column, read in place (the Hessians are compressed).
+  Eigen::SparseMatrix<double> compressed;
+  const Eigen::SparseMatrix<double>* pattern = &matrix;
+  if (!matrix.isCompressed()) {
+    compressed = matrix;
+    compressed.makeCompressed();
+    pattern = &compressed;
+  }
+  const auto rows = [&](Eigen::Index b) {
+    const int* start = pattern->innerIndexPtr() + pattern->outerIndexPtr()[b * block];
+    return std::span<const int>(start, pattern->innerIndexPtr() + pattern->outerIndexPtr()[b * block + 1]);
+  };
   const Eigen::Index blocks = matrix.cols() / block;
-  std::vector<std::vector<int>> rows(static_cast<size_t>(blocks));
   std::vector<std::pair<std::uint64_t, int>> keys(static_cast<size_t>(blocks));
   for (Eigen::Index b = 0; b < blocks; ++b) {
     std::uint64_t hash = 1469598103934665603ull;  // FNV-1a over the rows
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix, b * block); entry; ++entry) {
-      rows[b].push_back(static_cast<int>(entry.row()));
-      hash = (hash ^ static_cast<std::uint64_t>(entry.row())) * 1099511628211ull;
-    }
+    for (const int row : rows(b)) hash = (hash ^ static_cast<std::uint64_t>(row)) * 1099511628211ull;
     keys[b] = {hash, static_cast<int>(b)};
   }
   std::sort(keys.begin(), keys.end());
@@ -34,7 +43,8 @@ std::vector<int> equal_column_groups(const Eigen::SparseMatrix<double>& matrix, 
       if (group[b] >= 0) continue;
       group[b] = groups;
       for (size_t j = i + 1; j < end; ++j)
-        if (group[keys[j].second] < 0 && rows[keys[j].second] == rows[b]) group[keys[j].second] = groups;
+        if (group[keys[j].second] < 0 && std::ranges::equal(rows(keys[j].second), rows(b)))
+          group[keys[j].second] = groups;
       ++groups;
     }
   }

@@ -10,8 +10,8 @@ namespace altfem {
 
 /// The blocks (of `block` DOFs, columns b·block … b·block + block − 1) of a square pattern
 /// grouped by equal columns, the same rows: a dg cell's functions couple to exactly the
-/// same DOFs, so a partition of the groups never divides a cell (divided, the test's dg
-/// cantilever took 272 GAMG iterations, not 254). Returns each block's group (#blocks);
+/// same DOFs, so a partition of the groups never divides a cell (whose functions GAMG
+/// would then aggregate across ranks' boundaries). Returns each block's group (#blocks);
 /// `groups` receives their count. Groups are numbered in no particular order.
 std::vector<int> equal_column_groups(const Eigen::SparseMatrix<double>& matrix, int block, int& groups);
 
