@@ -5,6 +5,7 @@
 #include <exception>
 #include <map>
 
+#include "shared/cut_cells/cell_rules.hpp"
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/element/element_faces.hpp"
@@ -87,6 +88,7 @@ struct CellFragments {
   std::vector<Fragment> fragments;  ///< by ascending tetrahedron
   std::vector<int> piece;           ///< per fragment
   double distance_threshold = 0;
+  bool filled = false;  ///< the fragments' volume is the cell's
 
   /// The fragment of tetrahedron t in this cell, or −1.
   int find(int t) const {
@@ -134,9 +136,11 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   const auto cell_faces = element_faces(shape);
   std::array<Plane, 6> cell_planes;
   for (std::size_t f = 0; f < cell_faces.size(); ++f) cell_planes[f] = face_plane(corners, cell_faces[f]);
+  double clipped_volume = 0;
   for (const int t : candidates) {
     const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(buckets.corners(t), geometry.planes());
     if (clipped.empty()) continue;
+    for (const TetrahedronCorners& piece : clipped) clipped_volume += tetrahedron_jacobian(piece) / 6.0;
     Fragment fragment;
     fragment.tetrahedron = t;
     add_contact_areas(clipped, cell_planes, static_cast<int>(cell_faces.size()), result.distance_threshold,
@@ -163,6 +167,8 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
     if (piece < 0) piece = pieces++;
     result.piece[i] = piece;
   }
+  const double volume = geometry.volume();
+  result.filled = pieces == 1 && std::abs(clipped_volume - volume) <= filled_cell_tolerance * volume;
   return result;
 }
 
@@ -217,8 +223,10 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
   CellPieces result;
   result.tetrahedra.resize(cell_count);
   result.neighbours.resize(cell_count);
+  result.filled.resize(cell_count);
   for (int cell = 0; cell < cell_count; ++cell) {
     const CellFragments& fragments = cells[cell];
+    result.filled[cell] = fragments.filled;
     const int pieces =
         fragments.piece.empty() ? 0 : *std::max_element(fragments.piece.begin(), fragments.piece.end()) + 1;
     result.tetrahedra[cell].resize(pieces);

@@ -23,6 +23,10 @@ struct CellPieces {
   /// [background cell][piece] → the pieces of face-neighbouring cells that the material
   /// continues into through the shared face (a contact of positive area), ascending.
   std::vector<std::vector<std::vector<PieceReference>>> neighbours;
+  /// [background cell] → 1 where the material fills the cell: its clipped tetrahedra's
+  /// volume equals the cell's to filled_cell_tolerance (one piece, and no cut-cell rule
+  /// needs to clip them again).
+  std::vector<char> filled;
 
   /// Background cells holding two or more pieces.
   int split_cells() const;

@@ -12,9 +12,6 @@
 namespace altfem {
 namespace {
 
-/// Relative volume difference under which a cut cell is taken as entirely inside.
-constexpr double inside_tolerance = 1e-12;
-
 // The key of a cell's rule in a CellRuleMemory: everything compute_cell_rules reads for it.
 std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, const Eigen::MatrixXd& corners,
                             const std::vector<TetrahedronCorners>& candidates) {
@@ -77,12 +74,19 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
             }
         }
         const CellGeometry geometry(type, corners);
+        if (reuse && reuse->filled && (*reuse->filled)[c]) {
+          cell.kind = CellKind::inside;
+          cell.rule = standard;
+          cell.initial_points = standard.points.rows();
+          cell.clipped_volume = geometry.volume();
+          continue;
+        }
         IntersectionRule intersection = intersection_rule(geometry, candidates, options.order);
         cell.clipped_volume = intersection.clipped_volume;
         cell.initial_points = intersection.rule.points.rows();
         if (cell.initial_points == 0) continue;
         const double volume = geometry.volume();
-        if (std::abs(intersection.clipped_volume - volume) <= inside_tolerance * volume) {
+        if (std::abs(intersection.clipped_volume - volume) <= filled_cell_tolerance * volume) {
           cell.kind = CellKind::inside;
           cell.rule = standard;
           cell.initial_points = standard.points.rows();

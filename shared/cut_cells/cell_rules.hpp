@@ -16,6 +16,10 @@ namespace altfem {
 
 enum class CellKind { outside, inside, cut };
 
+/// Relative difference between a cell's clipped volume and its own under which the
+/// material fills the cell: it is inside, with the standard rule.
+constexpr double filled_cell_tolerance = 1e-12;
+
 struct CellRuleOptions {
   int order = 4;         ///< m: polynomial degree integrated exactly
   bool simplify = true;  ///< false keeps the intersection rules (§6.3's comparison)
@@ -45,17 +49,20 @@ struct CellRules {
 /// here, bit for bit, instead of computing them again.
 using CellRuleMemory = std::unordered_map<std::uint64_t, CellRule>;
 
-/// What compute_cell_rules reuses and remembers (both optional).
+/// What compute_cell_rules reuses and remembers (each optional).
 struct CellRuleReuse {
   const CellRuleMemory* previous = nullptr;  ///< rules taken by key
   CellRuleMemory* computed = nullptr;        ///< receives the rule of every cell with tetrahedra, by key
-  int reused = 0;                            ///< out: cells whose rule came from `previous`
-  int integrated = 0;                        ///< out: cells with tetrahedra whose rule was computed
+  /// Per cell, 1 where the material is already known to fill it (find_cell_pieces clipped
+  /// it): the standard rule, without clipping its tetrahedra again.
+  const std::vector<char>* filled = nullptr;
+  int reused = 0;      ///< out: cells whose rule came from `previous`
+  int integrated = 0;  ///< out: cells with tetrahedra whose rule was computed
 };
 
 /// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral
 /// mesh of the object (corner nodes used). A cell counts as inside when its clipped
-/// volume equals its own volume to 1e-12 relative. With `cell_tetrahedra` (one list per
+/// volume equals its own volume to filled_cell_tolerance relative. With `cell_tetrahedra` (one list per
 /// cell), cell c clips exactly the embedded tetrahedra listed for it — a piece of a
 /// background cell (piece_mesh.hpp) — instead of those the bucket grid finds near it.
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,

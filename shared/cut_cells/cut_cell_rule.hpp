@@ -43,6 +43,12 @@ private:
   Eigen::Matrix3d inverse_jacobian_;
 };
 
+/// |J_Q| of a tetrahedron's map from the unit one, q0 + [q1 − q0, q2 − q0, q3 − q0] η:
+/// six times its volume, positive for the clip's positively oriented pieces.
+inline double tetrahedron_jacobian(const TetrahedronCorners& corners) {
+  return (corners.bottomRows<3>().rowwise() - corners.row(0)).transpose().determinant();
+}
+
 struct IntersectionRule {
   QuadratureRule rule;          ///< points #points × 3 in the cell's reference domain; ∫ f ≈ Σ w f(ξ)|J_K(ξ)|
   double clipped_volume = 0.0;  ///< physical volume of the clipped pieces (Σ |J_Q| / 6)

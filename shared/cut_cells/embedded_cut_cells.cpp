@@ -47,19 +47,21 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   // material, each clipping only its own tetrahedra, with node copies per part.
   VolumeMesh cells = background;
   std::vector<std::vector<int>> cell_tetrahedra;
+  std::vector<char> filled_cells;
   if (settings.topology_aware) {
     const CellPieces pieces = find_cell_pieces(background, embedded_.mesh(), refined ? &refined->contacts : nullptr);
     split_cells_ = pieces.split_cells();
     pieces_ = piece_mesh(background, pieces);
     cells = pieces_->mesh;
     cell_tetrahedra = pieces_->tetrahedra;
+    filled_cells = pieces_->filled;
     topology_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   statistics_ = std::make_shared<IntersectionStatistics>();
   rule_memory_ = std::make_shared<CellRuleMemory>();
-  const CellQuadratureSource rules =
-      intersection_cell_quadrature(cells, embedded_.mesh(), settings.simplifier, settings.simplification_tolerance, {},
-                                   statistics_, std::move(cell_tetrahedra), rebuild.rules, rule_memory_);
+  const CellQuadratureSource rules = intersection_cell_quadrature(
+      cells, embedded_.mesh(), settings.simplifier, settings.simplification_tolerance, {}, statistics_,
+      std::move(cell_tetrahedra), std::move(filled_cells), rebuild.rules, rule_memory_);
   BackgroundHangingNodes hanging;
   if (refined)
     hanging = {&refined->sources, refined->free_nodes, static_cast<int>(background.cells.rows()),

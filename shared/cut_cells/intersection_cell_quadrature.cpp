@@ -1,22 +1,19 @@
 #include "shared/cut_cells/intersection_cell_quadrature.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <utility>
 
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/rule_cache.hpp"
 
-#include <chrono>
-
 namespace altfem {
 
-CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, const VolumeMesh& embedded,
-                                                  std::optional<SimplificationMethod> method, double tolerance,
-                                                  const std::filesystem::path& cache_directory,
-                                                  std::shared_ptr<IntersectionStatistics> statistics,
-                                                  std::vector<std::vector<int>> cell_tetrahedra,
-                                                  std::shared_ptr<const CellRuleMemory> previous_rules,
-                                                  std::shared_ptr<CellRuleMemory> remembered_rules) {
+CellQuadratureSource intersection_cell_quadrature(
+    const VolumeMesh& background, const VolumeMesh& embedded, std::optional<SimplificationMethod> method,
+    double tolerance, const std::filesystem::path& cache_directory, std::shared_ptr<IntersectionStatistics> statistics,
+    std::vector<std::vector<int>> cell_tetrahedra, std::vector<char> filled_cells,
+    std::shared_ptr<const CellRuleMemory> previous_rules, std::shared_ptr<CellRuleMemory> remembered_rules) {
   // Each cell's own volume, once: volume fractions are clipped volume over it.
   const int corner_count = element_corner_count(background.element_type);
   std::vector<double> volumes(background.cells.rows());
@@ -26,7 +23,8 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     volumes[c] = CellGeometry(background.element_type, corners).volume();
   }
   return [background, embedded, method, tolerance, cache_directory, volumes, statistics,
-          cell_tetrahedra = std::move(cell_tetrahedra), previous_rules = std::move(previous_rules),
+          cell_tetrahedra = std::move(cell_tetrahedra), filled_cells = std::move(filled_cells),
+          previous_rules = std::move(previous_rules),
           remembered_rules = std::move(remembered_rules)](int strength, RulePurpose purpose) {
     const auto start = std::chrono::steady_clock::now();
     CellRuleOptions options;
@@ -36,12 +34,11 @@ CellQuadratureSource intersection_cell_quadrature(const VolumeMesh& background, 
     if (method) options.method = *method;
     options.tolerance = tolerance;
     const std::vector<std::vector<int>>* tetrahedra = cell_tetrahedra.empty() ? nullptr : &cell_tetrahedra;
-    CellRuleReuse reuse{previous_rules.get(), remembered_rules.get()};
-    const bool remembering = previous_rules || remembered_rules;
-    CellRules rules =
-        cache_directory.empty()
-            ? compute_cell_rules(background, embedded, options, tetrahedra, remembering ? &reuse : nullptr)
-            : cached_cell_rules(background, embedded, options, cache_directory, nullptr, tetrahedra);
+    CellRuleReuse reuse{previous_rules.get(), remembered_rules.get(), filled_cells.empty() ? nullptr : &filled_cells};
+    const bool reusing = previous_rules || remembered_rules || !filled_cells.empty();
+    CellRules rules = cache_directory.empty()
+                          ? compute_cell_rules(background, embedded, options, tetrahedra, reusing ? &reuse : nullptr)
+                          : cached_cell_rules(background, embedded, options, cache_directory, nullptr, tetrahedra);
     if (statistics) {
       statistics->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (purpose == RulePurpose::stiffness) {

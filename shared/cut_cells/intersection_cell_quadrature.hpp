@@ -29,7 +29,9 @@ struct IntersectionStatistics {
 /// non-empty cache_directory the rules are read from / written to it. The source keeps
 /// copies of both meshes; when `statistics` is given, each call records into it.
 /// A non-empty `cell_tetrahedra` (one list per background cell) names the embedded
-/// tetrahedra each cell clips: the pieces of a PieceMesh (topology-aware cells). Without a
+/// tetrahedra each cell clips: the pieces of a PieceMesh (topology-aware cells), and a
+/// non-empty `filled_cells` which of them the material fills (PieceMesh::filled: the
+/// standard rule without clipping, CellRuleReuse::filled). Without a
 /// cache directory, the rules of a cell found in `previous_rules` are taken from there
 /// (a rebuild after an event: only the cells it changed are integrated again), and every
 /// cell's rules go into `remembered_rules` (both optional).
@@ -38,7 +40,7 @@ CellQuadratureSource intersection_cell_quadrature(
     std::optional<SimplificationMethod> method = SimplificationOptions{}.method,
     double tolerance = SimplificationOptions{}.tolerance, const std::filesystem::path& cache_directory = {},
     std::shared_ptr<IntersectionStatistics> statistics = nullptr, std::vector<std::vector<int>> cell_tetrahedra = {},
-    std::shared_ptr<const CellRuleMemory> previous_rules = nullptr,
+    std::vector<char> filled_cells = {}, std::shared_ptr<const CellRuleMemory> previous_rules = nullptr,
     std::shared_ptr<CellRuleMemory> remembered_rules = nullptr);
 
 }  // namespace altfem

@@ -32,6 +32,7 @@ PieceMesh piece_mesh(const VolumeMesh& background, const CellPieces& pieces) {
       result.piece.push_back(piece);
       result.tetrahedra.push_back(pieces.tetrahedra[cell].empty() ? std::vector<int>{}
                                                                   : pieces.tetrahedra[cell][piece]);
+      result.filled.push_back(pieces.filled[cell]);
     }
 
   // The star of every node: the cells with material that hold it, ascending.

@@ -22,6 +22,7 @@ struct PieceMesh {
   std::vector<int> background_cell;          ///< per cell: its background cell
   std::vector<int> piece;                    ///< per cell: its piece index within the background cell
   std::vector<std::vector<int>> tetrahedra;  ///< per cell: the embedded tetrahedra it clips
+  std::vector<char> filled;                  ///< per cell: 1 where the material fills it (CellPieces::filled)
   std::vector<int> background_node;          ///< per node: the background node it copies
 
   /// Background nodes with two or more copies.

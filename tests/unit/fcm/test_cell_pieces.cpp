@@ -9,6 +9,7 @@
 #include <set>
 
 #include "shared/cut_cells/cell_pieces.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/piece_basis_evaluator.hpp"
 #include "shared/cut_cells/piece_mesh.hpp"
@@ -212,6 +213,32 @@ TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
               1e-15);                                                                // off the slanted face
   EXPECT_NEAR(distance_to_tetrahedron({-1, -1, 0.5}, unit), std::sqrt(2.0), 1e-15);  // off the z edge
   EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);    // off corner (1, 0, 0)
+}
+
+// A box filling the cell [0, 1]³ and half of [1, 2] × [0, 1]²: the first is filled, the
+// second not; a box short of the first cell's top by 1e-9 fills no cell. The rules made
+// with these flags (the filled cell's standard rule, unclipped) are those made by clipping.
+TEST(CellPieces, OnlyCellsTheMaterialFillsAreFilledAndTheirRulesAreTheClippedOnes) {
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  for (const double top : {1.0, 1.0 - 1e-9}) {
+    const VolumeMesh embedded = box_tetrahedra({0, 0, 0}, {1.5, 1, top}, Eigen::Vector3i(3, 2, 2));
+    const CellPieces pieces = find_cell_pieces(background, embedded);
+    EXPECT_EQ(pieces.filled, (std::vector<char>{top == 1.0, 0}));
+    const PieceMesh mesh = piece_mesh(background, pieces);
+    CellRuleReuse reuse;
+    reuse.filled = &mesh.filled;
+    const CellRules flagged = compute_cell_rules(mesh.mesh, embedded, {4}, &mesh.tetrahedra, &reuse);
+    const CellRules clipped = compute_cell_rules(mesh.mesh, embedded, {4}, &mesh.tetrahedra);
+    ASSERT_EQ(flagged.cells.size(), clipped.cells.size());
+    for (std::size_t c = 0; c < clipped.cells.size(); ++c) {
+      EXPECT_EQ(flagged.cells[c].kind, clipped.cells[c].kind);
+      EXPECT_EQ(flagged.cells[c].rule.points, clipped.cells[c].rule.points);
+      EXPECT_EQ(flagged.cells[c].rule.weights, clipped.cells[c].rule.weights);
+      EXPECT_NEAR(flagged.cells[c].clipped_volume, clipped.cells[c].clipped_volume, 1e-14);
+    }
+    EXPECT_EQ(flagged.cells[0].kind, top == 1.0 ? CellKind::inside : CellKind::cut);
+  }
 }
 
 }  // namespace
