@@ -128,21 +128,44 @@ void monomials_at(const Eigen::Ref<const Eigen::MatrixXd>& points, const std::ve
     }
   }
 }
+
+// The monomials of a whole rule, reused by the calls on one thread: a cut cell's rule
+// fills hundreds of kilobytes, which a fresh allocation per call takes from the kernel
+// (mmap) and faults in page by page.
+Eigen::MatrixXd& monomial_scratch() {
+  thread_local Eigen::MatrixXd monomials;
+  return monomials;
+}
 }  // namespace
 
 void ReferenceElement::evaluate_at(const Eigen::Ref<const Eigen::MatrixXd>& points, Eigen::MatrixXd& values) const {
-  Eigen::MatrixXd monomials;
+  Eigen::MatrixXd& monomials = monomial_scratch();
   monomials_at(points, exponents_, -1, monomials);
   values.noalias() = monomials.transpose() * coefficients_.transpose();
 }
 
 void ReferenceElement::evaluate_gradients_at(const Eigen::Ref<const Eigen::MatrixXd>& points,
                                              std::array<Eigen::MatrixXd, 3>& gradients) const {
-  Eigen::MatrixXd monomials;
+  Eigen::MatrixXd& monomials = monomial_scratch();
   for (int j = 0; j < 3; ++j) {
     monomials_at(points, exponents_, j, monomials);
     gradients[j].noalias() = monomials.transpose() * coefficients_.transpose();
   }
+}
+
+void ReferenceElement::integrate_products(const Eigen::Ref<const Eigen::MatrixXd>& points,
+                                          const Eigen::Ref<const Eigen::VectorXd>& weights,
+                                          Eigen::MatrixXd& products, Eigen::VectorXd& integrals) const {
+  Eigen::MatrixXd& monomials = monomial_scratch();  // #monomials × #points
+  monomials_at(points, exponents_, -1, monomials);
+  thread_local Eigen::MatrixXd weighted;
+  weighted = monomials.array().rowwise() * weights.transpose().array();
+  const Eigen::Index count = monomials.rows();
+  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(count, count);
+  gram.triangularView<Eigen::Lower>() = monomials * weighted.transpose();
+  products.noalias() = coefficients_ * gram.selfadjointView<Eigen::Lower>() * coefficients_.transpose();
+  products = products.selfadjointView<Eigen::Lower>();
+  integrals.noalias() = coefficients_ * (monomials * weights);
 }
 
 bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {

@@ -25,7 +25,7 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
   {
     // Per-thread scratch. All of a cell's points at once: its rules run to thousands of
     // points, and products over all of them beat a small product per point.
-    Eigen::MatrixXd values, weighted, nodes(n, 3);
+    Eigen::MatrixXd nodes(n, 3);
     std::array<Eigen::MatrixXd, 3> gradients, jacobian_columns;  // #points × #nodes; #points × 3
     Eigen::VectorXd weights;
 #pragma omp for schedule(dynamic, 4)
@@ -33,7 +33,6 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
       const auto custom = rules.custom.find(cell);
       const QuadratureRule& rule = custom != rules.custom.end() ? custom->second : rules.standard;
       for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-      element.evaluate_at(rule.points, values);
       weights.resize(rule.weights.size());
       bool degenerate = false;
       if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, nodes)) {
@@ -59,12 +58,7 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
         continue;
       }
       masses.volumes[cell] = weights.sum();
-      masses.integrals[cell].noalias() = values.transpose() * weights;
-      weighted = values.array().colwise() * weights.array();
-      Eigen::MatrixXd& matrix = masses.matrices[cell];
-      matrix.noalias() = values.transpose() * weighted;
-      // Exactly symmetric, as the matrix is: the lower triangle mirrored.
-      matrix = matrix.selfadjointView<Eigen::Lower>();
+      element.integrate_products(rule.points, weights, masses.matrices[cell], masses.integrals[cell]);
     }
   }
   if (failed_cell >= 0)

@@ -209,6 +209,35 @@ TEST(ReferenceElement, EvaluationAtManyPointsEqualsOnePointAtATime) {
   }
 }
 
+// integrate_products goes through the monomials' Gram matrix: it must equal the sums of
+// the basis values' own products, for any points and weights (negative ones too).
+TEST(ReferenceElement, IntegratedProductsEqualTheSumsOfTheValuesProducts) {
+  for (ElementType type : all_element_types) {
+    const ReferenceElement& element = reference_element(type);
+    const std::vector<Eigen::Vector3d> points = random_reference_points(type, 53, 7);
+    Eigen::MatrixXd stacked(static_cast<Eigen::Index>(points.size()), 3);
+    for (size_t q = 0; q < points.size(); ++q) stacked.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
+    std::srand(11);
+    const Eigen::VectorXd weights = Eigen::VectorXd::Random(stacked.rows());
+    const int n = element.node_count();
+    Eigen::MatrixXd expected_products = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd expected_integrals = Eigen::VectorXd::Zero(n), value(n);
+    for (size_t q = 0; q < points.size(); ++q) {
+      element.evaluate(points[q], value);
+      expected_products += weights[static_cast<Eigen::Index>(q)] * value * value.transpose();
+      expected_integrals += weights[static_cast<Eigen::Index>(q)] * value;
+    }
+    Eigen::MatrixXd products;
+    Eigen::VectorXd integrals;
+    element.integrate_products(stacked, weights, products, integrals);
+    // Within round-off of the sums' size, Σ|w|.
+    const double scale = weights.cwiseAbs().sum();
+    EXPECT_LT((products - expected_products).cwiseAbs().maxCoeff(), 1e-14 * scale) << element_name(type);
+    EXPECT_LT((integrals - expected_integrals).cwiseAbs().maxCoeff(), 1e-14 * scale) << element_name(type);
+    EXPECT_EQ(products, products.transpose()) << element_name(type);
+  }
+}
+
 TEST(ReferenceElement, ContainsItsDomainAndNothingElse) {
   const ReferenceElement& tet = reference_element(ElementType::tet10);
   EXPECT_TRUE(tet.contains(Eigen::Vector3d(0.25, 0.25, 0.25), 0.0));
