@@ -156,16 +156,14 @@ void ReferenceElement::evaluate_gradients_at(const Eigen::Ref<const Eigen::Matri
 void ReferenceElement::integrate_products(const Eigen::Ref<const Eigen::MatrixXd>& points,
                                           const Eigen::Ref<const Eigen::VectorXd>& weights,
                                           Eigen::MatrixXd& products, Eigen::VectorXd& integrals) const {
-  Eigen::MatrixXd& monomials = monomial_scratch();  // #monomials × #points
-  monomials_at(points, exponents_, -1, monomials);
-  thread_local Eigen::MatrixXd weighted;
-  weighted = monomials.array().rowwise() * weights.transpose().array();
-  const Eigen::Index count = monomials.rows();
-  Eigen::MatrixXd gram = Eigen::MatrixXd::Zero(count, count);
-  gram.triangularView<Eigen::Lower>() = monomials * weighted.transpose();
-  products.noalias() = coefficients_ * gram.selfadjointView<Eigen::Lower>() * coefficients_.transpose();
+  thread_local Eigen::MatrixXd values, weighted;  // #points × #nodes
+  evaluate_at(points, values);
+  weighted = values.array().colwise() * weights.array();
+  const Eigen::Index count = values.cols();
+  products.setZero(count, count);
+  products.triangularView<Eigen::Lower>() = values.transpose() * weighted;
   products = products.selfadjointView<Eigen::Lower>();
-  integrals.noalias() = coefficients_ * (monomials * weights);
+  integrals.noalias() = values.transpose() * weights;
 }
 
 bool ReferenceElement::contains(const Eigen::Vector3d& xi, double tolerance) const {

@@ -51,11 +51,12 @@ public:
 
   /// products (#nodes × #nodes, exactly symmetric) = Σ_q w_q N(ξ_q) N(ξ_q)ᵀ and
   /// integrals (#nodes) = Σ_q w_q N(ξ_q), over points (#points × 3) and weights
-  /// (#points): a cell's mass matrix and load integrals. Through the monomials' weighted
-  /// Gram matrix G = Σ_q w_q m(ξ_q) m(ξ_q)ᵀ, of which only one triangle is formed, and
-  /// coefficients · G · coefficientsᵀ, so no basis value is formed at any point: for the
-  /// thousands of points of a cut cell's mass rule a quarter of the work of the values'
-  /// own products.
+  /// (#points): a cell's mass matrix and load integrals, from the basis values at every
+  /// point (evaluate_at), one triangle of the products formed. Summed in the nodal basis,
+  /// not through the monomials' Gram matrix: with positive weights every diagonal entry
+  /// and integral is a sum of non-negative terms, so a sliver's tiny ones stay positive
+  /// (in the monomials' basis they cancel to round-off of the larger ones: negative for
+  /// a cell cut to 2⁻³⁰ of its volume, as `altfem quadrature conditioning` makes).
   void integrate_products(const Eigen::Ref<const Eigen::MatrixXd>& points,
                           const Eigen::Ref<const Eigen::VectorXd>& weights, Eigen::MatrixXd& products,
                           Eigen::VectorXd& integrals) const;

@@ -209,8 +209,8 @@ TEST(ReferenceElement, EvaluationAtManyPointsEqualsOnePointAtATime) {
   }
 }
 
-// integrate_products goes through the monomials' Gram matrix: it must equal the sums of
-// the basis values' own products, for any points and weights (negative ones too).
+// integrate_products sums all points' products at once: it must equal the sums of the
+// basis values' own products one point at a time, for any points and weights.
 TEST(ReferenceElement, IntegratedProductsEqualTheSumsOfTheValuesProducts) {
   for (ElementType type : all_element_types) {
     const ReferenceElement& element = reference_element(type);
