@@ -2,14 +2,20 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <cmath>
 #include <limits>
 #include <map>
 
-#include <Eigen/LU>
+#include <Eigen/LU>  // Matrix3d::inverse
 
 namespace altfem {
 
 namespace {
+
+/// Numbers the evaluators, so that a thread's cached last point (evaluate_inside) is
+/// never taken for another evaluator's, even one built where an old one was.
+std::atomic<long> next_serial{0};
 
 /// The closest point of triangle abc to x (Ericson, Real-Time Collision Detection, §5.1.5).
 Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& x, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
@@ -39,7 +45,10 @@ double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<dou
   const Eigen::Vector3d origin = corners.row(0).transpose();
   Eigen::Matrix3d edges;
   for (int i = 0; i < 3; ++i) edges.col(i) = corners.row(i + 1).transpose() - origin;
-  const Eigen::Vector3d coordinates = edges.fullPivLu().solve(x - origin);
+  // The barycentric coordinates by the cofactor inverse: a pivoted LU per tetrahedron was
+  // most of a surface's embedding in a cell of thousands of tetrahedra (the pencil's
+  // tip). A flat tetrahedron gives no finite coordinates and is measured by its faces.
+  const Eigen::Vector3d coordinates = edges.inverse() * (x - origin);
   if (coordinates.minCoeff() >= 0 && coordinates.sum() <= 1) return 0.0;
   static constexpr std::array<std::array<int, 3>, 4> faces{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
   double distance = std::numeric_limits<double>::infinity();
@@ -56,46 +65,81 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
                                          const NodeConstraints* constraints)
     : whole_(mesh, constraints),
       embedded_(embedded),
-      piece_tetrahedra_(kept_rows.size()),
-      piece_boxes_(kept_rows.size()),
-      siblings_(kept_rows.size()) {
+      serial_(next_serial++),
+      piece_trees_(kept_rows.size()),
+      split_cell_(kept_rows.size(), -1) {
   std::map<int, std::vector<int>> kept_pieces;  // background cell → its kept cells
   for (std::size_t cell = 0; cell < kept_rows.size(); ++cell)
     kept_pieces[pieces.background_cell[kept_rows[cell]]].push_back(static_cast<int>(cell));
+  const auto tree_of = [&](const std::vector<int>& tetrahedra) {
+    std::vector<Eigen::AlignedBox3d> boxes(tetrahedra.size());
+    for (std::size_t k = 0; k < tetrahedra.size(); ++k)
+      for (int i = 0; i < 4; ++i) boxes[k].extend(embedded.nodes.row(embedded.cells(tetrahedra[k], i)).transpose());
+    return Eigen::KdBVH<double, 3, int>(tetrahedra.begin(), tetrahedra.end(), boxes.begin(), boxes.end());
+  };
+  std::vector<int> all_tetrahedra;
   for (const auto& [background_cell, cells] : kept_pieces) {
     if (cells.size() < 2) continue;
+    all_tetrahedra.clear();
     for (const int cell : cells) {
-      piece_tetrahedra_[cell] = pieces.tetrahedra[kept_rows[cell]];
-      for (const int t : piece_tetrahedra_[cell]) {
-        Eigen::AlignedBox3d box;
-        for (int i = 0; i < 4; ++i) box.extend(embedded.nodes.row(embedded.cells(t, i)).transpose());
-        piece_boxes_[cell].push_back(box);
-      }
-      for (const int other : cells)
-        if (other != cell) siblings_[cell].push_back(other);
+      const std::vector<int>& tetrahedra = pieces.tetrahedra[kept_rows[cell]];
+      piece_trees_[cell] = tree_of(tetrahedra);
+      all_tetrahedra.insert(all_tetrahedra.end(), tetrahedra.begin(), tetrahedra.end());
+      split_cell_[cell] = static_cast<int>(split_cell_trees_.size());
     }
+    split_cell_trees_.push_back(tree_of(all_tetrahedra));
   }
 }
 
-double PieceBasisEvaluator::distance_to_piece(int cell, const Eigen::Vector3d& x, double bound) const {
-  double distance = bound;
-  Eigen::Matrix<double, 4, 3> corners;
-  const std::vector<int>& tetrahedra = piece_tetrahedra_[cell];
-  for (std::size_t k = 0; k < tetrahedra.size() && distance > 0; ++k) {
-    if (piece_boxes_[cell][k].exteriorDistance(x) >= distance) continue;
-    for (int i = 0; i < 4; ++i) corners.row(i) = embedded_.nodes.row(embedded_.cells(tetrahedra[k], i));
-    distance = std::min(distance, distance_to_tetrahedron(x, corners));
+namespace {
+
+/// Eigen's BVMinimize's minimiser: the distance from x to the nearest tetrahedron, boxes
+/// at `bound` or beyond left closed.
+struct NearestTetrahedron {
+  using Scalar = double;
+  const VolumeMesh& embedded;
+  const Eigen::Vector3d& x;
+  double bound;
+
+  double minimumOnVolume(const Eigen::AlignedBox3d& box) const {
+    const double distance = box.exteriorDistance(x);
+    return distance < bound ? distance : std::numeric_limits<double>::infinity();
   }
-  return distance;
+  double minimumOnObject(int tetrahedron) const {
+    Eigen::Matrix<double, 4, 3> corners;
+    for (int i = 0; i < 4; ++i) corners.row(i) = embedded.nodes.row(embedded.cells(tetrahedron, i));
+    return distance_to_tetrahedron(x, corners);
+  }
+};
+
+}  // namespace
+
+double PieceBasisEvaluator::distance_to(const Eigen::KdBVH<double, 3, int>& tree, const Eigen::Vector3d& x,
+                                        double bound) const {
+  NearestTetrahedron nearest{embedded_, x, bound};
+  return std::min(bound, Eigen::BVMinimize(tree, nearest));
 }
 
 bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                                           std::vector<double>& values) const {
   if (!whole_.evaluate_inside(cell, x, basis, values)) return false;
-  if (siblings_[cell].empty()) return true;
-  const double distance = distance_to_piece(cell, x, std::numeric_limits<double>::infinity());
-  return std::none_of(siblings_[cell].begin(), siblings_[cell].end(),
-                      [&](int other) { return distance_to_piece(other, x, distance) < distance; });
+  if (split_cell_[cell] < 0) return true;
+  // This piece is (one of) the nearest when nothing in its background cell is nearer. The
+  // callers ask each piece of a cell in turn about the same point (BasisEmbedding tries
+  // every candidate cell), so each thread keeps the last point's distance to the cell.
+  struct LastPoint {
+    long evaluator = -1;
+    int split_cell = -1;
+    Eigen::Vector3d x;
+    double nearest = 0;
+  };
+  thread_local LastPoint last;
+  if (last.evaluator != serial_ || last.split_cell != split_cell_[cell] || last.x != x)
+    last = {serial_, split_cell_[cell], x,
+            distance_to(split_cell_trees_[split_cell_[cell]], x, std::numeric_limits<double>::infinity())};
+  const double nearest = last.nearest;
+  return distance_to(piece_trees_[cell], x, std::nextafter(nearest, std::numeric_limits<double>::infinity())) <=
+         nearest;
 }
 
 }  // namespace altfem

@@ -5,6 +5,7 @@
 // boundary, and only approximately when Mesh_3 meshed the surface).
 #include <Eigen/Geometry>
 #include <memory>
+#include <unsupported/Eigen/BVH>
 #include <vector>
 
 #include "shared/cut_cells/piece_mesh.hpp"
@@ -32,16 +33,22 @@ public:
   }
 
 private:
-  /// Distance from x to the union of the kept cell's piece tetrahedra where it is below
-  /// `bound`, else some value ≥ bound: a tetrahedron whose box is that far is skipped (a
-  /// cell near a pencil's tip holds thousands, and every surface vertex asks).
-  double distance_to_piece(int cell, const Eigen::Vector3d& x, double bound) const;
+  /// Distance from x to the nearest tetrahedron of `tree` where it is below `bound`, else
+  /// some value ≥ bound: a branch and bound over the tree of tetrahedron boxes, nearest box
+  /// first, never opening a box at `bound` or beyond the nearest distance found. A cell
+  /// near a pencil's tip holds thousands of tetrahedra and dozens of pieces (the chips),
+  /// and every surface vertex in it asks: a scan of them all, piece by piece, was most of
+  /// a cut's time.
+  double distance_to(const Eigen::KdBVH<double, 3, int>& tree, const Eigen::Vector3d& x, double bound) const;
 
   LagrangeBasisEvaluator whole_;
   const VolumeMesh& embedded_;
-  std::vector<std::vector<int>> piece_tetrahedra_;             ///< per kept cell (empty: its background cell is whole)
-  std::vector<std::vector<Eigen::AlignedBox3d>> piece_boxes_;  ///< their bounding boxes
-  std::vector<std::vector<int>> siblings_;                     ///< per kept cell of a split cell: the other kept pieces
+  long serial_;  ///< this evaluator's number, unique in the process
+  /// Eigen's bounding volume hierarchies of tetrahedron boxes: per kept cell of a split
+  /// background cell its piece's tetrahedra (empty otherwise), and per split background
+  /// cell all its kept pieces' tetrahedra.
+  std::vector<Eigen::KdBVH<double, 3, int>> piece_trees_, split_cell_trees_;
+  std::vector<int> split_cell_;  ///< per kept cell: its split background cell's tree, or −1
 };
 
 /// Distance from x to the closed tetrahedron (4 × 3 corners).

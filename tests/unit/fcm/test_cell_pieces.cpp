@@ -215,6 +215,49 @@ TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
   EXPECT_NEAR(distance_to_tetrahedron({2, -1, -1}, unit), std::sqrt(3.0), 1e-15);    // off corner (1, 0, 0)
 }
 
+// Two bars in each of two cells, the lower y ∈ [0, 0.4] and the upper y ∈ [0.6, 1]: a
+// point of cell 0 belongs to the piece nearest to it, to both at equal distances, and the
+// answers depend neither on the order the pieces are asked in (each thread caches the
+// last point's distance to the cell) nor on another evaluator asked about the same point
+// in between, one whose lower bar ends at y = 0.2.
+TEST(PieceBasisEvaluator, APointBelongsToItsCellsNearestPieces) {
+  const Eigen::Vector3i resolution(3, 1, 2);
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const auto bars = [&](double lower_top) {
+    return concatenate(box_tetrahedra({0.5, 0, 0}, {2, lower_top, 1}, resolution),
+                       box_tetrahedra({0.5, 0.6, 0}, {2, 1, 1}, resolution));
+  };
+  const VolumeMesh embedded = bars(0.4), narrower_embedded = bars(0.2);
+  const PieceMesh pieces = piece_mesh(background, find_cell_pieces(background, embedded));
+  const PieceMesh narrower_pieces = piece_mesh(background, find_cell_pieces(background, narrower_embedded));
+  ASSERT_EQ(pieces.mesh.cells.rows(), 4);
+  ASSERT_EQ(narrower_pieces.mesh.cells.rows(), 4);
+  const std::vector<int> kept{0, 1, 2, 3};
+  const PieceBasisEvaluator evaluator(pieces.mesh, pieces, kept, embedded);
+  const PieceBasisEvaluator narrower(narrower_pieces.mesh, narrower_pieces, kept, narrower_embedded);
+  const int lower_count = 6 * resolution.prod();  // the lower bar's tetrahedra come first
+  // The kept cell of cell 0 holding the lower bar, in each.
+  const int lower = pieces.tetrahedra[0].front() < lower_count ? 0 : 1;
+  const int narrower_lower = narrower_pieces.tetrahedra[0].front() < lower_count ? 0 : 1;
+  std::vector<int> basis;
+  std::vector<double> values;
+  const auto belongs = [&](const PieceBasisEvaluator& asked, int cell, double y) {
+    return asked.evaluate_inside(cell, Eigen::Vector3d(0.7, y, 0.5), basis, values);
+  };
+  for (const double y : {0.2, 0.45, 0.58, 0.9})
+    for (const int first : {0, 1}) {  // both orders
+      const bool nearer_lower = y < 0.5, narrower_nearer_lower = y < 0.4;
+      EXPECT_EQ(belongs(evaluator, first, y), (first == lower) == nearer_lower) << y;
+      EXPECT_EQ(belongs(narrower, first, y), (first == narrower_lower) == narrower_nearer_lower) << y;
+      EXPECT_EQ(belongs(evaluator, 1 - first, y), (1 - first == lower) == nearer_lower) << y;
+      EXPECT_EQ(belongs(narrower, 1 - first, y), (1 - first == narrower_lower) == narrower_nearer_lower) << y;
+    }
+  EXPECT_TRUE(belongs(evaluator, lower, 0.5));  // 0.1 from each bar
+  EXPECT_TRUE(belongs(evaluator, 1 - lower, 0.5));
+  EXPECT_FALSE(belongs(evaluator, 2, 0.2));  // cell 1's pieces: the point is not in cell 1
+}
+
 // A box filling the cell [0, 1]³ and half of [1, 2] × [0, 1]²: the first is filled, the
 // second not; a box short of the first cell's top by 1e-9 fills no cell. The rules made
 // with these flags (the filled cell's standard rule, unclipped) are those made by clipping.
