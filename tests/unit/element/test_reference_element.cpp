@@ -181,14 +181,20 @@ TEST(ReferenceElement, HessiansReproduceEveryMonomialsSecondDerivatives) {
   }
 }
 
+// The points as the rows of one matrix (#points × 3), as the batched evaluations take them.
+Eigen::MatrixXd as_rows(const std::vector<Eigen::Vector3d>& points) {
+  Eigen::MatrixXd rows(static_cast<Eigen::Index>(points.size()), 3);
+  for (size_t q = 0; q < points.size(); ++q) rows.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
+  return rows;
+}
+
 // The batched evaluation (one product over all points) is the pointwise one, column by
 // column: only the summation order of the products may differ.
 TEST(ReferenceElement, EvaluationAtManyPointsEqualsOnePointAtATime) {
   for (ElementType type : all_element_types) {
     const ReferenceElement& element = reference_element(type);
     const std::vector<Eigen::Vector3d> points = random_reference_points(type, 37, 41);
-    Eigen::MatrixXd stacked(static_cast<Eigen::Index>(points.size()), 3);
-    for (size_t q = 0; q < points.size(); ++q) stacked.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
+    const Eigen::MatrixXd stacked = as_rows(points);
     Eigen::MatrixXd values;
     std::array<Eigen::MatrixXd, 3> gradients;
     element.evaluate_at(stacked, values);
@@ -215,8 +221,7 @@ TEST(ReferenceElement, IntegratedProductsEqualTheSumsOfTheValuesProducts) {
   for (ElementType type : all_element_types) {
     const ReferenceElement& element = reference_element(type);
     const std::vector<Eigen::Vector3d> points = random_reference_points(type, 53, 7);
-    Eigen::MatrixXd stacked(static_cast<Eigen::Index>(points.size()), 3);
-    for (size_t q = 0; q < points.size(); ++q) stacked.row(static_cast<Eigen::Index>(q)) = points[q].transpose();
+    const Eigen::MatrixXd stacked = as_rows(points);
     std::srand(11);
     const Eigen::VectorXd weights = Eigen::VectorXd::Random(stacked.rows());
     const int n = element.node_count();
