@@ -122,24 +122,32 @@ double PieceBasisEvaluator::distance_to(const Eigen::KdBVH<double, 3, int>& tree
 
 bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
                                           std::vector<double>& values) const {
-  if (!whole_.evaluate_inside(cell, x, basis, values)) return false;
-  if (split_cell_[cell] < 0) return true;
-  // This piece is (one of) the nearest when nothing in its background cell is nearer. The
-  // callers ask each piece of a cell in turn about the same point (BasisEmbedding tries
-  // every candidate cell), so each thread keeps the last point's distance to the cell.
+  if (split_cell_[cell] < 0) return whole_.evaluate_inside(cell, x, basis, values);
+  // The callers ask each piece of a cell in turn about the same point (BasisEmbedding
+  // tries every candidate cell), and the pieces are one cell's geometry (node copies at
+  // their node's position): each thread keeps the last point's reference point in the
+  // cell and distance to the cell's material, for all of its pieces.
   struct LastPoint {
     long evaluator = -1;
     int split_cell = -1;
-    Eigen::Vector3d x;
+    Eigen::Vector3d x, xi;
+    bool inside = false;
     double nearest = 0;
   };
   thread_local LastPoint last;
-  if (last.evaluator != serial_ || last.split_cell != split_cell_[cell] || last.x != x)
-    last = {serial_, split_cell_[cell], x,
-            distance_to(split_cell_trees_[split_cell_[cell]], x, std::numeric_limits<double>::infinity())};
-  const double nearest = last.nearest;
-  return distance_to(piece_trees_[cell], x, std::nextafter(nearest, std::numeric_limits<double>::infinity())) <=
-         nearest;
+  if (last.evaluator != serial_ || last.split_cell != split_cell_[cell] || last.x != x) {
+    last = {serial_, split_cell_[cell], x, Eigen::Vector3d::Zero(), false, 0.0};
+    last.inside = whole_.reference_point(cell, x, last.xi);
+    if (last.inside)
+      last.nearest = distance_to(split_cell_trees_[split_cell_[cell]], x, std::numeric_limits<double>::infinity());
+  }
+  if (!last.inside) return false;
+  // This piece is (one of) the nearest when nothing in its background cell is nearer.
+  if (distance_to(piece_trees_[cell], x, std::nextafter(last.nearest, std::numeric_limits<double>::infinity())) >
+      last.nearest)
+    return false;
+  whole_.evaluate(cell, last.xi, basis, values);
+  return true;
 }
 
 }  // namespace altfem

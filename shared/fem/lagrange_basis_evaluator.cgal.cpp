@@ -80,12 +80,18 @@ void LagrangeBasisEvaluator::evaluate(int cell, const Eigen::Vector3d& xi, std::
   if (constraints_) constraints_->substitute(basis, values);
 }
 
-bool LagrangeBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
-                                             std::vector<double>& values) const {
+bool LagrangeBasisEvaluator::reference_point(int cell, const Eigen::Vector3d& x, Eigen::Vector3d& xi) const {
   const InverseMapResult result =
       map_to_reference(reference_element(mesh_.element_type), cell_nodes(mesh_, cell), x, 1e-10);
-  if (!result.inside) return false;
-  evaluate(cell, result.xi, basis, values);
+  xi = result.xi;
+  return result.inside;
+}
+
+bool LagrangeBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
+                                             std::vector<double>& values) const {
+  Eigen::Vector3d xi;
+  if (!reference_point(cell, x, xi)) return false;
+  evaluate(cell, xi, basis, values);
   return true;
 }
 

@@ -25,10 +25,13 @@ public:
   double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
                           std::vector<double>& values) const override;
 
+  /// Whether x lies in `cell`, and its reference point ξ there (the inverse map, Newton).
+  bool reference_point(int cell, const Eigen::Vector3d& x, Eigen::Vector3d& xi) const;
+  /// Basis indices and values of `cell` at reference point ξ.
+  void evaluate(int cell, const Eigen::Vector3d& xi, std::vector<int>& basis, std::vector<double>& values) const;
+
 private:
   class NearestBoundaryCell;
-  // Basis indices and values of `cell` at reference point ξ.
-  void evaluate(int cell, const Eigen::Vector3d& xi, std::vector<int>& basis, std::vector<double>& values) const;
 
   const VolumeMesh& mesh_;
   const NodeConstraints* constraints_;
