@@ -1,16 +1,62 @@
 #include "shared/fem/lagrange_element_masses.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 
 namespace altfem {
+
+namespace {
+
+/// A rule of more points than this is summed by all threads: the tip of a sharpened pencil
+/// is one cell with thousands of clipped pieces, a strength-8 rule on each, and was most
+/// of a cut's integration on one thread while the other cells took the rest.
+constexpr Eigen::Index large_rule_points = 50000;
+/// Such a rule's points in this many chunks, whatever the thread count, summed in order:
+/// the same masses on any machine.
+constexpr int large_rule_chunks = 16;
+
+struct CellScratch {
+  Eigen::MatrixXd nodes;
+  std::array<Eigen::MatrixXd, 3> gradients, jacobian_columns;  // #points × #nodes; #points × 3
+};
+
+/// The weights of `rule` times |det J| at its points in `cell` (one determinant when the
+/// cell is affine, every grid cell); false where a determinant is not positive.
+bool physical_weights(const ReferenceElement& element, const VolumeMesh& mesh, int cell, const QuadratureRule& rule,
+                      CellScratch& scratch, Eigen::VectorXd& weights, std::optional<double>& affine_determinant) {
+  const int n = element.node_count();
+  scratch.nodes.resize(n, 3);
+  for (int a = 0; a < n; ++a) scratch.nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+  affine_determinant.reset();
+  if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, scratch.nodes)) {
+    affine_determinant = jacobian->determinant();
+    weights = rule.weights * *affine_determinant;
+    return *affine_determinant > 0;
+  }
+  weights.resize(rule.weights.size());
+  element.evaluate_gradients_at(rule.points, scratch.gradients);
+  // Row q of jacobian_columns[j] is ∂x/∂ξ_j at point q.
+  for (int j = 0; j < 3; ++j) scratch.jacobian_columns[j].noalias() = scratch.gradients[j] * scratch.nodes;
+  for (Eigen::Index q = 0; q < rule.weights.size(); ++q) {
+    Eigen::Matrix3d jacobian_at_point;
+    for (int j = 0; j < 3; ++j) jacobian_at_point.col(j) = scratch.jacobian_columns[j].row(q).transpose();
+    const double determinant = jacobian_at_point.determinant();
+    if (!(determinant > 0)) return false;
+    weights[q] = rule.weights[q] * determinant;
+  }
+  return true;
+}
+
+}  // namespace
 
 ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCellRules& rules) {
   const ReferenceElement& element = reference_element(mesh.element_type);
@@ -21,56 +67,73 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
   masses.integrals.assign(cells, Eigen::VectorXd::Zero(n));
   masses.volumes.assign(cells, 0.0);
   std::atomic<int> failed_cell{-1};
+  const auto fail = [&](int cell) {
+    int expected = -1;
+    failed_cell.compare_exchange_strong(expected, cell);
+  };
+  const auto rule_of = [&](int cell) -> const QuadratureRule& {
+    const auto custom = rules.custom.find(cell);
+    return custom != rules.custom.end() ? custom->second : rules.standard;
+  };
   // The standard rule's products on the reference cell, once: an affine cell with that
   // rule (every grid cell the material fills) takes them times its determinant.
   Eigen::MatrixXd standard_products;
   Eigen::VectorXd standard_integrals;
   element.integrate_products(rules.standard.points, rules.standard.weights, standard_products, standard_integrals);
   const double standard_volume = rules.standard.weights.sum();
+  std::vector<int> large_cells;
 #pragma omp parallel
   {
     // Per-thread scratch. All of a cell's points at once: its rules run to thousands of
     // points, and products over all of them beat a small product per point.
-    Eigen::MatrixXd nodes(n, 3);
-    std::array<Eigen::MatrixXd, 3> gradients, jacobian_columns;  // #points × #nodes; #points × 3
+    CellScratch scratch;
     Eigen::VectorXd weights;
+    std::optional<double> affine_determinant;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cells; ++cell) {
-      const auto custom = rules.custom.find(cell);
-      const QuadratureRule& rule = custom != rules.custom.end() ? custom->second : rules.standard;
-      for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-      weights.resize(rule.weights.size());
-      bool degenerate = false;
-      if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, nodes)) {
-        // An affine cell (every grid cell): one determinant for all its points.
-        const double determinant = jacobian->determinant();
-        degenerate = !(determinant > 0);
-        if (!degenerate && &rule == &rules.standard) {
-          masses.matrices[cell] = determinant * standard_products;
-          masses.integrals[cell] = determinant * standard_integrals;
-          masses.volumes[cell] = determinant * standard_volume;
-          continue;
-        }
-        weights = rule.weights * determinant;
-      } else {
-        element.evaluate_gradients_at(rule.points, gradients);
-        // Row q of jacobian_columns[j] is ∂x/∂ξ_j at point q.
-        for (int j = 0; j < 3; ++j) jacobian_columns[j].noalias() = gradients[j] * nodes;
-        for (Eigen::Index q = 0; q < rule.weights.size() && !degenerate; ++q) {
-          Eigen::Matrix3d jacobian_at_point;
-          for (int j = 0; j < 3; ++j) jacobian_at_point.col(j) = jacobian_columns[j].row(q).transpose();
-          const double determinant = jacobian_at_point.determinant();
-          degenerate = !(determinant > 0);
-          weights[q] = rule.weights[q] * determinant;
-        }
+      const QuadratureRule& rule = rule_of(cell);
+      if (rule.weights.size() > large_rule_points) {
+#pragma omp critical(altfem_large_mass_rules)
+        large_cells.push_back(cell);
+        continue;
       }
-      if (degenerate) {
-        int expected = -1;
-        failed_cell.compare_exchange_strong(expected, cell);
+      if (!physical_weights(element, mesh, cell, rule, scratch, weights, affine_determinant)) {
+        fail(cell);
+        continue;
+      }
+      if (affine_determinant && &rule == &rules.standard) {
+        masses.matrices[cell] = *affine_determinant * standard_products;
+        masses.integrals[cell] = *affine_determinant * standard_integrals;
+        masses.volumes[cell] = *affine_determinant * standard_volume;
         continue;
       }
       masses.volumes[cell] = weights.sum();
       element.integrate_products(rule.points, weights, masses.matrices[cell], masses.integrals[cell]);
+    }
+  }
+  std::sort(large_cells.begin(), large_cells.end());
+  CellScratch scratch;
+  Eigen::VectorXd weights;
+  std::optional<double> affine_determinant;
+  std::vector<Eigen::MatrixXd> chunk_products(large_rule_chunks);
+  std::vector<Eigen::VectorXd> chunk_integrals(large_rule_chunks);
+  for (const int cell : large_cells) {
+    const QuadratureRule& rule = rule_of(cell);
+    if (!physical_weights(element, mesh, cell, rule, scratch, weights, affine_determinant)) {
+      fail(cell);
+      continue;
+    }
+    const Eigen::Index points = weights.size();
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int chunk = 0; chunk < large_rule_chunks; ++chunk) {
+      const Eigen::Index begin = points * chunk / large_rule_chunks, end = points * (chunk + 1) / large_rule_chunks;
+      element.integrate_products(rule.points.middleRows(begin, end - begin), weights.segment(begin, end - begin),
+                                 chunk_products[chunk], chunk_integrals[chunk]);
+    }
+    masses.volumes[cell] = weights.sum();
+    for (int chunk = 0; chunk < large_rule_chunks; ++chunk) {
+      masses.matrices[cell] += chunk_products[chunk];
+      masses.integrals[cell] += chunk_integrals[chunk];
     }
   }
   if (failed_cell >= 0)

@@ -2,6 +2,7 @@
 // tabulation, and the assembler's mass, loads and lumped mass from it equal those of
 // its own elements.
 #include <gtest/gtest.h>
+#include <omp.h>
 
 #include "shared/assembly/elastic_assembler.hpp"
 #include "shared/fem/lagrange_element_masses.hpp"
@@ -51,6 +52,37 @@ void expect_reduction_of_the_tabulation(const VolumeMesh& mesh) {
   EXPECT_LT((assembler.lumped_mass() - assembler.lumped_mass(direct)).norm(), 1e-13 * assembler.lumped_mass().norm());
   // The total mass is ρ × the volume.
   EXPECT_NEAR(assembler.lumped_mass(direct).sum() / 3, 1200.0, 1e-9);
+}
+
+// A rule of more points than one thread sums (a sharpened pencil's tip cell) is summed in
+// chunks by every thread: the same masses as the tabulation's reduction, on a straight and
+// on a curved grid, and the same on one thread as on two.
+TEST(LagrangeElementMassesOfALargeRule, EqualTheReductionOfTheTabulation) {
+  for (const double distortion : {0.0, 0.2}) {
+    SCOPED_TRACE("distortion " + std::to_string(distortion));
+    const VolumeMesh mesh = test::distorted_grid(test::unit_cube(), {2, 1, 1}, ElementType::hex20, distortion, 7);
+    QuadratureRule large;  // 60,000 points spread over the reference cube, positive weights
+    const Eigen::Index points = 60000;
+    std::srand(5);
+    large.points = 0.999 * Eigen::MatrixXd::Random(points, 3);
+    large.weights = (Eigen::VectorXd::Random(points).array() + 1.5).matrix();
+    large.weights *= 8.0 / large.weights.sum();
+    large.strength = 1;
+    LagrangeCellRules rules{hex_rule(4), {}, {}};
+    rules.custom.emplace(1, large);
+    const ElementMasses direct = lagrange_element_masses(mesh, rules);
+    const ElementMasses reduced = element_masses(tabulate_lagrange(mesh, rules));
+    EXPECT_LT((direct.matrices[1] - reduced.matrices[1]).norm(), 1e-13 * reduced.matrices[1].norm());
+    EXPECT_LT((direct.integrals[1] - reduced.integrals[1]).norm(), 1e-13 * reduced.integrals[1].norm());
+    EXPECT_NEAR(direct.volumes[1], reduced.volumes[1], 1e-13 * reduced.volumes[1]);
+    EXPECT_EQ(direct.matrices[1], direct.matrices[1].transpose());
+    const int threads = omp_get_max_threads();
+    omp_set_num_threads(1);
+    const ElementMasses one_thread = lagrange_element_masses(mesh, rules);
+    omp_set_num_threads(threads);
+    EXPECT_EQ(one_thread.matrices[1], direct.matrices[1]);
+    EXPECT_EQ(one_thread.integrals[1], direct.integrals[1]);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Elements, LagrangeElementMasses,
