@@ -74,22 +74,23 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
             }
         }
         const CellGeometry geometry(type, corners);
-        if (reuse && reuse->filled && (*reuse->filled)[c]) {
+        const double volume = geometry.volume();
+        const auto inside = [&](double clipped_volume) {
           cell.kind = CellKind::inside;
           cell.rule = standard;
           cell.initial_points = standard.points.rows();
-          cell.clipped_volume = geometry.volume();
+          cell.clipped_volume = clipped_volume;
+        };
+        if (reuse && reuse->filled && (*reuse->filled)[c]) {
+          inside(volume);
           continue;
         }
         IntersectionRule intersection = intersection_rule(geometry, candidates, options.order);
         cell.clipped_volume = intersection.clipped_volume;
         cell.initial_points = intersection.rule.points.rows();
         if (cell.initial_points == 0) continue;
-        const double volume = geometry.volume();
         if (std::abs(intersection.clipped_volume - volume) <= filled_cell_tolerance * volume) {
-          cell.kind = CellKind::inside;
-          cell.rule = standard;
-          cell.initial_points = standard.points.rows();
+          inside(intersection.clipped_volume);
           continue;
         }
         cell.kind = CellKind::cut;

@@ -45,8 +45,10 @@ private:
 
 /// |J_Q| of a tetrahedron's map from the unit one, q0 + [q1 − q0, q2 − q0, q3 − q0] η:
 /// six times its volume, positive for the clip's positively oriented pieces.
+/// (The same product intersection_rule forms for the piece's map, so both sum the same volumes.)
 inline double tetrahedron_jacobian(const TetrahedronCorners& corners) {
-  return (corners.bottomRows<3>().rowwise() - corners.row(0)).transpose().determinant();
+  const Eigen::Matrix3d edges = (corners.bottomRows<3>().rowwise() - corners.row(0)).transpose();
+  return edges.determinant();
 }
 
 struct IntersectionRule {

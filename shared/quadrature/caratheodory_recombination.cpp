@@ -34,9 +34,9 @@ std::pair<Eigen::Index, double> ratio_test(const Eigen::Ref<const Eigen::VectorX
 
 /// A basis of null(C) (n columns, C: r × n), or an empty matrix when C has full column
 /// rank. First by a partial-pivoting LU of C's first r columns B, when they are well
-/// conditioned: null(C) = [−B⁻¹ N; I] with C = [B N] — a blocked LU is about 2.5 times
-/// faster than the pivoted QR at the sizes recombination meets (r = 35, n = 70), which
-/// `perf` showed as its largest cost. Otherwise by a pivoted QR, which also reveals the
+/// conditioned: null(C) = [−B⁻¹ N; I] with C = [B N] — a blocked LU without column
+/// pivoting costs less than the pivoted QR, which `perf` showed as recombination's largest
+/// cost (r = 35, n = 70 for fcm Hex20's stiffness rules). Otherwise by a pivoted QR, which also reveals the
 /// rank: C Π = Q [R₁ R₂] with R₁ (rank × rank) upper triangular, null(C) = Π [−R₁⁻¹ R₂; I].
 /// Either basis need only be accurate enough to choose the points: simplify_quadrature
 /// re-solves the weights on them exactly.
