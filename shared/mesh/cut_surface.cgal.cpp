@@ -16,6 +16,7 @@
 #include "shared/mesh/cut_curve_cleanup.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
+#include "shared/mesh/split_surface_by_plane.hpp"
 
 namespace altfem {
 
@@ -140,23 +141,26 @@ void remesh_cap(Mesh& mesh, const InCap& in_cap, double length) {
   mesh.collect_garbage();
 }
 
-// The closed `piece` cut by the whole plane of `blade`: each side clipped off with its cap
-// (CGAL closes a clipped volume), so both sides' new points are the same constructions
-// against one plane. A vertex of the input that both sides keep (on the plane) gets a
-// copy for the positive side. Appends both sides to `out`.
-void cut_piece_by_plane(const Mesh& piece, const CuttingPlane& blade, double edge_length, CutPieces& out) {
-  const Kernel::Plane_3 plane(point_of(blade.point),
-                              Kernel::Vector_3(blade.normal.x(), blade.normal.y(), blade.normal.z()));
+// What the whole-plane split cannot close into two manifold sides (border loops that cross
+// or meet after rounding): the piece is left whole, counted, and the next blade tries it.
+struct UnsplitPiece : std::runtime_error {
+  UnsplitPiece() : std::runtime_error("the plane's sides of the piece do not close") {}
+};
+
+// The closed `piece` cut by the whole plane of `blade` (split_surface_by_plane: its sides
+// exact predicates, each crossing point rounded once for both sides), each side's cut
+// curve cleaned and its cap remeshed. A vertex of the input that both sides keep (on the
+// plane) gets a copy for the positive side. Appends both sides to `out`.
+void cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
+  auto split = split_surface_by_plane(piece, exact);
+  if (!split) throw UnsplitPiece();
   std::set<int> used;
-  for (const int side : {-1, +1}) {
-    Mesh half = piece;
-    // clip keeps the part on the negative side of its plane.
-    PMP::clip(half, side < 0 ? plane : plane.opposite(), CGAL::parameters::clip_volume(true));
-    PMP::triangulate_faces(half);
-    renumber_by_position(half);
+  for (Mesh& half : *split) {
     const auto input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first;
     // New points (input −1) and the input's on the plane: the cut curve and the cap.
-    const auto on_plane = [&](Mesh::Vertex_index v) { return input_of[v] < 0 || plane.has_on(half.point(v)); };
+    const auto on_plane = [&](Mesh::Vertex_index v) {
+      return input_of[v] < 0 || exact.side(vector_of(half.point(v))) == 0;
+    };
     cut_curve::clean(half, on_plane, 1e-9 * edge_length, 4.0 / 3 * edge_length);
     remesh_cap(
         half,
@@ -208,8 +212,8 @@ bool separates(const SurfaceMesh& surface, const std::vector<int>& triangles, co
   return below && above;
 }
 
-// What corefinement cannot cut: a piece whose earlier caps lie on one another (a notch) or
-// cross its sides. It stays so, since no later cut changes a piece it leaves whole.
+// What neither the plane's split nor corefinement can cut: a piece whose earlier caps lie
+// on one another (a notch) or cross its sides. It stays so, since no later cut changes a piece it leaves whole.
 struct SelfIntersectingPiece : std::runtime_error {
   SelfIntersectingPiece() : std::runtime_error("the piece intersects itself") {}
 };
@@ -217,7 +221,7 @@ struct SelfIntersectingPiece : std::runtime_error {
 // Cuts the closed piece made of `triangles` of `surface`, which the blade separates, and
 // appends it to `out`.
 void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
-               CutPieces& out) {
+               const ExactBlade& exact, CutPieces& out) {
   // The piece as a CGAL mesh, each vertex with its index in the input ("v:input", −1 for
   // the vertices a cut adds), which CGAL carries through its operations.
   Mesh piece;
@@ -239,15 +243,15 @@ void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
     }
     piece.add_face(corners[0], corners[1], corners[2]);
   }
-  // Corefinement's precondition: a piece that intersects itself is left whole rather than
-  // cut into garbage.
+  // The precondition of the split and of corefinement: a piece that intersects itself is
+  // left whole rather than cut into garbage.
   if (PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
   // The caps' edges: a 40th of the piece's diagonal, as a shape's surface is tessellated
   // (SceneGeometry::shape_surface). Not the piece's own edges: those a cut leaves short
   // would shrink the caps of every cut after it.
   const double edge_length = bounds.diagonal().norm() / 40;
   if (blade.polygon.empty()) {
-    cut_piece_by_plane(piece, blade, edge_length, out);
+    cut_piece_by_plane(piece, exact, edge_length, out);
     return;
   }
 
@@ -367,12 +371,13 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
       // tries it, and remembered in the surface.
       if (!intersects_itself) {
         try {
-          cut_piece(surface, triangles, blade, cut);
+          cut_piece(surface, triangles, blade, exact, cut);
           opened = true;
         } catch (const SelfIntersectingPiece&) {
           intersects_itself = true;
         } catch (const std::exception&) {
-          // Another refusal of corefinement is this blade's: the next one tries again.
+          // Another refusal (corefinement's, or a split whose sides do not close) is this
+          // blade's: the next one tries again.
         }
       }
       left_whole += !opened;

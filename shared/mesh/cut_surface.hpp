@@ -17,17 +17,21 @@ struct SurfaceCut {
   /// caps (each side's outward: −normal on the blade's positive side). Vertices on the
   /// cut carry `embedding_offsets`.
   SurfaceMesh surface;
-  /// {"added_triangles": caps included, "cap_triangles": both sides', "added_vertices", "pieces_left_whole": pieces an
-  /// earlier finite blade left with their caps on one another, which corefinement cannot cut again}.
+  /// {"added_triangles": caps included, "cap_triangles": both sides', "added_vertices", "pieces_left_whole": pieces the
+  /// blade crosses but cannot cut: one an earlier finite blade left with its caps on one another (it stays whole), or
+  /// one whose sides do not close into manifolds after rounding (the next blade tries it again)}.
   nlohmann::json facts;
 };
 
 /// `surface` (closed, outward, without self-intersections) cut by `blade`: the whole
 /// plane, or its convex polygon, and with `blade.piece_at` only the connected piece of
-/// the surface nearest that point. CGAL's corefinement (exact predicates and
-/// constructions) splits the triangles and clips the blade to the body, so a blade through
-/// vertices, along edges or on faces is an ordinary case. Each connected piece is cut on
-/// its own; one the blade separates no two vertices of is kept as it is.
+/// the surface nearest that point. A whole plane splits each piece by exact side
+/// predicates and closes each side with the constrained Delaunay triangulation of its
+/// section (split_surface_by_plane); a polygon's blade goes through CGAL's corefinement
+/// (exact predicates and constructions), which also clips the blade to the body. Either
+/// way a blade through vertices, along edges or on faces is an ordinary case. Each
+/// connected piece is cut on its own; one the blade separates no two vertices of is kept
+/// as it is.
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

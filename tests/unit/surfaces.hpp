@@ -75,4 +75,31 @@ inline SurfaceMesh sphere(double radius, int rings, int segments, const Eigen::V
   return surface;
 }
 
+/// The prism of the polygon `profile` (points (x, z), counter-clockwise) from y = 0 to
+/// y = `length`, its end faces the triangles `fan` of the profile (indices into it).
+inline SurfaceMesh prism(const std::vector<Eigen::Vector2d>& profile, const std::vector<Eigen::Vector3i>& fan,
+                         double length) {
+  const int n = static_cast<int>(profile.size());
+  SurfaceMesh surface;
+  surface.vertices.resize(2 * n, 3);
+  for (int i = 0; i < n; ++i) {
+    surface.vertices.row(i) << profile[i].x(), 0, profile[i].y();
+    surface.vertices.row(n + i) << profile[i].x(), length, profile[i].y();
+  }
+  std::vector<Eigen::Vector3i> triangles;
+  // Counter-clockwise in (x, z) turns about −y: as given at y = 0, reversed at y = length.
+  for (const Eigen::Vector3i& t : fan) {
+    triangles.push_back(t);
+    triangles.emplace_back(n + t[0], n + t[2], n + t[1]);
+  }
+  for (int i = 0; i < n; ++i) {
+    const int next = (i + 1) % n;
+    triangles.emplace_back(i, n + i, n + next);
+    triangles.emplace_back(i, n + next, next);
+  }
+  surface.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+  for (std::size_t t = 0; t < triangles.size(); ++t) surface.triangles.row(t) = triangles[t].transpose();
+  return surface;
+}
+
 }  // namespace altfem::test

@@ -1,0 +1,310 @@
+#include "shared/mesh/split_surface_by_plane.hpp"
+
+#include "shared/mesh/disjoint_sets.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Projection_traits_3.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace altfem {
+
+namespace {
+
+using cut_curve::Kernel;
+using cut_curve::Mesh;
+using cut_curve::Point;
+
+// The cap's triangulation: in the blade's plane through CGAL's projection traits (its
+// predicates on the 3D points as stored), each vertex knowing its point of the split, each
+// face its nesting level (odd inside the section).
+using Traits = CGAL::Projection_traits_3<Kernel>;
+using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<int, Traits>;
+using FaceBase =
+    CGAL::Constrained_triangulation_face_base_2<Traits, CGAL::Triangulation_face_base_with_info_2<int, Traits>>;
+using Triangulation =
+    CGAL::Constrained_Delaunay_triangulation_2<Traits, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
+                                               CGAL::No_constraint_intersection_requiring_constructions_tag>;
+
+Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// The points of the split: the piece's vertices (by index), then the crossing points.
+struct SplitPoints {
+  std::vector<Point> points;
+  std::vector<int> input;  // "v:input" of each, −1 for a crossing point
+  std::vector<int> side;   // of the blade's plane, exact: 0 for a crossing point
+  std::map<std::pair<int, int>, int> crossing_of_edge;
+
+  int crossing(int p, int q, const ExactBlade& blade) {
+    const auto key = std::minmax(p, q);
+    const auto [slot, inserted] = crossing_of_edge.try_emplace(key, static_cast<int>(points.size()));
+    if (inserted) {
+      // From the edge's lower index, so the point does not depend on which face asks.
+      const Eigen::Vector3d from = vector_of(points[key.first]), to = vector_of(points[key.second]);
+      const double below = blade.normal.dot(from - blade.a), above = blade.normal.dot(to - blade.a);
+      const double t = std::clamp(below / (below - above), 0.0, 1.0);  // the sides are exact; t only places
+      const Eigen::Vector3d x = from + (std::isfinite(t) ? t : 0.5) * (to - from);
+      points.emplace_back(x.x(), x.y(), x.z());
+      input.push_back(-1);
+      side.push_back(0);
+    }
+    return slot->second;
+  }
+};
+
+using Edge = std::pair<int, int>;
+
+// Faces of the triangulation by nesting in the border loops, from 0 outside (CGAL's
+// "polygon with holes" marking): odd levels lie inside the section. A seam (an edge of the
+// side in the plane, both its faces on the side) is crossed at the same level. False when
+// a constraint is neither: a point of the border on another loop's edge.
+bool mark_nesting(Triangulation& triangulation, const std::set<Edge>& borders, const std::set<Edge>& seams) {
+  for (const auto face : triangulation.all_face_handles()) face->info() = -1;
+  std::vector<Triangulation::Edge> border;
+  bool known = true;
+  const auto flood = [&](Triangulation::Face_handle start, int level) {
+    std::vector<Triangulation::Face_handle> queue{start};
+    while (!queue.empty()) {
+      const Triangulation::Face_handle face = queue.back();
+      queue.pop_back();
+      if (face->info() != -1) continue;
+      face->info() = level;
+      for (int i = 0; i < 3; ++i) {
+        const Triangulation::Face_handle neighbour = face->neighbor(i);
+        if (neighbour->info() != -1) continue;
+        if (!triangulation.is_constrained({face, i})) {
+          queue.push_back(neighbour);
+          continue;
+        }
+        const int p = face->vertex(Triangulation::cw(i))->info(), q = face->vertex(Triangulation::ccw(i))->info();
+        if (seams.count(std::minmax(p, q))) {
+          queue.push_back(neighbour);
+        } else {
+          known = known && borders.count(std::minmax(p, q));
+          border.push_back({face, i});
+        }
+      }
+    }
+  };
+  flood(triangulation.infinite_face(), 0);
+  while (!border.empty()) {
+    const Triangulation::Edge edge = border.back();
+    border.pop_back();
+    const Triangulation::Face_handle neighbour = edge.first->neighbor(edge.second);
+    if (neighbour->info() == -1) flood(neighbour, edge.first->info() + 1);
+  }
+  return known;
+}
+
+// The cap closing the triangles `faces` (indices into the split's points) of one side: the
+// triangles of the region their border loops enclose, turned to face along `facing`.
+// Nothing when the border does not triangulate as disjoint loops.
+std::optional<std::vector<std::array<int, 3>>> cap_of(const std::vector<std::array<int, 3>>& faces,
+                                                      const SplitPoints& split, const Eigen::Vector3d& facing) {
+  std::map<Edge, int> uses;
+  for (const auto& face : faces)
+    for (int k = 0; k < 3; ++k) ++uses[{face[k], face[(k + 1) % 3]}];
+  Triangulation triangulation(Traits(Kernel::Vector_3(facing.x(), facing.y(), facing.z())));
+  std::map<int, Triangulation::Vertex_handle> vertex_of;
+  const auto vertex = [&](int point) {
+    const auto found = vertex_of.find(point);
+    if (found != vertex_of.end()) return found->second;
+    const std::size_t before = triangulation.number_of_vertices();
+    const Triangulation::Vertex_handle inserted = triangulation.insert(split.points[point]);
+    // Two points of the border in one place: no cap of the border's points can close it.
+    if (triangulation.number_of_vertices() == before) throw std::runtime_error("coincident border points");
+    inserted->info() = point;
+    vertex_of.emplace(point, inserted);
+    return inserted;
+  };
+  std::set<Edge> borders, seams;
+  for (const auto& [edge, count] : uses) {
+    const bool reversed = uses.count({edge.second, edge.first}) != 0;
+    if (count != 1) return std::nullopt;  // a face twice, or a split face over another
+    if (!reversed) borders.insert(std::minmax(edge.first, edge.second));
+    else if (edge.first < edge.second && split.side[edge.first] == 0 && split.side[edge.second] == 0)
+      seams.insert(edge);  // the cap must hold it, e.g. a valley's edge with both sides in the section
+  }
+  try {
+    for (const std::set<Edge>* constraints : {&borders, &seams})
+      for (const auto& [p, q] : *constraints) triangulation.insert_constraint(vertex(p), vertex(q));
+  } catch (const std::exception&) {
+    return std::nullopt;  // coincident points, or border loops that cross
+  }
+  if (!mark_nesting(triangulation, borders, seams)) return std::nullopt;
+  std::vector<std::array<int, 3>> cap;
+  for (const auto face : triangulation.finite_face_handles())
+    if (face->info() % 2 == 1)
+      cap.push_back({face->vertex(0)->info(), face->vertex(1)->info(), face->vertex(2)->info()});
+  return cap;
+}
+
+// For each corner k of each face f, the face across its edge (f[k], f[k+1]) and that
+// face's corner at f[k+1]; nothing when an edge cannot be paired. An edge has more than two
+// faces where a section touches itself along it (a valley's edge with the cap on both
+// sides): there each face off the plane pairs with the one whose third corner lies
+// strictly behind it (in its material, an exact orientation), the cap's faces with what
+// is left.
+std::optional<std::vector<std::array<std::pair<int, int>, 3>>> pair_faces(const std::vector<std::array<int, 3>>& faces,
+                                                                          const SplitPoints& split) {
+  std::map<Edge, std::vector<std::pair<int, int>>> users;  // (face, corner) of each directed edge
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+    for (int k = 0; k < 3; ++k) users[{faces[f][k], faces[f][(k + 1) % 3]}].push_back({f, k});
+  std::vector<std::array<std::pair<int, int>, 3>> across(faces.size());
+  for (auto& row : across) row.fill({-1, -1});
+  const auto join = [&](std::pair<int, int> a, std::pair<int, int> b) {
+    across[a.first][a.second] = b;  // the edges run opposite ways: b's first corner is a's second
+    across[b.first][b.second] = a;
+  };
+  const auto in_plane = [&](int f) {
+    return split.side[faces[f][0]] == 0 && split.side[faces[f][1]] == 0 && split.side[faces[f][2]] == 0;
+  };
+  for (const auto& [edge, forward] : users) {
+    if (edge.first > edge.second) continue;
+    const auto found = users.find({edge.second, edge.first});
+    if (found == users.end() || found->second.size() != forward.size()) return std::nullopt;
+    std::vector<std::pair<int, int>> backward = found->second, ahead = forward;
+    if (ahead.size() == 1) {
+      join(ahead[0], backward[0]);
+      continue;
+    }
+    // Off the plane first, each to its one partner behind it.
+    for (auto* side : {&ahead, &backward}) {
+      auto* other = side == &ahead ? &backward : &ahead;
+      for (auto use = side->begin(); use != side->end();) {
+        if (in_plane(use->first)) {
+          ++use;
+          continue;
+        }
+        const auto& face = faces[use->first];
+        std::vector<std::pair<int, int>>::iterator partner = other->end();
+        int behind = 0;
+        for (auto candidate = other->begin(); candidate != other->end(); ++candidate) {
+          const int third = faces[candidate->first][(candidate->second + 2) % 3];
+          if (CGAL::orientation(split.points[face[0]], split.points[face[1]], split.points[face[2]],
+                                split.points[third]) == CGAL::NEGATIVE) {
+            partner = candidate;
+            ++behind;
+          }
+        }
+        if (behind != 1) return std::nullopt;
+        join(*use, *partner);
+        other->erase(partner);
+        use = side->erase(use);
+      }
+    }
+    if (ahead.size() > 1 || ahead.size() != backward.size()) return std::nullopt;
+    if (ahead.size() == 1) join(ahead[0], backward[0]);
+  }
+  return across;
+}
+
+// The side's faces and cap as a Surface_mesh with "v:input", a point in several places of
+// it (where the section touches itself) once per fan of faces around it; nothing when it
+// is not a closed manifold.
+std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, const SplitPoints& split) {
+  const auto across = pair_faces(faces, split);
+  if (!across) return std::nullopt;
+  // Corners (face, k) joined across each edge at its two ends: each set is one vertex.
+  DisjointSets fans(3 * static_cast<int>(faces.size()));
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto [g, at_next] = (*across)[f][k];  // g's corner at faces[f][k + 1]
+      fans.join(3 * static_cast<int>(f) + (k + 1) % 3, 3 * g + at_next);
+      fans.join(3 * static_cast<int>(f) + k, 3 * g + (at_next + 1) % 3);
+    }
+  Mesh mesh;
+  // A recycled slot would keep a removed vertex's "v:input" (the curve's clean-up and the
+  // cap's remeshing remove and add vertices): new vertices go at the end.
+  mesh.set_recycle_garbage(false);
+  auto input_of = mesh.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
+  // The vertices by point, then by fan, so that the mesh does not depend on face order.
+  std::vector<std::pair<int, int>> point_and_fan;
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) point_and_fan.push_back({faces[f][k], fans.find(3 * static_cast<int>(f) + k)});
+  std::sort(point_and_fan.begin(), point_and_fan.end());
+  point_and_fan.erase(std::unique(point_and_fan.begin(), point_and_fan.end()), point_and_fan.end());
+  std::map<int, Mesh::Vertex_index> vertex_of_fan;
+  for (const auto& [point, fan] : point_and_fan) {
+    const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
+    input_of[v] = split.input[point];
+    vertex_of_fan[fan] = v;
+  }
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    std::array<Mesh::Vertex_index, 3> corners;
+    for (int k = 0; k < 3; ++k) corners[k] = vertex_of_fan.at(fans.find(3 * static_cast<int>(f) + k));
+    if (mesh.add_face(corners[0], corners[1], corners[2]) == Mesh::null_face()) return std::nullopt;
+  }
+  if (!CGAL::is_closed(mesh)) return std::nullopt;
+  return mesh;
+}
+
+}  // namespace
+
+std::optional<std::array<Mesh, 2>> split_surface_by_plane(const Mesh& piece, const ExactBlade& blade) {
+  const auto piece_input = piece.property_map<Mesh::Vertex_index, int>("v:input").first;
+  SplitPoints split;
+  std::vector<int> side(piece.number_of_vertices() + piece.number_of_removed_vertices(), 0);
+  std::vector<int> point_of(side.size(), -1);
+  for (const Mesh::Vertex_index v : piece.vertices()) {
+    point_of[v.idx()] = static_cast<int>(split.points.size());
+    split.points.push_back(piece.point(v));
+    split.input.push_back(piece_input[v]);
+    split.side.push_back(blade.side(vector_of(piece.point(v))));
+    side[v.idx()] = split.side.back();
+  }
+  std::array<std::vector<std::array<int, 3>>, 2> faces;  // [0] below, [1] above
+  for (const Mesh::Face_index f : piece.faces()) {
+    std::array<int, 3> point{}, sides{};
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece)) {
+      point[k] = point_of[v.idx()];
+      sides[k++] = side[v.idx()];
+    }
+    if (sides == std::array<int, 3>{0, 0, 0}) {
+      // A face in the plane bounds the material on the side it faces away from.
+      const Eigen::Vector3d a = vector_of(split.points[point[0]]), b = vector_of(split.points[point[1]]),
+                            c = vector_of(split.points[point[2]]);
+      faces[(b - a).cross(c - a).dot(blade.normal) > 0 ? 0 : 1].push_back(point);
+      continue;
+    }
+    for (const int sign : {-1, +1}) {
+      // The face's piece on this side: its corners there or on the plane, and where its
+      // edges cross; a convex polygon, so a fan.
+      std::vector<int> polygon;
+      bool reaches = false;
+      for (int corner = 0; corner < 3; ++corner) {
+        const int next = (corner + 1) % 3;
+        if (sides[corner] * sign >= 0) polygon.push_back(point[corner]);
+        reaches = reaches || sides[corner] == sign;
+        if (sides[corner] * sides[next] < 0) polygon.push_back(split.crossing(point[corner], point[next], blade));
+      }
+      if (!reaches) continue;
+      for (std::size_t j = 1; j + 1 < polygon.size(); ++j)
+        faces[sign > 0].push_back({polygon[0], polygon[j], polygon[j + 1]});
+    }
+  }
+  std::array<Mesh, 2> sides_out;
+  for (const int below_or_above : {0, 1}) {
+    // The cap faces away from its side's material: along the normal below, against it above.
+    const Eigen::Vector3d facing = below_or_above == 0 ? blade.normal : Eigen::Vector3d(-blade.normal);
+    const auto cap = cap_of(faces[below_or_above], split, facing);
+    if (!cap || cap->empty()) return std::nullopt;
+    std::vector<std::array<int, 3>> closed = faces[below_or_above];
+    closed.insert(closed.end(), cap->begin(), cap->end());
+    auto mesh = side_mesh(closed, split);
+    if (!mesh) return std::nullopt;
+    sides_out[below_or_above] = std::move(*mesh);
+  }
+  return sides_out;
+}
+
+}  // namespace altfem
