@@ -30,6 +30,21 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
 Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
+// The volume the closed `mesh` encloses, its tetrahedra from its first vertex (not the
+// origin, which would cancel a small piece's volume away).
+double enclosed_volume(const Mesh& mesh) {
+  const Eigen::Vector3d apex = vector_of(mesh.point(*mesh.vertices().begin()));
+  double volume = 0;
+  for (const Mesh::Face_index f : mesh.faces()) {
+    std::array<Eigen::Vector3d, 3> corner;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corner[k++] = vector_of(mesh.point(v)) - apex;
+    volume += corner[0].dot(corner[1].cross(corner[2])) / 6;
+  }
+  return volume;
+}
+
 // A finite blade's polygon as triangles, a fan turning counter-clockwise about its normal.
 Mesh blade_triangles(const CuttingPlane& blade) {
   const Eigen::Vector3d normal = blade.normal.normalized();
@@ -151,25 +166,44 @@ struct UnsplitPiece : std::runtime_error {
 // exact predicates, each crossing point rounded once for both sides), each side's cut
 // curve cleaned and its cap remeshed. A vertex of the input that both sides keep (on the
 // plane) gets a copy for the positive side. Appends both sides to `out`.
-void cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
-  auto split = split_surface_by_plane(piece, exact);
+bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
+  auto split = split_surface_by_plane(piece, exact, 1e-9 * edge_length);
   if (!split) throw UnsplitPiece();
-  std::set<int> used;
-  for (Mesh& half : *split) {
+  if (split->grazes) return false;
+  // New points (input −1) and the input's on the plane: the cut curve and the cap.
+  const auto on_plane_in = [&](const Mesh& half) {
+    return
+        [&half, &split, input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first](Mesh::Vertex_index v) {
+          return input_of[v] < 0 ||
+                 std::binary_search(split->inputs_on_plane.begin(), split->inputs_on_plane.end(), input_of[v]);
+        };
+  };
+  std::array<double, 2> volumes{};
+  for (int side = 0; side < 2; ++side) {
+    Mesh& half = split->sides[side];
+    const auto on_plane = on_plane_in(half);
+    cut_curve::clean(half, on_plane, 0.0, 4.0 / 3 * edge_length);
+    // Remeshed: the cap where it lies in the plane. Not around a vertex taken on it within
+    // the snap: each side remeshes its own cap, and where the caps are not flat they would
+    // part and the sides' volumes no longer sum to the piece's.
     const auto input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first;
-    // New points (input −1) and the input's on the plane: the cut curve and the cap.
-    const auto on_plane = [&](Mesh::Vertex_index v) {
-      return input_of[v] < 0 || exact.side(vector_of(half.point(v))) == 0;
-    };
-    cut_curve::clean(half, on_plane, 1e-9 * edge_length, 4.0 / 3 * edge_length);
     remesh_cap(
         half,
         [&](Mesh::Face_index f) {
           for (const Mesh::Vertex_index v : CGAL::vertices_around_face(half.halfedge(f), half))
-            if (!on_plane(v)) return false;
+            if (input_of[v] >= 0 && exact.side(vector_of(half.point(v))) != 0) return false;
           return true;
         },
         edge_length);
+    volumes[side] = enclosed_volume(half);
+  }
+  // A plane that grazes the piece (a chip far below the sliver rule, which the clean-up's
+  // collapses flatten) opens nothing.
+  if (std::min(volumes[0], volumes[1]) <= 1e-12 * (volumes[0] + volumes[1])) return false;
+  std::set<int> used;
+  for (Mesh& half : split->sides) {
+    const auto input_of = half.property_map<Mesh::Vertex_index, int>("v:input").first;
+    const auto on_plane = on_plane_in(half);
     std::vector<int> output_vertex(half.number_of_vertices() + half.number_of_removed_vertices(), -1);
     std::vector<char> on_curve(output_vertex.size(), 0);
     for (const Mesh::Vertex_index v : half.vertices()) {
@@ -196,6 +230,7 @@ void cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_
       out.cap_triangles += cap;
     }
   }
+  return true;
 }
 
 // Whether the blade's plane has vertices of the piece made of `triangles` strictly on both
@@ -219,8 +254,8 @@ struct SelfIntersectingPiece : std::runtime_error {
 };
 
 // Cuts the closed piece made of `triangles` of `surface`, which the blade separates, and
-// appends it to `out`.
-void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
+// appends it to `out`; false, appending nothing, when the blade only grazes it.
+bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
                const ExactBlade& exact, CutPieces& out) {
   // The piece as a CGAL mesh, each vertex with its index in the input ("v:input", −1 for
   // the vertices a cut adds), which CGAL carries through its operations.
@@ -250,10 +285,7 @@ void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
   // (SceneGeometry::shape_surface). Not the piece's own edges: those a cut leaves short
   // would shrink the caps of every cut after it.
   const double edge_length = bounds.diagonal().norm() / 40;
-  if (blade.polygon.empty()) {
-    cut_piece_by_plane(piece, exact, edge_length, out);
-    return;
-  }
+  if (blade.polygon.empty()) return cut_piece_by_plane(piece, exact, edge_length, out);
 
   // The piece split along the curve where the blade crosses it (its vertices there
   // duplicated, one copy per side), and the blade clipped to the body: the cap.
@@ -340,6 +372,7 @@ void cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
       out.triangles.push_back(triangle);
       ++out.cap_triangles;
     }
+  return true;
 }
 
 }  // namespace
@@ -364,15 +397,16 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   std::vector<int> pieces_intersecting_themselves;
   int left_whole = 0;
   for (const auto& [piece, triangles] : triangles_of) {
-    bool opened = false, intersects_itself = marks_apply && surface.self_intersecting[triangles.front()];
+    bool opened = false, grazed = false,
+         intersects_itself = marks_apply && surface.self_intersecting[triangles.front()];
     if ((!only || *only == piece) && separates(surface, triangles, exact)) {
       // A piece an earlier cut made intersect itself is left whole (counted) rather than
       // failing the run; it is found once, when the cut after the one that made it so
       // tries it, and remembered in the surface.
       if (!intersects_itself) {
         try {
-          cut_piece(surface, triangles, blade, exact, cut);
-          opened = true;
+          opened = cut_piece(surface, triangles, blade, exact, cut);
+          grazed = !opened;
         } catch (const SelfIntersectingPiece&) {
           intersects_itself = true;
         } catch (const std::exception&) {
@@ -380,7 +414,7 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
           // blade's: the next one tries again.
         }
       }
-      left_whole += !opened;
+      left_whole += !opened && !grazed;
     }
     if (!opened)
       for (const int t : triangles)

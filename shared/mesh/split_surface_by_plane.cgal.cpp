@@ -37,10 +37,18 @@ using Triangulation =
 Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 // The points of the split: the piece's vertices (by index), then the crossing points.
+// Where the plane crosses the segment from `from` to `to`, whose ends lie strictly on
+// either side of it: the sides are exact, the point only placed (rounded once).
+Eigen::Vector3d crossing_point(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const ExactBlade& blade) {
+  const double below = blade.normal.dot(from - blade.a), above = blade.normal.dot(to - blade.a);
+  const double t = std::clamp(below / (below - above), 0.0, 1.0);
+  return from + (std::isfinite(t) ? t : 0.5) * (to - from);
+}
+
 struct SplitPoints {
   std::vector<Point> points;
   std::vector<int> input;  // "v:input" of each, −1 for a crossing point
-  std::vector<int> side;   // of the blade's plane, exact: 0 for a crossing point
+  std::vector<int> side;   // of the blade's plane: 0 for a crossing point
   std::map<std::pair<int, int>, int> crossing_of_edge;
 
   int crossing(int p, int q, const ExactBlade& blade) {
@@ -48,10 +56,7 @@ struct SplitPoints {
     const auto [slot, inserted] = crossing_of_edge.try_emplace(key, static_cast<int>(points.size()));
     if (inserted) {
       // From the edge's lower index, so the point does not depend on which face asks.
-      const Eigen::Vector3d from = vector_of(points[key.first]), to = vector_of(points[key.second]);
-      const double below = blade.normal.dot(from - blade.a), above = blade.normal.dot(to - blade.a);
-      const double t = std::clamp(below / (below - above), 0.0, 1.0);  // the sides are exact; t only places
-      const Eigen::Vector3d x = from + (std::isfinite(t) ? t : 0.5) * (to - from);
+      const Eigen::Vector3d x = crossing_point(vector_of(points[key.first]), vector_of(points[key.second]), blade);
       points.emplace_back(x.x(), x.y(), x.z());
       input.push_back(-1);
       side.push_back(0);
@@ -59,6 +64,24 @@ struct SplitPoints {
     return slot->second;
   }
 };
+
+// A vertex where the plane crosses one of its edges within `snap` of it is taken on the
+// plane: a plane within rounding of a vertex would put a cluster of crossing points there
+// (coincident after rounding, or slivers that cross once rounded). No point moves, and
+// both sides see the same decision, so the cut keeps the volume.
+void snap_to_plane(const std::vector<std::array<int, 3>>& triangles, SplitPoints& split, const ExactBlade& blade,
+                   double snap) {
+  for (const auto& triangle : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int p = triangle[k], q = triangle[(k + 1) % 3];
+      if (split.side[p] * split.side[q] >= 0) continue;
+      const auto key = std::minmax(p, q);
+      const Eigen::Vector3d from = vector_of(split.points[key.first]), to = vector_of(split.points[key.second]);
+      const Eigen::Vector3d x = crossing_point(from, to, blade);
+      const double to_from = (x - from).norm(), to_to = (x - to).norm();
+      if (std::min(to_from, to_to) < snap) split.side[to_from <= to_to ? key.first : key.second] = 0;
+    }
+}
 
 using Edge = std::pair<int, int>;
 
@@ -249,26 +272,35 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
 
 }  // namespace
 
-std::optional<std::array<Mesh, 2>> split_surface_by_plane(const Mesh& piece, const ExactBlade& blade) {
+std::optional<PlaneSplit> split_surface_by_plane(const Mesh& piece, const ExactBlade& blade, double snap) {
   const auto piece_input = piece.property_map<Mesh::Vertex_index, int>("v:input").first;
   SplitPoints split;
-  std::vector<int> side(piece.number_of_vertices() + piece.number_of_removed_vertices(), 0);
-  std::vector<int> point_of(side.size(), -1);
+  std::vector<int> point_of(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);
   for (const Mesh::Vertex_index v : piece.vertices()) {
     point_of[v.idx()] = static_cast<int>(split.points.size());
     split.points.push_back(piece.point(v));
     split.input.push_back(piece_input[v]);
     split.side.push_back(blade.side(vector_of(piece.point(v))));
-    side[v.idx()] = split.side.back();
   }
-  std::array<std::vector<std::array<int, 3>>, 2> faces;  // [0] below, [1] above
+  std::vector<std::array<int, 3>> triangles;
   for (const Mesh::Face_index f : piece.faces()) {
-    std::array<int, 3> point{}, sides{};
+    std::array<int, 3> point{};
     int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece)) {
-      point[k] = point_of[v.idx()];
-      sides[k++] = side[v.idx()];
-    }
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece))
+      point[k++] = point_of[v.idx()];
+    triangles.push_back(point);
+  }
+  snap_to_plane(triangles, split, blade, snap);
+  PlaneSplit result;
+  for (std::size_t point = 0; point < split.points.size(); ++point)
+    if (split.side[point] == 0) result.inputs_on_plane.push_back(split.input[point]);
+  std::sort(result.inputs_on_plane.begin(), result.inputs_on_plane.end());
+  result.grazes = std::find(split.side.begin(), split.side.end(), -1) == split.side.end() ||
+                  std::find(split.side.begin(), split.side.end(), +1) == split.side.end();
+  if (result.grazes) return result;
+  std::array<std::vector<std::array<int, 3>>, 2> faces;  // [0] below, [1] above
+  for (const std::array<int, 3>& point : triangles) {
+    const std::array<int, 3> sides = {split.side[point[0]], split.side[point[1]], split.side[point[2]]};
     if (sides == std::array<int, 3>{0, 0, 0}) {
       // A face in the plane bounds the material on the side it faces away from.
       const Eigen::Vector3d a = vector_of(split.points[point[0]]), b = vector_of(split.points[point[1]]),
@@ -292,7 +324,6 @@ std::optional<std::array<Mesh, 2>> split_surface_by_plane(const Mesh& piece, con
         faces[sign > 0].push_back({polygon[0], polygon[j], polygon[j + 1]});
     }
   }
-  std::array<Mesh, 2> sides_out;
   for (const int below_or_above : {0, 1}) {
     // The cap faces away from its side's material: along the normal below, against it above.
     const Eigen::Vector3d facing = below_or_above == 0 ? blade.normal : Eigen::Vector3d(-blade.normal);
@@ -302,9 +333,9 @@ std::optional<std::array<Mesh, 2>> split_surface_by_plane(const Mesh& piece, con
     closed.insert(closed.end(), cap->begin(), cap->end());
     auto mesh = side_mesh(closed, split);
     if (!mesh) return std::nullopt;
-    sides_out[below_or_above] = std::move(*mesh);
+    result.sides[below_or_above] = std::move(*mesh);
   }
-  return sides_out;
+  return result;
 }
 
 }  // namespace altfem

@@ -3,11 +3,18 @@
 // cap (cut_surface, issue #33). Only cut_surface's CGAL files include it.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "shared/mesh/cut_curve_cleanup.hpp"
 #include "shared/mesh/cutting_plane.hpp"
 
 namespace altfem {
+
+struct PlaneSplit {
+  std::array<cut_curve::Mesh, 2> sides;
+  std::vector<int> inputs_on_plane;  ///< sorted "v:input" of the piece's vertices taken on the plane
+  bool grazes = false;               ///< the vertices taken on it leave none on one side: no sides
+};
 
 /// The sides of the closed, consistently oriented `piece` (each vertex with "v:input")
 /// below and above the plane of `blade`: [0] the negative side, [1] the positive one, each
@@ -15,6 +22,9 @@ namespace altfem {
 /// - Which side a vertex lies on is `blade.side`, an exact predicate, so a plane through
 ///   vertices, along edges or in faces is an ordinary case; a face in the plane goes to the
 ///   side its material lies on (below it when it faces along the normal).
+/// - A vertex within `snap` of where the plane crosses one of its edges is taken on the
+///   plane (no point moves, both sides agree): no cluster of crossing points at a vertex
+///   the plane passes within rounding of.
 /// - An edge with ends strictly on either side gets one crossing point, rounded once and
 ///   shared by both sides and by both faces holding the edge; the faces it crosses fall into
 ///   their convex pieces, as fans.
@@ -32,7 +42,6 @@ namespace altfem {
 /// corefines the surface with a box through exact constructions, several times the cost of
 /// this for the pencil's every cut (docs/performance.md, "Cuts"), and it closed a prism
 /// cut along a valley's edge into one piece of the wrong volume (test_cut_surface.cpp).
-std::optional<std::array<cut_curve::Mesh, 2>> split_surface_by_plane(const cut_curve::Mesh& piece,
-                                                                     const ExactBlade& blade);
+std::optional<PlaneSplit> split_surface_by_plane(const cut_curve::Mesh& piece, const ExactBlade& blade, double snap);
 
 }  // namespace altfem
