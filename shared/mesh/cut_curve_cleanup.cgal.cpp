@@ -1,5 +1,6 @@
 #include "shared/mesh/cut_curve_cleanup.hpp"
 
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -116,6 +117,22 @@ void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, 
     for (const Mesh::Vertex_index v : points)
       if (!mesh.is_removed(v)) collapsed = collapse_flat_curve_point(mesh, v, on_plane, longest) || collapsed;
   }
+  mesh.collect_garbage();
+}
+
+void remesh_cap(Mesh& mesh, const std::function<bool(Mesh::Face_index)>& in_cap, double length) {
+  std::vector<Mesh::Face_index> cap_faces;
+  for (const Mesh::Face_index f : mesh.faces())
+    if (in_cap(f)) cap_faces.push_back(f);
+  if (cap_faces.empty()) return;
+  auto border = mesh.add_property_map<Mesh::Edge_index, bool>("e:cap_border", false).first;
+  const auto capped = [&](Mesh::Halfedge_index h) { return !mesh.is_border(h) && in_cap(mesh.face(h)); };
+  for (const Mesh::Edge_index e : mesh.edges())
+    border[e] = capped(mesh.halfedge(e)) != capped(mesh.opposite(mesh.halfedge(e)));
+  CGAL::Polygon_mesh_processing::isotropic_remeshing(
+      cap_faces, length, mesh,
+      CGAL::parameters::edge_is_constrained_map(border).protect_constraints(true).number_of_iterations(3));
+  mesh.remove_property_map(border);
   mesh.collect_garbage();
 }
 

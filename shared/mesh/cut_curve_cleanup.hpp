@@ -25,4 +25,10 @@ using Mesh = CGAL::Surface_mesh<Point>;
 ///   keep the edges short.
 void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double shortest, double longest);
 
+/// The faces of `mesh` that `in_cap` selects, remeshed to edges of about `length` with their
+/// border kept: a cap triangulated from its boundary alone has long edges across it, which
+/// the next cut crosses one by one, so that the points of the cut curve multiply with
+/// every cut through the same place.
+void remesh_cap(Mesh& mesh, const std::function<bool(Mesh::Face_index)>& in_cap, double length);
+
 }  // namespace altfem::cut_curve

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <map>
 #include <set>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -127,14 +128,61 @@ bool mark_nesting(Triangulation& triangulation, const std::set<Edge>& borders, c
   return known;
 }
 
+// A face's edge from its corner `corner` (point `from`) to the next (point `to`).
+struct DirectedEdge {
+  int from, to, face, corner;
+  bool operator<(const DirectedEdge& other) const {
+    return std::tie(from, to, face, corner) < std::tie(other.from, other.to, other.face, other.corner);
+  }
+};
+
+// Every face's edges, sorted: the uses of one directed edge are a run.
+std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& faces) {
+  std::vector<DirectedEdge> edges;
+  edges.reserve(3 * faces.size());
+  for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+    for (int k = 0; k < 3; ++k) edges.push_back({faces[f][k], faces[f][(k + 1) % 3], f, k});
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+// The run of `edges` from p to q.
+std::pair<std::vector<DirectedEdge>::const_iterator, std::vector<DirectedEdge>::const_iterator> uses_of(
+    const std::vector<DirectedEdge>& edges, int p, int q) {
+  return std::equal_range(
+      edges.begin(), edges.end(), DirectedEdge{p, q, 0, 0},
+      [](const DirectedEdge& a, const DirectedEdge& b) { return std::tie(a.from, a.to) < std::tie(b.from, b.to); });
+}
+
+// Calls visit(first, last) for each run of uses of one directed edge.
+template <class Visit>
+bool for_each_run(const std::vector<DirectedEdge>& edges, const Visit& visit) {
+  for (auto first = edges.begin(); first != edges.end();) {
+    auto last = first;
+    while (last != edges.end() && last->from == first->from && last->to == first->to) ++last;
+    if (!visit(first, last)) return false;
+    first = last;
+  }
+  return true;
+}
+
 // The cap closing the triangles `faces` (indices into the split's points) of one side: the
 // triangles of the region their border loops enclose, turned to face along `facing`.
 // Nothing when the border does not triangulate as disjoint loops.
 std::optional<std::vector<std::array<int, 3>>> cap_of(const std::vector<std::array<int, 3>>& faces,
                                                       const SplitPoints& split, const Eigen::Vector3d& facing) {
-  std::map<Edge, int> uses;
-  for (const auto& face : faces)
-    for (int k = 0; k < 3; ++k) ++uses[{face[k], face[(k + 1) % 3]}];
+  const std::vector<DirectedEdge> edges = directed_edges(faces);
+  std::set<Edge> borders, seams;
+  const bool single = for_each_run(edges, [&](auto first, auto last) {
+    if (last - first != 1) return false;  // a face twice, or a split face over another
+    const int p = first->from, q = first->to;
+    const auto reversed = uses_of(edges, q, p);
+    if (reversed.first == reversed.second) borders.insert(std::minmax(p, q));
+    else if (p < q && split.side[p] == 0 && split.side[q] == 0)
+      seams.insert({p, q});  // the cap must hold it, e.g. a valley's edge with both sides in the section
+    return true;
+  });
+  if (!single) return std::nullopt;
   Triangulation triangulation(Traits(Kernel::Vector_3(facing.x(), facing.y(), facing.z())));
   std::map<int, Triangulation::Vertex_handle> vertex_of;
   const auto vertex = [&](int point) {
@@ -148,14 +196,6 @@ std::optional<std::vector<std::array<int, 3>>> cap_of(const std::vector<std::arr
     vertex_of.emplace(point, inserted);
     return inserted;
   };
-  std::set<Edge> borders, seams;
-  for (const auto& [edge, count] : uses) {
-    const bool reversed = uses.count({edge.second, edge.first}) != 0;
-    if (count != 1) return std::nullopt;  // a face twice, or a split face over another
-    if (!reversed) borders.insert(std::minmax(edge.first, edge.second));
-    else if (edge.first < edge.second && split.side[edge.first] == 0 && split.side[edge.second] == 0)
-      seams.insert(edge);  // the cap must hold it, e.g. a valley's edge with both sides in the section
-  }
   try {
     for (const std::set<Edge>* constraints : {&borders, &seams})
       for (const auto& [p, q] : *constraints) triangulation.insert_constraint(vertex(p), vertex(q));
@@ -178,55 +218,54 @@ std::optional<std::vector<std::array<int, 3>>> cap_of(const std::vector<std::arr
 // is left.
 std::optional<std::vector<std::array<std::pair<int, int>, 3>>> pair_faces(const std::vector<std::array<int, 3>>& faces,
                                                                           const SplitPoints& split) {
-  std::map<Edge, std::vector<std::pair<int, int>>> users;  // (face, corner) of each directed edge
-  for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-    for (int k = 0; k < 3; ++k) users[{faces[f][k], faces[f][(k + 1) % 3]}].push_back({f, k});
+  const std::vector<DirectedEdge> edges = directed_edges(faces);
   std::vector<std::array<std::pair<int, int>, 3>> across(faces.size());
-  for (auto& row : across) row.fill({-1, -1});
-  const auto join = [&](std::pair<int, int> a, std::pair<int, int> b) {
-    across[a.first][a.second] = b;  // the edges run opposite ways: b's first corner is a's second
-    across[b.first][b.second] = a;
+  const auto join = [&](const DirectedEdge& a, const DirectedEdge& b) {
+    across[a.face][a.corner] = {b.face, b.corner};  // the edges run opposite ways: b's first corner is a's second
+    across[b.face][b.corner] = {a.face, a.corner};
   };
   const auto in_plane = [&](int f) {
     return split.side[faces[f][0]] == 0 && split.side[faces[f][1]] == 0 && split.side[faces[f][2]] == 0;
   };
-  for (const auto& [edge, forward] : users) {
-    if (edge.first > edge.second) continue;
-    const auto found = users.find({edge.second, edge.first});
-    if (found == users.end() || found->second.size() != forward.size()) return std::nullopt;
-    std::vector<std::pair<int, int>> backward = found->second, ahead = forward;
-    if (ahead.size() == 1) {
-      join(ahead[0], backward[0]);
-      continue;
+  const bool paired = for_each_run(edges, [&](auto first, auto last) {
+    if (first->from > first->to) return true;
+    const auto [reverse_first, reverse_last] = uses_of(edges, first->to, first->from);
+    if (reverse_last - reverse_first != last - first) return false;
+    if (last - first == 1) {
+      join(*first, *reverse_first);
+      return true;
     }
+    std::vector<DirectedEdge> ahead(first, last), backward(reverse_first, reverse_last);
     // Off the plane first, each to its one partner behind it.
     for (auto* side : {&ahead, &backward}) {
       auto* other = side == &ahead ? &backward : &ahead;
       for (auto use = side->begin(); use != side->end();) {
-        if (in_plane(use->first)) {
+        if (in_plane(use->face)) {
           ++use;
           continue;
         }
-        const auto& face = faces[use->first];
-        std::vector<std::pair<int, int>>::iterator partner = other->end();
+        const auto& face = faces[use->face];
+        auto partner = other->end();
         int behind = 0;
         for (auto candidate = other->begin(); candidate != other->end(); ++candidate) {
-          const int third = faces[candidate->first][(candidate->second + 2) % 3];
+          const int third = faces[candidate->face][(candidate->corner + 2) % 3];
           if (CGAL::orientation(split.points[face[0]], split.points[face[1]], split.points[face[2]],
                                 split.points[third]) == CGAL::NEGATIVE) {
             partner = candidate;
             ++behind;
           }
         }
-        if (behind != 1) return std::nullopt;
+        if (behind != 1) return false;
         join(*use, *partner);
         other->erase(partner);
         use = side->erase(use);
       }
     }
-    if (ahead.size() > 1 || ahead.size() != backward.size()) return std::nullopt;
+    if (ahead.size() > 1 || ahead.size() != backward.size()) return false;
     if (ahead.size() == 1) join(ahead[0], backward[0]);
-  }
+    return true;
+  });
+  if (!paired) return std::nullopt;
   return across;
 }
 
@@ -255,7 +294,7 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
     for (int k = 0; k < 3; ++k) point_and_fan.push_back({faces[f][k], fans.find(3 * static_cast<int>(f) + k)});
   std::sort(point_and_fan.begin(), point_and_fan.end());
   point_and_fan.erase(std::unique(point_and_fan.begin(), point_and_fan.end()), point_and_fan.end());
-  std::map<int, Mesh::Vertex_index> vertex_of_fan;
+  std::vector<Mesh::Vertex_index> vertex_of_fan(3 * faces.size());
   for (const auto& [point, fan] : point_and_fan) {
     const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
     input_of[v] = split.input[point];
@@ -263,7 +302,7 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
   }
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<Mesh::Vertex_index, 3> corners;
-    for (int k = 0; k < 3; ++k) corners[k] = vertex_of_fan.at(fans.find(3 * static_cast<int>(f) + k));
+    for (int k = 0; k < 3; ++k) corners[k] = vertex_of_fan[fans.find(3 * static_cast<int>(f) + k)];
     if (mesh.add_face(corners[0], corners[1], corners[2]) == Mesh::null_face()) return std::nullopt;
   }
   if (!CGAL::is_closed(mesh)) return std::nullopt;
@@ -311,17 +350,17 @@ std::optional<PlaneSplit> split_surface_by_plane(const Mesh& piece, const ExactB
     for (const int sign : {-1, +1}) {
       // The face's piece on this side: its corners there or on the plane, and where its
       // edges cross; a convex polygon, so a fan.
-      std::vector<int> polygon;
+      std::array<int, 4> polygon{};
+      int size = 0;
       bool reaches = false;
       for (int corner = 0; corner < 3; ++corner) {
         const int next = (corner + 1) % 3;
-        if (sides[corner] * sign >= 0) polygon.push_back(point[corner]);
+        if (sides[corner] * sign >= 0) polygon[size++] = point[corner];
         reaches = reaches || sides[corner] == sign;
-        if (sides[corner] * sides[next] < 0) polygon.push_back(split.crossing(point[corner], point[next], blade));
+        if (sides[corner] * sides[next] < 0) polygon[size++] = split.crossing(point[corner], point[next], blade);
       }
       if (!reaches) continue;
-      for (std::size_t j = 1; j + 1 < polygon.size(); ++j)
-        faces[sign > 0].push_back({polygon[0], polygon[j], polygon[j + 1]});
+      for (int j = 1; j + 1 < size; ++j) faces[sign > 0].push_back({polygon[0], polygon[j], polygon[j + 1]});
     }
   }
   for (const int below_or_above : {0, 1}) {

@@ -296,11 +296,23 @@ TEST(CutSurface, TheSameCutGivesTheSameSurfaceBitForBit) {
   }
 }
 
-TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
+// The square [y0, y1] × [z0, z1] of the plane through `point` with normal `normal`.
+CuttingPlane square_blade(const Eigen::Vector3d& point, const Eigen::Vector3d& normal, double y0, double y1, double z0,
+                          double z1) {
+  const auto corner = [&](double y, double z) {
+    return Eigen::Vector3d(point.x() - (normal.y() * (y - point.y()) + normal.z() * (z - point.z())) / normal.x(), y,
+                           z);
+  };
+  return polygon_blade({corner(y0, z0), corner(y1, z0), corner(y1, z1), corner(y0, z1)});
+}
+
+TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeByANotchAndRemembered) {
   // Two boxes, the second's vertex (1, 3, 1) pushed through the first box's top: its
-  // faces cross it, so the second box's piece intersects itself. A cut through both opens
-  // the first, leaves the second whole and marks its triangles; given those marks, a cut
-  // leaves even a sound piece whole without testing it (the same box unmarked opens).
+  // faces cross it, so the second box's piece intersects itself, which corefinement cannot
+  // cut. A notch (the lower half of a plane) through both opens the first, leaves the
+  // second whole and marks its triangles; given those marks, a notch leaves even a sound
+  // piece whole without testing it (the same box unmarked opens). A whole plane, or a
+  // polygon over the whole section, splits a marked piece all the same.
   SurfaceMesh two = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
   SurfaceMesh crossed = box_surface(Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(1, 3, 1));
   crossed.vertices.row(7) << 0.5, 0.5, 0.5;
@@ -308,8 +320,8 @@ TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
   two.vertices.bottomRows(8) = crossed.vertices;
   two.triangles.conservativeResize(24, 3);
   two.triangles.bottomRows(12) = crossed.triangles.array() + 8;
-  const CuttingPlane blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(1, 0.1, 0.2));
-  const SurfaceCut cut = cut_surface(two, blade);
+  const Eigen::Vector3d tilted(1, 0.1, 0.2);
+  const SurfaceCut cut = cut_surface(two, square_blade(Eigen::Vector3d(0.5, 0, 0), tilted, -1, 4, -1, 0.4));
   EXPECT_EQ(cut.facts["pieces_left_whole"], 1);
   EXPECT_GT(cut.facts["cap_triangles"].get<int>(), 0);
   ASSERT_EQ(cut.surface.self_intersecting.size(), static_cast<std::size_t>(cut.surface.triangles.rows()));
@@ -321,18 +333,41 @@ TEST(CutSurface, APieceThatIntersectsItselfIsLeftWholeAndRemembered) {
     marked += cut.surface.self_intersecting[t];
   }
   EXPECT_EQ(marked, 12);
-  // Cut again: the marked piece stays whole, counted and marked.
-  const SurfaceCut again = cut_surface(cut.surface, CuttingPlane(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX()));
+  // Notched again, at the crossed box only: it stays whole, counted and marked.
+  CuttingPlane again_blade = square_blade(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX(), -1, 4, -1, 0.4);
+  again_blade.piece_at = Eigen::Vector3d(0.5, 2.5, 0.5);
+  const SurfaceCut again = cut_surface(cut.surface, again_blade);
   EXPECT_EQ(again.facts["pieces_left_whole"], 1);
   EXPECT_EQ(std::count(again.surface.self_intersecting.begin(), again.surface.self_intersecting.end(), 1), 12);
 
   SurfaceMesh sound = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
-  const CuttingPlane middle(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX());
-  EXPECT_EQ(cut_surface(sound, middle).facts["pieces_left_whole"], 0);
+  const CuttingPlane notch = square_blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX(), -1, 2, -1, 0.4);
+  EXPECT_EQ(cut_surface(sound, notch).facts["pieces_left_whole"], 0);
   sound.self_intersecting.assign(12, 1);
-  const SurfaceCut trusted = cut_surface(sound, middle);
+  const SurfaceCut trusted = cut_surface(sound, notch);
   EXPECT_EQ(trusted.facts["pieces_left_whole"], 1);
   EXPECT_EQ(trusted.surface.triangles, sound.triangles);
+  for (const CuttingPlane& through : {CuttingPlane(Eigen::Vector3d(0.5, 0, 0), tilted),
+                                      square_blade(Eigen::Vector3d(0.5, 0, 0), tilted, -1, 4, -1, 2)}) {
+    const SurfaceCut split = cut_surface(sound, through);
+    EXPECT_EQ(split.facts["pieces_left_whole"], 0);
+    EXPECT_NEAR(volume_of_closed_pieces(split.surface, 2), 1.0, 1e-15);
+    EXPECT_EQ(split.surface.self_intersecting, std::vector<char>(split.surface.triangles.rows(), 1));
+  }
+}
+
+TEST(CutSurface, APolygonOverTheWholeSectionSeparatesLikeThePlane) {
+  // The square spans the box's section: corefinement left both sides joined along the cut,
+  // neither closed, so that the next cut left the box whole. Now two closed pieces, which a
+  // second cut opens again.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut first =
+      cut_surface(box, square_blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d(1, 0.1, 0.2), -1, 4, -1, 2));
+  EXPECT_NEAR(volume_of_closed_pieces(first.surface, 2), 1.0, 1e-15);
+  const SurfaceCut second =
+      cut_surface(first.surface, square_blade(Eigen::Vector3d(0.2, 0, 0), Eigen::Vector3d::UnitX(), -1, 4, -1, 2));
+  EXPECT_EQ(second.facts["pieces_left_whole"], 0);
+  EXPECT_NEAR(volume_of_closed_pieces(second.surface, 3), 1.0, 1e-15);
 }
 
 TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {

@@ -1,0 +1,168 @@
+#include <CGAL/Polygon_mesh_processing/clip.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "shared/mesh/cut_surface_pieces.hpp"
+
+namespace altfem::surface_cut {
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// A finite blade's polygon as triangles, a fan turning counter-clockwise about its normal.
+Mesh blade_triangles(const CuttingPlane& blade) {
+  const Eigen::Vector3d normal = blade.normal.normalized();
+  std::vector<Eigen::Vector3d> corners = blade.polygon;
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < corners.size(); ++k) newell += corners[k].cross(corners[(k + 1) % corners.size()]);
+  if (newell.dot(normal) < 0) std::reverse(corners.begin(), corners.end());
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (const Eigen::Vector3d& corner : corners) vertices.push_back(mesh.add_vertex(point_of(corner)));
+  for (std::size_t k = 1; k + 1 < vertices.size(); ++k) mesh.add_face(vertices[0], vertices[k], vertices[k + 1]);
+  return mesh;
+}
+
+// Bit patterns of a point, for finding the surface's copies of a cap vertex: both are
+// the same exact intersection of a surface edge with a blade triangle, rounded once.
+using PointKey = std::array<double, 3>;
+PointKey key_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// CGAL's corefinement numbers the vertices and faces it makes in an order that follows
+// heap addresses, which differ from run to run, and the cap's remeshing depends on that
+// order: the same cut gave surfaces that differed in a few vertices from run to run.
+// Renumbered by position (copies of a point on the cut curve by their neighbours), and the
+// faces by their renumbered vertices, the same cut gives the same surface every run.
+void renumber_by_position(Mesh& mesh) {
+  const auto [input_of, has_input] = mesh.property_map<Mesh::Vertex_index, int>("v:input");
+  using Key = std::array<double, 7>;
+  std::vector<std::pair<Key, Mesh::Vertex_index>> keyed;
+  for (const Mesh::Vertex_index v : mesh.vertices()) {
+    Eigen::Vector3d ring = Eigen::Vector3d::Zero();
+    if (!mesh.is_isolated(v))
+      for (const Mesh::Vertex_index neighbour : CGAL::vertices_around_target(mesh.halfedge(v), mesh))
+        ring += vector_of(mesh.point(neighbour));
+    const Point& p = mesh.point(v);
+    keyed.push_back({{p.x(), p.y(), p.z(), has_input ? double(input_of[v]) : 0.0, ring.x(), ring.y(), ring.z()}, v});
+  }
+  std::sort(keyed.begin(), keyed.end());
+  Mesh sorted;
+  sorted.set_recycle_garbage(false);
+  auto sorted_input = sorted.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
+  std::vector<Mesh::Vertex_index> renumbered(mesh.number_of_vertices() + mesh.number_of_removed_vertices());
+  for (const auto& [key, v] : keyed) {
+    renumbered[v.idx()] = sorted.add_vertex(mesh.point(v));
+    if (has_input) sorted_input[renumbered[v.idx()]] = input_of[v];
+  }
+  std::vector<std::array<Mesh::Vertex_index, 3>> faces;
+  for (const Mesh::Face_index f : mesh.faces()) {
+    std::array<Mesh::Vertex_index, 3> corners;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners[k++] = renumbered[v.idx()];
+    // The lowest corner first keeps the face's orientation.
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+    faces.push_back(corners);
+  }
+  std::sort(faces.begin(), faces.end());
+  for (const auto& corners : faces) sorted.add_face(corners[0], corners[1], corners[2]);
+  if (!has_input) sorted.remove_property_map(sorted_input);
+  mesh = std::move(sorted);
+}
+
+}  // namespace
+
+void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_length, CutPieces& out) {
+  // The piece split along the curve where the blade crosses it (its vertices there
+  // duplicated, one copy per side), and the blade clipped to the body: the cap.
+  Mesh splitter = blade_triangles(blade);
+  Mesh cap = splitter;
+  Mesh clipper = piece;
+  PMP::split(piece, splitter);
+  PMP::clip(cap, clipper, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
+  piece.collect_garbage();
+  cap.collect_garbage();
+  // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
+  PMP::triangulate_faces(piece);
+  PMP::triangulate_faces(cap);
+  renumber_by_position(piece);
+  renumber_by_position(cap);
+  cut_curve::remesh_cap(
+      cap, [](Mesh::Face_index) { return true; }, edge_length);
+
+  // The piece's vertices: the input's, then its new ones (the curve's copies).
+  std::vector<int> output_vertex(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);
+  const auto input_of = piece.property_map<Mesh::Vertex_index, int>("v:input").first;
+  std::set<int> used;
+  for (const Mesh::Vertex_index v : piece.vertices()) {
+    const std::size_t k = v.idx();
+    if (input_of[v] >= 0 && used.insert(input_of[v]).second) {
+      output_vertex[k] = input_of[v];
+    } else {
+      output_vertex[k] = static_cast<int>(out.input_count + static_cast<Eigen::Index>(out.added.size()));
+      out.added.push_back(vector_of(piece.point(v)));
+      out.cut_vertices.push_back(output_vertex[k]);
+    }
+  }
+  // Every point of the split piece with its copies (two on the cut curve), each with the
+  // signed distance to the blade's plane of its farthest neighbour: the curve's own points
+  // are constructions a rounding off the plane, the neighbours off the curve are clearly
+  // on their copy's side.
+  const Eigen::Vector3d unit_normal = blade.normal.normalized();
+  std::map<PointKey, std::vector<std::pair<int, double>>> copies_at;
+  for (const Mesh::Vertex_index v : piece.vertices()) {
+    double farthest = 0;
+    for (const Mesh::Vertex_index neighbour : CGAL::vertices_around_target(piece.halfedge(v), piece)) {
+      const double distance = unit_normal.dot(vector_of(piece.point(neighbour)) - blade.point);
+      if (std::abs(distance) > std::abs(farthest)) farthest = distance;
+    }
+    copies_at[key_of(piece.point(v))].push_back({output_vertex[v.idx()], farthest});
+  }
+  // A cap vertex is the piece's copy on the cap's side, or a point inside the body (on a
+  // finite blade's edge there), one vertex for both caps: the blade stops there.
+  std::map<PointKey, int> inside;
+  const auto cap_vertex = [&](const Point& p, int side) {
+    if (const auto found = copies_at.find(key_of(p)); found != copies_at.end()) {
+      const auto& copies = found->second;
+      const auto best = std::max_element(copies.begin(), copies.end(), [&](const auto& a, const auto& b) {
+        return side * a.second < side * b.second;
+      });
+      out.cut_vertices.push_back(best->first);
+      return best->first;
+    }
+    const auto [slot, inserted] =
+        inside.try_emplace(key_of(p), static_cast<int>(out.input_count + static_cast<Eigen::Index>(out.added.size())));
+    if (inserted) {
+      out.added.push_back(vector_of(p));
+      out.cut_vertices.push_back(slot->second);
+    }
+    return slot->second;
+  };
+
+  for (const Mesh::Face_index f : piece.faces()) {
+    std::array<int, 3> triangle;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece))
+      triangle[k++] = output_vertex[v.idx()];
+    out.triangles.push_back(triangle);
+  }
+  // A cap per side, facing away from its side's material: the blade's fan turns about its
+  // normal, so the positive side's cap is turned over.
+  for (const int side : {+1, -1})
+    for (const Mesh::Face_index f : cap.faces()) {
+      std::array<int, 3> triangle;
+      int k = 0;
+      for (const Mesh::Vertex_index v : CGAL::vertices_around_face(cap.halfedge(f), cap))
+        triangle[k++] = cap_vertex(cap.point(v), side);
+      if (side > 0) std::swap(triangle[1], triangle[2]);
+      out.triangles.push_back(triangle);
+      ++out.cap_triangles;
+    }
+}
+
+}  // namespace altfem::surface_cut

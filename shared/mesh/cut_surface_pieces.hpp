@@ -1,0 +1,39 @@
+#pragma once
+// What cut_surface's two ways of cutting a closed piece share (issue #33): the whole
+// plane's split (cut_surface_by_plane.cgal.cpp) and a polygon's corefinement
+// (cut_surface_by_polygon.cgal.cpp). Only cut_surface's CGAL files include it.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "shared/mesh/cut_curve_cleanup.hpp"
+#include "shared/mesh/cutting_plane.hpp"
+
+namespace altfem::surface_cut {
+
+using cut_curve::Mesh;
+using cut_curve::Point;
+
+inline Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
+inline Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+// What cutting the pieces adds to the surface: vertices after the input's, triangles in
+// the output's numbering, the vertices on the cut.
+struct CutPieces {
+  Eigen::Index input_count = 0;
+  std::vector<Eigen::Vector3d> added;
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> cut_vertices;
+  int cap_triangles = 0;
+};
+
+/// The closed `piece` (each vertex with "v:input") cut by the whole plane of `exact`, both
+/// sides appended to `out`; false, appending nothing, when the plane only grazes it (a
+/// side of no volume). Throws when a side does not close. `edge_length`: the caps' edges.
+bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out);
+
+/// The closed, self-intersection-free `piece` cut by the polygon of `blade` (CGAL's
+/// corefinement), appended to `out`; `piece` is split in the process.
+void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_length, CutPieces& out);
+
+}  // namespace altfem::surface_cut
