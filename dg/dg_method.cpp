@@ -136,17 +136,20 @@ public:
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     surface_.evaluator = std::make_unique<MonomialBasisEvaluator>(mesh_, *system_);
-    const ElementBasisEvaluator& evaluator = *surface_.evaluator;
-    const Eigen::MatrixXd vertices = embedding_points(surface_.surface);
-    switch (spec_.embedding) {  // one of the three embeddings of §7
-      case Embedding::element: surface_.embedding = std::make_unique<BasisEmbedding>(evaluator, vertices); break;
+    switch (spec_.embedding) {         // one of the three embeddings of §7
+      case Embedding::element: break;  // EmbeddedSurface's own: each vertex in its element's basis
       case Embedding::stitched:
-        lagrange_ = std::make_unique<LagrangeBasisEvaluator>(volume_mesh_);
-        surface_.embedding = std::make_unique<StitchedEmbedding>(evaluator, volume_mesh_.nodes, *lagrange_, vertices);
+        surface_.make_embedding = [this](const EmbeddedSurface& surface) -> std::unique_ptr<PointEmbedding> {
+          lagrange_ = std::make_unique<LagrangeBasisEvaluator>(volume_mesh_);
+          return std::make_unique<StitchedEmbedding>(*surface.evaluator, volume_mesh_.nodes, *lagrange_,
+                                                     embedding_points(surface.surface));
+        };
         break;
       case Embedding::mls:
-        surface_.embedding = std::make_unique<MlsEmbedding>(evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_),
-                                                            vertices, MlsOptions{}, cells_at_nodes(mesh_));
+        surface_.make_embedding = [this](const EmbeddedSurface& surface) -> std::unique_ptr<PointEmbedding> {
+          return std::make_unique<MlsEmbedding>(*surface.evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_),
+                                                embedding_points(surface.surface), MlsOptions{}, cells_at_nodes(mesh_));
+        };
         break;
     }
   }

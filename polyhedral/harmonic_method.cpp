@@ -90,7 +90,6 @@ public:
       discretization_ = std::move(linear);
     }
     surface_.evaluator = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
-    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
     // Trilinear and harmonic bases are complete to degree 1 only (Martin et al. 2008 §4).
     if (auto warning = flat_cell_locking_warning(
             mesh_, "harmonic",

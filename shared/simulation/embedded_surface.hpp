@@ -5,6 +5,7 @@
 // surface stands for, the method's basis at any point, and the embedding of the surface's
 // vertices. EmbeddedSurfaceMethod implements MethodInstance's surface functions from it
 // once for every method.
+#include <functional>
 #include <memory>
 
 #include "shared/mesh/surface_mesh.hpp"
@@ -19,14 +20,21 @@ struct EmbeddedSurface {
   SurfaceMesh load_surface;  ///< what surface loads act on: the boundary of the domain integrated
   SurfaceLift lift;          ///< the curved faces load_surface stands for; empty when it is exact
   std::unique_ptr<ElementBasisEvaluator> evaluator;
-  std::unique_ptr<PointEmbedding> embedding;  ///< of surface.vertices
+  /// Embeds surface.vertices; by default each in the basis of the element holding it.
+  /// Called by the first use of embedding(), so a run that writes no surface frames embeds
+  /// nothing after a cut or a refinement (locating every vertex again, or dg's MLS weights,
+  /// was most of a pencil cut's rebuild).
+  std::function<std::unique_ptr<PointEmbedding>(const EmbeddedSurface&)> make_embedding = embed_in_basis;
 
+  /// The embedding of surface.vertices, built on first use (from one thread: the run's).
+  const PointEmbedding& embedding() const;
   /// {"surface_vertices": n} and the embedding's facts.
-  nlohmann::json facts() const {
-    nlohmann::json facts = embedding->facts();
-    facts["surface_vertices"] = surface.vertices.rows();
-    return facts;
-  }
+  nlohmann::json facts() const;
+
+  static std::unique_ptr<PointEmbedding> embed_in_basis(const EmbeddedSurface& surface);
+
+private:
+  mutable std::unique_ptr<PointEmbedding> embedding_;
 };
 
 /// A MethodInstance whose surface functions read its EmbeddedSurface.
@@ -37,7 +45,7 @@ public:
   SurfaceLift surface_lift() const override { return surface_.lift; }
   const ElementBasisEvaluator& basis_evaluator() const override { return *surface_.evaluator; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
-    return surface_.embedding->displacement(displacement);
+    return surface_.embedding().displacement(displacement);
   }
 
 protected:

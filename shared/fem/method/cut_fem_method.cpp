@@ -42,7 +42,6 @@ public:
     surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
     surface_.evaluator = cells_->basis_evaluator();
-    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
   }
 
   const Discretization& discretization() const override { return *cells_->discretization().discretization; }

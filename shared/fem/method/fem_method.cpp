@@ -61,7 +61,6 @@ public:
     surface_.lift = lagrange_surface_lift(mesh_, boundary);
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
     surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh_, &constraints_);
-    surface_.embedding = std::make_unique<BasisEmbedding>(*surface_.evaluator, embedding_points(surface_.surface));
   }
 
   const Discretization& discretization() const override { return *discretization_; }

@@ -9,6 +9,7 @@
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/lagrange_basis_evaluator.hpp"
 #include "shared/simulation/basis_embedding.hpp"
+#include "shared/simulation/embedded_surface.hpp"
 #include "tests/unit/fem/test_meshes.hpp"
 
 namespace altfem {
@@ -59,6 +60,28 @@ TEST_P(EmbeddingOfType, ReproducesAnAffineDisplacement) {
   ASSERT_EQ(displacement.cols(), 3);
   const Eigen::MatrixXd expected = (points * A.transpose()).rowwise() + b.transpose();
   EXPECT_LT((displacement - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// A method's surface embeds its vertices on first use, once: a run that writes no surface
+// frames embeds nothing after a cut or a refinement.
+TEST(EmbeddedSurface, EmbedsItsVerticesOnFirstUseAndOnce) {
+  const VolumeMesh mesh = test::distorted_grid(test::unit_cube(), {2, 2, 2}, ElementType::hex8, 0.1, 3);
+  EmbeddedSurface surface;
+  surface.surface.vertices = random_interior_points(mesh, 20, 4);
+  surface.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh);
+  int built = 0;
+  surface.make_embedding = [&built](const EmbeddedSurface& embedded) {
+    ++built;
+    return EmbeddedSurface::embed_in_basis(embedded);
+  };
+  EXPECT_EQ(built, 0);
+  const Eigen::Vector3d shift(0.3, -0.2, 0.1);
+  const Eigen::VectorXd u =
+      test::nodal_values(mesh, [&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return x + shift; });
+  const Eigen::MatrixXd expected = surface.surface.vertices.rowwise() + shift.transpose();
+  EXPECT_LT((surface.embedding().displacement(u) - expected).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_EQ(surface.facts()["surface_vertices"], 20);
+  EXPECT_EQ(built, 1);
 }
 
 INSTANTIATE_TEST_SUITE_P(PointEmbedding, EmbeddingOfType, ::testing::ValuesIn(test::all_element_types),
