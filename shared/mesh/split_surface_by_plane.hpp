@@ -41,7 +41,7 @@ struct PlaneSplit {
 /// Written here rather than taken from CGAL 5.5 (Debian 12's): its `clip` with a plane
 /// corefines the surface with a box through exact constructions, several times the cost of
 /// this for the pencil's every cut (docs/performance.md, "Cuts"), and it closed a prism
-/// cut along a valley's edge into one piece of the wrong volume (test_cut_surface.cpp).
+/// cut along a valley's edge into one piece of the wrong volume (test_split_surface_by_plane.cpp).
 std::optional<PlaneSplit> split_surface_by_plane(const cut_curve::Mesh& piece, const ExactBlade& blade, double snap);
 
 }  // namespace altfem

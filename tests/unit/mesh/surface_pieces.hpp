@@ -1,0 +1,53 @@
+#pragma once
+// A cut surface's pieces and the checks every cut_surface test makes of them.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <vector>
+
+#include "shared/mesh/mesh_components.hpp"
+#include "shared/mesh/surface_mesh.hpp"
+
+namespace altfem::test {
+
+// The surface's pieces, each as the triangles of one piece (surface_vertex_pieces).
+inline std::vector<SurfaceMesh> pieces_of(const SurfaceMesh& surface) {
+  const std::vector<int> piece_of = surface_vertex_pieces(surface);
+  std::map<int, std::vector<Eigen::Index>> triangles_of;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    triangles_of[piece_of[surface.triangles(t, 0)]].push_back(t);
+  std::vector<SurfaceMesh> pieces;
+  for (const auto& [piece, triangles] : triangles_of) {
+    SurfaceMesh shell;
+    shell.vertices = surface.vertices;
+    shell.triangles.resize(static_cast<Eigen::Index>(triangles.size()), 3);
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+      shell.triangles.row(static_cast<Eigen::Index>(t)) = surface.triangles.row(triangles[t]);
+    pieces.push_back(shell);
+  }
+  return pieces;
+}
+
+// Every edge is used once in each direction: closed, consistently oriented.
+inline bool closed_and_oriented(const SurfaceMesh& surface) {
+  std::map<std::pair<int, int>, int> uses;
+  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++uses[{surface.triangles(t, k), surface.triangles(t, (k + 1) % 3)}];
+  for (const auto& [edge, count] : uses)
+    if (count != 1 || uses.count({edge.second, edge.first}) == 0) return false;
+  return true;
+}
+
+// The summed volume of the surface's pieces, each checked closed, and their count.
+inline double volume_of_closed_pieces(const SurfaceMesh& surface, std::size_t count) {
+  const std::vector<SurfaceMesh> pieces = pieces_of(surface);
+  EXPECT_EQ(pieces.size(), count);
+  double total = 0;
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    total += surface_volume(piece);
+  }
+  return total;
+}
+
+}  // namespace altfem::test
