@@ -39,9 +39,15 @@ Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& x, const Eigen::Vecto
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
+Eigen::Matrix<double, 4, 3> corners_of(const VolumeMesh& embedded, int tetrahedron) {
+  Eigen::Matrix<double, 4, 3> corners;
+  for (int i = 0; i < 4; ++i) corners.row(i) = embedded.nodes.row(embedded.cells(tetrahedron, i));
+  return corners;
+}
+
 }  // namespace
 
-double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners) {
+double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners, double below) {
   const Eigen::Vector3d origin = corners.row(0).transpose();
   Eigen::Matrix3d edges;
   for (int i = 0; i < 3; ++i) edges.col(i) = corners.row(i + 1).transpose() - origin;
@@ -49,7 +55,11 @@ double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<dou
   // most of a surface's embedding in a cell of thousands of tetrahedra (the pencil's
   // tip). A flat tetrahedron gives no finite coordinates and is measured by its faces.
   const Eigen::Vector3d coordinates = edges.inverse() * (x - origin);
-  if (coordinates.minCoeff() >= 0 && coordinates.sum() <= 1) return 0.0;
+  // A point on a face (a surface vertex on the material's boundary) comes out a rounding
+  // off it: within 1e-12 is on it, distance 0, so that the nearest-piece search stops.
+  constexpr double on_face = 1e-12;
+  if (coordinates.minCoeff() >= -on_face && coordinates.sum() <= 1 + on_face) return 0.0;
+  if (below <= std::numeric_limits<double>::denorm_min()) return below;  // only containment was asked
   static constexpr std::array<std::array<int, 3>, 4> faces{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
   double distance = std::numeric_limits<double>::infinity();
   for (const auto& face : faces) {
@@ -78,6 +88,7 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
     return Eigen::KdBVH<double, 3, int>(tetrahedra.begin(), tetrahedra.end(), boxes.begin(), boxes.end());
   };
   std::vector<int> all_tetrahedra;
+  std::vector<std::pair<int, int>> split_cell_pieces;
   for (const auto& [background_cell, cells] : kept_pieces) {
     if (cells.size() < 2) continue;
     all_tetrahedra.clear();
@@ -86,38 +97,68 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
       piece_trees_[cell] = tree_of(tetrahedra);
       all_tetrahedra.insert(all_tetrahedra.end(), tetrahedra.begin(), tetrahedra.end());
       split_cell_[cell] = static_cast<int>(split_cell_trees_.size());
+      for (const int tetrahedron : tetrahedra) split_cell_pieces.push_back({tetrahedron, cell});
     }
     split_cell_trees_.push_back(tree_of(all_tetrahedra));
+    std::sort(split_cell_pieces.begin(), split_cell_pieces.end());
+    split_cell_pieces_.push_back(std::move(split_cell_pieces));
+    split_cell_pieces.clear();
   }
 }
 
 namespace {
 
 /// Eigen's BVMinimize's minimiser: the distance from x to the nearest tetrahedron, boxes
-/// at `bound` or beyond left closed.
+/// at `bound` or beyond left closed; `nearest` the first tetrahedron measured at the least
+/// distance.
 struct NearestTetrahedron {
   using Scalar = double;
   const VolumeMesh& embedded;
   const Eigen::Vector3d& x;
   double bound;
+  mutable int nearest = -1;
+  mutable double nearest_distance = std::numeric_limits<double>::infinity();
 
   double minimumOnVolume(const Eigen::AlignedBox3d& box) const {
-    const double distance = box.exteriorDistance(x);
+    // Less what a tetrahedron in the box forgives as rounding (distance_to_tetrahedron:
+    // 1e-12 of its heights, at a corner √3 times that): a lower bound of what any of them
+    // measures.
+    const double distance = std::max(0.0, box.exteriorDistance(x) - 2e-12 * box.diagonal().norm());
     return distance < bound ? distance : std::numeric_limits<double>::infinity();
   }
   double minimumOnObject(int tetrahedron) const {
-    Eigen::Matrix<double, 4, 3> corners;
-    for (int i = 0; i < 4; ++i) corners.row(i) = embedded.nodes.row(embedded.cells(tetrahedron, i));
-    return distance_to_tetrahedron(x, corners);
+    const double distance = distance_to_tetrahedron(x, corners_of(embedded, tetrahedron), bound);
+    if (distance < nearest_distance) {
+      nearest = tetrahedron;
+      nearest_distance = distance;
+    }
+    return distance;
   }
 };
+
+// Whether x lies inside the tetrahedron by more than rounding: then no other piece of
+// its cell holds it, since the pieces' tetrahedra do not overlap.
+bool well_inside(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners) {
+  Eigen::Matrix3d edges;
+  for (int i = 0; i < 3; ++i) edges.col(i) = (corners.row(i + 1) - corners.row(0)).transpose();
+  const Eigen::Vector3d coordinates = edges.inverse() * (x - corners.row(0).transpose());
+  return coordinates.minCoeff() > 1e-9 && coordinates.sum() < 1 - 1e-9;
+}
 
 }  // namespace
 
 double PieceBasisEvaluator::distance_to(const Eigen::KdBVH<double, 3, int>& tree, const Eigen::Vector3d& x,
-                                        double bound) const {
-  NearestTetrahedron nearest{embedded_, x, bound};
-  return std::min(bound, Eigen::BVMinimize(tree, nearest));
+                                        double bound, int* nearest) const {
+  NearestTetrahedron search{embedded_, x, bound};
+  const double distance = std::min(bound, Eigen::BVMinimize(tree, search));
+  if (nearest) *nearest = search.nearest_distance == distance ? search.nearest : -1;
+  return distance;
+}
+
+int PieceBasisEvaluator::piece_of(int split_cell, int tetrahedron) const {
+  const auto& pieces = split_cell_pieces_[split_cell];
+  const auto found = std::lower_bound(pieces.begin(), pieces.end(), std::pair<int, int>(tetrahedron, -1));
+  return found != pieces.end() && found->first == tetrahedron ? found->second : -1;
 }
 
 bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, std::vector<int>& basis,
@@ -133,19 +174,44 @@ bool PieceBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x, st
     Eigen::Vector3d x, xi;
     bool inside = false;
     double nearest = 0;
+    int holding_piece = -1;  // the kept cell whose tetrahedron holds x well inside, if known
   };
   thread_local LastPoint last;
   if (last.evaluator != serial_ || last.split_cell != split_cell_[cell] || last.x != x) {
-    last = {serial_, split_cell_[cell], x, Eigen::Vector3d::Zero(), false, 0.0};
+    last = {serial_, split_cell_[cell], x, Eigen::Vector3d::Zero(), false, 0.0, -1};
     last.inside = whole_.reference_point(cell, x, last.xi);
-    if (last.inside)
-      last.nearest = distance_to(split_cell_trees_[split_cell_[cell]], x, std::numeric_limits<double>::infinity());
+    if (last.inside) {
+      // Inside a piece's tetrahedron by more than rounding, x is nearest to that piece
+      // alone, and the other pieces need no search: a surface vertex of a pencil's chip
+      // searched the tip's thousands of long tetrahedra, whose boxes hold it, for nothing.
+      // The tetrahedron that held the point before is tried first: the surface's vertices
+      // come in order, and neighbours mostly share one.
+      thread_local std::pair<long, int> hint{-1, -1};  // (evaluator, tetrahedron)
+      const int split_cell = split_cell_[cell];
+      int tetrahedron = -1;
+      if (hint.first == serial_ && piece_of(split_cell, hint.second) >= 0 &&
+          distance_to_tetrahedron(x, corners_of(embedded_, hint.second), std::numeric_limits<double>::denorm_min()) ==
+              0) {
+        tetrahedron = hint.second;
+        last.nearest = 0;
+      } else {
+        last.nearest =
+            distance_to(split_cell_trees_[split_cell], x, std::numeric_limits<double>::infinity(), &tetrahedron);
+      }
+      if (last.nearest == 0 && tetrahedron >= 0) {
+        hint = {serial_, tetrahedron};
+        if (well_inside(x, corners_of(embedded_, tetrahedron))) last.holding_piece = piece_of(split_cell, tetrahedron);
+      }
+    }
   }
   if (!last.inside) return false;
-  // This piece is (one of) the nearest when nothing in its background cell is nearer.
-  if (distance_to(piece_trees_[cell], x, std::nextafter(last.nearest, std::numeric_limits<double>::infinity())) >
-      last.nearest)
+  if (last.holding_piece >= 0) {
+    if (cell != last.holding_piece) return false;
+  } else if (distance_to(piece_trees_[cell], x, std::nextafter(last.nearest, std::numeric_limits<double>::infinity())) >
+             last.nearest) {
+    // This piece is (one of) the nearest when nothing in its background cell is nearer.
     return false;
+  }
   whole_.evaluate(cell, last.xi, basis, values);
   return true;
 }

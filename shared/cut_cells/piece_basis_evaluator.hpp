@@ -4,6 +4,7 @@
 // piece whose material is nearest to it (a surface vertex lies on its own piece's
 // boundary, and only approximately when Mesh_3 meshed the surface).
 #include <Eigen/Geometry>
+#include <limits>
 #include <memory>
 #include <unsupported/Eigen/BVH>
 #include <vector>
@@ -39,7 +40,11 @@ private:
   /// near a pencil's tip holds thousands of tetrahedra and dozens of pieces (the chips),
   /// and every surface vertex in it asks: a scan of them all, piece by piece, was most of
   /// a cut's time.
-  double distance_to(const Eigen::KdBVH<double, 3, int>& tree, const Eigen::Vector3d& x, double bound) const;
+  /// `nearest` (optional): the tetrahedron at that distance, or −1 where it is ≥ bound.
+  double distance_to(const Eigen::KdBVH<double, 3, int>& tree, const Eigen::Vector3d& x, double bound,
+                     int* nearest = nullptr) const;
+  /// The kept cell of split background cell `split_cell` that holds `tetrahedron`.
+  int piece_of(int split_cell, int tetrahedron) const;
 
   LagrangeBasisEvaluator whole_;
   const VolumeMesh& embedded_;
@@ -49,9 +54,14 @@ private:
   /// cell all its kept pieces' tetrahedra.
   std::vector<Eigen::KdBVH<double, 3, int>> piece_trees_, split_cell_trees_;
   std::vector<int> split_cell_;  ///< per kept cell: its split background cell's tree, or −1
+  /// Per split background cell, (tetrahedron, kept cell) of its pieces, sorted.
+  std::vector<std::vector<std::pair<int, int>>> split_cell_pieces_;
 };
 
-/// Distance from x to the closed tetrahedron (4 × 3 corners).
-double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners);
+/// Distance from x to the closed tetrahedron (4 × 3 corners), 0 within 1e-12 of it in
+/// barycentric coordinates. With `below` the least positive double (the caller asks only
+/// whether x is in it), `below` for a point outside, its faces not measured.
+double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners,
+                               double below = std::numeric_limits<double>::infinity());
 
 }  // namespace altfem

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <set>
 
 #include "shared/cut_cells/cell_pieces.hpp"
@@ -202,12 +203,18 @@ TEST(CellPieces, TetrahedralCellsSplitToo) {
 }
 
 // Surface points go to the nearest piece: the distance to a tetrahedron is 0 inside and
-// on it, the distance to the nearest face, edge or corner outside.
+// on it (within 1e-12), the distance to the nearest face, edge or corner outside.
 TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
   TetrahedronCorners unit;
   unit << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1;
   EXPECT_EQ(distance_to_tetrahedron({0.1, 0.2, 0.3}, unit), 0.0);
   EXPECT_EQ(distance_to_tetrahedron({0.5, 0.5, 0.0}, unit), 0.0);
+  EXPECT_EQ(distance_to_tetrahedron({0.2, 0.3, -1e-14}, unit), 0.0);  // a rounding off a face is on it
+  EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -1e-9}, unit), 1e-9, 1e-15);
+  // Asked only whether it holds the point: the least positive double for one outside.
+  const double least = std::numeric_limits<double>::denorm_min();
+  EXPECT_EQ(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit, least), least);
+  EXPECT_EQ(distance_to_tetrahedron({0.2, 0.3, 0.25}, unit, least), 0.0);
   EXPECT_NEAR(distance_to_tetrahedron({0.2, 0.3, -0.25}, unit), 0.25, 1e-15);  // below a face
   EXPECT_NEAR(distance_to_tetrahedron({1, 1, 1}, unit), (Eigen::Vector3d(1, 1, 1) / 3 * 2).norm(),
               1e-15);                                                                // off the slanted face
@@ -216,7 +223,8 @@ TEST(PieceBasisEvaluator, DistanceToATetrahedronIsExact) {
 }
 
 // Two bars in each of two cells, the lower y ∈ [0, 0.4] and the upper y ∈ [0.6, 1]: a
-// point of cell 0 belongs to the piece nearest to it, to both at equal distances, and the
+// point of cell 0 belongs to the piece nearest to it (the one holding it, on its face
+// too), to both at equal distances, and the
 // answers depend neither on the order the pieces are asked in (each thread caches the
 // last point's distance to the cell) nor on another evaluator asked about the same point
 // in between, one whose lower bar ends at y = 0.2.
@@ -255,6 +263,12 @@ TEST(PieceBasisEvaluator, APointBelongsToItsCellsNearestPieces) {
     }
   EXPECT_TRUE(belongs(evaluator, lower, 0.5));  // 0.1 from each bar
   EXPECT_TRUE(belongs(evaluator, 1 - lower, 0.5));
+  // On the lower bar's face, and a rounding off it (no tetrahedron holds the point by more
+  // than rounding, so the pieces are searched): the lower bar's alone.
+  for (const double y : {0.4, 0.4 + 1e-14}) {
+    EXPECT_TRUE(belongs(evaluator, lower, y)) << y;
+    EXPECT_FALSE(belongs(evaluator, 1 - lower, y)) << y;
+  }
   EXPECT_FALSE(belongs(evaluator, 2, 0.2));  // cell 1's pieces: the point is not in cell 1
 }
 
