@@ -39,6 +39,16 @@ Eigen::Vector3d closest_on_triangle(const Eigen::Vector3d& x, const Eigen::Vecto
   return a + ab * (vb * denominator) + ac * (vc * denominator);
 }
 
+// The barycentric coordinates of x in the tetrahedron but the first (4 × 3 corners), by
+// the cofactor inverse: a pivoted LU per tetrahedron was most of a surface's embedding in
+// a cell of thousands of tetrahedra (the pencil's tip). A flat tetrahedron gives no finite
+// coordinates.
+Eigen::Vector3d barycentric_coordinates(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners) {
+  Eigen::Matrix3d edges;
+  for (int i = 0; i < 3; ++i) edges.col(i) = (corners.row(i + 1) - corners.row(0)).transpose();
+  return edges.inverse() * (x - corners.row(0).transpose());
+}
+
 Eigen::Matrix<double, 4, 3> corners_of(const VolumeMesh& embedded, int tetrahedron) {
   Eigen::Matrix<double, 4, 3> corners;
   for (int i = 0; i < 4; ++i) corners.row(i) = embedded.nodes.row(embedded.cells(tetrahedron, i));
@@ -48,13 +58,8 @@ Eigen::Matrix<double, 4, 3> corners_of(const VolumeMesh& embedded, int tetrahedr
 }  // namespace
 
 double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners, double below) {
-  const Eigen::Vector3d origin = corners.row(0).transpose();
-  Eigen::Matrix3d edges;
-  for (int i = 0; i < 3; ++i) edges.col(i) = corners.row(i + 1).transpose() - origin;
-  // The barycentric coordinates by the cofactor inverse: a pivoted LU per tetrahedron was
-  // most of a surface's embedding in a cell of thousands of tetrahedra (the pencil's
-  // tip). A flat tetrahedron gives no finite coordinates and is measured by its faces.
-  const Eigen::Vector3d coordinates = edges.inverse() * (x - origin);
+  // A flat tetrahedron, whose coordinates are not finite, is measured by its faces.
+  const Eigen::Vector3d coordinates = barycentric_coordinates(x, corners);
   // A point on a face (a surface vertex on the material's boundary) comes out a rounding
   // off it: within 1e-12 is on it, distance 0, so that the nearest-piece search stops.
   constexpr double on_face = 1e-12;
@@ -139,9 +144,7 @@ struct NearestTetrahedron {
 // Whether x lies inside the tetrahedron by more than rounding: then no other piece of
 // its cell holds it, since the pieces' tetrahedra do not overlap.
 bool well_inside(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners) {
-  Eigen::Matrix3d edges;
-  for (int i = 0; i < 3; ++i) edges.col(i) = (corners.row(i + 1) - corners.row(0)).transpose();
-  const Eigen::Vector3d coordinates = edges.inverse() * (x - corners.row(0).transpose());
+  const Eigen::Vector3d coordinates = barycentric_coordinates(x, corners);
   return coordinates.minCoeff() > 1e-9 && coordinates.sum() < 1 - 1e-9;
 }
 

@@ -12,8 +12,6 @@ namespace altfem::cut_curve {
 
 namespace {
 
-Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
-
 // Collapses `edge` keeping the place and "v:input" of `kept_end`, one of its ends.
 void collapse_onto(Mesh& mesh, Mesh::Edge_index edge, Mesh::Vertex_index kept_end) {
   auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
@@ -22,28 +20,6 @@ void collapse_onto(Mesh& mesh, Mesh::Edge_index edge, Mesh::Vertex_index kept_en
   const Mesh::Vertex_index kept = CGAL::Euler::collapse_edge(edge, mesh);
   mesh.point(kept) = place;
   input_of[kept] = input;
-}
-
-// Where a plane passes within rounding of an existing vertex, the points it adds there lie
-// a few 1e-13 from it. The pencil's cuts all pass near its tip, so such clusters piled up,
-// and the slivers between them, rounded, crossed one another: from the 14th cut on the
-// piece intersected itself and was left uncut.
-void collapse_short_edges(Mesh& mesh, double shortest) {
-  const auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
-  const auto too_short = [&](Mesh::Edge_index e) {
-    const Mesh::Halfedge_index h = mesh.halfedge(e);
-    return CGAL::squared_distance(mesh.point(mesh.source(h)), mesh.point(mesh.target(h))) < shortest * shortest;
-  };
-  std::vector<Mesh::Edge_index> candidates;
-  for (const Mesh::Edge_index e : mesh.edges()) {
-    const Mesh::Halfedge_index h = mesh.halfedge(e);
-    if ((input_of[mesh.source(h)] < 0 || input_of[mesh.target(h)] < 0) && too_short(e)) candidates.push_back(e);
-  }
-  for (const Mesh::Edge_index e : candidates) {
-    if (mesh.is_removed(e) || !too_short(e) || !CGAL::Euler::does_satisfy_link_condition(e, mesh)) continue;
-    const Mesh::Halfedge_index h = mesh.halfedge(e);
-    collapse_onto(mesh, e, input_of[mesh.source(h)] >= 0 ? mesh.source(h) : mesh.target(h));
-  }
 }
 
 // The normal of face f (not unit), with `moved` placed at `place`.
@@ -106,8 +82,7 @@ bool collapse_flat_curve_point(Mesh& mesh, Mesh::Vertex_index v,
 
 }  // namespace
 
-void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double shortest, double longest) {
-  collapse_short_edges(mesh, shortest);
+void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double longest) {
   const auto input_of = mesh.property_map<Mesh::Vertex_index, int>("v:input").first;
   for (bool collapsed = true; collapsed;) {
     collapsed = false;

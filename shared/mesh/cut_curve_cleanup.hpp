@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <Eigen/Core>
 #include <functional>
 
 namespace altfem::cut_curve {
@@ -14,16 +15,18 @@ using Point = Kernel::Point_3;
 /// the cut added.
 using Mesh = CGAL::Surface_mesh<Point>;
 
-/// Two clean-ups of the points a plane cut added to `mesh` (one side, clipped and capped),
-/// `on_plane` telling the cut's points (and the input's on the plane) from the rest:
-/// - edges shorter than `shortest` with a new end collapse onto their other end, which
-///   keeps its place and its "v:input";
-/// - a new point of the curve whose faces off the cap all lie in one plane (it crosses an
-///   edge inside a flat region, e.g. an earlier cap) collapses onto a neighbour on the
-///   curve, where no face around it turns over and no edge grows longer than `longest`:
-///   the region keeps its shape and the curve only the points where it bends, or which
-///   keep the edges short.
-void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double shortest, double longest);
+inline Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
+inline Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+
+/// The points a plane cut added to `mesh` (one side, split and capped), `on_plane` telling
+/// the cut's points (and the input's on the plane) from the rest: a new point of the curve
+/// whose faces off the cap all lie in one plane (it crosses an edge inside a flat region,
+/// e.g. an earlier cap) collapses onto a neighbour on the curve, where no face around it
+/// turns over and no edge grows longer than `longest`: the region keeps its shape and the
+/// curve only the points where it bends, or which keep the edges short. (Points a plane
+/// adds within rounding of a vertex are not made: split_surface_by_plane takes the vertex
+/// on the plane.)
+void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double longest);
 
 /// The faces of `mesh` that `in_cap` selects, remeshed to edges of about `length` with their
 /// border kept: a cap triangulated from its boundary alone has long edges across it, which

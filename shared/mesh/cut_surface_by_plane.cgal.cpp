@@ -54,7 +54,7 @@ bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_
   for (int side = 0; side < 2; ++side) {
     Mesh& half = split->sides[side];
     const auto on_plane = on_plane_in(half);
-    cut_curve::clean(half, on_plane, 0.0, 4.0 / 3 * edge_length);
+    cut_curve::clean(half, on_plane, 4.0 / 3 * edge_length);
     // Remeshed: the cap where it lies in the plane. Not around a vertex taken on it within
     // the snap: each side remeshes its own cap, and where the caps are not flat they would
     // part and the sides' volumes no longer sum to the piece's.

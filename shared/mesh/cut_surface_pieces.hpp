@@ -13,9 +13,8 @@ namespace altfem::surface_cut {
 
 using cut_curve::Mesh;
 using cut_curve::Point;
-
-inline Point point_of(const Eigen::Vector3d& x) { return {x.x(), x.y(), x.z()}; }
-inline Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
+using cut_curve::point_of;
+using cut_curve::vector_of;
 
 // What cutting the pieces adds to the surface: vertices after the input's, triangles in
 // the output's numbering, the vertices on the cut.

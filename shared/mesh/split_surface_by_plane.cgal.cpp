@@ -23,6 +23,7 @@ namespace {
 using cut_curve::Kernel;
 using cut_curve::Mesh;
 using cut_curve::Point;
+using cut_curve::vector_of;
 
 // The cap's triangulation: in the blade's plane through CGAL's projection traits (its
 // predicates on the 3D points as stored), each vertex knowing its point of the split, each
@@ -35,9 +36,6 @@ using Triangulation =
     CGAL::Constrained_Delaunay_triangulation_2<Traits, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>,
                                                CGAL::No_constraint_intersection_requiring_constructions_tag>;
 
-Eigen::Vector3d vector_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
-
-// The points of the split: the piece's vertices (by index), then the crossing points.
 // Where the plane crosses the segment from `from` to `to`, whose ends lie strictly on
 // either side of it: the sides are exact, the point only placed (rounded once).
 Eigen::Vector3d crossing_point(const Eigen::Vector3d& from, const Eigen::Vector3d& to, const ExactBlade& blade) {
@@ -46,6 +44,7 @@ Eigen::Vector3d crossing_point(const Eigen::Vector3d& from, const Eigen::Vector3
   return from + (std::isfinite(t) ? t : 0.5) * (to - from);
 }
 
+// The points of the split: the piece's vertices (by index), then the crossing points.
 struct SplitPoints {
   std::vector<Point> points;
   std::vector<int> input;  // "v:input" of each, −1 for a crossing point
