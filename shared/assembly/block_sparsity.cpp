@@ -2,20 +2,25 @@
 
 #include <algorithm>
 #include <span>
+#include <stdexcept>
 
 namespace altfem {
 
 // Three parallel passes over flat arrays (a 213,000-DOF Hex27 grid has 40 million
 // entries): each basis function's neighbours from the groups that hold it, the pattern's
 // rows column by column, and each group's pair offsets.
-BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroups& extra)
+BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroups& extra,
+                             std::span<const char> included)
     : element_count_(elements.size()) {
   int basis_count = elements.basis_count();
   for (int g = 0; g < extra.size(); ++g)
     for (int index : extra[g]) basis_count = std::max(basis_count, index + 1);
   const int group_count = elements.size() + extra.size();
-  // Group g's basis list: elements first, then the extra groups.
+  if (!included.empty() && static_cast<int>(included.size()) != group_count)
+    throw std::invalid_argument("BlockSparsity: one inclusion flag per element and extra group expected");
+  // Group g's basis list (empty when left out): elements first, then the extra groups.
   const auto group = [&](int g) -> std::span<const int> {
+    if (!included.empty() && !included[g]) return {};
     return g < elements.size() ? elements[g].basis : extra[g - elements.size()];
   };
 
@@ -36,6 +41,7 @@ BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroup
 #pragma omp parallel for schedule(dynamic, 256)
   for (int column = 0; column < basis_count; ++column) {
     std::vector<int>& list = neighbours[column];
+    if (!included.empty()) list.push_back(column);
     for (long long k = holder_starts[column]; k < holder_starts[column + 1]; ++k) {
       const std::span<const int> basis = group(holders[k]);
       list.insert(list.end(), basis.begin(), basis.end());

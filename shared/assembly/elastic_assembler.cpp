@@ -59,10 +59,10 @@ using parallel::for_each_index_in_two_passes;
 }  // namespace
 
 ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials,
-                                   const BasisGroups& extra_couplings)
+                                   const BasisGroups& extra_couplings, std::span<const char> share)
     : elements_(elements),
       materials_(std::move(materials)),
-      sparsity_(elements, extra_couplings),
+      sparsity_(elements, extra_couplings, share),
       colors_(color_elements(elements)),
       incidence_(elements),
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
@@ -71,6 +71,10 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
   point_offsets_.reserve(static_cast<size_t>(elements.size()) + 1);
   point_offsets_.push_back(0);
   for (int e = 0; e < elements.size(); ++e) point_offsets_.push_back(point_offsets_.back() + elements[e].point_count());
+  if (!share.empty()) {
+    assemble_only(std::vector<char>(share.begin(), share.begin() + elements.size()));
+    share_pattern_ = true;
+  }
   threads_ = omp_get_max_threads();
   scratch_ = std::make_unique<Scratch[]>(threads_);
   const int n = elements.max_element_basis();
@@ -276,7 +280,9 @@ void ElasticAssembler::add_mass(const ElementMasses& masses, double factor, Spar
   check_masses(masses);
   double* values = matrix.valuePtr();
   const int* outer = matrix.outerIndexPtr();
-  for_each_colored_element([&](int e) {
+  // A share's pattern holds only its own elements' blocks.
+  const auto& colors = share_pattern_ ? owned_colors_ : colors_;
+  parallel::for_each_colored(colors, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
     const ElementView element = elements_[e];
     const double scale = factor * materials_[element.material]->density();
     const int n = element.basis_count();

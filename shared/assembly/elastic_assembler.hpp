@@ -24,8 +24,14 @@ public:
   /// materials[m] is the material of the elements whose material id is m; the
   /// assembler keeps references to both. `extra_couplings` are block couplings beyond
   /// the elements' own (a method's face terms) that its sparsity pattern must hold.
+  ///
+  /// `share` (#elements + #extra couplings, nonzero for this rank's) makes it one rank's
+  /// share of a run over several processes whose matrices are summed by the solver
+  /// (ranks::shares_matrices()): the pattern holds only those blocks (BlockSparsity), and
+  /// hessian(), mass_matrix() and add_mass() add only this rank's elements, as
+  /// assemble_only() of the share's elements does for energy(), gradient() and hessian().
   ElasticAssembler(const TabulatedElements& elements, std::vector<const Material*> materials,
-                   const BasisGroups& extra_couplings = {});
+                   const BasisGroups& extra_couplings = {}, std::span<const char> share = {});
   ~ElasticAssembler();
 
   /// 3 × the number of basis functions of the elements and the extra couplings.
@@ -44,7 +50,8 @@ public:
   /// With project_spd, each element matrix is projected to the nearest positive
   /// semi-definite one (eigenvalue clamping; Smith et al. 2018 §4.4, Teran et al. 2005).
   void hessian(const Eigen::VectorXd& displacement, SparseMatrix& hessian, bool project_spd = false) const;
-  /// Consistent mass ∫ ρ N_a N_b (times the 3×3 identity), with pattern().
+  /// Consistent mass ∫ ρ N_a N_b (times the 3×3 identity), with pattern(); with a `share`,
+  /// of this rank's elements.
   void mass_matrix(SparseMatrix& mass) const;
   /// The load of a uniform body acceleration a (#dofs): f_(3b+i) = Σ_q w_q ρ a_i N_b(x_q),
   /// i.e. ∫ ρ a·φ_b dV for any basis, not only a partition of unity.
@@ -99,6 +106,7 @@ private:
   std::vector<std::vector<int>> colors_;
   std::vector<char> owned_;                     // empty: every element is assembled
   std::vector<std::vector<int>> owned_colors_;  // with owned_: colors_ restricted to the owned elements
+  bool share_pattern_ = false;                  // constructed with a share: the matrices hold owned_ only
   BasisIncidence incidence_;
   std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start
   const double* shifts_ = nullptr;        // set_deformation_shifts', or null

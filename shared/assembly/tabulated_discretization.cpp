@@ -56,36 +56,51 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
 // Each rank assembles the elements METIS gives it, and of each term the lists of
 // couplings (faces) whose lowest-ranked basis function is its: a function belongs to the
 // lowest part among its elements, so a face between two parts goes to the lower one. A
-// term that cannot divide itself stays with rank 0. The sums in energy(), gradient() and
-// hessian() make the whole.
-void TabulatedDiscretization::divide_among_ranks(const BasisGroups& couplings) {
+// term that cannot divide itself stays with rank 0. The sums in energy() and gradient()
+// make the whole, and in hessian() unless the solver sums the shares (ranks::shares_matrices()).
+// Returns, per element and then per term's coupling list (the pattern's groups), whether
+// this rank assembles it.
+std::vector<char> TabulatedDiscretization::divide_among_ranks(const BasisGroups& couplings) {
   const std::vector<int> part = partition_elements(parts_.elements, couplings, ranks::count());
-  std::vector<char> owned(part.size());
-  for (size_t e = 0; e < part.size(); ++e) owned[e] = part[e] == ranks::index();
-  assembler_->assemble_only(owned);
-  std::vector<int> basis_part(static_cast<size_t>(dof_count() / 3), ranks::count());
+  std::vector<char> mine(part.size());
+  for (size_t e = 0; e < part.size(); ++e) mine[e] = part[e] == ranks::index();
+  int basis_count = parts_.elements.basis_count();
+  for (int g = 0; g < couplings.size(); ++g)
+    for (int basis : couplings[g]) basis_count = std::max(basis_count, basis + 1);
+  // A function no element holds (none do today) belongs to rank 0.
+  std::vector<int> basis_part(static_cast<size_t>(basis_count), ranks::count());
   for (int e = 0; e < parts_.elements.size(); ++e)
     for (int basis : parts_.elements[e].basis) basis_part[basis] = std::min(basis_part[basis], part[e]);
+  for (int& owner : basis_part) owner = owner == ranks::count() ? 0 : owner;
   term_here_.assign(parts_.terms.size(), 1);
   for (size_t t = 0; t < parts_.terms.size(); ++t) {
     const BasisGroups& groups = parts_.terms[t]->couplings();
-    std::vector<char> mine(static_cast<size_t>(groups.size()));
+    std::vector<char> term_mine(static_cast<size_t>(groups.size()));
     for (int g = 0; g < groups.size(); ++g) {
       int owner = ranks::count();
       for (int basis : groups[g]) owner = std::min(owner, basis_part[basis]);
-      // A list of functions no element holds (none do today) stays with rank 0.
-      mine[g] = (owner == ranks::count() ? 0 : owner) == ranks::index();
+      term_mine[g] = owner == ranks::index();
     }
-    if (!parts_.terms[t]->assemble_only(mine)) term_here_[t] = ranks::index() == 0;
+    if (!parts_.terms[t]->assemble_only(term_mine)) {
+      term_here_[t] = ranks::index() == 0;
+      std::fill(term_mine.begin(), term_mine.end(), term_here_[t]);
+    }
+    mine.insert(mine.end(), term_mine.begin(), term_mine.end());
   }
+  if (ranks::shares_matrices()) share_row_owners_ = std::move(basis_part);
+  return mine;
 }
 
 bool TabulatedDiscretization::assembles_term(size_t term) const { return term_here_.empty() || term_here_[term]; }
 
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
   const BasisGroups couplings = collect_couplings(parts_.terms);
-  assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings);
-  if (ranks::distributed()) divide_among_ranks(couplings);
+  const std::vector<char> mine = ranks::distributed() ? divide_among_ranks(couplings) : std::vector<char>{};
+  const bool share = !share_row_owners_.empty();
+  assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings,
+                                                  share ? std::span<const char>(mine) : std::span<const char>{});
+  if (ranks::distributed() && !share)
+    assembler_->assemble_only(std::vector<char>(mine.begin(), mine.begin() + parts_.elements.size()));
   masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
   parts_.element_masses.reset();
   int first_group = 0;
@@ -126,6 +141,8 @@ void TabulatedDiscretization::add_mass(double factor, Eigen::SparseMatrix<double
 }
 
 const ExplicitMass& TabulatedDiscretization::explicit_mass() const {
+  if (!explicit_mass_ && !share_row_owners_.empty())
+    throw std::logic_error("TabulatedDiscretization: a block mass from a rank's share of the mass matrix");
   if (!explicit_mass_)
     explicit_mass_ = std::make_unique<BlockDiagonalMass>(
         mass_matrix(), parts_.mass_blocks.empty() ? element_dof_groups(parts_.elements) : parts_.mass_blocks);
@@ -139,7 +156,8 @@ void TabulatedDiscretization::set_time(double time) const {
 TabulatedDiscretization::~TabulatedDiscretization() = default;
 
 // Over several ranks each assembles its own elements and faces (divide_among_ranks); the
-// sums make every rank's result the whole, so that the integrators run the same on every rank.
+// sums make every rank's result the whole, so that the integrators run the same on every
+// rank. The Hessian is left this rank's share when the solver sums the shares.
 double TabulatedDiscretization::energy(const Eigen::VectorXd& u) const {
   double total = 0;
   ranks::collectively([&] {
@@ -166,7 +184,8 @@ void TabulatedDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMat
     for (size_t t = 0; t < parts_.terms.size(); ++t)
       if (assembles_term(t)) parts_.terms[t]->add_hessian(u, hessian);
   });
-  ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
+  if (share_row_owners_.empty())
+    ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
 }
 
 Eigen::VectorXd TabulatedDiscretization::explicit_body_force(const Eigen::Vector3d& acceleration) const {

@@ -82,6 +82,7 @@ public:
   Eigen::VectorXd external_force(double time) const override;
   /// Evaluates parts.deformation_shifts at `time` (from time 0 at construction).
   void set_time(double time) const override;
+  const std::vector<int>& matrix_share_owners() const override { return share_row_owners_; }
   const std::vector<int>& constrained_dofs() const override { return parts_.dirichlet.dofs; }
   const std::vector<ConstraintHolders>& constraint_holders() const override { return parts_.dirichlet.holders; }
   Eigen::VectorXd prescribed_displacement(double time) const override;
@@ -96,7 +97,7 @@ public:
 
 private:
   /// This rank's elements and term couplings, in a run over several processes.
-  void divide_among_ranks(const BasisGroups& couplings);
+  std::vector<char> divide_among_ranks(const BasisGroups& couplings);
   /// Whether this rank evaluates term t (its share, or the whole on rank 0).
   bool assembles_term(size_t term) const;
 
@@ -108,6 +109,7 @@ private:
   mutable std::unique_ptr<ExplicitMass> explicit_mass_;  // the lumped one at once, a block one once asked for
   bool constant_hessian_ = false;
   std::vector<char> term_here_;         // per term, over several ranks: whether this rank evaluates it
+  std::vector<int> share_row_owners_;   // with ranks::shares_matrices(): each basis function's rank
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)
 };
 

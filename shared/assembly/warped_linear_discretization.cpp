@@ -161,7 +161,9 @@ void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::Sparse
         }
       }
   });
-  ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
+  // Left this rank's share, on its linear part's pattern, when the solver sums the shares.
+  if (linear->matrix_share_owners().empty())
+    ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
 }
 
 Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::VectorXd& u) const {

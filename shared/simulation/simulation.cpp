@@ -11,6 +11,7 @@
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/surface_traction.hpp"
 #include "shared/solve/critical_time_step.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -95,6 +96,7 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
   options.max_iterations = scene.solver.linear_max_iterations;
   if (options.kind == LinearSolverKind::petsc) {
     options.petsc_options = scene.solver.petsc_options;
+    options.share_row_owners = method.discretization().matrix_share_owners();
     if (scene.solver.rigid_body_modes) options.near_null_space = rigid_body_modes(method);
   }
   return options;
@@ -103,6 +105,11 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
 Simulation::Simulation(const Scene& scene, const SceneGeometry& geometry, std::string method_name,
                        const MethodFactory& factory, MethodRebuilder rebuild)
     : scene_(scene), geometry_(&geometry), method_name_(std::move(method_name)), rebuild_(std::move(rebuild)) {
+  // PETSc sums the ranks' shares of the matrices Newton hands it: no rank then holds the
+  // whole Hessian (docs/scaling.md). Explicit steps and L-BFGS hand it none.
+  ranks::share_matrices(scene.solver.linear == LinearSolverKind::petsc &&
+                        scene.solver.nonlinear == NonlinearSolverKind::newton &&
+                        (scene.time.is_static || scene.time.integrator != IntegratorKind::symplectic_euler));
   method_ = factory(scene, geometry);
   quadrature_seconds_ = method_->quadrature_seconds();
   scene_loads_ = scene_loads(scene, geometry, *method_, method_name_);

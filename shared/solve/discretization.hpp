@@ -40,6 +40,17 @@ public:
   /// The sparsity of hessian(), mass_matrix() and every matrix the integrators build
   /// (the default add_mass adds value arrays and refuses a mass of another pattern).
   virtual const Eigen::SparseMatrix<double>& hessian_pattern() const = 0;
+  /// Over several ranks with ranks::shares_matrices(), a discretization that divides its
+  /// elements among the ranks may give from hessian(), mass_matrix() and add_mass() only
+  /// this rank's share of the sum (its own elements' and faces' terms), on a pattern of its
+  /// own (hessian_pattern(): those blocks and every function's diagonal block); the
+  /// solver sums the shares. Then this is the rank owning each basis function's rows
+  /// (#dofs / 3); empty (the default) when every matrix is the whole on every rank.
+  /// Vectors and scalars (energy, gradient, mass_times, loads) are always the whole.
+  virtual const std::vector<int>& matrix_share_owners() const {
+    static const std::vector<int> whole;
+    return whole;
+  }
   /// True when the Hessian does not depend on u (linear elasticity).
   virtual bool hessian_is_constant() const = 0;
   /// False for a force model whose gradient() is not the derivative of energy() (DG

@@ -22,6 +22,7 @@ public:
   }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return inner_->hessian_pattern(); }
   bool hessian_is_constant() const override { return inner_->hessian_is_constant(); }
+  const std::vector<int>& matrix_share_owners() const override { return inner_->matrix_share_owners(); }
   bool forces_have_potential() const override { return inner_->forces_have_potential(); }
   const Eigen::SparseMatrix<double>& mass_matrix() const override { return inner_->mass_matrix(); }
   Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override { return inner_->mass_times(vector); }

@@ -99,7 +99,7 @@ void LinearSolver::analyze(const Eigen::SparseMatrix<double>& matrix) {
 }
 
 void LinearSolver::factorize(const Eigen::SparseMatrix<double>& matrix) {
-  if (!has_analysed_pattern(matrix)) analyze(matrix);
+  if (!analysed_everywhere(has_analysed_pattern(matrix))) analyze(matrix);
   const ParkBlasThreadsOnExit parking;
   const auto start = std::chrono::steady_clock::now();
   factorised_ = false;

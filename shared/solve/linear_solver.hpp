@@ -72,6 +72,10 @@ struct LinearSolverOptions {
   /// conditions (#dofs × 6: the rigid-body modes, DOF 3b + i being component i of basis
   /// function b), which smoothed-aggregation AMG builds its coarse spaces from; empty for none.
   Eigen::MatrixXd near_null_space;
+  /// `petsc` over several ranks: when the matrices handed over are each rank's share of a
+  /// sum on a pattern of its own (Discretization::matrix_share_owners), the rank owning
+  /// each block of three rows (#dofs / 3); empty when every rank hands over the whole.
+  std::vector<int> share_row_owners;
 };
 
 /// Solves A x = b for a sparse square A (#dofs × #dofs, column-major; symmetric
@@ -108,6 +112,10 @@ protected:
   /// solver held a third of a stiffness matrix for nothing, issue #35).
   virtual bool analyses_pattern() const { return true; }
   virtual void factorize_values(const Eigen::SparseMatrix<double>& matrix) = 0;
+  /// Whether every process of a solve over several ranks has analysed its pattern, given
+  /// whether this one has: such a solver analyses collectively, and the ranks' patterns
+  /// (their shares of the matrix) may change on one rank alone.
+  virtual bool analysed_everywhere(bool here) const { return here; }
   /// Returns the number of iterations the solve took (0 for a direct solve).
   virtual long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) = 0;
   /// For analyze_pattern of direct solvers: the size of the factor it predicts.

@@ -3,9 +3,11 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "shared/common/error.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -40,8 +42,22 @@ void NewtonSolver::evaluate_gradient(const Objective& objective, const Eigen::Ve
 }
 
 NewtonSolver::NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
-                           const DirichletElimination& elimination)
-    : linear_solver_(linear_solver), elimination_(elimination), matrix_(pattern) {}
+                           const DirichletElimination& elimination, bool matrix_shares)
+    : linear_solver_(linear_solver), elimination_(elimination), matrix_(pattern), matrix_shares_(matrix_shares) {}
+
+void NewtonSolver::lift(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& increment) {
+  if (!matrix_shares_ || increment.squaredNorm() == 0) {
+    // Without increments the lifting only zeroes the constrained entries: no sum needed.
+    elimination_.lift(matrix, rhs_, increment);
+    return;
+  }
+  // r'_f = r_f − K_fc Δc and r'_c = K_cc Δc are linear in K: the shares' liftings, summed.
+  lifted_.setZero(rhs_.size());
+  elimination_.lift(matrix, lifted_, increment);
+  ranks::sum(std::span<double>(lifted_.data(), static_cast<size_t>(lifted_.size())));
+  elimination_.set_constrained(rhs_, Eigen::VectorXd::Zero(increment.size()));
+  rhs_ += lifted_;
+}
 
 void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd& u, const Eigen::VectorXd& gradient,
                               const Eigen::VectorXd& increment, bool project_spd, int step, int iteration) {
@@ -51,11 +67,12 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
   // there is none to lift, and no second copy of the Hessian is kept.
   const bool lifts = !elimination_.constrained_dofs().empty();
   if (reuse) {
-    if (lifts) elimination_.lift(constant_hessian_, rhs_, increment);
+    if (lifts) lift(constant_hessian_, increment);
   } else {
     assemble_hessian(objective, u, project_spd, step, iteration);
     if (objective.hessian_is_constant() && lifts) constant_hessian_ = matrix_;
-    elimination_.apply(matrix_, rhs_, increment);
+    if (lifts) lift(matrix_, increment);
+    elimination_.eliminate(matrix_);
     // factorize() analyses the pattern when it differs from the solver's last one: a
     // Newton solver made after an event with an unchanged pattern analyses nothing.
     try {
@@ -64,7 +81,8 @@ void NewtonSolver::solve_step(const Objective& objective, const Eigen::VectorXd&
       if (project_spd) throw NumericalError(where(step, iteration) + ": " + error.what());
       rhs_ = -gradient;
       assemble_hessian(objective, u, true, step, iteration);
-      elimination_.apply(matrix_, rhs_, increment);
+      if (lifts) lift(matrix_, increment);
+      elimination_.eliminate(matrix_);
       try {
         linear_solver_.factorize(matrix_);
       } catch (const NumericalError& again) {
@@ -91,6 +109,8 @@ double NewtonSolver::round_off_floor(const Eigen::VectorXd& u) {
   for (Eigen::Index column = 0; column < matrix_.outerSize(); ++column)
     for (Eigen::SparseMatrix<double>::InnerIterator entry(matrix_, column); entry; ++entry)
       magnitudes_[entry.row()] += std::abs(entry.value()) * std::abs(u[column]);
+  // Over shares, Σ_ranks |H_r| |u| ≥ |H| |u|: a floor at least one process's.
+  if (matrix_shares_) ranks::sum(std::span<double>(magnitudes_.data(), static_cast<size_t>(magnitudes_.size())));
   return 16 * std::numeric_limits<double>::epsilon() * elimination_.free_norm(magnitudes_);
 }
 

@@ -59,8 +59,12 @@ struct NewtonReport {
 /// Newton stops only at the tolerance.
 class NewtonSolver {
 public:
+  /// With `matrix_shares`, the objective's Hessians are each rank's share of a sum
+  /// (Discretization::matrix_share_owners) that `linear_solver` sums: what Newton itself
+  /// takes from them, the lifting of the prescribed increments and the round-off floor, is
+  /// summed over the ranks.
   NewtonSolver(LinearSolver& linear_solver, const Eigen::SparseMatrix<double>& pattern,
-               const DirichletElimination& elimination);
+               const DirichletElimination& elimination, bool matrix_shares = false);
 
   /// Minimises `objective` from `u` with the constrained DOFs driven to `prescribed`
   /// (constrained_dofs() order). Throws NumericalError naming `step` and the iteration.
@@ -77,6 +81,9 @@ private:
   // 16 ε ‖(|H| |u|)_free‖ with H the last eliminated Hessian (solve_step's).
   double round_off_floor(const Eigen::VectorXd& u);
 
+  // rhs_ lifted by the prescribed increments (DirichletElimination::lift), from `matrix`.
+  void lift(const Eigen::SparseMatrix<double>& matrix, const Eigen::VectorXd& increment);
+
   // Assembles, eliminates, factorises (unless reusable) and solves for the step.
   void solve_step(const Objective& objective, const Eigen::VectorXd& u, const Eigen::VectorXd& gradient,
                   const Eigen::VectorXd& increment, bool project_spd, int step, int iteration);
@@ -91,7 +98,8 @@ private:
   const DirichletElimination& elimination_;
   Eigen::SparseMatrix<double> matrix_;
   Eigen::SparseMatrix<double> constant_hessian_;  // before elimination, for the lifting
-  Eigen::VectorXd rhs_, direction_, gradient_, trial_, trial_gradient_, magnitudes_;
+  Eigen::VectorXd rhs_, direction_, gradient_, trial_, trial_gradient_, magnitudes_, lifted_;
+  bool matrix_shares_ = false;
   int iterations_of_last_call_ = 0;
   bool constant_factorised_ = false;
 };

@@ -82,7 +82,10 @@ public:
           qr.householderQ() * Eigen::MatrixXd::Identity(options.near_null_space.rows(), options.near_null_space.cols());
     }
     // PETSC_COMM_WORLD is MPI's world only once PETSc has started.
-    if (ranks::distributed()) communicator_ = PETSC_COMM_WORLD;
+    if (ranks::distributed()) {
+      communicator_ = PETSC_COMM_WORLD;
+      share_row_owners_ = options.share_row_owners;
+    }
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
@@ -122,6 +125,7 @@ protected:
     // The KSP may still hold the old matrix, which reads the arrays rebuilt below; it is
     // replaced before anything reads it again (factorize_values).
     destroy_arrays();
+    if (!share_row_owners_.empty()) return analyze_shares(matrix);
     const auto size = static_cast<PetscInt>(matrix.rows());
     // Three DOFs per basis function: GAMG aggregates whole functions, as elasticity needs.
     const PetscInt block = size % 3 == 0 ? 3 : 1;
@@ -161,22 +165,27 @@ protected:
       check(MatSetBlockSize(matrix_, block), "MatSetBlockSize");
       check(MatMPIAIJSetPreallocationCSR(matrix_, row_starts_.data(), columns_.data(), values_.data()),
             "MatMPIAIJSetPreallocationCSR");
-      check(VecCreateMPI(communicator_, rows, size, &rhs_), "VecCreateMPI");
-      check(VecScatterCreateToAll(rhs_, &gather_, &gathered_), "VecScatterCreateToAll");
+      create_vectors(size);
     } else {
       check(MatCreateSeqAIJWithArrays(PETSC_COMM_SELF, size, size, row_starts_.data(), columns_.data(), values_.data(),
                                       &matrix_),
             "MatCreateSeqAIJWithArrays");
       if (block == 3) check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
-      check(VecCreateSeq(PETSC_COMM_SELF, size, &rhs_), "VecCreateSeq");
+      create_vectors(size);
     }
-    check(VecDuplicate(rhs_, &solution_), "VecDuplicate");
-    if (near_null_space_.cols() > 0) set_near_null_space(size);
   }
 
   void factorize_values(const Eigen::SparseMatrix<double>& matrix) override {
     const double* source = matrix.valuePtr();
-    if (ranks::distributed()) {
+    if (!share_row_owners_.empty()) {
+      // Each rank adds its share; PETSc sends the rows another rank owns to it.
+      check(MatZeroEntries(matrix_), "MatZeroEntries");
+      for_each_row_of_share(matrix, [&](PetscInt row, PetscInt count, const PetscInt* columns, const double* values) {
+        check(MatSetValues(matrix_, 1, &row, count, columns, values, ADD_VALUES), "MatSetValues");
+      });
+      check(MatAssemblyBegin(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+      check(MatAssemblyEnd(matrix_, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    } else if (ranks::distributed()) {
       for (std::size_t position = 0; position < csr_from_csc_.size(); ++position)
         values_[position] = source[csr_from_csc_[position]];
       for (PetscInt row = 0; row + first_row_ < last_row_; ++row) {
@@ -232,7 +241,94 @@ protected:
     return iterations;
   }
 
+  bool analysed_everywhere(bool here) const override {
+    return ranks::distributed() ? ranks::sum(here ? 0.0 : 1.0) == 0 : here;
+  }
+
 private:
+  // Each rank's share of the sum, on its own pattern (LinearSolverOptions::share_row_owners):
+  // rows numbered from the owners, the distributed matrix preallocated from every rank's
+  // pattern by PETSc's MATPREALLOCATOR (which sends each rank the entries others add to
+  // its rows), so no rank ever holds the whole pattern.
+  void analyze_shares(const Eigen::SparseMatrix<double>& matrix) {
+    const auto size = static_cast<PetscInt>(matrix.rows());
+    number_rows_from_owners(size);
+    const PetscInt rows = last_row_ - first_row_;
+    check(MatCreate(communicator_, &matrix_), "MatCreate");
+    check(MatSetSizes(matrix_, rows, rows, size, size), "MatSetSizes");
+    check(MatSetType(matrix_, MATMPIAIJ), "MatSetType");
+    check(MatSetBlockSize(matrix_, 3), "MatSetBlockSize");
+    Mat preallocator;
+    check(MatCreate(communicator_, &preallocator), "MatCreate");
+    check(MatSetSizes(preallocator, rows, rows, size, size), "MatSetSizes");
+    check(MatSetType(preallocator, MATPREALLOCATOR), "MatSetType");
+    check(MatSetBlockSize(preallocator, 3), "MatSetBlockSize");
+    check(MatSetUp(preallocator), "MatSetUp");
+    for_each_row_of_share(matrix, [&](PetscInt row, PetscInt count, const PetscInt* columns, const double* values) {
+      check(MatSetValues(preallocator, 1, &row, count, columns, values, INSERT_VALUES), "MatSetValues");
+    });
+    check(MatAssemblyBegin(preallocator, MAT_FINAL_ASSEMBLY), "MatAssemblyBegin");
+    check(MatAssemblyEnd(preallocator, MAT_FINAL_ASSEMBLY), "MatAssemblyEnd");
+    const PetscErrorCode preallocating = MatPreallocatorPreallocate(preallocator, PETSC_TRUE, matrix_);
+    MatDestroy(&preallocator);
+    check(preallocating, "MatPreallocatorPreallocate");
+    // Later assemblies add other ranks' rows too, and never a new entry.
+    check(MatSetOption(matrix_, MAT_NO_OFF_PROC_ENTRIES, PETSC_FALSE), "MatSetOption");
+    check(MatSetOption(matrix_, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE), "MatSetOption");
+    create_vectors(size);
+  }
+
+  // body(PETSc row, count, PETSc columns, values) for every column of a share: the
+  // Hessian of an energy (with the mass and the eliminated conditions) is symmetric, so
+  // column c of Eigen's compressed columns is row c, handed to PETSc without a transposed copy.
+  template <typename Body>
+  void for_each_row_of_share(const Eigen::SparseMatrix<double>& matrix, Body&& body) {
+    const int* starts = matrix.outerIndexPtr();
+    const int* rows = matrix.innerIndexPtr();
+    for (Eigen::Index column = 0; column < matrix.outerSize(); ++column) {
+      const int first = starts[column], count = starts[column + 1] - first;
+      row_buffer_.resize(static_cast<size_t>(count));
+      for (int k = 0; k < count; ++k) row_buffer_[k] = petsc_index(rows[first + k]);
+      body(petsc_index(column), count, row_buffer_.data(), matrix.valuePtr() + first);
+    }
+  }
+
+  // The solution and right-hand side vectors (this rank's rows), the gather of the
+  // solution to every rank, and the near-null space.
+  void create_vectors(PetscInt size) {
+    const PetscInt rows = last_row_ - first_row_;
+    if (ranks::distributed()) {
+      check(VecCreateMPI(communicator_, rows, size, &rhs_), "VecCreateMPI");
+      check(VecScatterCreateToAll(rhs_, &gather_, &gathered_), "VecScatterCreateToAll");
+    } else {
+      check(VecCreateSeq(PETSC_COMM_SELF, size, &rhs_), "VecCreateSeq");
+    }
+    check(VecDuplicate(rhs_, &solution_), "VecDuplicate");
+    if (near_null_space_.cols() > 0) set_near_null_space(size);
+  }
+
+  // Blocks of three rows numbered rank by rank, in the method's order within a rank.
+  void number_rows_from_owners(PetscInt size) {
+    const size_t blocks = static_cast<size_t>(size / 3);
+    if (size % 3 != 0 || share_row_owners_.size() != blocks)
+      throw std::logic_error("petsc solver: " + std::to_string(share_row_owners_.size()) + " row owners for " +
+                             std::to_string(size) + " rows");
+    std::vector<PetscInt> starts(static_cast<size_t>(ranks::count()) + 1, 0);
+    for (int owner : share_row_owners_) ++starts[owner + 1];
+    for (int rank = 0; rank < ranks::count(); ++rank) starts[rank + 1] += starts[rank];
+    first_row_ = 3 * starts[ranks::index()];
+    last_row_ = 3 * starts[ranks::index() + 1];
+    petsc_of_method_.resize(static_cast<size_t>(size));
+    method_of_petsc_.resize(static_cast<size_t>(size));
+    for (size_t block = 0; block < blocks; ++block) {
+      const PetscInt target = starts[share_row_owners_[block]]++;
+      for (PetscInt k = 0; k < 3; ++k) {
+        petsc_of_method_[3 * block + k] = 3 * target + k;
+        method_of_petsc_[3 * target + k] = static_cast<PetscInt>(3 * block + k);
+      }
+    }
+  }
+
   // Over several ranks PETSc's rows are METIS's parts of the matrix graph (partitioned_rows);
   // on one they are the method's.
   void number_rows(const Eigen::SparseMatrix<double>& matrix, PetscInt block) {
@@ -335,6 +431,8 @@ private:
   std::vector<PetscInt> columns_;     // this rank's #nonzeros, global column indices
   std::vector<PetscScalar> values_;   // this rank's #nonzeros: on one rank the matrix's own values
   std::vector<int> csr_from_csc_;     // this rank's #nonzeros: the Eigen value index of each AIJ entry
+  std::vector<int> share_row_owners_;  // over several ranks, for shares: each block row's rank
+  std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
 };
 

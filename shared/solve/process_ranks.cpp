@@ -21,7 +21,15 @@ int launched_processes() {
   return 0;
 }
 
+bool& matrix_shares() {
+  static bool share = false;
+  return share;
+}
+
 }  // namespace
+
+void share_matrices(bool share) { matrix_shares() = share; }
+bool shares_matrices() { return distributed() && matrix_shares(); }
 
 #ifdef ALTFEM_HAVE_PETSC
 

@@ -25,6 +25,14 @@ int index();
 int count();
 inline bool distributed() { return count() > 1; }
 
+/// Whether the discretizations built from now on hand each rank's share of their matrices
+/// to a solver that sums the shares itself (PETSc's distributed matrix), on a pattern of
+/// that rank's own elements, instead of the whole matrix on every rank (docs/scaling.md).
+/// Set by the run from its scene (`solver.linear: "petsc"` with Newton); it counts only
+/// over several ranks.
+void share_matrices(bool share);
+bool shares_matrices();
+
 /// Each entry replaced by its sum over the ranks, the same bits on every rank.
 void sum(std::span<double> values);
 double sum(double value);

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 #include <string>
 
 #include "shared/common/error.hpp"
 #include "shared/solve/lbfgs.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -66,14 +68,18 @@ public:
     double value = 0.5 / (h_ * h_) * inertial.dot(discretization_.mass_times(inertial)) + elastic - force_.dot(u);
     if (damping_) {
       const Eigen::VectorXd moved = u - previous_;
-      value += 0.5 / h_ * moved.dot(*damping_ * moved);
+      value += 0.5 / h_ * damping_share_sum(moved.dot(*damping_ * moved));
     }
     return value;
   }
   void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override {
     discretization_.gradient(u, gradient);
     gradient.noalias() += discretization_.mass_times((u - target_) / (h_ * h_));
-    if (damping_) gradient.noalias() += *damping_ * ((u - previous_) / h_);
+    if (damping_) {
+      Eigen::VectorXd force = *damping_ * ((u - previous_) / h_);
+      if (damping_is_share()) ranks::sum(std::span<double>(force.data(), static_cast<size_t>(force.size())));
+      gradient += force;
+    }
     gradient -= force_;
   }
   void hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool project_spd) const override {
@@ -87,6 +93,10 @@ public:
   bool gradient_has_potential() const override { return discretization_.forces_have_potential(); }
 
 private:
+  // D is built like the Hessian: each rank's share of it when the solver sums the shares.
+  bool damping_is_share() const { return !discretization_.matrix_share_owners().empty(); }
+  double damping_share_sum(double value) const { return damping_is_share() ? ranks::sum(value) : value; }
+
   const Discretization& discretization_;
   double h_;
   const Eigen::VectorXd& target_;
@@ -118,7 +128,8 @@ void TimeIntegrator::rebind(const Discretization& discretization, LinearSolver* 
   if (linear_solver) linear_solver_ = linear_solver;
   elimination_ =
       std::make_unique<DirichletElimination>(discretization.hessian_pattern(), discretization.constrained_dofs());
-  newton_ = std::make_unique<NewtonSolver>(*linear_solver_, discretization.hessian_pattern(), *elimination_);
+  newton_ = std::make_unique<NewtonSolver>(*linear_solver_, discretization.hessian_pattern(), *elimination_,
+                                           !discretization.matrix_share_owners().empty());
   gravity_force_ = discretization.body_force(options_.gravity);
   // The representative load: gravity's, else that of 1 m/s² along each axis.
   const Eigen::VectorXd representative =

@@ -16,11 +16,13 @@
 // checks are EXPECTs (an ASSERT's early return would leave the other rank waiting).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <memory>
 #include <ostream>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,6 +69,13 @@ const std::vector<Case>& cases() {
        "harmonic",
        "scenes/cantilever.json",
        {"discretization/harmonic/convert/resolution=[10,2,2]", "discretization/harmonic/warping=true"}},
+      // Backward Euler with Rayleigh damping and an end turned by a prescribed motion: the
+      // mass, the damping and the lifting of the prescribed increments, each from shares.
+      {"fem_twisting_damped",
+       "fem",
+       "scenes/twisting_beam.json",
+       {R"(discretization/fem={"element": "hex20", "mesh": "grid", "resolution": [8, 2, 2]})",
+        R"(time/rayleigh_damping={"mass": 0.5, "stiffness": 0.002})"}},
   };
   return all;
 }
@@ -122,6 +131,50 @@ TEST_P(TwoRanks, EnergyForcesAndHessianAreTheWholes) {
     const Eigen::Map<const Eigen::VectorXd> two(together.hessian.valuePtr(), together.hessian.nonZeros());
     const Eigen::Map<const Eigen::VectorXd> one(alone.hessian.valuePtr(), alone.hessian.nonZeros());
     EXPECT_LE((two - one).lpNorm<Eigen::Infinity>(), 1e-13 * one.lpNorm<Eigen::Infinity>());
+  }
+}
+
+// Each rank's share of the Hessian and of the mass on its own pattern (a solver that sums
+// them, PETSc, asked for): the shares, placed by their rows and columns into one process's
+// pattern and summed over the ranks, are one process's matrices; each share holds fewer
+// entries than the whole, and every rank's rows have an owner.
+TEST_P(TwoRanks, HessianSharesSumToTheWhole) {
+  const std::vector<std::string> petsc{"solver/linear=petsc"};
+  const Built together(GetParam(), petsc);
+  const Discretization& shared = together.simulation->discretization();
+  // dg's linear system and the force model of dg's warping are whole on every rank.
+  const bool shares = !shared.matrix_share_owners().empty();
+  EXPECT_EQ(shares, GetParam().name != "dg_linear");
+  if (!shares) return;
+  const Assembled share = assemble(shared);
+  Eigen::SparseMatrix<double> share_mass = shared.hessian_pattern();
+  shared.add_mass(1.0, share_mass);
+  Assembled alone;
+  Eigen::SparseMatrix<double> whole_mass;
+  {
+    const ranks::Alone one_process;
+    const Built built(GetParam(), petsc);
+    alone = assemble(built.simulation->discretization());
+    whole_mass = built.simulation->discretization().hessian_pattern();
+    built.simulation->discretization().add_mass(1.0, whole_mass);
+  }
+  EXPECT_LT(share.hessian.nonZeros(), alone.hessian.nonZeros());
+  EXPECT_EQ(static_cast<Eigen::Index>(3 * shared.matrix_share_owners().size()), alone.hessian.rows());
+  for (const auto& [part, whole] : {std::pair{&share.hessian, &alone.hessian}, {&share_mass, &whole_mass}}) {
+    Eigen::VectorXd summed = Eigen::VectorXd::Zero(whole->nonZeros());
+    long long outside = 0;  // share entries the whole pattern does not hold
+    for (Eigen::Index column = 0; column < part->outerSize(); ++column)
+      for (Eigen::SparseMatrix<double>::InnerIterator entry(*part, column); entry; ++entry) {
+        const int* first = whole->innerIndexPtr() + whole->outerIndexPtr()[column];
+        const int* last = whole->innerIndexPtr() + whole->outerIndexPtr()[column + 1];
+        const int* found = std::lower_bound(first, last, static_cast<int>(entry.row()));
+        if (found == last || *found != entry.row()) ++outside;
+        else summed[found - whole->innerIndexPtr()] += entry.value();
+      }
+    EXPECT_EQ(outside, 0);
+    ranks::sum(std::span<double>(summed.data(), static_cast<size_t>(summed.size())));
+    const Eigen::Map<const Eigen::VectorXd> one(whole->valuePtr(), whole->nonZeros());
+    EXPECT_LE((summed - one).lpNorm<Eigen::Infinity>(), 1e-13 * one.lpNorm<Eigen::Infinity>());
   }
 }
 
