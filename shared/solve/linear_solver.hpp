@@ -2,9 +2,9 @@
 // Sparse linear solvers behind one interface. Direct: CHOLMOD supernodal LLᵀ
 // (the default, SPD), CHOLMOD simplicial LDLᵀ (quasi-definite indefinite) and
 // UMFPACK LU (general). Iterative: PCG, MINRES and conjugate residual with a
-// run-time preconditioner, and PETSc's Krylov solvers and preconditioners (petsc_solver.hpp). Symbolic analysis happens once per sparsity pattern
-// and is reused across Newton iterations and time steps; the statistics feed
-// summary.json (timings_s.analysis, timings_s.factorisation, counts.*).
+// run-time preconditioner, and PETSc's Krylov solvers and preconditioners (petsc_solver.hpp). Symbolic analysis happens
+// once per sparsity pattern and is reused across Newton iterations and time steps; the statistics feed summary.json
+// (timings_s.analysis, timings_s.factorisation, counts.*).
 #include "shared/solve/preconditioner.hpp"
 
 #include <Eigen/Sparse>

@@ -427,10 +427,10 @@ private:
   PetscInt first_row_ = 0, last_row_ = 0;  // this rank's rows, in PETSc's numbering
   // Over several ranks, the DOFs' PETSc numbering (number_rows) both ways; empty on one.
   std::vector<PetscInt> petsc_of_method_, method_of_petsc_;
-  std::vector<PetscInt> row_starts_;  // this rank's #rows + 1
-  std::vector<PetscInt> columns_;     // this rank's #nonzeros, global column indices
-  std::vector<PetscScalar> values_;   // this rank's #nonzeros: on one rank the matrix's own values
-  std::vector<int> csr_from_csc_;     // this rank's #nonzeros: the Eigen value index of each AIJ entry
+  std::vector<PetscInt> row_starts_;   // this rank's #rows + 1
+  std::vector<PetscInt> columns_;      // this rank's #nonzeros, global column indices
+  std::vector<PetscScalar> values_;    // this rank's #nonzeros: on one rank the matrix's own values
+  std::vector<int> csr_from_csc_;      // this rank's #nonzeros: the Eigen value index of each AIJ entry
   std::vector<int> share_row_owners_;  // over several ranks, for shares: each block row's rank
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;

@@ -1,7 +1,8 @@
-// One rank's share of the assembly (ElasticAssembler::assemble_only) and the partition
-// that decides it (partition_elements): the shares of disjoint element sets sum to the
-// whole energy, forces and Hessian, and METIS's two parts of a grid weigh the same and
-// are each connected, so few basis functions are shared across ranks.
+// One rank's share of the assembly (ElasticAssembler::assemble_only, or a share on a
+// pattern of its own) and the partition that decides it (partition_elements): the shares
+// of disjoint element sets sum to the whole energy, forces and Hessian, and METIS's two
+// parts of a grid weigh the same and are each connected, so few basis functions are shared
+// across ranks.
 #include <gtest/gtest.h>
 
 #include <numeric>
@@ -42,6 +43,39 @@ TEST(AssembleOnly, SharesOfDisjointElementsSumToTheWhole) {
   first.mass_matrix(mass_first);
   whole.mass_matrix(mass_whole);
   EXPECT_EQ((mass_first - mass_whole).norm(), 0.0);
+}
+
+// A share whose matrices a solver sums (ranks::shares_matrices()): each pattern holds only
+// its elements' blocks and every function's diagonal block, and the Hessians and masses of
+// disjoint shares, on their own patterns, sum to the whole.
+TEST(AssembleOnly, ShareMatricesOnTheirOwnPatternsSumToTheWhole) {
+  const test::AssemblyProblem problem(ElementType::hex20, {3, 2, 2}, MaterialModel::neo_hookean);
+  const Eigen::VectorXd u = problem.displacement(Eigen::Matrix3d::Identity() * 1.02, 0.05, 3);
+  std::vector<char> even(static_cast<size_t>(problem.elements.size())), odd(even.size());
+  for (size_t e = 0; e < even.size(); ++e) (e % 2 == 0 ? even : odd)[e] = 1;
+  const std::vector<const Material*> materials{problem.material.get()};
+  const ElasticAssembler first(problem.elements, materials, {}, even), second(problem.elements, materials, {}, odd);
+  const ElasticAssembler& whole = *problem.assembler;
+  for (const ElasticAssembler* share : {&first, &second}) {
+    EXPECT_LT(share->pattern().nonZeros(), whole.pattern().nonZeros());
+    EXPECT_EQ(share->pattern().rows(), whole.pattern().rows());
+    int diagonals = 0;
+    for (Eigen::Index column = 0; column < share->pattern().outerSize(); ++column)
+      for (SparseMatrix::InnerIterator entry(share->pattern(), column); entry; ++entry)
+        diagonals += entry.row() == column;
+    EXPECT_EQ(diagonals, share->pattern().rows());
+  }
+  SparseMatrix h1 = first.pattern(), h2 = second.pattern(), h = whole.pattern();
+  first.hessian(u, h1);
+  second.hessian(u, h2);
+  whole.hessian(u, h);
+  EXPECT_EQ(h1.nonZeros(), first.pattern().nonZeros());
+  EXPECT_LE((SparseMatrix(h1 + h2) - h).norm(), 1e-13 * h.norm());
+  SparseMatrix m1, m2, m;
+  first.mass_matrix(m1);
+  second.mass_matrix(m2);
+  whole.mass_matrix(m);
+  EXPECT_LE((SparseMatrix(m1 + m2) - m).norm(), 1e-14 * m.norm());
 }
 
 #ifdef ALTFEM_HAVE_METIS

@@ -1,7 +1,7 @@
 // Distributed assembly and solve (issue #37, step 2; docs/scaling.md), run by ctest as
-// `mpirun -n 2 verify_distributed`: each rank assembles the elements METIS gave it (rank 0
-// also the methods' face and penalty terms), the sums make the whole, and PETSc solves
-// across the ranks. In the same processes, ranks::Alone builds the one-process problem,
+// `mpirun -n 2 verify_distributed`: each rank assembles the elements METIS gave it and the
+// faces it owns, the sums make the whole (PETSc sums the Hessian's shares itself), and
+// PETSc solves across the ranks. In the same processes, ranks::Alone builds the one-process problem,
 // which each method's two-rank energy, forces, Hessian and solution must equal:
 //   - the Hessian to 1e-13 of its largest entry (the same entries summed in another order);
 //   - the solution of CG + GAMG to 1e-12 within 1e-8 and the same Newton iterations;
@@ -10,8 +10,9 @@
 //     differ; the issue asked for 2 iterations, which small problems, whose partition
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
 // fcm on the half-ball has cut cells and ghost-penalty faces on both sides of the
-// partition, dg with a nonlinear material its interior faces. PETSc's rows are numbered by
-// METIS too (partitioned_rows.hpp): each rank holds the rows of a part of the matrix's graph.
+// partition, dg with a nonlinear material its interior faces. PETSc's rows follow the
+// elements' partition for a discretization that hands it shares, and METIS's parts of the
+// matrix's graph (partitioned_rows.hpp) for one that hands it the whole (dg's linear system).
 // Every rank must reach every collective call, so the
 // checks are EXPECTs (an ASSERT's early return would leave the other rank waiting).
 #include <gtest/gtest.h>
