@@ -1,10 +1,12 @@
 #include "dg/dg_discretization.hpp"
 
 #include <algorithm>
+#include <span>
 #include <stdexcept>
 
 #include "shared/solve/additive_schwarz_preconditioner.hpp"
 #include "shared/solve/block_relaxation_preconditioner.hpp"
+#include "shared/solve/process_ranks.hpp"
 #include "shared/solve/two_level_preconditioner.hpp"
 
 namespace altfem::dg {
@@ -62,12 +64,13 @@ LinearDgDiscretization::LinearDgDiscretization(Eigen::SparseMatrix<double> stiff
                                                Eigen::VectorXd function_integrals,
                                                std::vector<std::vector<int>> element_dofs,
                                                std::function<Eigen::VectorXd(double)> weak_condition_load,
-                                               DirichletDofs strong)
+                                               DirichletDofs strong, std::vector<int> share_row_owners)
     : function_integrals_(std::move(function_integrals)),
       element_dofs_(std::move(element_dofs)),
       weak_condition_load_(std::move(weak_condition_load)),
       strong_(std::move(strong)),
-      preconditioner_(block_jacobi_factory(element_dofs_)) {
+      preconditioner_(block_jacobi_factory(element_dofs_)),
+      share_row_owners_(std::move(share_row_owners)) {
   // Swapped in: Eigen 3.4's SparseMatrix has no move constructor, std::move would copy.
   stiffness_.swap(stiffness);
   block_mass_.swap(mass);
@@ -83,8 +86,23 @@ const ExplicitMass& LinearDgDiscretization::explicit_mass() const {
   return *explicit_mass_;
 }
 
+double LinearDgDiscretization::energy(const Eigen::VectorXd& u) const {
+  const double energy = 0.5 * u.dot(stiffness_ * u);
+  return share_row_owners_.empty() ? energy : ranks::sum(energy);
+}
+
+void LinearDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
+  gradient = stiffness_ * u;
+  if (!share_row_owners_.empty()) ranks::sum(std::span<double>(gradient.data(), static_cast<size_t>(gradient.size())));
+}
+
 const Eigen::SparseMatrix<double>& LinearDgDiscretization::mass_matrix() const {
-  if (!mass_.has_value()) mass_ = on_union_pattern(block_mass_, stiffness_);
+  if (!mass_.has_value()) {
+    // K's pattern holds every cell's block (the constructor made sure).
+    mass_.emplace(stiffness_);
+    std::fill(mass_->valuePtr(), mass_->valuePtr() + mass_->nonZeros(), 0.0);
+    add_mass(1.0, *mass_);
+  }
   return *mass_;
 }
 
@@ -96,14 +114,17 @@ void LinearDgDiscretization::add_mass(double factor, Eigen::SparseMatrix<double>
     for (Eigen::Index column = 0; column < block_mass_.outerSize(); ++column) {
       const int* begin = stiffness_.innerIndexPtr() + stiffness_.outerIndexPtr()[column];
       const int* end = stiffness_.innerIndexPtr() + stiffness_.outerIndexPtr()[column + 1];
+      // A share adds only its own functions' blocks (−1: another rank's).
+      const bool own = share_row_owners_.empty() || share_row_owners_[column / 3] == ranks::index();
       for (Eigen::SparseMatrix<double>::InnerIterator entry(block_mass_, column); entry; ++entry)
-        mass_positions_.push_back(std::lower_bound(begin, end, static_cast<int>(entry.row())) -
-                                  stiffness_.innerIndexPtr());
+        mass_positions_.push_back(
+            own ? std::lower_bound(begin, end, static_cast<int>(entry.row())) - stiffness_.innerIndexPtr() : -1);
     }
   }
   const double* mass = block_mass_.valuePtr();
   double* values = matrix.valuePtr();
-  for (std::size_t k = 0; k < mass_positions_.size(); ++k) values[mass_positions_[k]] += factor * mass[k];
+  for (std::size_t k = 0; k < mass_positions_.size(); ++k)
+    if (mass_positions_[k] >= 0) values[mass_positions_[k]] += factor * mass[k];
 }
 
 Eigen::VectorXd LinearDgDiscretization::body_force(const Eigen::Vector3d& acceleration) const {

@@ -41,27 +41,33 @@ public:
   /// needs no copy); function_integrals: ∫ ρ φ_a dV per basis function (#dofs / 3);
   /// element_dofs: each element's DOFs (disjoint, covering all); weak_condition_load: the
   /// Dirichlet data's load at a time (#dofs); strong: the DOFs that strongly imposed
-  /// conditions fix, and their values over time (none by default).
+  /// conditions fix, and their values over time (none by default); share_row_owners: over
+  /// several ranks, when `stiffness` is this rank's share (DgLinearSystem::share_row_owners,
+  /// #dofs / 3; the mass stays whole), each function's rank; empty when K is the whole.
   LinearDgDiscretization(Eigen::SparseMatrix<double> stiffness, Eigen::SparseMatrix<double> mass,
                          Eigen::VectorXd function_integrals, std::vector<std::vector<int>> element_dofs,
-                         std::function<Eigen::VectorXd(double)> weak_condition_load, DirichletDofs strong = {});
+                         std::function<Eigen::VectorXd(double)> weak_condition_load, DirichletDofs strong = {},
+                         std::vector<int> share_row_owners = {});
 
   int dof_count() const override { return static_cast<int>(stiffness_.rows()); }
-  double energy(const Eigen::VectorXd& u) const override { return 0.5 * u.dot(stiffness_ * u); }
-  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override { gradient = stiffness_ * u; }
+  /// ½ uᵀ K u and K u, summed over the ranks' shares of K.
+  double energy(const Eigen::VectorXd& u) const override;
+  void gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const override;
   void hessian(const Eigen::VectorXd&, Eigen::SparseMatrix<double>& hessian, bool) const override {
     hessian = stiffness_;
   }
   const Eigen::SparseMatrix<double>& hessian_pattern() const override { return stiffness_; }
+  const std::vector<int>& matrix_share_owners() const override { return share_row_owners_; }
   bool hessian_is_constant() const override { return true; }
-  /// On the stiffness's pattern, built on the first call. The integrators do not ask for it
-  /// (mass_times, add_mass): it would hold as many entries as K, most of them zeros.
-  /// Not thread-safe on that first call.
+  /// On the stiffness's pattern (with shares, this rank's cells' blocks), built on the first call. The integrators do
+  /// not ask for it (mass_times, add_mass): it would hold as many entries as K, most of them zeros. Not thread-safe on
+  /// that first call.
   const Eigen::SparseMatrix<double>& mass_matrix() const override;
   /// M v by the element blocks.
   Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override { return block_mass_ * vector; }
   /// matrix += factor M, each element block's entries added where K's pattern holds them
-  /// (their positions found on the first call; not thread-safe on that call).
+  /// (their positions found on the first call; not thread-safe on that call); with
+  /// shares, only the blocks of this rank's functions.
   void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const override;
   /// Built on the first call (only symplectic Euler and its time-step estimate ask).
   const ExplicitMass& explicit_mass() const override;
@@ -89,6 +95,7 @@ private:
   std::function<Eigen::VectorXd(double)> weak_condition_load_;
   DirichletDofs strong_;
   PreconditionerFactory preconditioner_;
+  std::vector<int> share_row_owners_;  // per function, over several ranks with shares; else empty
 };
 
 }  // namespace altfem::dg

@@ -15,7 +15,8 @@ bool DgIntegralMemory::integrates_as(const DgSettings& other_settings,
                                      const std::vector<DgMaterial>& other_materials) const {
   const DgSettings& a = settings;
   const DgSettings& b = other_settings;
-  // rule_simplification is left out: only the tabulated paths read it, never a matrix here.
+  // rule_simplification is left out: only the tabulated paths read it, never a matrix here;
+  // share_stiffness too: it says where K is summed, not what a cell's or face's matrix is.
   if (a.degree != b.degree || a.flux != b.flux || a.boundary_penalty_factor != b.boundary_penalty_factor ||
       a.scaling != b.scaling || !a.reuse_similar_cells || !b.reuse_similar_cells ||
       !same_material({a.lambda, a.mu, a.density, a.penalty, a.tangential_fraction},

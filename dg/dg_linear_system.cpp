@@ -92,10 +92,16 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   for (const DgFace& face : faces_)
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
   // Over several ranks each integrates its part of the cells and the faces it owns, and K
-  // is their sum (docs/scaling.md); the pattern is every rank's.
+  // is their sum (docs/scaling.md): summed into every rank's copy on the whole pattern, or
+  // left each rank's share, on every cell's own block and the blocks of its faces.
   if (ranks::distributed()) {
     rank_ = ranks::index();
     cell_parts_ = partition_cells(cells_, bases_, couplings, ranks::count());
+    if (settings_.share_stiffness) {
+      couplings.clear();
+      for (const DgFace& face : faces_)
+        if (face.plus >= 0 && owns_face(face)) couplings.push_back({face.minus, face.plus});
+    }
   }
   const CellBlockPattern pattern(offsets_, couplings);
   pattern.make_zero_matrix(stiffness_);
@@ -112,7 +118,8 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
   const std::vector<int> previous_cell_classes = add_element_matrices(pattern, previous);
   add_face_matrices(pattern, previous, previous_cell_classes);
   if (!cell_parts_.empty()) {
-    ranks::sum(std::span<double>(stiffness_.valuePtr(), static_cast<std::size_t>(stiffness_.nonZeros())));
+    if (!settings_.share_stiffness)
+      ranks::sum(std::span<double>(stiffness_.valuePtr(), static_cast<std::size_t>(stiffness_.nonZeros())));
     distributed_mass_ = mass();
     ranks::sum(std::span<double>(distributed_mass_.valuePtr(), static_cast<std::size_t>(distributed_mass_.nonZeros())));
   }
@@ -296,6 +303,14 @@ DgMaterial DgLinearSystem::material(int cell) const {
   if (cell_materials_.materials.empty())
     return {settings_.lambda, settings_.mu, settings_.density, settings_.penalty, settings_.tangential_fraction};
   return cell_materials_.materials[material_id(cell)];
+}
+
+std::vector<int> DgLinearSystem::share_row_owners() const {
+  if (!settings_.share_stiffness || cell_parts_.empty()) return {};
+  std::vector<int> owners(static_cast<std::size_t>(offsets_.back()));
+  for (std::size_t c = 0; c < cells_.size(); ++c)
+    std::fill(owners.begin() + offsets_[c], owners.begin() + offsets_[c + 1], cell_parts_[c]);
+  return owners;
 }
 
 Eigen::SparseMatrix<double> DgLinearSystem::mass() const {

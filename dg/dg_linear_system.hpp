@@ -87,6 +87,10 @@ struct DgSettings {
   /// simplified to at most C(s + 3, 3) points of strength s (simplified_polyhedron_rule),
   /// or the cone rules as they are (nullopt). The exact linear path has no rule.
   std::optional<SimplificationMethod> rule_simplification = std::nullopt;
+  /// Over several ranks, leave K each rank's share (its cells' and owned faces' matrices)
+  /// on a pattern of every cell's own block and its faces' blocks, for a solver that sums
+  /// the shares (PETSc; docs/scaling.md), instead of summing it into every rank's copy.
+  bool share_stiffness = false;
 };
 
 /// How many cells and faces a DgLinearSystem integrated, and how many distinct classes
@@ -157,6 +161,9 @@ public:
   /// The share of face_penalty(face) that `cell`, one of the face's sides, contributes: its
   /// own η over its length (face_penalty sums the two sides' shares).
   JumpPenalty side_penalty(const DgFace& face, int cell) const;
+  /// With settings.share_stiffness over several ranks, the rank owning each function's rows
+  /// (Σ #functions: its cell's part); empty when K is the whole on every rank.
+  std::vector<int> share_row_owners() const;
   /// Over several ranks (docs/scaling.md), whether this rank integrates a cell's matrices
   /// and a face's (the lower part of its cells'); always on one rank. K, the mass and the
   /// cells' sizes and integrals are the sums of every rank's parts.

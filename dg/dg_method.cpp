@@ -30,6 +30,7 @@
 #include "shared/simulation/scene_materials.hpp"
 #include "shared/simulation/stitched_embedding.hpp"
 #include "shared/solve/linear_solver.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::dg {
 
@@ -81,6 +82,8 @@ public:
                  first.tangential_fraction,
                  true,
                  spec_.rule_simplification};
+    // PETSc sums the ranks' shares of K (docs/scaling.md); warping rotates the whole of it.
+    settings_.share_stiffness = ranks::shares_matrices() && linear() && !spec_.warping;
     // After an event, η starts where the run had doubled it to: it never drops during a
     // run, and the faces the event left alone keep their matrices.
     if (handed) double_penalty(handed->doublings);
@@ -118,9 +121,9 @@ public:
           [this](double time) { return weak_condition_load(time, true); }, moving_data());
     } else if (linear()) {
       // The discretization keeps K; the system needs it no more.
-      linear_ =
-          std::make_unique<LinearDgDiscretization>(system_->take_stiffness(), system_->mass(), density_integrals(),
-                                                   std::move(element_dofs), external_force, strong_dofs());
+      linear_ = std::make_unique<LinearDgDiscretization>(system_->take_stiffness(), system_->mass(),
+                                                         density_integrals(), std::move(element_dofs), external_force,
+                                                         strong_dofs(), system_->share_row_owners());
     }
     if (linear_) {
       linear_->use_preconditioner(std::move(preconditioner));
@@ -258,6 +261,11 @@ private:
       definiteness_ = "certified";
       return true;
     }
+    if (settings_.share_stiffness && ranks::distributed())
+      throw NumericalError(
+          "dg: the penalty's definiteness certificate does not hold (largest ratio " + std::to_string(trace_ratio_) +
+          "), and its fallback factorises the whole K, which no rank holds when PETSc sums the ranks' shares: "
+          "raise discretization.dg.penalty, or set penalty/double_until_definite to false");
     definiteness_ = iterative ? "pcg" : "factorisation";
     return positive_definite(*system_, element_dofs, iterative);
   }

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <span>
@@ -58,8 +59,8 @@ const std::vector<Case>& cases() {
        "fcm",
        "scenes/manufactured_half_ball.json",
        {"discretization/fcm/resolution=[4,4,2]", "discretization/fcm/cell=hex8"}},
-      // A linear dg integrates its matrices exactly once, whole on every rank
-      // (DgLinearSystem); another material is tabulated and divided, faces included.
+      // A linear dg integrates its matrices exactly once (DgLinearSystem), each rank its
+      // cells and faces; another material is tabulated and divided, faces included.
       {"dg_linear", "dg", "scenes/cantilever.json", {"discretization/dg/resolution=[10,2,2]"}},
       {"dg_neo_hookean",
        "dg",
@@ -135,6 +136,26 @@ TEST_P(TwoRanks, EnergyForcesAndHessianAreTheWholes) {
   }
 }
 
+// `share`, placed by its rows and columns into `whole`'s pattern and summed over the
+// ranks, against `whole`: the largest difference relative to whole's largest entry, or
+// infinity when the share holds an entry the whole pattern does not.
+double shares_against_whole(const Eigen::SparseMatrix<double>& share, const Eigen::SparseMatrix<double>& whole) {
+  Eigen::VectorXd summed = Eigen::VectorXd::Zero(whole.nonZeros());
+  double outside = 0;
+  for (Eigen::Index column = 0; column < share.outerSize(); ++column)
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(share, column); entry; ++entry) {
+      const int* first = whole.innerIndexPtr() + whole.outerIndexPtr()[column];
+      const int* last = whole.innerIndexPtr() + whole.outerIndexPtr()[column + 1];
+      const int* found = std::lower_bound(first, last, static_cast<int>(entry.row()));
+      if (found == last || *found != entry.row()) outside = 1;
+      else summed[found - whole.innerIndexPtr()] += entry.value();
+    }
+  ranks::sum(std::span<double>(summed.data(), static_cast<size_t>(summed.size())));
+  if (ranks::sum(outside) > 0) return std::numeric_limits<double>::infinity();
+  const Eigen::Map<const Eigen::VectorXd> one(whole.valuePtr(), whole.nonZeros());
+  return (summed - one).lpNorm<Eigen::Infinity>() / one.lpNorm<Eigen::Infinity>();
+}
+
 // Each rank's share of the Hessian and of the mass on its own pattern (a solver that sums
 // them, PETSc, asked for): the shares, placed by their rows and columns into one process's
 // pattern and summed over the ranks, are one process's matrices; each share holds fewer
@@ -143,10 +164,8 @@ TEST_P(TwoRanks, HessianSharesSumToTheWhole) {
   const std::vector<std::string> petsc{"solver/linear=petsc"};
   const Built together(GetParam(), petsc);
   const Discretization& shared = together.simulation->discretization();
-  // dg's linear system and the force model of dg's warping are whole on every rank.
-  const bool shares = !shared.matrix_share_owners().empty();
-  EXPECT_EQ(shares, GetParam().name != "dg_linear");
-  if (!shares) return;
+  EXPECT_FALSE(shared.matrix_share_owners().empty());
+  if (shared.matrix_share_owners().empty()) return;
   const Assembled share = assemble(shared);
   Eigen::SparseMatrix<double> share_mass = shared.hessian_pattern();
   shared.add_mass(1.0, share_mass);
@@ -161,22 +180,8 @@ TEST_P(TwoRanks, HessianSharesSumToTheWhole) {
   }
   EXPECT_LT(share.hessian.nonZeros(), alone.hessian.nonZeros());
   EXPECT_EQ(static_cast<Eigen::Index>(3 * shared.matrix_share_owners().size()), alone.hessian.rows());
-  for (const auto& [part, whole] : {std::pair{&share.hessian, &alone.hessian}, {&share_mass, &whole_mass}}) {
-    Eigen::VectorXd summed = Eigen::VectorXd::Zero(whole->nonZeros());
-    long long outside = 0;  // share entries the whole pattern does not hold
-    for (Eigen::Index column = 0; column < part->outerSize(); ++column)
-      for (Eigen::SparseMatrix<double>::InnerIterator entry(*part, column); entry; ++entry) {
-        const int* first = whole->innerIndexPtr() + whole->outerIndexPtr()[column];
-        const int* last = whole->innerIndexPtr() + whole->outerIndexPtr()[column + 1];
-        const int* found = std::lower_bound(first, last, static_cast<int>(entry.row()));
-        if (found == last || *found != entry.row()) ++outside;
-        else summed[found - whole->innerIndexPtr()] += entry.value();
-      }
-    EXPECT_EQ(outside, 0);
-    ranks::sum(std::span<double>(summed.data(), static_cast<size_t>(summed.size())));
-    const Eigen::Map<const Eigen::VectorXd> one(whole->valuePtr(), whole->nonZeros());
-    EXPECT_LE((summed - one).lpNorm<Eigen::Infinity>(), 1e-13 * one.lpNorm<Eigen::Infinity>());
-  }
+  EXPECT_LE(shares_against_whole(share.hessian, alone.hessian), 1e-13);
+  EXPECT_LE(shares_against_whole(share_mass, whole_mass), 1e-13);
 }
 
 struct Solved {
@@ -212,11 +217,15 @@ INSTANTIATE_TEST_SUITE_P(EveryMethod, TwoRanks, ::testing::ValuesIn(cases()),
 
 // dg's exact linear system (its default path): each rank integrates the cells METIS gave
 // it and the faces it owns, every cell and face a class of its own here, and K, the mass
-// and the definiteness certificate are one process's.
+// and the definiteness certificate are one process's; left each rank's share (for PETSc),
+// K sums to one process's with fewer entries on each rank.
 TEST(TwoRanksDg, EachRankIntegratesItsCellsAndKIsTheWhole) {
   const test::GridCells grid = test::hex_grid_cells(4);
   dg::DgSettings settings{2, dg::Flux::interior_penalty, 30, 2.0, 1.5};
   settings.reuse_similar_cells = false;
+  dg::DgSettings sharing = settings;
+  sharing.share_stiffness = true;
+  const dg::DgLinearSystem share(grid.cells, grid.faces, sharing);
   const dg::DgLinearSystem together(grid.cells, grid.faces, settings);
   int owned = 0;
   for (int cell = 0; cell < together.cell_count(); ++cell) owned += together.owns_cell(cell);
@@ -224,6 +233,14 @@ TEST(TwoRanksDg, EachRankIntegratesItsCellsAndKIsTheWhole) {
   EXPECT_LT(owned, together.cell_count());
   EXPECT_EQ(static_cast<int>(ranks::sum(owned)), together.cell_count());
   const dg::DefinitenessCertificate certificate = dg::certify_definiteness(together);
+  Eigen::SparseMatrix<double> whole_stiffness;
+  {
+    const ranks::Alone one_process;
+    whole_stiffness = dg::DgLinearSystem(grid.cells, grid.faces, settings).stiffness();
+  }
+  EXPECT_LT(share.stiffness().nonZeros(), whole_stiffness.nonZeros());
+  EXPECT_LE(shares_against_whole(share.stiffness(), whole_stiffness), 1e-13);
+  EXPECT_EQ(share.share_row_owners().size(), static_cast<size_t>(whole_stiffness.rows() / 3));
   const ranks::Alone one_process;
   const dg::DgLinearSystem alone(grid.cells, grid.faces, settings);
   for (const auto& [two, one] : {std::pair{together.stiffness(), alone.stiffness()}, {together.mass(), alone.mass()}}) {
