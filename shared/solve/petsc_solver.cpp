@@ -3,6 +3,7 @@
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/solve/partitioned_rows.hpp"
+#include "shared/solve/petsc_session.hpp"
 #include "shared/solve/process_ranks.hpp"
 
 #ifdef ALTFEM_HAVE_PETSC
@@ -10,8 +11,6 @@
 #include <petscksp.h>
 
 #include <Eigen/QR>
-#include <atomic>
-#include <cctype>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -19,62 +18,12 @@
 namespace altfem {
 namespace {
 
-// PETSc's error text: its generic message for the code and the specific one of the last SETERRQ.
-std::string petsc_error_text(PetscErrorCode code) {
-  const char* text = nullptr;
-  char* specific = nullptr;
-  PetscErrorMessage(code, &text, &specific);
-  std::string message = text ? text : "error " + std::to_string(code);
-  if (specific && *specific) message += std::string(": ") + specific;
-  return message;
-}
-
-void check(PetscErrorCode code, const char* call) {
-  if (code != 0) throw NumericalError(std::string("PETSc: ") + call + " failed: " + petsc_error_text(code));
-}
-
-// PETSc (and MPI, as a singleton when the process was not started by mpirun) starts with
-// the first PETSc solver and stops at exit. PETSc's signal handlers would take SIGSEGV
-// and SIGFPE from the rest of altfem, and its error handler would print tracebacks:
-// errors come back as codes and become exceptions here.
-void start_petsc() {
-  struct Session {
-    Session() {
-      PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
-      check(PetscInitializeNoArguments(), "PetscInitialize");
-      PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
-    }
-    ~Session() { PetscFinalize(); }
-  };
-  static Session session;
-}
-
-// Each solver reads its options under a prefix of its own in PETSc's one options database,
-// so that two solvers in one process (a run and its rebuild after an event) do not share them.
-std::string next_prefix() {
-  static std::atomic<int> count{0};
-  return "altfem" + std::to_string(++count) + "_";
-}
-
-// The options string with every option name (a token "-" followed by a letter, not a
-// negative number) given the prefix: "-pc_type gamg" → "-altfem1_pc_type gamg".
-std::string prefixed_options(const std::string& options, const std::string& prefix, std::vector<std::string>& names) {
-  std::istringstream tokens(options);
-  std::string token, result;
-  while (tokens >> token) {
-    if (token.size() > 1 && token[0] == '-' && std::isalpha(static_cast<unsigned char>(token[1]))) {
-      names.push_back(prefix + token.substr(1));
-      token = "-" + names.back();
-    }
-    result += token + " ";
-  }
-  return result;
-}
+using petsc::check;
 
 class PetscSolver final : public LinearSolver {
 public:
-  explicit PetscSolver(const LinearSolverOptions& options) : prefix_(next_prefix()) {
-    start_petsc();
+  explicit PetscSolver(const LinearSolverOptions& options) : prefix_(petsc::next_prefix()) {
+    petsc::start();
     if (options.near_null_space.cols() > 0) {
       // MatNullSpaceCreate wants orthonormal vectors.
       const Eigen::HouseholderQR<Eigen::MatrixXd> qr(options.near_null_space);
@@ -93,11 +42,11 @@ public:
     check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
     check(PCSetType(preconditioner, PCGAMG), "PCSetType");
     check(KSPSetTolerances(ksp_, options.tolerance, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
-    const std::string inserted = prefixed_options(options.petsc_options, prefix_, option_names_);
+    const std::string inserted = petsc::prefixed_options(options.petsc_options, prefix_, option_names_);
     const PetscErrorCode inserting = PetscOptionsInsertString(nullptr, inserted.c_str());
     const PetscErrorCode reading = inserting ? inserting : KSPSetFromOptions(ksp_);
     if (reading)
-      throw InputError("solver.petsc_options: \"" + options.petsc_options + "\": " + petsc_error_text(reading));
+      throw InputError("solver.petsc_options: \"" + options.petsc_options + "\": " + petsc::error_text(reading));
     // CG stops by altfem's criterion for every iterative solver, ‖b − A x‖ ≤ tolerance ‖b‖,
     // unless the options say otherwise; a method that cannot measure that norm with its
     // preconditioner's side (GMRES preconditioned on the left) keeps PETSc's default.

@@ -1,6 +1,9 @@
 #pragma once
-// PETSc's Krylov solvers and preconditioners (KSP, PC) as one of altfem's linear solvers,
-// on one process: solver.linear "petsc" (docs/scene-schema.md, "Solver"). The default is
+// PETSc's Krylov solvers and preconditioners (KSP, PC) as one of altfem's linear solvers:
+// solver.linear "petsc" (docs/scene-schema.md, "Solver"). On one process PETSc works on
+// altfem's own arrays; over several ranks (docs/scaling.md) on a distributed matrix that
+// sums each rank's share (LinearSolverOptions::share_row_owners) or takes each rank's rows
+// of the whole. PETSc's start and error codes: petsc_session.hpp. The default is
 // CG + GAMG, PETSc's smoothed-aggregation algebraic multigrid, given the rigid-body modes
 // as the near-null space (MatSetNearNullSpace): for elasticity, aggregation that knows
 // only translations builds coarse spaces that cannot rotate, and its iterations grow

@@ -1,0 +1,67 @@
+#include "shared/solve/petsc_session.hpp"
+
+#ifdef ALTFEM_HAVE_PETSC
+
+#include <atomic>
+#include <cctype>
+#include <sstream>
+
+#include "shared/common/error.hpp"
+
+namespace altfem::petsc {
+
+// PETSc's error text: its generic message for the code and the specific one of the last SETERRQ.
+std::string error_text(PetscErrorCode code) {
+  const char* text = nullptr;
+  char* specific = nullptr;
+  PetscErrorMessage(code, &text, &specific);
+  std::string message = text ? text : "error " + std::to_string(code);
+  if (specific && *specific) message += std::string(": ") + specific;
+  return message;
+}
+
+void check(PetscErrorCode code, const char* call) {
+  if (code != 0) throw NumericalError(std::string("PETSc: ") + call + " failed: " + error_text(code));
+}
+
+// PETSc (and MPI, as a singleton when the process was not started by mpirun) starts with
+// the first PETSc solver and stops at exit. PETSc's signal handlers would take SIGSEGV
+// and SIGFPE from the rest of altfem, and its error handler would print tracebacks:
+// errors come back as codes and become exceptions here.
+void start() {
+  struct Session {
+    Session() {
+      PetscOptionsSetValue(nullptr, "-no_signal_handler", nullptr);
+      check(PetscInitializeNoArguments(), "PetscInitialize");
+      PetscPushErrorHandler(PetscReturnErrorHandler, nullptr);
+    }
+    ~Session() { PetscFinalize(); }
+  };
+  static Session session;
+}
+
+// Each solver reads its options under a prefix of its own in PETSc's one options database,
+// so that two solvers in one process (a run and its rebuild after an event) do not share them.
+std::string next_prefix() {
+  static std::atomic<int> count{0};
+  return "altfem" + std::to_string(++count) + "_";
+}
+
+// The options string with every option name (a token "-" followed by a letter, not a
+// negative number) given the prefix: "-pc_type gamg" → "-altfem1_pc_type gamg".
+std::string prefixed_options(const std::string& options, const std::string& prefix, std::vector<std::string>& names) {
+  std::istringstream tokens(options);
+  std::string token, result;
+  while (tokens >> token) {
+    if (token.size() > 1 && token[0] == '-' && std::isalpha(static_cast<unsigned char>(token[1]))) {
+      names.push_back(prefix + token.substr(1));
+      token = "-" + names.back();
+    }
+    result += token + " ";
+  }
+  return result;
+}
+
+}  // namespace altfem::petsc
+
+#endif

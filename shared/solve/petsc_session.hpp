@@ -1,0 +1,29 @@
+#pragma once
+// What altfem's PETSc objects need before anything else (petsc_solver.cpp): PETSc started
+// once per process without its signal and error handlers, its error codes turned into
+// exceptions, and each solver's options under a prefix of its own. Only in a build with
+// PETSc (ALTFEM_HAVE_PETSC).
+#ifdef ALTFEM_HAVE_PETSC
+
+#include <petscsys.h>
+
+#include <string>
+#include <vector>
+
+namespace altfem::petsc {
+
+/// PETSc's message for `code` and the specific one of its last error.
+std::string error_text(PetscErrorCode code);
+/// Throws NumericalError naming `call` and PETSc's message when `code` is not 0.
+void check(PetscErrorCode code, const char* call);
+/// Starts PETSc (and MPI as a singleton when mpirun did not) on the first call; it stops at exit.
+void start();
+/// "altfem1_", "altfem2_", …: a new options prefix for each solver.
+std::string next_prefix();
+/// `options` with the prefix given to every option name ("-pc_type gamg" → "-altfem1_pc_type
+/// gamg"); each prefixed name, without its "-", is appended to `names`.
+std::string prefixed_options(const std::string& options, const std::string& prefix, std::vector<std::string>& names);
+
+}  // namespace altfem::petsc
+
+#endif
