@@ -9,12 +9,18 @@
 
 namespace altfem::dg {
 
-CellBlockPattern::CellBlockPattern(std::vector<int> offsets, const std::vector<std::array<int, 2>>& couplings)
-    : offsets_(std::move(offsets)) {
+CellBlockPattern::CellBlockPattern(std::vector<int> offsets, const std::vector<std::array<int, 2>>& couplings,
+                                   std::vector<char> diagonal_only)
+    : offsets_(std::move(offsets)), diagonal_only_(std::move(diagonal_only)) {
   const int cells = static_cast<int>(offsets_.size()) - 1;
+  const auto blockless = [&](int cell) { return !diagonal_only_.empty() && diagonal_only_[cell]; };
   std::vector<std::vector<int>> adjacent(cells);
-  for (int cell = 0; cell < cells; ++cell) adjacent[cell].push_back(cell);
+  for (int cell = 0; cell < cells; ++cell)
+    if (!blockless(cell)) adjacent[cell].push_back(cell);
   for (const auto& [first, second] : couplings) {
+    if (blockless(first) || blockless(second))
+      throw std::logic_error("CellBlockPattern: a coupling of cells " + std::to_string(first) + " and " +
+                             std::to_string(second) + ", one of them without blocks");
     adjacent[first].push_back(second);
     adjacent[second].push_back(first);
   }
@@ -39,7 +45,7 @@ void CellBlockPattern::make_zero_matrix(Eigen::SparseMatrix<double>& matrix) con
   // Rows per column of each cell: the DOFs of its neighbours.
   long long nonzeros = 0;
   for (int cell = 0; cell < cells; ++cell) {
-    long long rows = 0;
+    long long rows = first_neighbour_[cell] == first_neighbour_[cell + 1] ? 1 : 0;  // diagonal only
     for (int k = first_neighbour_[cell]; k < first_neighbour_[cell + 1]; ++k)
       rows += 3 * (offsets_[neighbours_[k] + 1] - offsets_[neighbours_[k]]);
     nonzeros += rows * 3 * (offsets_[cell + 1] - offsets_[cell]);
@@ -60,6 +66,7 @@ void CellBlockPattern::make_zero_matrix(Eigen::SparseMatrix<double>& matrix) con
   for (int cell = 0; cell < cells; ++cell)
     for (int column = 3 * offsets_[cell]; column < 3 * offsets_[cell + 1]; ++column) {
       outer[column] = position;
+      if (first_neighbour_[cell] == first_neighbour_[cell + 1]) inner[position++] = column;  // diagonal only
       for (int k = first_neighbour_[cell]; k < first_neighbour_[cell + 1]; ++k)
         for (int row = 3 * offsets_[neighbours_[k]]; row < 3 * offsets_[neighbours_[k] + 1]; ++row)
           inner[position++] = row;

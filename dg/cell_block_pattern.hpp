@@ -16,8 +16,12 @@ class CellBlockPattern {
 public:
   /// offsets: #cells + 1, cell c's functions are [offsets[c], offsets[c + 1]), its DOFs
   /// 3a + i; couplings: the pairs of cells that share a face (either order, repeats and
-  /// pairs of a cell with itself allowed).
-  CellBlockPattern(std::vector<int> offsets, const std::vector<std::array<int, 2>>& couplings);
+  /// pairs of a cell with itself allowed). diagonal_only (#cells, or empty for none): cells
+  /// whose columns hold their own diagonal entries alone, no block (one rank's share of K
+  /// leaves the cells of other ranks that none of its faces touches so: docs/scaling.md);
+  /// they must be in no coupling, and no block is added for them.
+  CellBlockPattern(std::vector<int> offsets, const std::vector<std::array<int, 2>>& couplings,
+                   std::vector<char> diagonal_only = {});
 
   /// Makes `matrix` #dofs square, compressed, column-major, every coupled block present
   /// with zero values (in place: a returned matrix would be copied, Eigen's sparse
@@ -32,6 +36,7 @@ public:
 
 private:
   std::vector<int> offsets_;
+  std::vector<char> diagonal_only_;   // #cells or empty
   std::vector<int> first_neighbour_;  // #cells + 1, into neighbours_ and row_starts_
   std::vector<int> neighbours_;       // per cell, the coupled cells (itself included), ascending
   std::vector<int> row_starts_;       // per neighbour, the position of its first row in the column

@@ -93,17 +93,28 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
     if (face.plus >= 0) couplings.push_back({face.minus, face.plus});
   // Over several ranks each integrates its part of the cells and the faces it owns, and K
   // is their sum (docs/scaling.md): summed into every rank's copy on the whole pattern, or
-  // left each rank's share, on every cell's own block and the blocks of its faces.
+  // left each rank's share, on the blocks of its cells and faces (and of the cells beyond
+  // its faces); every other cell keeps only its diagonal entries, which Dirichlet
+  // elimination needs of every DOF.
+  std::vector<char> diagonal_only;
   if (ranks::distributed()) {
     rank_ = ranks::index();
     cell_parts_ = partition_cells(cells_, bases_, couplings, ranks::count());
     if (settings_.share_stiffness) {
       couplings.clear();
-      for (const DgFace& face : faces_)
-        if (face.plus >= 0 && owns_face(face)) couplings.push_back({face.minus, face.plus});
+      diagonal_only.assign(cells_.size(), 1);
+      for (std::size_t c = 0; c < cells_.size(); ++c)
+        if (owns_cell(static_cast<int>(c))) diagonal_only[c] = 0;
+      for (const DgFace& face : faces_) {
+        if (!owns_face(face)) continue;
+        diagonal_only[face.minus] = 0;
+        if (face.plus < 0) continue;
+        diagonal_only[face.plus] = 0;
+        couplings.push_back({face.minus, face.plus});
+      }
     }
   }
-  const CellBlockPattern pattern(offsets_, couplings);
+  const CellBlockPattern pattern(offsets_, couplings, std::move(diagonal_only));
   pattern.make_zero_matrix(stiffness_);
   DgIntegralMemory* previous = reuse.previous && reuse.previous->integrates_as(settings_, cell_materials_.materials)
                                    ? reuse.previous.get()

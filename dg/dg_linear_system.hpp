@@ -88,7 +88,7 @@ struct DgSettings {
   /// or the cone rules as they are (nullopt). The exact linear path has no rule.
   std::optional<SimplificationMethod> rule_simplification = std::nullopt;
   /// Over several ranks, leave K each rank's share (its cells' and owned faces' matrices)
-  /// on a pattern of every cell's own block and its faces' blocks, for a solver that sums
+  /// on a pattern of its cells' and faces' blocks (the other cells' diagonals alone), for a solver that sums
   /// the shares (PETSc; docs/scaling.md), instead of summing it into every rank's copy.
   bool share_stiffness = false;
 };

@@ -1,5 +1,6 @@
 // dg/cell_block_pattern: blocks added in place land where a dense sum puts them, and the
-// pattern holds exactly the coupled cells' whole blocks (zeros stored).
+// pattern holds exactly the coupled cells' whole blocks (zeros stored), or a cell's
+// diagonal alone where asked.
 #include <gtest/gtest.h>
 
 #include "dg/cell_block_pattern.hpp"
@@ -32,6 +33,26 @@ TEST(CellBlockPattern, AddedBlocksEqualTheirDenseSum) {
   EXPECT_EQ((Eigen::MatrixXd(matrix) - dense).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_THROW(pattern.add_block(matrix, 0, 1, Eigen::MatrixXd::Zero(3, 12)), std::logic_error);
   EXPECT_THROW(pattern.add_block(matrix, 0, 2, Eigen::MatrixXd::Zero(3, 12)), std::logic_error);
+}
+
+// A rank's share of K (docs/scaling.md): a cell of another rank that none of its faces
+// touches keeps its diagonal entries alone, and takes no block and no coupling.
+TEST(CellBlockPattern, ADiagonalOnlyCellHoldsItsDiagonalAlone) {
+  const std::vector<int> offsets{0, 1, 5, 15};
+  const CellBlockPattern pattern(offsets, {{0, 1}}, {0, 0, 1});
+  Eigen::SparseMatrix<double> matrix;
+  pattern.make_zero_matrix(matrix);
+  ASSERT_EQ(matrix.rows(), 45);
+  // Columns of cells 0 and 1: rows of cells 0 and 1; of cell 2: its own row alone.
+  EXPECT_EQ(matrix.nonZeros(), (3 + 12) * (3 + 12) + 30);
+  for (int column = 15; column < 45; ++column) {
+    EXPECT_EQ(matrix.outerIndexPtr()[column + 1] - matrix.outerIndexPtr()[column], 1);
+    EXPECT_EQ(matrix.innerIndexPtr()[matrix.outerIndexPtr()[column]], column);
+  }
+  pattern.add_block(matrix, 1, 0, Eigen::MatrixXd::Ones(12, 3));
+  EXPECT_EQ(matrix.coeff(3, 0), 1.0);
+  EXPECT_THROW(pattern.add_block(matrix, 2, 2, Eigen::MatrixXd::Zero(30, 30)), std::logic_error);
+  EXPECT_THROW(CellBlockPattern(offsets, {{1, 2}}, {0, 0, 1}), std::logic_error);
 }
 
 }  // namespace
