@@ -59,8 +59,8 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
 // term that cannot divide itself stays with rank 0. The sums in energy() and gradient()
 // make the whole, and in hessian() unless the solver sums the shares (ranks::shares_matrices()).
 // Returns, per element and then per term's coupling list (the pattern's groups), whether
-// this rank assembles it.
-std::vector<char> TabulatedDiscretization::divide_among_ranks(const BasisGroups& couplings) {
+// this rank assembles it, and each basis function's rank.
+TabulatedDiscretization::RankDivision TabulatedDiscretization::divide_among_ranks(const BasisGroups& couplings) {
   const std::vector<int> part = partition_elements(parts_.elements, couplings, ranks::count());
   std::vector<char> mine(part.size());
   for (size_t e = 0; e < part.size(); ++e) mine[e] = part[e] == ranks::index();
@@ -87,16 +87,18 @@ std::vector<char> TabulatedDiscretization::divide_among_ranks(const BasisGroups&
     }
     mine.insert(mine.end(), term_mine.begin(), term_mine.end());
   }
-  if (ranks::shares_matrices()) share_row_owners_ = std::move(basis_part);
-  return mine;
+  return {std::move(mine), std::move(basis_part)};
 }
 
 bool TabulatedDiscretization::assembles_term(size_t term) const { return term_here_.empty() || term_here_[term]; }
 
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
   const BasisGroups couplings = collect_couplings(parts_.terms);
-  const std::vector<char> mine = ranks::distributed() ? divide_among_ranks(couplings) : std::vector<char>{};
-  const bool share = !share_row_owners_.empty();
+  RankDivision division;
+  if (ranks::distributed()) division = divide_among_ranks(couplings);
+  const std::vector<char>& mine = division.groups;
+  const bool share = ranks::shares_matrices();
+  if (share) share_row_owners_ = std::move(division.basis_owners);
   assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings,
                                                   share ? std::span<const char>(mine) : std::span<const char>{});
   if (ranks::distributed() && !share)

@@ -96,8 +96,12 @@ public:
   const ElasticAssembler& assembler() const { return *assembler_; }
 
 private:
+  struct RankDivision {
+    std::vector<char> groups;       // per element, then per term's coupling list: this rank's
+    std::vector<int> basis_owners;  // per basis function, the rank owning its rows
+  };
   /// This rank's elements and term couplings, in a run over several processes.
-  std::vector<char> divide_among_ranks(const BasisGroups& couplings);
+  RankDivision divide_among_ranks(const BasisGroups& couplings);
   /// Whether this rank evaluates term t (its share, or the whole on rank 0).
   bool assembles_term(size_t term) const;
 

@@ -7,6 +7,7 @@
 
 #include <numeric>
 #include <queue>
+#include <utility>
 #include <vector>
 
 #include "shared/assembly/element_partition.hpp"
@@ -15,11 +16,17 @@
 namespace altfem {
 namespace {
 
+// Two disjoint shares of `count` elements: the even ones and the odd ones.
+std::pair<std::vector<char>, std::vector<char>> even_and_odd_elements(int count) {
+  std::vector<char> even(static_cast<size_t>(count)), odd(even.size());
+  for (size_t e = 0; e < even.size(); ++e) (e % 2 == 0 ? even : odd)[e] = 1;
+  return {even, odd};
+}
+
 TEST(AssembleOnly, SharesOfDisjointElementsSumToTheWhole) {
   const test::AssemblyProblem problem(ElementType::hex20, {3, 2, 2}, MaterialModel::neo_hookean);
   const Eigen::VectorXd u = problem.displacement(Eigen::Matrix3d::Identity() * 1.02, 0.05, 3);
-  std::vector<char> even(static_cast<size_t>(problem.elements.size())), odd(even.size());
-  for (size_t e = 0; e < even.size(); ++e) (e % 2 == 0 ? even : odd)[e] = 1;
+  const auto [even, odd] = even_and_odd_elements(problem.elements.size());
   const std::vector<const Material*> materials{problem.material.get()};
   ElasticAssembler first(problem.elements, materials), second(problem.elements, materials);
   first.assemble_only(even);
@@ -51,8 +58,7 @@ TEST(AssembleOnly, SharesOfDisjointElementsSumToTheWhole) {
 TEST(AssembleOnly, ShareMatricesOnTheirOwnPatternsSumToTheWhole) {
   const test::AssemblyProblem problem(ElementType::hex20, {3, 2, 2}, MaterialModel::neo_hookean);
   const Eigen::VectorXd u = problem.displacement(Eigen::Matrix3d::Identity() * 1.02, 0.05, 3);
-  std::vector<char> even(static_cast<size_t>(problem.elements.size())), odd(even.size());
-  for (size_t e = 0; e < even.size(); ++e) (e % 2 == 0 ? even : odd)[e] = 1;
+  const auto [even, odd] = even_and_odd_elements(problem.elements.size());
   const std::vector<const Material*> materials{problem.material.get()};
   const ElasticAssembler first(problem.elements, materials, {}, even), second(problem.elements, materials, {}, odd);
   const ElasticAssembler& whole = *problem.assembler;
