@@ -147,7 +147,7 @@ ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
 }  // namespace
 
 std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetrahedron,
-                                                 const std::vector<ClipPlane>& planes) {
+                                                 const std::vector<ClipPlane>& planes, PieceFan fan) {
   thread_local ClipWorkspace workspace;
   ConvexPolytope& polytope = workspace.polytope;
   polytope.vertices.clear();
@@ -174,7 +174,9 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
   }
 
   // Fan from the centroid of the used vertices: every (centroid, face triangle) is a
-  // positively oriented tetrahedron of the convex piece; flat ones add no volume.
+  // positively oriented tetrahedron of the convex piece; flat ones add no volume. From a
+  // vertex of the piece instead, the faces through it would give flat ones only and are
+  // passed over; the apex lies behind every other face's plane (the piece is convex).
   std::vector<char>& used = workspace.in_cap;
   used.assign(polytope.vertices.size(), 0);
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -187,13 +189,16 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
     }
   }
   centroid /= used_count;
+  const int apex = polytope.indices.front();
+  const Eigen::Vector3d start = fan == PieceFan::vertex ? polytope.vertices[apex] : centroid;
   std::vector<TetrahedronCorners> pieces;
   for (int f = 0; f < polytope.face_count(); ++f) {
     const int* face = polytope.indices.data() + polytope.start[f];
     const int n = polytope.start[f + 1] - polytope.start[f];
+    if (fan == PieceFan::vertex && std::find(face, face + n, apex) != face + n) continue;
     for (int i = 1; i + 1 < n; ++i) {
       TetrahedronCorners piece;
-      piece.row(0) = centroid.transpose();
+      piece.row(0) = start.transpose();
       piece.row(1) = polytope.vertices[face[0]].transpose();
       piece.row(2) = polytope.vertices[face[i]].transpose();
       piece.row(3) = polytope.vertices[face[i + 1]].transpose();
