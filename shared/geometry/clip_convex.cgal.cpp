@@ -57,9 +57,13 @@ ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
   ConvexPolytope& polytope = workspace.polytope;
   const int vertex_count = static_cast<int>(polytope.vertices.size());
   std::vector<int>& side = workspace.side;
-  side.assign(vertex_count, 0);
+  // Each used vertex's side once (a vertex is in three faces or more, each listing it):
+  // `unknown` until its first face asks.
+  constexpr int unknown = 2;
+  side.assign(vertex_count, unknown);
   bool any_inside = false, any_outside = false;
   for (const int v : polytope.indices) {
+    if (side[v] != unknown) continue;
     side[v] = side_of(plane, polytope.vertices[v]);
     any_inside |= side[v] < 0;
     any_outside |= side[v] > 0;
