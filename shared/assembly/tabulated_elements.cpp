@@ -18,10 +18,15 @@ void TabulatedElements::add(std::span<const int> basis, std::span<const double> 
   basis_offsets_.push_back(static_cast<long long>(basis_.size()));
   weights_.insert(weights_.end(), weights.begin(), weights.end());
   point_offsets_.push_back(static_cast<long long>(weights_.size()));
-  for (Eigen::Index q = 0; q < points; ++q)
-    for (Eigen::Index a = 0; a < basis_size; ++a) values_.push_back(values(q, a));
-  for (Eigen::Index row = 0; row < gradients.rows(); ++row)
-    for (int d = 0; d < 3; ++d) gradients_.push_back(gradients(row, d));
+  // Row-major copies by whole blocks (an entry at a time, these were most of the time a
+  // tabulation of fcm's refined grid spent outside its parallel loop).
+  const auto value_begin = static_cast<Eigen::Index>(values_.size());
+  values_.resize(value_begin + points * basis_size);
+  gradients_.resize(3 * values_.size());
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(values_.data() + value_begin,
+                                                                                     points, basis_size) = values;
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(gradients_.data() + 3 * value_begin,
+                                                                        points * basis_size, 3) = gradients;
   value_offsets_.push_back(static_cast<long long>(values_.size()));
   material_.push_back(material);
   for (int index : basis) basis_count_ = std::max(basis_count_, index + 1);

@@ -20,6 +20,7 @@ std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, co
   hasher.scalar<std::int32_t>(options.simplify);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.method));
   hasher.scalar<double>(options.tolerance);
+  hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.fan));
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(type));
   hasher.matrix(corners);
   for (const TetrahedronCorners& tetrahedron : candidates) hasher.matrix(tetrahedron);
@@ -85,7 +86,8 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
           inside(volume);
           continue;
         }
-        IntersectionRule intersection = intersection_rule(geometry, candidates, options.order);
+        IntersectionRule intersection = intersection_rule(geometry, candidates, options.order,
+                                                          geometry.affine() ? options.fan : PieceFan::centroid);
         cell.clipped_volume = intersection.clipped_volume;
         cell.initial_points = intersection.rule.points.rows();
         if (cell.initial_points == 0) continue;
@@ -112,10 +114,16 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   if (failure) std::rethrow_exception(failure);
 
   if (reuse) {
+    // The memory's copies in parallel (mass rules run to thousands of points per cell),
+    // then moved into it.
+    std::vector<CellRule> copies(reuse->computed ? cell_count : 0);
+#pragma omp parallel for schedule(dynamic, 16)
+    for (Eigen::Index c = 0; c < static_cast<Eigen::Index>(copies.size()); ++c)
+      if (keys[c] != 0) copies[c] = result.cells[c];
     for (Eigen::Index c = 0; c < cell_count; ++c) {
       reuse->reused += reused[c];
       reuse->integrated += keys[c] != 0 && !reused[c];
-      if (reuse->computed && keys[c] != 0) reuse->computed->emplace(keys[c], result.cells[c]);
+      if (reuse->computed && keys[c] != 0) reuse->computed->emplace(keys[c], std::move(copies[c]));
     }
   }
   sum_cell_rule_totals(result);

@@ -8,6 +8,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/quadrature/quadrature_rule.hpp"
 #include "shared/quadrature/simplify_quadrature.hpp"
@@ -25,6 +26,11 @@ struct CellRuleOptions {
   bool simplify = true;  ///< false keeps the intersection rules (§6.3's comparison)
   SimplificationMethod method = SimplificationOptions{}.method;
   double tolerance = SimplificationOptions{}.tolerance;  ///< accepted moment residual
+  /// How the clipped pieces of an affine cell are tetrahedralised (other cells: the
+  /// centroid's fan). A rule that is simplified, or inexact for its integrand, depends on
+  /// its pieces, so it keeps the centroid's fan; one exact for its integrand (a mass rule
+  /// of at least twice the basis' degree) may take the vertex's, of fewer points.
+  PieceFan fan = PieceFan::centroid;
 };
 
 struct CellRule {

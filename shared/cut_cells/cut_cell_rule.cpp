@@ -42,6 +42,7 @@ CellGeometry::CellGeometry(ElementType type, const Eigen::Ref<const Eigen::Matri
     origin_ = map_to_physical(element, corners_, Eigen::Vector3d::Zero());
     jacobian_ = map_jacobian(element, corners_, element.centroid());
     inverse_jacobian_ = jacobian_.inverse();
+    determinant_ = std::abs(jacobian_.determinant());
   }
 }
 
@@ -56,7 +57,7 @@ Eigen::Vector3d CellGeometry::to_reference(const Eigen::Vector3d& x) const {
 }
 
 double CellGeometry::jacobian_determinant(const Eigen::Vector3d& xi) const {
-  if (affine_) return std::abs(jacobian_.determinant());
+  if (affine_) return determinant_;
   return std::abs(map_jacobian(reference_element(corner_type_), corners_, xi).determinant());
 }
 
@@ -72,11 +73,11 @@ double CellGeometry::volume() const {
 }
 
 IntersectionRule intersection_rule(const CellGeometry& cell, const std::vector<TetrahedronCorners>& tetrahedra,
-                                   int order) {
+                                   int order, PieceFan fan) {
   const QuadratureRule tet = tet_rule(order);  // unit tet, weights sum to 1/6
   std::vector<TetrahedronCorners> pieces;
   for (const TetrahedronCorners& tetrahedron : tetrahedra) {
-    std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, cell.planes());
+    std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, cell.planes(), fan);
     pieces.insert(pieces.end(), clipped.begin(), clipped.end());
   }
   IntersectionRule result;

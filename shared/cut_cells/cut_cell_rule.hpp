@@ -31,6 +31,8 @@ public:
   double jacobian_determinant(const Eigen::Vector3d& xi) const;
   /// The cell's volume (exact for the corner map).
   double volume() const;
+  /// Whether the corner map is affine (every tetrahedron; a hexahedron that is a parallelepiped).
+  bool affine() const { return affine_; }
 
 private:
   ElementType type_;
@@ -41,6 +43,7 @@ private:
   Eigen::Vector3d origin_;    ///< x(ξ = 0) when affine
   Eigen::Matrix3d jacobian_;  ///< ∂x/∂ξ when affine
   Eigen::Matrix3d inverse_jacobian_;
+  double determinant_ = 0;  ///< |det jacobian_| when affine (every point of a rule asks for it)
 };
 
 /// |J_Q| of a tetrahedron's map from the unit one, q0 + [q1 − q0, q2 − q0, q3 − q0] η:
@@ -59,8 +62,8 @@ struct IntersectionRule {
 /// The rule of eqs. (11)–(12) for cell ∩ (union of `tetrahedra`), exact for polynomials
 /// of degree `order` in physical coordinates when the cell map is affine. The
 /// tetrahedra (each 4 × 3 corners) must not overlap; candidates that miss the cell
-/// contribute nothing.
+/// contribute nothing. `fan`: how each clipped piece is tetrahedralised (clip_tetrahedron).
 IntersectionRule intersection_rule(const CellGeometry& cell, const std::vector<TetrahedronCorners>& tetrahedra,
-                                   int order);
+                                   int order, PieceFan fan = PieceFan::centroid);
 
 }  // namespace altfem

@@ -1,6 +1,5 @@
 #include "shared/cut_cells/fcm_discretization.hpp"
 
-#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -34,16 +33,21 @@ QuadratureRule stabilized(const QuadratureRule& rule, const QuadratureRule& stan
 }
 
 // Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked; the
-// rules are moved out of `cells` (mass rules run to thousands of points per cell).
+// rules are moved out of `cells` (mass rules run to thousands of points per cell). The
+// stabilised copies are made in parallel, the map filled by moves after.
 LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
                              int strength, double stabilization) {
   LagrangeCellRules rules{standard_rule(type, strength), {}, {}};
-  for (size_t k = 0; k < kept.size(); ++k) {
+  const auto count = static_cast<int>(kept.size());
+  std::vector<QuadratureRule> own(count);
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int k = 0; k < count; ++k) {
     CellQuadrature& cell = cells[kept[k]];
     if (!cell.rule) continue;
-    rules.custom.emplace(static_cast<int>(k), stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization)
-                                                                : std::move(*cell.rule));
+    own[k] = stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization) : std::move(*cell.rule);
   }
+  for (int k = 0; k < count; ++k)
+    if (cells[kept[k]].rule) rules.custom.emplace(k, std::move(own[k]));
   return rules;
 }
 
@@ -89,14 +93,16 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   // The kept cells with their nodes renumbered in order of first use.
   fcm.mesh.element_type = background.element_type;
   fcm.mesh.cells.resize(static_cast<Eigen::Index>(kept.size()), background.cells.cols());
-  std::map<int, int> node_of;
+  std::vector<int> node_of(static_cast<size_t>(background.nodes.rows()), -1);
   std::vector<int> used_nodes;
   for (size_t k = 0; k < kept.size(); ++k)
     for (Eigen::Index a = 0; a < background.cells.cols(); ++a) {
       const int node = background.cells(kept[k], a);
-      const auto [entry, added] = node_of.emplace(node, static_cast<int>(used_nodes.size()));
-      if (added) used_nodes.push_back(node);
-      fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = entry->second;
+      if (node_of[node] < 0) {
+        node_of[node] = static_cast<int>(used_nodes.size());
+        used_nodes.push_back(node);
+      }
+      fcm.mesh.cells(static_cast<Eigen::Index>(k), a) = node_of[node];
     }
   fcm.constraints.free_nodes = static_cast<int>(used_nodes.size());
   if (hanging.sources && !hanging.sources->empty()) {

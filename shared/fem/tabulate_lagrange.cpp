@@ -14,22 +14,18 @@ namespace altfem {
 
 namespace {
 
-// Basis values (#points × #nodes) and reference gradients (one #nodes × 3 per point)
-// of a rule.
+// Basis values (#points × #nodes) and reference gradients (per direction j, #points ×
+// #nodes: row q holds ∂N/∂ξ_j at point q) of a rule, as evaluate_at gives them (a matrix
+// per point was an allocation per point of every cut cell).
 struct ReferenceTable {
   Eigen::MatrixXd values;
-  std::vector<Eigen::MatrixXd> gradients;
+  std::array<Eigen::MatrixXd, 3> gradients;
 };
 
 ReferenceTable reference_table(const ReferenceElement& element, const QuadratureRule& rule) {
-  const int n = element.node_count();
-  const auto points = static_cast<int>(rule.weights.size());
-  ReferenceTable table{Eigen::MatrixXd(), std::vector<Eigen::MatrixXd>(points, Eigen::MatrixXd(n, 3))};
+  ReferenceTable table;
   element.evaluate_at(rule.points, table.values);
-  std::array<Eigen::MatrixXd, 3> gradients;
-  element.evaluate_gradients_at(rule.points, gradients);
-  for (int q = 0; q < points; ++q)
-    for (int j = 0; j < 3; ++j) table.gradients[q].col(j) = gradients[j].row(q).transpose();
+  element.evaluate_gradients_at(rule.points, table.gradients);
   return table;
 }
 
@@ -60,12 +56,15 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
     }
     const ReferenceTable& table = own_rule ? own : standard;
     const auto points = static_cast<int>(rule.weights.size());
-    Eigen::MatrixXd nodes(n, 3);
+    Eigen::MatrixXd nodes(n, 3), reference_gradients(n, 3);
     for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
     weights[cell].resize(points);
     gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
+    // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen would
+    // otherwise hand to its blocked matrix product, packing both operands each time.
     for (int q = 0; q < points; ++q) {
-      const Eigen::Matrix3d jacobian = nodes.transpose() * table.gradients[q];  // ∂x_i/∂ξ_j
+      for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
+      const Eigen::Matrix3d jacobian = nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
       const double determinant = jacobian.determinant();
       if (!(determinant > 0)) {
         int expected = -1;
@@ -73,7 +72,8 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
         break;
       }
       weights[cell][q] = rule.weights[q] * determinant;
-      gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) = table.gradients[q] * jacobian.inverse();
+      gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
+          reference_gradients.lazyProduct(jacobian.inverse());
     }
   }
   if (failed_cell >= 0)

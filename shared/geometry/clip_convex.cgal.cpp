@@ -57,9 +57,13 @@ ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
   ConvexPolytope& polytope = workspace.polytope;
   const int vertex_count = static_cast<int>(polytope.vertices.size());
   std::vector<int>& side = workspace.side;
-  side.assign(vertex_count, 0);
+  // Each used vertex's side once (a vertex is in three faces or more, each listing it):
+  // `unknown` until its first face asks.
+  constexpr int unknown = 2;
+  side.assign(vertex_count, unknown);
   bool any_inside = false, any_outside = false;
   for (const int v : polytope.indices) {
+    if (side[v] != unknown) continue;
     side[v] = side_of(plane, polytope.vertices[v]);
     any_inside |= side[v] < 0;
     any_outside |= side[v] > 0;
@@ -147,7 +151,7 @@ ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
 }  // namespace
 
 std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetrahedron,
-                                                 const std::vector<ClipPlane>& planes) {
+                                                 const std::vector<ClipPlane>& planes, PieceFan fan) {
   thread_local ClipWorkspace workspace;
   ConvexPolytope& polytope = workspace.polytope;
   polytope.vertices.clear();
@@ -174,7 +178,9 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
   }
 
   // Fan from the centroid of the used vertices: every (centroid, face triangle) is a
-  // positively oriented tetrahedron of the convex piece; flat ones add no volume.
+  // positively oriented tetrahedron of the convex piece; flat ones add no volume. From a
+  // vertex of the piece instead, the faces through it would give flat ones only and are
+  // passed over; the apex lies behind every other face's plane (the piece is convex).
   std::vector<char>& used = workspace.in_cap;
   used.assign(polytope.vertices.size(), 0);
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -187,13 +193,16 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
     }
   }
   centroid /= used_count;
+  const int apex = polytope.indices.front();
+  const Eigen::Vector3d start = fan == PieceFan::vertex ? polytope.vertices[apex] : centroid;
   std::vector<TetrahedronCorners> pieces;
   for (int f = 0; f < polytope.face_count(); ++f) {
     const int* face = polytope.indices.data() + polytope.start[f];
     const int n = polytope.start[f + 1] - polytope.start[f];
+    if (fan == PieceFan::vertex && std::find(face, face + n, apex) != face + n) continue;
     for (int i = 1; i + 1 < n; ++i) {
       TetrahedronCorners piece;
-      piece.row(0) = centroid.transpose();
+      piece.row(0) = start.transpose();
       piece.row(1) = polytope.vertices[face[0]].transpose();
       piece.row(2) = polytope.vertices[face[i]].transpose();
       piece.row(3) = polytope.vertices[face[i + 1]].transpose();

@@ -22,12 +22,24 @@ struct ClipPlane {
 /// A tetrahedron: 4 × 3, one vertex per row.
 using TetrahedronCorners = Eigen::Matrix<double, 4, 3>;
 
+/// Where clip_tetrahedron's fan of a cut piece starts.
+enum class PieceFan {
+  /// The centroid of the piece's vertices: one tetrahedron per triangle of every face.
+  centroid,
+  /// One of its vertices: none for the faces through it, so fewer tetrahedra (about half
+  /// for a piece shaped like a box), for rules that integrate their integrand exactly on
+  /// any tetrahedralisation.
+  vertex,
+};
+
 /// The tetrahedra of (tetrahedron ∩ every kept half-space), each positively
 /// oriented (det[x1 − x0, x2 − x0, x3 − x0] > 0); empty when the intersection has
 /// no volume. The pieces tile the intersection exactly up to rounding of the new
-/// vertices (each an edge–plane intersection in double precision).
+/// vertices (each an edge–plane intersection in double precision). A tetrahedron the
+/// planes do not cut is returned whole, whatever the fan.
 std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetrahedron,
-                                                 const std::vector<ClipPlane>& planes);
+                                                 const std::vector<ClipPlane>& planes,
+                                                 PieceFan fan = PieceFan::centroid);
 
 /// The six planes of a hexahedron with planar faces and the four of a tetrahedron,
 /// from its corners in VTK order (8 × 3 or 4 × 3), inside kept.

@@ -76,6 +76,35 @@ TEST(ClipConvex, CubeCutByTetrahedronPlanes) {
   EXPECT_NEAR(volume(clip_tetrahedron(kuhn, corner_planes)), 1.0 / 36.0, 1e-16);
 }
 
+TEST(ClipConvex, VertexFanTilesThePieceWithFewerTetrahedra) {
+  // The cube [0,1]³ cut out of a tetrahedron containing it: 6 square faces, 12 triangles.
+  // The centroid's fan gives a tetrahedron per triangle, a corner's none for the 3 faces
+  // through it; both tile the cube. A tetrahedron the planes do not cut stays whole.
+  const auto planes = hexahedron_clip_planes(box_corners({0, 0, 0}, {1, 1, 1}));
+  const TetrahedronCorners big = tetrahedron({-1, -1, -1}, {5, -1, -1}, {-1, 5, -1}, {-1, -1, 5});
+  const auto centroid_pieces = clip_tetrahedron(big, planes, PieceFan::centroid);
+  const auto vertex_pieces = clip_tetrahedron(big, planes, PieceFan::vertex);
+  EXPECT_EQ(centroid_pieces.size(), 12u);
+  EXPECT_EQ(vertex_pieces.size(), 6u);
+  EXPECT_NEAR(volume(centroid_pieces), 1.0, 1e-15);
+  EXPECT_NEAR(volume(vertex_pieces), 1.0, 1e-15);
+  const TetrahedronCorners inside = tetrahedron({0.1, 0.1, 0.1}, {0.9, 0.1, 0.1}, {0.1, 0.9, 0.1}, {0.1, 0.1, 0.9});
+  const auto whole = clip_tetrahedron(inside, planes, PieceFan::vertex);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_EQ(whole[0], inside);
+  // Random cuts: the two fans' volumes agree to rounding.
+  std::mt19937 generator(7);
+  std::uniform_real_distribution<double> coordinate(-0.5, 1.5);
+  const auto point = [&] {
+    return Eigen::Vector3d(coordinate(generator), coordinate(generator), coordinate(generator));
+  };
+  for (int trial = 0; trial < 200; ++trial) {
+    TetrahedronCorners t = tetrahedron(point(), point(), point(), point());
+    const double centroid_volume = volume(clip_tetrahedron(t, planes, PieceFan::centroid));
+    EXPECT_NEAR(volume(clip_tetrahedron(t, planes, PieceFan::vertex)), centroid_volume, 1e-14);
+  }
+}
+
 TEST(ClipConvex, PiecesOfTwoNeighbouringCellsTileRandomTetrahedra) {
   // Seeded property test: two boxes sharing the face x = s, moved by a random rigid
   // motion with a random tetrahedron inside their union: the two clipped volumes add up

@@ -2,10 +2,12 @@
 // tetrahedron, a box and a non-convex L-prism in every background cell type, with faces
 // coincident with cell faces and vertices on cell edges, plus their mirror images just
 // outside the cell (touching it with a face). Volume and first moments to 1e-13; the
-// simplified rule keeps the volume to 1e-13.
+// simplified rule keeps the volume to 1e-13; the vertex's fan (mass rules) integrates every
+// monomial of the rule's degree as the centroid's does, from no more points.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
+#include <cmath>
 
 #include "embedded_shapes.hpp"
 #include "shared/cut_cells/cut_cell_rule.hpp"
@@ -77,6 +79,30 @@ TEST_P(IntersectionMoments, VolumeAndFirstMomentsOfEmbeddedPolyhedra) {
     EXPECT_NEAR(initial(0), exact(0), 1e-13 * exact(0));
     EXPECT_NEAR(intersection.clipped_volume, exact(0), 1e-13 * exact(0));
     for (int d = 1; d < 4; ++d) EXPECT_NEAR(initial(d), exact(d), 1e-13 * scale) << "moment " << d;
+
+    const IntersectionRule fewer = intersection_rule(cell, tetrahedra, order, PieceFan::vertex);
+    EXPECT_LE(fewer.rule.points.rows(), intersection.rule.points.rows());
+    EXPECT_NEAR(fewer.clipped_volume, exact(0), 1e-13 * exact(0));
+    // Every monomial of degree <= order in physical coordinates scaled by the shape's size.
+    const auto monomial_moment = [&](const QuadratureRule& rule, const Eigen::Vector3i& exponent) {
+      double sum = 0.0;
+      for (Eigen::Index q = 0; q < rule.points.rows(); ++q) {
+        const Eigen::Vector3d xi = rule.points.row(q).transpose();
+        const Eigen::Vector3d x = to_physical(xi) / length;
+        sum += rule.weights(q) * cell.jacobian_determinant(xi) * std::pow(x.x(), exponent.x()) *
+               std::pow(x.y(), exponent.y()) * std::pow(x.z(), exponent.z());
+      }
+      return sum;
+    };
+    for (int a = 0; a <= order; ++a)
+      for (int b = 0; a + b <= order; ++b)
+        for (int c = 0; a + b + c <= order; ++c) {
+          const Eigen::Vector3i exponent(a, b, c);
+          const double centroid_fan = monomial_moment(intersection.rule, exponent);
+          const double scale_of_monomial = exact(0) * std::pow(2.0 + exact.tail<3>().norm() / exact(0) / length, order);
+          EXPECT_NEAR(monomial_moment(fewer.rule, exponent), centroid_fan, 1e-13 * scale_of_monomial)
+              << "x^" << a << " y^" << b << " z^" << c;
+        }
 
     const SimplificationResult simplified =
         simplify_quadrature(intersection.rule, {order, SimplificationOptions{}.method, 1e-12});
