@@ -10,6 +10,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include "shared/common/error.hpp"
@@ -194,10 +195,24 @@ public:
   // Applies every event due at `now` (dynamic: the state's time; static: load steps done).
   void apply_due(double now) {
     while (next_ < events_.size() && events_[next_].time <= now + tolerance_) {
+      const MethodInstance* before = &simulation_.method();
       const EventRecord record = simulation_.apply(events_[next_++]);
       log_ << record.log_line() << '\n';
       records_.push_back(record.json());
+      if (&simulation_.method() != before) unembedded_ = records_.size() - 1;
     }
+  }
+  // The surface of the method an event rebuilt is embedded by the first frame that needs
+  // it, inside a step: its seconds and the vertices it located belong to the event (the
+  // last one, when several came between two frames), added to its record once built.
+  void add_embedding_report() {
+    if (!unembedded_) return;
+    const nlohmann::json report = simulation_.method().surface_embedding_report();
+    if (report.is_null()) return;
+    nlohmann::json& record = records_[*unembedded_];
+    record["seconds"]["embedding"] = report["seconds"];
+    record["facts"]["surface"]["vertices_relocated"] = report["vertices_relocated"];
+    unembedded_.reset();
   }
   const nlohmann::json& records() const { return records_; }
   // How many times a cut left a piece of the surface whole (cut_surface's facts).
@@ -216,6 +231,7 @@ private:
   double tolerance_;
   std::size_t next_ = 0;
   nlohmann::json records_ = nlohmann::json::array();
+  std::optional<std::size_t> unembedded_;  // the record of the last rebuild whose method has not embedded yet
 };
 
 }  // namespace
@@ -333,7 +349,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
           << report.newton_iterations + report.lbfgs_evaluations << ' ' << report.linear_iterations << ' '
           << report.residual << ' ' << total_energy << ' '
           << max_von_mises(simulation.discretization(), state.displacement) << '\n';
-      if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, time);
+      if (step % scene.output.every == 0 || step == steps) {
+        frames.write(state.displacement, time);
+        events.add_embedding_report();
+      }
       progress.update(step, report.newton_iterations);
       events.apply_due(scene.time.is_static ? step : state.time);
     }

@@ -302,6 +302,7 @@ void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   State transferred = state_;
   transferred.displacement = moved.col(0);
   transferred.velocity = moved.col(1);
+  rebuilt->continue_embedding(*method_);
   record.seconds.transfer = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
