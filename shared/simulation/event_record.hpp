@@ -8,9 +8,10 @@ namespace altfem {
 
 /// Seconds an event spent, by phase: cutting or refining the geometry, re-integrating
 /// (quadrature, bases), building the new system (assembly pattern, solver, integrator),
-/// transferring the state, and embedding the surface in the new basis — built on first
-/// use, by the first surface frame after the event, so the run adds it to the event's
-/// `seconds` in summary.json then (0 in a run that writes no surface frame after it).
+/// transferring the state, and embedding the surface in the new basis: keying the old
+/// embedding for the new one here, and the new one built on first use, by the first
+/// surface frame after the event, which the run adds to the event's `seconds` in
+/// summary.json then.
 struct EventPhases {
   double geometry = 0;
   double integration = 0;

@@ -210,7 +210,7 @@ public:
     const nlohmann::json report = simulation_.method().surface_embedding_report();
     if (report.is_null()) return;
     nlohmann::json& record = records_[*unembedded_];
-    record["seconds"]["embedding"] = report["seconds"];
+    record["seconds"]["embedding"] = record["seconds"]["embedding"].get<double>() + report["seconds"].get<double>();
     record["facts"]["surface"]["vertices_relocated"] = report["vertices_relocated"];
     unembedded_.reset();
   }
