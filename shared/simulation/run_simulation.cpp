@@ -10,7 +10,6 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
-#include <optional>
 #include <sstream>
 
 #include "shared/common/error.hpp"
@@ -19,6 +18,7 @@
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
 #include "shared/material/material.hpp"
+#include "shared/simulation/event_schedule.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/simulation.hpp"
@@ -180,58 +180,6 @@ private:
   std::filesystem::path last_surface_;
   FrameObserver observer_;
   int frame_ = 0;
-};
-
-// The scene's events in time order, applied as the run reaches them: a dynamic event
-// at the first step boundary at or after its time, a static one after its load step.
-class EventSchedule {
-public:
-  EventSchedule(const Scene& scene, Simulation& simulation, std::ostringstream& log)
-      : events_(scene.events),
-        simulation_(simulation),
-        log_(log),
-        tolerance_(scene.time.is_static ? 0.0 : 1e-9 * scene.time.dt) {}
-
-  // Applies every event due at `now` (dynamic: the state's time; static: load steps done).
-  void apply_due(double now) {
-    while (next_ < events_.size() && events_[next_].time <= now + tolerance_) {
-      const MethodInstance* before = &simulation_.method();
-      const EventRecord record = simulation_.apply(events_[next_++]);
-      log_ << record.log_line() << '\n';
-      records_.push_back(record.json());
-      if (&simulation_.method() != before) unembedded_ = records_.size() - 1;
-    }
-  }
-  // The surface of the method an event rebuilt is embedded by the first frame that needs
-  // it, inside a step: its seconds and the vertices it located belong to the event (the
-  // last one, when several came between two frames), added to its record once built.
-  void add_embedding_report() {
-    if (!unembedded_) return;
-    const nlohmann::json report = simulation_.method().surface_embedding_report();
-    if (report.is_null()) return;
-    nlohmann::json& record = records_[*unembedded_];
-    record["seconds"]["embedding"] = record["seconds"]["embedding"].get<double>() + report["seconds"].get<double>();
-    record["facts"]["surface"]["vertices_relocated"] = report["vertices_relocated"];
-    unembedded_.reset();
-  }
-  const nlohmann::json& records() const { return records_; }
-  // How many times a cut left a piece of the surface whole (cut_surface's facts).
-  int surface_pieces_left_whole() const {
-    const nlohmann::json::json_pointer whole("/facts/surface/pieces_left_whole");
-    int count = 0;
-    for (const nlohmann::json& record : records_)
-      if (record.contains(whole)) count += record[whole].get<int>();
-    return count;
-  }
-
-private:
-  const std::vector<SceneEvent>& events_;
-  Simulation& simulation_;
-  std::ostringstream& log_;
-  double tolerance_;
-  std::size_t next_ = 0;
-  nlohmann::json records_ = nlohmann::json::array();
-  std::optional<std::size_t> unembedded_;  // the record of the last rebuild whose method has not embedded yet
 };
 
 }  // namespace
