@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "shared/common/error.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/mesh/polyhedral_cell_location.hpp"
 
 namespace altfem::harmonic {
@@ -29,6 +30,43 @@ bool HarmonicBasisEvaluator::evaluate_inside(int cell, const Eigen::Vector3d& x,
   if (bounds_[cell].exteriorDistance(x) > tolerance) return false;
   if (!cell_holds(mesh_, cell, x, tolerance)) return false;
   return evaluate(cell, x, basis, values);
+}
+
+std::uint64_t HarmonicBasisEvaluator::element_key(int cell) const {
+  CacheKeyHasher hasher;
+  hasher.scalar<std::int32_t>(static_cast<std::int32_t>(mesh_.cell_kinds[cell]));
+  hasher.scalar(mesh_.cell_diameters[cell]);
+  if (convex_kind(mesh_.cell_kinds[cell])) {
+    // Its face planes alone decide (cell_holds), in any order and whichever cell a face is
+    // stored for: a cut renumbers the faces it left alone and may turn them. The
+    // outward normal is the stored one negated exactly, and so is each plane distance.
+    std::vector<std::uint64_t> planes;
+    for (const int face : mesh_.cell_faces[cell]) {
+      CacheKeyHasher plane;
+      const double outward = mesh_.face_cells(face, 0) == cell ? 1.0 : -1.0;
+      plane.matrix((outward * mesh_.face_normals.row(face)).eval());
+      plane.matrix(mesh_.face_centroids.row(face).eval());
+      planes.push_back(plane.value());
+    }
+    std::sort(planes.begin(), planes.end());
+    hasher.bytes(planes.data(), planes.size() * sizeof(std::uint64_t));
+  } else {
+    for (const int face : mesh_.cell_faces[cell]) {
+      hasher.scalar<std::int32_t>(mesh_.face_cells(face, 0) == cell);
+      hasher.matrix(mesh_.face_centroids.row(face).eval());
+      hasher.matrix(mesh_.face_normals.row(face).eval());
+      for (const int node : mesh_.faces[face]) hasher.matrix(mesh_.nodes.row(node).eval());
+    }
+  }
+  for (const int node : bases_.nodes(cell)) hasher.matrix(mesh_.nodes.row(node).eval());
+  const std::optional<ElementType> plain = bases_.plain_type(cell);
+  hasher.scalar<std::int32_t>(plain ? static_cast<std::int32_t>(*plain) : -1);
+  if (const ElementHarmonicBasis* mfs = bases_.mfs_basis(cell)) {
+    BinaryWriter data("");
+    mfs->write(data);
+    hasher.bytes(data.bytes().data(), data.bytes().size());
+  }
+  return hasher.value();
 }
 
 double HarmonicBasisEvaluator::evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,

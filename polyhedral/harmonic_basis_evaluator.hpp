@@ -19,6 +19,11 @@ public:
                        std::vector<double>& values) const override;
   double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
                           std::vector<double>& values) const override;
+  /// The cell's faces as cell_holds reads them (a convex cell's outward planes, in any
+  /// order), its nodes' positions in the order of its values, and its basis (closed-form
+  /// type, or every MFS datum).
+  std::uint64_t element_key(int cell) const override;
+  void element_functions(int cell, std::vector<int>& basis) const override { basis = bases_.nodes(cell); }
 
 private:
   bool evaluate(int cell, const Eigen::Vector3d& x, std::vector<int>& basis, std::vector<double>& values) const;

@@ -9,6 +9,8 @@
 
 #include <Eigen/LU>  // Matrix3d::inverse
 
+#include "shared/io/binary_cache.hpp"
+
 namespace altfem {
 
 namespace {
@@ -55,6 +57,22 @@ Eigen::Matrix<double, 4, 3> corners_of(const VolumeMesh& embedded, int tetrahedr
   return corners;
 }
 
+// A hash of a piece's tetrahedra, each by its corners in order (the distances read them
+// so), whatever their numbering: a cut renumbers the tetrahedra it left alone.
+std::uint64_t tetrahedra_key(const VolumeMesh& embedded, const std::vector<int>& tetrahedra) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(tetrahedra.size());
+  for (const int tetrahedron : tetrahedra) {
+    CacheKeyHasher hasher;
+    hasher.matrix(corners_of(embedded, tetrahedron));
+    keys.push_back(hasher.value());
+  }
+  std::sort(keys.begin(), keys.end());
+  CacheKeyHasher hasher;
+  hasher.bytes(keys.data(), keys.size() * sizeof(std::uint64_t));
+  return hasher.value();
+}
+
 }  // namespace
 
 double distance_to_tetrahedron(const Eigen::Vector3d& x, const Eigen::Matrix<double, 4, 3>& corners, double below) {
@@ -82,7 +100,8 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
       embedded_(embedded),
       serial_(next_serial++),
       piece_trees_(kept_rows.size()),
-      split_cell_(kept_rows.size(), -1) {
+      split_cell_(kept_rows.size(), -1),
+      piece_keys_(kept_rows.size(), 0) {
   std::map<int, std::vector<int>> kept_pieces;  // background cell → its kept cells
   for (std::size_t cell = 0; cell < kept_rows.size(); ++cell)
     kept_pieces[pieces.background_cell[kept_rows[cell]]].push_back(static_cast<int>(cell));
@@ -102,6 +121,7 @@ PieceBasisEvaluator::PieceBasisEvaluator(const VolumeMesh& mesh, const PieceMesh
       piece_trees_[cell] = tree_of(tetrahedra);
       all_tetrahedra.insert(all_tetrahedra.end(), tetrahedra.begin(), tetrahedra.end());
       split_cell_[cell] = static_cast<int>(split_cell_trees_.size());
+      piece_keys_[cell] = tetrahedra_key(embedded, tetrahedra);
       for (const int tetrahedron : tetrahedra) split_cell_pieces.push_back({tetrahedron, cell});
     }
     split_cell_trees_.push_back(tree_of(all_tetrahedra));
@@ -156,6 +176,15 @@ double PieceBasisEvaluator::distance_to(const Eigen::KdBVH<double, 3, int>& tree
   const double distance = std::min(bound, Eigen::BVMinimize(tree, search));
   if (nearest) *nearest = search.nearest_distance == distance ? search.nearest : -1;
   return distance;
+}
+
+std::uint64_t PieceBasisEvaluator::element_key(int cell) const {
+  const std::uint64_t whole = whole_.element_key(cell);
+  if (split_cell_[cell] < 0) return whole;
+  CacheKeyHasher hasher;
+  hasher.scalar(whole);
+  hasher.scalar(piece_keys_[cell]);
+  return hasher.value();
 }
 
 int PieceBasisEvaluator::piece_of(int split_cell, int tetrahedron) const {

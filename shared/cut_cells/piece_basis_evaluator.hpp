@@ -32,6 +32,18 @@ public:
                           std::vector<double>& values) const override {
     return whole_.evaluate_nearest(x, basis, values);
   }
+  /// The whole cell's key, and for a piece of a split background cell its tetrahedra
+  /// (their corners, in any order): they decide which of the cell's pieces is nearest.
+  std::uint64_t element_key(int cell) const override;
+  void element_functions(int cell, std::vector<int>& basis) const override { whole_.element_functions(cell, basis); }
+  /// A piece of a split background cell holds x whatever its cell's other pieces are
+  /// where x lies on or in its tetrahedra: none is nearer. Then a piece of the cell before
+  /// it rejects x by its own distance to x (its key), and a piece of another cell before
+  /// it by that cell's geometry, since the pieces of one background cell come one after
+  /// the other in index order.
+  bool holds_alone(int cell, const Eigen::Vector3d& x) const override {
+    return split_cell_[cell] < 0 || distance_to(piece_trees_[cell], x, std::numeric_limits<double>::denorm_min()) == 0;
+  }
 
 private:
   /// Distance from x to the nearest tetrahedron of `tree` where it is below `bound`, else
@@ -54,6 +66,8 @@ private:
   /// cell all its kept pieces' tetrahedra.
   std::vector<Eigen::KdBVH<double, 3, int>> piece_trees_, split_cell_trees_;
   std::vector<int> split_cell_;  ///< per kept cell: its split background cell's tree, or −1
+  /// Per kept cell of a split background cell, a hash of its piece's tetrahedra (0 otherwise).
+  std::vector<std::uint64_t> piece_keys_;
   /// Per split background cell, (tetrahedron, kept cell) of its pieces, sorted.
   std::vector<std::vector<std::pair<int, int>>> split_cell_pieces_;
 };

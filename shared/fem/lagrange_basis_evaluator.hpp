@@ -1,6 +1,7 @@
 #pragma once
 #include <memory>
 
+#include "shared/fem/lagrange_element_key.hpp"
 #include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/simulation/basis_embedding.hpp"
@@ -24,6 +25,10 @@ public:
                        std::vector<double>& values) const override;
   double evaluate_nearest(const Eigen::Vector3d& x, std::vector<int>& basis,
                           std::vector<double>& values) const override;
+  std::uint64_t element_key(int cell) const override { return lagrange_element_key(mesh_, constraints_, cell); }
+  void element_functions(int cell, std::vector<int>& basis) const override {
+    lagrange_element_functions(mesh_, constraints_, cell, basis);
+  }
 
   /// Whether x lies in `cell`, and its reference point ξ there (the inverse map, Newton).
   bool reference_point(int cell, const Eigen::Vector3d& x, Eigen::Vector3d& xi) const;

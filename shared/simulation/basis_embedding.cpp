@@ -6,39 +6,144 @@
 
 namespace altfem {
 
-BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
-                               const std::vector<std::vector<int>>& point_elements) {
+namespace {
+
+// The slack of a point's candidate boxes: a point on an element's face is a candidate of both sides.
+double candidate_slack(const Eigen::MatrixXd& points) {
+  return points.rows() > 0 ? 1e-9 * (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm() : 0.0;
+}
+
+PointLocator element_locator(const ElementBasisEvaluator& evaluator) {
   std::vector<Eigen::AlignedBox3d> boxes(static_cast<size_t>(evaluator.element_count()));
   for (int e = 0; e < evaluator.element_count(); ++e) boxes[e] = evaluator.element_bounds(e);
-  const PointLocator locator(std::move(boxes));
-  const double slack =
-      points.rows() > 0 ? 1e-9 * (points.colwise().maxCoeff() - points.colwise().minCoeff()).norm() : 0.0;
-  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
+  return PointLocator(std::move(boxes));
+}
 
-  std::vector<int> candidates, basis;
-  std::vector<double> values;
+}  // namespace
+
+BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
+                               const std::vector<std::vector<int>>& point_elements) {
+  const PointLocator locator = element_locator(evaluator);
+  const double slack = candidate_slack(points);
+  std::vector<int> candidates, holders;
   for (Eigen::Index point = 0; point < points.rows(); ++point) {
     const Eigen::Vector3d x = points.row(point).transpose();
     if (point_elements.empty()) locator.candidates(x, slack, candidates);
     else candidates = point_elements[point];
-    const size_t begin = basis_.size();
-    int containing = 0;
-    for (int element : candidates) {
-      if (!evaluator.evaluate_inside(element, x, basis, values)) continue;
-      ++containing;
-      basis_.insert(basis_.end(), basis.begin(), basis.end());
-      weights_.insert(weights_.end(), values.begin(), values.end());
-      if (!average) break;
+    locate(evaluator, x, candidates, holders);
+  }
+  relocated_count_ = static_cast<int>(points.rows());
+}
+
+BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
+                               const BasisEmbedding* previous)
+    : memory_(std::make_unique<Memory>()) {
+  // Built without what a later embedding needs, or never told its keys.
+  if (previous &&
+      (!previous->memory_ || previous->memory_->candidate_keys.size() != previous->memory_->candidates.size()))
+    previous = nullptr;
+  const PointLocator locator = element_locator(evaluator);
+  const double slack = candidate_slack(points);
+  std::vector<std::uint64_t> keys(static_cast<size_t>(evaluator.element_count()));
+  std::vector<char> known(keys.size(), 0);
+  std::vector<int> candidates, holders;
+  memory_->points = points;
+  for (Eigen::Index point = 0; point < points.rows(); ++point) {
+    const Eigen::Vector3d x = points.row(point).transpose();
+    locator.candidates(x, slack, candidates);
+    holders.clear();
+    if (previous && keep(evaluator, *previous, point, x, candidates, keys, known)) {
+      const Memory& before = *previous->memory_;
+      holders.assign(before.holders.begin() + before.holder_offsets[point],
+                     before.holders.begin() + before.holder_offsets[point + 1]);
+    } else {
+      locate(evaluator, x, candidates, holders);
+      ++relocated_count_;
     }
-    if (containing == 0) {
-      ++outside_count_;
-      max_outside_distance_ = std::max(max_outside_distance_, evaluator.evaluate_nearest(x, basis, values));
-      basis_.insert(basis_.end(), basis.begin(), basis.end());
-      weights_.insert(weights_.end(), values.begin(), values.end());
-    } else if (containing > 1) {
-      for (size_t i = begin; i < weights_.size(); ++i) weights_[i] /= containing;
-    }
-    offsets_.push_back(static_cast<long long>(basis_.size()));
+    memory_->candidates.insert(memory_->candidates.end(), candidates.begin(), candidates.end());
+    memory_->candidate_offsets.push_back(static_cast<long long>(memory_->candidates.size()));
+    memory_->holders.insert(memory_->holders.end(), holders.begin(), holders.end());
+    memory_->holder_offsets.push_back(static_cast<long long>(memory_->holders.size()));
+  }
+}
+
+void BasisEmbedding::locate(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x,
+                            const std::vector<int>& candidates, std::vector<int>& holders) {
+  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
+  thread_local std::vector<int> basis;  // scratch, not allocated again for every point
+  thread_local std::vector<double> values;
+  const size_t begin = basis_.size();
+  int containing = 0;
+  for (size_t place = 0; place < candidates.size(); ++place) {
+    if (!evaluator.evaluate_inside(candidates[place], x, basis, values)) continue;
+    ++containing;
+    holders.push_back(static_cast<int>(place));
+    basis_.insert(basis_.end(), basis.begin(), basis.end());
+    weights_.insert(weights_.end(), values.begin(), values.end());
+    if (!average) break;
+  }
+  if (containing == 0) {
+    ++outside_count_;
+    max_outside_distance_ = std::max(max_outside_distance_, evaluator.evaluate_nearest(x, basis, values));
+    basis_.insert(basis_.end(), basis.begin(), basis.end());
+    weights_.insert(weights_.end(), values.begin(), values.end());
+  } else if (containing > 1) {
+    for (size_t i = begin; i < weights_.size(); ++i) weights_[i] /= containing;
+  }
+  offsets_.push_back(static_cast<long long>(basis_.size()));
+}
+
+bool BasisEmbedding::keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
+                          const Eigen::Vector3d& x, const std::vector<int>& candidates,
+                          std::vector<std::uint64_t>& keys, std::vector<char>& known) {
+  const Memory& before = *previous.memory_;
+  if (point >= before.points.rows() || before.points.row(point) != x.transpose()) return false;
+  // Extrapolated points (no holder) are located again: the nearest element may be a new one.
+  const long long holders_begin = before.holder_offsets[point], holders_end = before.holder_offsets[point + 1];
+  if (holders_begin == holders_end) return false;
+  // The candidates that decided the point: up to its (last) holder, since a point goes to
+  // the first element that holds it; all of them when it averages every holder.
+  const long long first = before.candidate_offsets[point];
+  const auto before_count = static_cast<size_t>(before.candidate_offsets[point + 1] - first);
+  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
+  const size_t deciding = average ? before_count : static_cast<size_t>(before.holders[holders_end - 1]) + 1;
+  if (candidates.size() < deciding || (average && candidates.size() != before_count)) return false;
+  for (size_t place = 0; place < deciding; ++place) {
+    const int element = candidates[place];
+    if (!known[element]) keys[element] = evaluator.element_key(element), known[element] = 1;
+    const std::uint64_t key = keys[element];
+    if (key == 0 || key != before.candidate_keys[first + static_cast<long long>(place)]) return false;
+  }
+  for (long long holder = holders_begin; holder < holders_end; ++holder)
+    if (!evaluator.holds_alone(candidates[before.holders[holder]], x)) return false;
+  // The same evaluations in the same order: the entries of the elements in the holders'
+  // places, one after the other, each on the functions its element lists now.
+  thread_local std::vector<int> functions;
+  const size_t begin = basis_.size();
+  long long entry = previous.offsets_[point];
+  for (long long holder = holders_begin; holder < holders_end; ++holder) {
+    evaluator.element_functions(candidates[before.holders[holder]], functions);
+    basis_.insert(basis_.end(), functions.begin(), functions.end());
+    entry += static_cast<long long>(functions.size());
+  }
+  if (entry != previous.offsets_[point + 1]) {  // a key that did not say what it should: locate it
+    basis_.resize(begin);
+    return false;
+  }
+  weights_.insert(weights_.end(), previous.weights_.begin() + previous.offsets_[point],
+                  previous.weights_.begin() + previous.offsets_[point + 1]);
+  offsets_.push_back(static_cast<long long>(basis_.size()));
+  return true;
+}
+
+void BasisEmbedding::remember_keys(const ElementBasisEvaluator& evaluator) const {
+  if (!memory_ || memory_->candidate_keys.size() == memory_->candidates.size()) return;
+  std::vector<std::uint64_t> keys(static_cast<size_t>(evaluator.element_count()));
+  std::vector<char> known(keys.size(), 0);
+  memory_->candidate_keys.clear();
+  for (const int element : memory_->candidates) {
+    if (!known[element]) keys[element] = evaluator.element_key(element), known[element] = 1;
+    memory_->candidate_keys.push_back(keys[element]);
   }
 }
 

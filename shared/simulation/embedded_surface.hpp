@@ -7,6 +7,7 @@
 // once for every method.
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "shared/mesh/surface_mesh.hpp"
 #include "shared/simulation/method_instance.hpp"
@@ -28,13 +29,25 @@ struct EmbeddedSurface {
 
   /// The embedding of surface.vertices, built on first use (from one thread: the run's).
   const PointEmbedding& embedding() const;
-  /// {"surface_vertices": n} and the embedding's facts.
+  /// {"surface_vertices": n, "surface_vertices_relocated": those located in the mesh (all,
+  /// unless embed_in_basis kept some from the surface before an event)} and the
+  /// embedding's facts.
   nlohmann::json facts() const;
+  /// The seconds embedding() took to build; nullopt until it is built.
+  std::optional<double> embedding_seconds() const { return embedding_seconds_; }
+  /// Takes `before`'s embedding (the surface of the method before an event; if it never
+  /// embedded, the one it had taken) for embed_in_basis to keep what the event left alone.
+  void continue_from(const EmbeddedSurface& before);
 
+  /// Each vertex in the basis of the element holding it; a vertex the embedding
+  /// continue_from took holds in elements the event left alone keeps its weights
+  /// (BasisEmbedding's constructor with `previous`).
   static std::unique_ptr<PointEmbedding> embed_in_basis(const EmbeddedSurface& surface);
 
 private:
-  mutable std::unique_ptr<PointEmbedding> embedding_;
+  mutable std::shared_ptr<const PointEmbedding> embedding_;
+  mutable std::shared_ptr<const PointEmbedding> before_;  // continue_from's, released once embedded
+  mutable std::optional<double> embedding_seconds_;
 };
 
 /// A MethodInstance whose surface functions read its EmbeddedSurface.
@@ -46,6 +59,15 @@ public:
   const ElementBasisEvaluator& basis_evaluator() const override { return *surface_.evaluator; }
   Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const override {
     return surface_.embedding().displacement(displacement);
+  }
+  nlohmann::json surface_embedding_report() const override {
+    if (!surface_.embedding_seconds()) return nullptr;
+    return {{"seconds", *surface_.embedding_seconds()},
+            {"vertices_relocated", surface_.facts()["surface_vertices_relocated"]}};
+  }
+  void continue_embedding(const MethodInstance& previous) override {
+    if (const auto* before = dynamic_cast<const EmbeddedSurfaceMethod*>(&previous))
+      surface_.continue_from(before->surface_);
   }
 
 protected:

@@ -18,7 +18,8 @@ nlohmann::json EventRecord::json() const {
        {{"geometry", seconds.geometry},
         {"integration", seconds.integration},
         {"pattern", seconds.pattern},
-        {"transfer", seconds.transfer}}},
+        {"transfer", seconds.transfer},
+        {"embedding", seconds.embedding}}},
       {"conserved", conserved}};
   if (!pointer.empty()) result["pointer"] = pointer;
   if (!facts.is_null()) result["facts"] = facts;

@@ -8,12 +8,16 @@ namespace altfem {
 
 /// Seconds an event spent, by phase: cutting or refining the geometry, re-integrating
 /// (quadrature, bases), building the new system (assembly pattern, solver, integrator),
-/// and transferring the state.
+/// transferring the state, and embedding the surface in the new basis: keying the old
+/// embedding for the new one here, and the new one built on first use, by the first
+/// surface frame after the event, which the run adds to the event's `seconds` in
+/// summary.json then.
 struct EventPhases {
   double geometry = 0;
   double integration = 0;
   double pattern = 0;
   double transfer = 0;
+  double embedding = 0;
 };
 
 struct EventRecord {

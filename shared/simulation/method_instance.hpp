@@ -54,6 +54,13 @@ public:
   virtual SurfaceLift surface_lift() const { return {}; }
   /// Displacement of every embedded surface vertex (#vertices × 3).
   virtual Eigen::MatrixXd embedded_displacement(const Eigen::VectorXd& displacement) const = 0;
+  /// Once the embedding of the surface's vertices is built (a method builds it on first
+  /// use: after an event, in the first surface frame): {"seconds": what it took,
+  /// "vertices_relocated": the vertices located in the mesh}; null before.
+  virtual nlohmann::json surface_embedding_report() const { return nullptr; }
+  /// Called on the instance an event rebuilt, with the one before it (alive until this
+  /// returns): lets the embedding of the surface keep what the event left alone.
+  virtual void continue_embedding(const MethodInstance& /*previous*/) {}
   /// The coefficients (#dofs) of a vector field in the method's basis: exact for affine
   /// fields, which every method's basis reproduces (initial velocities, the patch and
   /// rigid-motion tests of the conformance suite).

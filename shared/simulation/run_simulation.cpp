@@ -18,6 +18,7 @@
 #include "shared/io/pvd_collection.hpp"
 #include "shared/io/vtu_writer.hpp"
 #include "shared/material/material.hpp"
+#include "shared/simulation/event_schedule.hpp"
 #include "shared/simulation/field_errors.hpp"
 #include "shared/simulation/progress.hpp"
 #include "shared/simulation/simulation.hpp"
@@ -181,43 +182,6 @@ private:
   int frame_ = 0;
 };
 
-// The scene's events in time order, applied as the run reaches them: a dynamic event
-// at the first step boundary at or after its time, a static one after its load step.
-class EventSchedule {
-public:
-  EventSchedule(const Scene& scene, Simulation& simulation, std::ostringstream& log)
-      : events_(scene.events),
-        simulation_(simulation),
-        log_(log),
-        tolerance_(scene.time.is_static ? 0.0 : 1e-9 * scene.time.dt) {}
-
-  // Applies every event due at `now` (dynamic: the state's time; static: load steps done).
-  void apply_due(double now) {
-    while (next_ < events_.size() && events_[next_].time <= now + tolerance_) {
-      const EventRecord record = simulation_.apply(events_[next_++]);
-      log_ << record.log_line() << '\n';
-      records_.push_back(record.json());
-    }
-  }
-  const nlohmann::json& records() const { return records_; }
-  // How many times a cut left a piece of the surface whole (cut_surface's facts).
-  int surface_pieces_left_whole() const {
-    const nlohmann::json::json_pointer whole("/facts/surface/pieces_left_whole");
-    int count = 0;
-    for (const nlohmann::json& record : records_)
-      if (record.contains(whole)) count += record[whole].get<int>();
-    return count;
-  }
-
-private:
-  const std::vector<SceneEvent>& events_;
-  Simulation& simulation_;
-  std::ostringstream& log_;
-  double tolerance_;
-  std::size_t next_ = 0;
-  nlohmann::json records_ = nlohmann::json::array();
-};
-
 }  // namespace
 
 nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry, const std::string& method_name,
@@ -333,7 +297,10 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
           << report.newton_iterations + report.lbfgs_evaluations << ' ' << report.linear_iterations << ' '
           << report.residual << ' ' << total_energy << ' '
           << max_von_mises(simulation.discretization(), state.displacement) << '\n';
-      if (step % scene.output.every == 0 || step == steps) frames.write(state.displacement, time);
+      if (step % scene.output.every == 0 || step == steps) {
+        frames.write(state.displacement, time);
+        events.add_embedding_report();
+      }
       progress.update(step, report.newton_iterations);
       events.apply_due(scene.time.is_static ? step : state.time);
     }

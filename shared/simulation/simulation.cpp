@@ -305,6 +305,10 @@ void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   record.seconds.transfer = seconds_since(start);
 
   start = std::chrono::steady_clock::now();
+  rebuilt->continue_embedding(*method_);  // keys the old embedding while its elements are alive
+  record.seconds.embedding = seconds_since(start);
+
+  start = std::chrono::steady_clock::now();
   // The old method and its layers stay alive until the integrator is rebound.
   const std::unique_ptr<MethodInstance> previous = std::move(method_);
   method_ = std::move(rebuilt);
