@@ -350,7 +350,8 @@ nlohmann::json run_simulation(const Scene& scene, const SceneGeometry& geometry,
   // What blas_thread_choice.hpp chose for the factorisations (issue #35); the solves ran on one.
   if (statistics.most_blas_threads > 0)
     summary["environment"]["factorisation_blas_threads"] = {{"fewest", statistics.fewest_blas_threads},
-                                                            {"most", statistics.most_blas_threads}};
+                                                            {"most", statistics.most_blas_threads},
+                                                            {"flops", statistics.factorisation_flops}};
   // The discretization after the last event (each event records its own change).
   summary["dofs"] = simulation.discretization().dof_count();
   summary["constrained_dofs"] = simulation.discretization().constrained_dofs().size();

@@ -29,6 +29,9 @@ TEST(Run, CantileverWritesTheSummaryContractAndReadableFiles) {
   // A linear material: assembled and factorised once.
   EXPECT_EQ(summary["counts"]["analyses"], 1);
   EXPECT_EQ(summary["counts"]["factorisations"], 1);
+  // CHOLMOD's operation count of one factorisation: at least one square root per free DOF.
+  const int free_dofs = summary["dofs"].get<int>() - summary["constrained_dofs"].get<int>();
+  EXPECT_GE(summary["environment"]["factorisation_blas_threads"]["flops"].get<double>(), free_dofs);
   EXPECT_TRUE(std::filesystem::exists(out / "log.txt"));
   const std::string check =
       "/usr/bin/python3 " + source_path("tests/cli/check_run_output.py").string() + " " + out.string();
