@@ -340,9 +340,13 @@ ElementHarmonicBasis ElementHarmonicBasis::reordered(const std::vector<int>& ord
   return result;
 }
 
-ElementHarmonicBasis ElementHarmonicBasis::translated(const Eigen::Vector3d& offset) const {
+ElementHarmonicBasis ElementHarmonicBasis::moved(const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                                                 double factor) const {
   ElementHarmonicBasis result = *this;
-  result.origin_ += offset;  // centres and coefficients are in coordinates about the origin
+  // Centres and coefficients are in the local coordinates (x − origin) / scale.
+  result.origin_ = to + factor * (origin_ - from);
+  result.scale_ = factor * scale_;
+  if (factor != 1) result.boundary_integrals_ *= factor * factor;
   return result;
 }
 

@@ -61,9 +61,12 @@ public:
   /// The same basis with its nodes in another order: node i of the result is node
   /// order[i] of this one (the cell numbered otherwise by a rebuilt mesh).
   ElementHarmonicBasis reordered(const std::vector<int>& order) const;
-  /// The same basis moved by `offset`: that of the cell's translate (harmonic_element_bases
-  /// fits one of several translated cells and moves it to the others).
-  ElementHarmonicBasis translated(const Eigen::Vector3d& offset) const;
+  /// The basis of the cell's image under x ↦ to + factor (x − from), a translation and a
+  /// scaling: harmonic_element_bases fits one of several cells alike but for their place
+  /// and size and moves it to the others. The fit lives in coordinates about the cell's
+  /// centroid in units of its size, so only those two change, and the boundary integrals
+  /// (∫ b_i n dA) scale with the area, by factor².
+  ElementHarmonicBasis moved(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double factor) const;
 
   /// Everything the basis evaluates from, bit for bit (harmonic_basis_cache).
   void write(BinaryWriter& out) const;

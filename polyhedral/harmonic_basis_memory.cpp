@@ -72,11 +72,12 @@ CellShapeKey cell_shape_key(const PolyhedralMesh& mesh, int cell) {
   key.anchor = vertices.row(order.local.front()).transpose();
   const Eigen::MatrixX3d relative = vertices(order.local, Eigen::all).rowwise() - key.anchor.transpose();
   const double size = (relative.colwise().maxCoeff() - relative.colwise().minCoeff()).norm();
-  // A power of two, so translates whose sizes differ in the last bits still round alike.
-  const double unit = std::exp2(std::floor(std::log2(1e-9 * size)));
+  // A power of two, so translates whose sizes differ in the last bits still round alike,
+  // and a copy scaled by a power of two has the same offsets in its own unit.
+  key.unit = std::exp2(std::floor(std::log2(1e-9 * size)));
   key.offsets.reserve(static_cast<size_t>(3 * relative.rows()));
   for (Eigen::Index v = 0; v < relative.rows(); ++v)
-    for (int d = 0; d < 3; ++d) key.offsets.push_back(std::llround(relative(v, d) / unit));
+    for (int d = 0; d < 3; ++d) key.offsets.push_back(std::llround(relative(v, d) / key.unit));
   // The faces as the cell lists them, each loop from where the cell starts it: the fit
   // samples faces in this order from frames their loops set, and keeps the first of close
   // kernel centres, so cells that list them alike get the same samples, moved, and fits

@@ -35,16 +35,19 @@ struct CellGeometryKey {
 
 CellGeometryKey cell_geometry_key(const PolyhedralMesh& mesh, int cell);
 
-/// A cell's geometry up to translation: the geometry key with its vertices taken relative
-/// to the first (lowest) one and rounded to a power of two near 1e-9 of the cell's size,
-/// so that the cells a blade or a refinement makes alike across a grid compare equal
-/// although their coordinates round differently. Cells that share it are translates to
-/// that accuracy, far inside any MFS fit's (1e-3 to 1e-2), and list their faces alike.
+/// A cell's geometry up to translation and scaling by a power of two: the geometry key with
+/// its vertices taken relative to the first (lowest) one, in units of a power of two near
+/// 1e-9 of the cell's size, so that the cells a blade or a refinement makes alike across a
+/// grid, and a refinement's levels make alike but halved, compare equal although their
+/// coordinates round differently. Cells that share it are images of each other under
+/// x ↦ anchor' + (unit'/unit)(x − anchor) to that accuracy, far inside any MFS fit's (1e-3
+/// to 1e-2), and list their faces alike.
 struct CellShapeKey {
   std::vector<std::int64_t> offsets;  ///< 3 per sorted vertex, in units of the rounding
   std::vector<int> structure;         ///< face count, then each face's size and loop as the cell lists them
   std::vector<int> local;             ///< as CellGeometryKey's
   Eigen::Vector3d anchor;             ///< the first sorted vertex
+  double unit = 1;                    ///< the offsets' unit: a power of two
   std::uint64_t hash = 0;
 
   bool operator==(const CellShapeKey& other) const {

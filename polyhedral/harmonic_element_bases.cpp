@@ -52,7 +52,8 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   }
   // Cells that are translates of one another share one fit: a blade through a grid cuts
   // every crossed cell alike (the 2,048 pieces of docs/performance.md's cut take a few
-  // fits), and so does a refinement. The first of them in cell order is fitted.
+  // fits), and so does a refinement, whose levels also repeat its cells halved. The first
+  // of them in cell order is fitted.
   std::vector<CellShapeKey> shapes(cells);
   std::vector<int> fitted_for(cells, -1);  // the translate whose fit a cell takes
   std::vector<int> to_fit;
@@ -91,8 +92,9 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
     // Node local[k] here is node local[k] of the source, both sorted by position.
     std::vector<int> order(shapes[cell].local.size());
     for (size_t k = 0; k < order.size(); ++k) order[shapes[cell].local[k]] = shapes[source].local[k];
-    cells_[cell].mfs = cells_[source].mfs->reordered(order).translated(shapes[cell].anchor - shapes[source].anchor);
-    ++translated_bases_;
+    cells_[cell].mfs = cells_[source].mfs->reordered(order).moved(shapes[source].anchor, shapes[cell].anchor,
+                                                                  shapes[cell].unit / shapes[source].unit);
+    ++moved_bases_;
   }
   if (remember)
     for (int cell = 0; cell < cells; ++cell)

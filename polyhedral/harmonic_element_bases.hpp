@@ -23,7 +23,7 @@ public:
   /// Keeps a reference to `mesh`. Throws NumericalError naming the cell when an MFS fit
   /// is not finite. An MFS cell whose geometry `previous` holds (an event's rebuild) takes
   /// that basis instead of a fit (harmonic_basis_memory.hpp), and a cell that is a
-  /// translate of one fitted before it takes that fit, moved; `remember` receives every
+  /// translate or a scaled copy of one fitted before it takes that fit, moved; `remember` receives every
   /// MFS cell's basis, for the next rebuild.
   HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options,
                        const HarmonicBasisMemory* previous = nullptr, HarmonicBasisMemory* remember = nullptr);
@@ -39,8 +39,9 @@ public:
   double max_boundary_residual() const;
   /// The MFS cells whose basis came from the build before (`previous`), not a fit.
   int remembered_bases() const { return remembered_bases_; }
-  /// The MFS cells that took the fit of a translate of theirs in this build (cell_shape_key).
-  int translated_bases() const { return translated_bases_; }
+  /// The MFS cells that took the fit of a translate or scaled copy of theirs in this build
+  /// (cell_shape_key).
+  int moved_bases() const { return moved_bases_; }
 
   /// Every cell tabulated with a rule of `strength`: tet_rule/hex_rule on plain cells,
   /// harmonic_cell_rule(quadrature) with harmonic_tabulation's consistency correction
@@ -73,7 +74,7 @@ private:
   const PolyhedralMesh& mesh_;
   std::vector<Cell> cells_;
   int remembered_bases_ = 0;
-  int translated_bases_ = 0;
+  int moved_bases_ = 0;
 };
 
 }  // namespace altfem::harmonic

@@ -169,8 +169,8 @@ public:
     if (!basis_cache_.empty()) facts["harmonic_basis_cache"] = basis_cache_;
     // After an event, the MFS cells it left alone, whose bases were not fitted again.
     facts["remembered_mfs_bases"] = bases_->remembered_bases();
-    // MFS cells that took the fit of a translate of theirs (one fit per shape).
-    facts["translated_mfs_bases"] = bases_->translated_bases();
+    // MFS cells that took the fit of a translate or scaled copy of theirs (one fit per shape).
+    facts["moved_mfs_bases"] = bases_->moved_bases();
     return facts;
   }
 

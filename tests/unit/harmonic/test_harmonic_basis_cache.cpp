@@ -178,6 +178,55 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
   EXPECT_EQ(HarmonicElementBases(cut.mesh, HarmonicBasisKind::mfs, denser, &memory).remembered_bases(), 0);
 }
 
+// A mesh of `mesh` and its copy scaled by `factor` about the origin and moved by `offset`,
+// side by side: a refinement's levels hold cells alike but for their size.
+PolyhedralMesh with_scaled_copy(const PolyhedralMesh& mesh, double factor, const Eigen::Vector3d& offset) {
+  PolyhedralMesh both = mesh;
+  const auto nodes = static_cast<int>(mesh.nodes.rows());
+  both.nodes.resize(2 * nodes, 3);
+  both.nodes << mesh.nodes, (factor * mesh.nodes).rowwise() + offset.transpose();
+  for (std::vector<int> face : mesh.faces) {
+    for (int& node : face) node += nodes;
+    both.faces.push_back(std::move(face));
+  }
+  both.face_cells.resize(2 * mesh.face_count(), 2);
+  Eigen::MatrixXi copied = mesh.face_cells.array() + mesh.cell_count();
+  copied.col(1) = (mesh.face_cells.col(1).array() < 0).select(-1, copied.col(1));
+  both.face_cells << mesh.face_cells, copied;
+  for (std::vector<int> cell : mesh.cell_faces) {
+    for (int& face : cell) face += mesh.face_count();
+    both.cell_faces.push_back(std::move(cell));
+  }
+  both.cell_kinds.insert(both.cell_kinds.end(), mesh.cell_kinds.begin(), mesh.cell_kinds.end());
+  compute_polyhedral_geometry(both);
+  return both;
+}
+
+// Each cell's basis against the fit its own cell gets on the mesh's shared face
+// coordinates, at random points of its bounding box: to round-off where a cell took
+// another's fit, moved.
+void expect_every_basis_its_own_fit(const PolyhedralMesh& mesh, const HarmonicElementBases& bases,
+                                    const MfsOptions& options) {
+  std::vector<int> every(mesh.cell_count());
+  std::iota(every.begin(), every.end(), 0);
+  const auto faces = mesh_face_coordinates(mesh, every, options);
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
+    const ElementHarmonicBasis own = cell_harmonic_basis(mesh, cell, faces, options);
+    const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
+    const Eigen::Vector3d low = polyhedron.vertices.colwise().minCoeff(),
+                          high = polyhedron.vertices.colwise().maxCoeff();
+    const Eigen::ArrayXXd unit = (Eigen::ArrayXXd::Random(20, 3) + 1) / 2;
+    const Eigen::MatrixXd points =
+        (unit.rowwise() * (high - low).transpose().array()).rowwise() + low.transpose().array();
+    const Eigen::MatrixXd difference = bases.mfs_basis(cell)->values(points) - own.values(points);
+    EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-10) << "cell " << cell;
+    const double scale = own.boundary_integrals().cwiseAbs().maxCoeff();
+    EXPECT_LE((bases.mfs_basis(cell)->boundary_integrals() - own.boundary_integrals()).cwiseAbs().maxCoeff(),
+              1e-12 * scale)
+        << "cell " << cell;
+  }
+}
+
 // Cells that are translates of one another, and list their faces alike, take one fit,
 // moved (cell_shape_key): a plane through a 4 × 4 grid cuts its crossed cells alike. Each
 // moved basis is the fit its own cell gets on the mesh's shared face coordinates, to
@@ -190,22 +239,25 @@ TEST(HarmonicElementBases, TranslatesOfACellShareItsFit) {
   ASSERT_EQ(cut.crossed_cells, 4);
   const MfsOptions options;
   const HarmonicElementBases bases(cut.mesh, HarmonicBasisKind::mfs, options);
-  EXPECT_GT(bases.translated_bases(), cut.mesh.cell_count() / 2);
-  std::vector<int> every(cut.mesh.cell_count());
-  std::iota(every.begin(), every.end(), 0);
-  const auto faces = mesh_face_coordinates(cut.mesh, every, options);
-  for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
-    const ElementHarmonicBasis own = cell_harmonic_basis(cut.mesh, cell, faces, options);
-    const Polyhedron polyhedron = cell_polyhedron(cut.mesh, cell);
-    const Eigen::Vector3d low = polyhedron.vertices.colwise().minCoeff(),
-                          high = polyhedron.vertices.colwise().maxCoeff();
-    const Eigen::ArrayXXd unit = (Eigen::ArrayXXd::Random(20, 3) + 1) / 2;
-    const Eigen::MatrixXd points =
-        (unit.rowwise() * (high - low).transpose().array()).rowwise() + low.transpose().array();
-    const Eigen::MatrixXd difference = bases.mfs_basis(cell)->values(points) - own.values(points);
-    EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-10) << "cell " << cell;
-    EXPECT_LE((bases.mfs_basis(cell)->boundary_integrals() - own.boundary_integrals()).cwiseAbs().maxCoeff(), 1e-12)
-        << "cell " << cell;
+  EXPECT_GT(bases.moved_bases(), cut.mesh.cell_count() / 2);
+  expect_every_basis_its_own_fit(cut.mesh, bases, options);
+}
+
+// A cell half the size of another, or twice, is not its translate: the two may share a fit
+// only scaled. A refinement's levels make such cells (a hanging node on a face at every
+// level), and a basis moved without its scale would be that of a cell of another size.
+TEST(HarmonicElementBases, ScaledCopiesOfACellShareItsFitScaled) {
+  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1));
+  const PolyhedralMesh grid = polyhedral_mesh_from_volume_mesh(structured_grid(box, {2, 1, 1}, ElementType::hex8));
+  const PolyhedralCut cut =
+      cut_polyhedral_mesh(grid, CuttingPlane(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d(1, 0, 0)));
+  const MfsOptions options;
+  for (double factor : {0.5, 2.0, 3.0}) {
+    const PolyhedralMesh mesh = with_scaled_copy(cut.mesh, factor, Eigen::Vector3d(10, 0, 0));
+    const HarmonicElementBases bases(mesh, HarmonicBasisKind::mfs, options);
+    // A power of two scales exactly: the copy takes the original's fits; 3 does not.
+    EXPECT_EQ(bases.moved_bases(), factor == 3.0 ? 0 : cut.mesh.cell_count()) << "factor " << factor;
+    expect_every_basis_its_own_fit(mesh, bases, options);
   }
 }
 
