@@ -1,5 +1,6 @@
 #include "polyhedral/element_harmonic_basis.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
@@ -277,6 +278,24 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   };
   fill_system();
   boundary_residual_ = solve_mfs_least_squares(augmented, c + 4, fill_system, coefficients_);
+  restore_linear_precision((element.vertices.rowwise() - origin_.transpose()) / scale_);
+}
+
+void ElementHarmonicBasis::restore_linear_precision(const Eigen::MatrixX3d& nodes) {
+  // The node functions' data sum to 1 and their node-weighted sums to x at every
+  // collocation point, which the linear polynomial fits exactly: in exact arithmetic
+  // Σ_i N_i = 1 and Σ_i x_i N_i = x, the coefficients' polynomial rows carrying them and
+  // the kernel rows summing to zero. The solve's round-off leaves them off by what its
+  // kernel weights amplify (1e-10 on a bunny's cut cell). The smallest change of the
+  // coefficients that restores them, C ← C − (C M − E)(MᵀM)⁻¹Mᵀ with M = [Y | 1] (the
+  // nodes' local coordinates, #nodes × 4) and E the polynomial rows' identity.
+  const Eigen::Index c = coefficients_.rows() - 4;
+  Eigen::MatrixXd basis(nodes.rows(), 4);
+  basis << nodes, Eigen::VectorXd::Ones(nodes.rows());
+  Eigen::MatrixXd defect = coefficients_ * basis;  // (#centres + 4) × 4
+  defect.bottomRows(4) -= Eigen::Matrix4d::Identity();
+  const Eigen::Matrix4d gram = basis.transpose() * basis;
+  coefficients_ -= defect * gram.ldlt().solve(basis.transpose());
 }
 
 void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorXd& values,

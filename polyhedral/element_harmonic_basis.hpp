@@ -75,6 +75,9 @@ public:
 
 private:
   ElementHarmonicBasis() = default;
+  /// Makes the coefficients reproduce constants and linear fields exactly (`nodes`: the
+  /// nodes' local coordinates, #nodes × 3).
+  void restore_linear_precision(const Eigen::MatrixX3d& nodes);
 
   Eigen::Vector3d origin_;
   double scale_ = 1;

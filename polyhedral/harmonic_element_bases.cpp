@@ -30,8 +30,8 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
                                            HarmonicBasisMemory* remember)
     : mesh_(mesh), cells_(static_cast<size_t>(mesh.cell_count())) {
   const int cells = mesh.cell_count();
-  std::vector<int> mfs_cells;  // to fit
-  std::vector<CellGeometryKey> keys(previous || remember ? static_cast<size_t>(cells) : 0);
+  std::vector<int> mfs_cells;  // to fit, or to move a fit to
+  std::vector<CellShapeKey> shapes(cells);
   for (int cell = 0; cell < cells; ++cell) {
     Cell& entry = cells_[cell];
     if (kind == HarmonicBasisKind::automatic) {
@@ -42,24 +42,22 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
       }
     }
     entry.nodes = cell_nodes(mesh, cell);
-    if (!keys.empty()) keys[cell] = cell_geometry_key(mesh, cell);
-    if (std::optional<ElementHarmonicBasis> earlier = previous ? previous->find(keys[cell], options) : std::nullopt) {
+    shapes[cell] = cell_shape_key(mesh, cell);
+    if (std::optional<ElementHarmonicBasis> earlier = previous ? previous->find(shapes[cell], options) : std::nullopt) {
       entry.mfs = std::move(earlier);
       ++remembered_bases_;
       continue;
     }
     mfs_cells.push_back(cell);
   }
-  // Cells that are translates of one another share one fit: a blade through a grid cuts
+  // Cells alike but for their place and size share one fit: a blade through a grid cuts
   // every crossed cell alike (the 2,048 pieces of docs/performance.md's cut take a few
   // fits), and so does a refinement, whose levels also repeat its cells halved. The first
   // of them in cell order is fitted.
-  std::vector<CellShapeKey> shapes(cells);
-  std::vector<int> fitted_for(cells, -1);  // the translate whose fit a cell takes
+  std::vector<int> fitted_for(cells, -1);  // the cell whose fit a cell takes
   std::vector<int> to_fit;
   std::unordered_multimap<std::uint64_t, int> fitted_shapes;
   for (int cell : mfs_cells) {
-    shapes[cell] = cell_shape_key(mesh, cell);
     const auto [first, last] = fitted_shapes.equal_range(shapes[cell].hash);
     for (auto candidate = first; candidate != last && fitted_for[cell] < 0; ++candidate)
       if (shapes[candidate->second] == shapes[cell]) fitted_for[cell] = candidate->second;
@@ -89,16 +87,11 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   for (int cell : mfs_cells) {
     const int source = fitted_for[cell];
     if (source < 0) continue;
-    // Node local[k] here is node local[k] of the source, both sorted by position.
-    std::vector<int> order(shapes[cell].local.size());
-    for (size_t k = 0; k < order.size(); ++k) order[shapes[cell].local[k]] = shapes[source].local[k];
-    cells_[cell].mfs = cells_[source].mfs->reordered(order).moved(shapes[source].anchor, shapes[cell].anchor,
-                                                                  shapes[cell].unit / shapes[source].unit);
+    cells_[cell].mfs = moved_basis(*cells_[source].mfs, shapes[source], shapes[cell]);
     ++moved_bases_;
   }
   if (remember)
-    for (int cell = 0; cell < cells; ++cell)
-      if (cells_[cell].mfs) remember->add(std::move(keys[cell]), *cells_[cell].mfs);
+    for (int cell : to_fit) remember->add(shapes[cell], *cells_[cell].mfs);
 }
 
 double HarmonicElementBases::max_boundary_residual() const {

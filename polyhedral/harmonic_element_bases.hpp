@@ -21,10 +21,10 @@ namespace altfem::harmonic {
 class HarmonicElementBases {
 public:
   /// Keeps a reference to `mesh`. Throws NumericalError naming the cell when an MFS fit
-  /// is not finite. An MFS cell whose geometry `previous` holds (an event's rebuild) takes
-  /// that basis instead of a fit (harmonic_basis_memory.hpp), and a cell that is a
-  /// translate or a scaled copy of one fitted before it takes that fit, moved; `remember` receives every
-  /// MFS cell's basis, for the next rebuild.
+  /// is not finite. An MFS cell whose shape `previous` holds (an event's rebuild) takes
+  /// that fit, moved, instead of a fit of its own (harmonic_basis_memory.hpp), and a cell
+  /// alike to one fitted before it in this build takes that fit, moved; `remember`
+  /// receives the shapes fitted, for the next rebuild.
   HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options,
                        const HarmonicBasisMemory* previous = nullptr, HarmonicBasisMemory* remember = nullptr);
 
@@ -37,7 +37,7 @@ public:
   const ElementHarmonicBasis* mfs_basis(int cell) const { return cells_[cell].mfs ? &*cells_[cell].mfs : nullptr; }
   /// The largest RMS boundary misfit of the MFS fits (0 without MFS cells).
   double max_boundary_residual() const;
-  /// The MFS cells whose basis came from the build before (`previous`), not a fit.
+  /// The MFS cells whose basis came from the builds before (`previous`), not a fit.
   int remembered_bases() const { return remembered_bases_; }
   /// The MFS cells that took the fit of a translate or scaled copy of theirs in this build
   /// (cell_shape_key).

@@ -53,7 +53,10 @@ public:
       // Kept only where an event can rebuild on them.
       bool events_rebuild = false;
       for (const SceneEvent& event : scene.events) events_rebuild |= event.kind != EventKind::release;
-      if (events_rebuild) basis_memory_ = std::make_shared<HarmonicBasisMemory>(spec.mfs);
+      // Every shape the run has met: the memory of the build before, and this one's.
+      if (events_rebuild)
+        basis_memory_ = handed && handed->bases ? std::make_shared<HarmonicBasisMemory>(*handed->bases)
+                                                : std::make_shared<HarmonicBasisMemory>(spec.mfs);
       bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs,
                                                       handed ? handed->bases.get() : nullptr, basis_memory_.get());
     } else {
@@ -201,7 +204,7 @@ private:
   std::vector<int> cell_levels_;          // per cell, the refinements it came through (empty: none)
   bool own_surface_ = false;              // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::unique_ptr<HarmonicElementBases> bases_;
-  std::shared_ptr<HarmonicBasisMemory> basis_memory_;  // every MFS basis, where events rebuild
+  std::shared_ptr<HarmonicBasisMemory> basis_memory_;  // every MFS shape met, where events rebuild
   std::unique_ptr<Discretization> discretization_;     // linear, or warped (§6)
   const TabulatedElements* elements_ = nullptr;        // its stiffness tabulation
   double quadrature_seconds_ = 0;

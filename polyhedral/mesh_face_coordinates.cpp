@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "polyhedral/canonical_cell.hpp"
+
 namespace altfem::harmonic {
 
 std::vector<std::optional<FaceHarmonicCoordinates>> mesh_face_coordinates(const PolyhedralMesh& mesh,
@@ -31,20 +33,22 @@ std::vector<std::optional<FaceHarmonicCoordinates>> mesh_face_coordinates(const 
 ElementHarmonicBasis cell_harmonic_basis(const PolyhedralMesh& mesh, int cell,
                                          const std::vector<std::optional<FaceHarmonicCoordinates>>& faces,
                                          const MfsOptions& options) {
-  const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
-  const std::vector<int>& cell_faces = mesh.cell_faces[cell];
-  std::vector<ElementFace> element_faces(cell_faces.size());
-  for (size_t f = 0; f < cell_faces.size(); ++f) {
-    const int face = cell_faces[f];
+  const CanonicalCell canonical = canonical_cell(mesh, cell);
+  std::vector<ElementFace> element_faces(canonical.mesh_faces.size());
+  for (size_t f = 0; f < canonical.mesh_faces.size(); ++f) {
+    const int face = canonical.mesh_faces[f];
     if (!faces[face])
       throw std::invalid_argument("cell_harmonic_basis: face " + std::to_string(face) + " has no coordinates");
-    // cell_polyhedron numbers the cell's nodes and keeps the stored loop, reversed for
-    // the face's second cell: undo the reversal to match the coordinates' columns.
+    // The coordinates' columns are the stored loop's nodes, which the cell numbers as
+    // cell_nodes does.
     element_faces[f].coordinates = &*faces[face];
-    element_faces[f].nodes = polyhedron.faces[f];
-    if (mesh.face_cells(face, 0) != cell) std::reverse(element_faces[f].nodes.begin(), element_faces[f].nodes.end());
+    for (int node : mesh.faces[face]) {
+      const auto local = std::find(canonical.nodes.begin(), canonical.nodes.end(), node) - canonical.nodes.begin();
+      element_faces[f].nodes.push_back(canonical.sorted[local]);
+    }
   }
-  return ElementHarmonicBasis(polyhedron, element_faces, options);
+  // Fitted on the canonical cell (its nodes sorted), returned in cell_nodes order.
+  return ElementHarmonicBasis(canonical.polyhedron, element_faces, options).reordered(canonical.sorted);
 }
 
 }  // namespace altfem::harmonic
