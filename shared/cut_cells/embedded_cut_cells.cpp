@@ -64,8 +64,7 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
       std::move(cell_tetrahedra), std::move(filled_cells), rebuild.rules, rule_memory_);
   BackgroundHangingNodes hanging;
   if (refined)
-    hanging = {&refined->sources, refined->free_nodes, static_cast<int>(background.cells.rows()),
-               pieces_ ? pieces_->background_node : std::vector<int>{},
+    hanging = {&refined->sources, refined->free_nodes, pieces_ ? pieces_->background_node : std::vector<int>{},
                pieces_ ? pieces_->background_cell : std::vector<int>{}};
   fcm_ = build_fcm_discretization(
       cells, rules, materials.pointers(), materials.ids_of(corner_centroids(cells)), dirichlet, settings.options,

@@ -111,9 +111,10 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     std::vector<int> grid_node(used_nodes.size());
     for (size_t i = 0; i < used_nodes.size(); ++i)
       grid_node[i] = hanging.grid_node.empty() ? used_nodes[i] : hanging.grid_node[used_nodes[i]];
-    std::vector<char> kept_leaf(static_cast<size_t>(hanging.grid_cells), 0);
-    for (const int cell : kept) kept_leaf[hanging.grid_cell.empty() ? cell : hanging.grid_cell[cell]] = 1;
-    KeptHangingNodes kept_hanging = kept_hanging_nodes(grid_node, hanging.grid_free_nodes, *hanging.sources, kept_leaf);
+    std::vector<int> cell_leaf;
+    for (const int cell : kept) cell_leaf.push_back(hanging.grid_cell.empty() ? cell : hanging.grid_cell[cell]);
+    KeptHangingNodes kept_hanging =
+        kept_hanging_nodes(grid_node, hanging.grid_free_nodes, *hanging.sources, fcm.mesh.cells, cell_leaf);
     std::vector<int> renumbered(used_nodes.size());
     for (size_t i = 0; i < used_nodes.size(); ++i) renumbered[kept_hanging.new_index[i]] = used_nodes[i];
     used_nodes = std::move(renumbered);

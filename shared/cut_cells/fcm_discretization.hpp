@@ -51,7 +51,7 @@ struct FcmCellCounts {
 /// (piece_mesh's background_node and background_cell; empty: that mesh is the grid).
 struct BackgroundHangingNodes {
   const HangingNodeSources* sources = nullptr;  ///< null: none hangs
-  int grid_free_nodes = 0, grid_cells = 0;
+  int grid_free_nodes = 0;
   std::vector<int> grid_node, grid_cell;
 };
 

@@ -18,6 +18,9 @@
 //     the uniform grid's energy with at most a third of its DOFs: fcm is conforming and
 //     integrates this beam exactly, so Π(u_h) − Π(u) = ½ |u − u_h|²_E and a lower energy
 //     is a smaller error.
+//   - Where the material splits at the refinement's edge (a node copied per part of the
+//     material around it), a hanging node takes its coarse cell's copy: the half-ball's
+//     solution crosses an adaptive refinement with energy and mass unchanged.
 //   - A halving split, the ghost penalty and a tetrahedral grid are refused before the run.
 #include <gtest/gtest.h>
 
@@ -126,6 +129,33 @@ TEST(RefineFcm, RefiningEveryCellWithMaterialIsTheUniformlyFinerGrid) {
             uniform->method().discretization().constrained_dofs().size());
   const double energy = uniform->method().discretization().energy(uniform->method().interpolate(smooth));
   EXPECT_NEAR(refined->method().discretization().energy(refined->method().interpolate(smooth)), energy, 1e-11 * energy);
+}
+
+// Where the material splits at the refinement's edge, a coarse cell's node has one copy
+// per part of the material around it (a coarse cell's piece and a finer cell's piece
+// that meet only beyond the node's cells), and a node hanging on that cell must take the
+// copy the cell's own piece holds: its interpolation is what the finer cells conform to.
+// The half-ball's Hex20 grid refined by the error indicator makes such nodes (a run
+// stopped on them with exit 3 before). Rules exact for the energy (strength 6) and no
+// cell discarded, so the solution crosses the refinement with energy and mass unchanged.
+TEST(RefineFcm, ANodeHangingWhereTheMaterialSplitsTakesItsCoarseCellsCopy) {
+  const Scene scene =
+      load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/manufactured_half_ball.json",
+                 {parse_scene_override("discretization/fcm={\"cell\": \"hex20\", \"resolution\": [4, 4, 2], "
+                                       "\"quadrature_order\": 6, \"discard_fraction\": 0, \"stabilization\": 0}"),
+                  parse_scene_override("output={\"volume\": false, \"surface\": false}"),
+                  refine_cycles("\"fraction\": 0.5", 10, 1)});
+  const std::filesystem::path output = std::filesystem::path(ALTFEM_BINARY_DIR) / "verify_refine_fcm_split_nodes";
+  std::filesystem::remove_all(output);
+  const nlohmann::json summary =
+      run_simulation(scene, load_scene_geometry(scene), "fcm", cli::find_method("fcm"), output, 0.0);
+  std::filesystem::remove_all(output);
+  ASSERT_EQ(summary["status"], "ok") << summary.dump();
+  EXPECT_GT(summary["facts_at_end"]["split_nodes"].get<int>(), 0);
+  EXPECT_GT(summary["facts_at_end"]["hanging_nodes"].get<int>(), 0);
+  const nlohmann::json& conserved = summary["events"].at(0)["conserved"];
+  EXPECT_LE(std::abs(conserved["energy_jump_relative"].get<double>()), 1e-12);
+  EXPECT_LE(std::abs(conserved["mass_change"].get<double>()), 1e-12);
 }
 
 // On an L-shaped beam the grid's cells in the empty quadrant are not kept. A node hanging
