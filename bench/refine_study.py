@@ -38,25 +38,27 @@ def compare(scene, out, altfem):
         return [row for row in csv.DictReader(table) if row["status"] == "ok" and row["is_reference"] == "0"]
 
 
-def table(title, rows):
+def table(title, rows, error="relative_rms_error"):
+    """A convergence table of `rows` (results.csv's) by the column `error`."""
     print(f"\n{title}")
     print(f"{'run':44} {'DOFs':>8} {'error':>10} {'time [s]':>9} {'rate':>6}")
     previous = None
     for row in rows:
-        dofs, error = int(row["dofs"]), float(row["relative_rms_error"])
+        dofs, value = int(row["dofs"]), float(row[error])
         # error ~ DOFs^(-rate/3): the rate in h of a 3D mesh.
         rate = "" if previous is None or dofs == previous[0] else \
-            f"{-3 * math.log(error / previous[1]) / math.log(dofs / previous[0]):6.2f}"
-        print(f"{row['label'][:44]:44} {dofs:8d} {error:10.3e} {float(row['total_s']):9.3f} {rate:>6}")
-        previous = (dofs, error)
+            f"{-3 * math.log(value / previous[1]) / math.log(dofs / previous[0]):6.2f}"
+        print(f"{row['label'][:44]:44} {dofs:8d} {value:10.3e} {float(row['total_s']):9.3f} {rate:>6}")
+        previous = (dofs, value)
 
 
-def report_reaching(method, uniform_series, adaptive_series):
-    """Prints the cheapest adaptive run that reaches the finest uniform run's error, with its
-    DOFs and time as fractions of that run's (issue #34's target: <= 1/3 and <= 1/2)."""
+def report_reaching(method, uniform_series, adaptive_series, error="relative_rms_error"):
+    """Prints the cheapest adaptive run that reaches the finest uniform run's error (the
+    column `error`), with its DOFs and time as fractions of that run's (issue #34's target:
+    <= 1/3 and <= 1/2)."""
     finest = uniform_series[-1]
-    target = float(finest["relative_rms_error"])
-    reaching = [r for r in adaptive_series if float(r["relative_rms_error"]) <= target]
+    target = float(finest[error])
+    reaching = [r for r in adaptive_series if float(r[error]) <= target]
     if not reaching:
         print(f"{method}: no adaptive run reaches the finest uniform error {target:.3e}")
         return
@@ -66,14 +68,16 @@ def report_reaching(method, uniform_series, adaptive_series):
           f"{float(best['total_s']) / float(finest['total_s']):.2f} of the time")
 
 
-def plot(series, path, title="refine_bar: adaptive against uniform refinement"):
-    """Error against DOFs and against seconds, a uniform and an adaptive line per method."""
+def plot(series, path, title="refine_bar: adaptive against uniform refinement", error="relative_rms_error",
+         ylabel="RMS surface error / RMS displacement"):
+    """Error (the column `error`) against DOFs and against seconds, a uniform and an
+    adaptive line per method."""
     lines = {}
     for (method, kind), rows in series.items():
         color = {"dg": "C0", "harmonic": "C1", "fem": "C2"}.get(method, "C3")
-        points = [(int(r["dofs"]), float(r["total_s"]), float(r["relative_rms_error"])) for r in rows]
+        points = [(int(r["dofs"]), float(r["total_s"]), float(r[error])) for r in rows]
         lines[f"{method} {kind}"] = (line_style(kind == "uniform", color), points)
-    plot_error_against_cost(lines, "RMS surface error / RMS displacement", title, path)
+    plot_error_against_cost(lines, ylabel, title, path)
 
 
 def main():
