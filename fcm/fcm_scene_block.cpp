@@ -82,7 +82,7 @@ const scene_schema::ObjectRule fcm_rule{
       .lower = scene_schema::positive},
      {.key = "discard_fraction",
       .type = ValueType::number,
-      .default_value = 1e-4,
+      .default_value = 0,
       .lower = scene_schema::non_negative,
       .upper = scene_schema::Bound{1.0, false}},
      {.key = "stabilization", .type = ValueType::number, .default_value = 1e-6, .lower = scene_schema::non_negative},

@@ -25,8 +25,11 @@ enum class StabilizedMatrices { none, mass, mass_and_stiffness };
 struct FcmOptions {
   int quadrature_strength = 4;       ///< stiffness rules (the paper: Hex20 4, Tet10 3, Hex8 2)
   int mass_quadrature_strength = 8;  ///< mass and load rules (higher, never simplified; §6)
-  /// Cells whose volume fraction is below this are discarded (§5.3; 0: keep all).
-  double discard_fraction = 1e-4;
+  /// Cells whose volume fraction is below this are discarded (§5.3; 0: keep all, the
+  /// default: the stabilisation keeps the smallest cells' matrices definite, and a
+  /// discarded cell's share of a surface load reaches the nodes of its kept neighbours
+  /// through their bases extrapolated, docs/performance.md, "Discarding cut cells").
+  double discard_fraction = 0;
   /// §5.3: every cut cell also gets the uncut cell's standard points with weights
   /// scaled by this factor (0: off). They are added to the final (simplified) rule, so
   /// that simplification never trades them against the material's points.
