@@ -7,7 +7,8 @@ namespace altfem::harmonic {
 namespace {
 
 // v2: the fits by the normal equations (mfs_least_squares.hpp) give other bits than v1's QR.
-constexpr char magic[] = "altfem-harmonic-bases-v2";
+// v3: fitted on the canonical cell (canonical_cell.hpp), linear precision restored.
+constexpr char magic[] = "altfem-harmonic-bases-v3";
 
 }  // namespace
 
