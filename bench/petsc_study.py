@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """PETSc's preconditioners against altfem's own and CHOLMOD (issue #37, step 1): CG
 iterations to a relative residual of 1e-8 and seconds per method and size, for GAMG with
-the rigid-body modes as its near-null space (solver.rigid_body_modes, the default), GAMG
-without them, hypre's BoomerAMG with nodal coarsening, altfem's own PCG (the method's
-preconditioner, or incomplete Cholesky for fem), and CHOLMOD. Each row is one `altfem run`
+the rigid-body modes as its near-null space (solver.rigid_body_modes, the default) and the
+method's preconditioner smoothing its finest level (solver.method_smoother, the default),
+GAMG with its own smoother, GAMG without the rotations, hypre's BoomerAMG with nodal
+coarsening, altfem's own PCG (the method's preconditioner, or incomplete Cholesky for fem),
+and CHOLMOD. Each row is one `altfem run`
 of a static scene, read back from its summary.json: set-up is the factorisation phase
 (the preconditioner's set-up for the iterative solvers), solve the solve phase. Prints a
 markdown table; `--largest` adds the biggest grids (minutes).
@@ -22,6 +24,9 @@ HALF_BALL = ROOT / "scenes/manufactured_half_ball.json"
 SOLVERS = {
     "CHOLMOD": ["solver/linear=cholmod"],
     "GAMG + rigid modes": ["solver/linear=petsc"],
+    # GAMG's own smoother on every level, where the row above smooths the finest level
+    # with the method's preconditioner (fcm's Additive Schwarz, dg's; solver.method_smoother).
+    "GAMG, its own smoother": ["solver/linear=petsc", "solver/method_smoother=false"],
     "GAMG, translations only": ["solver/linear=petsc", "solver/rigid_body_modes=false"],
     "BoomerAMG (nodal)": ["solver/linear=petsc",
                           "solver/petsc_options=-ksp_type cg -pc_type hypre -pc_hypre_type boomeramg "

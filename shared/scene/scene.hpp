@@ -190,9 +190,12 @@ struct SolverSpec {
   std::string preconditioner = "jacobi";  ///< one of preconditioner_names (shared/solve)
   double linear_tolerance = 1e-10;
   int linear_max_iterations = 10000;
-  /// `petsc` only: PETSc options, and whether the rigid-body modes are its preconditioner's near-null space.
+  /// `petsc` only: PETSc options, whether the rigid-body modes are its preconditioner's
+  /// near-null space, and whether the method's own preconditioner smooths multigrid's
+  /// finest level (on one process).
   std::string petsc_options;
   bool rigid_body_modes = true;
+  bool method_smoother = true;
   /// Halvings of a failed implicit step or load step (docs/scene-schema.md, "Solver").
   int cutbacks = 10;
 };

@@ -257,6 +257,7 @@ const ObjectRule solver{
      {.key = "linear_max_iterations", .type = ValueType::integer, .default_value = 10000, .lower = at_least_one},
      {.key = "petsc_options", .type = ValueType::string, .default_value = "-ksp_type cg -pc_type gamg"},
      flag("rigid_body_modes", true),
+     flag("method_smoother", true),
      {.key = "cutbacks",
       .type = ValueType::integer,
       .default_value = 10,

@@ -98,6 +98,7 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
     options.petsc_options = scene.solver.petsc_options;
     options.share_row_owners = method.discretization().matrix_share_owners();
     if (scene.solver.rigid_body_modes) options.near_null_space = rigid_body_modes(method);
+    options.method_smoother = scene.solver.method_smoother;
   }
   return options;
 }

@@ -72,6 +72,9 @@ struct LinearSolverOptions {
   /// conditions (#dofs × 6: the rigid-body modes, DOF 3b + i being component i of basis
   /// function b), which smoothed-aggregation AMG builds its coarse spaces from; empty for none.
   Eigen::MatrixXd near_null_space;
+  /// `petsc` on one process: `custom_preconditioner` (a method's own: FCM's Additive
+  /// Schwarz, dg's) as the smoother of multigrid's finest level (petsc_finest_smoother.hpp).
+  bool method_smoother = true;
   /// `petsc` over several ranks: when the matrices handed over are each rank's share of a
   /// sum on a pattern of its own (Discretization::matrix_share_owners), the rank owning
   /// each block of three rows (#dofs / 3); empty when every rank hands over the whole.

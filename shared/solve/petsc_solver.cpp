@@ -3,6 +3,7 @@
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/solve/partitioned_rows.hpp"
+#include "shared/solve/petsc_finest_smoother.hpp"
 #include "shared/solve/petsc_session.hpp"
 #include "shared/solve/process_ranks.hpp"
 
@@ -34,6 +35,8 @@ public:
     if (ranks::distributed()) {
       communicator_ = PETSC_COMM_WORLD;
       share_row_owners_ = options.share_row_owners;
+    } else if (options.method_smoother) {
+      smoother_factory_ = options.custom_preconditioner;
     }
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
@@ -154,6 +157,15 @@ protected:
     }
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
+    if (smoother_factory_) {
+      // The method's own preconditioner smooths the finest level (petsc_finest_smoother.hpp).
+      smoother_ = smoother_factory_();
+      smoother_->compute(matrix);
+      rows_in_method_order_ = columns_in_petsc_order(static_cast<PetscInt>(matrix.rows()));
+      PC preconditioner;
+      check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
+      check(set_finest_smoother(preconditioner, *smoother_, rows_in_method_order_), "the finest level's smoother");
+    }
     if (!reported_unused_options_) report_unused_options();
   }
 
@@ -383,6 +395,11 @@ private:
   std::vector<int> share_row_owners_;  // over several ranks, for shares: each block row's rank
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
+  // On one process, the method's own preconditioner (FCM's Additive Schwarz) as the
+  // finest level's smoother, and PETSc's rows in the method's numbering for it.
+  PreconditionerFactory smoother_factory_;
+  std::unique_ptr<Preconditioner> smoother_;
+  std::vector<Eigen::Index> rows_in_method_order_;
 };
 
 }  // namespace
