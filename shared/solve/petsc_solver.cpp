@@ -62,7 +62,8 @@ public:
     // bound the spectrum it leaves, not the Jacobi-smoothed one GAMG's aggregation estimates
     // (the half-ball's 8 × 8 × 4 Hex20 grid: 97 iterations with GAMG's bounds, 89 with its own).
     PetscBool gamg = PETSC_FALSE;
-    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCGAMG, &gamg), "PetscObjectTypeCompare");
+    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCGAMG, &gamg),
+          "PetscObjectTypeCompare");
     if (smoother_factory_ && gamg && options.petsc_options.find("pc_gamg_use_sa_esteig") == std::string::npos)
       check(PCGAMGSetUseSAEstEig(preconditioner, PETSC_FALSE), "PCGAMGSetUseSAEstEig");
   }
