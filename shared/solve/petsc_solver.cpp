@@ -36,7 +36,7 @@ public:
       communicator_ = PETSC_COMM_WORLD;
       share_row_owners_ = options.share_row_owners;
     } else if (options.method_smoother) {
-      smoother_factory_ = options.custom_preconditioner;
+      finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
     }
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
@@ -58,14 +58,7 @@ public:
     const bool norm_chosen = options.petsc_options.find("-ksp_norm_type") != std::string::npos;
     if (!norm_chosen && std::string(method) == KSPCG)
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-    // With the method's smoother on the finest level, that level's Chebyshev iteration must
-    // bound the spectrum it leaves, not the Jacobi-smoothed one GAMG's aggregation estimates
-    // (the half-ball's 8 × 8 × 4 Hex20 grid: 97 iterations with GAMG's bounds, 89 with its own).
-    PetscBool gamg = PETSC_FALSE;
-    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCGAMG, &gamg),
-          "PetscObjectTypeCompare");
-    if (smoother_factory_ && gamg && options.petsc_options.find("pc_gamg_use_sa_esteig") == std::string::npos)
-      check(PCGAMGSetUseSAEstEig(preconditioner, PETSC_FALSE), "PCGAMGSetUseSAEstEig");
+    check(finest_smoother_.configure(preconditioner, options.petsc_options), "the finest level's smoother");
   }
 
   ~PetscSolver() override {
@@ -165,14 +158,12 @@ protected:
     }
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
-    if (smoother_factory_) {
-      // The method's own preconditioner smooths the finest level (petsc_finest_smoother.hpp).
-      smoother_ = smoother_factory_();
-      smoother_->compute(matrix);
-      rows_in_method_order_ = columns_in_petsc_order(static_cast<PetscInt>(matrix.rows()));
+    if (finest_smoother_) {  // on one process: the method's own preconditioner
       PC preconditioner;
       check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
-      check(set_finest_smoother(preconditioner, *smoother_, rows_in_method_order_), "the finest level's smoother");
+      const auto rows = static_cast<PetscInt>(matrix.rows());
+      check(finest_smoother_.install(preconditioner, matrix, columns_in_petsc_order(rows)),
+            "the finest level's smoother");
     }
     if (!reported_unused_options_) report_unused_options();
   }
@@ -403,11 +394,7 @@ private:
   std::vector<int> share_row_owners_;  // over several ranks, for shares: each block row's rank
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
-  // On one process, the method's own preconditioner (FCM's Additive Schwarz) as the
-  // finest level's smoother, and PETSc's rows in the method's numbering for it.
-  PreconditionerFactory smoother_factory_;
-  std::unique_ptr<Preconditioner> smoother_;
-  std::vector<Eigen::Index> rows_in_method_order_;
+  FinestLevelSmoother finest_smoother_{{}};  // on one process: the method's preconditioner (petsc_finest_smoother.hpp)
 };
 
 }  // namespace
