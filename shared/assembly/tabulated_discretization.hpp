@@ -53,6 +53,8 @@ struct DiscretizationParts {
   /// data inside the energy (DG's lifted Dirichlet data). Read at set_time; none if empty.
   std::function<void(double time, std::span<double> shifts)> deformation_shifts;
   PreconditionerFactory preconditioner;
+  /// A coarser space for multigrid (Discretization::coarse_space); empty for none.
+  CoarseSpace coarse_space;
 };
 
 class TabulatedDiscretization final : public Discretization {
@@ -88,6 +90,7 @@ public:
   Eigen::VectorXd prescribed_displacement(double time) const override;
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
   PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }
+  const CoarseSpace& coarse_space() const override { return parts_.coarse_space; }
   Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& displacement) const override {
     return assembler_->mean_cauchy_stress(displacement);
   }

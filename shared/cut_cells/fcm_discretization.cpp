@@ -7,6 +7,7 @@
 #include "shared/cut_cells/kept_hanging_nodes.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/fem/constrain_lagrange_elements.hpp"
+#include "shared/fem/first_order_space.hpp"
 #include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -170,6 +171,9 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   fcm.schwarz_blocks = static_cast<int>(blocks.size());
   const double epsilon = options.schwarz_epsilon;
   parts.preconditioner = [blocks, epsilon] { return std::make_unique<AdditiveSchwarzPreconditioner>(blocks, epsilon); };
+  // Hanging nodes' functions belong to their masters: the first-order space of a
+  // refined grid is left out (a coarse function would have to follow the constraints).
+  if (!constrained) parts.coarse_space = first_order_space(fcm.mesh);
   fcm.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
   return fcm;
 }

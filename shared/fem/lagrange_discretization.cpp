@@ -1,6 +1,7 @@
 #include "shared/fem/lagrange_discretization.hpp"
 
 #include "shared/fem/constrain_lagrange_elements.hpp"
+#include "shared/fem/first_order_space.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/quadrature/reference_rules.hpp"
@@ -29,6 +30,9 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   if (hanging) parts.elements = constrain_lagrange_elements(parts.elements, *constraints);
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
+  // A refined grid's hanging nodes belong to their masters: no first-order space there
+  // (a coarse function would have to follow the constraints).
+  if (!hanging) parts.coarse_space = first_order_space(mesh);
   return std::make_unique<TabulatedDiscretization>(std::move(parts));
 }
 

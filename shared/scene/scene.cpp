@@ -258,6 +258,7 @@ Scene scene_from_json(json resolved, const std::filesystem::path& file) {
                   solver["petsc_options"].get<std::string>(),
                   solver["rigid_body_modes"].get<bool>(),
                   solver["method_smoother"].get<bool>(),
+                  solver["p_multigrid"].get<bool>(),
                   solver["cutbacks"].get<int>()};
 
   const json& output = resolved["output"];

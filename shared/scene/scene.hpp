@@ -192,10 +192,13 @@ struct SolverSpec {
   int linear_max_iterations = 10000;
   /// `petsc` only: PETSc options, whether the rigid-body modes are its preconditioner's
   /// near-null space, and whether the method's own preconditioner smooths multigrid's
-  /// finest level (on one process).
+  /// finest level (on one process), and whether GAMG works on the method's first-order
+  /// space as a two-level p-multigrid's coarse level (on one process, higher-order
+  /// fem and fcm).
   std::string petsc_options;
   bool rigid_body_modes = true;
   bool method_smoother = true;
+  bool p_multigrid = true;
   /// Halvings of a failed implicit step or load step (docs/scene-schema.md, "Solver").
   int cutbacks = 10;
 };

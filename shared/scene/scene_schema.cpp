@@ -258,6 +258,7 @@ const ObjectRule solver{
      {.key = "petsc_options", .type = ValueType::string, .default_value = "-ksp_type cg -pc_type gamg"},
      flag("rigid_body_modes", true),
      flag("method_smoother", true),
+     flag("p_multigrid", true),
      {.key = "cutbacks",
       .type = ValueType::integer,
       .default_value = 10,

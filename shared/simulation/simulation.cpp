@@ -99,6 +99,7 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
     options.share_row_owners = method.discretization().matrix_share_owners();
     if (scene.solver.rigid_body_modes) options.near_null_space = rigid_body_modes(method);
     options.method_smoother = scene.solver.method_smoother;
+    if (scene.solver.p_multigrid) options.coarse_space = method.discretization().coarse_space();
   }
   return options;
 }

@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "shared/solve/coarse_space.hpp"
 #include "shared/solve/dirichlet_dofs.hpp"
 #include "shared/solve/explicit_mass.hpp"
 #include "shared/solve/linear_solver.hpp"
@@ -117,6 +118,12 @@ public:
   /// A method-specific preconditioner for the iterative linear solvers (FCM's
   /// Additive Schwarz, DG's block Jacobi); empty for none.
   virtual PreconditionerFactory preconditioner_factory() const { return {}; }
+  /// A coarser space inside this one for multigrid's coarse level (fem's and fcm's
+  /// first-order space on higher-order elements); empty for none.
+  virtual const CoarseSpace& coarse_space() const {
+    static const CoarseSpace none;
+    return none;
+  }
   /// Per element the Cauchy stress averaged over it (#elements × 9, row-major σ), in
   /// the order of the method's volume cells; empty when the discretization has none.
   virtual Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& /*displacement*/) const { return {}; }

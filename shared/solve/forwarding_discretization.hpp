@@ -41,6 +41,7 @@ public:
   const std::vector<ConstraintHolders>& constraint_holders() const override { return inner_->constraint_holders(); }
   bool imposes_conditions_weakly() const override { return inner_->imposes_conditions_weakly(); }
   PreconditionerFactory preconditioner_factory() const override { return inner_->preconditioner_factory(); }
+  const CoarseSpace& coarse_space() const override { return inner_->coarse_space(); }
   Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& u) const override {
     return inner_->element_cauchy_stress(u);
   }

@@ -5,6 +5,7 @@
 // run-time preconditioner, and PETSc's Krylov solvers and preconditioners (petsc_solver.hpp). Symbolic analysis happens
 // once per sparsity pattern and is reused across Newton iterations and time steps; the statistics feed summary.json
 // (timings_s.analysis, timings_s.factorisation, counts.*).
+#include "shared/solve/coarse_space.hpp"
 #include "shared/solve/preconditioner.hpp"
 
 #include <Eigen/Sparse>
@@ -75,6 +76,11 @@ struct LinearSolverOptions {
   /// `petsc` on one process: `custom_preconditioner` (a method's own: FCM's Additive
   /// Schwarz, dg's) as the smoother of multigrid's finest level (petsc_finest_smoother.hpp).
   bool method_smoother = true;
+  /// `petsc` on one process, when its preconditioner is GAMG: a coarser space of the
+  /// method (Discretization::coarse_space) on which GAMG works as the coarse level of a
+  /// two-level multigrid, the method's own space its fine level (petsc_coarse_level.hpp);
+  /// empty: GAMG on the whole.
+  CoarseSpace coarse_space;
   /// `petsc` over several ranks: when the matrices handed over are each rank's share of a
   /// sum on a pattern of its own (Discretization::matrix_share_owners), the rank owning
   /// each block of three rows (#dofs / 3); empty when every rank hands over the whole.

@@ -3,6 +3,7 @@
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/common/error.hpp"
 #include "shared/solve/partitioned_rows.hpp"
+#include "shared/solve/petsc_coarse_level.hpp"
 #include "shared/solve/petsc_finest_smoother.hpp"
 #include "shared/solve/petsc_session.hpp"
 #include "shared/solve/process_ranks.hpp"
@@ -35,8 +36,9 @@ public:
     if (ranks::distributed()) {
       communicator_ = PETSC_COMM_WORLD;
       share_row_owners_ = options.share_row_owners;
-    } else if (options.method_smoother) {
-      finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
+    } else {
+      if (options.method_smoother) finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
+      coarse_level_ = std::make_unique<FirstOrderCoarseLevel>(options.coarse_space, options.near_null_space);
     }
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
@@ -58,6 +60,7 @@ public:
     const bool norm_chosen = options.petsc_options.find("-ksp_norm_type") != std::string::npos;
     if (!norm_chosen && std::string(method) == KSPCG)
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    if (coarse_level_) check(coarse_level_->configure(preconditioner), "the first-order coarse level");
     check(finest_smoother_.configure(preconditioner, options.petsc_options), "the finest level's smoother");
   }
 
@@ -157,6 +160,11 @@ protected:
       check(MatSeqAIJRestoreArray(matrix_, &values), "MatSeqAIJRestoreArray");
     }
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
+    if (coarse_level_) {
+      PC preconditioner;
+      check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
+      check(coarse_level_->update(preconditioner, matrix_, matrix), "the first-order coarse level");
+    }
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
     if (finest_smoother_) {  // on one process: the method's own preconditioner
       PC preconditioner;
@@ -395,6 +403,7 @@ private:
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
   FinestLevelSmoother finest_smoother_{{}};  // on one process: the method's preconditioner (petsc_finest_smoother.hpp)
+  std::unique_ptr<FirstOrderCoarseLevel> coarse_level_;  // on one process (petsc_coarse_level.hpp)
 };
 
 }  // namespace

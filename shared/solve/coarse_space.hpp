@@ -1,0 +1,23 @@
+#pragma once
+// A coarser space inside a discretization's own, for multigrid's coarse level
+// (Discretization::coarse_space; fem and fcm: their first-order space,
+// shared/fem/first_order_space.hpp).
+#include <Eigen/SparseCore>
+#include <vector>
+
+namespace altfem {
+
+/// Coarse functions as functions of the fine basis (one scalar basis per displacement
+/// component, as everywhere: function b carries DOFs 3b, 3b + 1, 3b + 2).
+struct CoarseSpace {
+  /// #basis functions × #coarse functions: column j holds coarse function j's values
+  /// at the fine basis' nodes (the fine function that interpolates it).
+  Eigen::SparseMatrix<double> prolongation;
+  /// #coarse functions: the fine basis function at the same node (coarse function j
+  /// is 1 there), so a nodal field's coarse values are its fine ones there.
+  std::vector<int> fine_function;
+
+  bool empty() const { return fine_function.empty(); }
+};
+
+}  // namespace altfem
