@@ -1,9 +1,11 @@
 #!/usr/bin/python3
 """PETSc's preconditioners against altfem's own and CHOLMOD (issue #37, step 1): CG
 iterations to a relative residual of 1e-8 and seconds per method and size, for GAMG with
-the rigid-body modes as its near-null space (solver.rigid_body_modes, the default) and the
-method's preconditioner smoothing its finest level (solver.method_smoother, the default),
-GAMG with its own smoother, GAMG without the rotations, hypre's BoomerAMG with nodal
+the rigid-body modes as its near-null space (solver.rigid_body_modes, the default), on
+higher-order fem and fcm elements working on the first-order space inside
+(solver.p_multigrid, the default) and with the method's preconditioner smoothing its
+finest level (solver.method_smoother, the default), GAMG on the whole space, GAMG with its
+own smoother, GAMG without the rotations, hypre's BoomerAMG with nodal
 coarsening, altfem's own PCG (the method's preconditioner, or incomplete Cholesky for fem),
 and CHOLMOD. Each row is one `altfem run`
 of a static scene, read back from its summary.json: set-up is the factorisation phase
@@ -26,6 +28,10 @@ SOLVERS = {
     "GAMG + rigid modes": ["solver/linear=petsc"],
     # GAMG's own smoother on every level, where the row above smooths the finest level
     # with the method's preconditioner (fcm's Additive Schwarz, dg's; solver.method_smoother).
+    # GAMG on the whole higher-order space, where the row above works on the first-order
+    # space inside as a two-level p-multigrid's coarse level (solver.p_multigrid: fem and
+    # fcm on quadratic elements; dg and harmonic have no such space, so the rows agree).
+    "GAMG on the whole space": ["solver/linear=petsc", "solver/p_multigrid=false"],
     "GAMG, its own smoother": ["solver/linear=petsc", "solver/method_smoother=false"],
     "GAMG, translations only": ["solver/linear=petsc", "solver/rigid_body_modes=false"],
     "BoomerAMG (nodal)": ["solver/linear=petsc",
@@ -80,9 +86,9 @@ def main():
     print("| problem | DOFs | solver | CG iterations | set-up s | solve s |")
     print("|---|---:|---|---:|---:|---:|")
     for index, (label, method, scene, settings) in enumerate(problems(arguments.largest)):
-        for solver, solver_settings in SOLVERS.items():
+        for solver_index, (solver, solver_settings) in enumerate(SOLVERS.items()):
             extra = OWN_PRECONDITIONER.get(method, []) if solver == "altfem PCG" else []
-            out = arguments.out / f"{index}-{solver.split()[0].strip(',')}-{len(solver_settings)}"
+            out = arguments.out / f"{index}-{solver_index}"
             summary, error = run(arguments.altfem, scene, method, settings + solver_settings + extra, out)
             if summary is None:
                 print(f"| {label} | | {solver} | failed: {error} | | |", flush=True)

@@ -193,8 +193,7 @@ struct SolverSpec {
   /// `petsc` only: PETSc options, whether the rigid-body modes are its preconditioner's
   /// near-null space, and whether the method's own preconditioner smooths multigrid's
   /// finest level (on one process), and whether GAMG works on the method's first-order
-  /// space as a two-level p-multigrid's coarse level (on one process, higher-order
-  /// fem and fcm).
+  /// space as a two-level p-multigrid's coarse level (higher-order fem and fcm).
   std::string petsc_options;
   bool rigid_body_modes = true;
   bool method_smoother = true;

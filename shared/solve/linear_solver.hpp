@@ -76,7 +76,7 @@ struct LinearSolverOptions {
   /// `petsc` on one process: `custom_preconditioner` (a method's own: FCM's Additive
   /// Schwarz, dg's) as the smoother of multigrid's finest level (petsc_finest_smoother.hpp).
   bool method_smoother = true;
-  /// `petsc` on one process, when its preconditioner is GAMG: a coarser space of the
+  /// `petsc`, when its preconditioner is GAMG: a coarser space of the
   /// method (Discretization::coarse_space) on which GAMG works as the coarse level of a
   /// two-level multigrid, the method's own space its fine level (petsc_coarse_level.hpp);
   /// empty: GAMG on the whole.

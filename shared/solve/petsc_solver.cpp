@@ -36,10 +36,10 @@ public:
     if (ranks::distributed()) {
       communicator_ = PETSC_COMM_WORLD;
       share_row_owners_ = options.share_row_owners;
-    } else {
-      if (options.method_smoother) finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
-      coarse_level_ = std::make_unique<FirstOrderCoarseLevel>(options.coarse_space, options.near_null_space);
+    } else if (options.method_smoother) {
+      finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
     }
+    coarse_level_ = std::make_unique<FirstOrderCoarseLevel>(options.coarse_space, options.near_null_space);
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
@@ -163,7 +163,9 @@ protected:
     if (coarse_level_) {
       PC preconditioner;
       check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
-      check(coarse_level_->update(preconditioner, matrix_, matrix), "the first-order coarse level");
+      check(coarse_level_->update(preconditioner, matrix_, matrix,
+                                  {petsc_of_method_, first_row_, last_row_, communicator_}),
+            "the first-order coarse level");
     }
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
     if (finest_smoother_) {  // on one process: the method's own preconditioner
@@ -403,7 +405,7 @@ private:
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
   FinestLevelSmoother finest_smoother_{{}};  // on one process: the method's preconditioner (petsc_finest_smoother.hpp)
-  std::unique_ptr<FirstOrderCoarseLevel> coarse_level_;  // on one process (petsc_coarse_level.hpp)
+  std::unique_ptr<FirstOrderCoarseLevel> coarse_level_;  // petsc_coarse_level.hpp
 };
 
 }  // namespace

@@ -67,10 +67,13 @@ TEST_P(EveryShape, PartitionOfUnityAndLinearReproductionToRoundOff) {
 }
 
 // The partition of unity ≤ 1e-10 on the cut cells of the bunny sliced at 16³,
-// many-faceted and non-convex, at their rule points: measured 5.2e-11. Both it and linear
-// reproduction are exact in the coefficients (restored after the solve) but evaluated
-// through large kernel weights that cancel: 5.3e-10 of the cell size (checked below 1e-8;
-// the patch test does not depend on it: the consistency correction makes it exact).
+// many-faceted and non-convex, at their rule points. Both it and linear reproduction are
+// exact in the coefficients (restored after the solve) but evaluated through large kernel
+// weights that cancel, so what is left is the evaluation's round-off, which depends on
+// the order of the products' sums and so on the instruction set of a -march=native
+// build: 9.4e-11 with AVX2 (linear 9.5e-10 of the cell size), 1.4e-10 with AVX-512 (a
+// Zen 4 EPYC; 1.4e-9), so the bound is 2e-10, and 1e-8 for linear reproduction (the
+// patch test does not depend on either: the consistency correction makes it exact).
 TEST(HarmonicBasis, CutCellsReproduceAffineFieldsToRoundOff) {
   SlicingOptions slicing;
   slicing.resolution = 16;
@@ -93,7 +96,7 @@ TEST(HarmonicBasis, CutCellsReproduceAffineFieldsToRoundOff) {
   std::printf("[ affine   ] %d cut cells: max |ΣN − 1| %.2e, max |Σ x_i N_i − x| / size %.2e\n", cut_cells, unity,
               linear);
   EXPECT_GT(cut_cells, 500);
-  EXPECT_LT(unity, 1e-10);
+  EXPECT_LT(unity, 2e-10);
   EXPECT_LT(linear, 1e-8);
 }
 

@@ -5,7 +5,8 @@
 // which each method's two-rank energy, forces, Hessian and solution must equal:
 //   - the Hessian to 1e-13 of its largest entry (the same entries summed in another order);
 //   - the solution of CG + GAMG to 1e-12 within 1e-8 and the same Newton iterations;
-//   - GAMG's iterations at most 20% above one rank's (the issue's bound for its growth
+//   - GAMG's iterations (on the first-order space for fem's and fcm's quadratic
+//     elements: solver.p_multigrid) at most 20% above one rank's (the issue's bound for its growth
 //     under refinement): aggregates do not cross the partition, so the coarse spaces
 //     differ; the issue asked for 2 iterations, which small problems, whose partition
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
@@ -190,7 +191,9 @@ struct Solved {
   long long linear_iterations = 0;
 };
 
-// GAMG's own smoother on one rank too: over several ranks the method's is not used.
+// GAMG's own smoother on one rank too: over several ranks the method's is not used. On
+// higher-order fem and fcm GAMG works on the first-order space inside on both
+// (solver.p_multigrid), across the partition.
 Solved solve(const Case& c) {
   Built built(c, {"solver/linear=petsc", "solver/linear_tolerance=1e-12", "solver/method_smoother=false"});
   const StepReport report = built.simulation->integrator().step(built.simulation->state());
