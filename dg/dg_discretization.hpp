@@ -83,6 +83,9 @@ public:
   PreconditionerFactory preconditioner_factory() const override { return preconditioner_; }
   /// Replaces the block Jacobi of iterative solvers (e.g. by two_level_factory).
   void use_preconditioner(PreconditionerFactory factory) { preconditioner_ = std::move(factory); }
+  const CoarseSpace& coarse_space() const override { return coarse_space_; }
+  /// The coarse level PETSc's multigrid may work on (affine_coarse_space.hpp).
+  void use_coarse_space(CoarseSpace space) { coarse_space_ = std::move(space); }
 
 private:
   Eigen::SparseMatrix<double> stiffness_;                    // its pattern holds block_mass_'s
@@ -95,6 +98,7 @@ private:
   std::function<Eigen::VectorXd(double)> weak_condition_load_;
   DirichletDofs strong_;
   PreconditionerFactory preconditioner_;
+  CoarseSpace coarse_space_;
   std::vector<int> share_row_owners_;  // per function, over several ranks with shares; else empty
 };
 

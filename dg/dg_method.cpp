@@ -4,6 +4,7 @@
 #include <chrono>
 #include <limits>
 
+#include "dg/affine_coarse_space.hpp"
 #include "dg/definiteness_certificate.hpp"
 #include "dg/dg_boundary_faces.hpp"
 #include "dg/dg_discretization.hpp"
@@ -127,6 +128,7 @@ public:
     }
     if (linear_) {
       linear_->use_preconditioner(std::move(preconditioner));
+      linear_->use_coarse_space(affine_coarse_space(*system_));
       discretization_ = linear_.get();
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
