@@ -80,11 +80,22 @@ PetscErrorCode FirstOrderCoarseLevel::update(PC pc, Mat fine, const Eigen::Spars
     MatDestroy(&coarse_);
     PetscCall(build_interpolation(decoupled_, rows));
     PetscCall(PCMGSetInterpolation(pc, 1, interpolation_));
+    // PCMG takes the restriction from the interpolation at its first set-up only: a later
+    // interpolation (a released condition's DOFs coupled again) needs its own set.
+    PetscCall(PCMGSetRestriction(pc, 1, interpolation_));
+  }
+  // Pᵀ A P's pattern is computed again for another fine matrix (a new pattern), its values
+  // only for new values of the same one.
+  PetscObjectId fine_id;
+  PetscCall(PetscObjectGetId(reinterpret_cast<PetscObject>(fine), &fine_id));
+  if (coarse_ && fine_id == fine_id_) {
+    PetscCall(MatPtAP(fine, interpolation_, MAT_REUSE_MATRIX, PETSC_DEFAULT, &coarse_));
+  } else {
+    MatDestroy(&coarse_);
+    fine_id_ = fine_id;
     PetscCall(MatPtAP(fine, interpolation_, MAT_INITIAL_MATRIX, PETSC_DEFAULT, &coarse_));
     PetscCall(MatSetBlockSize(coarse_, 3));
     PetscCall(set_coarse_near_null_space());
-  } else {
-    PetscCall(MatPtAP(fine, interpolation_, MAT_REUSE_MATRIX, PETSC_DEFAULT, &coarse_));
   }
   KSP coarse;
   PetscCall(PCMGGetCoarseSolve(pc, &coarse));

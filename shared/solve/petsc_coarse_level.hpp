@@ -63,6 +63,7 @@ private:
   std::vector<char> decoupled_;                          // #dofs: the decoupled DOFs interpolation_ was built for
   Mat interpolation_ = nullptr;
   Mat coarse_ = nullptr;
+  PetscObjectId fine_id_ = 0;  // the fine matrix coarse_ was made from
 };
 
 }  // namespace altfem
