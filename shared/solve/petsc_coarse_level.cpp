@@ -3,8 +3,8 @@
 #ifdef ALTFEM_HAVE_PETSC
 #include <Eigen/QR>
 #include <algorithm>
-
 #include <utility>
+
 #include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
