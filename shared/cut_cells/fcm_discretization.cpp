@@ -171,9 +171,7 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   fcm.schwarz_blocks = static_cast<int>(blocks.size());
   const double epsilon = options.schwarz_epsilon;
   parts.preconditioner = [blocks, epsilon] { return std::make_unique<AdditiveSchwarzPreconditioner>(blocks, epsilon); };
-  // Hanging nodes' functions belong to their masters: the first-order space of a
-  // refined grid is left out (a coarse function would have to follow the constraints).
-  if (!constrained) parts.coarse_space = first_order_space(fcm.mesh);
+  parts.coarse_space = first_order_space(fcm.mesh, &fcm.constraints);
   fcm.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
   return fcm;
 }

@@ -10,8 +10,12 @@ namespace altfem {
 
 namespace {
 
-// Whether kept cell `cell` holds node `node`.
-bool holds(const Eigen::MatrixXi& cells, int cell, int node) { return (cells.row(cell).array() == node).any(); }
+// Whether kept cells `first` and `second` hold a node in common.
+bool share_a_node(const Eigen::MatrixXi& cells, int first, int second) {
+  for (Eigen::Index a = 0; a < cells.cols(); ++a)
+    if ((cells.row(second).array() == cells(first, a)).any()) return true;
+  return false;
+}
 
 }  // namespace
 
@@ -40,11 +44,8 @@ KeptHangingNodes kept_hanging_nodes(const std::vector<int>& background_node, int
     std::vector<int> pieces = leaf_cells.at(source->leaf);
     if (pieces.size() > 1) {
       std::erase_if(pieces, [&](int piece) {
-        return std::none_of(node_cells[node].begin(), node_cells[node].end(), [&](int cell) {
-          for (Eigen::Index a = 0; a < cells.cols(); ++a)
-            if (holds(cells, piece, cells(cell, a))) return true;
-          return false;
-        });
+        return std::none_of(node_cells[node].begin(), node_cells[node].end(),
+                            [&](int cell) { return share_a_node(cells, cell, piece); });
       });
       if (pieces.size() != 1)
         throw NumericalError("fcm: the hanging node at the background node " + std::to_string(background_node[node]) +

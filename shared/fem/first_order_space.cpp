@@ -13,10 +13,10 @@ ElementType first_order_type(ElementType type) {
 
 }  // namespace
 
-CoarseSpace first_order_space(const VolumeMesh& mesh) {
+CoarseSpace first_order_space(const VolumeMesh& mesh, const NodeConstraints* constraints) {
   CoarseSpace space;
   const ElementType coarse_type = first_order_type(mesh.element_type);
-  if (coarse_type == mesh.element_type) return space;
+  if (coarse_type == mesh.element_type || (constraints && !constraints->empty())) return space;
   const int corners = element_corner_count(mesh.element_type);
   const auto node_count = static_cast<int>(mesh.nodes.rows());
 

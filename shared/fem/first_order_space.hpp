@@ -7,6 +7,7 @@
 // removes what the coarse one cannot hold (the high-order oscillations inside elements).
 // Multigrid in the polynomial degree: Rønquist & Patera 1987; algebraic multigrid on the
 // lowest order of higher-order elements: Heys, Manteuffel, McCormick & Olson 2005.
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/solve/coarse_space.hpp"
 
@@ -15,7 +16,9 @@ namespace altfem {
 /// The first-order space on `mesh`'s corner nodes: row a of the prolongation is the
 /// first-order basis of a cell holding node a at its reference position (the same in
 /// every cell holding it: the first-order space is conforming). Empty for a first-order
-/// mesh. Basis function a is mesh node a (tabulate_lagrange).
-CoarseSpace first_order_space(const VolumeMesh& mesh);
+/// mesh. Basis function a is mesh node a (tabulate_lagrange). Empty too where
+/// `constraints` (may be null) hang nodes on others: a hanging node's function belongs to
+/// its masters, so a coarse function would have to follow the constraints.
+CoarseSpace first_order_space(const VolumeMesh& mesh, const NodeConstraints* constraints = nullptr);
 
 }  // namespace altfem

@@ -30,9 +30,7 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   if (hanging) parts.elements = constrain_lagrange_elements(parts.elements, *constraints);
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
-  // A refined grid's hanging nodes belong to their masters: no first-order space there
-  // (a coarse function would have to follow the constraints).
-  if (!hanging) parts.coarse_space = first_order_space(mesh);
+  parts.coarse_space = first_order_space(mesh, constraints);
   return std::make_unique<TabulatedDiscretization>(std::move(parts));
 }
 

@@ -24,7 +24,8 @@ using petsc::check;
 
 class PetscSolver final : public LinearSolver {
 public:
-  explicit PetscSolver(const LinearSolverOptions& options) : prefix_(petsc::next_prefix()) {
+  explicit PetscSolver(const LinearSolverOptions& options)
+      : prefix_(petsc::next_prefix()), coarse_level_(options.coarse_space, options.near_null_space) {
     petsc::start();
     if (options.near_null_space.cols() > 0) {
       // MatNullSpaceCreate wants orthonormal vectors.
@@ -39,7 +40,6 @@ public:
     } else if (options.method_smoother) {
       finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
     }
-    coarse_level_ = std::make_unique<FirstOrderCoarseLevel>(options.coarse_space, options.near_null_space);
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
@@ -60,7 +60,7 @@ public:
     const bool norm_chosen = options.petsc_options.find("-ksp_norm_type") != std::string::npos;
     if (!norm_chosen && std::string(method) == KSPCG)
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
-    if (coarse_level_) check(coarse_level_->configure(preconditioner), "the first-order coarse level");
+    check(coarse_level_.configure(preconditioner), "the first-order coarse level");
     check(finest_smoother_.configure(preconditioner, options.petsc_options), "the finest level's smoother");
   }
 
@@ -160,17 +160,13 @@ protected:
       check(MatSeqAIJRestoreArray(matrix_, &values), "MatSeqAIJRestoreArray");
     }
     check(KSPSetOperators(ksp_, matrix_, matrix_), "KSPSetOperators");
-    if (coarse_level_) {
-      PC preconditioner;
-      check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
-      check(coarse_level_->update(preconditioner, matrix_, matrix,
-                                  {petsc_of_method_, first_row_, last_row_, communicator_}),
-            "the first-order coarse level");
-    }
+    PC preconditioner;
+    check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
+    check(
+        coarse_level_.update(preconditioner, matrix_, matrix, {petsc_of_method_, first_row_, last_row_, communicator_}),
+        "the first-order coarse level");
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
     if (finest_smoother_) {  // on one process: the method's own preconditioner
-      PC preconditioner;
-      check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
       const auto rows = static_cast<PetscInt>(matrix.rows());
       check(finest_smoother_.install(preconditioner, matrix, columns_in_petsc_order(rows)),
             "the finest level's smoother");
@@ -405,7 +401,7 @@ private:
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
   FinestLevelSmoother finest_smoother_{{}};  // on one process: the method's preconditioner (petsc_finest_smoother.hpp)
-  std::unique_ptr<FirstOrderCoarseLevel> coarse_level_;  // petsc_coarse_level.hpp
+  FirstOrderCoarseLevel coarse_level_;  // a coarser space's level, where the method has one (petsc_coarse_level.hpp)
 };
 
 }  // namespace

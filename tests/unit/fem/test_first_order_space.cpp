@@ -80,6 +80,17 @@ INSTANTIATE_TEST_SUITE_P(HigherOrder, FirstOrderSpace,
                                            ElementType::hex27),
                          [](const auto& info) { return std::string(element_name(info.param)); });
 
+// A refined grid's hanging nodes belong to their masters: no first-order space there.
+TEST(FirstOrderSpaceWithHangingNodes, IsEmpty) {
+  const VolumeMesh mesh = structured_grid(test::unit_cube(), Eigen::Vector3i(2, 2, 2), ElementType::hex20);
+  NodeConstraints constraints;
+  constraints.free_nodes = static_cast<int>(mesh.nodes.rows()) - 1;
+  constraints.masters = {{0, 1}};
+  constraints.weights = {{0.5, 0.5}};
+  EXPECT_TRUE(first_order_space(mesh, &constraints).empty());
+  EXPECT_FALSE(first_order_space(mesh, nullptr).empty());
+}
+
 TEST(FirstOrderSpaceOfAFirstOrderMesh, IsEmpty) {
   EXPECT_TRUE(
       first_order_space(structured_grid(test::unit_cube(), Eigen::Vector3i(2, 2, 2), ElementType::hex8)).empty());

@@ -71,9 +71,10 @@ TEST_P(EveryShape, PartitionOfUnityAndLinearReproductionToRoundOff) {
 // exact in the coefficients (restored after the solve) but evaluated through large kernel
 // weights that cancel, so what is left is the evaluation's round-off, which depends on
 // the order of the products' sums and so on the instruction set of a -march=native
-// build: 9.4e-11 with AVX2 (linear 9.5e-10 of the cell size), 1.4e-10 with AVX-512 (a
-// Zen 4 EPYC; 1.4e-9), so the bound is 2e-10, and 1e-8 for linear reproduction (the
-// patch test does not depend on either: the consistency correction makes it exact).
+// build: on a Zen 4 EPYC 1.4e-10 (linear 1.4e-9 of the cell size), and 9.4e-11 (9.5e-10)
+// with element_harmonic_basis.cpp alone compiled again with -mno-avx512f (by hand). So the
+// bound is 2e-10, and 1e-8 for linear reproduction (the patch test does not depend on
+// either: the consistency correction makes it exact).
 TEST(HarmonicBasis, CutCellsReproduceAffineFieldsToRoundOff) {
   SlicingOptions slicing;
   slicing.resolution = 16;
