@@ -166,7 +166,7 @@ public:
   }
   /// None for the linear material: every integral is exact (§5); else the volume rules'.
   long long quadrature_points() const override {
-    return tabulated_.discretization ? tabulated_.discretization->elements().point_count() : 0;
+    return tabulated_.discretization ? tabulated_.discretization->elements().whole_point_count() : 0;
   }
   /// The exact integration and assembly (and the tabulation of a nonlinear material).
   double quadrature_seconds() const override { return integration_seconds_; }

@@ -103,7 +103,7 @@ public:
   nlohmann::json element_counts() const override {
     return {{std::string(element_name(kept_cells().mesh.element_type)), kept_cells().mesh.cells.rows()}};
   }
-  long long quadrature_points() const override { return kept_cells().discretization->elements().point_count(); }
+  long long quadrature_points() const override { return kept_cells().discretization->elements().whole_point_count(); }
   double quadrature_seconds() const override { return cells_->seconds(); }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = cells_->volume_grid(displacement);

@@ -125,7 +125,7 @@ public:
     if (mfs > 0) counts["mfs_polyhedron"] = mfs;
     return counts;
   }
-  long long quadrature_points() const override { return elements_->point_count(); }
+  long long quadrature_points() const override { return elements_->whole_point_count(); }
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_polyhedral_mesh(mesh_);

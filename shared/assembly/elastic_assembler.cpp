@@ -68,9 +68,6 @@ ElasticAssembler::ElasticAssembler(const TabulatedElements& elements, std::vecto
       element_forces_(static_cast<std::size_t>(3 * incidence_.slot_count())),
       element_energies_(static_cast<std::size_t>(elements.size())) {
   check_materials();
-  point_offsets_.reserve(static_cast<size_t>(elements.size()) + 1);
-  point_offsets_.push_back(0);
-  for (int e = 0; e < elements.size(); ++e) point_offsets_.push_back(point_offsets_.back() + elements[e].point_count());
   if (!share.empty()) {
     assemble_only(std::vector<char>(share.begin(), share.begin() + elements.size()));
     share_pattern_ = true;
@@ -106,7 +103,7 @@ void ElasticAssembler::for_each_colored_element(Body&& body) const {
 }
 
 void ElasticAssembler::set_deformation_shifts(std::span<const double> shifts) {
-  if (!shifts.empty() && static_cast<long long>(shifts.size()) != 9 * elements_.point_count())
+  if (!shifts.empty() && static_cast<long long>(shifts.size()) != 9 * elements_.whole_point_count())
     throw std::invalid_argument("ElasticAssembler: deformation shifts must hold 9 values per quadrature point");
   shifts_ = shifts.empty() ? nullptr : shifts.data();
 }
@@ -125,7 +122,7 @@ void ElasticAssembler::assemble_only(const std::vector<char>& owned) {
 }
 
 const double* ElasticAssembler::element_shifts(int element) const {
-  return shifts_ ? shifts_ + 9 * point_offsets_[element] : nullptr;
+  return shifts_ ? shifts_ + 9 * elements_.whole_point_offset(element) : nullptr;
 }
 
 bool ElasticAssembler::is_linear() const {
@@ -349,6 +346,10 @@ Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& disp
   Eigen::MatrixXd stresses(elements_.size(), 9);
 #pragma omp parallel for schedule(dynamic, 64)
   for (int e = 0; e < elements_.size(); ++e) {
+    if (!elements_.holds(e)) {
+      stresses.row(e).setZero();
+      continue;
+    }
     const ElementView element = elements_[e];
     const Material& material = *materials_[element.material];
     Eigen::MatrixX3d u(element.basis_count(), 3);

@@ -71,13 +71,14 @@ public:
   Eigen::VectorXd body_force(const ElementMasses& masses, const Eigen::Vector3d& acceleration) const;
   Eigen::VectorXd lumped_mass(const ElementMasses& masses) const;
   /// Per element the Cauchy stress σ = P Fᵀ / det F averaged over its quadrature points
-  /// (weights w_q |det J|): #elements × 9, row e holding σ row-major. For output.
+  /// (weights w_q |det J|): #elements × 9, row e holding σ row-major (zero for an element
+  /// another rank holds: TabulatedElements::keep_only). For output.
   Eigen::MatrixXd mean_cauchy_stress(const Eigen::VectorXd& displacement) const;
   /// Whether every material's tangent is independent of F (linear elasticity): then
   /// the Hessian needs assembling and factorising only once.
   bool is_linear() const;
   /// A constant shift of F at every quadrature point (9 values per point, column-major,
-  /// in the elements' point order; not owned, read at every assembly), or an empty span for
+  /// in the whole tabulation's point order (TabulatedElements::whole_point_offset); not owned, read at every assembly), or an empty span for
   /// none: F = I + Σ_a u_a ⊗ ∇N_a + shift. DG's lifted Dirichlet data (dg/lifted_gradients.hpp).
   void set_deformation_shifts(std::span<const double> shifts);
   /// Makes energy(), gradient() and hessian() sum only the elements whose `owned` entry is
@@ -108,7 +109,6 @@ private:
   std::vector<std::vector<int>> owned_colors_;  // with owned_: colors_ restricted to the owned elements
   bool share_pattern_ = false;                  // constructed with a share: the matrices hold owned_ only
   BasisIncidence incidence_;
-  std::vector<long long> point_offsets_;  // #elements + 1: where each element's points start
   const double* shifts_ = nullptr;        // set_deformation_shifts', or null
   // Per-element results kept between calls, so that assembly does not allocate: the
   // gradient's forces (3 per incidence slot) and the energy's element energies.

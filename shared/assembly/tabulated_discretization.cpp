@@ -42,8 +42,8 @@ void check_lumped_mass_positive(const Eigen::VectorXd& lumped_mass, const Tabula
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
     if (std::find(element.basis.begin(), element.basis.end(), basis) == element.basis.end()) continue;
-    const double lightest = *std::min_element(element.weights.begin(), element.weights.end());
-    holders += (holders.empty() ? "" : ", ") + std::to_string(e) + (lightest < 0 ? " (a negative weight)" : "");
+    const bool negative = std::any_of(element.weights.begin(), element.weights.end(), [](double w) { return w < 0; });
+    holders += (holders.empty() ? "" : ", ") + std::to_string(e) + (negative ? " (a negative weight)" : "");
   }
   std::ostringstream mass;  // std::to_string's fixed six decimals would print 1e-20 as 0.000000
   mass << lumped_mass[dof];
@@ -99,12 +99,16 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   const std::vector<char>& mine = division.groups;
   const bool share = ranks::shares_matrices();
   if (share) share_row_owners_ = std::move(division.basis_owners);
+  // The masses from the whole tabulation, before a rank keeps only its elements' points:
+  // every rank then holds the whole mass, lumped or consistent, as the integrators expect.
+  masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
+  parts_.element_masses.reset();
+  if (ranks::distributed())
+    parts_.elements.keep_only(std::span<const char>(mine.data(), static_cast<size_t>(parts_.elements.size())));
   assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings,
                                                   share ? std::span<const char>(mine) : std::span<const char>{});
   if (ranks::distributed() && !share)
     assembler_->assemble_only(std::vector<char>(mine.begin(), mine.begin() + parts_.elements.size()));
-  masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
-  parts_.element_masses.reset();
   int first_group = 0;
   for (const auto& term : parts_.terms) {
     term->bind(assembler_->sparsity(), first_group);
@@ -118,7 +122,7 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   constant_hessian_ = assembler_->is_linear();
   for (const auto& term : parts_.terms) constant_hessian_ = constant_hessian_ && term->is_quadratic();
   if (parts_.deformation_shifts) {
-    shifts_.assign(static_cast<size_t>(9 * parts_.elements.point_count()), 0.0);
+    shifts_.assign(static_cast<size_t>(9 * parts_.elements.whole_point_count()), 0.0);
     assembler_->set_deformation_shifts(shifts_);
     set_time(0);
   }
@@ -188,6 +192,13 @@ void TabulatedDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMat
   });
   if (share_row_owners_.empty())
     ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
+}
+
+Eigen::MatrixXd TabulatedDiscretization::element_cauchy_stress(const Eigen::VectorXd& displacement) const {
+  Eigen::MatrixXd stresses;
+  ranks::collectively([&] { stresses = assembler_->mean_cauchy_stress(displacement); });
+  parts_.elements.sum_over_ranks(std::span<double>(stresses.data(), static_cast<size_t>(stresses.size())));
+  return stresses;
 }
 
 Eigen::VectorXd TabulatedDiscretization::explicit_body_force(const Eigen::Vector3d& acceleration) const {

@@ -91,10 +91,10 @@ public:
   bool imposes_conditions_weakly() const override { return parts_.conditions_weakly; }
   PreconditionerFactory preconditioner_factory() const override { return parts_.preconditioner; }
   const CoarseSpace& coarse_space() const override { return parts_.coarse_space; }
-  Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& displacement) const override {
-    return assembler_->mean_cauchy_stress(displacement);
-  }
+  Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& displacement) const override;
 
+  /// Over several ranks, this rank's share (TabulatedElements::keep_only): its elements'
+  /// points only.
   const TabulatedElements& elements() const { return parts_.elements; }
   const ElasticAssembler& assembler() const { return *assembler_; }
 

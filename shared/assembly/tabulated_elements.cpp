@@ -1,7 +1,10 @@
 #include "shared/assembly/tabulated_elements.hpp"
 
 #include <algorithm>
+#include <utility>
 #include <stdexcept>
+
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 
@@ -44,6 +47,37 @@ void TabulatedElements::reserve(int elements, long long basis_entries, long long
   values_.reserve(value_entries);
   gradients_.reserve(3 * value_entries);
 }
+
+void TabulatedElements::keep_only(std::span<const char> keep) {
+  if (static_cast<int>(keep.size()) != size())
+    throw std::invalid_argument("TabulatedElements::keep_only: one entry per element expected");
+  if (share_) throw std::logic_error("TabulatedElements::keep_only: already a share");
+  std::vector<long long> point_offsets{0}, value_offsets{0};
+  std::vector<double> weights, values, gradients;
+  for (int e = 0; e < size(); ++e) {
+    if (keep[e]) {
+      weights.insert(weights.end(), weights_.begin() + point_offsets_[e], weights_.begin() + point_offsets_[e + 1]);
+      values.insert(values.end(), values_.begin() + value_offsets_[e], values_.begin() + value_offsets_[e + 1]);
+      gradients.insert(gradients.end(), gradients_.begin() + 3 * value_offsets_[e],
+                       gradients_.begin() + 3 * value_offsets_[e + 1]);
+    }
+    point_offsets.push_back(static_cast<long long>(weights.size()));
+    value_offsets.push_back(static_cast<long long>(values.size()));
+  }
+  share_ = true;
+  held_.assign(keep.begin(), keep.end());
+  whole_point_offsets_ = std::exchange(point_offsets_, std::move(point_offsets));
+  value_offsets_ = std::move(value_offsets);
+  weights_ = std::move(weights);
+  values_ = std::move(values);
+  gradients_ = std::move(gradients);
+}
+
+void TabulatedElements::sum_over_ranks(std::span<double> values) const {
+  if (share_) ranks::sum(values);
+}
+
+double TabulatedElements::sum_over_ranks(double value) const { return share_ ? ranks::sum(value) : value; }
 
 ElementView TabulatedElements::operator[](int element) const {
   const long long basis_begin = basis_offsets_[element];

@@ -44,8 +44,35 @@ public:
   int size() const { return static_cast<int>(material_.size()); }
   /// One more than the largest basis index used.
   int basis_count() const { return basis_count_; }
+  /// The points held here: all of them unless keep_only() left this rank's share.
   long long point_count() const { return static_cast<long long>(weights_.size()); }
+  /// Element e; an element another rank holds (keep_only) has its basis and material
+  /// but no points.
   ElementView operator[](int element) const;
+
+  /// One rank's share of a run over several processes (docs/scaling.md): frees the
+  /// weights, values and gradients of every element whose `keep` entry (#elements) is
+  /// zero, which keep their basis lists, materials and point counts. What is then summed
+  /// over elements is this rank's part, and sum_over_ranks() makes it the whole.
+  void keep_only(std::span<const char> keep);
+  /// Whether keep_only() made this a share (even one that kept every element).
+  bool is_share() const { return share_; }
+  /// Whether element e's points are held here.
+  bool holds(int element) const { return !share_ || held_[element]; }
+  /// Element e's points in the whole tabulation, held here or not.
+  int whole_point_count(int element) const {
+    const std::vector<long long>& offsets = share_ ? whole_point_offsets_ : point_offsets_;
+    return static_cast<int>(offsets[element + 1] - offsets[element]);
+  }
+  /// Where element e's points start in the whole tabulation (e = size(): their count).
+  long long whole_point_offset(int element) const {
+    return share_ ? whole_point_offsets_[element] : point_offsets_[element];
+  }
+  long long whole_point_count() const { return whole_point_offset(size()); }
+  /// Over a share, each entry (a sum over this rank's elements, or zero for elements it does
+  /// not hold) replaced by its sum over the ranks; nothing for a whole tabulation.
+  void sum_over_ranks(std::span<double> values) const;
+  double sum_over_ranks(double value) const;
   /// Where element e's basis list starts in the packed lists of all elements.
   long long basis_offset(int element) const { return basis_offsets_[element]; }
   /// The largest #basis of any element (sizes the per-thread scratch).
@@ -60,6 +87,10 @@ private:
   std::vector<double> values_;
   std::vector<double> gradients_;
   std::vector<int> material_;
+  // After keep_only(): which elements are held, and the whole tabulation's point offsets.
+  bool share_ = false;
+  std::vector<char> held_;
+  std::vector<long long> whole_point_offsets_;
   int basis_count_ = 0;
   int max_element_basis_ = 0;
 };

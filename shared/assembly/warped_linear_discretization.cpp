@@ -59,13 +59,14 @@ WarpedLinearDiscretization::WarpedLinearDiscretization(DiscretizationParts parts
   stiffness_.resize(static_cast<size_t>(elements.size()));
   node_masses_.resize(static_cast<size_t>(elements.size()));
   parallel::for_each_index(static_cast<size_t>(elements.size()), threads(), [&](size_t e) {
+    if (!elements.holds(static_cast<int>(e))) return;  // another rank's (keep_only)
     const ElementView element = elements[static_cast<int>(e)];
     stiffness_[e] = rest_stiffness(element, *materials[element.material]);
     node_masses_[e] = node_masses(element);
   });
   colors_ = color_elements(elements);
   scratch_.resize(static_cast<size_t>(threads()));
-  rotations_.resize(static_cast<size_t>(elements.size()));
+  rotations_.assign(static_cast<size_t>(elements.size()), Eigen::Matrix3d::Identity());
   const long long entries = 3 * elements.basis_offset(elements.size());
   corotated_.resize(static_cast<size_t>(entries));
   stiffness_forces_.resize(static_cast<size_t>(entries));
@@ -78,7 +79,7 @@ void WarpedLinearDiscretization::warp(const Eigen::VectorXd& u, bool own_element
   const ElasticAssembler& assembler = linear->assembler();
   parallel::for_each_index(static_cast<size_t>(elements.size()), threads(), [&](size_t index) {
     const int e = static_cast<int>(index);
-    if (own_elements_only && !assembler.assembles(e)) return;
+    if (!elements.holds(e) || (own_elements_only && !assembler.assembles(e))) return;
     const ElementView element = elements[e];
     const int n = element.basis_count();
     NodeScratch& scratch = scratch_[omp_get_thread_num()];
@@ -169,8 +170,9 @@ void WarpedLinearDiscretization::hessian(const Eigen::VectorXd& u, Eigen::Sparse
 Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::VectorXd& u) const {
   warp(u, false);
   const TabulatedElements& elements = linear->elements();
-  Eigen::MatrixXd stresses(elements.size(), 9);
+  Eigen::MatrixXd stresses = Eigen::MatrixXd::Zero(elements.size(), 9);
   for (int e = 0; e < elements.size(); ++e) {
+    if (!elements.holds(e)) continue;
     const ElementView element = elements[e];
     const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> z(
         corotated_.data() + 3 * elements.basis_offset(e), element.basis_count(), 3);
@@ -185,6 +187,7 @@ Eigen::MatrixXd WarpedLinearDiscretization::element_cauchy_stress(const Eigen::V
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) stresses(e, 3 * i + j) = mean(i, j);
   }
+  elements.sum_over_ranks(std::span<double>(stresses.data(), static_cast<size_t>(stresses.size())));
   return stresses;
 }
 

@@ -60,7 +60,8 @@ public:
   /// over the element's points, turned back into the deformed frame (#elements × 9, row-major).
   Eigen::MatrixXd element_cauchy_stress(const Eigen::VectorXd& u) const override;
 
-  /// R_e of every element for the displacement u (#elements).
+  /// R_e of every element for the displacement u (#elements; over several ranks, of the
+  /// elements this rank holds, the others' left as they were).
   std::vector<Eigen::Matrix3d> rotations(const Eigen::VectorXd& u) const;
   const TabulatedElements& elements() const { return linear->elements(); }
 

@@ -90,7 +90,7 @@ UnstructuredGrid EmbeddedCutCells::volume_grid(const Eigen::VectorXd& displaceme
       "volume_fraction", Eigen::Map<const Eigen::VectorXd>(fcm_.volume_fractions.data(), fcm_.volume_fractions.size()));
   const TabulatedElements& elements = fcm_.discretization->elements();
   Eigen::VectorXd points(elements.size());
-  for (int e = 0; e < elements.size(); ++e) points[e] = elements[e].point_count();
+  for (int e = 0; e < elements.size(); ++e) points[e] = elements.whole_point_count(e);
   grid.cell_data.emplace_back("quadrature_points", points);
   // Which piece of its background cell a kept cell is (0 unless the cell is split).
   Eigen::VectorXd piece = Eigen::VectorXd::Zero(elements.size());

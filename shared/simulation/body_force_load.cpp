@@ -17,6 +17,7 @@ Eigen::VectorXd integrate_against_basis(const FieldQuadrature& quadrature, const
         load.segment<3>(3 * static_cast<Eigen::Index>(element.basis[a])) += element.values(q, a) * weighted;
     }
   }
+  elements.sum_over_ranks(std::span<double>(load.data(), static_cast<size_t>(load.size())));
   return load;
 }
 

@@ -13,6 +13,10 @@ std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& element
   std::vector<Eigen::Matrix3d> stresses(static_cast<std::size_t>(elements.size()));
 #pragma omp parallel for schedule(dynamic, 16)
   for (int element = 0; element < elements.size(); ++element) {
+    if (!elements.holds(element)) {  // another rank's: its sum below
+      stresses[element].setZero();
+      continue;
+    }
     const ElementView view = elements[element];
     // ∫ ∇u dV: (∂u_i/∂x_j) = Σ_a u_a ⊗ ∇N_a, weighted.
     Eigen::Matrix<double, 3, Eigen::Dynamic> coefficients(3, view.basis_count());
@@ -27,6 +31,8 @@ std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& element
     const LameParameters& own = lame.at(view.material);
     stresses[element] = own.lambda * strain.trace() * Eigen::Matrix3d::Identity() + 2 * own.mu * strain;
   }
+  static_assert(sizeof(Eigen::Matrix3d) == 9 * sizeof(double));
+  elements.sum_over_ranks(std::span<double>(reinterpret_cast<double*>(stresses.data()), 9 * stresses.size()));
   return stresses;
 }
 

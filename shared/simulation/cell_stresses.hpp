@@ -14,7 +14,8 @@ namespace altfem {
 /// strain ε = (1/V) ∫ sym(∇u) dV (the rule's weights), with the Lamé parameters of the
 /// element's own material (materials[element.material], as the tabulation assigned them)
 /// and u the coefficients (#dofs; basis function a carries 3a..3a+2). Exact for any field
-/// whose gradient the rule integrates.
+/// whose gradient the rule integrates. Over a rank's share (TabulatedElements::keep_only)
+/// every rank computes its elements' and receives the others' (a collective call).
 std::vector<Eigen::Matrix3d> mean_cell_stresses(const TabulatedElements& elements,
                                                 const std::vector<const Material*>& materials,
                                                 const Eigen::VectorXd& u);

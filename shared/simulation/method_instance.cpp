@@ -8,7 +8,7 @@ std::optional<double> MethodInstance::volume() const {
   double volume = 0;
   for (int e = 0; e < quadrature->elements->size(); ++e)
     for (double weight : (*quadrature->elements)[e].weights) volume += weight;
-  return volume;
+  return quadrature->elements->sum_over_ranks(volume);
 }
 
 }  // namespace altfem

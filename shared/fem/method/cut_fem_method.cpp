@@ -49,7 +49,7 @@ public:
     return {{std::string(element_name(elements_.element_type)), cells_->discretization().mesh.cells.rows()}};
   }
   long long quadrature_points() const override {
-    return cells_->discretization().discretization->elements().point_count();
+    return cells_->discretization().discretization->elements().whole_point_count();
   }
   double quadrature_seconds() const override { return cells_->seconds(); }
   std::string failure_hint() const override { return failure_hint_; }

@@ -67,7 +67,7 @@ public:
   nlohmann::json element_counts() const override {
     return {{std::string(element_name(mesh_.element_type)), mesh_.cells.rows()}};
   }
-  long long quadrature_points() const override { return discretization_->elements().point_count(); }
+  long long quadrature_points() const override { return discretization_->elements().whole_point_count(); }
   double quadrature_seconds() const override { return quadrature_seconds_; }
   UnstructuredGrid volume_grid(const Eigen::VectorXd& displacement) const override {
     UnstructuredGrid grid = grid_from_volume_mesh(mesh_);

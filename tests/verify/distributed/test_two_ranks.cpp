@@ -24,6 +24,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -33,6 +34,7 @@
 #include "dg/definiteness_certificate.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
+#include "shared/simulation/body_force_load.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "shared/solve/process_ranks.hpp"
 #include "tests/support/static_solve.hpp"
@@ -183,6 +185,57 @@ TEST_P(TwoRanks, HessianSharesSumToTheWhole) {
   EXPECT_EQ(static_cast<Eigen::Index>(3 * shared.matrix_share_owners().size()), alone.hessian.rows());
   EXPECT_LE(shares_against_whole(share.hessian, alone.hessian), 1e-13);
   EXPECT_LE(shares_against_whole(share_mass, whole_mass), 1e-13);
+}
+
+// What a method computes from its tabulation for every element or the whole body, at a
+// displacement every rank builds alike: the elements' stresses (the frames' cell data, what
+// refinement marks by), the volume and the load of a uniform body force.
+struct FromTabulation {
+  Eigen::MatrixXd stresses;
+  double volume = 0;
+  Eigen::VectorXd body_force;
+};
+
+FromTabulation from_tabulation(const Built& built) {
+  const Discretization& discretization = built.simulation->discretization();
+  Eigen::VectorXd u(discretization.dof_count());
+  for (Eigen::Index dof = 0; dof < u.size(); ++dof) u[dof] = 1e-4 * std::sin(0.37 * static_cast<double>(dof));
+  FromTabulation result{discretization.element_cauchy_stress(u), built.simulation->method().volume().value_or(0), {}};
+  if (const std::optional<FieldQuadrature> quadrature = built.simulation->method().field_quadrature(0))
+    result.body_force = integrate_against_basis(
+        *quadrature, Eigen::MatrixXd::Constant(quadrature->points.rows(), 3, 9.81), discretization.dof_count());
+  return result;
+}
+
+// Each rank keeps the quadrature points of its own elements only (TabulatedElements::
+// keep_only; dg's linear system tabulates nothing): the points the ranks hold sum to the
+// whole tabulation, each holding fewer, and what is computed from the tabulation for every
+// element or the whole body is one process's, the sums of the ranks' parts.
+TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
+  const Built together(GetParam());
+  if (const std::optional<FieldQuadrature> quadrature = together.simulation->method().field_quadrature(0);
+      quadrature && quadrature->elements->is_share()) {
+    const auto held = static_cast<double>(quadrature->elements->point_count());
+    const auto whole = static_cast<double>(quadrature->elements->whole_point_count());
+    EXPECT_LT(held, whole);
+    EXPECT_EQ(ranks::sum(held), whole);
+  }
+  const FromTabulation two = from_tabulation(together);
+  FromTabulation one;
+  {
+    const ranks::Alone one_process;
+    one = from_tabulation(Built(GetParam()));
+  }
+  EXPECT_EQ(two.stresses.rows(), one.stresses.rows());
+  if (two.stresses.rows() == one.stresses.rows()) {
+    EXPECT_LE((two.stresses - one.stresses).lpNorm<Eigen::Infinity>(), 1e-13 * one.stresses.lpNorm<Eigen::Infinity>());
+  }
+  EXPECT_NEAR(two.volume, one.volume, 1e-13 * one.volume);
+  EXPECT_EQ(two.body_force.size(), one.body_force.size());
+  if (two.body_force.size() == one.body_force.size()) {
+    EXPECT_LE((two.body_force - one.body_force).lpNorm<Eigen::Infinity>(),
+              1e-13 * one.body_force.lpNorm<Eigen::Infinity>());
+  }
 }
 
 struct Solved {
