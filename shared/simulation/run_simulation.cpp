@@ -130,14 +130,16 @@ public:
         observer_(std::move(observer)) {}
 
   // Stress as cell data, when the discretization's elements are the volume cells.
-  void add_stress(UnstructuredGrid& grid, const Eigen::VectorXd& displacement) const {
-    const Eigen::MatrixXd stresses = simulation_.discretization().element_cauchy_stress(displacement);
+  static void add_stress(UnstructuredGrid& grid, const Eigen::MatrixXd& stresses) {
     if (stresses.rows() == 0 || stresses.rows() != grid.cell_count()) return;
     grid.cell_data.emplace_back("cauchy_stress", stresses);
     grid.cell_data.emplace_back("von_mises", von_mises(stresses));
   }
 
   void write(const Eigen::VectorXd& displacement, double time) {
+    // Every rank computes its elements' stresses, which their sum over the ranks makes whole.
+    const Eigen::MatrixXd stresses =
+        output_.volume ? simulation_.discretization().element_cauchy_stress(displacement) : Eigen::MatrixXd();
     if (ranks::index() != 0) return;  // rank 0 writes every frame
     char name[64];
     RunFrame frame;
@@ -145,7 +147,7 @@ public:
     if (output_.volume) {
       std::snprintf(name, sizeof name, "volume_%06d.vtu", frame_);
       frame.volume = simulation_.method().volume_grid(displacement);
-      add_stress(frame.volume, displacement);
+      add_stress(frame.volume, stresses);
       write_vtu(directory_ / name, frame.volume);
       volume_.add(time, name);
       volume_.write();
