@@ -280,11 +280,12 @@ void ElasticAssembler::add_mass(const ElementMasses& masses, double factor, Spar
   // A share's pattern holds only its own elements' blocks.
   const auto& colors = share_pattern_ ? owned_colors_ : colors_;
   parallel::for_each_colored(colors, static_cast<size_t>(elements_.size()), active_threads(), [&](int e) {
+    const Eigen::MatrixXd& element_mass = masses.matrices[e];
+    if (element_mass.size() == 0) return;  // another rank's
     const ElementView element = elements_[e];
     const double scale = factor * materials_[element.material]->density();
     const int n = element.basis_count();
     const int* offsets = sparsity_.pair_offsets(e);
-    const Eigen::MatrixXd& element_mass = masses.matrices[e];
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a) {
         const double m = scale * element_mass(a, b);
@@ -297,6 +298,7 @@ Eigen::VectorXd ElasticAssembler::mass_times(const ElementMasses& masses, const 
   check_masses(masses);
   Eigen::VectorXd product = Eigen::VectorXd::Zero(pattern().rows());
   for_each_colored_element([&](int e) {
+    if (masses.matrices[e].size() == 0) return;  // another rank's
     const ElementView element = elements_[e];
     const int n = element.basis_count();
     // The element's nodal values, n × 3 (the mass acts alike on each component); per
@@ -319,6 +321,7 @@ Eigen::VectorXd ElasticAssembler::body_force(const ElementMasses& masses, const 
   // Serial: it runs once per run, and elements sum into shared entries.
   Eigen::VectorXd force = Eigen::VectorXd::Zero(pattern().rows());
   for (int e = 0; e < elements_.size(); ++e) {
+    if (masses.integrals[e].size() == 0) continue;  // another rank's
     const ElementView element = elements_[e];
     const double density = materials_[element.material]->density();
     for (int a = 0; a < element.basis_count(); ++a)
@@ -333,6 +336,7 @@ Eigen::VectorXd ElasticAssembler::lumped_mass(const ElementMasses& masses) const
   check_masses(masses);
   Eigen::VectorXd lumped = Eigen::VectorXd::Zero(pattern().rows());
   for (int e = 0; e < elements_.size(); ++e) {
+    if (masses.matrices[e].size() == 0) continue;  // another rank's
     const ElementView element = elements_[e];
     const Eigen::VectorXd diagonal = masses.matrices[e].diagonal();
     const double scale = materials_[element.material]->density() * masses.volumes[e] / diagonal.sum();
@@ -373,7 +377,10 @@ Eigen::MatrixXd ElasticAssembler::mean_cauchy_stress(const Eigen::VectorXd& disp
 
 void ElasticAssembler::check_masses(const ElementMasses& masses) const {
   bool same = masses.size() == elements_.size();
-  for (int e = 0; same && e < elements_.size(); ++e) same = masses.matrices[e].rows() == elements_[e].basis_count();
+  // An element another rank holds may have no mass here (element_masses of a share).
+  for (int e = 0; same && e < elements_.size(); ++e)
+    same = masses.matrices[e].rows() == elements_[e].basis_count() ||
+           (masses.matrices[e].size() == 0 && !elements_.holds(e));
   if (!same)
     throw std::invalid_argument("ElasticAssembler: the element masses must be the elements', in the same order");
 }

@@ -10,10 +10,16 @@ void ElementMasses::append(const TabulatedElements& elements) {
   volumes.resize(first + count);
 #pragma omp parallel for schedule(dynamic, 16)
   for (int e = 0; e < count; ++e) {
-    const ElementView element = elements[e];
-    const int n = element.basis_count();
     Eigen::MatrixXd& matrix = matrices[first + e];
     Eigen::VectorXd& integral = integrals[first + e];
+    if (!elements.holds(e)) {  // another rank's: no entry
+      matrix.resize(0, 0);
+      integral.resize(0);
+      volumes[first + e] = 0;
+      continue;
+    }
+    const ElementView element = elements[e];
+    const int n = element.basis_count();
     matrix.setZero(n, n);
     integral.setZero(n);
     double volume = 0;

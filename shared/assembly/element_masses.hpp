@@ -17,7 +17,8 @@ struct ElementMasses {
   std::vector<double> volumes;             ///< per element: Σ_q w_q
 
   int size() const { return static_cast<int>(volumes.size()); }
-  /// Appends the reduction of every element of `elements` (in parallel over elements).
+  /// Appends the reduction of every element of `elements` (in parallel over elements); an
+  /// element another rank holds (TabulatedElements::holds) gets empty entries and volume 0.
   void append(const TabulatedElements& elements);
 };
 

@@ -43,7 +43,7 @@ std::vector<int> partition_elements(const TabulatedElements& elements, const Bas
   // the weights small while ranking cut cells (many points) above plain ones.
   std::vector<double> work(static_cast<size_t>(elements.size()));
   for (int e = 0; e < elements.size(); ++e)
-    work[e] = static_cast<double>(elements[e].point_count()) * elements[e].basis_count();
+    work[e] = static_cast<double>(elements.whole_point_count(e)) * elements[e].basis_count();
   return partition_graph([&] { return element_graph(elements, couplings); }, work, parts);
 }
 

@@ -94,16 +94,26 @@ bool TabulatedDiscretization::assembles_term(size_t term) const { return term_he
 
 TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : parts_(std::move(parts)) {
   const BasisGroups couplings = collect_couplings(parts_.terms);
+  // Over several ranks a method that can tabulate some elements without the others first
+  // lists every element's basis and point count, from which METIS divides them.
+  if (parts_.tabulate)
+    parts_.elements = parts_.tabulate(ranks::distributed() ? TabulatedHere([](int) { return false; }) : nullptr);
   RankDivision division;
   if (ranks::distributed()) division = divide_among_ranks(couplings);
   const std::vector<char>& mine = division.groups;
   const bool share = ranks::shares_matrices();
   if (share) share_row_owners_ = std::move(division.basis_owners);
-  // The masses from the whole tabulation, before a rank keeps only its elements' points:
-  // every rank then holds the whole mass, lumped or consistent, as the integrators expect.
+  // Each rank then tabulates its own elements when the solver sums the matrices' shares,
+  // and sums the lumped mass, M v and the body-force loads from its elements' masses.
+  // Otherwise every rank adds the whole mass to the summed Hessian: the elements are
+  // tabulated whole, reduced to their masses, and then each rank keeps its own.
+  if (parts_.tabulate && ranks::distributed())
+    parts_.elements = parts_.tabulate(share ? TabulatedHere([&mine](int e) { return mine[e] != 0; }) : nullptr);
+  parts_.tabulate = nullptr;
+  masses_of_share_ = parts_.elements.is_share() && !parts_.element_masses;
   masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);
   parts_.element_masses.reset();
-  if (ranks::distributed())
+  if (ranks::distributed() && !parts_.elements.is_share())
     parts_.elements.keep_only(std::span<const char>(mine.data(), static_cast<size_t>(parts_.elements.size())));
   assembler_ = std::make_unique<ElasticAssembler>(parts_.elements, parts_.materials, couplings,
                                                   share ? std::span<const char>(mine) : std::span<const char>{});
@@ -115,6 +125,7 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
     first_group += term->couplings().size();
   }
   lumped_mass_ = assembler_->lumped_mass(masses_);
+  if (masses_of_share_) ranks::sum(std::span<double>(lumped_mass_.data(), static_cast<size_t>(lumped_mass_.size())));
   if (parts_.explicit_mass == ExplicitMassKind::lumped) {
     check_lumped_mass_positive(lumped_mass_, parts_.elements);
     explicit_mass_ = std::make_unique<DiagonalMass>(lumped_mass_);
@@ -192,6 +203,18 @@ void TabulatedDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMat
   });
   if (share_row_owners_.empty())
     ranks::sum(std::span<double>(hessian.valuePtr(), static_cast<size_t>(hessian.nonZeros())));
+}
+
+Eigen::VectorXd TabulatedDiscretization::mass_times(const Eigen::VectorXd& vector) const {
+  Eigen::VectorXd product = assembler_->mass_times(masses_, vector);
+  if (masses_of_share_) ranks::sum(std::span<double>(product.data(), static_cast<size_t>(product.size())));
+  return product;
+}
+
+Eigen::VectorXd TabulatedDiscretization::body_force(const Eigen::Vector3d& acceleration) const {
+  Eigen::VectorXd force = assembler_->body_force(masses_, acceleration);
+  if (masses_of_share_) ranks::sum(std::span<double>(force.data(), static_cast<size_t>(force.size())));
+  return force;
 }
 
 Eigen::MatrixXd TabulatedDiscretization::element_cauchy_stress(const Eigen::VectorXd& displacement) const {

@@ -6,6 +6,7 @@
 // tabulations (the FCM with its own cells and cut-cell rules); DG and harmonic bases
 // from their own. The mass, the Hessian and the load vectors all come from the same
 // tabulated elements, so any basis gets the right ones.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -28,8 +29,17 @@ enum class ExplicitMassKind {
   block_per_element,
 };
 
+/// Tabulates a method's elements: those `here` holds, the others held elsewhere
+/// (TabulatedElements::add_held_elsewhere: their basis lists and point counts only).
+using ElementTabulator = std::function<TabulatedElements(const TabulatedHere& here)>;
+
 struct DiscretizationParts {
   TabulatedElements elements;
+  /// Instead of `elements`, for a method that can tabulate some elements without the
+  /// others: over several ranks each then tabulates only its own (docs/scaling.md), the
+  /// partition made from every element's basis list and point count. Called during
+  /// construction only.
+  ElementTabulator tabulate;
   /// The elements' masses (one entry per element, in order) from the rules the mass
   /// matrix, the lumped mass and the body-force loads use, when they differ from the
   /// stiffness rules: the FCM integrates mass at a higher order than stiffness and
@@ -71,15 +81,11 @@ public:
   /// Assembled on first use: the integrators take the mass element by element
   /// (mass_times, add_mass), so a run holds no matrix of it as large as the Hessian.
   const Eigen::SparseMatrix<double>& mass_matrix() const override;
-  Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override {
-    return assembler_->mass_times(masses_, vector);
-  }
+  Eigen::VectorXd mass_times(const Eigen::VectorXd& vector) const override;
   /// matrix (with hessian_pattern()) += factor · M.
   void add_mass(double factor, Eigen::SparseMatrix<double>& matrix) const override;
   const ExplicitMass& explicit_mass() const override;
-  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override {
-    return assembler_->body_force(masses_, acceleration);
-  }
+  Eigen::VectorXd body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd explicit_body_force(const Eigen::Vector3d& acceleration) const override;
   Eigen::VectorXd external_force(double time) const override;
   /// Evaluates parts.deformation_shifts at `time` (from time 0 at construction).
@@ -115,6 +121,7 @@ private:
   Eigen::VectorXd lumped_mass_;
   mutable std::unique_ptr<ExplicitMass> explicit_mass_;  // the lumped one at once, a block one once asked for
   bool constant_hessian_ = false;
+  bool masses_of_share_ = false;  // masses_ holds this rank's elements only: what sums them is summed over the ranks
   std::vector<char> term_here_;         // per term, over several ranks: whether this rank evaluates it
   std::vector<int> share_row_owners_;   // with ranks::shares_matrices(): each basis function's rank
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)

@@ -32,8 +32,24 @@ void TabulatedElements::add(std::span<const int> basis, std::span<const double> 
                                                                         points * basis_size, 3) = gradients;
   value_offsets_.push_back(static_cast<long long>(values_.size()));
   material_.push_back(material);
+  held_.push_back(1);
+  whole_point_offsets_.push_back(whole_point_offsets_.back() + points);
   for (int index : basis) basis_count_ = std::max(basis_count_, index + 1);
   max_element_basis_ = std::max(max_element_basis_, static_cast<int>(basis_size));
+}
+
+void TabulatedElements::add_held_elsewhere(std::span<const int> basis, int points, int material) {
+  if (points < 0) throw std::invalid_argument("TabulatedElements::add_held_elsewhere: a negative point count");
+  basis_.insert(basis_.end(), basis.begin(), basis.end());
+  basis_offsets_.push_back(static_cast<long long>(basis_.size()));
+  point_offsets_.push_back(point_offsets_.back());
+  value_offsets_.push_back(value_offsets_.back());
+  material_.push_back(material);
+  held_.push_back(0);
+  whole_point_offsets_.push_back(whole_point_offsets_.back() + points);
+  share_ = true;
+  for (int index : basis) basis_count_ = std::max(basis_count_, index + 1);
+  max_element_basis_ = std::max(max_element_basis_, static_cast<int>(basis.size()));
 }
 
 void TabulatedElements::reserve(int elements, long long basis_entries, long long point_entries,
@@ -42,6 +58,8 @@ void TabulatedElements::reserve(int elements, long long basis_entries, long long
   point_offsets_.reserve(elements + 1);
   value_offsets_.reserve(elements + 1);
   material_.reserve(elements);
+  held_.reserve(elements);
+  whole_point_offsets_.reserve(elements + 1);
   basis_.reserve(basis_entries);
   weights_.reserve(point_entries);
   values_.reserve(value_entries);
@@ -66,7 +84,7 @@ void TabulatedElements::keep_only(std::span<const char> keep) {
   }
   share_ = true;
   held_.assign(keep.begin(), keep.end());
-  whole_point_offsets_ = std::exchange(point_offsets_, std::move(point_offsets));
+  point_offsets_ = std::move(point_offsets);
   value_offsets_ = std::move(value_offsets);
   weights_ = std::move(weights);
   values_ = std::move(values);

@@ -10,6 +10,7 @@
 // Storage is packed for all elements (no per-element heap blocks), so assembly streams
 // through memory.
 #include <Eigen/Core>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -33,12 +34,18 @@ struct ElementView {
   }
 };
 
+/// Whether element e is tabulated on this rank; an empty function: every element.
+using TabulatedHere = std::function<bool(int element)>;
+
 class TabulatedElements {
 public:
   /// Appends one element. values: #points × #basis; gradients: (#points·#basis) × 3,
   /// point-major (rows q·#basis .. q·#basis + #basis − 1 belong to point q).
   void add(std::span<const int> basis, std::span<const double> weights, const Eigen::Ref<const Eigen::MatrixXd>& values,
            const Eigen::Ref<const Eigen::MatrixXd>& gradients, int material = 0);
+  /// Appends an element another rank tabulates (docs/scaling.md): its basis list, its
+  /// material and how many points it has, none of them held here. Makes this a share.
+  void add_held_elsewhere(std::span<const int> basis, int points, int material = 0);
   void reserve(int elements, long long basis_entries, long long point_entries, long long value_entries);
 
   int size() const { return static_cast<int>(material_.size()); }
@@ -55,20 +62,18 @@ public:
   /// zero, which keep their basis lists, materials and point counts. What is then summed
   /// over elements is this rank's part, and sum_over_ranks() makes it the whole.
   void keep_only(std::span<const char> keep);
-  /// Whether keep_only() made this a share (even one that kept every element).
+  /// Whether keep_only() or add_held_elsewhere() made this a share (even one holding every
+  /// element).
   bool is_share() const { return share_; }
   /// Whether element e's points are held here.
-  bool holds(int element) const { return !share_ || held_[element]; }
+  bool holds(int element) const { return held_[element] != 0; }
   /// Element e's points in the whole tabulation, held here or not.
   int whole_point_count(int element) const {
-    const std::vector<long long>& offsets = share_ ? whole_point_offsets_ : point_offsets_;
-    return static_cast<int>(offsets[element + 1] - offsets[element]);
+    return static_cast<int>(whole_point_offsets_[element + 1] - whole_point_offsets_[element]);
   }
   /// Where element e's points start in the whole tabulation (e = size(): their count).
-  long long whole_point_offset(int element) const {
-    return share_ ? whole_point_offsets_[element] : point_offsets_[element];
-  }
-  long long whole_point_count() const { return whole_point_offset(size()); }
+  long long whole_point_offset(int element) const { return whole_point_offsets_[element]; }
+  long long whole_point_count() const { return whole_point_offsets_.back(); }
   /// Over a share, each entry (a sum over this rank's elements, or zero for elements it does
   /// not hold) replaced by its sum over the ranks; nothing for a whole tabulation.
   void sum_over_ranks(std::span<double> values) const;
@@ -87,10 +92,11 @@ private:
   std::vector<double> values_;
   std::vector<double> gradients_;
   std::vector<int> material_;
-  // After keep_only(): which elements are held, and the whole tabulation's point offsets.
+  // Which elements' points are held here, and where they start in the whole tabulation
+  // (#elements + 1): point_offsets_ unless this is a share.
   bool share_ = false;
   std::vector<char> held_;
-  std::vector<long long> whole_point_offsets_;
+  std::vector<long long> whole_point_offsets_{0};
   int basis_count_ = 0;
   int max_element_basis_ = 0;
 };

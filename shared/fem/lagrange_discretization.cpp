@@ -21,13 +21,18 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
     const NodeConstraints* constraints) {
   const bool tetrahedra = element_shape(mesh.element_type) == ElementShape::tetrahedron;
   DiscretizationParts parts;
-  parts.elements = tabulate_lagrange(
-      mesh,
-      LagrangeCellRules{
-          tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, std::move(material_ids)});
+  LagrangeCellRules rules{
+      tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, std::move(material_ids)};
   parts.materials = std::move(materials);
   const bool hanging = constraints && !constraints->empty();
-  if (hanging) parts.elements = constrain_lagrange_elements(parts.elements, *constraints);
+  // Without hanging nodes each rank tabulates only its cells (the discretization is built
+  // below, while `mesh` lives).
+  if (hanging)
+    parts.elements = constrain_lagrange_elements(tabulate_lagrange(mesh, rules), *constraints);
+  else
+    parts.tabulate = [&mesh, rules = std::move(rules)](const TabulatedHere& here) {
+      return tabulate_lagrange(mesh, rules, here);
+    };
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
   parts.coarse_space = first_order_space(mesh, constraints);

@@ -31,7 +31,8 @@ ReferenceTable reference_table(const ReferenceElement& element, const Quadrature
 
 }  // namespace
 
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules) {
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules,
+                                    const TabulatedHere& here) {
   const ReferenceElement& element = reference_element(mesh.element_type);
   const int n = element.node_count();
   const int cells = static_cast<int>(mesh.cells.rows());
@@ -44,8 +45,12 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
   std::vector<Eigen::MatrixXd> custom_values(cells);
   std::atomic<int> failed_cell{-1};
   std::atomic<int> failed_point{-1};
+  std::vector<char> held(static_cast<size_t>(cells), 1);
+  if (here)
+    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < cells; ++cell) {
+    if (!held[cell]) continue;
     const auto custom = rules.custom.find(cell);
     const bool own_rule = custom != rules.custom.end();
     const QuadratureRule& rule = own_rule ? custom->second : rules.standard;
@@ -88,8 +93,14 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
   std::vector<int> basis(n);
   for (int cell = 0; cell < cells; ++cell) {
     for (int a = 0; a < n; ++a) basis[a] = mesh.cells(cell, a);
-    const Eigen::MatrixXd& values = custom_values[cell].size() > 0 ? custom_values[cell] : standard.values;
     const int material = rules.materials.empty() ? 0 : rules.materials[cell];
+    if (!held[cell]) {
+      const auto custom = rules.custom.find(cell);
+      const QuadratureRule& rule = custom != rules.custom.end() ? custom->second : rules.standard;
+      tabulated.add_held_elsewhere(basis, static_cast<int>(rule.weights.size()), material);
+      continue;
+    }
+    const Eigen::MatrixXd& values = custom_values[cell].size() > 0 ? custom_values[cell] : standard.values;
     tabulated.add(basis, std::span<const double>(weights[cell].data(), weights[cell].size()), values, gradients[cell],
                   material);
   }

@@ -21,8 +21,10 @@ struct LagrangeCellRules {
 /// Tabulates a conforming Lagrange mesh: for each cell, weights w_q |det J(ξ_q)|, basis
 /// values, and physical gradients ∇N = (∂N/∂ξ) J⁻¹ at its rule's points. Basis function
 /// i is mesh node i. OpenMP-parallel over cells. Throws NumericalError naming the cell
-/// and point when det J ≤ 0 (an inverted or degenerate cell).
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules);
+/// and point when det J ≤ 0 (an inverted or degenerate cell). A cell `here` does not hold is
+/// added with its nodes and point count only (TabulatedElements::add_held_elsewhere).
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules,
+                                    const TabulatedHere& here = nullptr);
 /// Every cell with the reference rule of `quadrature_strength` (tet_rule / hex_rule), material 0.
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength);
 

@@ -207,12 +207,15 @@ FromTabulation from_tabulation(const Built& built) {
   return result;
 }
 
-// Each rank keeps the quadrature points of its own elements only (TabulatedElements::
-// keep_only; dg's linear system tabulates nothing): the points the ranks hold sum to the
-// whole tabulation, each holding fewer, and what is computed from the tabulation for every
-// element or the whole body is one process's, the sums of the ranks' parts.
-TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
-  const Built together(GetParam());
+// Each rank holds the quadrature points of its own elements only (dg's linear system
+// tabulates nothing): with PETSc summing the matrices' shares, fem and fcm tabulate only
+// their own (ElementTabulator), the others tabulate every element and keep their own
+// (TabulatedElements::keep_only), as every method does with another solver. The points
+// the ranks hold sum to the whole tabulation, each holding fewer, and what is computed from
+// the tabulation for every element or the whole body is one process's, the sums of the
+// ranks' parts.
+void expect_whole_from_shares(const Case& c, const std::vector<std::string>& settings) {
+  const Built together(c, settings);
   if (const std::optional<FieldQuadrature> quadrature = together.simulation->method().field_quadrature(0);
       quadrature && quadrature->elements->is_share()) {
     const auto held = static_cast<double>(quadrature->elements->point_count());
@@ -224,7 +227,7 @@ TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
   FromTabulation one;
   {
     const ranks::Alone one_process;
-    one = from_tabulation(Built(GetParam()));
+    one = from_tabulation(Built(c, settings));
   }
   EXPECT_EQ(two.stresses.rows(), one.stresses.rows());
   if (two.stresses.rows() == one.stresses.rows()) {
@@ -236,6 +239,11 @@ TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
     EXPECT_LE((two.body_force - one.body_force).lpNorm<Eigen::Infinity>(),
               1e-13 * one.body_force.lpNorm<Eigen::Infinity>());
   }
+}
+
+TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
+  expect_whole_from_shares(GetParam(), {});
+  expect_whole_from_shares(GetParam(), {"solver/linear=petsc"});
 }
 
 struct Solved {
