@@ -77,9 +77,10 @@ public:
   /// Whether every material's tangent is independent of F (linear elasticity): then
   /// the Hessian needs assembling and factorising only once.
   bool is_linear() const;
-  /// A constant shift of F at every quadrature point (9 values per point, column-major,
-  /// in the whole tabulation's point order (TabulatedElements::whole_point_offset); not owned, read at every assembly), or an empty span for
-  /// none: F = I + Σ_a u_a ⊗ ∇N_a + shift. DG's lifted Dirichlet data (dg/lifted_gradients.hpp).
+  /// A constant shift of F at every quadrature point (9 values per point, column-major, in
+  /// the whole tabulation's point order: TabulatedElements::whole_point_offset; not owned,
+  /// read at every assembly), or an empty span for none: F = I + Σ_a u_a ⊗ ∇N_a + shift.
+  /// DG's lifted Dirichlet data (dg/lifted_gradients.hpp).
   void set_deformation_shifts(std::span<const double> shifts);
   /// Makes energy(), gradient() and hessian() sum only the elements whose `owned` entry is
   /// nonzero (#elements), the others counting zero: one rank's share of a run over several
@@ -109,7 +110,7 @@ private:
   std::vector<std::vector<int>> owned_colors_;  // with owned_: colors_ restricted to the owned elements
   bool share_pattern_ = false;                  // constructed with a share: the matrices hold owned_ only
   BasisIncidence incidence_;
-  const double* shifts_ = nullptr;        // set_deformation_shifts', or null
+  const double* shifts_ = nullptr;  // set_deformation_shifts', or null
   // Per-element results kept between calls, so that assembly does not allocate: the
   // gradient's forces (3 per incidence slot) and the energy's element energies.
   // Like the scratch, they make concurrent calls on one assembler unsafe.

@@ -121,7 +121,8 @@ private:
   Eigen::VectorXd lumped_mass_;
   mutable std::unique_ptr<ExplicitMass> explicit_mass_;  // the lumped one at once, a block one once asked for
   bool constant_hessian_ = false;
-  bool masses_of_share_ = false;  // masses_ holds this rank's elements only: what sums them is summed over the ranks
+  // masses_ of this rank's elements only: the lumped mass, M v and body forces summed over the ranks.
+  bool masses_of_share_ = false;
   std::vector<char> term_here_;         // per term, over several ranks: whether this rank evaluates it
   std::vector<int> share_row_owners_;   // with ranks::shares_matrices(): each basis function's rank
   mutable std::vector<double> shifts_;  // parts_.deformation_shifts at the last set_time (9 per point)

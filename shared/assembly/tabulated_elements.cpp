@@ -1,8 +1,8 @@
 #include "shared/assembly/tabulated_elements.hpp"
 
 #include <algorithm>
-#include <utility>
 #include <stdexcept>
+#include <utility>
 
 #include "shared/solve/process_ranks.hpp"
 

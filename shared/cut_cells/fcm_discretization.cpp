@@ -138,12 +138,13 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   stiffness_rules.materials = kept_materials;
   // Without hanging nodes each rank tabulates only its cells (the discretization is built
   // below, while fcm.mesh lives).
-  if (constrained)
+  if (constrained) {
     parts.elements = constrain_lagrange_elements(tabulate_lagrange(fcm.mesh, stiffness_rules), fcm.constraints);
-  else
+  } else {
     parts.tabulate = [&mesh = fcm.mesh, rules = std::move(stiffness_rules)](const TabulatedHere& here) {
       return tabulate_lagrange(mesh, rules, here);
     };
+  }
   // The mass rules are large (a high strength, never simplified) and used once
   // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
   parts.element_masses = lagrange_element_masses(

@@ -27,12 +27,13 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   const bool hanging = constraints && !constraints->empty();
   // Without hanging nodes each rank tabulates only its cells (the discretization is built
   // below, while `mesh` lives).
-  if (hanging)
+  if (hanging) {
     parts.elements = constrain_lagrange_elements(tabulate_lagrange(mesh, rules), *constraints);
-  else
+  } else {
     parts.tabulate = [&mesh, rules = std::move(rules)](const TabulatedHere& here) {
       return tabulate_lagrange(mesh, rules, here);
     };
+  }
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
   parts.coarse_space = first_order_space(mesh, constraints);

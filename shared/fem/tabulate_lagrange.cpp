@@ -31,8 +31,7 @@ ReferenceTable reference_table(const ReferenceElement& element, const Quadrature
 
 }  // namespace
 
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules,
-                                    const TabulatedHere& here) {
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules, const TabulatedHere& here) {
   const ReferenceElement& element = reference_element(mesh.element_type);
   const int n = element.node_count();
   const int cells = static_cast<int>(mesh.cells.rows());
