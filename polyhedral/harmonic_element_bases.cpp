@@ -11,6 +11,7 @@
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
+#include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem::harmonic {
 
@@ -102,8 +103,11 @@ double HarmonicElementBases::max_boundary_residual() const {
 }
 
 TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQuadrature& quadrature,
-                                                 const std::vector<int>& materials) const {
+                                                 const std::vector<int>& materials, const TabulatedHere& here) const {
   const int cells = cell_count();
+  std::vector<char> held(static_cast<size_t>(cells), 1);
+  if (here)
+    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
   // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
   // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
   // the cell's element in its type's table.
@@ -123,12 +127,16 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
     for (size_t row = 0; row < rows.size(); ++row)
       for (int corner = 0; corner < corners; ++corner)
         volume.cells(static_cast<Eigen::Index>(row), corner) = cells_[rows[row]].nodes[corner];
-    plain_tables[t] = tabulate_lagrange(volume, strength);
+    const bool tetrahedra = plain_types[t] == ElementType::tet4;
+    plain_tables[t] =
+        tabulate_lagrange(volume, LagrangeCellRules{tetrahedra ? tet_rule(strength) : hex_rule(strength), {}, {}},
+                          [&](int row) { return held[rows[row]] != 0; });
   }
   // MFS cells: the chosen rule on the polyhedron and the consistency correction. A rule
   // without points would leave the cell unintegrated (the correction divides by its
   // volume): the first such cell is reported after the loop.
   std::vector<HarmonicTabulation> mfs_tables(cells);
+  std::vector<int> elsewhere_points(static_cast<size_t>(cells), 0);  // a cell another rank tabulates
   std::atomic<int> empty_cell{cells};
 #pragma omp parallel for schedule(dynamic, 4)
   for (int cell = 0; cell < cells; ++cell) {
@@ -138,22 +146,28 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
       record_first(empty_cell, cell);
       continue;
     }
-    mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, rule, quadrature.consistent);
+    if (held[cell]) mfs_tables[cell] = tabulate_harmonic_element(*cells_[cell].mfs, rule, quadrature.consistent);
+    else elsewhere_points[cell] = static_cast<int>(rule.weights.size());
   }
   if (empty_cell < cells)
     throw NumericalError("harmonic quadrature of cell " + std::to_string(empty_cell.load()) +
                          ": its rule has no point inside the cell (raise subdivision_levels or monte_carlo_points)");
   TabulatedElements elements;
   for (int cell = 0; cell < cells; ++cell) {
+    const int material = materials.empty() ? 0 : materials[cell];
     if (const auto& type = cells_[cell].plain) {
-      const ElementView view = plain_tables[*type == plain_types[0] ? 0 : 1][plain_row[cell]];
+      const TabulatedElements& table = plain_tables[*type == plain_types[0] ? 0 : 1];
+      const ElementView view = table[plain_row[cell]];
       const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients(
           view.gradients, static_cast<Eigen::Index>(view.point_count()) * view.basis_count(), 3);
-      elements.add(view.basis, view.weights, view.values, gradients, materials.empty() ? 0 : materials[cell]);
+      if (held[cell]) elements.add(view.basis, view.weights, view.values, gradients, material);
+      else elements.add_held_elsewhere(view.basis, table.whole_point_count(plain_row[cell]), material);
+    } else if (!held[cell]) {
+      elements.add_held_elsewhere(cells_[cell].nodes, elsewhere_points[cell], material);
     } else {
       const HarmonicTabulation& table = mfs_tables[cell];
       elements.add(cells_[cell].nodes, {table.weights.data(), static_cast<size_t>(table.weights.size())}, table.values,
-                   table.gradients, materials.empty() ? 0 : materials[cell]);
+                   table.gradients, material);
       mfs_tables[cell] = {};  // release as we go
     }
   }

@@ -47,9 +47,11 @@ public:
   /// harmonic_cell_rule(quadrature) with harmonic_tabulation's consistency correction
   /// (when quadrature.consistent) on MFS cells. Element e is cell e, of material
   /// materials[e] (empty: all 0). Parallel over cells. Throws NumericalError naming the
-  /// first MFS cell whose rule has no point (a cell thinner than a subdivision box).
-  TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature,
-                             const std::vector<int>& materials = {}) const;
+  /// first MFS cell whose rule has no point (a cell thinner than a subdivision box). A cell
+  /// `here` does not hold is added with its nodes and its rule's point count only
+  /// (TabulatedElements::add_held_elsewhere): its MFS rule is made, its basis not evaluated.
+  TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature, const std::vector<int>& materials = {},
+                             const TabulatedHere& here = nullptr) const;
 
   /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
   /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an

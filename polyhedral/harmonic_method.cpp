@@ -73,10 +73,16 @@ public:
     }
     DiscretizationParts parts;
     quadrature_order_ = spec.quadrature_order;
-    parts.elements = bases_->tabulate(spec.quadrature_order, spec.quadrature, materials_.ids_of(mesh_.cell_centroids));
-    for (int cell = 0; cell < bases_->cell_count(); ++cell)
-      if (bases_->mfs_basis(cell)) mfs_quadrature_points_ += parts.elements[cell].point_count();
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // Over several ranks each tabulates only its cells (TabulatedDiscretization calls this
+    // while it is built, below); the tabulation's seconds count with the bases'.
+    parts.tabulate = [this, order = spec.quadrature_order, quadrature = spec.quadrature,
+                      materials = materials_.ids_of(mesh_.cell_centroids)](const TabulatedHere& here) {
+      const auto begin = std::chrono::steady_clock::now();
+      TabulatedElements elements = bases_->tabulate(order, quadrature, materials, here);
+      quadrature_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+      return elements;
+    };
     parts.materials = materials_.pointers();
     // The basis is nodal (N_i(x_j) = δ_ij up to the fit), so conditions are strong on
     // the nodes, as in fem; the lumped mass suits its partition of unity.
@@ -92,6 +98,8 @@ public:
       elements_ = &linear->elements();
       discretization_ = std::move(linear);
     }
+    for (int cell = 0; cell < bases_->cell_count(); ++cell)
+      if (bases_->mfs_basis(cell)) mfs_quadrature_points_ += elements_->whole_point_count(cell);
     surface_.evaluator = std::make_unique<HarmonicBasisEvaluator>(mesh_, *bases_);
     // Trilinear and harmonic bases are complete to degree 1 only (Martin et al. 2008 §4).
     if (auto warning = flat_cell_locking_warning(

@@ -246,6 +246,16 @@ TEST_P(TwoRanks, EachRankHoldsItsElementsPointsAndComputesTheWholes) {
   expect_whole_from_shares(GetParam(), {"solver/linear=petsc"});
 }
 
+// harmonic on a sliced half-ball: the cut cells have MFS bases, whose rules a rank makes
+// for every cell (their point counts divide the cells) and tabulates for its own only.
+TEST(TwoRanksHarmonic, SlicedCellsTabulatedPerRankGiveTheWholes) {
+  expect_whole_from_shares({"harmonic_sliced",
+                            "harmonic",
+                            "scenes/manufactured_half_ball.json",
+                            {R"(discretization/harmonic={"mesh": "slice", "slice": {"resolution": 4}})"}},
+                           {"solver/linear=petsc"});
+}
+
 struct Solved {
   Eigen::VectorXd displacement;
   int newton_iterations = 0;
