@@ -39,21 +39,31 @@ double lifting_weight(const DgFace& face) {
   return face.condition >= 0 && !face.strong ? 1.0 : 0.0;  // a strong face carries no flux term
 }
 
-LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<int>& faces, int strength) {
-  const MonomialBasis& basis = system.basis(cell);
-  const int own = basis.size();
-  LiftedCell lifted;
-  // Functions: own, then each neighbour's (first column of each neighbour in `first`).
-  for (int a = 0; a < own; ++a) lifted.functions.push_back(system.offset(cell) + a);
-  std::vector<std::pair<int, int>> first;  // (neighbour, its first column)
+// A lifted cell's functions: its own, then each face neighbour's once, in face order;
+// `first` receives (neighbour, its first column) when given.
+std::vector<int> lifted_functions(const DgLinearSystem& system, int cell, const std::vector<int>& faces,
+                                  std::vector<std::pair<int, int>>* first = nullptr) {
+  std::vector<int> functions;
+  for (int a = 0; a < system.basis(cell).size(); ++a) functions.push_back(system.offset(cell) + a);
+  std::vector<int> neighbours;
   for (int f : faces) {
     const DgFace& face = system.faces()[f];
     if (face.plus < 0) continue;
     const int neighbour = face.minus == cell ? face.plus : face.minus;
-    if (std::any_of(first.begin(), first.end(), [&](const auto& entry) { return entry.first == neighbour; })) continue;
-    first.emplace_back(neighbour, static_cast<int>(lifted.functions.size()));
-    for (int a = 0; a < system.basis(neighbour).size(); ++a) lifted.functions.push_back(system.offset(neighbour) + a);
+    if (std::find(neighbours.begin(), neighbours.end(), neighbour) != neighbours.end()) continue;
+    neighbours.push_back(neighbour);
+    if (first) first->emplace_back(neighbour, static_cast<int>(functions.size()));
+    for (int a = 0; a < system.basis(neighbour).size(); ++a) functions.push_back(system.offset(neighbour) + a);
   }
+  return functions;
+}
+
+LiftedCell lift_cell(const DgLinearSystem& system, int cell, const std::vector<int>& faces, int strength) {
+  const MonomialBasis& basis = system.basis(cell);
+  const int own = basis.size();
+  LiftedCell lifted;
+  std::vector<std::pair<int, int>> first;  // (neighbour, its first column)
+  lifted.functions = lifted_functions(system, cell, faces, &first);
   const int n = static_cast<int>(lifted.functions.size());
 
   // The lifting's right-hand sides: b(m, 3a + j) = Σ_f α_f ∫_f φ_m j_a n_K,j dA with the
@@ -151,7 +161,7 @@ void LiftedDirichletData::shifts(const ConditionData& data, std::span<double> sh
   }
 }
 
-LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength) {
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here) {
   const std::vector<std::vector<int>> cell_faces = faces_of_cells(system);
   for (size_t f = 0; f < system.faces().size(); ++f) {
     const DgFace& face = system.faces()[f];
@@ -160,12 +170,20 @@ LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strengt
                                   " prescribes some components only, which the lifted gradient cannot carry");
   }
   std::vector<LiftedCell> cells(static_cast<size_t>(system.cell_count()));
+  std::vector<char> held(cells.size(), 1);
+  if (here)
+    for (int cell = 0; cell < system.cell_count(); ++cell) held[cell] = here(cell) ? 1 : 0;
   // A cell's lifting costs a few face and volume rules and one small solve: parallel over cells.
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < system.cell_count(); ++cell) {
     try {
-      cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
+      if (held[cell]) {
+        cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
+      } else {  // another rank's: its functions and how many points its rule has
+        cells[cell].functions = lifted_functions(system, cell, cell_faces[cell]);
+        cells[cell].weights.resize(system.cell_rule(cell, strength).weights.size());
+      }
     } catch (...) {
 #pragma omp critical(altfem_lift_cells)
       if (!failure) failure = std::current_exception();
@@ -175,8 +193,13 @@ LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strengt
   LiftedDgCells result;
   for (int cell = 0; cell < system.cell_count(); ++cell) {
     LiftedCell& lifted = cells[cell];
+    if (!held[cell]) {
+      result.elements.add_held_elsewhere(lifted.functions, static_cast<int>(lifted.weights.size()),
+                                         system.material_id(cell));
+      continue;
+    }
     if (lifted.dirichlet.face_points.rows() > 0) {
-      lifted.dirichlet.first_point = result.elements.point_count();
+      lifted.dirichlet.first_point = result.elements.whole_point_count();
       result.dirichlet.add(std::move(lifted.dirichlet));
     }
     result.elements.add(lifted.functions, std::span<const double>(lifted.weights.data(), lifted.weights.size()),

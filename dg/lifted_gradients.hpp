@@ -36,7 +36,7 @@ namespace altfem::dg {
 class LiftedDirichletData {
 public:
   struct Cell {
-    long long first_point = 0;     ///< the cell's first volume point in the elements' order
+    long long first_point = 0;     ///< the cell's first volume point in the whole tabulation's order
     Eigen::MatrixXd face_points;   ///< #face points × 3
     Eigen::MatrixXd normals;       ///< #face points × 3, out of the cell
     std::vector<int> conditions;   ///< #face points: the face's condition
@@ -66,6 +66,8 @@ struct LiftedDgCells {
 /// functions' jumps; the data's share is exact for g of degree ≤ k). Throws
 /// std::invalid_argument for a Dirichlet face that prescribes some components only (their
 /// lifting would differ per component, which one scalar gradient per function cannot carry).
-LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength);
+/// A cell `here` does not hold is added with its functions and point count only
+/// (TabulatedElements::add_held_elsewhere), not lifted.
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here = nullptr);
 
 }  // namespace altfem::dg

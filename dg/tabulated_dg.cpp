@@ -1,5 +1,6 @@
 #include "dg/tabulated_dg.hpp"
 
+#include <algorithm>
 #include <numeric>
 
 #include "dg/lifted_gradients.hpp"
@@ -62,17 +63,29 @@ FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
   return terms;
 }
 
+// Whether the lifted gradient carries Dirichlet data: a face holding a weak condition
+// (lift_cell's lifting weight 1).
+bool system_has_weak_dirichlet_faces(const DgLinearSystem& system) {
+  return std::any_of(system.faces().begin(), system.faces().end(),
+                     [](const DgFace& face) { return face.plus < 0 && face.condition >= 0 && !face.strong; });
+}
+
 }  // namespace
 
-TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points) {
+TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points,
+                                    const TabulatedHere& here) {
   // Each cell's rule (a polyhedron's, simplified) and tabulation in parallel, then
   // appended in cell order.
   const int cells = system.cell_count();
   std::vector<PolyhedronRule> rules(static_cast<size_t>(cells));
   std::vector<Eigen::MatrixXd> values(static_cast<size_t>(cells)), gradients(static_cast<size_t>(cells));
+  std::vector<char> held(static_cast<size_t>(cells), 1);
+  if (here)
+    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
 #pragma omp parallel for schedule(dynamic, 8)
   for (int cell = 0; cell < cells; ++cell) {
     rules[cell] = system.cell_rule(cell, strength);
+    if (!held[cell]) continue;
     const Eigen::Index count = rules[cell].weights.size(), n = system.basis(cell).size();
     values[cell].resize(count, n);
     gradients[cell].resize(count * n, 3);
@@ -88,8 +101,12 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
   elements.reserve(cells, basis_total, point_total, value_total);
   for (int cell = 0; cell < cells; ++cell) {
     const PolyhedronRule& rule = rules[cell];
-    elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()),
-                 values[cell], gradients[cell], system.material_id(cell));
+    if (!held[cell])
+      elements.add_held_elsewhere(cell_functions(system, cell), static_cast<int>(rule.weights.size()),
+                                  system.material_id(cell));
+    else
+      elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()),
+                   values[cell], gradients[cell], system.material_id(cell));
   }
   if (points) {
     points->resize(elements.point_count(), 3);
@@ -107,18 +124,25 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   DiscretizationParts parts;
   TabulatedDg result;
   const bool interior_penalty = system.flux() == Flux::interior_penalty;
+  // Over several ranks each tabulates (and lifts) only its cells: the discretization calls
+  // these while it is built, below.
   if (interior_penalty) {
-    LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength);
-    parts.elements = std::move(lifted.elements);
-    if (data && !lifted.dirichlet.empty()) {
-      result.lifted_data = std::make_unique<LiftedDirichletData>(std::move(lifted.dirichlet));
+    result.lifted_data = std::make_unique<LiftedDirichletData>();
+    parts.tabulate = [&system, strength, lifted_data = result.lifted_data.get()](const TabulatedHere& here) {
+      LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength, here);
+      *lifted_data = std::move(lifted.dirichlet);
+      return std::move(lifted.elements);
+    };
+    // The data's shift (zero where no cell of this rank has a Dirichlet face).
+    if (data && system_has_weak_dirichlet_faces(system))
       parts.deformation_shifts = [lifted_data = result.lifted_data.get(), data = std::move(data)](
                                      double time, std::span<double> shifts) {
         lifted_data->shifts([&](int condition, const Eigen::Vector3d& x) { return data(condition, x, time); }, shifts);
       };
-    }
   } else {
-    parts.elements = tabulate_dg_cells(system, strength);
+    parts.tabulate = [&system, strength](const TabulatedHere& here) {
+      return tabulate_dg_cells(system, strength, nullptr, here);
+    };
   }
   parts.materials = std::move(materials);
   FaceTerms terms = tabulate_faces(system, strength);
