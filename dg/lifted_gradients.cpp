@@ -161,7 +161,8 @@ void LiftedDirichletData::shifts(const ConditionData& data, std::span<double> sh
   }
 }
 
-LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here) {
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here,
+                                       const TabulatedElements* listed) {
   const std::vector<std::vector<int>> cell_faces = faces_of_cells(system);
   for (size_t f = 0; f < system.faces().size(); ++f) {
     const DgFace& face = system.faces()[f];
@@ -182,7 +183,8 @@ LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strengt
         cells[cell] = lift_cell(system, cell, cell_faces[cell], strength);
       } else {  // another rank's: its functions and how many points its rule has
         cells[cell].functions = lifted_functions(system, cell, cell_faces[cell]);
-        cells[cell].weights.resize(system.cell_rule(cell, strength).weights.size());
+        cells[cell].weights.resize(listed ? listed->whole_point_count(cell)
+                                          : system.cell_rule(cell, strength).weights.size());
       }
     } catch (...) {
 #pragma omp critical(altfem_lift_cells)

@@ -67,7 +67,9 @@ struct LiftedDgCells {
 /// std::invalid_argument for a Dirichlet face that prescribes some components only (their
 /// lifting would differ per component, which one scalar gradient per function cannot carry).
 /// A cell `here` does not hold is added with its functions and point count only
-/// (TabulatedElements::add_held_elsewhere), not lifted.
-LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here = nullptr);
+/// (TabulatedElements::add_held_elsewhere), not lifted; the count is taken from `listed`
+/// (every cell's, ElementTabulator) when it is given, else from the cell's rule.
+LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strength, const TabulatedHere& here = nullptr,
+                                       const TabulatedElements* listed = nullptr);
 
 }  // namespace altfem::dg

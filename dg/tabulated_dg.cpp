@@ -73,7 +73,7 @@ bool system_has_weak_dirichlet_faces(const DgLinearSystem& system) {
 }  // namespace
 
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points,
-                                    const TabulatedHere& here) {
+                                    const TabulatedHere& here, const TabulatedElements* listed) {
   // Each cell's rule (a polyhedron's, simplified) and tabulation in parallel, then
   // appended in cell order.
   const int cells = system.cell_count();
@@ -84,6 +84,7 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
     for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
 #pragma omp parallel for schedule(dynamic, 8)
   for (int cell = 0; cell < cells; ++cell) {
+    if (!held[cell] && listed) continue;  // its point count is listed
     rules[cell] = system.cell_rule(cell, strength);
     if (!held[cell]) continue;
     const Eigen::Index count = rules[cell].weights.size(), n = system.basis(cell).size();
@@ -102,7 +103,8 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
   for (int cell = 0; cell < cells; ++cell) {
     const PolyhedronRule& rule = rules[cell];
     if (!held[cell])
-      elements.add_held_elsewhere(cell_functions(system, cell), static_cast<int>(rule.weights.size()),
+      elements.add_held_elsewhere(cell_functions(system, cell),
+                                  listed ? listed->whole_point_count(cell) : static_cast<int>(rule.weights.size()),
                                   system.material_id(cell));
     else
       elements.add(cell_functions(system, cell), std::span<const double>(rule.weights.data(), rule.weights.size()),
@@ -128,8 +130,9 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
   // these while it is built, below.
   if (interior_penalty) {
     result.lifted_data = std::make_unique<LiftedDirichletData>();
-    parts.tabulate = [&system, strength, lifted_data = result.lifted_data.get()](const TabulatedHere& here) {
-      LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength, here);
+    parts.tabulate = [&system, strength, lifted_data = result.lifted_data.get()](const TabulatedHere& here,
+                                                                                 const TabulatedElements* listed) {
+      LiftedDgCells lifted = tabulate_lifted_dg_cells(system, strength, here, listed);
       *lifted_data = std::move(lifted.dirichlet);
       return std::move(lifted.elements);
     };
@@ -140,8 +143,8 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
         lifted_data->shifts([&](int condition, const Eigen::Vector3d& x) { return data(condition, x, time); }, shifts);
       };
   } else {
-    parts.tabulate = [&system, strength](const TabulatedHere& here) {
-      return tabulate_dg_cells(system, strength, nullptr, here);
+    parts.tabulate = [&system, strength](const TabulatedHere& here, const TabulatedElements* listed) {
+      return tabulate_dg_cells(system, strength, nullptr, here, listed);
     };
   }
   parts.materials = std::move(materials);

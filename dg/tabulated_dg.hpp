@@ -28,9 +28,10 @@ struct TabulatedDg {
 /// Every cell's monomials at the points of system.cell_rule(cell, strength), each cell with
 /// its system.material_id; the points' positions (#points × 3, in packed order) into
 /// `points` when it is given. A cell `here` does not hold is added with its functions and
-/// its rule's point count only (TabulatedElements::add_held_elsewhere).
+/// its rule's point count only (TabulatedElements::add_held_elsewhere), the count taken from
+/// `listed` (every cell's, ElementTabulator) when it is given, else from the rule.
 TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, Eigen::MatrixXd* points = nullptr,
-                                    const TabulatedHere& here = nullptr);
+                                    const TabulatedHere& here = nullptr, const TabulatedElements* listed = nullptr);
 
 /// The discretization of `system`'s cells and faces (its bases, flux, penalties and
 /// Dirichlet faces) with `materials` (not owned; cell c takes materials[system.material_id(c)]);

@@ -103,7 +103,8 @@ double HarmonicElementBases::max_boundary_residual() const {
 }
 
 TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQuadrature& quadrature,
-                                                 const std::vector<int>& materials, const TabulatedHere& here) const {
+                                                 const std::vector<int>& materials, const TabulatedHere& here,
+                                                 const TabulatedElements* listed) const {
   const int cells = cell_count();
   std::vector<char> held(static_cast<size_t>(cells), 1);
   if (here)
@@ -141,6 +142,10 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
 #pragma omp parallel for schedule(dynamic, 4)
   for (int cell = 0; cell < cells; ++cell) {
     if (!cells_[cell].mfs) continue;
+    if (!held[cell] && listed) {
+      elsewhere_points[cell] = listed->whole_point_count(cell);
+      continue;
+    }
     const PolyhedronRule rule = harmonic_cell_rule(cell_polyhedron(mesh_, cell), strength, quadrature, cell);
     if (rule.weights.size() == 0) {
       record_first(empty_cell, cell);

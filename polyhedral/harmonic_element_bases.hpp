@@ -49,9 +49,10 @@ public:
   /// materials[e] (empty: all 0). Parallel over cells. Throws NumericalError naming the
   /// first MFS cell whose rule has no point (a cell thinner than a subdivision box). A cell
   /// `here` does not hold is added with its nodes and its rule's point count only
-  /// (TabulatedElements::add_held_elsewhere): its MFS rule is made, its basis not evaluated.
+  /// (TabulatedElements::add_held_elsewhere): its basis is not evaluated, and its MFS rule is
+  /// made only when `listed` (every cell's count, ElementTabulator) is not given.
   TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature, const std::vector<int>& materials = {},
-                             const TabulatedHere& here = nullptr) const;
+                             const TabulatedHere& here = nullptr, const TabulatedElements* listed = nullptr) const;
 
   /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
   /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an

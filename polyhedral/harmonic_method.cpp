@@ -77,9 +77,10 @@ public:
     // Over several ranks each tabulates only its cells (TabulatedDiscretization calls this
     // while it is built, below); the tabulation's seconds count with the bases'.
     parts.tabulate = [this, order = spec.quadrature_order, quadrature = spec.quadrature,
-                      materials = materials_.ids_of(mesh_.cell_centroids)](const TabulatedHere& here) {
+                      materials = materials_.ids_of(mesh_.cell_centroids)](const TabulatedHere& here,
+                                                                           const TabulatedElements* listed) {
       const auto begin = std::chrono::steady_clock::now();
-      TabulatedElements elements = bases_->tabulate(order, quadrature, materials, here);
+      TabulatedElements elements = bases_->tabulate(order, quadrature, materials, here, listed);
       quadrature_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       return elements;
     };

@@ -97,7 +97,8 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   // Over several ranks a method that can tabulate some elements without the others first
   // lists every element's basis and point count, from which METIS divides them.
   if (parts_.tabulate)
-    parts_.elements = parts_.tabulate(ranks::distributed() ? TabulatedHere([](int) { return false; }) : nullptr);
+    parts_.elements =
+        parts_.tabulate(ranks::distributed() ? TabulatedHere([](int) { return false; }) : nullptr, nullptr);
   RankDivision division;
   if (ranks::distributed()) division = divide_among_ranks(couplings);
   const std::vector<char>& mine = division.groups;
@@ -108,7 +109,8 @@ TabulatedDiscretization::TabulatedDiscretization(DiscretizationParts parts) : pa
   // Otherwise every rank adds the whole mass to the summed Hessian: the elements are
   // tabulated whole, reduced to their masses, and then each rank keeps its own.
   if (parts_.tabulate && ranks::distributed())
-    parts_.elements = parts_.tabulate(share ? TabulatedHere([&mine](int e) { return mine[e] != 0; }) : nullptr);
+    parts_.elements =
+        parts_.tabulate(share ? TabulatedHere([&mine](int e) { return mine[e] != 0; }) : nullptr, &parts_.elements);
   parts_.tabulate = nullptr;
   masses_of_share_ = parts_.elements.is_share() && !parts_.element_masses;
   masses_ = parts_.element_masses ? std::move(*parts_.element_masses) : element_masses(parts_.elements);

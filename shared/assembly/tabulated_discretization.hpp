@@ -31,7 +31,9 @@ enum class ExplicitMassKind {
 
 /// Tabulates a method's elements: those `here` holds, the others held elsewhere
 /// (TabulatedElements::add_held_elsewhere: their basis lists and point counts only).
-using ElementTabulator = std::function<TabulatedElements(const TabulatedHere& here)>;
+/// `listed`, when not null, is the call before's result, which holds every element's point
+/// count: an element held elsewhere may take its count from it instead of making its rule.
+using ElementTabulator = std::function<TabulatedElements(const TabulatedHere& here, const TabulatedElements* listed)>;
 
 struct DiscretizationParts {
   TabulatedElements elements;

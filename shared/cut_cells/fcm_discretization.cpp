@@ -141,7 +141,8 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   if (constrained) {
     parts.elements = constrain_lagrange_elements(tabulate_lagrange(fcm.mesh, stiffness_rules), fcm.constraints);
   } else {
-    parts.tabulate = [&mesh = fcm.mesh, rules = std::move(stiffness_rules)](const TabulatedHere& here) {
+    parts.tabulate = [&mesh = fcm.mesh, rules = std::move(stiffness_rules)](const TabulatedHere& here,
+                                                                            const TabulatedElements*) {
       return tabulate_lagrange(mesh, rules, here);
     };
   }

@@ -30,7 +30,7 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   if (hanging) {
     parts.elements = constrain_lagrange_elements(tabulate_lagrange(mesh, rules), *constraints);
   } else {
-    parts.tabulate = [&mesh, rules = std::move(rules)](const TabulatedHere& here) {
+    parts.tabulate = [&mesh, rules = std::move(rules)](const TabulatedHere& here, const TabulatedElements*) {
       return tabulate_lagrange(mesh, rules, here);
     };
   }
