@@ -50,6 +50,12 @@ TabulatedElements constrain_lagrange_elements(const TabulatedElements& elements,
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
     const int points = element.point_count();
+    if (!elements.holds(e)) {  // another rank's: its functions in the constrained space
+      if (any_hanging(element.basis, constraints)) substitute_hanging(element.basis, constraints, basis, substitution);
+      else basis.assign(element.basis.begin(), element.basis.end());
+      constrained.add_held_elsewhere(basis, elements.whole_point_count(e), element.material);
+      continue;
+    }
     if (!any_hanging(element.basis, constraints)) {
       const Eigen::Map<const Eigen::MatrixXd> raw_gradients(element.gradients, 3,
                                                             Eigen::Index(points) * element.basis_count());

@@ -9,7 +9,8 @@ namespace altfem {
 /// node's function handed to its masters: an element's basis becomes its free nodes and the
 /// masters of its hanging ones, N'_m = N_m + Σ_h w_hm N_h, values and gradients alike (the
 /// constrained space of hanging nodes, u = C ū). An element without hanging nodes is
-/// copied bit for bit.
+/// copied bit for bit; one held elsewhere (a rank's share) stays so, with its basis in the
+/// constrained space.
 TabulatedElements constrain_lagrange_elements(const TabulatedElements& elements, const NodeConstraints& constraints);
 
 /// Element masses reduced over the cells `cells` (#cells × nodes per cell: element e's

@@ -25,15 +25,13 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
       tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, std::move(material_ids)};
   parts.materials = std::move(materials);
   const bool hanging = constraints && !constraints->empty();
-  // Without hanging nodes each rank tabulates only its cells (the discretization is built
-  // below, while `mesh` lives).
-  if (hanging) {
-    parts.elements = constrain_lagrange_elements(tabulate_lagrange(mesh, rules), *constraints);
-  } else {
-    parts.tabulate = [&mesh, rules = std::move(rules)](const TabulatedHere& here, const TabulatedElements*) {
-      return tabulate_lagrange(mesh, rules, here);
-    };
-  }
+  // Each rank tabulates only its cells (the discretization is built below, while `mesh`
+  // and `constraints` live), their hanging nodes' functions handed to the masters.
+  parts.tabulate = [&mesh, rules = std::move(rules), constraints = hanging ? constraints : nullptr](
+                       const TabulatedHere& here, const TabulatedElements*) {
+    TabulatedElements elements = tabulate_lagrange(mesh, rules, here);
+    return constraints ? constrain_lagrange_elements(elements, *constraints) : elements;
+  };
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
   parts.coarse_space = first_order_space(mesh, constraints);

@@ -32,6 +32,9 @@
 #include <vector>
 
 #include "dg/definiteness_certificate.hpp"
+#include "shared/fem/lagrange_discretization.hpp"
+#include "shared/material/material.hpp"
+#include "shared/mesh/hexahedral_forest.hpp"
 #include "shared/scene/scene_geometry.hpp"
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/body_force_load.hpp"
@@ -254,6 +257,50 @@ TEST(TwoRanksHarmonic, SlicedCellsTabulatedPerRankGiveTheWholes) {
                             "scenes/manufactured_half_ball.json",
                             {R"(discretization/harmonic={"mesh": "slice", "slice": {"resolution": 4}})"}},
                            {"solver/linear=petsc"});
+}
+
+// fem on a Hex20 grid with a refined cell, its hanging nodes' functions handed to their
+// masters (make_lagrange_discretization with constraints), each rank tabulating its own
+// cells for PETSc's shares: the energy and forces summed and the Hessian's shares, placed
+// into one process's pattern, are one process's, as are M v and the lumped mass.
+TEST(TwoRanksHangingNodes, EachRankTabulatesItsCellsOfARefinedGrid) {
+  const HexahedralForest forest = refine_forest(
+      grid_forest({Eigen::Vector3d::Zero(), Eigen::Vector3d(4, 1, 1)}, Eigen::Vector3i(4, 2, 2), ElementType::hex20),
+      {5});
+  const ConstrainedHexahedralMesh refined = forest_mesh(forest);
+  EXPECT_GT(refined.constraints.hanging_nodes(), 0);
+  const auto material = make_material(MaterialModel::neo_hookean, 1e6, 0.3, 1000);
+  const auto build = [&] {
+    return make_lagrange_discretization(refined.mesh, {material.get()}, {}, {}, 4, "test", &refined.constraints);
+  };
+  const bool shared_before = ranks::shares_matrices();
+  ranks::share_matrices(true);
+  const auto together = build();
+  ranks::share_matrices(shared_before);
+  const TabulatedElements& share = together->elements();
+  EXPECT_TRUE(share.is_share());
+  EXPECT_LT(share.point_count(), share.whole_point_count());
+  EXPECT_EQ(ranks::sum(static_cast<double>(share.point_count())), static_cast<double>(share.whole_point_count()));
+  const Assembled two = assemble(*together);
+  Eigen::VectorXd v(together->dof_count());
+  for (Eigen::Index dof = 0; dof < v.size(); ++dof) v[dof] = std::cos(0.11 * static_cast<double>(dof));
+  const Eigen::VectorXd two_mass_times = together->mass_times(v);
+  const Eigen::VectorXd two_lumped = together->explicit_mass().multiply(v);
+  Assembled one;
+  Eigen::VectorXd one_mass_times, one_lumped;
+  {
+    const ranks::Alone one_process;
+    const auto alone = build();
+    one = assemble(*alone);
+    one_mass_times = alone->mass_times(v);
+    one_lumped = alone->explicit_mass().multiply(v);
+  }
+  EXPECT_NEAR(two.energy, one.energy, 1e-13 * std::abs(one.energy));
+  EXPECT_LE((two.gradient - one.gradient).lpNorm<Eigen::Infinity>(), 1e-13 * one.gradient.lpNorm<Eigen::Infinity>());
+  EXPECT_LE(shares_against_whole(two.hessian, one.hessian), 1e-13);
+  EXPECT_LE((two_mass_times - one_mass_times).lpNorm<Eigen::Infinity>(),
+            1e-13 * one_mass_times.lpNorm<Eigen::Infinity>());
+  EXPECT_LE((two_lumped - one_lumped).lpNorm<Eigen::Infinity>(), 1e-13 * one_lumped.lpNorm<Eigen::Infinity>());
 }
 
 struct Solved {
