@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "shared/assembly/tabulated_here.hpp"
 #include "shared/common/eigen_decompositions.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
@@ -171,9 +172,7 @@ LiftedDgCells tabulate_lifted_dg_cells(const DgLinearSystem& system, int strengt
                                   " prescribes some components only, which the lifted gradient cannot carry");
   }
   std::vector<LiftedCell> cells(static_cast<size_t>(system.cell_count()));
-  std::vector<char> held(cells.size(), 1);
-  if (here)
-    for (int cell = 0; cell < system.cell_count(); ++cell) held[cell] = here(cell) ? 1 : 0;
+  const std::vector<char> held = tabulated_here(here, system.cell_count());
   // A cell's lifting costs a few face and volume rules and one small solve: parallel over cells.
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 16)

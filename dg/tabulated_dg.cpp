@@ -6,6 +6,7 @@
 #include "dg/lifted_gradients.hpp"
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/jump_penalty_kernel.hpp"
+#include "shared/assembly/tabulated_here.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
@@ -79,9 +80,7 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
   const int cells = system.cell_count();
   std::vector<PolyhedronRule> rules(static_cast<size_t>(cells));
   std::vector<Eigen::MatrixXd> values(static_cast<size_t>(cells)), gradients(static_cast<size_t>(cells));
-  std::vector<char> held(static_cast<size_t>(cells), 1);
-  if (here)
-    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
+  const std::vector<char> held = tabulated_here(here, cells);
 #pragma omp parallel for schedule(dynamic, 8)
   for (int cell = 0; cell < cells; ++cell) {
     if (!held[cell] && listed) continue;  // its point count is listed

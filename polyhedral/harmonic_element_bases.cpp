@@ -8,6 +8,7 @@
 
 #include "polyhedral/harmonic_tabulation.hpp"
 #include "polyhedral/mesh_face_coordinates.hpp"
+#include "shared/assembly/tabulated_here.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -106,9 +107,7 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
                                                  const std::vector<int>& materials, const TabulatedHere& here,
                                                  const TabulatedElements* listed) const {
   const int cells = cell_count();
-  std::vector<char> held(static_cast<size_t>(cells), 1);
-  if (here)
-    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
+  const std::vector<char> held = tabulated_here(here, cells);
   // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
   // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
   // the cell's element in its type's table.

@@ -136,16 +136,9 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
       kept_rules(stiffness_cells, kept, background.element_type, options.quadrature_strength,
                  stabilize_stiffness ? options.stabilization : 0.0);
   stiffness_rules.materials = kept_materials;
-  // Without hanging nodes each rank tabulates only its cells (the discretization is built
-  // below, while fcm.mesh lives).
-  if (constrained) {
-    parts.elements = constrain_lagrange_elements(tabulate_lagrange(fcm.mesh, stiffness_rules), fcm.constraints);
-  } else {
-    parts.tabulate = [&mesh = fcm.mesh, rules = std::move(stiffness_rules)](const TabulatedHere& here,
-                                                                            const TabulatedElements*) {
-      return tabulate_lagrange(mesh, rules, here);
-    };
-  }
+  // Each rank tabulates only its cells (the discretization is built below, while fcm.mesh
+  // and fcm.constraints live).
+  parts.tabulate = lagrange_tabulator(fcm.mesh, std::move(stiffness_rules), &fcm.constraints);
   // The mass rules are large (a high strength, never simplified) and used once
   // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
   parts.element_masses = lagrange_element_masses(
@@ -167,18 +160,15 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   parts.dirichlet = nodal_dirichlet(fcm.mesh.nodes.topRows(fcm.constraints.free_nodes), dirichlet, scene_file,
                                     "the kept background cells", kept_dirichlet_nodes);
 
-  // §5.2: one Schwarz block per small cut cell: the DOFs of its basis functions.
+  // §5.2: one Schwarz block per small cut cell: the DOFs of its basis functions (after the
+  // hanging nodes' substitution), from the cells' listing without their points.
+  const TabulatedElements listing = parts.tabulate([](int) { return false; }, nullptr);
   std::vector<std::vector<int>> blocks;
   for (size_t k = 0; k < kept.size(); ++k) {
     if (fcm.volume_fractions[k] >= options.schwarz_fraction) continue;
     std::vector<int> block;
-    const auto add = [&block](int function) {
+    for (const int function : listing[static_cast<int>(k)].basis)
       for (int i = 0; i < 3; ++i) block.push_back(3 * function + i);
-    };
-    if (constrained)  // the cell's functions after the hanging nodes' substitution
-      for (const int function : parts.elements[static_cast<int>(k)].basis) add(function);
-    else
-      for (Eigen::Index a = 0; a < fcm.mesh.cells.cols(); ++a) add(fcm.mesh.cells(static_cast<Eigen::Index>(k), a));
     blocks.push_back(std::move(block));
   }
   fcm.schwarz_blocks = static_cast<int>(blocks.size());

@@ -1,6 +1,5 @@
 #include "shared/fem/lagrange_discretization.hpp"
 
-#include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/fem/first_order_space.hpp"
 #include "shared/fem/nodal_dirichlet.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
@@ -26,12 +25,8 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
   parts.materials = std::move(materials);
   const bool hanging = constraints && !constraints->empty();
   // Each rank tabulates only its cells (the discretization is built below, while `mesh`
-  // and `constraints` live), their hanging nodes' functions handed to the masters.
-  parts.tabulate = [&mesh, rules = std::move(rules), constraints = hanging ? constraints : nullptr](
-                       const TabulatedHere& here, const TabulatedElements*) {
-    TabulatedElements elements = tabulate_lagrange(mesh, rules, here);
-    return constraints ? constrain_lagrange_elements(elements, *constraints) : elements;
-  };
+  // and `constraints` live).
+  parts.tabulate = lagrange_tabulator(mesh, std::move(rules), constraints);
   parts.dirichlet = nodal_dirichlet(mesh.nodes.topRows(hanging ? constraints->free_nodes : mesh.nodes.rows()),
                                     dirichlet, scene_file, "the fem mesh");
   parts.coarse_space = first_order_space(mesh, constraints);

@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "shared/assembly/tabulated_here.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/reference_element.hpp"
+#include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem {
@@ -44,9 +46,7 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
   std::vector<Eigen::MatrixXd> custom_values(cells);
   std::atomic<int> failed_cell{-1};
   std::atomic<int> failed_point{-1};
-  std::vector<char> held(static_cast<size_t>(cells), 1);
-  if (here)
-    for (int cell = 0; cell < cells; ++cell) held[cell] = here(cell) ? 1 : 0;
+  const std::vector<char> held = tabulated_here(here, cells);
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < cells; ++cell) {
     if (!held[cell]) continue;
@@ -104,6 +104,15 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
                   material);
   }
   return tabulated;
+}
+
+ElementTabulator lagrange_tabulator(const VolumeMesh& mesh, LagrangeCellRules rules,
+                                    const NodeConstraints* constraints) {
+  if (constraints && constraints->empty()) constraints = nullptr;
+  return [&mesh, rules = std::move(rules), constraints](const TabulatedHere& here, const TabulatedElements*) {
+    TabulatedElements elements = tabulate_lagrange(mesh, rules, here);
+    return constraints ? constrain_lagrange_elements(elements, *constraints) : elements;
+  };
 }
 
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength) {

@@ -2,7 +2,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shared/assembly/tabulated_discretization.hpp"
 #include "shared/assembly/tabulated_elements.hpp"
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/quadrature/quadrature_rule.hpp"
 
@@ -25,6 +27,12 @@ struct LagrangeCellRules {
 /// added with its nodes and point count only (TabulatedElements::add_held_elsewhere).
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules,
                                     const TabulatedHere& here = nullptr);
+/// The tabulator of a TabulatedDiscretization (DiscretizationParts::tabulate) of a Lagrange
+/// mesh: tabulate_lagrange with the cells a rank holds, the hanging nodes of `constraints`
+/// (null or empty for none) then handed to their masters (constrain_lagrange_elements).
+/// `mesh` and `constraints` must outlive it.
+ElementTabulator lagrange_tabulator(const VolumeMesh& mesh, LagrangeCellRules rules,
+                                    const NodeConstraints* constraints = nullptr);
 /// Every cell with the reference rule of `quadrature_strength` (tet_rule / hex_rule), material 0.
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength);
 
