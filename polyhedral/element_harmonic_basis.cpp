@@ -315,6 +315,16 @@ void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorX
   gradients /= scale_;  // d/dx = (1/scale) d/dx_local
 }
 
+void ElementHarmonicBasis::evaluate(const Eigen::Vector3d& point, Eigen::VectorXd& values) const {
+  const Eigen::Vector3d x = (point - origin_) / scale_;
+  const Eigen::Index c = centres_.rows();
+  Eigen::VectorXd kernel(c + 4);  // 1/r, then x, y, z, 1 (the rows of coefficients_)
+  for (Eigen::Index j = 0; j < c; ++j) kernel[j] = 1.0 / (x - centres_.row(j).transpose()).norm();
+  kernel.segment<3>(c) = x;
+  kernel[c + 3] = 1.0;
+  values.noalias() = coefficients_.transpose() * kernel;
+}
+
 void ElementHarmonicBasis::evaluate(const Eigen::MatrixXd& points, Eigen::MatrixXd& values,
                                     Eigen::MatrixXd& gradients) const {
   const Eigen::Index count = points.rows(), c = centres_.rows(), n = coefficients_.cols();

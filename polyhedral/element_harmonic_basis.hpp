@@ -42,6 +42,9 @@ public:
   int node_count() const { return static_cast<int>(coefficients_.cols()); }
   /// N_i(x) (#nodes) and ∇N_i(x) (#nodes × 3).
   void evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values, Eigen::MatrixXd& gradients) const;
+  /// N_i(x) (#nodes) alone: one product of the kernel row with the coefficients (what
+  /// surface loads and embedded points read, thousands of points per rebuild).
+  void evaluate(const Eigen::Vector3d& x, Eigen::VectorXd& values) const;
   /// N_i and ∇N_i at many points (#points × 3) at once, by products of the kernel matrices
   /// with the coefficients: values #points × #nodes, gradients (#points·#nodes) × 3,
   /// point-major (row q·#nodes + i: ∇N_i(x_q)), as a tabulation stores them.

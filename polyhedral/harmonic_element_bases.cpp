@@ -181,8 +181,7 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
 bool HarmonicElementBases::evaluate(int cell, const Eigen::Vector3d& x, Eigen::VectorXd& values) const {
   const Cell& entry = cells_[cell];
   if (entry.mfs) {
-    Eigen::MatrixXd gradients;
-    entry.mfs->evaluate(x, values, gradients);
+    entry.mfs->evaluate(x, values);
     return true;
   }
   const ReferenceElement& element = reference_element(*entry.plain);

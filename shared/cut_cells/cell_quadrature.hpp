@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/quadrature/quadrature_rule.hpp"
 
 namespace altfem {
@@ -14,6 +15,8 @@ namespace altfem {
 struct CellQuadrature {
   double volume_fraction = 0;          ///< vol(K ∩ Ω) / vol(K), in [0, 1]
   std::optional<QuadratureRule> rule;  ///< cut cells only: the rule of K ∩ Ω (reference coordinates)
+  /// Mass rules of cut cells, where known: `rule` reduced (lagrange_element_masses' `reduced`).
+  std::optional<ReferenceProducts> reduced;
 };
 
 /// What a set of rules is for: stiffness rules may be simplified to at most

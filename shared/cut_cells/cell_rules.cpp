@@ -112,6 +112,14 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     }
   }
   if (failure) std::rethrow_exception(failure);
+  // After the rules, in parallel: a remembered cell brings its reduction along.
+  if (options.reduce) {
+#pragma omp parallel for schedule(dynamic, 4)
+    for (Eigen::Index c = 0; c < cell_count; ++c) {
+      CellRule& cell = result.cells[c];
+      if (cell.kind == CellKind::cut && !cell.reduced) cell.reduced = reference_products(type, cell.rule);
+    }
+  }
 
   if (reuse) {
     // The memory's copies in parallel (mass rules run to thousands of points per cell),

@@ -5,9 +5,11 @@
 // most M = C(m+3, 3) points. Cells are independent: computed in parallel (OpenMP),
 // each thread with its own scratch, writing only its own cell's entry.
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
+#include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 #include "shared/quadrature/quadrature_rule.hpp"
@@ -31,6 +33,9 @@ struct CellRuleOptions {
   /// its pieces, so it keeps the centroid's fan; one exact for its integrand (a mass rule
   /// of at least twice the basis' degree) may take the vertex's, of fewer points.
   PieceFan fan = PieceFan::centroid;
+  /// Also reduce each cut cell's rule (CellRule::reduced): for mass rules, which serve
+  /// only the masses and are never simplified.
+  bool reduce = false;
 };
 
 struct CellRule {
@@ -40,6 +45,9 @@ struct CellRule {
   double clipped_volume = 0.0;         ///< physical volume of cell ∩ geometry
   double residual = 0.0;               ///< simplification residual (SimplificationResult)
   bool simplification_failed = false;  ///< the original rule was kept
+  /// With CellRuleOptions::reduce, a cut cell's rule reduced on its reference element: a
+  /// remembered rule (CellRuleMemory) keeps it, so a rebuild reads the rule's points never.
+  std::optional<ReferenceProducts> reduced;
 };
 
 struct CellRules {

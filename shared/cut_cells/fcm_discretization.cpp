@@ -52,6 +52,27 @@ LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vect
   return rules;
 }
 
+// The kept cut cells' mass rules reduced (kept-cell index → reduction, where the rules
+// came with one), stabilised as kept_rules stabilises their rules: plus the standard
+// rule's reduction times `stabilization`.
+std::unordered_map<int, ReferenceProducts> kept_reductions(std::vector<CellQuadrature>& cells,
+                                                           const std::vector<int>& kept, ElementType type,
+                                                           int strength, double stabilization) {
+  const ReferenceProducts standard = reference_products(type, standard_rule(type, strength));
+  std::unordered_map<int, ReferenceProducts> reductions;
+  for (size_t k = 0; k < kept.size(); ++k) {
+    std::optional<ReferenceProducts>& reduced = cells[kept[k]].reduced;
+    if (!reduced) continue;
+    if (stabilization > 0) {
+      reduced->products += stabilization * standard.products;
+      reduced->integrals += stabilization * standard.integrals;
+      reduced->weight_sum += stabilization * standard.weight_sum;
+    }
+    reductions.emplace(static_cast<int>(k), std::move(*reduced));
+  }
+  return reductions;
+}
+
 }  // namespace
 
 FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const CellQuadratureSource& quadrature,
@@ -139,11 +160,14 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   // Each rank tabulates only its cells (the discretization is built below, while fcm.mesh
   // and fcm.constraints live).
   parts.tabulate = lagrange_tabulator(fcm.mesh, std::move(stiffness_rules), &fcm.constraints);
-  // The mass rules are large (a high strength, never simplified) and used once
-  // (Longva et al. 2020 §6): reduced to element masses, never tabulated.
+  // The mass rules are large (a high strength, never simplified) and serve only the
+  // masses (Longva et al. 2020 §6): reduced to element masses, never tabulated.
   parts.element_masses = lagrange_element_masses(
-      fcm.mesh, kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
-                           stabilize_mass ? options.stabilization : 0.0));
+      fcm.mesh,
+      kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
+                 stabilize_mass ? options.stabilization : 0.0),
+      kept_reductions(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
+                      stabilize_mass ? options.stabilization : 0.0));
   if (constrained)
     parts.element_masses = constrain_element_masses(*parts.element_masses, fcm.mesh.cells, fcm.constraints);
   if (options.ghost_penalty > 0) {

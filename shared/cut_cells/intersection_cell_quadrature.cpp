@@ -55,6 +55,7 @@ CellQuadratureSource intersection_cell_quadrature(
     // Hex27's 11 are below their products' degrees 6 and 12 and keep the centroid's fan).
     options.simplify = purpose == RulePurpose::stiffness && method.has_value();
     options.fan = purpose == RulePurpose::mass && strength >= product_degree ? PieceFan::vertex : PieceFan::centroid;
+    options.reduce = purpose == RulePurpose::mass;
     if (method) options.method = *method;
     options.tolerance = tolerance;
     const std::vector<std::vector<int>>* tetrahedra = cell_tetrahedra.empty() ? nullptr : &cell_tetrahedra;
@@ -83,6 +84,7 @@ CellQuadratureSource intersection_cell_quadrature(
         case CellKind::cut:
           cells[c].volume_fraction = std::clamp(cell.clipped_volume / volumes[c], 0.0, 1.0);
           cells[c].rule = std::move(cell.rule);
+          cells[c].reduced = std::move(cell.reduced);
           break;
       }
     }

@@ -58,7 +58,15 @@ bool physical_weights(const ReferenceElement& element, const VolumeMesh& mesh, i
 
 }  // namespace
 
-ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCellRules& rules) {
+ReferenceProducts reference_products(ElementType type, const QuadratureRule& rule) {
+  ReferenceProducts reduced;
+  reference_element(type).integrate_products(rule.points, rule.weights, reduced.products, reduced.integrals);
+  reduced.weight_sum = rule.weights.sum();
+  return reduced;
+}
+
+ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCellRules& rules,
+                                      const std::unordered_map<int, ReferenceProducts>& reduced) {
   const ReferenceElement& element = reference_element(mesh.element_type);
   const int n = element.node_count();
   const auto cells = static_cast<int>(mesh.cells.rows());
@@ -91,6 +99,21 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
     std::optional<double> affine_determinant;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cells; ++cell) {
+      if (const auto found = reduced.find(cell); found != reduced.end()) {
+        scratch.nodes.resize(n, 3);
+        for (int a = 0; a < n; ++a) scratch.nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+        if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, scratch.nodes)) {
+          const double determinant = jacobian->determinant();
+          if (!(determinant > 0)) {
+            fail(cell);
+            continue;
+          }
+          masses.matrices[cell] = determinant * found->second.products;
+          masses.integrals[cell] = determinant * found->second.integrals;
+          masses.volumes[cell] = determinant * found->second.weight_sum;
+          continue;
+        }
+      }
       const QuadratureRule& rule = rule_of(cell);
       if (rule.weights.size() > large_rule_points) {
 #pragma omp critical(altfem_large_mass_rules)

@@ -127,6 +127,23 @@ TEST_P(EveryShape, GradientsDifferentiateTheValues) {
   }
 }
 
+// The values alone (one product of the kernel row with the coefficients) are the values
+// evaluated with the gradients (a sum over the kernels), and those of the batched form.
+TEST_P(EveryShape, ValuesAloneAreTheValuesWithGradients) {
+  const Polyhedron element = shape();
+  const ElementHarmonicBasis basis(element, {});
+  const Eigen::MatrixXd points = interior_points(element, 20, 5);
+  const Eigen::MatrixXd batched = basis.values(points);
+  Eigen::VectorXd alone, with_gradients;
+  Eigen::MatrixXd gradients;
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    basis.evaluate(points.row(p).transpose(), alone);
+    basis.evaluate(points.row(p).transpose(), with_gradients, gradients);
+    EXPECT_LT((alone - with_gradients).cwiseAbs().maxCoeff(), 1e-13);
+    EXPECT_LT((alone - batched.row(p).transpose()).cwiseAbs().maxCoeff(), 1e-13);
+  }
+}
+
 // N_i(x_j) = δ_ij holds to the fit's accuracy: tightly on convex elements, and on the
 // non-convex L-prism (whose re-entrant edge makes the exact functions singular there)
 // improving with more samples. The sample spacing comes from the element's area, which
