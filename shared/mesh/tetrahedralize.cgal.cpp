@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/snap_to_planar_faces.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
 
 namespace altfem {
@@ -107,7 +108,10 @@ VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size
     for (const Eigen::Vector3d& x : edge) line.emplace_back(x.x(), x.y(), x.z());
   }
   domain.add_features(polylines.begin(), polylines.end());
-  return mesh_domain<Complex>(domain, size, bound_cells ? size : 0.0);
+  VolumeMesh mesh = mesh_domain<Complex>(domain, size, bound_cells ? size : 0.0);
+  // Mesh_3's vertices on a flat face lie on it to the level set's error bound only.
+  snap_to_planar_faces(mesh, shape.planar_faces(), 1e-6 * box.diagonal().norm());
+  return mesh;
 }
 
 }  // namespace altfem

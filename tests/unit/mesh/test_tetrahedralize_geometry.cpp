@@ -7,7 +7,10 @@
 #include <numbers>
 
 #include "shared/common/error.hpp"
+#include "shared/mesh/convex_cell.hpp"
 #include "shared/mesh/mesh_components.hpp"
+#include "shared/mesh/slice_into_polyhedra.hpp"
+#include "shared/mesh/snap_to_planar_faces.hpp"
 #include "shared/mesh/tetrahedralize.hpp"
 #include "shared/scene/tetrahedralize_geometry.hpp"
 
@@ -132,6 +135,73 @@ TEST(TetrahedralizeShape, ProtectsAHalfBallsRim) {
     if (std::abs(x.z()) < 1e-9 && std::abs(x.norm() - radius) < 1e-3) ++rim_nodes;
   }
   EXPECT_GE(rim_nodes, static_cast<int>(2 * std::numbers::pi * radius / size));
+}
+
+// Mesh_3 leaves a flat face's vertices on the level set to its error bound (the half-ball's
+// at |z| up to 1e-7); snapped, every boundary vertex near z = 0 is on it exactly, and every
+// tetrahedron keeps a positive volume.
+TEST(TetrahedralizeShape, AHalfBallsFlatFaceIsFlat) {
+  const auto half_ball = make_intersection({make_sphere({0, 0, 0}, 1), make_box({-2, -2, 0}, {2, 2, 2})});
+  const VolumeMesh mesh = tetrahedralize_shape(*half_ball, 0.2);
+  int on_face = 0;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) {
+    const double z = mesh.nodes(node, 2);
+    if (std::abs(z) < 1e-4) {
+      EXPECT_EQ(z, 0.0) << "node " << node;
+      ++on_face;
+    }
+  }
+  EXPECT_GT(on_face, 20);
+  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell) {
+    const Eigen::Vector3d a = mesh.nodes.row(mesh.cells(cell, 0));
+    const double volume = (Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 1))) - a)
+                              .cross(Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 2))) - a)
+                              .dot(Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 3))) - a);
+    EXPECT_GT(volume, 0.0) << "cell " << cell;
+  }
+}
+
+// What the flat face is for: the half-ball sliced by a grid whose bottom layer it cuts into
+// slabs (Kaufmann et al. 2009 §9.2). Bent by 1e-7, those slabs were not convex, and a
+// refinement, which splits convex cells only, left them whole however large their error.
+TEST(TetrahedralizeShape, TheSlicedHalfBallsCellsAtItsFlatFaceAreConvex) {
+  const auto half_ball = make_intersection({make_sphere({0, 0, 0}, 1), make_box({-2, -2, 0}, {2, 2, 2})});
+  SlicingOptions options;
+  options.resolution = 4;
+  const PolyhedralMesh mesh = slice_into_polyhedra(*half_ball, options).mesh;
+  int at_face = 0;
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
+    const std::vector<int> nodes = cell_node_set(mesh, cell);
+    bool touches = false;
+    for (const int node : nodes) touches = touches || mesh.nodes(node, 2) == 0.0;
+    if (!touches) continue;
+    ++at_face;
+    EXPECT_TRUE(is_convex_cell(mesh, cell, nodes)) << "cell " << cell;
+  }
+  EXPECT_GE(at_face, 12);
+}
+
+// A node off a planar face by less than the tolerance lands on it, one farther stays, and a
+// node whose move would invert a tetrahedron stays.
+TEST(SnapToPlanarFaces, MovesOnlyBoundaryNodesWithinTheTolerance) {
+  VolumeMesh mesh;
+  mesh.element_type = ElementType::tet4;
+  mesh.nodes.resize(5, 3);
+  mesh.nodes << 0, 0, 3e-8, 1, 0, 0, 0, 1, 1e-3, 0, 0, 1, 0.2, 0.2, 1e-7;
+  mesh.cells.resize(1, 4);
+  mesh.cells << 0, 1, 2, 3;
+  const PlanarFace bottom{Eigen::Vector3d(-1, -1, 0), Eigen::Vector3d(3, 0, 0), Eigen::Vector3d(0, 3, 0)};
+  EXPECT_EQ(snap_to_planar_faces(mesh, {bottom}, 1e-6), 1);
+  EXPECT_EQ(mesh.nodes(0, 2), 0.0);
+  EXPECT_EQ(mesh.nodes(2, 2), 1e-3);
+  EXPECT_EQ(mesh.nodes(4, 2), 1e-7);  // in no cell: not on the boundary
+  // A flat tetrahedron whose apex is within the tolerance: snapping it would invert it.
+  VolumeMesh flat = mesh;
+  flat.nodes.row(3) << 0.3, 0.3, 5e-7;
+  flat.nodes.row(0) << 0, 0, 0;
+  flat.nodes.row(2) << 0, 1, 0;
+  EXPECT_EQ(snap_to_planar_faces(flat, {bottom}, 1e-6), 0);
+  EXPECT_EQ(flat.nodes(3, 2), 5e-7);
 }
 
 TEST(TetrahedralizeShape, ProtectsACylindersRims) {
