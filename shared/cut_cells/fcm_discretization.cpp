@@ -56,8 +56,8 @@ LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vect
 // came with one), stabilised as kept_rules stabilises their rules: plus the standard
 // rule's reduction times `stabilization`.
 std::unordered_map<int, ReferenceProducts> kept_reductions(std::vector<CellQuadrature>& cells,
-                                                           const std::vector<int>& kept, ElementType type,
-                                                           int strength, double stabilization) {
+                                                           const std::vector<int>& kept, ElementType type, int strength,
+                                                           double stabilization) {
   const ReferenceProducts standard = reference_products(type, standard_rule(type, strength));
   std::unordered_map<int, ReferenceProducts> reductions;
   for (size_t k = 0; k < kept.size(); ++k) {

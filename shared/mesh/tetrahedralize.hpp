@@ -16,8 +16,8 @@ VolumeMesh tetrahedralize_surface(const SurfaceMesh& surface, double max_cell_si
 /// at most smallest_feature(), facet distance a tenth of the size) and its sharp
 /// edges (AnalyticShape::sharp_edges) protected as polyline features, so a cylinder's
 /// rims stay sharp; the boundary vertices within 1e-6 of the bounds' diagonal of a planar
-/// face (AnalyticShape::planar_faces) are snapped onto it (snap_to_planar_faces). With `bound_cells` false only the surface facets are held to the
-/// size (cells are as large as the radius–edge ratio allows): a cheap way to a fine
+/// face (AnalyticShape::planar_faces) are snapped onto it (snap_to_planar_faces). With `bound_cells` false only the
+/// surface facets are held to the size (cells are as large as the radius–edge ratio allows): a cheap way to a fine
 /// surface of the shape (its boundary_surface).
 VolumeMesh tetrahedralize_shape(const AnalyticShape& shape, double max_cell_size, bool bound_cells = true);
 /// The exact Tet4 mesh of a shape built from axis-aligned boxes (axis_planes() set):
