@@ -30,7 +30,7 @@ namespace {
 struct SceneRun {
   std::string scene;  ///< file name under scenes/
   std::string method;
-  bool slice;  ///< dg: the default mesh is expected to be sliced
+  bool slice;  ///< dg, harmonic: the mesh is expected to be sliced
 };
 
 // Names a parameter by its scene and method in test output (instead of its bytes).
@@ -53,6 +53,12 @@ bool sliced_by_default(const nlohmann::json& scene) {
   return geometry.contains("surface") || (geometry.contains("shape") && !geometry["shape"].contains("box"));
 }
 
+// harmonic converts the fem mesh unless its block asks for a slicing.
+bool harmonic_sliced(const nlohmann::json& scene) {
+  return scene.contains("discretization") && scene["discretization"].contains("harmonic") &&
+         scene["discretization"]["harmonic"].value("mesh", "") == "slice";
+}
+
 // A shape of boxes only (a box, or a union, intersection or difference of them): sliced on
 // a grid whose planes hold its faces, it has no cut cells.
 bool built_of_boxes(const nlohmann::json& shape) {
@@ -66,10 +72,11 @@ std::vector<SceneRun> scene_runs() {
   std::vector<SceneRun> runs;
   for (const auto& entry : std::filesystem::directory_iterator(source_path("scenes"))) {
     if (entry.path().extension() != ".json") continue;
-    const bool slice = sliced_by_default(read_json(entry.path()));
+    const nlohmann::json scene = read_json(entry.path());
     const std::string name = entry.path().filename().string();
-    for (const char* method : {"fem", "fcm", "harmonic"}) runs.push_back({name, method, false});
-    runs.push_back({name, "dg", slice});
+    for (const char* method : {"fem", "fcm"}) runs.push_back({name, method, false});
+    runs.push_back({name, "dg", sliced_by_default(scene)});
+    runs.push_back({name, "harmonic", harmonic_sliced(scene)});
   }
   std::sort(runs.begin(), runs.end(), [](const SceneRun& a, const SceneRun& b) {
     return std::tie(a.scene, a.method) < std::tie(b.scene, b.method);
