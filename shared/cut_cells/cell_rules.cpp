@@ -112,13 +112,18 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     }
   }
   if (failure) std::rethrow_exception(failure);
-  // After the rules, in parallel: a remembered cell brings its reduction along.
+  // After the rules (a remembered cell brings its reduction along): a cell at a time in
+  // parallel, then each large rule by all threads (reference_products).
   if (options.reduce) {
+    const auto unreduced = [&](Eigen::Index c) {
+      return result.cells[c].kind == CellKind::cut && !result.cells[c].reduced;
+    };
 #pragma omp parallel for schedule(dynamic, 4)
-    for (Eigen::Index c = 0; c < cell_count; ++c) {
-      CellRule& cell = result.cells[c];
-      if (cell.kind == CellKind::cut && !cell.reduced) cell.reduced = reference_products(type, cell.rule);
-    }
+    for (Eigen::Index c = 0; c < cell_count; ++c)
+      if (unreduced(c) && result.cells[c].rule.weights.size() <= large_rule_points)
+        result.cells[c].reduced = reference_products(type, result.cells[c].rule);
+    for (Eigen::Index c = 0; c < cell_count; ++c)
+      if (unreduced(c)) result.cells[c].reduced = reference_products(type, result.cells[c].rule);
   }
 
   if (reuse) {

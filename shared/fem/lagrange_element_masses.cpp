@@ -16,13 +16,30 @@ namespace altfem {
 
 namespace {
 
-/// A rule of more points than this is summed by all threads: the tip of a sharpened pencil
-/// is one cell with thousands of clipped pieces, a strength-8 rule on each, and was most
-/// of a cut's integration on one thread while the other cells took the rest.
-constexpr Eigen::Index large_rule_points = 50000;
-/// Such a rule's points in this many chunks, whatever the thread count, summed in order:
+/// A large rule's points in this many chunks, whatever the thread count, summed in order:
 /// the same masses on any machine.
 constexpr int large_rule_chunks = 16;
+
+/// integrate_products over all threads, in large_rule_chunks chunks summed in order.
+void integrate_products_in_chunks(const ReferenceElement& element, const Eigen::MatrixXd& points,
+                                  const Eigen::VectorXd& weights, Eigen::MatrixXd& products,
+                                  Eigen::VectorXd& integrals) {
+  const Eigen::Index count = weights.size();
+  std::vector<Eigen::MatrixXd> chunk_products(large_rule_chunks);
+  std::vector<Eigen::VectorXd> chunk_integrals(large_rule_chunks);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (int chunk = 0; chunk < large_rule_chunks; ++chunk) {
+    const Eigen::Index begin = count * chunk / large_rule_chunks, end = count * (chunk + 1) / large_rule_chunks;
+    element.integrate_products(points.middleRows(begin, end - begin), weights.segment(begin, end - begin),
+                               chunk_products[chunk], chunk_integrals[chunk]);
+  }
+  products = chunk_products[0];
+  integrals = chunk_integrals[0];
+  for (int chunk = 1; chunk < large_rule_chunks; ++chunk) {
+    products += chunk_products[chunk];
+    integrals += chunk_integrals[chunk];
+  }
+}
 
 struct CellScratch {
   Eigen::MatrixXd nodes;
@@ -60,7 +77,10 @@ bool physical_weights(const ReferenceElement& element, const VolumeMesh& mesh, i
 
 ReferenceProducts reference_products(ElementType type, const QuadratureRule& rule) {
   ReferenceProducts reduced;
-  reference_element(type).integrate_products(rule.points, rule.weights, reduced.products, reduced.integrals);
+  const ReferenceElement& element = reference_element(type);
+  if (rule.weights.size() > large_rule_points)
+    integrate_products_in_chunks(element, rule.points, rule.weights, reduced.products, reduced.integrals);
+  else element.integrate_products(rule.points, rule.weights, reduced.products, reduced.integrals);
   reduced.weight_sum = rule.weights.sum();
   return reduced;
 }
@@ -138,26 +158,14 @@ ElementMasses lagrange_element_masses(const VolumeMesh& mesh, const LagrangeCell
   CellScratch scratch;
   Eigen::VectorXd weights;
   std::optional<double> affine_determinant;
-  std::vector<Eigen::MatrixXd> chunk_products(large_rule_chunks);
-  std::vector<Eigen::VectorXd> chunk_integrals(large_rule_chunks);
   for (const int cell : large_cells) {
     const QuadratureRule& rule = rule_of(cell);
     if (!physical_weights(element, mesh, cell, rule, scratch, weights, affine_determinant)) {
       fail(cell);
       continue;
     }
-    const Eigen::Index points = weights.size();
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int chunk = 0; chunk < large_rule_chunks; ++chunk) {
-      const Eigen::Index begin = points * chunk / large_rule_chunks, end = points * (chunk + 1) / large_rule_chunks;
-      element.integrate_products(rule.points.middleRows(begin, end - begin), weights.segment(begin, end - begin),
-                                 chunk_products[chunk], chunk_integrals[chunk]);
-    }
     masses.volumes[cell] = weights.sum();
-    for (int chunk = 0; chunk < large_rule_chunks; ++chunk) {
-      masses.matrices[cell] += chunk_products[chunk];
-      masses.integrals[cell] += chunk_integrals[chunk];
-    }
+    integrate_products_in_chunks(element, rule.points, weights, masses.matrices[cell], masses.integrals[cell]);
   }
   if (failed_cell >= 0)
     throw NumericalError("cell " + std::to_string(failed_cell.load()) +

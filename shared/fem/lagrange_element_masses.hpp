@@ -24,6 +24,13 @@ struct ReferenceProducts {
   double weight_sum = 0;
 };
 
+/// A rule of more points than this is summed by all threads (in reference_products and
+/// lagrange_element_masses; called inside a parallel region, by that region's thread): the
+/// tip of a sharpened pencil is one cell with thousands of clipped pieces, a strength-8 rule
+/// on each, and was most of a cut's integration on one thread while the other cells took
+/// the rest.
+constexpr Eigen::Index large_rule_points = 50000;
+
 ReferenceProducts reference_products(ElementType type, const QuadratureRule& rule);
 
 /// One entry per cell of `mesh`, in order: Σ_q w_q |det J(ξ_q)| N_a(ξ_q) N_b(ξ_q) and
