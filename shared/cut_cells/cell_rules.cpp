@@ -21,6 +21,7 @@ std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, co
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.method));
   hasher.scalar<double>(options.tolerance);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.fan));
+  hasher.scalar<std::int32_t>(options.exact_degree);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(type));
   hasher.matrix(corners);
   for (const TetrahedronCorners& tetrahedron : candidates) hasher.matrix(tetrahedron);
@@ -86,8 +87,10 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
           inside(volume);
           continue;
         }
-        IntersectionRule intersection = intersection_rule(geometry, candidates, options.order,
-                                                          geometry.affine() ? options.fan : PieceFan::centroid);
+        const bool exact_pieces = geometry.affine() && options.fan == PieceFan::vertex && options.exact_degree > 0;
+        IntersectionRule intersection = intersection_rule(
+            geometry, candidates, exact_pieces ? std::min(options.order, options.exact_degree) : options.order,
+            geometry.affine() ? options.fan : PieceFan::centroid);
         cell.clipped_volume = intersection.clipped_volume;
         cell.initial_points = intersection.rule.points.rows();
         if (cell.initial_points == 0) continue;

@@ -50,11 +50,13 @@ CellQuadratureSource intersection_cell_quadrature(
     options.order = strength;
     // §6: mass rules are never simplified. Of at least twice the basis' degree, a piece's
     // rule integrates the products of an affine cell's basis functions exactly on any
-    // tetrahedron, so they take the fan of fewer pieces (clip_tetrahedron): the same masses
-    // to round-off from half the points (fcm Hex20's default strength 10; Hex8's 5 and
-    // Hex27's 11 are below their products' degrees 6 and 12 and keep the centroid's fan).
+    // tetrahedron, so they take the fan of fewer pieces (clip_tetrahedron) and no more than
+    // that degree: the same masses to round-off from a quarter of the points (fcm Hex20's
+    // default strength 10: half the pieces, 46 points a piece for 81; Hex8's 5 and Hex27's
+    // 11 are below their products' degrees 6 and 12 and keep the centroid's fan).
     options.simplify = purpose == RulePurpose::stiffness && method.has_value();
     options.fan = purpose == RulePurpose::mass && strength >= product_degree ? PieceFan::vertex : PieceFan::centroid;
+    options.exact_degree = options.fan == PieceFan::vertex ? product_degree : 0;
     options.reduce = purpose == RulePurpose::mass;
     if (method) options.method = *method;
     options.tolerance = tolerance;

@@ -71,6 +71,7 @@ std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& emb
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.method));
   hasher.scalar<double>(options.tolerance);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.fan));
+  hasher.scalar<std::int32_t>(options.exact_degree);
   if (cell_tetrahedra)
     for (const std::vector<int>& tetrahedra : *cell_tetrahedra) {
       hasher.scalar<std::int64_t>(static_cast<std::int64_t>(tetrahedra.size()));

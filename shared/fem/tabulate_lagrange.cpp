@@ -111,7 +111,9 @@ ElementTabulator lagrange_tabulator(const VolumeMesh& mesh, LagrangeCellRules ru
   if (constraints && constraints->empty()) constraints = nullptr;
   return [&mesh, rules = std::move(rules), constraints](const TabulatedHere& here, const TabulatedElements*) {
     TabulatedElements elements = tabulate_lagrange(mesh, rules, here);
-    return constraints ? constrain_lagrange_elements(elements, *constraints) : elements;
+    // Not a conditional expression: its unconstrained branch would copy the elements.
+    if (!constraints) return elements;
+    return constrain_lagrange_elements(elements, *constraints);
   };
 }
 

@@ -1,12 +1,14 @@
 // The intersection source of cell rules against the exact box source (fcm/
 // box_cell_quadrature.hpp) on an axis-aligned body in a Hex20 grid: the same volume
 // fractions and the same integrals of every polynomial up to the strength, stiffness rules
-// simplified to at most M points, mass rules not.
+// simplified to at most M points, mass rules not; Hex20's mass rules of strength 10 stop at
+// the degree of its basis' products (8) on these affine cells, with the same masses.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "fcm/box_cell_quadrature.hpp"
+#include "shared/cut_cells/cell_rules.hpp"
 #include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/mesh/structured_grid.hpp"
 
@@ -46,6 +48,36 @@ TEST(IntersectionCellQuadrature, AgreesWithExactBoxRules) {
           EXPECT_NEAR(integrate(*mass[c].rule), reference, 1e-13 * 8.0);
         }
   }
+}
+
+TEST(IntersectionCellQuadrature, AffineCellsMassRulesStopAtTheDegreeOfTheProducts) {
+  const VolumeMesh grid = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                          Eigen::Vector3i(4, 2, 2), ElementType::hex20);
+  const Eigen::AlignedBox3d body(Eigen::Vector3d(0.1, 0.2, 0.15), Eigen::Vector3d(1.7, 0.9, 0.5));
+  const VolumeMesh embedded = structured_grid(body, Eigen::Vector3i(3, 2, 2), ElementType::tet4);
+  const auto mass = intersection_cell_quadrature(grid, embedded)(10, RulePurpose::mass);
+  // The same pieces with the strength asked for: a rule exact beyond the products' degree.
+  CellRuleOptions full;
+  full.order = 10;
+  full.simplify = false;
+  full.fan = PieceFan::vertex;
+  full.reduce = true;
+  const CellRules strength_ten = compute_cell_rules(grid, embedded, full);
+  int cut = 0;
+  for (std::size_t c = 0; c < mass.size(); ++c) {
+    if (!mass[c].rule || !mass[c].reduced) continue;
+    SCOPED_TRACE("cell " + std::to_string(c));
+    ++cut;
+    const CellRule& reference = strength_ten.cells[c];
+    ASSERT_TRUE(reference.reduced.has_value());
+    EXPECT_EQ(mass[c].rule->strength, 8);
+    EXPECT_LT(mass[c].rule->points.rows(), reference.rule.points.rows());
+    const double scale = reference.reduced->weight_sum;
+    EXPECT_NEAR(mass[c].reduced->weight_sum, reference.reduced->weight_sum, 1e-13 * scale);
+    EXPECT_LE((mass[c].reduced->products - reference.reduced->products).cwiseAbs().maxCoeff(), 1e-13 * scale);
+    EXPECT_LE((mass[c].reduced->integrals - reference.reduced->integrals).cwiseAbs().maxCoeff(), 1e-13 * scale);
+  }
+  EXPECT_EQ(cut, 8);  // the grid's lower layer: the body lies in it and cuts each of its cells
 }
 
 }  // namespace
