@@ -4,11 +4,6 @@
 
 namespace altfem {
 
-namespace {
-
-// The functions of a cell's nodes `nodes` (some hanging) in the constrained space: `basis`
-// its free nodes and the masters of its hanging ones, `substitution` (#nodes × #basis)
-// column j the function basis[j] in the nodes' functions. Both are rewritten.
 void substitute_hanging(std::span<const int> nodes, const NodeConstraints& constraints, std::vector<int>& basis,
                         Eigen::MatrixXd& substitution) {
   basis.clear();
@@ -39,38 +34,6 @@ void substitute_hanging(std::span<const int> nodes, const NodeConstraints& const
 
 bool any_hanging(std::span<const int> nodes, const NodeConstraints& constraints) {
   return std::any_of(nodes.begin(), nodes.end(), [&](int node) { return node >= constraints.free_nodes; });
-}
-
-}  // namespace
-
-TabulatedElements constrain_lagrange_elements(const TabulatedElements& elements, const NodeConstraints& constraints) {
-  TabulatedElements constrained;
-  std::vector<int> basis;
-  Eigen::MatrixXd substitution, values, gradients;  // reused across elements
-  for (int e = 0; e < elements.size(); ++e) {
-    const ElementView element = elements[e];
-    const int points = element.point_count();
-    if (!elements.holds(e)) {  // another rank's: its functions in the constrained space
-      if (any_hanging(element.basis, constraints)) substitute_hanging(element.basis, constraints, basis, substitution);
-      else basis.assign(element.basis.begin(), element.basis.end());
-      constrained.add_held_elsewhere(basis, elements.whole_point_count(e), element.material);
-      continue;
-    }
-    if (!any_hanging(element.basis, constraints)) {
-      const Eigen::Map<const Eigen::MatrixXd> raw_gradients(element.gradients, 3,
-                                                            Eigen::Index(points) * element.basis_count());
-      constrained.add(element.basis, element.weights, element.values, raw_gradients.transpose(), element.material);
-      continue;
-    }
-    substitute_hanging(element.basis, constraints, basis, substitution);
-    values = element.values * substitution;
-    gradients.resize(Eigen::Index(points) * substitution.cols(), 3);
-    for (int q = 0; q < points; ++q)
-      gradients.middleRows(Eigen::Index(q) * substitution.cols(), substitution.cols()) =
-          substitution.transpose() * element.gradients_at(q);
-    constrained.add(basis, element.weights, values, gradients, element.material);
-  }
-  return constrained;
 }
 
 ElementMasses constrain_element_masses(const ElementMasses& masses, const Eigen::MatrixXi& cells,

@@ -21,7 +21,7 @@ std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(const Volu
                                                                       const std::string& scene_file = "scene");
 /// The same with several materials: material_ids holds each cell's index into
 /// `materials` (empty: all 0); with `constraints` (not null), on the free nodes only, hanging
-/// nodes' functions handed to their masters (constrain_lagrange_elements) — a hanging node
+/// nodes' functions handed to their masters (tabulate_lagrange) — a hanging node
 /// on a Dirichlet region lies on its coarse neighbour's face there, whose nodes hold it.
 std::unique_ptr<TabulatedDiscretization> make_lagrange_discretization(
     const VolumeMesh& mesh, std::vector<const Material*> materials, std::vector<int> material_ids,

@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 #include <array>
 #include <atomic>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -33,51 +34,76 @@ ReferenceTable reference_table(const ReferenceElement& element, const Quadrature
 
 }  // namespace
 
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules, const TabulatedHere& here) {
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules, const TabulatedHere& here,
+                                    const NodeConstraints* constraints) {
   const ReferenceElement& element = reference_element(mesh.element_type);
   const int n = element.node_count();
   const int cells = static_cast<int>(mesh.cells.rows());
+  if (constraints && constraints->empty()) constraints = nullptr;
   // The standard rule's reference table serves every cell that has no rule of its own.
   const ReferenceTable standard = reference_table(element, rules.standard);
+  const auto rule_of = [&](int cell) -> const QuadratureRule& {
+    const auto custom = rules.custom.find(cell);
+    return custom != rules.custom.end() ? custom->second : rules.standard;
+  };
 
-  // Physical data per cell, computed in parallel, then appended in cell order.
+  // Physical data per cell, computed in parallel, then appended in cell order. A cell with
+  // hanging nodes gets its constrained basis here too, in the same pass: substituting them
+  // in a second pass over the tabulation was a serial copy of all of it.
   std::vector<Eigen::VectorXd> weights(cells);
   std::vector<Eigen::MatrixXd> gradients(cells);
   std::vector<Eigen::MatrixXd> custom_values(cells);
+  std::vector<std::vector<int>> constrained_basis(constraints ? cells : 0);
   std::atomic<int> failed_cell{-1};
   std::atomic<int> failed_point{-1};
   const std::vector<char> held = tabulated_here(here, cells);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (int cell = 0; cell < cells; ++cell) {
-    if (!held[cell]) continue;
-    const auto custom = rules.custom.find(cell);
-    const bool own_rule = custom != rules.custom.end();
-    const QuadratureRule& rule = own_rule ? custom->second : rules.standard;
-    ReferenceTable own;
-    if (own_rule) {
-      own = reference_table(element, rule);
-      custom_values[cell] = own.values;
-    }
-    const ReferenceTable& table = own_rule ? own : standard;
-    const auto points = static_cast<int>(rule.weights.size());
-    Eigen::MatrixXd nodes(n, 3), reference_gradients(n, 3);
-    for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-    weights[cell].resize(points);
-    gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
-    // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen would
-    // otherwise hand to its blocked matrix product, packing both operands each time.
-    for (int q = 0; q < points; ++q) {
-      for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
-      const Eigen::Matrix3d jacobian = nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
-      const double determinant = jacobian.determinant();
-      if (!(determinant > 0)) {
-        int expected = -1;
-        if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = q;
-        break;
+#pragma omp parallel
+  {
+    Eigen::MatrixXd substitution, unconstrained;
+    std::vector<int> nodes(n);
+#pragma omp for schedule(dynamic, 16)
+    for (int cell = 0; cell < cells; ++cell) {
+      for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
+      const bool hangs = constraints && any_hanging(nodes, *constraints);
+      if (hangs) substitute_hanging(nodes, *constraints, constrained_basis[cell], substitution);
+      if (!held[cell]) continue;
+      const QuadratureRule& rule = rule_of(cell);
+      const bool own_rule = &rule != &rules.standard;
+      ReferenceTable own;
+      if (own_rule) {
+        own = reference_table(element, rule);
+        custom_values[cell] = own.values;
       }
-      weights[cell][q] = rule.weights[q] * determinant;
-      gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
-          reference_gradients.lazyProduct(jacobian.inverse());
+      const ReferenceTable& table = own_rule ? own : standard;
+      const auto points = static_cast<int>(rule.weights.size());
+      Eigen::MatrixXd cell_nodes(n, 3), reference_gradients(n, 3);
+      for (int a = 0; a < n; ++a) cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+      weights[cell].resize(points);
+      gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
+      // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen would
+      // otherwise hand to its blocked matrix product, packing both operands each time.
+      for (int q = 0; q < points; ++q) {
+        for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
+        const Eigen::Matrix3d jacobian = cell_nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
+        const double determinant = jacobian.determinant();
+        if (!(determinant > 0)) {
+          int expected = -1;
+          if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = q;
+          break;
+        }
+        weights[cell][q] = rule.weights[q] * determinant;
+        gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
+            reference_gradients.lazyProduct(jacobian.inverse());
+      }
+      if (!hangs) continue;
+      // N' = N S: values and each point's gradients (#basis × 3) = Sᵀ (#nodes × 3).
+      custom_values[cell] = table.values * substitution;
+      unconstrained.swap(gradients[cell]);
+      const auto basis_size = substitution.cols();
+      gradients[cell].resize(static_cast<Eigen::Index>(points) * basis_size, 3);
+      for (int q = 0; q < points; ++q)
+        gradients[cell].middleRows(q * basis_size, basis_size) =
+            substitution.transpose() * unconstrained.middleRows(static_cast<Eigen::Index>(q) * n, n);
     }
   }
   if (failed_cell >= 0)
@@ -85,42 +111,47 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
                          std::to_string(failed_point.load()) + " (inverted or degenerate " +
                          std::string(element_name(mesh.element_type)) + ")");
 
-  long long point_total = 0;
-  for (const auto& cell_weights : weights) point_total += cell_weights.size();
-  TabulatedElements tabulated;
-  tabulated.reserve(cells, static_cast<long long>(cells) * n, point_total, point_total * n);
-  std::vector<int> basis(n);
+  std::vector<int> nodes(n);
+  const auto basis_of = [&](int cell) -> std::span<const int> {
+    if (constraints && !constrained_basis[cell].empty()) return constrained_basis[cell];
+    for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
+    return nodes;
+  };
+  long long point_total = 0, basis_total = 0, value_total = 0;
   for (int cell = 0; cell < cells; ++cell) {
-    for (int a = 0; a < n; ++a) basis[a] = mesh.cells(cell, a);
+    const auto basis_size = static_cast<long long>(basis_of(cell).size());
+    basis_total += basis_size;
+    point_total += weights[cell].size();
+    value_total += weights[cell].size() * basis_size;
+  }
+  TabulatedElements tabulated;
+  tabulated.reserve(cells, basis_total, point_total, value_total);
+  for (int cell = 0; cell < cells; ++cell) {
     const int material = rules.materials.empty() ? 0 : rules.materials[cell];
     if (!held[cell]) {
-      const auto custom = rules.custom.find(cell);
-      const QuadratureRule& rule = custom != rules.custom.end() ? custom->second : rules.standard;
-      tabulated.add_held_elsewhere(basis, static_cast<int>(rule.weights.size()), material);
+      tabulated.add_held_elsewhere(basis_of(cell), static_cast<int>(rule_of(cell).weights.size()), material);
       continue;
     }
     const Eigen::MatrixXd& values = custom_values[cell].size() > 0 ? custom_values[cell] : standard.values;
-    tabulated.add(basis, std::span<const double>(weights[cell].data(), weights[cell].size()), values, gradients[cell],
-                  material);
+    tabulated.add(basis_of(cell), std::span<const double>(weights[cell].data(), weights[cell].size()), values,
+                  gradients[cell], material);
   }
   return tabulated;
 }
 
 ElementTabulator lagrange_tabulator(const VolumeMesh& mesh, LagrangeCellRules rules,
                                     const NodeConstraints* constraints) {
-  if (constraints && constraints->empty()) constraints = nullptr;
   return [&mesh, rules = std::move(rules), constraints](const TabulatedHere& here, const TabulatedElements*) {
-    TabulatedElements elements = tabulate_lagrange(mesh, rules, here);
-    // Not a conditional expression: its unconstrained branch would copy the elements.
-    if (!constraints) return elements;
-    return constrain_lagrange_elements(elements, *constraints);
+    return tabulate_lagrange(mesh, rules, here, constraints);
   };
 }
 
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength) {
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength,
+                                    const NodeConstraints* constraints) {
   const bool tetrahedra = reference_element(mesh.element_type).shape() == ElementShape::tetrahedron;
   return tabulate_lagrange(
-      mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, {}});
+      mesh, LagrangeCellRules{tetrahedra ? tet_rule(quadrature_strength) : hex_rule(quadrature_strength), {}, {}},
+      nullptr, constraints);
 }
 
 }  // namespace altfem

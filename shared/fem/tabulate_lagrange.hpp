@@ -24,16 +24,19 @@ struct LagrangeCellRules {
 /// values, and physical gradients ∇N = (∂N/∂ξ) J⁻¹ at its rule's points. Basis function
 /// i is mesh node i. OpenMP-parallel over cells. Throws NumericalError naming the cell
 /// and point when det J ≤ 0 (an inverted or degenerate cell). A cell `here` does not hold is
-/// added with its nodes and point count only (TabulatedElements::add_held_elsewhere).
+/// added with its nodes and point count only (TabulatedElements::add_held_elsewhere). With
+/// `constraints` (null or empty for none), the hanging nodes' functions are handed to their
+/// masters (substitute_hanging): a cell's basis is then its free nodes and the masters of its
+/// hanging ones (an element without hanging nodes stays bit for bit as without constraints).
 TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRules& rules,
-                                    const TabulatedHere& here = nullptr);
+                                    const TabulatedHere& here = nullptr, const NodeConstraints* constraints = nullptr);
 /// The tabulator of a TabulatedDiscretization (DiscretizationParts::tabulate) of a Lagrange
-/// mesh: tabulate_lagrange with the cells a rank holds, the hanging nodes of `constraints`
-/// (null or empty for none) then handed to their masters (constrain_lagrange_elements).
-/// `mesh` and `constraints` must outlive it.
+/// mesh: tabulate_lagrange with the cells a rank holds and the hanging nodes of
+/// `constraints`. `mesh` and `constraints` must outlive it.
 ElementTabulator lagrange_tabulator(const VolumeMesh& mesh, LagrangeCellRules rules,
                                     const NodeConstraints* constraints = nullptr);
 /// Every cell with the reference rule of `quadrature_strength` (tet_rule / hex_rule), material 0.
-TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength);
+TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, int quadrature_strength,
+                                    const NodeConstraints* constraints = nullptr);
 
 }  // namespace altfem

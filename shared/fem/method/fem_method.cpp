@@ -127,9 +127,8 @@ public:
     if (added_strength == 0)
       return nodal_field_quadrature(borrowed(discretization_->elements()), mesh_.nodes, quadrature_order_);
     const int strength = quadrature_order_ + added_strength;
-    TabulatedElements elements = tabulate_lagrange(mesh_, strength);
-    if (!constraints_.empty()) elements = constrain_lagrange_elements(elements, constraints_);
-    return nodal_field_quadrature(std::make_shared<TabulatedElements>(std::move(elements)), mesh_.nodes, strength);
+    return nodal_field_quadrature(
+        std::make_shared<TabulatedElements>(tabulate_lagrange(mesh_, strength, &constraints_)), mesh_.nodes, strength);
   }
 
 private:
