@@ -1,5 +1,7 @@
 #include "shared/simulation/basis_embedding.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 
 #include "shared/mesh/point_locator.hpp"
@@ -19,20 +21,77 @@ PointLocator element_locator(const ElementBasisEvaluator& evaluator) {
   return PointLocator(std::move(boxes));
 }
 
+// Appends to `basis` and `weights` the entries of x in the candidates that hold it (in
+// order: the first alone, or every one averaged with BoundaryPointRule::average) and their
+// places among the candidates to `holders`; returns how many held it.
+int append_inside(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x, const std::vector<int>& candidates,
+                  std::vector<int>& holders, std::vector<int>& basis, std::vector<double>& weights) {
+  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
+  thread_local std::vector<int> element_basis;  // scratch, not allocated again for every point
+  thread_local std::vector<double> values;
+  const size_t begin = weights.size();
+  int containing = 0;
+  for (size_t place = 0; place < candidates.size(); ++place) {
+    if (!evaluator.evaluate_inside(candidates[place], x, element_basis, values)) continue;
+    ++containing;
+    holders.push_back(static_cast<int>(place));
+    basis.insert(basis.end(), element_basis.begin(), element_basis.end());
+    weights.insert(weights.end(), values.begin(), values.end());
+    if (!average) break;
+  }
+  if (containing > 1)
+    for (size_t i = begin; i < weights.size(); ++i) weights[i] /= containing;
+  return containing;
+}
+
 }  // namespace
 
 BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
                                const std::vector<std::vector<int>>& point_elements) {
   const PointLocator locator = element_locator(evaluator);
   const double slack = candidate_slack(points);
-  std::vector<int> candidates, holders;
-  for (Eigen::Index point = 0; point < points.rows(); ++point) {
-    const Eigen::Vector3d x = points.row(point).transpose();
-    if (point_elements.empty()) locator.candidates(x, slack, candidates);
-    else candidates = point_elements[point];
-    locate(evaluator, x, candidates, holders);
+  const Eigen::Index count = points.rows();
+  // The points in the elements in parallel, each thread one block of consecutive points
+  // with entries of its own, joined in order after; a point no element holds is
+  // extrapolated then, one at a time (evaluate_nearest builds its search on first need).
+  // A refined grid's transfer locates tens of thousands of new nodes here.
+  std::vector<EntryBlock> blocks;
+  std::vector<char> held(static_cast<size_t>(count), 0);
+#pragma omp parallel
+  {
+#pragma omp single
+    blocks.resize(static_cast<size_t>(omp_get_num_threads()));
+    EntryBlock& block = blocks[static_cast<size_t>(omp_get_thread_num())];
+    std::vector<int> candidates, holders;
+#pragma omp for schedule(static)
+    for (Eigen::Index point = 0; point < count; ++point) {
+      if (block.first < 0) block.first = point;
+      const Eigen::Vector3d x = points.row(point).transpose();
+      if (point_elements.empty()) locator.candidates(x, slack, candidates);
+      else candidates = point_elements[point];
+      holders.clear();
+      held[point] = append_inside(evaluator, x, candidates, holders, block.basis, block.weights) > 0;
+      block.ends.push_back(static_cast<long long>(block.basis.size()));
+    }
   }
-  relocated_count_ = static_cast<int>(points.rows());
+  std::sort(blocks.begin(), blocks.end(), [](const EntryBlock& a, const EntryBlock& b) { return a.first < b.first; });
+  std::vector<int> basis;
+  std::vector<double> values;
+  for (const EntryBlock& block : blocks) {
+    long long begin = 0;
+    for (size_t i = 0; i < block.ends.size(); ++i) {
+      const Eigen::Index point = block.first + static_cast<Eigen::Index>(i);
+      if (held[point]) {
+        basis_.insert(basis_.end(), block.basis.begin() + begin, block.basis.begin() + block.ends[i]);
+        weights_.insert(weights_.end(), block.weights.begin() + begin, block.weights.begin() + block.ends[i]);
+      } else {
+        append_nearest(evaluator, points.row(point).transpose(), basis, values);
+      }
+      offsets_.push_back(static_cast<long long>(basis_.size()));
+      begin = block.ends[i];
+    }
+  }
+  relocated_count_ = static_cast<int>(count);
 }
 
 BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eigen::MatrixXd& points,
@@ -69,28 +128,19 @@ BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eig
 
 void BasisEmbedding::locate(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x,
                             const std::vector<int>& candidates, std::vector<int>& holders) {
-  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
   thread_local std::vector<int> basis;  // scratch, not allocated again for every point
   thread_local std::vector<double> values;
-  const size_t begin = basis_.size();
-  int containing = 0;
-  for (size_t place = 0; place < candidates.size(); ++place) {
-    if (!evaluator.evaluate_inside(candidates[place], x, basis, values)) continue;
-    ++containing;
-    holders.push_back(static_cast<int>(place));
-    basis_.insert(basis_.end(), basis.begin(), basis.end());
-    weights_.insert(weights_.end(), values.begin(), values.end());
-    if (!average) break;
-  }
-  if (containing == 0) {
-    ++outside_count_;
-    max_outside_distance_ = std::max(max_outside_distance_, evaluator.evaluate_nearest(x, basis, values));
-    basis_.insert(basis_.end(), basis.begin(), basis.end());
-    weights_.insert(weights_.end(), values.begin(), values.end());
-  } else if (containing > 1) {
-    for (size_t i = begin; i < weights_.size(); ++i) weights_[i] /= containing;
-  }
+  if (append_inside(evaluator, x, candidates, holders, basis_, weights_) == 0)
+    append_nearest(evaluator, x, basis, values);
   offsets_.push_back(static_cast<long long>(basis_.size()));
+}
+
+void BasisEmbedding::append_nearest(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x,
+                                    std::vector<int>& basis, std::vector<double>& values) {
+  ++outside_count_;
+  max_outside_distance_ = std::max(max_outside_distance_, evaluator.evaluate_nearest(x, basis, values));
+  basis_.insert(basis_.end(), basis.begin(), basis.end());
+  weights_.insert(weights_.end(), values.begin(), values.end());
 }
 
 bool BasisEmbedding::keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
