@@ -3,12 +3,14 @@
 #include <Eigen/LU>
 #include <array>
 #include <atomic>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "shared/assembly/tabulated_here.hpp"
 #include "shared/common/error.hpp"
+#include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/quadrature/reference_rules.hpp"
@@ -80,20 +82,38 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
       for (int a = 0; a < n; ++a) cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
       weights[cell].resize(points);
       gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
-      // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen would
-      // otherwise hand to its blocked matrix product, packing both operands each time.
-      for (int q = 0; q < points; ++q) {
-        for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
-        const Eigen::Matrix3d jacobian = cell_nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
-        const double determinant = jacobian.determinant();
+      // An affine cell (every grid cell) has one Jacobian: ∇N = (∂N/∂ξ) J⁻¹ at all its
+      // points at once, column k of the gradients, seen as #nodes × #points, being
+      // Σ_j J⁻¹(j, k) (∂N/∂ξ_j)ᵀ.
+      if (const std::optional<Eigen::Matrix3d> jacobian = affine_jacobian(element, cell_nodes)) {
+        const double determinant = jacobian->determinant();
         if (!(determinant > 0)) {
           int expected = -1;
-          if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = q;
-          break;
+          if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = 0;
+          continue;
         }
-        weights[cell][q] = rule.weights[q] * determinant;
-        gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
-            reference_gradients.lazyProduct(jacobian.inverse());
+        weights[cell] = rule.weights * determinant;
+        const Eigen::Matrix3d inverse = jacobian->inverse();
+        for (int k = 0; k < 3; ++k)
+          Eigen::Map<Eigen::MatrixXd>(gradients[cell].col(k).data(), n, points) =
+              inverse(0, k) * table.gradients[0].transpose() + inverse(1, k) * table.gradients[1].transpose() +
+              inverse(2, k) * table.gradients[2].transpose();
+      } else {
+        // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen
+        // would otherwise hand to its blocked matrix product, packing both operands each time.
+        for (int q = 0; q < points; ++q) {
+          for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
+          const Eigen::Matrix3d point_jacobian = cell_nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
+          const double determinant = point_jacobian.determinant();
+          if (!(determinant > 0)) {
+            int expected = -1;
+            if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = q;
+            break;
+          }
+          weights[cell][q] = rule.weights[q] * determinant;
+          gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
+              reference_gradients.lazyProduct(point_jacobian.inverse());
+        }
       }
       if (!hangs) continue;
       // N' = N S: values and each point's gradients (#basis × 3) = Sᵀ (#nodes × 3).
