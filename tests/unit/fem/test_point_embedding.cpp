@@ -2,6 +2,9 @@
 // distorted meshes (the basis reproduces affine fields; the inverse map must find
 // the right cell and reference point).
 #include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
 
 #include <cmath>
 #include <random>
@@ -60,6 +63,34 @@ TEST_P(EmbeddingOfType, ReproducesAnAffineDisplacement) {
   ASSERT_EQ(displacement.cols(), 3);
   const Eigen::MatrixXd expected = (points * A.transpose()).rowwise() + b.transpose();
   EXPECT_LT((displacement - expected).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// The points are located in parallel, a block per thread, and joined in order: any number
+// of threads gives the same entries, bit for bit, the points outside extrapolated alike.
+TEST_P(EmbeddingOfType, EveryThreadCountGivesTheSameEmbedding) {
+  const VolumeMesh mesh = test::distorted_grid(test::unit_cube(), {3, 3, 3}, GetParam(), 0.15, 5);
+  Eigen::MatrixXd points(310, 3);
+  points.topRows(300) = random_interior_points(mesh, 300, 11);
+  for (int p = 300; p < 310; ++p) points.row(p) = Eigen::RowVector3d(1.02 + 0.001 * p, 0.5, 0.4 - 0.01 * p);
+  const Eigen::VectorXd u = test::nodal_values(mesh, [](const Eigen::Vector3d& x) -> Eigen::Vector3d {
+    return {std::sin(3 * x.x()), x.y() * x.z(), x.x()};
+  });
+  const LagrangeBasisEvaluator evaluator(mesh);
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const BasisEmbedding serial(evaluator, points);
+  omp_set_num_threads(3);
+  const BasisEmbedding parallel(evaluator, points);
+  omp_set_num_threads(threads);
+  EXPECT_EQ(serial.outside_count(), 10);
+  EXPECT_EQ(parallel.outside_count(), 10);
+  EXPECT_EQ(parallel.max_outside_distance(), serial.max_outside_distance());
+  for (Eigen::Index p = 0; p < points.rows(); ++p) {
+    const std::span<const int> serial_basis = serial.basis_of(p), parallel_basis = parallel.basis_of(p);
+    ASSERT_TRUE(std::equal(serial_basis.begin(), serial_basis.end(), parallel_basis.begin(), parallel_basis.end()))
+        << "point " << p;
+  }
+  EXPECT_EQ(parallel.displacement(u), serial.displacement(u));
 }
 
 // A method's surface embeds its vertices on first use, once: a run that writes no surface
