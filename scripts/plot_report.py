@@ -41,9 +41,21 @@ def read_rows(path):
         for key in ("report_error", "relative_rms_error", "field_l2_error", "field_h1_error", "events",
                     "refinements", *EVENT_PHASES):  # absent from older tables
             row[key] = number(row.get(key))
-        # A run that refined is adaptive: its own series beside the method's uniform runs.
-        adaptive = " adaptive" if row["refinements"] and row["refinements"] > 0 else ""
-        row["series"] = f"{row['method']} {row['element']}".strip() + adaptive
+    # A run that refined is adaptive: its own series beside the method's uniform runs. Its
+    # elements are those it ended with, which refinement may change (harmonic's hexahedra
+    # become polyhedra when split): a mix no uniform run of its method has takes the
+    # element of those runs when they share one, so that its cycles form one series.
+    uniform_elements = {}
+    for row in rows:
+        if not (row["refinements"] and row["refinements"] > 0):
+            uniform_elements.setdefault(row["method"], set()).add(row["element"])
+    for row in rows:
+        adaptive = row["refinements"] and row["refinements"] > 0
+        element = row["element"]
+        uniform = uniform_elements.get(row["method"], set())
+        if adaptive and element not in uniform and len(uniform) == 1:
+            element = next(iter(uniform))
+        row["series"] = f"{row['method']} {element}".strip() + (" adaptive" if adaptive else "")
     return rows
 
 

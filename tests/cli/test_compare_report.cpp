@@ -169,5 +169,23 @@ TEST(CompareReport, AnAdaptiveRunIsASeriesOfItsOwn) {
   EXPECT_NE(report.find("| fcm hex20 | fcm coarse |"), std::string::npos) << report;
 }
 
+// Refinement changes harmonic's element mix (split hexahedra become polyhedra), so its
+// adaptive runs end with different mixes; they are still one series, named by the element
+// of the method's uniform runs, which they share: one row of the ranking, not two.
+TEST(CompareReport, AnAdaptiveSeriesKeepsTheElementOfItsMethodsUniformRuns) {
+  std::vector<Row> rows = table;
+  rows.push_back({"harmonic", "mfs_polyhedron+trilinear_hexahedron", "harmonic coarse", 2.0, 0.04, 0.04});
+  rows.push_back({"harmonic", "mfs_polyhedron", "harmonic cycles 2", 3.0, 0.03, 0.03});
+  rows.push_back({"harmonic", "mfs_polyhedron+trilinear_hexahedron", "harmonic cycles 4", 5.0, 0.005, 0.005});
+  rows[rows.size() - 2].refinements = 2;
+  rows.back().refinements = 4;
+  const std::string report = report_of(rows, 0.02, "report-adaptive-mix");
+  EXPECT_NE(report.find("| harmonic mfs_polyhedron+trilinear_hexahedron adaptive | harmonic cycles 4 |"),
+            std::string::npos)
+      << report;
+  EXPECT_EQ(report.find("harmonic mfs_polyhedron adaptive"), std::string::npos) << report;
+  EXPECT_NE(report.find("3 of 5 method–element series reach it"), std::string::npos) << report;
+}
+
 }  // namespace
 }  // namespace altfem::test
