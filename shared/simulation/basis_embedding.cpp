@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <exception>
 
 #include "shared/mesh/point_locator.hpp"
 
@@ -57,6 +58,7 @@ BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eig
   // A refined grid's transfer locates tens of thousands of new nodes here.
   std::vector<EntryBlock> blocks;
   std::vector<char> held(static_cast<size_t>(count), 0);
+  std::exception_ptr failure;  // the first, rethrown after the parallel region
 #pragma omp parallel
   {
 #pragma omp single
@@ -66,14 +68,20 @@ BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eig
 #pragma omp for schedule(static)
     for (Eigen::Index point = 0; point < count; ++point) {
       if (block.first < 0) block.first = point;
-      const Eigen::Vector3d x = points.row(point).transpose();
-      if (point_elements.empty()) locator.candidates(x, slack, candidates);
-      else candidates = point_elements[point];
-      holders.clear();
-      held[point] = append_inside(evaluator, x, candidates, holders, block.basis, block.weights) > 0;
+      try {
+        const Eigen::Vector3d x = points.row(point).transpose();
+        if (point_elements.empty()) locator.candidates(x, slack, candidates);
+        else candidates = point_elements[point];
+        holders.clear();
+        held[point] = append_inside(evaluator, x, candidates, holders, block.basis, block.weights) > 0;
+      } catch (...) {
+#pragma omp critical(altfem_basis_embedding_failure)
+        if (!failure) failure = std::current_exception();
+      }
       block.ends.push_back(static_cast<long long>(block.basis.size()));
     }
   }
+  if (failure) std::rethrow_exception(failure);
   std::sort(blocks.begin(), blocks.end(), [](const EntryBlock& a, const EntryBlock& b) { return a.first < b.first; });
   std::vector<int> basis;
   std::vector<double> values;
