@@ -87,7 +87,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
           inside(volume);
           continue;
         }
-        const bool exact_pieces = geometry.affine() && options.fan == PieceFan::vertex && options.exact_degree > 0;
+        const bool exact_pieces = geometry.affine() && options.exact_degree > 0;
         IntersectionRule intersection = intersection_rule(
             geometry, candidates, exact_pieces ? std::min(options.order, options.exact_degree) : options.order,
             geometry.affine() ? options.fan : PieceFan::centroid);

@@ -33,11 +33,11 @@ struct CellRuleOptions {
   /// its pieces, so it keeps the centroid's fan; one exact for its integrand (a mass rule
   /// of at least twice the basis' degree) may take the vertex's, of fewer points.
   PieceFan fan = PieceFan::centroid;
-  /// With the vertex's fan, the degree of the integrand (the basis' products, for mass
-  /// rules): on an affine cell a piece's rule of that strength is already exact, so the
-  /// pieces there take min(order, exact_degree) — the same integrals to round-off from
-  /// fewer points (fcm Hex20's default mass strength 10: 46 points a piece instead of 81).
-  /// 0: `order` everywhere.
+  /// The degree of the integrand where it is a polynomial (the basis' products, for mass
+  /// rules): on an affine cell a piece's rule of that strength is already exact, whatever
+  /// the fan, so the pieces there take min(order, exact_degree) — the same integrals to
+  /// round-off from fewer points (fcm Hex20's default mass strength 10: 46 points a piece
+  /// instead of 81). 0: `order` everywhere.
   int exact_degree = 0;
   /// Also reduce each cut cell's rule (CellRule::reduced): for mass rules, which serve
   /// only the masses and are never simplified.

@@ -56,7 +56,7 @@ CellQuadratureSource intersection_cell_quadrature(
     // 11 are below their products' degrees 6 and 12 and keep the centroid's fan).
     options.simplify = purpose == RulePurpose::stiffness && method.has_value();
     options.fan = purpose == RulePurpose::mass && strength >= product_degree ? PieceFan::vertex : PieceFan::centroid;
-    options.exact_degree = options.fan == PieceFan::vertex ? product_degree : 0;
+    options.exact_degree = purpose == RulePurpose::mass ? product_degree : 0;
     options.reduce = purpose == RulePurpose::mass;
     if (method) options.method = *method;
     options.tolerance = tolerance;

@@ -61,7 +61,7 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
   const std::vector<char> held = tabulated_here(here, cells);
 #pragma omp parallel
   {
-    Eigen::MatrixXd substitution, unconstrained;
+    Eigen::MatrixXd substitution, unconstrained, cell_nodes(n, 3), reference_gradients(n, 3);  // per thread
     std::vector<int> nodes(n);
 #pragma omp for schedule(dynamic, 16)
     for (int cell = 0; cell < cells; ++cell) {
@@ -78,7 +78,6 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
       }
       const ReferenceTable& table = own_rule ? own : standard;
       const auto points = static_cast<int>(rule.weights.size());
-      Eigen::MatrixXd cell_nodes(n, 3), reference_gradients(n, 3);
       for (int a = 0; a < n; ++a) cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
       weights[cell].resize(points);
       gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "shared/mesh/boundary_surface.hpp"
+#include "shared/mesh/corner_tetrahedra.hpp"
 
 namespace altfem {
 namespace {
@@ -26,13 +27,6 @@ std::optional<Eigen::Vector3d> snapped(const PlanarFace& face, const Eigen::Vect
   return result;
 }
 
-double signed_volume(const VolumeMesh& mesh, Eigen::Index cell) {
-  const Eigen::Vector3d a = mesh.nodes.row(mesh.cells(cell, 0));
-  return (Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 1))) - a)
-      .cross(Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 2))) - a)
-      .dot(Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, 3))) - a);
-}
-
 }  // namespace
 
 int snap_to_planar_faces(VolumeMesh& mesh, const std::vector<PlanarFace>& faces, double tolerance) {
@@ -48,7 +42,10 @@ int snap_to_planar_faces(VolumeMesh& mesh, const std::vector<PlanarFace>& faces,
       if (!target || *target == x) continue;
       mesh.nodes.row(node) = target->transpose();
       bool inverted = false;
-      for (const Eigen::Index cell : cells_of[node]) inverted = inverted || !(signed_volume(mesh, cell) > 0);
+      for (const Eigen::Index cell : cells_of[node]) {
+        const auto corner = [&](int c) { return Eigen::Vector3d(mesh.nodes.row(mesh.cells(cell, c))); };
+        inverted = inverted || !(six_signed_volume(corner(0), corner(1), corner(2), corner(3)) > 0);
+      }
       if (inverted) {
         mesh.nodes.row(node) = x.transpose();
         continue;

@@ -22,6 +22,15 @@ PointLocator element_locator(const ElementBasisEvaluator& evaluator) {
   return PointLocator(std::move(boxes));
 }
 
+// Entries of one thread's block of consecutive points, from `first` on: their basis
+// functions and weights, each point's ending at its `ends` entry.
+struct EntryBlock {
+  Eigen::Index first = -1;
+  std::vector<long long> ends;
+  std::vector<int> basis;
+  std::vector<double> weights;
+};
+
 // Appends to `basis` and `weights` the entries of x in the candidates that hold it (in
 // order: the first alone, or every one averaged with BoundaryPointRule::average) and their
 // places among the candidates to `holders`; returns how many held it.

@@ -120,15 +120,6 @@ private:
     std::vector<std::uint64_t> candidate_keys;  // empty until remember_keys
   };
 
-  /// Entries of one thread's block of consecutive points, from `first` on: their basis
-  /// functions and weights, each point's ending at its `ends` entry.
-  struct EntryBlock {
-    Eigen::Index first = -1;
-    std::vector<long long> ends;
-    std::vector<int> basis;
-    std::vector<double> weights;
-  };
-
   /// Appends the entries of x found in `candidates` (in order, or the nearest element's
   /// when none holds it) and the places of the candidates that held it to `holders`.
   void locate(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x, const std::vector<int>& candidates,
