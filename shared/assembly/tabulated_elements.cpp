@@ -66,12 +66,46 @@ void TabulatedElements::reserve(int elements, long long basis_entries, long long
   gradients_.reserve(3 * value_entries);
 }
 
+void TabulatedElements::lay_out(int elements, const std::function<ElementLayout(int)>& layout) {
+  long long points = static_cast<long long>(weights_.size()), values = static_cast<long long>(values_.size());
+  for (int e = 0; e < elements; ++e) {
+    const ElementLayout element = layout(e);
+    if (element.points < 0) throw std::invalid_argument("TabulatedElements::lay_out: a negative point count");
+    basis_.insert(basis_.end(), element.basis.begin(), element.basis.end());
+    basis_offsets_.push_back(static_cast<long long>(basis_.size()));
+    const long long held_points = element.held ? element.points : 0;
+    points += held_points;
+    values += held_points * static_cast<long long>(element.basis.size());
+    point_offsets_.push_back(points);
+    value_offsets_.push_back(values);
+    material_.push_back(element.material);
+    held_.push_back(element.held ? 1 : 0);
+    share_ = share_ || !element.held;
+    whole_point_offsets_.push_back(whole_point_offsets_.back() + element.points);
+    for (const int index : element.basis) basis_count_ = std::max(basis_count_, index + 1);
+    max_element_basis_ = std::max(max_element_basis_, static_cast<int>(element.basis.size()));
+  }
+  weights_.resize(static_cast<size_t>(points));
+  values_.resize(static_cast<size_t>(values));
+  gradients_.resize(3 * static_cast<size_t>(values));
+}
+
+ElementSlots TabulatedElements::slots(int element) {
+  const auto basis_size = static_cast<Eigen::Index>(basis_offsets_[element + 1] - basis_offsets_[element]);
+  const long long point_begin = point_offsets_[element];
+  const auto points = static_cast<Eigen::Index>(point_offsets_[element + 1] - point_begin);
+  const long long value_begin = value_offsets_[element];
+  return ElementSlots{std::span<double>(weights_.data() + point_begin, static_cast<size_t>(points)),
+                      {values_.data() + value_begin, points, basis_size},
+                      {gradients_.data() + 3 * value_begin, points * basis_size, 3}};
+}
+
 void TabulatedElements::keep_only(std::span<const char> keep) {
   if (static_cast<int>(keep.size()) != size())
     throw std::invalid_argument("TabulatedElements::keep_only: one entry per element expected");
   if (share_) throw std::logic_error("TabulatedElements::keep_only: already a share");
   std::vector<long long> point_offsets{0}, value_offsets{0};
-  std::vector<double> weights, values, gradients;
+  Doubles weights, values, gradients;
   for (int e = 0; e < size(); ++e) {
     if (keep[e]) {
       weights.insert(weights.end(), weights_.begin() + point_offsets_[e], weights_.begin() + point_offsets_[e + 1]);

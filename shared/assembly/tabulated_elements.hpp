@@ -11,7 +11,10 @@
 // through memory.
 #include <Eigen/Core>
 #include <functional>
+#include <memory>
+#include <new>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace altfem {
@@ -34,6 +37,43 @@ struct ElementView {
   }
 };
 
+/// One element's place in a tabulation laid out before it is filled (TabulatedElements::lay_out).
+struct ElementLayout {
+  std::span<const int> basis;  ///< #basis global basis-function indices (copied)
+  int points = 0;
+  int material = 0;
+  bool held = true;  ///< false: another rank tabulates it (as add_held_elsewhere)
+};
+
+/// The storage of one laid-out element, shaped as ElementView, for its tabulator to fill.
+struct ElementSlots {
+  std::span<double> weights;                                                                  ///< #points
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> values;  ///< #points × #basis
+  /// (#points·#basis) × 3, point-major: rows q·#basis .. q·#basis + #basis − 1 belong to point q
+  Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients;
+};
+
+/// std::allocator whose value-less construction leaves a double unwritten, so resizing a
+/// tabulation's arrays does not zero memory its tabulator writes anyway.
+template <class T>
+struct UninitializedAllocator : std::allocator<T> {
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U>
+  void construct(U* pointer) noexcept {
+    ::new (static_cast<void*>(pointer)) U;
+  }
+  template <class U, class... Arguments>
+  void construct(U* pointer, Arguments&&... arguments) {
+    ::new (static_cast<void*>(pointer)) U(std::forward<Arguments>(arguments)...);
+  }
+};
+
 /// Whether element e is tabulated on this rank; an empty function: every element.
 using TabulatedHere = std::function<bool(int element)>;
 
@@ -47,6 +87,13 @@ public:
   /// material and how many points it has, none of them held here. Makes this a share.
   void add_held_elsewhere(std::span<const int> basis, int points, int material = 0);
   void reserve(int elements, long long basis_entries, long long point_entries, long long value_entries);
+  /// Appends `elements` elements at once, element e as layout(e) says, with room for their
+  /// weights, values and gradients left unwritten: the tabulator fills each held element's
+  /// slots() once, from any thread. Unlike add(), nothing is copied or zeroed first, and
+  /// the memory is first touched by the threads that fill it.
+  void lay_out(int elements, const std::function<ElementLayout(int)>& layout);
+  /// Where a laid-out held element's weights, values and gradients go.
+  ElementSlots slots(int element);
 
   int size() const { return static_cast<int>(material_.size()); }
   /// One more than the largest basis index used.
@@ -87,10 +134,11 @@ private:
   std::vector<long long> basis_offsets_{0};  // #elements + 1
   std::vector<int> basis_;
   std::vector<long long> point_offsets_{0};  // #elements + 1
-  std::vector<double> weights_;
+  using Doubles = std::vector<double, UninitializedAllocator<double>>;
+  Doubles weights_;
   std::vector<long long> value_offsets_{0};  // #elements + 1; gradients start at 3× this
-  std::vector<double> values_;
-  std::vector<double> gradients_;
+  Doubles values_;
+  Doubles gradients_;
   std::vector<int> material_;
   // Which elements' points are held here, and where they start in the whole tabulation
   // (#elements + 1): point_offsets_ unless this is a share.

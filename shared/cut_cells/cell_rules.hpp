@@ -29,9 +29,10 @@ struct CellRuleOptions {
   SimplificationMethod method = SimplificationOptions{}.method;
   double tolerance = SimplificationOptions{}.tolerance;  ///< accepted moment residual
   /// How the clipped pieces of an affine cell are tetrahedralised (other cells: the
-  /// centroid's fan). A rule that is simplified, or inexact for its integrand, depends on
-  /// its pieces, so it keeps the centroid's fan; one exact for its integrand (a mass rule
-  /// of at least twice the basis' degree) may take the vertex's, of fewer points.
+  /// centroid's fan). A rule inexact for its integrand depends on its pieces, so it keeps
+  /// the centroid's fan; one exact for its integrand (a mass rule of at least twice the
+  /// basis' degree), or one simplified (which keeps only its degree-m moments, exact on any
+  /// pieces), may take the vertex's, of about half the points.
   PieceFan fan = PieceFan::centroid;
   /// The degree of the integrand where it is a polynomial (the basis' products, for mass
   /// rules): on an affine cell a piece's rule of that strength is already exact, whatever

@@ -53,9 +53,14 @@ CellQuadratureSource intersection_cell_quadrature(
     // tetrahedron, so they take the fan of fewer pieces (clip_tetrahedron) and no more than
     // that degree: the same masses to round-off from a quarter of the points (fcm Hex20's
     // default strength 10: half the pieces, 46 points a piece for 81; Hex8's 5 and Hex27's
-    // 11 are below their products' degrees 6 and 12 and keep the centroid's fan).
+    // 11 are below their products' degrees 6 and 12 and keep the centroid's fan). A
+    // simplified rule (§4.4) keeps the moments of degree m of the rule it starts from, which
+    // are exact on any tetrahedralisation: it starts from the vertex's fan too, so the
+    // recombination picks from about half the points (fcm Hex20's refine event, issue #34:
+    // the stiffness rules of 2,792 new cut cells).
     options.simplify = purpose == RulePurpose::stiffness && method.has_value();
-    options.fan = purpose == RulePurpose::mass && strength >= product_degree ? PieceFan::vertex : PieceFan::centroid;
+    options.fan = options.simplify || (purpose == RulePurpose::mass && strength >= product_degree) ? PieceFan::vertex
+                                                                                                   : PieceFan::centroid;
     options.exact_degree = purpose == RulePurpose::mass ? product_degree : 0;
     options.reduce = purpose == RulePurpose::mass;
     if (method) options.method = *method;

@@ -49,38 +49,61 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
     return custom != rules.custom.end() ? custom->second : rules.standard;
   };
 
-  // Physical data per cell, computed in parallel, then appended in cell order. A cell with
-  // hanging nodes gets its constrained basis here too, in the same pass: substituting them
-  // in a second pass over the tabulation was a serial copy of all of it.
-  std::vector<Eigen::VectorXd> weights(cells);
-  std::vector<Eigen::MatrixXd> gradients(cells);
-  std::vector<Eigen::MatrixXd> custom_values(cells);
+  // The cells' bases first (a cell with hanging nodes hands their functions to their masters,
+  // substitute_hanging), so that the tabulation is laid out at its full size; then every cell
+  // writes its weights, values and gradients straight into its place, in parallel (a
+  // tabulation appended cell by cell was a serial copy of all of it, into zeroed memory).
   std::vector<std::vector<int>> constrained_basis(constraints ? cells : 0);
+  std::vector<Eigen::MatrixXd> substitutions(constraints ? cells : 0);  // #nodes × #basis, hanging cells only
+  if (constraints) {
+#pragma omp parallel
+    {
+      std::vector<int> nodes(n);
+#pragma omp for schedule(dynamic, 64)
+      for (int cell = 0; cell < cells; ++cell) {
+        for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
+        if (any_hanging(nodes, *constraints))
+          substitute_hanging(nodes, *constraints, constrained_basis[cell], substitutions[cell]);
+      }
+    }
+  }
+  const std::vector<char> held = tabulated_here(here, cells);
+  TabulatedElements tabulated;
+  {
+    std::vector<int> nodes(n);
+    tabulated.lay_out(cells, [&](int cell) {
+      std::span<const int> basis = nodes;
+      if (constraints && !constrained_basis[cell].empty()) {
+        basis = constrained_basis[cell];
+      } else {
+        for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
+      }
+      return ElementLayout{basis, static_cast<int>(rule_of(cell).weights.size()),
+                           rules.materials.empty() ? 0 : rules.materials[cell], held[cell] != 0};
+    });
+  }
+
   std::atomic<int> failed_cell{-1};
   std::atomic<int> failed_point{-1};
-  const std::vector<char> held = tabulated_here(here, cells);
 #pragma omp parallel
   {
-    Eigen::MatrixXd substitution, unconstrained, cell_nodes(n, 3), reference_gradients(n, 3);  // per thread
-    std::vector<int> nodes(n);
+    Eigen::MatrixXd cell_nodes(n, 3), reference_gradients(n, 3);  // per thread
+    Eigen::VectorXd gradient_storage;                             // per thread, grown to the largest cell
 #pragma omp for schedule(dynamic, 16)
     for (int cell = 0; cell < cells; ++cell) {
-      for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
-      const bool hangs = constraints && any_hanging(nodes, *constraints);
-      if (hangs) substitute_hanging(nodes, *constraints, constrained_basis[cell], substitution);
       if (!held[cell]) continue;
       const QuadratureRule& rule = rule_of(cell);
       const bool own_rule = &rule != &rules.standard;
       ReferenceTable own;
-      if (own_rule) {
-        own = reference_table(element, rule);
-        custom_values[cell] = own.values;
-      }
+      if (own_rule) own = reference_table(element, rule);
       const ReferenceTable& table = own_rule ? own : standard;
       const auto points = static_cast<int>(rule.weights.size());
+      ElementSlots slots = tabulated.slots(cell);
+      Eigen::Map<Eigen::VectorXd> weights(slots.weights.data(), points);
       for (int a = 0; a < n; ++a) cell_nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-      weights[cell].resize(points);
-      gradients[cell].resize(static_cast<Eigen::Index>(points) * n, 3);
+      if (gradient_storage.size() < 3 * static_cast<Eigen::Index>(points) * n)
+        gradient_storage.resize(3 * static_cast<Eigen::Index>(points) * n);
+      Eigen::Map<Eigen::MatrixXd> gradients(gradient_storage.data(), static_cast<Eigen::Index>(points) * n, 3);
       // An affine cell (every grid cell) has one Jacobian: ∇N = (∂N/∂ξ) J⁻¹ at all its
       // points at once, column k of the gradients, seen as #nodes × #points, being
       // Σ_j J⁻¹(j, k) (∂N/∂ξ_j)ᵀ.
@@ -91,70 +114,50 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
           if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = 0;
           continue;
         }
-        weights[cell] = rule.weights * determinant;
+        weights = rule.weights * determinant;
         const Eigen::Matrix3d inverse = jacobian->inverse();
         for (int k = 0; k < 3; ++k)
-          Eigen::Map<Eigen::MatrixXd>(gradients[cell].col(k).data(), n, points) =
+          Eigen::Map<Eigen::MatrixXd>(gradients.col(k).data(), n, points) =
               inverse(0, k) * table.gradients[0].transpose() + inverse(1, k) * table.gradients[1].transpose() +
               inverse(2, k) * table.gradients[2].transpose();
       } else {
         // Coefficient-wise products: these are 3 × #nodes × 3 at every point, which Eigen
         // would otherwise hand to its blocked matrix product, packing both operands each time.
-        for (int q = 0; q < points; ++q) {
+        bool inverted = false;
+        for (int q = 0; q < points && !inverted; ++q) {
           for (int j = 0; j < 3; ++j) reference_gradients.col(j) = table.gradients[j].row(q).transpose();
           const Eigen::Matrix3d point_jacobian = cell_nodes.transpose().lazyProduct(reference_gradients);  // ∂x_i/∂ξ_j
           const double determinant = point_jacobian.determinant();
           if (!(determinant > 0)) {
             int expected = -1;
             if (failed_cell.compare_exchange_strong(expected, cell)) failed_point = q;
+            inverted = true;
             break;
           }
-          weights[cell][q] = rule.weights[q] * determinant;
-          gradients[cell].middleRows(static_cast<Eigen::Index>(q) * n, n) =
+          weights[q] = rule.weights[q] * determinant;
+          gradients.middleRows(static_cast<Eigen::Index>(q) * n, n) =
               reference_gradients.lazyProduct(point_jacobian.inverse());
         }
+        if (inverted) continue;
       }
-      if (!hangs) continue;
+      if (!constraints || constrained_basis[cell].empty()) {
+        slots.values = table.values;
+        slots.gradients = gradients;
+        continue;
+      }
       // N' = N S: values and each point's gradients (#basis × 3) = Sᵀ (#nodes × 3).
-      custom_values[cell] = table.values * substitution;
-      unconstrained.swap(gradients[cell]);
+      const Eigen::MatrixXd& substitution = substitutions[cell];
       const auto basis_size = substitution.cols();
-      gradients[cell].resize(static_cast<Eigen::Index>(points) * basis_size, 3);
+      slots.values = table.values * substitution;
       for (int q = 0; q < points; ++q)
-        gradients[cell].middleRows(q * basis_size, basis_size) =
-            substitution.transpose() * unconstrained.middleRows(static_cast<Eigen::Index>(q) * n, n);
+        slots.gradients.middleRows(q * basis_size, basis_size) =
+            substitution.transpose() * gradients.middleRows(static_cast<Eigen::Index>(q) * n, n);
     }
   }
   if (failed_cell >= 0)
     throw NumericalError("cell " + std::to_string(failed_cell.load()) + ": det J <= 0 at quadrature point " +
                          std::to_string(failed_point.load()) + " (inverted or degenerate " +
                          std::string(element_name(mesh.element_type)) + ")");
-
-  std::vector<int> nodes(n);
-  const auto basis_of = [&](int cell) -> std::span<const int> {
-    if (constraints && !constrained_basis[cell].empty()) return constrained_basis[cell];
-    for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
-    return nodes;
-  };
-  long long point_total = 0, basis_total = 0, value_total = 0;
-  for (int cell = 0; cell < cells; ++cell) {
-    const auto basis_size = static_cast<long long>(basis_of(cell).size());
-    basis_total += basis_size;
-    point_total += weights[cell].size();
-    value_total += weights[cell].size() * basis_size;
-  }
-  TabulatedElements tabulated;
-  tabulated.reserve(cells, basis_total, point_total, value_total);
-  for (int cell = 0; cell < cells; ++cell) {
-    const int material = rules.materials.empty() ? 0 : rules.materials[cell];
-    if (!held[cell]) {
-      tabulated.add_held_elsewhere(basis_of(cell), static_cast<int>(rule_of(cell).weights.size()), material);
-      continue;
-    }
-    const Eigen::MatrixXd& values = custom_values[cell].size() > 0 ? custom_values[cell] : standard.values;
-    tabulated.add(basis_of(cell), std::span<const double>(weights[cell].data(), weights[cell].size()), values,
-                  gradients[cell], material);
-  }
   return tabulated;
 }
 
