@@ -5,6 +5,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/cut_cells/kept_hanging_nodes.hpp"
+#include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/fem/first_order_space.hpp"
@@ -35,20 +36,33 @@ QuadratureRule stabilized(const QuadratureRule& rule, const QuadratureRule& stan
 
 // Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked; the
 // rules are moved out of `cells` (mass rules run to thousands of points per cell). The
-// stabilised copies are made in parallel, the map filled by moves after.
+// stabilised copies are made in parallel, the map filled by moves after. With `mesh` (the
+// kept cells), a cell with a reduction whose nodes are affine gets no rule: its masses are
+// the reduction times det J (lagrange_element_masses), which never reads it.
 LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
-                             int strength, double stabilization) {
+                             int strength, double stabilization, const VolumeMesh* mesh = nullptr) {
   LagrangeCellRules rules{standard_rule(type, strength), {}, {}};
   const auto count = static_cast<int>(kept.size());
   std::vector<QuadratureRule> own(count);
-#pragma omp parallel for schedule(dynamic, 16)
-  for (int k = 0; k < count; ++k) {
-    CellQuadrature& cell = cells[kept[k]];
-    if (!cell.rule) continue;
-    own[k] = stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization) : std::move(*cell.rule);
+  std::vector<char> has_rule(count, 0);
+  const ReferenceElement& element = reference_element(type);
+#pragma omp parallel
+  {
+    Eigen::MatrixXd nodes(element.node_count(), 3);
+#pragma omp for schedule(dynamic, 16)
+    for (int k = 0; k < count; ++k) {
+      CellQuadrature& cell = cells[kept[k]];
+      if (!cell.rule) continue;
+      if (mesh && cell.reduced) {
+        for (Eigen::Index a = 0; a < nodes.rows(); ++a) nodes.row(a) = mesh->nodes.row(mesh->cells(k, a));
+        if (affine_jacobian(element, nodes)) continue;
+      }
+      own[k] = stabilization > 0 ? stabilized(*cell.rule, rules.standard, stabilization) : std::move(*cell.rule);
+      has_rule[k] = 1;
+    }
   }
   for (int k = 0; k < count; ++k)
-    if (cells[kept[k]].rule) rules.custom.emplace(k, std::move(own[k]));
+    if (has_rule[k]) rules.custom.emplace(k, std::move(own[k]));
   return rules;
 }
 
@@ -165,7 +179,7 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   parts.element_masses = lagrange_element_masses(
       fcm.mesh,
       kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
-                 stabilize_mass ? options.stabilization : 0.0),
+                 stabilize_mass ? options.stabilization : 0.0, &fcm.mesh),
       kept_reductions(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
                       stabilize_mass ? options.stabilization : 0.0));
   if (constrained)
