@@ -1,5 +1,6 @@
 #include "polyhedral/harmonic_element_bases.hpp"
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -156,24 +157,38 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
   if (empty_cell < cells)
     throw NumericalError("harmonic quadrature of cell " + std::to_string(empty_cell.load()) +
                          ": its rule has no point inside the cell (raise subdivision_levels or monte_carlo_points)");
+  // Laid out at its full size, then each cell's data copied into its place in parallel
+  // (appended cell by cell, it was a serial copy of the whole tabulation into zeroed memory).
+  const auto plain_table = [&](int cell) -> const TabulatedElements& {
+    return plain_tables[*cells_[cell].plain == plain_types[0] ? 0 : 1];
+  };
   TabulatedElements elements;
-  for (int cell = 0; cell < cells; ++cell) {
+  elements.lay_out(cells, [&](int cell) {
     const int material = materials.empty() ? 0 : materials[cell];
-    if (const auto& type = cells_[cell].plain) {
-      const TabulatedElements& table = plain_tables[*type == plain_types[0] ? 0 : 1];
-      const ElementView view = table[plain_row[cell]];
-      const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients(
-          view.gradients, static_cast<Eigen::Index>(view.point_count()) * view.basis_count(), 3);
-      if (held[cell]) elements.add(view.basis, view.weights, view.values, gradients, material);
-      else elements.add_held_elsewhere(view.basis, table.whole_point_count(plain_row[cell]), material);
-    } else if (!held[cell]) {
-      elements.add_held_elsewhere(cells_[cell].nodes, elsewhere_points[cell], material);
-    } else {
-      const HarmonicTabulation& table = mfs_tables[cell];
-      elements.add(cells_[cell].nodes, {table.weights.data(), static_cast<size_t>(table.weights.size())}, table.values,
-                   table.gradients, material);
-      mfs_tables[cell] = {};  // release as we go
+    if (cells_[cell].plain) {
+      const TabulatedElements& table = plain_table(cell);
+      return ElementLayout{table[plain_row[cell]].basis, table.whole_point_count(plain_row[cell]), material,
+                           held[cell] != 0};
     }
+    const int points = held[cell] ? static_cast<int>(mfs_tables[cell].weights.size()) : elsewhere_points[cell];
+    return ElementLayout{cells_[cell].nodes, points, material, held[cell] != 0};
+  });
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int cell = 0; cell < cells; ++cell) {
+    if (!held[cell]) continue;
+    ElementSlots slots = elements.slots(cell);
+    if (cells_[cell].plain) {
+      const ElementView view = plain_table(cell)[plain_row[cell]];
+      std::copy(view.weights.begin(), view.weights.end(), slots.weights.begin());
+      slots.values = view.values;
+      std::copy(view.gradients, view.gradients + slots.gradients.size(), slots.gradients.data());
+      continue;
+    }
+    HarmonicTabulation& table = mfs_tables[cell];
+    std::copy(table.weights.begin(), table.weights.end(), slots.weights.begin());
+    slots.values = table.values;
+    slots.gradients = table.gradients;
+    table = {};  // release as we go
   }
   return elements;
 }
