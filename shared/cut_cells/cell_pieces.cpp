@@ -115,6 +115,32 @@ void add_contact_areas(const std::vector<TetrahedronCorners>& clipped, const std
     }
 }
 
+/// Whether a face plane of `tetrahedron` has every corner of the cell strictly outside it
+/// by far more than rounding reaches (10⁻⁹ of the two's extent): the two then share no
+/// point, and clipping the tetrahedron by the cell (exact decisions) would leave nothing. A
+/// filter only: what it cannot decide is clipped. Three quarters of the candidates the
+/// bucket grid hands the cells of fcm Hex20's refined bar (issue #34's benchmark, 74,304
+/// for 7,650 cells) miss their cell, and clipping each to nothing was most of the piece
+/// finding.
+bool separated_by_a_face(const TetrahedronCorners& tetrahedron, const Eigen::MatrixXd& corners, double extent) {
+  for (int opposite = 0; opposite < 4; ++opposite) {
+    const Eigen::Vector3d a = tetrahedron.row((opposite + 1) % 4).transpose(),
+                          b = tetrahedron.row((opposite + 2) % 4).transpose(),
+                          c = tetrahedron.row((opposite + 3) % 4).transpose();
+    const Eigen::Vector3d normal = (b - a).cross(c - a);
+    // Oriented towards the outside: away from the opposite corner.
+    const double inside = normal.dot(tetrahedron.row(opposite).transpose() - a);
+    const double margin = 1e-9 * normal.norm() * extent;
+    if (!(std::abs(inside) > margin)) continue;  // a flat tetrahedron: leave it to the clip
+    const double outward = inside > 0 ? -1.0 : 1.0;
+    bool all_outside = true;
+    for (Eigen::Index i = 0; i < corners.rows() && all_outside; ++i)
+      all_outside = outward * normal.dot(corners.row(i).transpose() - a) > margin;
+    if (all_outside) return true;
+  }
+  return false;
+}
+
 /// The fragments of one cell and their pieces: components of face adjacency through
 /// contacts of positive area inside the cell.
 CellFragments cell_fragments(const VolumeMesh& background, int cell, const TetrahedronBuckets& buckets,
@@ -138,7 +164,10 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   for (std::size_t f = 0; f < cell_faces.size(); ++f) cell_planes[f] = face_plane(corners, cell_faces[f]);
   double clipped_volume = 0;
   for (const int t : candidates) {
-    const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(buckets.corners(t), geometry.planes());
+    const TetrahedronCorners& tetrahedron = buckets.corners(t);
+    const double extent = diagonal + (tetrahedron.colwise().maxCoeff() - tetrahedron.colwise().minCoeff()).norm();
+    if (separated_by_a_face(tetrahedron, corners, extent)) continue;
+    const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, geometry.planes());
     if (clipped.empty()) continue;
     for (const TetrahedronCorners& piece : clipped) clipped_volume += tetrahedron_jacobian(piece) / 6.0;
     Fragment fragment;
