@@ -118,10 +118,10 @@ void add_contact_areas(const std::vector<TetrahedronCorners>& clipped, const std
 /// Whether a face plane of `tetrahedron` has every corner of the cell strictly outside it
 /// by far more than rounding reaches (10⁻⁹ of the two's extent): the two then share no
 /// point, and clipping the tetrahedron by the cell (exact decisions) would leave nothing. A
-/// filter only: what it cannot decide is clipped. Three quarters of the candidates the
-/// bucket grid hands the cells of fcm Hex20's refined bar (issue #34's benchmark, 74,304
-/// for 7,650 cells) miss their cell, and clipping each to nothing was most of the piece
-/// finding.
+/// filter only: what it cannot decide is clipped. Where the embedded tetrahedra are larger
+/// than the cells (a refined grid, issue #34's benchmark), most candidates the bucket grid
+/// hands a cell only share its bounding box, and clipping each to nothing took a quarter
+/// of the piece finding.
 bool separated_by_a_face(const TetrahedronCorners& tetrahedron, const Eigen::MatrixXd& corners, double extent) {
   for (int opposite = 0; opposite < 4; ++opposite) {
     const Eigen::Vector3d a = tetrahedron.row((opposite + 1) % 4).transpose(),

@@ -134,8 +134,8 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   if (reuse) {
     // The memory's copies in parallel, then moved into it. A reduced rule of an affine cell
     // is remembered without its points: its masses are its reduction times det J
-    // (lagrange_element_masses, which asks the same of the cell's nodes), and copying mass
-    // rules of thousands of points a cell was a twentieth of fcm Hex20's refine event.
+    // (lagrange_element_masses, which asks the same of the cell's nodes), and mass rules run
+    // to thousands of points a cell, which the memory would hold for the rest of the run.
     std::vector<CellRule> copies(reuse->computed ? cell_count : 0);
     const ReferenceElement& element = reference_element(type);
 #pragma omp parallel
