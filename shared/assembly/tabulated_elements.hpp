@@ -43,6 +43,10 @@ struct ElementLayout {
   int points = 0;
   int material = 0;
   bool held = true;  ///< false: another rank tabulates it (as add_held_elsewhere)
+  /// An element laid out before it in the same call whose weights, values and gradients
+  /// are this one's too (held, with as many points and basis functions): one copy for
+  /// the many equal cells of a grid. −1: its own.
+  int same_points_as = -1;
 };
 
 /// The storage of one laid-out element, shaped as ElementView, for its tabulator to fill.
@@ -88,9 +92,11 @@ public:
   void add_held_elsewhere(std::span<const int> basis, int points, int material = 0);
   void reserve(int elements, long long basis_entries, long long point_entries, long long value_entries);
   /// Appends `elements` elements at once, element e as layout(e) says, with room for their
-  /// weights, values and gradients left unwritten: the tabulator fills each held element's
-  /// slots() once, from any thread. Unlike add(), nothing is copied or zeroed first, and
-  /// the memory is first touched by the threads that fill it.
+  /// weights, values and gradients left unwritten: the tabulator fills the slots() of each
+  /// held element that does not share another's points once, from any thread. Unlike
+  /// add(), nothing is copied or zeroed first, and the memory is first touched by the
+  /// threads that fill it. Throws std::invalid_argument for a negative point count or a
+  /// `same_points_as` that is not an earlier held element of the same sizes.
   void lay_out(int elements, const std::function<ElementLayout(int)>& layout);
   /// Where a laid-out held element's weights, values and gradients go.
   ElementSlots slots(int element);
@@ -98,8 +104,9 @@ public:
   int size() const { return static_cast<int>(material_.size()); }
   /// One more than the largest basis index used.
   int basis_count() const { return basis_count_; }
-  /// The points held here: all of them unless keep_only() left this rank's share.
-  long long point_count() const { return static_cast<long long>(weights_.size()); }
+  /// The points of the elements held here (all of them unless keep_only() left this
+  /// rank's share), counted per element however many share their storage.
+  long long point_count() const { return held_points_; }
   /// Element e; an element another rank holds (keep_only) has its basis and material
   /// but no points.
   ElementView operator[](int element) const;
@@ -131,20 +138,26 @@ public:
   int max_element_basis() const { return max_element_basis_; }
 
 private:
+  long long points_of(int element) const;
+  void append(std::span<const int> basis, long long points, int material, bool held, long long point_begin,
+              long long value_begin);
+
   std::vector<long long> basis_offsets_{0};  // #elements + 1
   std::vector<int> basis_;
-  std::vector<long long> point_offsets_{0};  // #elements + 1
+  // #elements: where a held element's weights start in weights_, and its values in values_
+  // (its gradients at 3× that); elements that share their points share these.
+  std::vector<long long> point_begin_, value_begin_;
   using Doubles = std::vector<double, UninitializedAllocator<double>>;
   Doubles weights_;
-  std::vector<long long> value_offsets_{0};  // #elements + 1; gradients start at 3× this
   Doubles values_;
   Doubles gradients_;
   std::vector<int> material_;
   // Which elements' points are held here, and where they start in the whole tabulation
-  // (#elements + 1): point_offsets_ unless this is a share.
+  // (#elements + 1), which also gives every element's point count.
   bool share_ = false;
   std::vector<char> held_;
   std::vector<long long> whole_point_offsets_{0};
+  long long held_points_ = 0;
   int basis_count_ = 0;
   int max_element_basis_ = 0;
 };

@@ -3,6 +3,10 @@
 #include <Eigen/LU>
 #include <array>
 #include <atomic>
+#include <cstdint>
+#include <cstring>
+#include <functional>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -32,6 +36,38 @@ ReferenceTable reference_table(const ReferenceElement& element, const Quadrature
   element.evaluate_at(rule.points, table.values);
   element.evaluate_gradients_at(rule.points, table.gradients);
   return table;
+}
+
+// Per cell, the first cell before it whose tabulation is bit for bit its own, else −1:
+// both held, on the standard rule without hanging nodes (`plain`), affine with the same
+// Jacobian to the last bit, so that their weights, values and gradients are the same
+// numbers. A grid's cells of one size are few such classes; tabulated once each, they
+// share it (TabulatedElements' same_points_as), where the tabulation was most of the
+// memory a grid's discretization holds.
+std::vector<int> equal_cells(const VolumeMesh& mesh, const ReferenceElement& element, const std::vector<char>& held,
+                             const std::function<bool(int)>& plain) {
+  const int cells = static_cast<int>(mesh.cells.rows()), n = element.node_count();
+  std::vector<std::optional<Eigen::Matrix3d>> jacobians(cells);
+#pragma omp parallel
+  {
+    Eigen::MatrixXd nodes(n, 3);
+#pragma omp for schedule(dynamic, 64)
+    for (int cell = 0; cell < cells; ++cell) {
+      if (!held[cell] || !plain(cell)) continue;
+      for (int a = 0; a < n; ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+      jacobians[cell] = affine_jacobian(element, nodes);
+    }
+  }
+  std::vector<int> same_as(cells, -1);
+  std::map<std::array<std::uint64_t, 9>, int> first;  // a Jacobian's bits → its first cell
+  for (int cell = 0; cell < cells; ++cell) {
+    if (!jacobians[cell]) continue;
+    std::array<std::uint64_t, 9> bits{};
+    std::memcpy(bits.data(), jacobians[cell]->data(), sizeof bits);
+    const auto [entry, inserted] = first.try_emplace(bits, cell);
+    if (!inserted) same_as[cell] = entry->second;
+  }
+  return same_as;
 }
 
 }  // namespace
@@ -68,6 +104,9 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
     }
   }
   const std::vector<char> held = tabulated_here(here, cells);
+  const std::vector<int> same_as = equal_cells(mesh, element, held, [&](int cell) {
+    return &rule_of(cell) == &rules.standard && !(constraints && !constrained_basis[cell].empty());
+  });
   TabulatedElements tabulated;
   {
     std::vector<int> nodes(n);
@@ -79,7 +118,7 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
         for (int a = 0; a < n; ++a) nodes[a] = mesh.cells(cell, a);
       }
       return ElementLayout{basis, static_cast<int>(rule_of(cell).weights.size()),
-                           rules.materials.empty() ? 0 : rules.materials[cell], held[cell] != 0};
+                           rules.materials.empty() ? 0 : rules.materials[cell], held[cell] != 0, same_as[cell]};
     });
   }
 
@@ -91,7 +130,7 @@ TabulatedElements tabulate_lagrange(const VolumeMesh& mesh, const LagrangeCellRu
     Eigen::VectorXd gradient_storage;                             // per thread, grown to the largest cell
 #pragma omp for schedule(dynamic, 16)
     for (int cell = 0; cell < cells; ++cell) {
-      if (!held[cell]) continue;
+      if (!held[cell] || same_as[cell] >= 0) continue;
       const QuadratureRule& rule = rule_of(cell);
       const bool own_rule = &rule != &rules.standard;
       ReferenceTable own;
