@@ -162,20 +162,29 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
   const auto plain_table = [&](int cell) -> const TabulatedElements& {
     return plain_tables[*cells_[cell].plain == plain_types[0] ? 0 : 1];
   };
+  // Plain cells that share one tabulation there (a grid's equal cells, tabulate_lagrange)
+  // share it here too: the first of them is copied, the others read that copy.
+  std::vector<int> same_as(static_cast<size_t>(cells), -1);
+  std::unordered_map<const double*, int> first_reader;  // a plain table's points → the first cell reading them
   TabulatedElements elements;
   elements.lay_out(cells, [&](int cell) {
     const int material = materials.empty() ? 0 : materials[cell];
     if (cells_[cell].plain) {
       const TabulatedElements& table = plain_table(cell);
-      return ElementLayout{table[plain_row[cell]].basis, table.whole_point_count(plain_row[cell]), material,
-                           held[cell] != 0};
+      const ElementView view = table[plain_row[cell]];
+      if (held[cell] && view.point_count() > 0) {
+        const auto [entry, inserted] = first_reader.try_emplace(view.weights.data(), cell);
+        if (!inserted) same_as[cell] = entry->second;
+      }
+      return ElementLayout{view.basis, table.whole_point_count(plain_row[cell]), material, held[cell] != 0,
+                           same_as[cell]};
     }
     const int points = held[cell] ? static_cast<int>(mfs_tables[cell].weights.size()) : elsewhere_points[cell];
     return ElementLayout{cells_[cell].nodes, points, material, held[cell] != 0};
   });
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < cells; ++cell) {
-    if (!held[cell]) continue;
+    if (!held[cell] || same_as[cell] >= 0) continue;
     ElementSlots slots = elements.slots(cell);
     if (cells_[cell].plain) {
       const ElementView view = plain_table(cell)[plain_row[cell]];
