@@ -11,11 +11,10 @@
 // through memory.
 #include <Eigen/Core>
 #include <functional>
-#include <memory>
-#include <new>
 #include <span>
-#include <utility>
 #include <vector>
+
+#include "shared/common/uninitialized_allocator.hpp"
 
 namespace altfem {
 
@@ -55,27 +54,6 @@ struct ElementSlots {
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> values;  ///< #points × #basis
   /// (#points·#basis) × 3, point-major: rows q·#basis .. q·#basis + #basis − 1 belong to point q
   Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>> gradients;
-};
-
-/// std::allocator whose value-less construction leaves a double unwritten, so resizing a
-/// tabulation's arrays does not zero memory its tabulator writes anyway.
-template <class T>
-struct UninitializedAllocator : std::allocator<T> {
-  template <class U>
-  struct rebind {
-    using other = UninitializedAllocator<U>;
-  };
-  UninitializedAllocator() = default;
-  template <class U>
-  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
-  template <class U>
-  void construct(U* pointer) noexcept {
-    ::new (static_cast<void*>(pointer)) U;
-  }
-  template <class U, class... Arguments>
-  void construct(U* pointer, Arguments&&... arguments) {
-    ::new (static_cast<void*>(pointer)) U(std::forward<Arguments>(arguments)...);
-  }
 };
 
 /// Whether element e is tabulated on this rank; an empty function: every element.

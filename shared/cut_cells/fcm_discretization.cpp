@@ -37,10 +37,12 @@ QuadratureRule stabilized(const QuadratureRule& rule, const QuadratureRule& stan
 // Cut-cell rules of the kept cells (kept-cell index → rule), stabilised if asked; the
 // rules are moved out of `cells` (mass rules run to thousands of points per cell). The
 // stabilised copies are made in parallel, the map filled by moves after. With `mesh` (the
-// kept cells), a cell with a reduction whose nodes are affine gets no rule: its masses are
-// the reduction times det J (lagrange_element_masses), which never reads it.
+// kept cells) and their `reductions`, a kept cell with a reduction whose nodes are affine
+// gets no rule: its masses are the reduction times det J (lagrange_element_masses), which
+// never reads it.
 LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vector<int>& kept, ElementType type,
-                             int strength, double stabilization, const VolumeMesh* mesh = nullptr) {
+                             int strength, double stabilization, const VolumeMesh* mesh = nullptr,
+                             const std::unordered_map<int, ReferenceProducts>* reductions = nullptr) {
   LagrangeCellRules rules{standard_rule(type, strength), {}, {}};
   const auto count = static_cast<int>(kept.size());
   std::vector<QuadratureRule> own(count);
@@ -53,7 +55,7 @@ LagrangeCellRules kept_rules(std::vector<CellQuadrature>& cells, const std::vect
     for (int k = 0; k < count; ++k) {
       CellQuadrature& cell = cells[kept[k]];
       if (!cell.rule) continue;
-      if (mesh && cell.reduced) {
+      if (mesh && reductions && reductions->contains(k)) {
         for (Eigen::Index a = 0; a < nodes.rows(); ++a) nodes.row(a) = mesh->nodes.row(mesh->cells(k, a));
         if (affine_jacobian(element, nodes)) continue;
       }
@@ -176,12 +178,14 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   parts.tabulate = lagrange_tabulator(fcm.mesh, std::move(stiffness_rules), &fcm.constraints);
   // The mass rules are large (a high strength, never simplified) and serve only the
   // masses (Longva et al. 2020 §6): reduced to element masses, never tabulated.
-  parts.element_masses = lagrange_element_masses(
-      fcm.mesh,
-      kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
-                 stabilize_mass ? options.stabilization : 0.0, &fcm.mesh),
-      kept_reductions(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
-                      stabilize_mass ? options.stabilization : 0.0));
+  const double mass_stabilization = stabilize_mass ? options.stabilization : 0.0;
+  const std::unordered_map<int, ReferenceProducts> mass_reductions =
+      kept_reductions(mass_cells, kept, background.element_type, options.mass_quadrature_strength, mass_stabilization);
+  parts.element_masses =
+      lagrange_element_masses(fcm.mesh,
+                              kept_rules(mass_cells, kept, background.element_type, options.mass_quadrature_strength,
+                                         mass_stabilization, &fcm.mesh, &mass_reductions),
+                              mass_reductions);
   if (constrained)
     parts.element_masses = constrain_element_masses(*parts.element_masses, fcm.mesh.cells, fcm.constraints);
   if (options.ghost_penalty > 0) {
