@@ -85,13 +85,39 @@ private:
     return static_cast<int>(planes_[plane].oriented_side(points_[node]));
   }
 
+  // The midpoints of a constructed point's interval approximation (of its exact value's
+  // once that is evaluated), and whether they are within `accuracy` of it.
+  static std::pair<Eigen::Vector3d, bool> approximate_position(const ExactPoint& point, double accuracy) {
+    const auto& approximation = CGAL::approx(point);
+    Eigen::Vector3d position;
+    bool within = true;
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto& coordinate = approximation[axis];
+      position[axis] = CGAL::to_double(coordinate);
+      within = within && coordinate.sup() - coordinate.inf() <= 2 * accuracy;
+    }
+    return {position, within};
+  }
+
   // The node at `point`, made once per context: the same point, or one within `snap_` of it.
+  // The rounded distance is asked first: a crossing made again (from the other side of a
+  // chord) is the same point, which the exact comparison can only confirm by evaluating
+  // both constructions exactly (rational arithmetic, most of the split's time under `perf`),
+  // while their approximations agree far inside `snap_`; points farther apart than that are
+  // told apart by the comparison's interval filter. A new node is placed at its exact value,
+  // rounded (one exact evaluation per node): the pieces' faces must be planar to 1e-10 of
+  // their size for the next split's convexity check (convex_cell.cpp), thin faces included.
   int node_at(const ExactPoint& point, Made& made) {
-    const Eigen::Vector3d position(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z()));
+    auto [position, within] = approximate_position(point, 0.1 * snap_);
+    if (!within) {  // an ill-conditioned construction: CGAL's to_double settles for a relative 1e-5
+      CGAL::exact(point);
+      position = approximate_position(point, 0.1 * snap_).first;
+    }
     for (const auto& [existing, node] : made)
-      if (existing == point || (positions_[node] - position).norm() <= snap_) return node;
+      if ((positions_[node] - position).norm() <= snap_ || existing == point) return node;
+    CGAL::exact(point);  // refines the approximation to the exact value's rounding
     points_.push_back(point);
-    positions_.push_back(position);
+    positions_.push_back(approximate_position(point, 0).first);
     const int node = static_cast<int>(points_.size()) - 1;
     made.emplace_back(point, node);
     return node;
@@ -301,8 +327,7 @@ private:
     mesh.nodes.resize(static_cast<Eigen::Index>(points_.size()), 3);
     mesh.nodes.topRows(mesh_.nodes.rows()) = mesh_.nodes;
     for (std::size_t node = static_cast<std::size_t>(mesh_.nodes.rows()); node < points_.size(); ++node)
-      for (int axis = 0; axis < 3; ++axis)
-        mesh.nodes(static_cast<Eigen::Index>(node), axis) = CGAL::to_double(points_[node][axis]);
+      mesh.nodes.row(static_cast<Eigen::Index>(node)) = positions_[node];
     for (int cell = 0; cell < cell_count; ++cell)
       mesh.cell_kinds.push_back(piece_kind(mesh, cell, result.parent_cell[cell]));
 
