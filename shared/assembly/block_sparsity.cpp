@@ -36,25 +36,41 @@ BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroup
       for (int column : group(g)) holders[next[column]++] = g;
   }
 
-  // Each basis function's neighbours, ascending and unique.
-  std::vector<std::vector<int>> neighbours(static_cast<size_t>(basis_count));
+  // Each basis function's neighbours, ascending and unique, in one flat array: first the
+  // room for every candidate (the groups' lists concatenated), then each function's run
+  // sorted and made unique in place (a vector per function, grown by appending, had made
+  // the pattern's set-up mostly allocation).
+  std::vector<long long> candidate_starts(static_cast<size_t>(basis_count) + 1, 0);
+  for (int column = 0; column < basis_count; ++column) {
+    long long count = included.empty() ? 0 : 1;
+    for (long long k = holder_starts[column]; k < holder_starts[column + 1]; ++k)
+      count += static_cast<long long>(group(holders[k]).size());
+    candidate_starts[column + 1] = candidate_starts[column] + count;
+  }
+  std::vector<int> neighbour_storage(static_cast<size_t>(candidate_starts.back()));
+  std::vector<int> neighbour_counts(static_cast<size_t>(basis_count));
 #pragma omp parallel for schedule(dynamic, 256)
   for (int column = 0; column < basis_count; ++column) {
-    std::vector<int>& list = neighbours[column];
-    if (!included.empty()) list.push_back(column);
+    int* const first = neighbour_storage.data() + candidate_starts[column];
+    int* last = first;
+    if (!included.empty()) *last++ = column;
     for (long long k = holder_starts[column]; k < holder_starts[column + 1]; ++k) {
       const std::span<const int> basis = group(holders[k]);
-      list.insert(list.end(), basis.begin(), basis.end());
+      last = std::copy(basis.begin(), basis.end(), last);
     }
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
+    std::sort(first, last);
+    neighbour_counts[column] = static_cast<int>(std::unique(first, last) - first);
   }
+  const auto neighbours = [&](int column) {
+    return std::span<const int>(neighbour_storage.data() + candidate_starts[column],
+                                static_cast<size_t>(neighbour_counts[column]));
+  };
 
   // Column 3g+k starts after the 3 × 3 blocks of every basis function before g.
   const Eigen::Index dofs = 3 * static_cast<Eigen::Index>(basis_count);
   std::vector<long long> block_starts(static_cast<size_t>(basis_count) + 1, 0);
   for (int column = 0; column < basis_count; ++column)
-    block_starts[column + 1] = block_starts[column] + 9 * static_cast<long long>(neighbours[column].size());
+    block_starts[column + 1] = block_starts[column] + 9 * static_cast<long long>(neighbour_counts[column]);
   const long long nonzeros = block_starts.back();
   pattern_.resize(dofs, dofs);
   pattern_.resizeNonZeros(nonzeros);
@@ -63,7 +79,7 @@ BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroup
   double* values = pattern_.valuePtr();
 #pragma omp parallel for schedule(dynamic, 256)
   for (int column = 0; column < basis_count; ++column) {
-    const std::vector<int>& list = neighbours[column];
+    const std::span<const int> list = neighbours(column);
     for (int k = 0; k < 3; ++k) {
       long long position = block_starts[column] + 3 * k * static_cast<long long>(list.size());
       outer[3 * column + k] = static_cast<int>(position);
@@ -85,7 +101,7 @@ BlockSparsity::BlockSparsity(const TabulatedElements& elements, const BasisGroup
     const std::span<const int> basis = group(g);
     long long position = group_offsets_[g];
     for (int column : basis) {
-      const std::vector<int>& list = neighbours[column];
+      const std::span<const int> list = neighbours(column);
       for (int row : basis)
         offsets_[position++] = 3 * static_cast<int>(std::lower_bound(list.begin(), list.end(), row) - list.begin());
     }
