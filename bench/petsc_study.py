@@ -34,6 +34,11 @@ SOLVERS = {
     "GAMG on the whole space": ["solver/linear=petsc", "solver/p_multigrid=false"],
     "GAMG, its own smoother": ["solver/linear=petsc", "solver/method_smoother=false"],
     "GAMG, translations only": ["solver/linear=petsc", "solver/rigid_body_modes=false"],
+    # GAMG without its aggressive coarsening (MIS-2 on the squared graph) on the finest
+    # level, the default's or, with the first-order coarse level, that level's GAMG's.
+    "GAMG, no aggressive coarsening": ["solver/linear=petsc",
+                                       "solver/petsc_options=-ksp_type cg -pc_type gamg "
+                                       "-pc_gamg_aggressive_coarsening 0 -mg_coarse_pc_gamg_aggressive_coarsening 0"],
     "BoomerAMG (nodal)": ["solver/linear=petsc",
                           "solver/petsc_options=-ksp_type cg -pc_type hypre -pc_hypre_type boomeramg "
                           "-pc_hypre_boomeramg_nodal_coarsen 6"],
@@ -81,12 +86,15 @@ def main():
     parser.add_argument("--altfem", default=ROOT / "build/bin/altfem")
     parser.add_argument("--out", default=ROOT / "out/petsc_study", type=pathlib.Path)
     parser.add_argument("--largest", action="store_true")
+    parser.add_argument("--solver", choices=list(SOLVERS), help="only this row of each problem")
     arguments = parser.parse_args()
 
     print("| problem | DOFs | solver | CG iterations | set-up s | solve s |")
     print("|---|---:|---|---:|---:|---:|")
     for index, (label, method, scene, settings) in enumerate(problems(arguments.largest)):
         for solver_index, (solver, solver_settings) in enumerate(SOLVERS.items()):
+            if arguments.solver and solver != arguments.solver:
+                continue
             extra = OWN_PRECONDITIONER.get(method, []) if solver == "altfem PCG" else []
             out = arguments.out / f"{index}-{solver_index}"
             summary, error = run(arguments.altfem, scene, method, settings + solver_settings + extra, out)
