@@ -81,6 +81,11 @@ struct LinearSolverOptions {
   /// two-level multigrid, the method's own space its fine level (petsc_coarse_level.hpp);
   /// empty: GAMG on the whole.
   CoarseSpace coarse_space;
+  /// `petsc`, where its preconditioner is GAMG (the coarse level's included): coarsen the
+  /// finest level aggressively (PETSc's default, MIS-2 on the squared graph), a cheaper
+  /// set-up for more iterations; false where one set-up serves many solves
+  /// (linear_solver_options). `petsc_options` may still choose.
+  bool aggressive_coarsening = true;
   /// `petsc` over several ranks: when the matrices handed over are each rank's share of a
   /// sum on a pattern of its own (Discretization::matrix_share_owners), the rank owning
   /// each block of three rows (#dofs / 3); empty when every rank hands over the whole.

@@ -60,6 +60,23 @@ public:
     const bool norm_chosen = options.petsc_options.find("-ksp_norm_type") != std::string::npos;
     if (!norm_chosen && std::string(method) == KSPCG)
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
+    // GAMG without aggressive coarsening where one set-up serves several solves, unless the
+    // options choose: set after they are read, since PETSc 3.18 resets the level count when
+    // it reads them, and for the first-order level's GAMG (petsc_coarse_level.hpp), whose
+    // options PCMG reads again at set-up, as an option of that level.
+    const bool gentle = !options.aggressive_coarsening &&
+                        options.petsc_options.find("aggressive_coarsening") == std::string::npos &&
+                        options.petsc_options.find("square_graph") == std::string::npos;
+    PetscBool gamg = PETSC_FALSE;
+    check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCGAMG, &gamg),
+          "PetscObjectTypeCompare");
+    if (gentle && gamg) {
+      check(PCGAMGSetAggressiveLevels(preconditioner, 0), "PCGAMGSetAggressiveLevels");
+      if (!options.coarse_space.empty()) {
+        option_names_.push_back(prefix_ + "mg_coarse_pc_gamg_aggressive_coarsening");
+        check(PetscOptionsSetValue(nullptr, ("-" + option_names_.back()).c_str(), "0"), "PetscOptionsSetValue");
+      }
+    }
     check(coarse_level_.configure(preconditioner), "the first-order coarse level");
     check(finest_smoother_.configure(preconditioner, options.petsc_options), "the finest level's smoother");
   }

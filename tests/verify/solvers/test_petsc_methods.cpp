@@ -129,6 +129,42 @@ TEST(PetscGamg, DgDegreeTwoOnItsAffineFunctionsTakesFewerIterations) {
   EXPECT_LT((on_affine.displacement - direct.displacement).norm(), 1e-7 * direct.displacement.norm());
 }
 
+// Where one GAMG set-up serves several solves (a linear material's constant Hessian over
+// load steps or time steps), GAMG coarsens its finest level without MIS-2 on the squared
+// graph: a dearer set-up, paid once, for fewer iterations at every solve. On the Tet10
+// cantilever's first-order level that meets the issue's 30, which the aggressive default
+// (39 at 20 × 2 × 2) misses; a single solve, or a Hessian that changes, keeps the default.
+TEST(PetscGamg, OneSetUpForSeveralSolvesCoarsensGentlyAndMeetsTheTargetOnTet10) {
+  if (!petsc_available()) GTEST_SKIP() << "built without PETSc (-DALTFEM_PETSC=OFF)";
+  const std::vector<std::string> tet10{"discretization/fem/element=tet10", "discretization/fem/resolution=[20,2,2]"};
+  const auto with = [&](std::vector<std::string> settings) {
+    settings.insert(settings.begin(), tet10.begin(), tet10.end());
+    return settings;
+  };
+  const auto aggressive = [&](const std::vector<std::string>& settings) {
+    std::vector<SceneOverride> overrides;
+    for (const std::string& assignment : with(settings)) overrides.push_back(parse_scene_override(assignment));
+    const Scene scene = load_scene(std::filesystem::path(ALTFEM_SOURCE_DIR) / "scenes/cantilever.json", overrides);
+    const SceneGeometry geometry = load_scene_geometry(scene);
+    const auto method = test::registered_method("fem").factory(scene, geometry);
+    return linear_solver_options(scene, *method).aggressive_coarsening;
+  };
+  EXPECT_TRUE(aggressive({"solver/linear=petsc"}));
+  EXPECT_FALSE(aggressive({"solver/linear=petsc", "time/load_steps=2"}));
+  EXPECT_FALSE(aggressive({"solver/linear=petsc", R"(time={"steps": 10, "dt": 0.001})"}));
+  EXPECT_TRUE(aggressive({"solver/linear=petsc", "time/load_steps=2", "material/model=\"neo_hookean\""}));
+
+  const std::vector<std::string> petsc{"solver/linear=petsc", "solver/linear_tolerance=1e-8"};
+  std::vector<std::string> two_steps = petsc;
+  two_steps.push_back("time/load_steps=2");
+  const Solved gentle = solve_cantilever("fem", with(two_steps));  // the first load step, half the load
+  const Solved default_solve = solve_cantilever("fem", with(petsc));
+  EXPECT_LE(gentle.iterations, 30);
+  EXPECT_LT(gentle.iterations, default_solve.iterations);
+  const Solved direct = solve_cantilever("fem", with({"time/load_steps=2"}));
+  EXPECT_LT((gentle.displacement - direct.displacement).norm(), 1e-6 * direct.displacement.norm());
+}
+
 TEST(PetscGamg, FcmsSchwarzBlocksSmoothingTheFinestLevelCutItsIterationsTenfold) {
   if (!petsc_available()) GTEST_SKIP() << "built without PETSc (-DALTFEM_PETSC=OFF)";
   const std::vector<std::string> defaults{"solver/linear=petsc", "solver/linear_tolerance=1e-8",
