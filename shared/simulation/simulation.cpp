@@ -102,8 +102,8 @@ LinearSolverOptions linear_solver_options(const Scene& scene, const MethodInstan
     if (scene.solver.p_multigrid) options.coarse_space = method.discretization().coarse_space();
     // One set-up serves every solve where the Hessian is constant (a linear material) and
     // the run solves more than once: there a GAMG set-up without aggressive coarsening
-    // pays for itself (the cantilever's Tet10 at 80 × 8 × 8 over 10 steps: 223 → 153
-    // iterations, 19.9 → 15.4 s; docs/performance.md), where a single solve's does not.
+    // pays for itself in fewer iterations at every solve, where a single solve's does not
+    // (docs/performance.md, the PETSc section).
     const int solves = scene.time.is_static ? scene.time.load_steps : scene.time.steps;
     options.aggressive_coarsening = !(method.discretization().hessian_is_constant() && solves > 1);
   }
