@@ -73,8 +73,9 @@ public:
     if (gentle && gamg) {
       check(PCGAMGSetAggressiveLevels(preconditioner, 0), "PCGAMGSetAggressiveLevels");
       if (!options.coarse_space.empty()) {
-        option_names_.push_back(prefix_ + "mg_coarse_pc_gamg_aggressive_coarsening");
-        check(PetscOptionsSetValue(nullptr, ("-" + option_names_.back()).c_str(), "0"), "PetscOptionsSetValue");
+        coarse_coarsening_option_ = prefix_ + "mg_coarse_pc_gamg_aggressive_coarsening";
+        option_names_.push_back(coarse_coarsening_option_);
+        check(PetscOptionsSetValue(nullptr, ("-" + coarse_coarsening_option_).c_str(), "0"), "PetscOptionsSetValue");
       }
     }
     check(coarse_level_.configure(preconditioner), "the first-order coarse level");
@@ -389,7 +390,9 @@ private:
     std::string unused;
     for (PetscInt index = 0; index < count; ++index) {
       const std::string name = names[index];
-      if (name.rfind(prefix_, 0) == 0) unused += (unused.empty() ? " -" : ", -") + name.substr(prefix_.size());
+      // Not the option set here, which a coarse level of another type than GAMG leaves unread.
+      if (name.rfind(prefix_, 0) == 0 && name != coarse_coarsening_option_)
+        unused += (unused.empty() ? " -" : ", -") + name.substr(prefix_.size());
     }
     PetscOptionsLeftRestore(nullptr, &count, &names, &values);
     if (!unused.empty())
@@ -400,6 +403,7 @@ private:
   MPI_Comm communicator_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD over several ranks
   std::string prefix_;
   std::vector<std::string> option_names_;  // with the prefix, without the leading "-"
+  std::string coarse_coarsening_option_;   // the coarse level's gentle coarsening, set here (no scene option)
   Eigen::MatrixXd near_null_space_;        // orthonormal columns
   KSP ksp_ = nullptr;
   Mat matrix_ = nullptr;

@@ -121,6 +121,40 @@ TEST(Run, PetscOutOfIterationsExitsThreeWithPetscsReason) {
   EXPECT_NE(result.err.find("DIVERGED_ITS after 2 iterations"), std::string::npos) << result.err;
 }
 
+// The warning about options PETSc did not use names the scene's own, not the gentler
+// coarsening altfem sets for the first-order level's GAMG where one set-up serves several
+// solves (here two load steps), which a coarse level of another type leaves unread.
+TEST(Run, PetscsUnusedOptionsWarningNamesOnlyTheScenesOptions) {
+  SKIP_WITHOUT_PETSC();
+  const auto out = fresh_directory("petsc-unused-options") / "run";
+  const auto result = run_altfem(
+      {"run",
+       source_path("scenes/cantilever.json").string(),
+       "--method",
+       "fem",
+       "--set",
+       "solver/linear=petsc",
+       "--set",
+       "discretization/fem/element=tet10",
+       "--set",
+       "discretization/fem/resolution=[20,2,2]",
+       "--set",
+       "time/load_steps=2",
+       "--set",
+       "solver/petsc_options=-ksp_type cg -pc_type gamg -mg_coarse_pc_type cholesky -pc_gamg_no_such_option 1",
+       "--set",
+       "output/volume=false",
+       "--set",
+       "output/surface=false",
+       "--out",
+       out.string()});
+  EXPECT_EQ(result.exit_code, 0) << result.err;
+  const auto lines = lines_of(result.err);
+  ASSERT_EQ(lines.size(), 1u) << result.err;
+  EXPECT_NE(lines[0].find("did not use -pc_gamg_no_such_option"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[0].find("aggressive_coarsening"), std::string::npos) << lines[0];
+}
+
 TEST(Check, JsonOutputIsTheResolvedSceneAndGeometryFacts) {
   const auto result = run_altfem({"check", source_path("scenes/bunny.json").string(), "--json"});
   ASSERT_EQ(result.exit_code, 0) << result.err;
