@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "shared/solve/petsc_session.hpp"
 #include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
@@ -24,11 +25,12 @@ FirstOrderCoarseLevel::FirstOrderCoarseLevel(CoarseSpace space, const Eigen::Mat
 }
 
 FirstOrderCoarseLevel::~FirstOrderCoarseLevel() {
+  if (!gentle_option_.empty()) PetscOptionsClearValue(nullptr, gentle_option_.c_str());
   MatDestroy(&interpolation_);
   MatDestroy(&coarse_);
 }
 
-PetscErrorCode FirstOrderCoarseLevel::configure(PC pc) {
+PetscErrorCode FirstOrderCoarseLevel::configure(PC pc, bool aggressive_coarsening) {
   if (space_.empty()) return 0;
   PetscBool gamg = PETSC_FALSE;
   PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCGAMG, &gamg));
@@ -47,7 +49,21 @@ PetscErrorCode FirstOrderCoarseLevel::configure(PC pc) {
   // 32 iterations with 0, 29 with 0.05, and Tet10 40 × 4 × 4 33 against 30.
   PetscReal threshold = 0.05;
   PetscCall(PCGAMGSetThreshold(coarse_pc, &threshold, 1));
+  // Its coarsening as an option of this level, not PCGAMGSetAggressiveLevels: PETSc 3.18
+  // resets the count whenever it reads the level's options, which PCMG does again at set-up.
+  const char* prefix = nullptr;
+  PetscCall(PCGetOptionsPrefix(coarse_pc, &prefix));
+  if (!aggressive_coarsening && !petsc::coarsening_chosen(prefix ? prefix : "")) {
+    gentle_option_ = std::string("-") + (prefix ? prefix : "") + "pc_gamg_aggressive_coarsening";
+    PetscCall(PetscOptionsSetValue(nullptr, gentle_option_.c_str(), "0"));
+  }
   PetscCall(KSPSetFromOptions(coarse));
+  PetscBool coarse_gamg = PETSC_FALSE;
+  PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(coarse_pc), PCGAMG, &coarse_gamg));
+  if (!coarse_gamg && !gentle_option_.empty()) {  // the options chose another coarse solve, which never reads it
+    PetscCall(PetscOptionsClearValue(nullptr, gentle_option_.c_str()));
+    gentle_option_.clear();
+  }
   KSP fine;
   PetscCall(PCMGGetSmoother(pc, 1, &fine));
   // Chebyshev on the diagonal, as GAMG's levels: PCMG's default, symmetric SOR, took as

@@ -13,6 +13,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
+#include <string>
 #include <vector>
 
 #include "shared/solve/coarse_space.hpp"
@@ -31,8 +32,10 @@ public:
 
   /// After the options are read: when `pc` is GAMG, makes it a two-level PCMG (levels'
   /// options under the prefix "mg_levels_", the coarse level's, a GAMG, under
-  /// "mg_coarse_"); any other preconditioner is left alone. Returns PETSc's error code.
-  PetscErrorCode configure(PC pc);
+  /// "mg_coarse_", which coarsens its finest level aggressively only with
+  /// `aggressive_coarsening` or where the options choose); any other preconditioner is left
+  /// alone. Returns PETSc's error code.
+  PetscErrorCode configure(PC pc, bool aggressive_coarsening = true);
   /// Where the fine operator's rows are: PETSc's row of each DOF (empty: the DOF's own
   /// index) and this rank's rows [first_row, last_row) of `communicator`'s matrix.
   struct Rows {
@@ -59,8 +62,9 @@ private:
   Eigen::MatrixXd near_null_space_at_nodes_;             // 3·#coarse functions × 6 (coarse order), or empty
   std::vector<PetscInt> coarse_row_;                     // #coarse functions: PETSc's first row of each
   PetscInt first_coarse_row_ = 0, last_coarse_row_ = 0;  // this rank's coarse rows
-  bool active_ = false;                                  // configure() made the preconditioner a two-level PCMG
-  std::vector<char> decoupled_;                          // #dofs: the decoupled DOFs interpolation_ was built for
+  std::string gentle_option_;    // the coarse GAMG's "-…pc_gamg_aggressive_coarsening 0" set here, cleared with it
+  bool active_ = false;          // configure() made the preconditioner a two-level PCMG
+  std::vector<char> decoupled_;  // #dofs: the decoupled DOFs interpolation_ was built for
   Mat interpolation_ = nullptr;
   Mat coarse_ = nullptr;
   PetscObjectId fine_id_ = 0;  // the fine matrix coarse_ was made from

@@ -62,6 +62,27 @@ std::string prefixed_options(const std::string& options, const std::string& pref
   return result;
 }
 
+bool coarsening_chosen(const std::string& prefix) {
+  PetscBool aggressive = PETSC_FALSE, squared = PETSC_FALSE;
+  PetscOptionsHasName(nullptr, prefix.c_str(), "-pc_gamg_aggressive_coarsening", &aggressive);
+  PetscOptionsHasName(nullptr, prefix.c_str(), "-pc_gamg_square_graph", &squared);
+  return aggressive || squared;
+}
+
+std::string unused_options(const std::string& prefix) {
+  PetscInt count = 0;
+  char** names = nullptr;
+  char** values = nullptr;
+  if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0) return {};
+  std::string unused;
+  for (PetscInt index = 0; index < count; ++index) {
+    const std::string name = names[index];
+    if (name.rfind(prefix, 0) == 0) unused += (unused.empty() ? "-" : ", -") + name.substr(prefix.size());
+  }
+  PetscOptionsLeftRestore(nullptr, &count, &names, &values);
+  return unused;
+}
+
 }  // namespace altfem::petsc
 
 #endif

@@ -23,6 +23,12 @@ std::string next_prefix();
 /// `options` with the prefix given to every option name ("-pc_type gamg" → "-altfem1_pc_type
 /// gamg"); each prefixed name, without its "-", is appended to `names`.
 std::string prefixed_options(const std::string& options, const std::string& prefix, std::vector<std::string>& names);
+/// Whether the options database chooses how the GAMG under `prefix` coarsens its finest
+/// level (-pc_gamg_aggressive_coarsening, or its deprecated alias -pc_gamg_square_graph).
+bool coarsening_chosen(const std::string& prefix);
+/// The options under `prefix` that nobody has asked for ("-name, -name", without the
+/// prefix; empty: none).
+std::string unused_options(const std::string& prefix);
 
 }  // namespace altfem::petsc
 

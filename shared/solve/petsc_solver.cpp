@@ -62,23 +62,13 @@ public:
       check(KSPSetNormType(ksp_, KSP_NORM_UNPRECONDITIONED), "KSPSetNormType");
     // GAMG without aggressive coarsening where one set-up serves several solves, unless the
     // options choose: set after they are read, since PETSc 3.18 resets the level count when
-    // it reads them, and for the first-order level's GAMG (petsc_coarse_level.hpp), whose
-    // options PCMG reads again at set-up, as an option of that level.
-    const bool gentle = !options.aggressive_coarsening &&
-                        options.petsc_options.find("aggressive_coarsening") == std::string::npos &&
-                        options.petsc_options.find("square_graph") == std::string::npos;
+    // it reads them (the first-order level's GAMG likewise, petsc_coarse_level.hpp).
     PetscBool gamg = PETSC_FALSE;
     check(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(preconditioner), PCGAMG, &gamg),
           "PetscObjectTypeCompare");
-    if (gentle && gamg) {
+    if (gamg && !options.aggressive_coarsening && !petsc::coarsening_chosen(prefix_))
       check(PCGAMGSetAggressiveLevels(preconditioner, 0), "PCGAMGSetAggressiveLevels");
-      if (!options.coarse_space.empty()) {
-        coarse_coarsening_option_ = prefix_ + "mg_coarse_pc_gamg_aggressive_coarsening";
-        option_names_.push_back(coarse_coarsening_option_);
-        check(PetscOptionsSetValue(nullptr, ("-" + coarse_coarsening_option_).c_str(), "0"), "PetscOptionsSetValue");
-      }
-    }
-    check(coarse_level_.configure(preconditioner), "the first-order coarse level");
+    check(coarse_level_.configure(preconditioner, options.aggressive_coarsening), "the first-order coarse level");
     check(finest_smoother_.configure(preconditioner, options.petsc_options), "the finest level's smoother");
   }
 
@@ -383,27 +373,15 @@ private:
   // chosen); the first set-up has asked for all of them, so say which it did not use.
   void report_unused_options() {
     reported_unused_options_ = true;
-    PetscInt count = 0;
-    char** names = nullptr;
-    char** values = nullptr;
-    if (PetscOptionsLeftGet(nullptr, &count, &names, &values) != 0) return;
-    std::string unused;
-    for (PetscInt index = 0; index < count; ++index) {
-      const std::string name = names[index];
-      // Not the option set here, which a coarse level of another type than GAMG leaves unread.
-      if (name.rfind(prefix_, 0) == 0 && name != coarse_coarsening_option_)
-        unused += (unused.empty() ? " -" : ", -") + name.substr(prefix_.size());
-    }
-    PetscOptionsLeftRestore(nullptr, &count, &names, &values);
+    const std::string unused = petsc::unused_options(prefix_);
     if (!unused.empty())
-      std::cerr << "altfem: warning: solver.petsc_options: PETSc (" << method_names() << ") did not use" << unused
+      std::cerr << "altfem: warning: solver.petsc_options: PETSc (" << method_names() << ") did not use " << unused
                 << "\n";
   }
 
   MPI_Comm communicator_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD over several ranks
   std::string prefix_;
   std::vector<std::string> option_names_;  // with the prefix, without the leading "-"
-  std::string coarse_coarsening_option_;   // the coarse level's gentle coarsening, set here (no scene option)
   Eigen::MatrixXd near_null_space_;        // orthonormal columns
   KSP ksp_ = nullptr;
   Mat matrix_ = nullptr;
