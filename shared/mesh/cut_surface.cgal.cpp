@@ -120,9 +120,8 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
   return true;
 }
 
-}  // namespace
-
-SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
+// cut_surface on `surface` as it is.
+SurfaceCut cut_surface_as_given(const SurfaceMesh& surface, const CuttingPlane& blade) {
   const ExactBlade exact(blade);
   const std::vector<int> piece_of = surface_vertex_pieces(surface);
   std::map<int, std::vector<int>> triangles_of;
@@ -208,6 +207,36 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
     const double length = normals.row(v).norm();
     if (on_cut[v] && length > 1e-6) out.embedding_offsets.row(v) = -hair / length * normals.row(v);
   }
+  return result;
+}
+
+}  // namespace
+
+SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
+  if (blade.sweep.empty()) {
+    SurfaceCut result = cut_surface_as_given(surface, blade);
+    // A surface this blade changed is no longer what a sweep's next blade would have cut.
+    if (result.facts["cap_triangles"].get<int>() > 0) {
+      result.surface.sweep.clear();
+      result.surface.before_sweep.reset();
+    }
+    return result;
+  }
+  // A sweep's blade covers its earlier ones in their plane, so cutting the surface before
+  // the sweep with it gives what its cuts one after the other would, had corefinement been
+  // able to cut a notch it made: the notched piece's caps lie on one another.
+  const bool again = surface.sweep == blade.sweep && surface.before_sweep;
+  std::shared_ptr<const SurfaceMesh> before = again ? surface.before_sweep : nullptr;
+  if (!before) {
+    auto copy = std::make_shared<SurfaceMesh>(surface);
+    copy->sweep.clear();
+    copy->before_sweep.reset();
+    before = std::move(copy);
+  }
+  SurfaceCut result = cut_surface_as_given(*before, blade);
+  result.facts["from_before_sweep"] = again;
+  result.surface.sweep = blade.sweep;
+  result.surface.before_sweep = std::move(before);
   return result;
 }
 

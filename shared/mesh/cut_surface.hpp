@@ -19,7 +19,8 @@ struct SurfaceCut {
   SurfaceMesh surface;
   /// {"added_triangles": caps included, "cap_triangles": both sides', "added_vertices", "pieces_left_whole": pieces the
   /// blade crosses but cannot cut: one an earlier finite blade left with its caps on one another (it stays whole), or
-  /// one whose sides do not close into manifolds after rounding (the next blade tries it again)}.
+  /// one whose sides do not close into manifolds after rounding (the next blade tries it again)}, and for a sweep's
+  /// blade "from_before_sweep": whether it cut the surface from before the sweep.
   nlohmann::json facts;
 };
 
@@ -31,7 +32,11 @@ struct SurfaceCut {
 /// (exact predicates and constructions), which also clips the blade to the body. Either
 /// way a blade through vertices, along edges or on faces is an ordinary case. Each
 /// connected piece is cut on its own; one the blade separates no two vertices of is kept
-/// as it is.
+/// as it is. A blade of a sweep (`blade.sweep`) whose earlier blade cut `surface` cuts the
+/// surface from before the sweep instead (SurfaceMesh::before_sweep), so each of a
+/// sweep's cuts opens the notch its earlier ones made: the output then keeps that
+/// surface's vertices at their indices and appends this cut's (those the sweep's earlier
+/// cuts added are gone).
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

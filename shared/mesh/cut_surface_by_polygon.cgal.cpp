@@ -123,10 +123,13 @@ void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_le
     }
     copies_at[key_of(piece.point(v))].push_back({output_vertex[v.idx()], farthest});
   }
-  // A cap vertex is the piece's copy on the cap's side, or a point inside the body (on a
-  // finite blade's edge there), one vertex for both caps: the blade stops there.
-  std::map<PointKey, int> inside;
-  const auto cap_vertex = [&](const Point& p, int side) {
+  // A cap vertex is the piece's copy on the cap's side; else a point inside the body: on
+  // the cap's border (a finite blade's edge there) one vertex for both caps, since the
+  // blade stops there, and inside the cap (its remeshing's) one per side, so that the two
+  // caps part.
+  std::map<std::pair<PointKey, int>, int> inside;
+  const auto cap_vertex = [&](Mesh::Vertex_index v, int side) {
+    const Point& p = cap.point(v);
     if (const auto found = copies_at.find(key_of(p)); found != copies_at.end()) {
       const auto& copies = found->second;
       const auto best = std::max_element(copies.begin(), copies.end(), [&](const auto& a, const auto& b) {
@@ -135,8 +138,9 @@ void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_le
       out.cut_vertices.push_back(best->first);
       return best->first;
     }
-    const auto [slot, inserted] =
-        inside.try_emplace(key_of(p), static_cast<int>(out.input_count + static_cast<Eigen::Index>(out.added.size())));
+    const int copy = cap.is_border(v) ? 0 : side;
+    const auto [slot, inserted] = inside.try_emplace(
+        {key_of(p), copy}, static_cast<int>(out.input_count + static_cast<Eigen::Index>(out.added.size())));
     if (inserted) {
       out.added.push_back(vector_of(p));
       out.cut_vertices.push_back(slot->second);
@@ -158,7 +162,7 @@ void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_le
       std::array<int, 3> triangle;
       int k = 0;
       for (const Mesh::Vertex_index v : CGAL::vertices_around_face(cap.halfedge(f), cap))
-        triangle[k++] = cap_vertex(cap.point(v), side);
+        triangle[k++] = cap_vertex(v, side);
       if (side > 0) std::swap(triangle[1], triangle[2]);
       out.triangles.push_back(triangle);
       ++out.cap_triangles;

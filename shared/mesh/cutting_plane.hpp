@@ -25,6 +25,10 @@ struct CuttingPlane {
   /// configuration) holding the node nearest this point is cut: what earlier cuts severed
   /// from it (a pencil's chips) is left whole.
   std::optional<Eigen::Vector3d> piece_at;
+  /// The sweep this blade is a cut of (its event's JSON pointer), "" for a blade that does
+  /// not sweep. A sweep's later blades cover its earlier ones (swept_blade), so cut_surface
+  /// cuts the surface from before the sweep again rather than the one it notched.
+  std::string sweep;
 };
 
 /// The blade of the polygon `corners`: its plane through the first corner with the

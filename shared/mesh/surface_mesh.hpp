@@ -2,6 +2,7 @@
 // A closed, manifold, outward-oriented triangle surface, and its reader.
 #include <Eigen/Core>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,11 @@ struct SurfaceMesh {
   /// Empty, or one per triangle: 1 on the triangles of a piece that a cut found intersecting
   /// itself (cut_surface), so that later cuts leave it whole without testing it again.
   std::vector<char> self_intersecting;
+  /// Set by a swept blade's cut (cut_surface): the sweep (its CuttingPlane::sweep) and the
+  /// surface before its first cut, which the sweep's next blade cuts again. The surface a
+  /// finite blade notched has its two caps on one another, which corefinement cannot cut.
+  std::string sweep;
+  std::shared_ptr<const SurfaceMesh> before_sweep;
 };
 
 /// Where each vertex is embedded in a method's basis: its position plus its offset.

@@ -51,6 +51,7 @@ void append_sweep(const nlohmann::json& event, const nlohmann::json& time, const
     result.kind = EventKind::cut;
     result.time = cut == cuts ? end : start + fraction * (end - start);
     result.blade = cut == 0 ? blade : swept_blade(blade, fraction * translation);
+    result.blade.sweep = first.pointer;
     events.push_back(std::move(result));
   }
 }

@@ -109,15 +109,20 @@ TEST(CutSurface, ABladeOnAFaceOrMissingTheBodySeparatesNothing) {
 }
 
 TEST(CutSurface, AFiniteBladeNotchesTheBoxWithoutSeparatingIt) {
-  // The plane x = 0.5 where y < 0.4: a notch from the face y = 0 to y = 0.4, through z.
+  // The plane x = 0.5 where y < `depth`: a notch from the face y = 0, through z. The deep
+  // one's caps are remeshed with vertices inside them, which both caps shared (neither
+  // side closed, the caps could not part) before each side got its own.
   const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
-  const CuttingPlane blade = polygon_blade({Eigen::Vector3d(0.5, -1, -1), Eigen::Vector3d(0.5, 0.4, -1),
-                                            Eigen::Vector3d(0.5, 0.4, 2), Eigen::Vector3d(0.5, -1, 2)});
-  const SurfaceCut cut = cut_surface(box, blade);
-  ASSERT_EQ(pieces_of(cut.surface).size(), 1u);
-  EXPECT_TRUE(closed_and_oriented(cut.surface));
-  EXPECT_NEAR(surface_volume(cut.surface), 1.0, 1e-15);
-  EXPECT_NEAR(area_in_plane(cut.surface, 0.5), 2 * 0.4, 1e-15);
+  for (const double depth : {0.4, 0.8}) {
+    SCOPED_TRACE(::testing::Message() << "depth " << depth);
+    const CuttingPlane blade = polygon_blade({Eigen::Vector3d(0.5, -1, -1), Eigen::Vector3d(0.5, depth, -1),
+                                              Eigen::Vector3d(0.5, depth, 2), Eigen::Vector3d(0.5, -1, 2)});
+    const SurfaceCut cut = cut_surface(box, blade);
+    ASSERT_EQ(pieces_of(cut.surface).size(), 1u);
+    EXPECT_TRUE(closed_and_oriented(cut.surface));
+    EXPECT_NEAR(surface_volume(cut.surface), 1.0, 1e-15);
+    EXPECT_NEAR(area_in_plane(cut.surface, 0.5), 2 * depth, 1e-14);
+  }
 }
 
 TEST(CutSurface, APieceAtAPointCutsThatPieceAlone) {
@@ -237,6 +242,49 @@ TEST(CutSurface, APolygonOverTheWholeSectionSeparatesLikeThePlane) {
       cut_surface(first.surface, square_blade(Eigen::Vector3d(0.2, 0, 0), Eigen::Vector3d::UnitX(), -1, 4, -1, 2));
   EXPECT_EQ(second.facts["pieces_left_whole"], 0);
   EXPECT_NEAR(volume_of_closed_pieces(second.surface, 3), 1.0, 1e-15);
+}
+
+TEST(CutSurface, EachCutOfASweepOpensTheNotchFurtherUntilItSeparates) {
+  // A notch into the box at x = 0.5, z < 0.2, swept up by 0.6 in three more cuts: each
+  // covers z < 0.4, 0.6, 0.8, then z < 0.8 and its translate … the blades a sweep's events
+  // hold (swept_blade). Cut one after the other, the second found the notched box
+  // intersecting itself (its caps on one another) and left it whole; each cut now opens
+  // the notch further: one closed piece of the box's volume whose caps cover 2 × the
+  // notch's section, until the last, which covers the whole section, separates it.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const CuttingPlane start = square_blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX(), -1, 2, -1, 0.2);
+  SurfaceMesh surface = box;
+  for (int cut = 0; cut <= 3; ++cut) {
+    SCOPED_TRACE(::testing::Message() << "cut " << cut);
+    CuttingPlane blade = cut == 0 ? start : swept_blade(start, Eigen::Vector3d(0, 0, 0.3 * cut));
+    blade.sweep = "/events/0";
+    const SurfaceCut result = cut_surface(surface, blade);
+    EXPECT_EQ(result.facts["pieces_left_whole"], 0);
+    EXPECT_EQ(result.facts["from_before_sweep"], cut > 0);
+    EXPECT_EQ(result.surface.vertices.topRows(8), box.vertices);
+    const double top = std::min(1.0, 0.2 + 0.3 * cut);
+    EXPECT_NEAR(area_in_plane(result.surface, 0.5), 2 * top, 1e-14);
+    if (top < 1) {
+      ASSERT_EQ(pieces_of(result.surface).size(), 1u);
+      EXPECT_TRUE(closed_and_oriented(result.surface));
+      EXPECT_NEAR(surface_volume(result.surface), 1.0, 1e-15);
+    } else {
+      EXPECT_NEAR(volume_of_closed_pieces(result.surface, 2), 1.0, 1e-15);
+    }
+    surface = result.surface;
+  }
+  // Without the sweep's surface from before it, the second cut cannot open the notch.
+  CuttingPlane first = start, second = swept_blade(start, Eigen::Vector3d(0, 0, 0.3));
+  const SurfaceCut notched = cut_surface(box, first);
+  EXPECT_EQ(cut_surface(notched.surface, second).facts["pieces_left_whole"], 1);
+  // A blade of no sweep that changes the surface ends the sweep's: the next cut of the
+  // sweep cuts the surface it is given.
+  first.sweep = second.sweep = "/events/0";
+  const SurfaceCut swept = cut_surface(box, first);
+  const SurfaceCut across =
+      cut_surface(swept.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.9), Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(across.surface.before_sweep, nullptr);
+  EXPECT_EQ(cut_surface(across.surface, second).facts["from_before_sweep"], false);
 }
 
 TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {
