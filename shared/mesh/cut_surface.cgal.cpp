@@ -76,11 +76,19 @@ struct SelfIntersectingPiece : std::runtime_error {
   SelfIntersectingPiece() : std::runtime_error("the piece intersects itself") {}
 };
 
-// Cuts the closed piece made of `triangles` of `surface`, which the blade separates, and
-// appends it to `out`; false, appending nothing, when the blade only grazes it. Throws
-// SelfIntersectingPiece for a piece corefinement would have to cut and cannot.
-bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade,
-               const ExactBlade& exact, bool marked_intersecting, CutPieces& out) {
+// What one corefinement cannot cut at once: a piece that several blades cross, one of them
+// over its whole section (that one splits it by its plane, then the others cut its sides).
+struct NotAtOnce : std::runtime_error {
+  NotAtOnce() : std::runtime_error("blades to be applied one after the other") {}
+};
+
+// Cuts the closed piece made of `triangles` of `surface`, which the `blades` separate
+// (with `exact` theirs), and appends it to `out`; false, appending nothing, when a single
+// blade only grazes it. Throws SelfIntersectingPiece for a piece corefinement would have
+// to cut and cannot, NotAtOnce as above.
+bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
+               const std::vector<const CuttingPlane*>& blades, const std::vector<const ExactBlade*>& exact,
+               bool marked_intersecting, CutPieces& out) {
   // The piece as a CGAL mesh, each vertex with its index in the input ("v:input", −1 for
   // the vertices a cut adds), which CGAL carries through its operations.
   Mesh piece;
@@ -110,29 +118,35 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles, co
   // included (and no test of them, a third of the pencil's cut surface, is made). A
   // polygon over the whole section is split alike: corefinement left the two sides of a
   // box cut through by a square joined, neither closed.
-  if (blade.polygon.empty() || covers_section(surface, triangles, exact))
-    return surface_cut::cut_piece_by_plane(piece, exact, edge_length, out);
+  for (std::size_t b = 0; b < blades.size(); ++b)
+    if (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b])) {
+      if (blades.size() > 1) throw NotAtOnce();
+      return surface_cut::cut_piece_by_plane(piece, *exact[b], edge_length, out);
+    }
   // Corefinement's precondition: a piece that intersects itself (or was found to, `marked_intersecting`) is left
   // whole rather than cut into garbage.
   if (marked_intersecting || PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
 
-  surface_cut::cut_piece_by_polygon(piece, blade, edge_length, out);
+  surface_cut::cut_piece_by_polygons(piece, blades, edge_length, out);
   return true;
 }
 
-// cut_surface on `surface` as it is.
-SurfaceCut cut_surface_as_given(const SurfaceMesh& surface, const CuttingPlane& blade) {
-  const ExactBlade exact(blade);
+// `surface` cut by `blades` at once, each piece by those that cross it (a blade with
+// piece_at only the piece nearest that point). Throws NotAtOnce.
+SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingPlane>& blades) {
+  std::vector<ExactBlade> exact;
+  for (const CuttingPlane& blade : blades) exact.emplace_back(blade);
   const std::vector<int> piece_of = surface_vertex_pieces(surface);
   std::map<int, std::vector<int>> triangles_of;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
     triangles_of[piece_of[surface.triangles(t, 0)]].push_back(static_cast<int>(t));
-  std::optional<int> only;
-  if (blade.piece_at) {
-    Eigen::Index nearest = 0;
-    (surface.vertices.rowwise() - blade.piece_at->transpose()).rowwise().squaredNorm().minCoeff(&nearest);
-    only = piece_of[nearest];
-  }
+  std::vector<std::optional<int>> only(blades.size());
+  for (std::size_t b = 0; b < blades.size(); ++b)
+    if (blades[b].piece_at) {
+      Eigen::Index nearest = 0;
+      (surface.vertices.rowwise() - blades[b].piece_at->transpose()).rowwise().squaredNorm().minCoeff(&nearest);
+      only[b] = piece_of[nearest];
+    }
 
   CutPieces cut;
   cut.input_count = surface.vertices.rows();
@@ -143,14 +157,23 @@ SurfaceCut cut_surface_as_given(const SurfaceMesh& surface, const CuttingPlane& 
   for (const auto& [piece, triangles] : triangles_of) {
     bool opened = false, grazed = false,
          intersects_itself = marks_apply && surface.self_intersecting[triangles.front()];
-    if ((!only || *only == piece) && separates(surface, triangles, exact)) {
+    std::vector<const CuttingPlane*> crossing;
+    std::vector<const ExactBlade*> crossing_exact;
+    for (std::size_t b = 0; b < blades.size(); ++b)
+      if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b])) {
+        crossing.push_back(&blades[b]);
+        crossing_exact.push_back(&exact[b]);
+      }
+    if (!crossing.empty()) {
       // A piece an earlier cut made intersect itself is left whole by a polygon (counted)
       // rather than failing the run; it is found once, when the cut after the one that
       // made it so tries it, and remembered in the surface. A whole plane splits it all
       // the same, its sides keeping the mark.
       try {
-        opened = cut_piece(surface, triangles, blade, exact, intersects_itself, cut);
+        opened = cut_piece(surface, triangles, crossing, crossing_exact, intersects_itself, cut);
         grazed = !opened;
+      } catch (const NotAtOnce&) {
+        throw;
       } catch (const SelfIntersectingPiece&) {
         intersects_itself = true;
       } catch (const std::exception&) {
@@ -210,33 +233,60 @@ SurfaceCut cut_surface_as_given(const SurfaceMesh& surface, const CuttingPlane& 
   return result;
 }
 
+// `before` cut again by `blades`: the whole planes one after the other, then the polygons
+// at once (the pieces the same, cuts being sets: the planes first, since a notch leaves
+// a slit no plane's section can close). Throws NotAtOnce.
+SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>& blades) {
+  SurfaceCut result{before, {}};
+  int cap_triangles = 0;
+  std::vector<CuttingPlane> polygons;
+  for (const CuttingPlane& blade : blades) {
+    if (!blade.polygon.empty()) {
+      polygons.push_back(blade);
+      continue;
+    }
+    result = cut_surface_by(result.surface, {blade});
+    if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
+    cap_triangles += result.facts["cap_triangles"].get<int>();
+  }
+  if (!polygons.empty()) {
+    result = cut_surface_by(result.surface, polygons);
+    cap_triangles += result.facts["cap_triangles"].get<int>();
+  }
+  result.facts["added_triangles"] = result.surface.triangles.rows() - before.triangles.rows();
+  result.facts["added_vertices"] = result.surface.vertices.rows() - before.vertices.rows();
+  result.facts["cap_triangles"] = cap_triangles;
+  return result;
+}
+
 }  // namespace
 
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
-  if (blade.sweep.empty()) {
-    SurfaceCut result = cut_surface_as_given(surface, blade);
-    // A surface this blade changed is no longer what a sweep's next blade would have cut.
-    if (result.facts["cap_triangles"].get<int>() > 0) {
-      result.surface.sweep.clear();
-      result.surface.before_sweep.reset();
+  SurfaceCut result = cut_surface_by(surface, {blade});
+  // A piece an earlier finite blade notched has its caps on one another, where
+  // corefinement cannot cut and no plane's section closes: the surface before that blade
+  // is cut again, with the blades since and this one (a sweep's earlier blades left out:
+  // this one covers them).
+  if (const SurfaceCutRecord* record = surface.cut_record.get();
+      record && result.facts["pieces_left_whole"].get<int>() > 0) {
+    std::vector<CuttingPlane> blades;
+    for (const CuttingPlane& earlier : record->blades)
+      if (blade.sweep.empty() || earlier.sweep != blade.sweep) blades.push_back(earlier);
+    blades.push_back(blade);
+    try {
+      SurfaceCut again = cut_again(record->before, blades);
+      if (again.facts["pieces_left_whole"].get<int>() == 0) {
+        again.facts["blades_cut_again"] = blades.size() - 1;
+        again.surface.cut_record = std::make_shared<SurfaceCutRecord>(SurfaceCutRecord{record->before, blades});
+        return again;
+      }
+    } catch (const NotAtOnce&) {
+      // Polygons over one piece, one of them over its whole section: it stays whole.
     }
-    return result;
   }
-  // A sweep's blade covers its earlier ones in their plane, so cutting the surface before
-  // the sweep with it gives what its cuts one after the other would, had corefinement been
-  // able to cut a notch it made: the notched piece's caps lie on one another.
-  const bool again = surface.sweep == blade.sweep && surface.before_sweep;
-  std::shared_ptr<const SurfaceMesh> before = again ? surface.before_sweep : nullptr;
-  if (!before) {
-    auto copy = std::make_shared<SurfaceMesh>(surface);
-    copy->sweep.clear();
-    copy->before_sweep.reset();
-    before = std::move(copy);
-  }
-  SurfaceCut result = cut_surface_as_given(*before, blade);
-  result.facts["from_before_sweep"] = again;
-  result.surface.sweep = blade.sweep;
-  result.surface.before_sweep = std::move(before);
+  SurfaceMesh before = surface;
+  before.cut_record.reset();
+  result.surface.cut_record = std::make_shared<SurfaceCutRecord>(SurfaceCutRecord{std::move(before), {blade}});
   return result;
 }
 

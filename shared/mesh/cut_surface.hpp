@@ -19,8 +19,8 @@ struct SurfaceCut {
   SurfaceMesh surface;
   /// {"added_triangles": caps included, "cap_triangles": both sides', "added_vertices", "pieces_left_whole": pieces the
   /// blade crosses but cannot cut: one an earlier finite blade left with its caps on one another (it stays whole), or
-  /// one whose sides do not close into manifolds after rounding (the next blade tries it again)}, and for a sweep's
-  /// blade "from_before_sweep": whether it cut the surface from before the sweep.
+  /// one whose sides do not close into manifolds after rounding (the next blade tries it again)}, and
+  /// "blades_cut_again": how many earlier blades the surface from before them was cut with again, with this one.
   nlohmann::json facts;
 };
 
@@ -32,11 +32,16 @@ struct SurfaceCut {
 /// (exact predicates and constructions), which also clips the blade to the body. Either
 /// way a blade through vertices, along edges or on faces is an ordinary case. Each
 /// connected piece is cut on its own; one the blade separates no two vertices of is kept
-/// as it is. A blade of a sweep (`blade.sweep`) whose earlier blade cut `surface` cuts the
-/// surface from before the sweep instead (SurfaceMesh::before_sweep), so each of a
-/// sweep's cuts opens the notch its earlier ones made: the output then keeps that
-/// surface's vertices at their indices and appends this cut's (those the sweep's earlier
-/// cuts added are gone).
+/// as it is. Where it must leave a piece whole that an earlier finite blade notched (its
+/// caps lie on one another), the surface from before that blade
+/// (SurfaceMesh::cut_record) is cut again with the blades since and this one: the whole
+/// planes one after the other, then the polygons at once, each piece by one corefinement
+/// with all those that cross it — a sweep's earlier blades left out, since its later ones
+/// cover them. So a second notch, a plane across a notch, and each cut of a sweep open
+/// the surface. The output then keeps that surface's vertices at their indices and
+/// appends what its cut adds (what the cuts since added is gone). Not so where two
+/// polygons that cross a piece meet one another, or one of them spans its whole section
+/// (a plane across two notches): the piece stays whole, counted.
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

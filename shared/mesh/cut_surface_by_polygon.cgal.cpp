@@ -1,5 +1,7 @@
 #include <CGAL/Polygon_mesh_processing/clip.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
@@ -77,23 +79,34 @@ void renumber_by_position(Mesh& mesh) {
 
 }  // namespace
 
-void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_length, CutPieces& out) {
-  // The piece split along the curve where the blade crosses it (its vertices there
-  // duplicated, one copy per side), and the blade clipped to the body: the cap.
-  Mesh splitter = blade_triangles(blade);
-  Mesh cap = splitter;
-  Mesh clipper = piece;
+void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
+                           CutPieces& out) {
+  // The piece split along the curves where the blades cross it (its vertices there
+  // duplicated, one copy per side), and each blade clipped to the body: its cap.
+  Mesh splitter;
+  std::vector<Mesh> caps;
+  for (const CuttingPlane* blade : blades) {
+    caps.push_back(blade_triangles(*blade));
+    CGAL::copy_face_graph(caps.back(), splitter);
+  }
+  // Blades that meet inside the body would make the splitter intersect itself, which
+  // corefinement does not take.
+  if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
+  const Mesh clipper = piece;
   PMP::split(piece, splitter);
-  PMP::clip(cap, clipper, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
   piece.collect_garbage();
-  cap.collect_garbage();
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
-  PMP::triangulate_faces(cap);
   renumber_by_position(piece);
-  renumber_by_position(cap);
-  cut_curve::remesh_cap(
-      cap, [](Mesh::Face_index) { return true; }, edge_length);
+  for (Mesh& cap : caps) {
+    Mesh body = clipper;
+    PMP::clip(cap, body, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
+    cap.collect_garbage();
+    PMP::triangulate_faces(cap);
+    renumber_by_position(cap);
+    cut_curve::remesh_cap(
+        cap, [](Mesh::Face_index) { return true; }, edge_length);
+  }
 
   // The piece's vertices: the input's, then its new ones (the curve's copies).
   std::vector<int> output_vertex(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);
@@ -109,31 +122,46 @@ void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_le
       out.cut_vertices.push_back(output_vertex[k]);
     }
   }
-  // Every point of the split piece with its copies (two on the cut curve), each with the
-  // signed distance to the blade's plane of its farthest neighbour: the curve's own points
-  // are constructions a rounding off the plane, the neighbours off the curve are clearly
-  // on their copy's side.
-  const Eigen::Vector3d unit_normal = blade.normal.normalized();
-  std::map<PointKey, std::vector<std::pair<int, double>>> copies_at;
-  for (const Mesh::Vertex_index v : piece.vertices()) {
-    double farthest = 0;
+  // Every point of the split piece with its copies (two on a cut curve).
+  std::map<PointKey, std::vector<std::pair<int, Mesh::Vertex_index>>> copies_at;
+  for (const Mesh::Vertex_index v : piece.vertices())
+    copies_at[key_of(piece.point(v))].push_back({output_vertex[v.idx()], v});
+  // The signed distance to the blade's plane of the piece vertex's farthest neighbour: a
+  // curve's own points are constructions a rounding off the plane, the neighbours off the
+  // curve are clearly on their copy's side.
+  const auto farthest = [&](Mesh::Vertex_index v, const CuttingPlane& blade) {
+    const Eigen::Vector3d unit_normal = blade.normal.normalized();
+    double result = 0;
     for (const Mesh::Vertex_index neighbour : CGAL::vertices_around_target(piece.halfedge(v), piece)) {
       const double distance = unit_normal.dot(vector_of(piece.point(neighbour)) - blade.point);
-      if (std::abs(distance) > std::abs(farthest)) farthest = distance;
+      if (std::abs(distance) > std::abs(result)) result = distance;
     }
-    copies_at[key_of(piece.point(v))].push_back({output_vertex[v.idx()], farthest});
-  }
+    return result;
+  };
   // A cap vertex is the piece's copy on the cap's side; else a point inside the body: on
   // the cap's border (a finite blade's edge there) one vertex for both caps, since the
   // blade stops there, and inside the cap (its remeshing's) one per side, so that the two
   // caps part.
   std::map<std::pair<PointKey, int>, int> inside;
-  const auto cap_vertex = [&](Mesh::Vertex_index v, int side) {
+  // The cap's point of a curve is the piece's, but for rounding: the two are one exact
+  // intersection, and corefinement constructs it from the piece's edge cut by the other
+  // blades first where several cross it (one unit in the last place apart, seen).
+  const double same_point = 1e-12 * 40 * edge_length;  // of the piece's diagonal
+  const auto copies_of = [&](const Point& p) {
+    auto found = copies_at.find(key_of(p));
+    if (found != copies_at.end() || blades.size() == 1) return found;
+    for (auto curve = copies_at.begin(); curve != copies_at.end(); ++curve)
+      if (curve->second.size() > 1 &&
+          (Eigen::Vector3d(curve->first[0], curve->first[1], curve->first[2]) - vector_of(p)).norm() <= same_point)
+        return curve;
+    return copies_at.end();
+  };
+  const auto cap_vertex = [&](const Mesh& cap, Mesh::Vertex_index v, const CuttingPlane& blade, int side) {
     const Point& p = cap.point(v);
-    if (const auto found = copies_at.find(key_of(p)); found != copies_at.end()) {
+    if (const auto found = copies_of(p); found != copies_at.end()) {
       const auto& copies = found->second;
       const auto best = std::max_element(copies.begin(), copies.end(), [&](const auto& a, const auto& b) {
-        return side * a.second < side * b.second;
+        return side * farthest(a.second, blade) < side * farthest(b.second, blade);
       });
       out.cut_vertices.push_back(best->first);
       return best->first;
@@ -157,16 +185,17 @@ void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_le
   }
   // A cap per side, facing away from its side's material: the blade's fan turns about its
   // normal, so the positive side's cap is turned over.
-  for (const int side : {+1, -1})
-    for (const Mesh::Face_index f : cap.faces()) {
-      std::array<int, 3> triangle;
-      int k = 0;
-      for (const Mesh::Vertex_index v : CGAL::vertices_around_face(cap.halfedge(f), cap))
-        triangle[k++] = cap_vertex(v, side);
-      if (side > 0) std::swap(triangle[1], triangle[2]);
-      out.triangles.push_back(triangle);
-      ++out.cap_triangles;
-    }
+  for (std::size_t b = 0; b < blades.size(); ++b)
+    for (const int side : {+1, -1})
+      for (const Mesh::Face_index f : caps[b].faces()) {
+        std::array<int, 3> triangle;
+        int k = 0;
+        for (const Mesh::Vertex_index v : CGAL::vertices_around_face(caps[b].halfedge(f), caps[b]))
+          triangle[k++] = cap_vertex(caps[b], v, *blades[b], side);
+        if (side > 0) std::swap(triangle[1], triangle[2]);
+        out.triangles.push_back(triangle);
+        ++out.cap_triangles;
+      }
 }
 
 }  // namespace altfem::surface_cut

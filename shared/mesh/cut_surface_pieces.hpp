@@ -31,8 +31,10 @@ struct CutPieces {
 /// side of no volume). Throws when a side does not close. `edge_length`: the caps' edges.
 bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out);
 
-/// The closed, self-intersection-free `piece` cut by the polygon of `blade` (CGAL's
-/// corefinement), appended to `out`; `piece` is split in the process.
-void cut_piece_by_polygon(Mesh& piece, const CuttingPlane& blade, double edge_length, CutPieces& out);
+/// The closed, self-intersection-free `piece` cut by the polygons of `blades` at once
+/// (CGAL's corefinement), appended to `out`; `piece` is split in the process. Throws
+/// std::runtime_error where blades meet one another.
+void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
+                           CutPieces& out);
 
 }  // namespace altfem::surface_cut

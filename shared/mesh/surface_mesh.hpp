@@ -6,7 +6,11 @@
 #include <string>
 #include <vector>
 
+#include "shared/mesh/cutting_plane.hpp"
+
 namespace altfem {
+
+struct SurfaceCutRecord;
 
 struct SurfaceMesh {
   Eigen::MatrixXd vertices;   ///< #vertices × 3
@@ -19,11 +23,15 @@ struct SurfaceMesh {
   /// Empty, or one per triangle: 1 on the triangles of a piece that a cut found intersecting
   /// itself (cut_surface), so that later cuts leave it whole without testing it again.
   std::vector<char> self_intersecting;
-  /// Set by a swept blade's cut (cut_surface): the sweep (its CuttingPlane::sweep) and the
-  /// surface before its first cut, which the sweep's next blade cuts again. The surface a
-  /// finite blade notched has its two caps on one another, which corefinement cannot cut.
-  std::string sweep;
-  std::shared_ptr<const SurfaceMesh> before_sweep;
+  /// Set by cut_surface: a surface and the blades that cut it into this one. A piece a
+  /// finite blade notched has its two caps on one another, which corefinement cannot cut:
+  /// a later blade that meets it cuts that surface again, with those blades and its own.
+  std::shared_ptr<const SurfaceCutRecord> cut_record;
+};
+
+struct SurfaceCutRecord {
+  SurfaceMesh before;
+  std::vector<CuttingPlane> blades;
 };
 
 /// Where each vertex is embedded in a method's basis: its position plus its offset.

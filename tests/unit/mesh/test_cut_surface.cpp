@@ -246,11 +246,12 @@ TEST(CutSurface, APolygonOverTheWholeSectionSeparatesLikeThePlane) {
 
 TEST(CutSurface, EachCutOfASweepOpensTheNotchFurtherUntilItSeparates) {
   // A notch into the box at x = 0.5, z < 0.2, swept up by 0.6 in three more cuts: each
-  // covers z < 0.4, 0.6, 0.8, then z < 0.8 and its translate … the blades a sweep's events
-  // hold (swept_blade). Cut one after the other, the second found the notched box
-  // intersecting itself (its caps on one another) and left it whole; each cut now opens
-  // the notch further: one closed piece of the box's volume whose caps cover 2 × the
-  // notch's section, until the last, which covers the whole section, separates it.
+  // covers z < 0.5, 0.8, then z < 1.1 — the blades a sweep's events hold (swept_blade).
+  // Cut one after the other, the second found the notched box intersecting itself (its
+  // caps on one another) and left it whole; each cut now opens the notch further (the box
+  // before the sweep cut again by its blade alone, the earlier ones left out since it
+  // covers them): one closed piece of the box's volume whose caps cover 2 × the notch's
+  // section, until the last, which covers the whole section, separates it.
   const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
   const CuttingPlane start = square_blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX(), -1, 2, -1, 0.2);
   SurfaceMesh surface = box;
@@ -260,7 +261,7 @@ TEST(CutSurface, EachCutOfASweepOpensTheNotchFurtherUntilItSeparates) {
     blade.sweep = "/events/0";
     const SurfaceCut result = cut_surface(surface, blade);
     EXPECT_EQ(result.facts["pieces_left_whole"], 0);
-    EXPECT_EQ(result.facts["from_before_sweep"], cut > 0);
+    EXPECT_EQ(result.facts.contains("blades_cut_again"), cut == 1 || cut == 2);
     EXPECT_EQ(result.surface.vertices.topRows(8), box.vertices);
     const double top = std::min(1.0, 0.2 + 0.3 * cut);
     EXPECT_NEAR(area_in_plane(result.surface, 0.5), 2 * top, 1e-14);
@@ -273,18 +274,46 @@ TEST(CutSurface, EachCutOfASweepOpensTheNotchFurtherUntilItSeparates) {
     }
     surface = result.surface;
   }
-  // Without the sweep's surface from before it, the second cut cannot open the notch.
-  CuttingPlane first = start, second = swept_blade(start, Eigen::Vector3d(0, 0, 0.3));
-  const SurfaceCut notched = cut_surface(box, first);
-  EXPECT_EQ(cut_surface(notched.surface, second).facts["pieces_left_whole"], 1);
-  // A blade of no sweep that changes the surface ends the sweep's: the next cut of the
-  // sweep cuts the surface it is given.
-  first.sweep = second.sweep = "/events/0";
-  const SurfaceCut swept = cut_surface(box, first);
+  // Not of one sweep, the two overlapping blades meet: the notched box stays whole.
+  const CuttingPlane first = start, second = swept_blade(start, Eigen::Vector3d(0, 0, 0.3));
+  EXPECT_EQ(cut_surface(cut_surface(box, first).surface, second).facts["pieces_left_whole"], 1);
+}
+
+TEST(CutSurface, ASecondNotchOrAPlaneAcrossTheNotchCutsANotchedBox) {
+  // A notch from the face z = 0 up to z = 0.5 at x = 0.3 leaves the box with its caps on
+  // one another, which corefinement cannot cut and no plane's section closes: a second
+  // notch (tilted, about x = 0.7), or a plane across the notch (z = 0.25), left it whole.
+  // Now the box before the notch is cut again, with the notch's blade and the new one.
+  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut notched =
+      cut_surface(box, square_blade(Eigen::Vector3d(0.3, 0, 0), Eigen::Vector3d::UnitX(), -1, 2, -1, 0.5));
+  // Both notches open: one closed piece of the box's volume, the caps over the first
+  // notch's section on both sides.
+  const SurfaceCut second = cut_surface(
+      notched.surface, square_blade(Eigen::Vector3d(0.7, 0, 0), Eigen::Vector3d(1, 0.1, 0.2), -1, 2, -1, 0.5));
+  EXPECT_EQ(second.facts["pieces_left_whole"], 0);
+  EXPECT_EQ(second.facts["blades_cut_again"], 1);
+  EXPECT_EQ(second.surface.vertices.topRows(8), box.vertices);
+  ASSERT_EQ(pieces_of(second.surface).size(), 1u);
+  EXPECT_TRUE(closed_and_oriented(second.surface));
+  EXPECT_NEAR(surface_volume(second.surface), 1.0, 1e-15);
+  EXPECT_NEAR(area_in_plane(second.surface, 0.3), 2 * 0.5, 1e-14);
+  // The plane separates the slab below it, which the notch then cuts through, from the
+  // notched rest: three closed pieces, their volumes the box's parts.
   const SurfaceCut across =
-      cut_surface(swept.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.9), Eigen::Vector3d::UnitZ()));
-  EXPECT_EQ(across.surface.before_sweep, nullptr);
-  EXPECT_EQ(cut_surface(across.surface, second).facts["from_before_sweep"], false);
+      cut_surface(notched.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.25), Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(across.facts["pieces_left_whole"], 0);
+  const std::vector<SurfaceMesh> pieces = pieces_of(across.surface);
+  ASSERT_EQ(pieces.size(), 3u);
+  std::vector<double> volumes;
+  for (const SurfaceMesh& piece : pieces) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    volumes.push_back(surface_volume(piece));
+  }
+  std::sort(volumes.begin(), volumes.end());
+  EXPECT_NEAR(volumes[0], 0.3 * 0.25, 1e-15);
+  EXPECT_NEAR(volumes[1], 0.7 * 0.25, 1e-15);
+  EXPECT_NEAR(volumes[2], 0.75, 1e-15);
 }
 
 TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {

@@ -21,7 +21,8 @@
 //   - A finite blade notching the bar from below (the side in tension) half-way up, along
 //     cell faces or through cells, makes it sag more than the whole bar and less than the
 //     bar cut through, and conserves the volume; swept up through the bar it ends as the
-//     two cantilevers, each of its cuts opening the surface further.
+//     two cantilevers, each of its cuts opening the surface further; a second notch
+//     softens it further and opens the surface too.
 //   - dg and harmonic merge a piece of 10⁻⁹ of its cell, so PCG converges where it does
 //     not without.
 #include <gtest/gtest.h>
@@ -151,6 +152,28 @@ TEST_P(Cut, APartialNotchSoftensTheBarButDoesNotSeparateIt) {
     EXPECT_GT(notched.energy, whole.energy);
     EXPECT_LT(notched.energy, cut.energy);
   }
+}
+
+// A second notch (at x = 0.7, the first at 0.3, both from below half-way up) softens the
+// bar further, and opens the surface too: the bar before the first notch cut again with
+// both blades (solve_static checks that no piece is left whole).
+TEST_P(Cut, ASecondNotchSoftensTheBarFurtherAndOpensTheSurface) {
+  const std::string method = GetParam();
+  const std::string resolution = method == "harmonic" ? "discretization/harmonic/convert/resolution=[10,2,2]"
+                                                      : "discretization/" + method + "/resolution=[10,2,2]";
+  const auto notch = [](const std::string& x) {
+    return "{\"time\": 0, \"cut\": {\"polygon\": [[" + x + ", -1, -1], [" + x + ", 1, -1], [" + x + ", 1, 0.05], [" +
+           x + ", -1, 0.05]]}}";
+  };
+  const auto solve = [&](const std::string& events) {
+    return solve_static(scenes / "bar_held_at_both_ends.json", method,
+                        {parse_scene_override(resolution), parse_scene_override("events=" + events)});
+  };
+  const StaticAnswer one = solve("[" + notch("0.3") + "]");
+  const StaticAnswer two = solve("[" + notch("0.3") + ", " + notch("0.7") + "]");
+  ASSERT_LT(one.vertical_mass, 0.0);
+  EXPECT_LT(two.vertical_mass, 1.001 * one.vertical_mass);
+  EXPECT_GT(two.energy, 1.001 * one.energy);
 }
 
 TEST_P(Cut, ThroughCellsItSplitsTheCrossedOnesAndConservesVolumeAndMass) {
