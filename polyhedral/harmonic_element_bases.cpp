@@ -13,7 +13,9 @@
 #include "shared/common/error.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/fem/tabulate_lagrange.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/quadrature/reference_rules.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::harmonic {
 
@@ -68,14 +70,20 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
     fitted_shapes.emplace(shapes[cell].hash, cell);
     to_fit.push_back(cell);
   }
+  // Over several ranks each fits every count()-th of them and the fits are gathered, so
+  // the fitting, most of the set-up, is divided while every rank holds every basis (the
+  // mesh is replicated: docs/scaling.md).
+  std::vector<int> fit_here;
+  for (size_t k = static_cast<size_t>(ranks::index()); k < to_fit.size(); k += static_cast<size_t>(ranks::count()))
+    fit_here.push_back(to_fit[k]);
   // Each face's coordinates once, shared by its two cells; then the cells.
-  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, to_fit, options);
+  const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, fit_here, options);
   // A cell whose basis fails is recorded and its basis left empty.
   std::atomic<int> failed_cell{cells};
-  const auto count = static_cast<int>(to_fit.size());
+  const auto count = static_cast<int>(fit_here.size());
 #pragma omp parallel for schedule(dynamic, 4)
   for (int k = 0; k < count; ++k) {
-    const int cell = to_fit[k];
+    const int cell = fit_here[k];
     Cell& entry = cells_[cell];
     try {
       entry.mfs.emplace(cell_harmonic_basis(mesh, cell, faces, options));
@@ -84,9 +92,14 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
     }
     record_first(failed_cell, cell);
   }
+  if (ranks::distributed()) {
+    const std::vector<double> failed = ranks::gather(static_cast<double>(failed_cell.load()));
+    failed_cell = static_cast<int>(*std::min_element(failed.begin(), failed.end()));
+  }
   if (failed_cell < cells)
     throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
                          ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
+  if (ranks::distributed()) gather_fits(fit_here);
   for (int cell : mfs_cells) {
     const int source = fitted_for[cell];
     if (source < 0) continue;
@@ -95,6 +108,24 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   }
   if (remember)
     for (int cell : to_fit) remember->add(shapes[cell], *cells_[cell].mfs);
+}
+
+void HarmonicElementBases::gather_fits(const std::vector<int>& fit_here) {
+  static constexpr std::string_view magic = "altfem harmonic fits 1";
+  BinaryWriter mine(magic);
+  for (const int cell : fit_here) {
+    mine.put<std::int32_t>(cell);
+    cells_[cell].mfs->write(mine);
+  }
+  const std::vector<std::string> all = ranks::gather(mine.bytes());
+  for (int rank = 0; rank < ranks::count(); ++rank) {
+    if (rank == ranks::index()) continue;
+    BinaryReader theirs(all[static_cast<size_t>(rank)], magic);
+    while (const std::optional<std::int32_t> cell = theirs.get<std::int32_t>()) {
+      cells_[*cell].mfs = ElementHarmonicBasis::read(theirs);
+      if (!cells_[*cell].mfs) throw std::logic_error("HarmonicElementBases: a rank's fits did not read back");
+    }
+  }
 }
 
 double HarmonicElementBases::max_boundary_residual() const {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "shared/common/error.hpp"
@@ -110,6 +112,25 @@ std::vector<double> gather(double value) {
   return values;
 }
 
+std::vector<std::string> gather(const std::string& bytes) {
+  if (!distributed()) return {bytes};
+  const std::vector<double> sizes = gather(static_cast<double>(bytes.size()));
+  std::vector<int> counts(sizes.size()), offsets(sizes.size(), 0);
+  long long total = 0;
+  for (size_t rank = 0; rank < sizes.size(); ++rank) {
+    offsets[rank] = static_cast<int>(total);
+    counts[rank] = static_cast<int>(sizes[rank]);
+    total += counts[rank];
+  }
+  if (total > std::numeric_limits<int>::max()) throw std::length_error("ranks::gather: over 2 GiB of bytes");
+  std::string all(static_cast<size_t>(total), '\0');
+  MPI_Allgatherv(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, all.data(), counts.data(), offsets.data(),
+                 MPI_CHAR, MPI_COMM_WORLD);
+  std::vector<std::string> result;
+  for (size_t rank = 0; rank < sizes.size(); ++rank) result.push_back(all.substr(offsets[rank], counts[rank]));
+  return result;
+}
+
 void broadcast(std::span<int> values) {
   if (distributed()) MPI_Bcast(values.data(), static_cast<int>(values.size()), MPI_INT, 0, MPI_COMM_WORLD);
 }
@@ -159,6 +180,7 @@ Alone::~Alone() = default;
 void sum(std::span<double>) {}
 double sum(double value) { return value; }
 std::vector<double> gather(double value) { return {value}; }
+std::vector<std::string> gather(const std::string& bytes) { return {bytes}; }
 void broadcast(std::span<int>) {}
 void collectively_over_ranks(const std::function<void()>& body) { body(); }
 

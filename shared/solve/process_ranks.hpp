@@ -39,6 +39,9 @@ double sum(double value);
 /// Each rank's `value`, on every rank (count() entries, in rank order).
 std::vector<double> gather(double value);
 
+/// Each rank's `bytes`, on every rank (count() strings, in rank order).
+std::vector<std::string> gather(const std::string& bytes);
+
 /// Rank 0's `values` on every rank.
 void broadcast(std::span<int> values);
 
