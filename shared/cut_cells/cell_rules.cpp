@@ -3,13 +3,18 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
+#include "shared/cut_cells/cell_rule_bytes.hpp"
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/element/geometry_map.hpp"
 #include "shared/element/reference_element.hpp"
 #include "shared/io/binary_cache.hpp"
 #include "shared/quadrature/reference_rules.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem {
 namespace {
@@ -28,6 +33,50 @@ std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, co
   hasher.matrix(corners);
   for (const TetrahedronCorners& tetrahedron : candidates) hasher.matrix(tetrahedron);
   return hasher.value();
+}
+
+// Every rank's cells (each rank computed every count()-th, from its index) into every
+// rank's `rules`, with their keys and reuse marks where `keys` is not empty. A reduced rule
+// of an affine cell goes without its points, on every rank: the masses read its reduction
+// alone (fcm_discretization.cpp's kept_rules), and mass rules run to thousands of points a
+// cell (half of fcm's divided set-up went to sending them).
+void gather_cell_rules(const VolumeMesh& background, CellRules& rules, std::vector<std::uint64_t>& keys,
+                       std::vector<char>& reused) {
+  static constexpr std::string_view magic = "altfem cell rules of a rank 1";
+  const auto cells = static_cast<Eigen::Index>(rules.cells.size());
+  const bool keyed = !keys.empty();
+  const ReferenceElement& element = reference_element(background.element_type);
+  Eigen::MatrixXd nodes(background.cells.cols(), 3);
+  BinaryWriter mine(magic);
+  for (Eigen::Index c = ranks::index(); c < cells; c += ranks::count()) {
+    if (rules.cells[c].reduced) {
+      for (Eigen::Index a = 0; a < nodes.rows(); ++a) nodes.row(a) = background.nodes.row(background.cells(c, a));
+      if (affine_jacobian(element, nodes))
+        rules.cells[c].rule.points.resize(0, 3), rules.cells[c].rule.weights.resize(0);
+    }
+    mine.put<std::int64_t>(c);
+    if (keyed) {
+      mine.put<std::uint64_t>(keys[c]);
+      mine.put<std::int32_t>(reused[c]);
+    }
+    write_cell_rule(mine, rules.cells[c], true);
+  }
+  const std::vector<std::string> all = ranks::gather(mine.bytes());
+  for (int rank = 0; rank < ranks::count(); ++rank) {
+    if (rank == ranks::index()) continue;
+    BinaryReader theirs(all[static_cast<size_t>(rank)], magic);
+    while (const std::optional<std::int64_t> c = theirs.get<std::int64_t>()) {
+      if (keyed) {
+        const auto key = theirs.get<std::uint64_t>();
+        const auto was_reused = theirs.get<std::int32_t>();
+        if (!key || !was_reused) throw std::logic_error("compute_cell_rules: a rank's rules did not read back");
+        keys[*c] = *key;
+        reused[*c] = static_cast<char>(*was_reused);
+      }
+      if (!read_cell_rule(theirs, rules.cells[*c], true))
+        throw std::logic_error("compute_cell_rules: a rank's rules did not read back");
+    }
+  }
 }
 
 }  // namespace
@@ -56,6 +105,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     Eigen::MatrixXd corners(corner_count, 3);
 #pragma omp for schedule(dynamic, 4)
     for (Eigen::Index c = 0; c < cell_count; ++c) {
+      if (c % ranks::count() != ranks::index()) continue;  // another rank's (gathered below)
       try {
         for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
         const Eigen::AlignedBox3d box(corners.colwise().minCoeff().transpose(),
@@ -116,7 +166,10 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
       }
     }
   }
-  if (failure) std::rethrow_exception(failure);
+  // Over several ranks every rank throws the first failing rank's exception.
+  ranks::collectively([&] {
+    if (failure) std::rethrow_exception(failure);
+  });
   // After the rules (a remembered cell brings its reduction along): a cell at a time in
   // parallel, then each large rule by all threads (reference_products).
   if (options.reduce) {
@@ -130,6 +183,11 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     for (Eigen::Index c = 0; c < cell_count; ++c)
       if (unreduced(c)) result.cells[c].reduced = reference_products(type, result.cells[c].rule);
   }
+
+  // Over several ranks each computed (and reduced) every count()-th cell: most of the
+  // set-up of fcm, and of fem's cut elements, divided, while every rank holds every rule,
+  // as it holds the mesh (docs/scaling.md).
+  if (ranks::distributed()) gather_cell_rules(background, result, keys, reused);
 
   if (reuse) {
     // The memory's copies in parallel, then moved into it. A reduced rule of an affine cell

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "shared/cut_cells/cell_rule_bytes.hpp"
 #include "shared/io/binary_cache.hpp"
 
 namespace altfem {
@@ -13,16 +14,7 @@ constexpr char magic[] = "altfem-cell-rules-v2";  // v2: points and weights as B
 std::string serialise(const CellRules& rules) {
   BinaryWriter out(magic);
   out.put<std::int64_t>(static_cast<std::int64_t>(rules.cells.size()));
-  for (const CellRule& cell : rules.cells) {
-    out.put<std::int32_t>(static_cast<std::int32_t>(cell.kind));
-    out.put<std::int64_t>(cell.initial_points);
-    out.put<double>(cell.clipped_volume);
-    out.put<double>(cell.residual);
-    out.put<std::int32_t>(cell.simplification_failed);
-    out.put<std::int32_t>(cell.rule.strength);
-    out.matrix(cell.rule.points);
-    out.matrix(cell.rule.weights);
-  }
+  for (const CellRule& cell : rules.cells) write_cell_rule(out, cell, false);
   return out.bytes();
 }
 
@@ -32,25 +24,8 @@ std::optional<CellRules> deserialise(const std::string& text, Eigen::Index cell_
   if (!count || *count != cell_count) return std::nullopt;
   CellRules rules;
   rules.cells.resize(cell_count);
-  for (CellRule& cell : rules.cells) {
-    const auto kind = reader.get<std::int32_t>();
-    const auto initial = reader.get<std::int64_t>();
-    const auto volume = reader.get<double>(), residual = reader.get<double>();
-    const auto failed = reader.get<std::int32_t>(), strength = reader.get<std::int32_t>();
-    if (!kind || !initial || !volume || !residual || !failed || !strength || *kind < 0 || *kind > 2)
-      return std::nullopt;
-    cell.kind = static_cast<CellKind>(*kind);
-    cell.initial_points = *initial;
-    cell.clipped_volume = *volume;
-    cell.residual = *residual;
-    cell.simplification_failed = *failed != 0;
-    cell.rule.strength = *strength;
-    // An empty rule may keep 0 × 0 points.
-    if (!reader.matrix(cell.rule.points) || !reader.matrix(cell.rule.weights) ||
-        (cell.rule.points.size() > 0 && cell.rule.points.cols() != 3) ||
-        cell.rule.weights.size() != cell.rule.points.rows())
-      return std::nullopt;
-  }
+  for (CellRule& cell : rules.cells)
+    if (!read_cell_rule(reader, cell, false)) return std::nullopt;
   if (!reader.at_end()) return std::nullopt;
   return rules;
 }
