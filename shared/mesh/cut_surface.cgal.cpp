@@ -263,6 +263,8 @@ SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>&
 
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   SurfaceCut result = cut_surface_by(surface, {blade});
+  // A blade that changes nothing (one that misses the body) keeps the record as it is.
+  if (result.facts["cap_triangles"].get<int>() == 0 && result.facts["pieces_left_whole"].get<int>() == 0) return result;
   // A piece an earlier finite blade notched has its caps on one another, where
   // corefinement cannot cut and no plane's section closes: the surface before that blade
   // is cut again, with the blades since and this one (a sweep's earlier blades left out:
