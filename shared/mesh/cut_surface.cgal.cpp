@@ -70,6 +70,27 @@ bool covers_section(const SurfaceMesh& surface, const std::vector<int>& triangle
   return true;
 }
 
+// Whether the plane of `blade` has vertices of the piece made of `triangles` on both sides
+// farther than split_surface_by_plane takes a vertex on it (1e-9 of the caps' edge, a
+// 40th of the piece's diagonal). Among several blades a piece's side that an earlier cut
+// by the same plane left has only the rounding of its cut's points off the plane: that
+// blade grazes it, and is not one of its blades.
+bool clearly_separates(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade) {
+  Eigen::AlignedBox3d bounds;
+  double below = 0, above = 0;
+  const Eigen::Vector3d unit_normal = blade.normal.normalized();
+  for (const int t : triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d x = surface.vertices.row(surface.triangles(t, k));
+      bounds.extend(x);
+      const double distance = unit_normal.dot(x - blade.point);
+      below = std::min(below, distance);
+      above = std::max(above, distance);
+    }
+  const double snapped = 1e-9 * bounds.diagonal().norm() / 40;
+  return below < -snapped && above > snapped;
+}
+
 // What corefinement cannot cut: a piece whose earlier caps lie on one another (a notch) or
 // cross its sides. It stays so, since no later cut changes a piece it leaves whole.
 struct SelfIntersectingPiece : std::runtime_error {
@@ -132,8 +153,10 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
 }
 
 // `surface` cut by `blades` at once, each piece by those that cross it (a blade with
-// piece_at only the piece nearest that point). Throws NotAtOnce.
-SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingPlane>& blades) {
+// piece_at only the piece nearest that point); with `spanning_only` each piece by the first
+// that is a whole plane or spans its section alone. Throws NotAtOnce.
+SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingPlane>& blades,
+                          bool spanning_only = false) {
   std::vector<ExactBlade> exact;
   for (const CuttingPlane& blade : blades) exact.emplace_back(blade);
   const std::vector<int> piece_of = surface_vertex_pieces(surface);
@@ -160,7 +183,10 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
     std::vector<const CuttingPlane*> crossing;
     std::vector<const ExactBlade*> crossing_exact;
     for (std::size_t b = 0; b < blades.size(); ++b)
-      if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b])) {
+      if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b]) &&
+          (blades.size() == 1 || clearly_separates(surface, triangles, blades[b])) &&
+          (!spanning_only ||
+           (crossing.empty() && (blades[b].polygon.empty() || covers_section(surface, triangles, exact[b]))))) {
         crossing.push_back(&blades[b]);
         crossing_exact.push_back(&exact[b]);
       }
@@ -234,8 +260,9 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
 }
 
 // `before` cut again by `blades`: the whole planes one after the other, then the polygons
-// at once (the pieces the same, cuts being sets: the planes first, since a notch leaves
-// a slit no plane's section can close). Throws NotAtOnce.
+// that span a piece's section, a piece at a time, then the others at once (the pieces the
+// same, cuts being sets: what splits a piece as a plane does first, since a notch leaves a
+// slit no plane's section can close). Throws NotAtOnce.
 SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>& blades) {
   SurfaceCut result{before, {}};
   int cap_triangles = 0;
@@ -248,6 +275,13 @@ SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>&
     result = cut_surface_by(result.surface, {blade});
     if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
     cap_triangles += result.facts["cap_triangles"].get<int>();
+  }
+  for (std::size_t pass = 0; pass < polygons.size(); ++pass) {
+    SurfaceCut spanned = cut_surface_by(result.surface, polygons, true);
+    if (spanned.facts["pieces_left_whole"].get<int>() > 0) return spanned;
+    if (spanned.facts["cap_triangles"].get<int>() == 0) break;
+    cap_triangles += spanned.facts["cap_triangles"].get<int>();
+    result = std::move(spanned);
   }
   if (!polygons.empty()) {
     result = cut_surface_by(result.surface, polygons);

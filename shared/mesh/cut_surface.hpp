@@ -35,13 +35,13 @@ struct SurfaceCut {
 /// as it is. Where it must leave a piece whole that an earlier finite blade notched (its
 /// caps lie on one another), the surface from before that blade
 /// (SurfaceMesh::cut_record) is cut again with the blades since and this one: the whole
-/// planes one after the other, then the polygons at once, each piece by one corefinement
-/// with all those that cross it — a sweep's earlier blades left out, since its later ones
-/// cover them. So a second notch, a plane across a notch, and each cut of a sweep open
-/// the surface. The output then keeps that surface's vertices at their indices and
-/// appends what its cut adds (what the cuts since added is gone). Not so where two
-/// polygons that cross a piece meet one another, or one of them spans its whole section
-/// (a plane across two notches): the piece stays whole, counted.
+/// planes one after the other, then the polygons that span a piece's section, then the
+/// others at once, each piece by one corefinement with all those that cross it — a
+/// sweep's earlier blades left out, since its later ones cover them. So a second notch, a
+/// plane across notches, and each cut of a sweep open the surface. The output then keeps
+/// that surface's vertices at their indices and appends what its cut adds (what the cuts
+/// since added is gone). Not so where two polygons that cross a piece meet one another:
+/// the piece stays whole, counted.
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

@@ -302,7 +302,8 @@ TEST(CutSurface, ASecondNotchOrAPlaneAcrossTheNotchCutsANotchedBox) {
   EXPECT_NEAR(surface_volume(second.surface), 1.0, 1e-15);
   EXPECT_NEAR(area_in_plane(second.surface, 0.3), 2 * 0.5, 1e-14);
   // The plane separates the slab below it, which the notch then cuts through, from the
-  // notched rest: three closed pieces, their volumes the box's parts.
+  // notched rest: three closed pieces, their volumes the box's parts. (The plane first,
+  // then the polygon that spans the slab's section, then those that notch.)
   const SurfaceCut across =
       cut_surface(notched.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.25), Eigen::Vector3d::UnitZ()));
   EXPECT_EQ(across.facts["pieces_left_whole"], 0);
@@ -317,6 +318,12 @@ TEST(CutSurface, ASecondNotchOrAPlaneAcrossTheNotchCutsANotchedBox) {
   EXPECT_NEAR(volumes[0], 0.3 * 0.25, 1e-15);
   EXPECT_NEAR(volumes[1], 0.7 * 0.25, 1e-15);
   EXPECT_NEAR(volumes[2], 0.75, 1e-15);
+  // Across both notches: the slab below falls into three, each closed.
+  const SurfaceCut across_both =
+      cut_surface(second.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.25), Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(across_both.facts["pieces_left_whole"], 0);
+  EXPECT_EQ(across_both.facts["blades_cut_again"], 2);
+  EXPECT_NEAR(volume_of_closed_pieces(across_both.surface, 4), 1.0, 1e-15);
 }
 
 TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {
