@@ -40,8 +40,8 @@ struct SurfaceCut {
 /// sweep's earlier blades left out, since its later ones cover them. So a second notch, a
 /// plane across notches, and each cut of a sweep open the surface. The output then keeps
 /// that surface's vertices at their indices and appends what its cut adds (what the cuts
-/// since added is gone). Not so where two polygons that cross a piece meet one another:
-/// the piece stays whole, counted.
+/// since added is gone). Not so where two polygons that cross a piece meet one another,
+/// even beyond it: the piece stays whole, counted.
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

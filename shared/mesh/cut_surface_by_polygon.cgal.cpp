@@ -89,8 +89,8 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
     caps.push_back(blade_triangles(*blade));
     CGAL::copy_face_graph(caps.back(), splitter);
   }
-  // Blades that meet inside the body would make the splitter intersect itself, which
-  // corefinement does not take.
+  // Blades that meet one another (inside the body or beyond it) would make the splitter
+  // intersect itself, which corefinement does not take.
   if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
   const Mesh clipper = piece;
   PMP::split(piece, splitter);
@@ -143,15 +143,16 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
   // blade stops there, and inside the cap (its remeshing's) one per side, so that the two
   // caps part.
   std::map<std::pair<PointKey, int>, int> inside;
-  // The cap's point of a curve is the piece's, but for rounding: the two are one exact
-  // intersection, and corefinement constructs it from the piece's edge cut by the other
-  // blades first where several cross it (one unit in the last place apart, seen).
+  // The cap's point of a curve is the piece's, but for rounding: both are one exact
+  // intersection, which corefinement constructs from other operands for the cap (the
+  // blade's triangle against the piece) than for the piece (its edge, perhaps cut by
+  // another blade first) — a unit in the last place apart, seen with a tilted blade.
   const double same_point = 1e-12 * 40 * edge_length;  // of the piece's diagonal
   const auto copies_of = [&](const Point& p) {
-    auto found = copies_at.find(key_of(p));
-    if (found != copies_at.end() || blades.size() == 1) return found;
+    const auto found = copies_at.find(key_of(p));
+    if (found != copies_at.end()) return found;
     for (auto curve = copies_at.begin(); curve != copies_at.end(); ++curve)
-      if (curve->second.size() > 1 &&
+      if ((curve->second.size() > 1 || curve->second.front().first >= out.input_count) &&  // the cut's points
           (Eigen::Vector3d(curve->first[0], curve->first[1], curve->first[2]) - vector_of(p)).norm() <= same_point)
         return curve;
     return copies_at.end();

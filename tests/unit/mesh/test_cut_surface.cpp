@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <map>
+#include <random>
 
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/mesh_components.hpp"
@@ -324,6 +325,43 @@ TEST(CutSurface, ASecondNotchOrAPlaneAcrossTheNotchCutsANotchedBox) {
   EXPECT_EQ(across_both.facts["pieces_left_whole"], 0);
   EXPECT_EQ(across_both.facts["blades_cut_again"], 2);
   EXPECT_NEAR(volume_of_closed_pieces(across_both.surface, 4), 1.0, 1e-15);
+}
+
+TEST(CutSurface, SeededNotchesAndPlanesOneAfterAnotherKeepEveryPieceClosedAndTheVolume) {
+  // 60 boxes, each cut four times: tilted notches from the face z = 0 of random depths
+  // (a quarter through the whole section) and planes across, at random. Whatever each cut
+  // opens or leaves whole (notches that meet one another), every piece stays closed and
+  // the pieces' volumes sum to the box's. A tilted notch's caps once met the piece's cut
+  // curve a unit in the last place off, and neither side closed (8 of these sequences).
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  int cuts = 0, left_whole = 0, cut_again = 0;
+  for (int box = 0; box < 60; ++box) {
+    SurfaceMesh surface = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+    for (int cut = 0; cut < 4; ++cut) {
+      const Eigen::Vector3d normal(1, 0.3 * (unit(random) - 0.5), 0.3 * (unit(random) - 0.5));
+      const double x = 0.1 + 0.8 * unit(random);
+      const double depth = unit(random) < 0.25 ? 2.0 : 0.2 + 0.6 * unit(random);
+      const bool plane = unit(random) < 0.2;
+      const double z = 0.1 + 0.8 * unit(random), tilt_x = 0.1 * unit(random), tilt_y = 0.1 * unit(random);
+      const CuttingPlane blade = plane ? CuttingPlane(Eigen::Vector3d(0, 0, z), Eigen::Vector3d(tilt_x, tilt_y, 1))
+                                       : square_blade(Eigen::Vector3d(x, 0, 0), normal, -1, 2, -1, depth);
+      const SurfaceCut result = cut_surface(surface, blade);
+      SCOPED_TRACE(::testing::Message() << "box " << box << ", cut " << cut << ": " << result.facts);
+      double volume = 0;
+      for (const SurfaceMesh& piece : pieces_of(result.surface)) {
+        ASSERT_TRUE(closed_and_oriented(piece));
+        volume += surface_volume(piece);
+      }
+      ASSERT_NEAR(volume, 1.0, 1e-13);
+      left_whole += result.facts["pieces_left_whole"].get<int>();
+      cut_again += result.facts.contains("blades_cut_again");
+      surface = result.surface;
+      ++cuts;
+    }
+  }
+  std::cout << cuts << " cuts, " << cut_again << " from before earlier notches, " << left_whole
+            << " pieces left whole\n";
 }
 
 TEST(CutSurface, ThePencilsFiftyCutsEachOpenASoundPieceAndKeepItsSurfaceBounded) {
