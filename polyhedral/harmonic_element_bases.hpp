@@ -24,7 +24,8 @@ public:
   /// is not finite. An MFS cell whose shape `previous` holds (an event's rebuild) takes
   /// that fit, moved, instead of a fit of its own (harmonic_basis_memory.hpp), and a cell
   /// alike to one fitted before it in this build takes that fit, moved; `remember`
-  /// receives the shapes fitted, for the next rebuild.
+  /// receives the shapes fitted, for the next rebuild. Over several ranks every rank builds
+  /// it alike: each fits every count()-th cell to fit and the fits are gathered.
   HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicBasisKind kind, const MfsOptions& options,
                        const HarmonicBasisMemory* previous = nullptr, HarmonicBasisMemory* remember = nullptr);
 

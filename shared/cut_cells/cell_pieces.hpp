@@ -56,6 +56,9 @@ struct CellPieces {
 /// `contacts` (optional) lists which cells touch across which faces, for a background that
 /// is not conforming (a refined grid's: forest_face_contacts); by default faces are matched
 /// by their corner nodes.
+///
+/// Over several ranks every rank calls it alike: each clips every count()-th cell and the
+/// fragments are gathered (docs/scaling.md).
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
                             const std::vector<CellFaceContact>* contacts = nullptr);
 

@@ -86,6 +86,8 @@ struct CellRuleReuse {
 /// volume equals its own volume to filled_cell_tolerance relative. With `cell_tetrahedra` (one list per
 /// cell), cell c clips exactly the embedded tetrahedra listed for it — a piece of a
 /// background cell (piece_mesh.hpp) — instead of those the bucket grid finds near it.
+/// Over several ranks every rank calls it alike: each computes every count()-th cell and
+/// the rules are gathered (docs/scaling.md).
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
                              const std::vector<std::vector<int>>* cell_tetrahedra = nullptr,
                              CellRuleReuse* reuse = nullptr);
