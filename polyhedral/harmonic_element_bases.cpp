@@ -15,7 +15,7 @@
 #include "shared/fem/tabulate_lagrange.hpp"
 #include "shared/io/binary_cache.hpp"
 #include "shared/quadrature/reference_rules.hpp"
-#include "shared/solve/process_ranks.hpp"
+#include "shared/solve/rank_exchange.hpp"
 
 namespace altfem::harmonic {
 
@@ -74,8 +74,8 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   // the fitting, most of the set-up, is divided while every rank holds every basis (the
   // mesh is replicated: docs/scaling.md).
   std::vector<int> fit_here;
-  for (size_t k = static_cast<size_t>(ranks::index()); k < to_fit.size(); k += static_cast<size_t>(ranks::count()))
-    fit_here.push_back(to_fit[k]);
+  for (size_t k = 0; k < to_fit.size(); ++k)
+    if (ranks::computes_item(k)) fit_here.push_back(to_fit[k]);
   // Each face's coordinates once, shared by its two cells; then the cells.
   const std::vector<std::optional<FaceHarmonicCoordinates>> faces = mesh_face_coordinates(mesh, fit_here, options);
   // A cell whose basis fails is recorded and its basis left empty.
@@ -99,7 +99,9 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   if (failed_cell < cells)
     throw NumericalError("harmonic basis of cell " + std::to_string(failed_cell.load()) +
                          ": the MFS least-squares fit failed or is not finite (degenerate polyhedron?)");
-  if (ranks::distributed()) gather_fits(fit_here);
+  ranks::exchange_items(
+      to_fit.size(), "altfem harmonic fits 1", [&](BinaryWriter& out, size_t k) { cells_[to_fit[k]].mfs->write(out); },
+      [&](BinaryReader& in, size_t k) { return (cells_[to_fit[k]].mfs = ElementHarmonicBasis::read(in)).has_value(); });
   for (int cell : mfs_cells) {
     const int source = fitted_for[cell];
     if (source < 0) continue;
@@ -108,24 +110,6 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   }
   if (remember)
     for (int cell : to_fit) remember->add(shapes[cell], *cells_[cell].mfs);
-}
-
-void HarmonicElementBases::gather_fits(const std::vector<int>& fit_here) {
-  static constexpr std::string_view magic = "altfem harmonic fits 1";
-  BinaryWriter mine(magic);
-  for (const int cell : fit_here) {
-    mine.put<std::int32_t>(cell);
-    cells_[cell].mfs->write(mine);
-  }
-  const std::vector<std::string> all = ranks::gather(mine.bytes());
-  for (int rank = 0; rank < ranks::count(); ++rank) {
-    if (rank == ranks::index()) continue;
-    BinaryReader theirs(all[static_cast<size_t>(rank)], magic);
-    while (const std::optional<std::int32_t> cell = theirs.get<std::int32_t>()) {
-      cells_[*cell].mfs = ElementHarmonicBasis::read(theirs);
-      if (!cells_[*cell].mfs) throw std::logic_error("HarmonicElementBases: a rank's fits did not read back");
-    }
-  }
 }
 
 double HarmonicElementBases::max_boundary_residual() const {

@@ -74,8 +74,6 @@ private:
     std::optional<ElementHarmonicBasis> mfs;
   };
   HarmonicElementBases(const PolyhedralMesh& mesh, std::vector<Cell> cells) : mesh_(mesh), cells_(std::move(cells)) {}
-  /// Every rank's fits (each rank fitted `fit_here`) into every rank's cells.
-  void gather_fits(const std::vector<int>& fit_here);
 
   const PolyhedralMesh& mesh_;
   std::vector<Cell> cells_;

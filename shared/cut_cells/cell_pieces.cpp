@@ -4,17 +4,14 @@
 #include <array>
 #include <exception>
 #include <map>
-#include <optional>
-#include <stdexcept>
-#include <string>
+#include <type_traits>
 
 #include "shared/cut_cells/cell_rules.hpp"
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/element/element_faces.hpp"
-#include "shared/io/binary_cache.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
-#include "shared/solve/process_ranks.hpp"
+#include "shared/solve/rank_exchange.hpp"
 
 namespace altfem {
 
@@ -231,53 +228,44 @@ int CellPieces::piece_count() const {
 // Every rank's cells (each rank found the fragments of every count()-th, from its index)
 // into every rank's `cells`.
 void gather_cell_fragments(std::vector<CellFragments>& cells) {
-  static constexpr std::string_view magic = "altfem cell fragments of a rank 1";
-  BinaryWriter mine(magic);
-  for (std::size_t cell = static_cast<std::size_t>(ranks::index()); cell < cells.size();
-       cell += static_cast<std::size_t>(ranks::count())) {
+  const auto write = [&](BinaryWriter& out, std::size_t cell) {
     const CellFragments& here = cells[cell];
-    mine.put<std::int64_t>(static_cast<std::int64_t>(cell));
-    mine.put<std::int64_t>(static_cast<std::int64_t>(here.fragments.size()));
+    out.put<std::int64_t>(static_cast<std::int64_t>(here.fragments.size()));
     for (std::size_t i = 0; i < here.fragments.size(); ++i) {
       const Fragment& fragment = here.fragments[i];
-      mine.put<std::int32_t>(fragment.tetrahedron);
-      mine.put<std::int32_t>(here.piece[i]);
-      for (const double area : fragment.cell_face_area) mine.put<double>(area);
-      for (const double area : fragment.tetrahedron_face_area) mine.put<double>(area);
+      out.put<std::int32_t>(fragment.tetrahedron);
+      out.put<std::int32_t>(here.piece[i]);
+      for (const double area : fragment.cell_face_area) out.put<double>(area);
+      for (const double area : fragment.tetrahedron_face_area) out.put<double>(area);
     }
-    mine.put<double>(here.distance_threshold);
-    mine.put<std::int32_t>(here.filled);
-  }
-  const std::vector<std::string> all = ranks::gather(mine.bytes());
-  const auto fail = [] { throw std::logic_error("find_cell_pieces: a rank's fragments did not read back"); };
-  for (int rank = 0; rank < ranks::count(); ++rank) {
-    if (rank == ranks::index()) continue;
-    BinaryReader theirs(all[static_cast<std::size_t>(rank)], magic);
-    while (const std::optional<std::int64_t> cell = theirs.get<std::int64_t>()) {
-      const std::optional<std::int64_t> count = theirs.get<std::int64_t>();
-      if (!count || *cell < 0 || *cell >= static_cast<std::int64_t>(cells.size())) fail();
-      CellFragments& there = cells[static_cast<std::size_t>(*cell)];
-      there.fragments.resize(static_cast<std::size_t>(*count));
-      there.piece.resize(static_cast<std::size_t>(*count));
-      for (std::size_t i = 0; i < there.fragments.size(); ++i) {
-        const auto tetrahedron = theirs.get<std::int32_t>(), piece = theirs.get<std::int32_t>();
-        if (!tetrahedron || !piece) fail();
-        there.fragments[i].tetrahedron = *tetrahedron;
-        there.piece[i] = *piece;
-        for (double& area : there.fragments[i].cell_face_area)
-          if (const auto value = theirs.get<double>()) area = *value;
-          else fail();
-        for (double& area : there.fragments[i].tetrahedron_face_area)
-          if (const auto value = theirs.get<double>()) area = *value;
-          else fail();
-      }
-      const auto threshold = theirs.get<double>();
-      const auto filled = theirs.get<std::int32_t>();
-      if (!threshold || !filled) fail();
-      there.distance_threshold = *threshold;
-      there.filled = *filled != 0;
+    out.put<double>(here.distance_threshold);
+    out.put<std::int32_t>(here.filled);
+  };
+  const auto read = [&](BinaryReader& in, std::size_t cell) {
+    const auto read_into = [&in](auto& value) {
+      const auto read = in.get<std::remove_reference_t<decltype(value)>>();
+      if (read) value = *read;
+      return read.has_value();
+    };
+    CellFragments& there = cells[cell];
+    std::int64_t count = 0;
+    if (!read_into(count) || count < 0) return false;
+    there.fragments.resize(static_cast<std::size_t>(count));
+    there.piece.resize(static_cast<std::size_t>(count));
+    for (std::size_t i = 0; i < there.fragments.size(); ++i) {
+      Fragment& fragment = there.fragments[i];
+      if (!read_into(fragment.tetrahedron) || !read_into(there.piece[i])) return false;
+      for (double& area : fragment.cell_face_area)
+        if (!read_into(area)) return false;
+      for (double& area : fragment.tetrahedron_face_area)
+        if (!read_into(area)) return false;
     }
-  }
+    std::int32_t filled = 0;
+    if (!read_into(there.distance_threshold) || !read_into(filled)) return false;
+    there.filled = filled != 0;
+    return true;
+  };
+  ranks::exchange_items(cells.size(), "altfem cell fragments of a rank 1", write, read);
 }
 
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
@@ -296,7 +284,7 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
     std::vector<int> candidates;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cell_count; ++cell) {
-      if (cell % ranks::count() != ranks::index()) continue;  // another rank's (gathered below)
+      if (!ranks::computes_item(static_cast<std::size_t>(cell))) continue;  // another rank's (gathered below)
       try {
         cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates);
       } catch (...) {
@@ -310,7 +298,7 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
   ranks::collectively([&] {
     if (failure) std::rethrow_exception(failure);
   });
-  if (ranks::distributed()) gather_cell_fragments(cells);
+  gather_cell_fragments(cells);
 
   CellPieces result;
   result.tetrahedra.resize(cell_count);

@@ -14,7 +14,7 @@
 #include "shared/element/reference_element.hpp"
 #include "shared/io/binary_cache.hpp"
 #include "shared/quadrature/reference_rules.hpp"
-#include "shared/solve/process_ranks.hpp"
+#include "shared/solve/rank_exchange.hpp"
 
 namespace altfem {
 namespace {
@@ -42,41 +42,33 @@ std::uint64_t cell_rule_key(const CellRuleOptions& options, ElementType type, co
 // cell (half of fcm's divided set-up went to sending them).
 void gather_cell_rules(const VolumeMesh& background, CellRules& rules, std::vector<std::uint64_t>& keys,
                        std::vector<char>& reused) {
-  static constexpr std::string_view magic = "altfem cell rules of a rank 1";
-  const auto cells = static_cast<Eigen::Index>(rules.cells.size());
   const bool keyed = !keys.empty();
   const ReferenceElement& element = reference_element(background.element_type);
   Eigen::MatrixXd nodes(background.cells.cols(), 3);
-  BinaryWriter mine(magic);
-  for (Eigen::Index c = ranks::index(); c < cells; c += ranks::count()) {
-    if (rules.cells[c].reduced) {
-      for (Eigen::Index a = 0; a < nodes.rows(); ++a) nodes.row(a) = background.nodes.row(background.cells(c, a));
-      if (affine_jacobian(element, nodes))
-        rules.cells[c].rule.points.resize(0, 3), rules.cells[c].rule.weights.resize(0);
+  const auto write = [&](BinaryWriter& out, std::size_t c) {
+    CellRule& cell = rules.cells[c];
+    if (cell.reduced) {
+      for (Eigen::Index a = 0; a < nodes.rows(); ++a)
+        nodes.row(a) = background.nodes.row(background.cells(static_cast<Eigen::Index>(c), a));
+      if (affine_jacobian(element, nodes)) cell.rule.points.resize(0, 3), cell.rule.weights.resize(0);
     }
-    mine.put<std::int64_t>(c);
     if (keyed) {
-      mine.put<std::uint64_t>(keys[c]);
-      mine.put<std::int32_t>(reused[c]);
+      out.put<std::uint64_t>(keys[c]);
+      out.put<std::int32_t>(reused[c]);
     }
-    write_cell_rule(mine, rules.cells[c], true);
-  }
-  const std::vector<std::string> all = ranks::gather(mine.bytes());
-  for (int rank = 0; rank < ranks::count(); ++rank) {
-    if (rank == ranks::index()) continue;
-    BinaryReader theirs(all[static_cast<size_t>(rank)], magic);
-    while (const std::optional<std::int64_t> c = theirs.get<std::int64_t>()) {
-      if (keyed) {
-        const auto key = theirs.get<std::uint64_t>();
-        const auto was_reused = theirs.get<std::int32_t>();
-        if (!key || !was_reused) throw std::logic_error("compute_cell_rules: a rank's rules did not read back");
-        keys[*c] = *key;
-        reused[*c] = static_cast<char>(*was_reused);
-      }
-      if (!read_cell_rule(theirs, rules.cells[*c], true))
-        throw std::logic_error("compute_cell_rules: a rank's rules did not read back");
+    write_cell_rule(out, cell, true);
+  };
+  const auto read = [&](BinaryReader& in, std::size_t c) {
+    if (keyed) {
+      const auto key = in.get<std::uint64_t>();
+      const auto was_reused = in.get<std::int32_t>();
+      if (!key || !was_reused) return false;
+      keys[c] = *key;
+      reused[c] = static_cast<char>(*was_reused);
     }
-  }
+    return read_cell_rule(in, rules.cells[c], true);
+  };
+  ranks::exchange_items(rules.cells.size(), "altfem cell rules of a rank 1", write, read);
 }
 
 }  // namespace
@@ -105,7 +97,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     Eigen::MatrixXd corners(corner_count, 3);
 #pragma omp for schedule(dynamic, 4)
     for (Eigen::Index c = 0; c < cell_count; ++c) {
-      if (c % ranks::count() != ranks::index()) continue;  // another rank's (gathered below)
+      if (!ranks::computes_item(static_cast<std::size_t>(c))) continue;  // another rank's (gathered below)
       try {
         for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
         const Eigen::AlignedBox3d box(corners.colwise().minCoeff().transpose(),

@@ -92,15 +92,14 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
   // Blades that meet one another (inside the body or beyond it) would make the splitter
   // intersect itself, which corefinement does not take.
   if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
-  const Mesh clipper = piece;
+  Mesh clipper = piece;  // the body before the split, for the caps (clip leaves it as it is)
   PMP::split(piece, splitter);
   piece.collect_garbage();
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
   renumber_by_position(piece);
   for (Mesh& cap : caps) {
-    Mesh body = clipper;
-    PMP::clip(cap, body, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
+    PMP::clip(cap, clipper, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
     cap.collect_garbage();
     PMP::triangulate_faces(cap);
     renumber_by_position(cap);
@@ -148,9 +147,9 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
   // blade's triangle against the piece) than for the piece (its edge, perhaps cut by
   // another blade first) — a unit in the last place apart, seen with a tilted blade.
   const double same_point = 1e-12 * 40 * edge_length;  // of the piece's diagonal
-  const auto copies_of = [&](const Point& p) {
+  const auto copies_of = [&](const Point& p, bool on_border) {
     const auto found = copies_at.find(key_of(p));
-    if (found != copies_at.end()) return found;
+    if (found != copies_at.end() || !on_border) return found;  // a cut's point is on the cap's border
     for (auto curve = copies_at.begin(); curve != copies_at.end(); ++curve)
       if ((curve->second.size() > 1 || curve->second.front().first >= out.input_count) &&  // the cut's points
           (Eigen::Vector3d(curve->first[0], curve->first[1], curve->first[2]) - vector_of(p)).norm() <= same_point)
@@ -159,7 +158,8 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
   };
   const auto cap_vertex = [&](const Mesh& cap, Mesh::Vertex_index v, const CuttingPlane& blade, int side) {
     const Point& p = cap.point(v);
-    if (const auto found = copies_of(p); found != copies_at.end()) {
+    const bool on_border = cap.is_border(v);
+    if (const auto found = copies_of(p, on_border); found != copies_at.end()) {
       const auto& copies = found->second;
       const auto best = std::max_element(copies.begin(), copies.end(), [&](const auto& a, const auto& b) {
         return side * farthest(a.second, blade) < side * farthest(b.second, blade);
@@ -167,7 +167,7 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
       out.cut_vertices.push_back(best->first);
       return best->first;
     }
-    const int copy = cap.is_border(v) ? 0 : side;
+    const int copy = on_border ? 0 : side;
     const auto [slot, inserted] = inside.try_emplace(
         {key_of(p), copy}, static_cast<int>(out.input_count + static_cast<Eigen::Index>(out.added.size())));
     if (inserted) {

@@ -116,13 +116,14 @@ std::vector<std::string> gather(const std::string& bytes) {
   if (!distributed()) return {bytes};
   const std::vector<double> sizes = gather(static_cast<double>(bytes.size()));
   std::vector<int> counts(sizes.size()), offsets(sizes.size(), 0);
-  long long total = 0;
+  double total = 0;
   for (size_t rank = 0; rank < sizes.size(); ++rank) {
+    // MPI counts and displacements are int.
+    if (total + sizes[rank] > std::numeric_limits<int>::max()) throw std::length_error("ranks::gather: over 2 GiB");
     offsets[rank] = static_cast<int>(total);
     counts[rank] = static_cast<int>(sizes[rank]);
-    total += counts[rank];
+    total += sizes[rank];
   }
-  if (total > std::numeric_limits<int>::max()) throw std::length_error("ranks::gather: over 2 GiB of bytes");
   std::string all(static_cast<size_t>(total), '\0');
   MPI_Allgatherv(bytes.data(), static_cast<int>(bytes.size()), MPI_CHAR, all.data(), counts.data(), offsets.data(),
                  MPI_CHAR, MPI_COMM_WORLD);
