@@ -33,35 +33,74 @@ void tabulate_basis(const MonomialBasis& basis, const Eigen::MatrixXd& points, E
   }
 }
 
-// The faces that carry a term (interior, or with a Dirichlet condition) and their
-// penalty tensors P T P (JumpPenalty, P the components a condition prescribes).
-struct FaceTerms {
-  TabulatedFaces faces;
-  std::vector<Eigen::Matrix3d> penalties;
-};
+// Whether `face` carries a term: interior, or with a weakly imposed Dirichlet condition.
+bool carries_term(const DgFace& face) { return face.plus >= 0 || (face.condition >= 0 && !face.strong); }
 
-FaceTerms tabulate_faces(const DgLinearSystem& system, int strength) {
-  FaceTerms terms;
-  for (const DgFace& face : system.faces()) {
-    if (face.plus < 0 && (face.condition < 0 || face.strong)) continue;
-    const PolyhedronRule rule = polygon_rule(face.polygon, strength);
-    std::vector<int> functions = cell_functions(system, face.minus);
-    const Eigen::Index minus_count = static_cast<Eigen::Index>(functions.size());
+// The faces that carry a term, those `here` holds (every one when it is empty) tabulated and
+// the others listed (TabulatedFaces::add_held_elsewhere), each in parallel and then appended
+// in face order.
+TabulatedFaces tabulate_faces(const DgLinearSystem& system, int strength, const TabulatedHere& here) {
+  std::vector<int> term_faces;
+  for (int f = 0; f < static_cast<int>(system.faces().size()); ++f)
+    if (carries_term(system.faces()[f])) term_faces.push_back(f);
+  const auto count = static_cast<int>(term_faces.size());
+  const std::vector<char> held = tabulated_here(here, count);
+  struct Tabulation {
+    std::vector<int> functions;
+    PolyhedronRule rule;
+    Eigen::MatrixXd values_minus, values_plus, gradients_minus, gradients_plus;
+  };
+  std::vector<Tabulation> tabulations(static_cast<size_t>(count));
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int t = 0; t < count; ++t) {
+    const DgFace& face = system.faces()[term_faces[t]];
+    Tabulation& tabulation = tabulations[t];
+    tabulation.functions = cell_functions(system, face.minus);
+    const auto minus_count = static_cast<Eigen::Index>(tabulation.functions.size());
     if (face.plus >= 0)
-      for (int a : cell_functions(system, face.plus)) functions.push_back(a);
-    const Eigen::Index points = rule.weights.size(), n = static_cast<Eigen::Index>(functions.size());
-    Eigen::MatrixXd values_minus = Eigen::MatrixXd::Zero(points, n), values_plus = values_minus;
-    Eigen::MatrixXd gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), gradients_plus = gradients_minus;
-    tabulate_basis(system.basis(face.minus), rule.points, 0, values_minus, gradients_minus);
-    if (face.plus >= 0) tabulate_basis(system.basis(face.plus), rule.points, minus_count, values_plus, gradients_plus);
+      for (int a : cell_functions(system, face.plus)) tabulation.functions.push_back(a);
+    if (!held[t]) continue;
+    tabulation.rule = polygon_rule(face.polygon, strength);
+    const Eigen::Index points = tabulation.rule.weights.size();
+    const auto n = static_cast<Eigen::Index>(tabulation.functions.size());
+    tabulation.values_minus = Eigen::MatrixXd::Zero(points, n), tabulation.values_plus = tabulation.values_minus;
+    tabulation.gradients_minus = Eigen::MatrixXd::Zero(points * n, 3);
+    tabulation.gradients_plus = tabulation.gradients_minus;
+    tabulate_basis(system.basis(face.minus), tabulation.rule.points, 0, tabulation.values_minus,
+                   tabulation.gradients_minus);
+    if (face.plus >= 0)
+      tabulate_basis(system.basis(face.plus), tabulation.rule.points, minus_count, tabulation.values_plus,
+                     tabulation.gradients_plus);
+  }
+  TabulatedFaces faces;
+  for (int t = 0; t < count; ++t) {
+    const DgFace& face = system.faces()[term_faces[t]];
+    Tabulation& tabulation = tabulations[t];
+    if (!held[t]) {
+      faces.add_held_elsewhere(tabulation.functions, face.minus, face.plus);
+      continue;
+    }
+    const Eigen::Index points = tabulation.rule.weights.size();
     const Eigen::MatrixXd normals = face.normal.transpose().replicate(points, 1);
-    terms.faces.add(functions, std::span<const double>(rule.weights.data(), points), normals, values_minus, values_plus,
-                    gradients_minus, gradients_plus, face.minus, face.plus);
+    faces.add(tabulation.functions, std::span<const double>(tabulation.rule.weights.data(), points), normals,
+              tabulation.values_minus, tabulation.values_plus, tabulation.gradients_minus, tabulation.gradients_plus,
+              face.minus, face.plus);
+    tabulation = Tabulation{};  // freed as it is packed
+  }
+  return faces;
+}
+
+// The penalty tensors P T P of the faces that carry a term (JumpPenalty, P the components a
+// condition prescribes), in tabulate_faces' order.
+std::vector<Eigen::Matrix3d> face_penalties(const DgLinearSystem& system) {
+  std::vector<Eigen::Matrix3d> penalties;
+  for (const DgFace& face : system.faces()) {
+    if (!carries_term(face)) continue;
     const Eigen::Matrix3d mask =
         Eigen::Vector3d(face.components[0], face.components[1], face.components[2]).asDiagonal();
-    terms.penalties.push_back(mask * system.face_penalty(face).tensor(face.normal) * mask);
+    penalties.push_back(mask * system.face_penalty(face).tensor(face.normal) * mask);
   }
-  return terms;
+  return penalties;
 }
 
 // Whether the lifted gradient carries Dirichlet data: a face holding a weak condition
@@ -147,10 +186,11 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
     };
   }
   parts.materials = std::move(materials);
-  FaceTerms terms = tabulate_faces(system, strength);
-  result.faces = std::make_unique<TabulatedFaces>(std::move(terms.faces));
-  parts.terms.push_back(
-      std::make_unique<FaceAssembler<JumpPenaltyKernel>>(*result.faces, JumpPenaltyKernel(std::move(terms.penalties))));
+  // The faces are tabulated by their term once it knows which it assembles: over several
+  // ranks the faces this rank owns (while the discretization is built, below).
+  parts.terms.push_back(std::make_unique<FaceAssembler<JumpPenaltyKernel>>(
+      [&system, strength](const TabulatedHere& here) { return tabulate_faces(system, strength, here); },
+      [&system](const TabulatedFaces&) { return JumpPenaltyKernel(face_penalties(system)); }));
   parts.conditions_weakly = strong.dofs.empty();
   parts.dirichlet = std::move(strong);
   parts.explicit_mass = ExplicitMassKind::block_per_element;  // no function is shared by two cells

@@ -19,7 +19,6 @@
 namespace altfem::dg {
 
 struct TabulatedDg {
-  std::unique_ptr<TabulatedFaces> faces;  ///< the face assembler keeps a reference: declared first, freed last
   /// The interior-penalty flux's lifted Dirichlet data (read at every set_time): before the discretization.
   std::unique_ptr<LiftedDirichletData> lifted_data;
   std::unique_ptr<TabulatedDiscretization> discretization;

@@ -38,27 +38,31 @@ template <typename Kernel>
 class FaceAssembler final : public EnergyTerm {
 public:
   /// Keeps a reference to `faces`.
-  FaceAssembler(const TabulatedFaces& faces, Kernel kernel)
-      : faces_(faces),
-        kernel_(std::move(kernel)),
-        colors_(color_groups(faces.basis_groups())),
-        face_energies_(static_cast<size_t>(faces.size())),
-        threads_(omp_get_max_threads()),
-        scratch_(std::make_unique<std::vector<Scratch>[]>(threads_)) {
-    for (int t = 0; t < threads_; ++t) scratch_[t].resize(static_cast<size_t>(faces.max_face_basis()) + 1);
-  }
+  FaceAssembler(const TabulatedFaces& faces, Kernel kernel) : FaceAssembler(&faces, std::move(kernel)) {}
+  /// Lists the faces with `tabulate` now and tabulates them later: over several ranks only
+  /// those this rank assembles (assemble_only), else all of them (bind). `make_kernel`
+  /// builds the kernel from the listing (which has every face's basis list, no points).
+  template <typename MakeKernel>
+  FaceAssembler(FaceTabulator tabulate, MakeKernel&& make_kernel)
+      : FaceAssembler(std::make_unique<TabulatedFaces>(tabulate([](int) { return false; })), tabulate,
+                      std::forward<MakeKernel>(make_kernel)) {}
 
-  const BasisGroups& couplings() const override { return faces_.basis_groups(); }
+  const BasisGroups& couplings() const override { return faces_->basis_groups(); }
   void bind(const BlockSparsity& sparsity, int first_group) override {
+    if (tabulate_) tabulate_faces(nullptr);  // no share was given: every face
     sparsity_ = &sparsity;
     first_group_ = first_group;
   }
   bool is_quadratic() const override { return kernel_.is_quadratic(); }
   const Kernel& kernel() const { return kernel_; }
+  /// The faces this term assembles over: with a FaceTabulator, the faces of its share
+  /// tabulated and the others listed.
+  const TabulatedFaces& faces() const { return *faces_; }
   /// Faces are the couplings' lists, one each.
   bool assemble_only(const std::vector<char>& owned) override {
-    if (static_cast<int>(owned.size()) != faces_.size())
+    if (static_cast<int>(owned.size()) != faces_->size())
       throw std::invalid_argument("FaceAssembler::assemble_only: one entry per face expected");
+    if (tabulate_) tabulate_faces([&owned](int f) { return owned[f] != 0; });
     owned_ = owned;
     for (std::vector<int>& color : colors_) std::erase_if(color, [&](int f) { return !owned_[f]; });
     std::erase_if(colors_, [](const std::vector<int>& color) { return color.empty(); });
@@ -66,13 +70,13 @@ public:
   }
 
   double energy(const Eigen::VectorXd& displacement) const override {
-    parallel::for_each_index(static_cast<size_t>(faces_.size()), active_threads(), [&](size_t index) {
+    parallel::for_each_index(static_cast<size_t>(faces_->size()), active_threads(), [&](size_t index) {
       const int f = static_cast<int>(index);
       if (!owned_.empty() && !owned_[f]) {
         face_energies_[index] = 0;
         return;
       }
-      const FaceView face = faces_[f];
+      const FaceView face = (*faces_)[f];
       with_local<false>(face, displacement, [&]<int N>(const kernel::NodeMatrix<N>& u, auto&) {
         face_energies_[index] = kernel_.template energy<N>(face, u);
       });
@@ -84,8 +88,8 @@ public:
 
   void add_gradient(const Eigen::VectorXd& displacement, Eigen::VectorXd& gradient) const override {
     parallel::FirstFailure failure;
-    parallel::for_each_colored(colors_, static_cast<size_t>(faces_.size()), active_threads(), [&](int f) {
-      const FaceView face = faces_[f];
+    parallel::for_each_colored(colors_, static_cast<size_t>(faces_->size()), active_threads(), [&](int f) {
+      const FaceView face = (*faces_)[f];
       with_local<false>(face, displacement, [&]<int N>(const kernel::NodeMatrix<N>& u, auto& scratch) {
         kernel::NodeMatrix<N> fixed_forces;
         kernel::NodeMatrix<N>& forces = select<N>(fixed_forces, scratch.forces);
@@ -104,8 +108,8 @@ public:
     parallel::FirstFailure failure;
     double* values = hessian.valuePtr();
     const int* outer = hessian.outerIndexPtr();
-    parallel::for_each_colored(colors_, static_cast<size_t>(faces_.size()), active_threads(), [&](int f) {
-      const FaceView face = faces_[f];
+    parallel::for_each_colored(colors_, static_cast<size_t>(faces_->size()), active_threads(), [&](int f) {
+      const FaceView face = (*faces_)[f];
       with_local<true>(face, displacement, [&]<int N>(const kernel::NodeMatrix<N>& u, auto& scratch) {
         kernel::LocalMatrix<N> fixed_stiffness;
         kernel::LocalMatrix<N>& stiffness = select<N>(fixed_stiffness, scratch.stiffness);
@@ -122,6 +126,31 @@ public:
   }
 
 private:
+  FaceAssembler(const TabulatedFaces* faces, Kernel kernel)
+      : faces_(faces),
+        kernel_(std::move(kernel)),
+        colors_(color_groups(faces->basis_groups())),
+        face_energies_(static_cast<size_t>(faces->size())),
+        threads_(omp_get_max_threads()),
+        scratch_(std::make_unique<std::vector<Scratch>[]>(threads_)) {
+    for (int t = 0; t < threads_; ++t) scratch_[t].resize(static_cast<size_t>(faces->max_face_basis()) + 1);
+  }
+  template <typename MakeKernel>
+  FaceAssembler(std::unique_ptr<TabulatedFaces> listed, FaceTabulator tabulate, MakeKernel&& make_kernel)
+      : FaceAssembler(listed.get(), make_kernel(*listed)) {
+    own_faces_ = std::move(listed);
+    tabulate_ = std::move(tabulate);
+  }
+
+  // Replaces the listing by the tabulation of the faces `here` holds (all for empty).
+  void tabulate_faces(const TabulatedHere& here) {
+    TabulatedFaces tabulated = tabulate_(here);
+    if (tabulated.size() != own_faces_->size())
+      throw std::logic_error("FaceAssembler: the tabulator listed and tabulated different faces");
+    *own_faces_ = std::move(tabulated);
+    tabulate_ = nullptr;
+  }
+
   struct Scratch {
     kernel::NodeMatrix<Eigen::Dynamic> u, forces;
     kernel::LocalMatrix<Eigen::Dynamic> stiffness;
@@ -164,7 +193,9 @@ private:
     }
   }
 
-  const TabulatedFaces& faces_;
+  const TabulatedFaces* faces_;
+  std::unique_ptr<TabulatedFaces> own_faces_;  // with a FaceTabulator: the listing, then the tabulation
+  FaceTabulator tabulate_;                     // until the faces are tabulated
   Kernel kernel_;
   std::vector<std::vector<int>> colors_;  // the owned faces, by colour
   std::vector<char> owned_;               // empty: every face

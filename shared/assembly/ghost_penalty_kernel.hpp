@@ -29,7 +29,8 @@ public:
   /// elasticity a modulus times a dimensionless γ, so that g_F scales like the
   /// stiffness); sizes, h_F per face; degree p, 1 or 2. Throws std::invalid_argument
   /// unless there is one penalty and one size per face, no face couples more than
-  /// max_face_basis functions, and the faces carry Hessians when p = 2 (checked here,
+  /// max_face_basis functions, and the faces carry Hessians when p = 2 (unless they are
+  /// only listed, TabulatedFaces::add_held_elsewhere) (checked here,
   /// not in the parallel assembly loops, where a throw would terminate).
   GhostPenaltyKernel(const TabulatedFaces& faces, std::vector<double> penalties, std::vector<double> sizes, int degree)
       : penalties_(std::move(penalties)), sizes_(std::move(sizes)), degree_(degree) {
@@ -40,7 +41,7 @@ public:
     if (faces.max_face_basis() > max_face_basis)
       throw std::invalid_argument("GhostPenaltyKernel: a face couples " + std::to_string(faces.max_face_basis()) +
                                   " functions (at most " + std::to_string(max_face_basis) + ")");
-    if (degree == 2 && faces.size() > 0 && !faces[0].has_hessians())
+    if (degree == 2 && faces.point_count() > 0 && !faces.has_hessians())
       throw std::invalid_argument("GhostPenaltyKernel: degree 2 needs faces tabulated with Hessians");
   }
 

@@ -38,7 +38,7 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
   const auto hessians_fit = [&](const auto& hessians) { return hessians.rows() == points * n && hessians.cols() == 9; };
   if (with_hessians && (!hessians_fit(hessians_minus) || !hessians_fit(hessians_plus)))
     throw std::invalid_argument("TabulatedFaces::add: Hessians must be (#points·#basis) × 9");
-  if (size() > 0 && with_hessians != !hessians_minus_.empty())
+  if (!weights_.empty() && with_hessians != !hessians_minus_.empty())
     throw std::invalid_argument("TabulatedFaces::add: either every face has Hessians or none has");
   for (Eigen::Index q = 0; q < points; ++q)
     if (std::abs(normals.row(q).norm() - 1.0) > 1e-12)
@@ -58,6 +58,15 @@ void TabulatedFaces::add(std::span<const int> basis, std::span<const double> wei
   minus_.push_back(minus);
   plus_.push_back(plus);
   max_face_basis_ = std::max(max_face_basis_, static_cast<int>(n));
+}
+
+void TabulatedFaces::add_held_elsewhere(std::span<const int> basis, int minus, int plus) {
+  basis_.add(basis);
+  point_offsets_.push_back(point_offsets_.back());
+  value_offsets_.push_back(value_offsets_.back());
+  minus_.push_back(minus);
+  plus_.push_back(plus);
+  max_face_basis_ = std::max(max_face_basis_, static_cast<int>(basis.size()));
 }
 
 FaceView TabulatedFaces::operator[](int face) const {

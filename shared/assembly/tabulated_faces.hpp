@@ -12,10 +12,12 @@
 // {∇φ_a} = ½(∇φ_a⁻ + ∇φ_a⁺), with the normal pointing from the minus to the plus side.
 // Storage is packed for all faces, like TabulatedElements.
 #include <Eigen/Core>
+#include <functional>
 #include <span>
 #include <vector>
 
 #include "shared/assembly/basis_groups.hpp"
+#include "shared/assembly/tabulated_elements.hpp"
 
 namespace altfem {
 
@@ -67,9 +69,15 @@ public:
            const Eigen::Ref<const Eigen::MatrixXd>& hessians_minus = Eigen::MatrixXd(0, 9),
            const Eigen::Ref<const Eigen::MatrixXd>& hessians_plus = Eigen::MatrixXd(0, 9));
 
+  /// Appends a face that another rank tabulates (docs/scaling.md): its basis list and its
+  /// sides only, no points, so that every rank knows every face's couplings.
+  void add_held_elsewhere(std::span<const int> basis, int minus, int plus);
+
   int size() const { return static_cast<int>(minus_.size()); }
   long long point_count() const { return static_cast<long long>(weights_.size()); }
   int max_face_basis() const { return max_face_basis_; }
+  /// Whether the tabulated faces carry Hessians (false when none is tabulated).
+  bool has_hessians() const { return !hessians_minus_.empty(); }
   FaceView operator[](int face) const;
   /// Each face's basis list: the block couplings these faces add to a sparsity pattern.
   const BasisGroups& basis_groups() const { return basis_; }
@@ -86,5 +94,10 @@ private:
   std::vector<int> minus_, plus_;
   int max_face_basis_ = 0;
 };
+
+/// Tabulates the faces f with here(f) and lists the others (TabulatedFaces::
+/// add_held_elsewhere); every face when `here` is empty. The faces and their order are the
+/// same whatever `here` says.
+using FaceTabulator = std::function<TabulatedFaces(const TabulatedHere& here)>;
 
 }  // namespace altfem

@@ -189,9 +189,15 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   if (constrained)
     parts.element_masses = constrain_element_masses(*parts.element_masses, fcm.mesh.cells, fcm.constraints);
   if (options.ghost_penalty > 0) {
-    fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(fcm.mesh, fcm.volume_fractions));
+    // Listed here, tabulated by the term once it knows its faces: over several ranks the
+    // faces this rank owns (during the discretization's construction, below).
+    fcm.ghost = std::make_unique<GhostPenaltyFaces>(
+        ghost_penalty_faces(fcm.mesh, fcm.volume_fractions, [](int) { return false; }));
     parts.terms.push_back(
-        ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials, options.ghost_penalty));
+        ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials, options.ghost_penalty,
+                           [&mesh = fcm.mesh, &fractions = fcm.volume_fractions](const TabulatedHere& here) {
+                             return std::move(ghost_penalty_faces(mesh, fractions, here).faces);
+                           }));
   }
   parts.materials = std::move(materials);
   NodeRegionFilter kept_dirichlet_nodes;

@@ -67,8 +67,8 @@ struct FcmDiscretization {
   std::vector<double> volume_fractions;  ///< per kept cell
   FcmCellCounts counts;
   int schwarz_blocks = 0;
-  /// The ghost penalty's faces (null when off); declared before `discretization`,
-  /// whose face term refers to them, so that they outlive it.
+  /// The ghost penalty's faces, listed (null when off): the face term tabulates those it
+  /// assembles, every face on one process, its own over several ranks.
   std::unique_ptr<GhostPenaltyFaces> ghost;
   std::unique_ptr<TabulatedDiscretization> discretization;
 };

@@ -9,6 +9,8 @@
 
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/ghost_penalty_kernel.hpp"
+#include "shared/assembly/parallel_loops.hpp"
+#include "shared/assembly/tabulated_here.hpp"
 #include "shared/common/error.hpp"
 #include "shared/element/element_faces.hpp"
 #include "shared/element/geometry_map.hpp"
@@ -105,9 +107,17 @@ Eigen::MatrixXd cell_nodes(const VolumeMesh& mesh, int cell) {
   return nodes;
 }
 
+// One face's tabulation, as TabulatedFaces::add takes it.
+struct FaceTabulation {
+  std::vector<int> basis;
+  std::vector<double> weights;
+  Eigen::MatrixXd normals, values_minus, values_plus, gradients_minus, gradients_plus, hessians_minus, hessians_plus;
+};
+
 }  // namespace
 
-GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions) {
+GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions,
+                                      const TabulatedHere& here) {
   const ReferenceElement& element = reference_element(mesh.element_type);
   const ElementShape shape = element.shape();
   const int degree = element.degree();
@@ -116,13 +126,23 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
   const int n_cell = element.node_count();
   const int corner_count = face_corner_count(shape);
 
-  GhostPenaltyFaces result;
-  for (const auto& [minus, plus] : interior_faces(mesh)) {
-    if (volume_fractions[minus.cell] >= 1 && volume_fractions[plus.cell] >= 1) continue;
+  std::vector<std::array<CellFace, 2>> pairs = interior_faces(mesh);
+  std::erase_if(pairs, [&](const std::array<CellFace, 2>& pair) {
+    return volume_fractions[pair[0].cell] >= 1 && volume_fractions[pair[1].cell] >= 1;
+  });
+  const auto face_count = static_cast<int>(pairs.size());
+  const std::vector<char> held = tabulated_here(here, face_count);
+  std::vector<FaceTabulation> tabulations(static_cast<size_t>(face_count));
+  std::vector<double> sizes(static_cast<size_t>(face_count));
+  parallel::FirstFailure failure;
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int f = 0; f < face_count; ++f) {
+    const auto& [minus, plus] = pairs[f];
     const Eigen::MatrixXd minus_nodes = cell_nodes(mesh, minus.cell), plus_nodes = cell_nodes(mesh, plus.cell);
+    FaceTabulation& face = tabulations[f];
 
     // The face's functions: the minus cell's nodes, then the plus cell's others.
-    std::vector<int> basis;
+    std::vector<int>& basis = face.basis;
     for (int a = 0; a < n_cell; ++a) basis.push_back(mesh.cells(minus.cell, a));
     std::vector<int> plus_local(static_cast<size_t>(n_cell));
     for (int a = 0; a < n_cell; ++a) {
@@ -141,53 +161,68 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
       const int next = element_faces(shape)[minus.face][(c + 1) % corner_count];
       size = std::max(size, (minus_nodes.row(corner) - minus_nodes.row(next)).norm());
     }
+    sizes[f] = size;
+    if (!held[f]) continue;
     const Eigen::Vector3d centre_offset = plus_nodes.colwise().mean() - minus_nodes.colwise().mean();
 
-    std::vector<double> weights(static_cast<size_t>(points));
-    Eigen::MatrixXd normals(points, 3);
-    Eigen::MatrixXd values_minus = Eigen::MatrixXd::Zero(points, n), values_plus = Eigen::MatrixXd::Zero(points, n);
-    Eigen::MatrixXd gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), gradients_plus = gradients_minus;
-    Eigen::MatrixXd hessians_minus = Eigen::MatrixXd::Zero(points * n, 9), hessians_plus = hessians_minus;
+    face.weights.resize(static_cast<size_t>(points));
+    face.normals.resize(points, 3);
+    face.values_minus = Eigen::MatrixXd::Zero(points, n), face.values_plus = Eigen::MatrixXd::Zero(points, n);
+    face.gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), face.gradients_plus = face.gradients_minus;
+    face.hessians_minus = Eigen::MatrixXd::Zero(degree < 2 ? 0 : points * n, 9),
+    face.hessians_plus = face.hessians_minus;
     for (int q = 0; q < points; ++q) {
       const FacePoint point = face_point(corners, rule.points(q, 0), rule.points(q, 1));
       const Eigen::Vector3d x = map_to_physical(element, minus_nodes, point.xi);
       const Eigen::Matrix3d jacobian = map_jacobian(element, minus_nodes, point.xi);
       const Eigen::Vector3d cross = (jacobian * point.d_xi_ds).cross(jacobian * point.d_xi_dt);
-      weights[q] = rule.weights[q] * cross.norm();
+      face.weights[q] = rule.weights[q] * cross.norm();
       const Eigen::Vector3d normal = cross.normalized();
-      normals.row(q) = (normal.dot(centre_offset) >= 0 ? normal : -normal).transpose();
+      face.normals.row(q) = (normal.dot(centre_offset) >= 0 ? normal : -normal).transpose();
 
       const InverseMapResult located = map_to_reference(element, plus_nodes, x);
-      if (!located.converged || !element.contains(located.xi, 1e-8))
-        throw NumericalError("ghost penalty: face point " + std::to_string(q) + " between cells " +
-                             std::to_string(minus.cell) + " and " + std::to_string(plus.cell) +
-                             " is not in the cell across the face");
+      if (!located.converged || !element.contains(located.xi, 1e-8)) {
+        failure.record(f);
+        break;
+      }
       const SideDerivatives from_minus = side_derivatives(element, minus_nodes, point.xi);
       const SideDerivatives from_plus = side_derivatives(element, plus_nodes, located.xi);
       for (int a = 0; a < n_cell; ++a) {
-        values_minus(q, a) = from_minus.values[a];
-        gradients_minus.row(q * n + a) = from_minus.gradients.row(a);
-        hessians_minus.row(q * n + a) = from_minus.hessians.row(a);
         const int b = plus_local[a];
-        values_plus(q, b) = from_plus.values[a];
-        gradients_plus.row(q * n + b) = from_plus.gradients.row(a);
-        hessians_plus.row(q * n + b) = from_plus.hessians.row(a);
+        face.values_minus(q, a) = from_minus.values[a];
+        face.values_plus(q, b) = from_plus.values[a];
+        face.gradients_minus.row(q * n + a) = from_minus.gradients.row(a);
+        face.gradients_plus.row(q * n + b) = from_plus.gradients.row(a);
+        if (degree < 2) continue;  // first derivatives suffice (GhostPenaltyKernel sums k = 1..p)
+        face.hessians_minus.row(q * n + a) = from_minus.hessians.row(a);
+        face.hessians_plus.row(q * n + b) = from_plus.hessians.row(a);
       }
     }
-    if (degree < 2) {  // first derivatives suffice (GhostPenaltyKernel sums k = 1..p)
-      hessians_minus.resize(0, 9);
-      hessians_plus.resize(0, 9);
-    }
-    result.faces.add(basis, weights, normals, values_minus, values_plus, gradients_minus, gradients_plus, minus.cell,
-                     plus.cell, hessians_minus, hessians_plus);
-    result.sizes.push_back(size);
+  }
+  if (failure.item() >= 0) {
+    const auto& [minus, plus] = pairs[failure.item()];
+    throw NumericalError("ghost penalty: a point of the face between cells " + std::to_string(minus.cell) + " and " +
+                         std::to_string(plus.cell) + " is not in the cell across the face");
+  }
+
+  GhostPenaltyFaces result;
+  result.sizes = std::move(sizes);
+  for (int f = 0; f < face_count; ++f) {
+    FaceTabulation& face = tabulations[f];
+    if (!held[f]) result.faces.add_held_elsewhere(face.basis, pairs[f][0].cell, pairs[f][1].cell);
+    else
+      result.faces.add(face.basis, face.weights, face.normals, face.values_minus, face.values_plus,
+                       face.gradients_minus, face.gradients_plus, pairs[f][0].cell, pairs[f][1].cell,
+                       face.hessians_minus, face.hessians_plus);
+    face = FaceTabulation{};  // freed as it is packed
   }
   return result;
 }
 
 std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
                                                const std::vector<int>& cell_materials,
-                                               const std::vector<const Material*>& materials, double gamma) {
+                                               const std::vector<const Material*>& materials, double gamma,
+                                               FaceTabulator tabulate) {
   const auto modulus = [&](int cell) {
     const LameParameters lame = materials[cell_materials[cell]]->lame();
     return lame.lambda + 2 * lame.mu;
@@ -195,8 +230,13 @@ std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, E
   std::vector<double> penalties;
   for (int f = 0; f < faces.faces.size(); ++f)
     penalties.push_back(gamma * 0.5 * (modulus(faces.faces[f].minus) + modulus(faces.faces[f].plus)));
+  const int degree = element_degree(type);
+  if (tabulate)
+    return std::make_unique<FaceAssembler<GhostPenaltyKernel>>(std::move(tabulate), [&](const TabulatedFaces& listed) {
+      return GhostPenaltyKernel(listed, std::move(penalties), faces.sizes, degree);
+    });
   return std::make_unique<FaceAssembler<GhostPenaltyKernel>>(
-      faces.faces, GhostPenaltyKernel(faces.faces, std::move(penalties), faces.sizes, element_degree(type)));
+      faces.faces, GhostPenaltyKernel(faces.faces, std::move(penalties), faces.sizes, degree));
 }
 
 }  // namespace altfem

@@ -22,16 +22,23 @@ struct GhostPenaltyFaces {
 /// The interior faces of `mesh` (the kept cells, basis function i = node i) next to a
 /// cut cell, volume_fractions[c] < 1. Face rules of strength 2p on the reference face
 /// (exact for the products of jumps on affine cells), points mapped into both
-/// neighbours. Any cell geometry: Hessians include the map's curvature term. Throws
-/// NumericalError when a face point cannot be located in the neighbour across it.
-GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions);
+/// neighbours. Any cell geometry: Hessians include the map's curvature term. Tabulates the
+/// faces f with here(f), every face when `here` is empty, and lists the others
+/// (TabulatedFaces::add_held_elsewhere); `sizes` are every face's. Throws NumericalError when
+/// a face point cannot be located in the neighbour across it.
+GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions,
+                                      const TabulatedHere& here = nullptr);
 
-/// The penalty's energy term over `faces` (which must outlive it) on cells of `type`:
-/// γ_F = γ × the mean P-wave modulus λ + 2μ of the face's two cells, so that the
-/// penalty scales like the elastic stiffness it stabilises and γ is dimensionless.
-/// cell_materials: per cell of the faces' mesh, its index into `materials`.
+/// The penalty's energy term over `faces` on cells of `type`: γ_F = γ × the mean P-wave
+/// modulus λ + 2μ of the face's two cells, so that the penalty scales like the elastic
+/// stiffness it stabilises and γ is dimensionless. cell_materials: per cell of the faces'
+/// mesh, its index into `materials`. Without `tabulate`, `faces` are tabulated and must
+/// outlive the term; with it, `faces` need only list them, and the term tabulates its
+/// share when it learns it (FaceAssembler's FaceTabulator: over several ranks each rank
+/// tabulates the faces it owns).
 std::unique_ptr<EnergyTerm> ghost_penalty_term(const GhostPenaltyFaces& faces, ElementType type,
                                                const std::vector<int>& cell_materials,
-                                               const std::vector<const Material*>& materials, double gamma);
+                                               const std::vector<const Material*>& materials, double gamma,
+                                               FaceTabulator tabulate = nullptr);
 
 }  // namespace altfem

@@ -159,6 +159,70 @@ TEST(FaceAssembler, SharesOfDisjointFacesSumToTheWhole) {
   EXPECT_THROW(first.assembler.assemble_only({1, 0}), std::invalid_argument);
 }
 
+// The faces of `whole` that `here` holds, copied, and the others listed: a FaceTabulator.
+TabulatedFaces share_of(const TabulatedFaces& whole, const TabulatedHere& here) {
+  TabulatedFaces faces;
+  for (int f = 0; f < whole.size(); ++f) {
+    const FaceView face = whole[f];
+    if (here && !here(f)) {
+      faces.add_held_elsewhere(face.basis, face.minus, face.plus);
+      continue;
+    }
+    const Eigen::Index rows = face.point_count() * face.basis_count();
+    faces.add(face.basis, face.weights, FaceView::Gradients(face.normals, face.point_count(), 3), face.values_minus,
+              face.values_plus, FaceView::Gradients(face.gradients_minus, rows, 3),
+              FaceView::Gradients(face.gradients_plus, rows, 3), face.minus, face.plus);
+  }
+  return faces;
+}
+
+// With a FaceTabulator the term lists its faces first (their couplings, no points), then
+// tabulates only the faces of its share (assemble_only: one rank's, docs/scaling.md), or
+// every face when it is bound without one, and assembles what the tabulated faces give.
+TEST(FaceAssembler, ATabulatorTabulatesTheShareOnlyOrEveryFaceWhenBound) {
+  const TabulatedFaces whole = mixed_faces();
+  int calls = 0;
+  const FaceTabulator tabulate = [&](const TabulatedHere& here) {
+    ++calls;
+    return share_of(whole, here);
+  };
+  const auto make_kernel = [](const TabulatedFaces&) { return test::QuarticJumpKernel(); };
+  FaceAssembler<test::QuarticJumpKernel> shared(tabulate, make_kernel), everything(tabulate, make_kernel);
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(shared.faces().size(), whole.size());
+  EXPECT_EQ(shared.faces().point_count(), 0);
+  EXPECT_EQ(shared.couplings().size(), whole.size());
+  for (int f = 0; f < whole.size(); ++f)
+    EXPECT_TRUE(std::ranges::equal(shared.couplings()[f], whole.basis_groups()[f]));
+
+  const std::vector<char> some{1, 0, 0, 1, 1, 0};
+  EXPECT_TRUE(shared.assemble_only(some));
+  long long share_points = 0;
+  for (int f = 0; f < whole.size(); ++f) share_points += some[f] ? whole[f].point_count() : 0;
+  EXPECT_EQ(shared.faces().point_count(), share_points);
+  EXPECT_LT(share_points, whole.point_count());
+
+  const TabulatedElements no_elements;
+  const BlockSparsity sparsity(no_elements, whole.basis_groups());
+  shared.bind(sparsity, 0);
+  everything.bind(sparsity, 0);
+  EXPECT_EQ(calls, 4);
+  EXPECT_EQ(everything.faces().point_count(), whole.point_count());
+
+  test::FaceTerm<test::QuarticJumpKernel> reference(whole, test::QuarticJumpKernel()),
+      reference_share(whole, test::QuarticJumpKernel());
+  reference_share.assembler.assemble_only(some);
+  const Eigen::VectorXd u = 0.3 * random_vector(reference.dof_count(), 7);
+  EXPECT_EQ(shared.energy(u), reference_share.assembler.energy(u));
+  EXPECT_EQ(everything.energy(u), reference.assembler.energy(u));
+  Eigen::VectorXd gradient = Eigen::VectorXd::Zero(reference.dof_count());
+  shared.add_gradient(u, gradient);
+  EXPECT_EQ(gradient, reference_share.gradient(u));
+  SparseMatrix hessian = sparsity.pattern();
+  everything.add_hessian(u, hessian);
+  EXPECT_EQ((hessian - reference.hessian(u)).norm(), 0.0);
+}
+
 TEST(FaceAssembler, HessianBeforeBindThrows) {
   const TabulatedFaces faces = test::two_cube_face(3);
   const FaceAssembler<JumpPenaltyKernel> assembler(faces, JumpPenaltyKernel(std::vector<double>{penalty}));

@@ -10,8 +10,9 @@
 //     under refinement): aggregates do not cross the partition, so the coarse spaces
 //     differ; the issue asked for 2 iterations, which small problems, whose partition
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
-// fcm on the half-ball has cut cells and ghost-penalty faces on both sides of the
-// partition, dg with a nonlinear material its interior faces. PETSc's rows follow the
+// fcm on the half-ball has cut cells, and with the ghost penalty its faces on both sides of
+// the partition, dg with a nonlinear material its interior faces (each rank tabulating the
+// faces it owns). PETSc's rows follow the
 // elements' partition for a discretization that hands it shares, and METIS's parts of the
 // matrix's graph (partitioned_rows.hpp) for one that hands it the whole (dg's linear system).
 // Every rank must reach every collective call, so the
@@ -65,6 +66,12 @@ const std::vector<Case>& cases() {
        "fcm",
        "scenes/manufactured_half_ball.json",
        {"discretization/fcm/resolution=[4,4,2]", "discretization/fcm/cell=hex8"}},
+      // The ghost penalty's faces across the partition: each rank tabulates the faces it owns.
+      {"fcm_ghost_penalty",
+       "fcm",
+       "scenes/manufactured_half_ball.json",
+       {"discretization/fcm/resolution=[6,6,3]", "discretization/fcm/ghost_penalty=0.1",
+        "discretization/fcm/stabilization=0"}},
       // A linear dg integrates its matrices exactly once (DgLinearSystem), each rank its
       // cells and faces; another material is tabulated and divided, faces included.
       {"dg_linear", "dg", "scenes/cantilever.json", {"discretization/dg/resolution=[10,2,2]"}},
