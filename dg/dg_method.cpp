@@ -83,8 +83,8 @@ public:
                  first.tangential_fraction,
                  true,
                  spec_.rule_simplification};
-    // PETSc sums the ranks' shares of K (docs/scaling.md); warping rotates the whole of it.
-    settings_.share_stiffness = ranks::shares_matrices() && linear() && !spec_.warping;
+    // PETSc sums the ranks' shares of K (docs/scaling.md), warped or not.
+    settings_.share_stiffness = ranks::shares_matrices() && linear();
     // After an event, η starts where the run had doubled it to: it never drops during a
     // run, and the faces the event left alone keep their matrices.
     if (handed) double_penalty(handed->doublings);

@@ -4,11 +4,13 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <span>
 
 #include "dg/exact_element_matrices.hpp"
 #include "shared/assembly/parallel_loops.hpp"
 #include "shared/material/best_fit_rotation.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
+#include "shared/solve/process_ranks.hpp"
 
 namespace altfem::dg {
 
@@ -38,6 +40,16 @@ Eigen::MatrixXd affine_fit_gradients(const Eigen::MatrixXd& mass, const Monomial
   return projection.bottomRows(3) / basis.scale();
 }
 
+// ρ ∫ φ_a φ_b over `cell` (#functions square) from the system's mass (DOF 3a + i): the
+// affine fit's projection does not depend on the density.
+Eigen::MatrixXd cell_mass(const Eigen::SparseMatrix<double>& mass, const DgLinearSystem& system, int cell) {
+  const int first = system.offset(cell), count = system.offset(cell + 1) - first;
+  Eigen::MatrixXd result(count, count);
+  for (int b = 0; b < count; ++b)
+    for (int a = 0; a < count; ++a) result(a, b) = mass.coeff(3 * (first + a), 3 * (first + b));
+  return result;
+}
+
 // The block's DOFs as a list.
 template <typename Ranges>
 std::vector<int> dofs_of(const Ranges& ranges) {
@@ -63,7 +75,8 @@ WarpedDgDiscretization::WarpedDgDiscretization(Parts parts, const DgLinearSystem
                                                std::function<Eigen::VectorXd(double)> penalty_data_load,
                                                ConditionTrajectory trajectory)
     : LinearDgDiscretization(parts.stiffness, system.mass(), std::move(function_integrals), std::move(element_dofs),
-                             std::move(penalty_data_load)),
+                             std::move(penalty_data_load), {}, system.share_row_owners()),
+      divided_(ranks::distributed()),
       blocks_(std::move(parts.blocks)),
       trajectory_(std::move(trajectory)),
       affine_fit_(std::move(parts.affine_fit)) {
@@ -138,15 +151,20 @@ WarpedDgDiscretization::Parts WarpedDgDiscretization::warped_parts(const DgLinea
   const auto range_of = [&](int cell) {
     return Range{3 * system.offset(cell), 3 * (system.offset(cell + 1) - system.offset(cell))};
   };
+  // Every cell's rotation (a face's block may take the other side's), from the mass every
+  // rank holds whole; over several ranks only the rank's own cells' and faces' blocks.
+  const Eigen::SparseMatrix<double> mass = system.mass();
   for (int cell = 0; cell < system.cell_count(); ++cell) {
+    parts.affine_fit.push_back(affine_fit_gradients(cell_mass(mass, system, cell), system.basis(cell)));
+    if (!system.owns_cell(cell)) continue;
     const DgMaterial material = system.material(cell);
     ElementMatrices matrices =
         exact_element_matrices(system.cell(cell), system.basis(cell), material.lambda, material.mu, 1.0);
-    parts.affine_fit.push_back(affine_fit_gradients(matrices.mass, system.basis(cell)));
     add({range_of(cell)}, cell, std::move(matrices.stiffness));  // eq. (29)
   }
   for (const DgFace& face : system.faces()) {
     if (face.plus < 0 && face.condition < 0) continue;  // a free boundary: no face term
+    if (!system.owns_face(face)) continue;
     const MonomialBasis* plus = face.plus >= 0 ? &system.basis(face.plus) : nullptr;
     const DgMaterial minus_material = system.material(face.minus);
     const DgMaterial plus_material = face.plus >= 0 ? system.material(face.plus) : minus_material;
@@ -287,7 +305,7 @@ double WarpedDgDiscretization::energy(const Eigen::VectorXd& u) const {
   });
   double energy = 0.5 * u.dot(penalty_ * u) + add_data_forces(rotation, u, nullptr);
   for (double block_energy : block_energies_) energy += block_energy;
-  return energy;
+  return divided_ ? ranks::sum(energy) : energy;
 }
 
 void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd& gradient) const {
@@ -313,6 +331,7 @@ void WarpedDgDiscretization::gradient(const Eigen::VectorXd& u, Eigen::VectorXd&
       },
       threads());
   add_data_forces(rotation, u, &gradient);
+  if (divided_) ranks::sum(std::span<double>(gradient.data(), static_cast<size_t>(gradient.size())));
 }
 
 void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatrix<double>& hessian, bool) const {
@@ -340,6 +359,9 @@ void WarpedDgDiscretization::hessian(const Eigen::VectorXd& u, Eigen::SparseMatr
       }
     }
   });
+  // Each rank's blocks on the whole pattern, summed into every rank's copy, unless the
+  // solver sums the shares (matrix_share_owners).
+  if (divided_ && matrix_share_owners().empty()) ranks::sum(std::span<double>(values.data(), values.size()));
 }
 
 }  // namespace altfem::dg

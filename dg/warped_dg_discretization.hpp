@@ -111,6 +111,10 @@ private:
   // The threads of the parallel loops: OpenMP's, at most as many as there is scratch for.
   int threads() const;
 
+  // Over several ranks each holds the blocks of its cells and of the faces it owns
+  // (DgLinearSystem::owns_cell, owns_face) and the energy and forces are summed; the
+  // Hessian stays each rank's share where the solver sums shares (PETSc), else it is summed.
+  bool divided_ = false;
   std::vector<Block> blocks_;
   std::vector<DirichletFace> dirichlet_faces_;  // empty unless some condition moves
   ConditionTrajectory trajectory_;

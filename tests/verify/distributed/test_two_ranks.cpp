@@ -79,6 +79,11 @@ const std::vector<Case>& cases() {
        "dg",
        "scenes/cantilever.json",
        {"discretization/dg/resolution=[10,2,2]", "material/model=neo_hookean"}},
+      // Stiffness warping: each rank rotates the blocks of its cells and of the faces it owns.
+      {"dg_warped",
+       "dg",
+       "scenes/cantilever.json",
+       {"discretization/dg/resolution=[10,2,2]", "discretization/dg/warping=true"}},
       {"harmonic", "harmonic", "scenes/cantilever.json", {"discretization/harmonic/convert/resolution=[10,2,2]"}},
       {"harmonic_warped",
        "harmonic",
