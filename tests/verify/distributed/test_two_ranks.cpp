@@ -12,9 +12,8 @@
 //     boundary holds a large share of the nodes, do not meet (docs/scaling.md).
 // fcm on the half-ball has cut cells, and with the ghost penalty its faces on both sides of
 // the partition, dg with a nonlinear material its interior faces (each rank tabulating the
-// faces it owns). PETSc's rows follow the
-// elements' partition for a discretization that hands it shares, and METIS's parts of the
-// matrix's graph (partitioned_rows.hpp) for one that hands it the whole (dg's linear system).
+// faces it owns), dg's stiffness warping its cells' and faces' blocks. Every method hands
+// PETSc shares, whose rows follow the elements' partition.
 // Every rank must reach every collective call, so the
 // checks are EXPECTs (an ASSERT's early return would leave the other rank waiting).
 #include <gtest/gtest.h>
