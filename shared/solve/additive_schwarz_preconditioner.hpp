@@ -25,6 +25,14 @@ public:
   /// 1/|C_ii|. Throws NumericalError naming the row of a zero diagonal outside blocks,
   /// or a block whose eigen-solver fails or whose largest eigenvalue is zero.
   void compute(const Eigen::SparseMatrix<double>& matrix) override;
+  /// compute() of the sum of the ranks' shares: each rank's C_K and diagonal summed across
+  /// the ranks (Σ_K |K|² + #dofs values), then decomposed on every rank.
+  bool computes_from_shares() const override { return true; }
+  /// The most blocks that hold one DOF (1 where none overlap): for e_i, a DOF in n blocks,
+  /// (A e_i)ᵀ S (A e_i) ≥ n · e_iᵀ A e_i, since each block K holding i gives
+  /// (C_K e_i)ᵀ C_K⁻¹ (C_K e_i) = A_ii.
+  double largest_eigenvalue_at_least() const override { return largest_overlap_; }
+  void compute_from_shares(const Eigen::SparseMatrix<double>& share) override;
   void apply(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const override;
 
   int block_count() const { return static_cast<int>(blocks_.size()); }
@@ -32,12 +40,19 @@ public:
   int reflected_small_eigenvalues() const { return small_eigenvalues_; }
 
 private:
+  // C_K of every block and the diagonal, as `matrix` holds them.
+  void gather(const Eigen::SparseMatrix<double>& matrix, std::vector<Eigen::MatrixXd>& blocks,
+              Eigen::VectorXd& diagonal) const;
+  // C_K⁺ of every block and 1/|C_ii| of the DOFs in none.
+  void decompose(std::vector<Eigen::MatrixXd>& blocks, const Eigen::VectorXd& diagonal);
+
   std::vector<std::vector<int>> blocks_;  // each sorted
   double epsilon_;
   std::vector<Eigen::MatrixXd> inverses_;                     // C_K⁺ per block
   Eigen::VectorXd diagonal_inverse_;                          // 1/|C_ii| for DOFs in no block, else 0
   mutable std::vector<Eigen::VectorXd> gathered_, products_;  // per block scratch: apply() must not allocate
   int small_eigenvalues_ = 0;
+  int largest_overlap_ = 1;
 };
 
 }  // namespace altfem

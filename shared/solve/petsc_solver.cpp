@@ -37,9 +37,9 @@ public:
     if (ranks::distributed()) {
       communicator_ = PETSC_COMM_WORLD;
       share_row_owners_ = options.share_row_owners;
-    } else if (options.method_smoother) {
-      finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner);
     }
+    if (options.method_smoother)
+      finest_smoother_ = FinestLevelSmoother(options.custom_preconditioner, ranks::distributed());
     check(KSPCreate(communicator_, &ksp_), "KSPCreate");
     check(KSPSetOptionsPrefix(ksp_, prefix_.c_str()), "KSPSetOptionsPrefix");
     check(KSPSetType(ksp_, KSPCG), "KSPSetType");
@@ -174,9 +174,9 @@ protected:
         coarse_level_.update(preconditioner, matrix_, matrix, {petsc_of_method_, first_row_, last_row_, communicator_}),
         "the first-order coarse level");
     check(KSPSetUp(ksp_), "KSPSetUp (the preconditioner's set-up)");
-    if (finest_smoother_) {  // on one process: the method's own preconditioner
+    if (finest_smoother_) {  // the method's own preconditioner
       const auto rows = static_cast<PetscInt>(matrix.rows());
-      check(finest_smoother_.install(preconditioner, matrix, columns_in_petsc_order(rows)),
+      check(finest_smoother_.install(preconditioner, matrix, columns_in_petsc_order(rows), !share_row_owners_.empty()),
             "the finest level's smoother");
     }
     if (!reported_unused_options_) report_unused_options();
@@ -399,7 +399,7 @@ private:
   std::vector<int> share_row_owners_;  // over several ranks, for shares: each block row's rank
   std::vector<PetscInt> row_buffer_;   // for_each_row_of_share's columns of one row
   bool reported_unused_options_ = false;
-  FinestLevelSmoother finest_smoother_{{}};  // on one process: the method's preconditioner (petsc_finest_smoother.hpp)
+  FinestLevelSmoother finest_smoother_{{}};  // the method's preconditioner (petsc_finest_smoother.hpp)
   FirstOrderCoarseLevel coarse_level_;  // a coarser space's level, where the method has one (petsc_coarse_level.hpp)
 };
 

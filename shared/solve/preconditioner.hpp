@@ -8,6 +8,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string_view>
 
 namespace altfem {
@@ -27,6 +28,18 @@ public:
   /// Whether M is symmetric: every preconditioner but a one-way smoothing sweep. PCG and
   /// additive cycles need a symmetric one.
   virtual bool symmetric() const { return true; }
+  /// A value the largest eigenvalue of M⁻¹A is known to reach from M's structure alone
+  /// (0: nothing known), so that a smoother's bounds cover modes a Krylov estimate from a
+  /// random start can miss.
+  virtual double largest_eigenvalue_at_least() const { return 0; }
+  /// Whether compute_from_shares() is available.
+  virtual bool computes_from_shares() const { return false; }
+  /// Over several ranks, sets up from this rank's share of the matrix, the whole being the
+  /// sum of every rank's share (a solver that sums shares, PETSc: docs/scaling.md), so that
+  /// apply() then acts on whole vectors alike on every rank. Collective: every rank calls it.
+  virtual void compute_from_shares(const Eigen::SparseMatrix<double>& /*share*/) {
+    throw std::logic_error("this preconditioner cannot be set up from the ranks' shares of a matrix");
+  }
   /// result = M⁻ᵀ · residual: the post-smoothing of a symmetric V-cycle whose pre-smoothing
   /// is apply() (a Gauss–Seidel sweep run backwards); apply() itself when M is symmetric.
   virtual void apply_transpose(const Eigen::VectorXd& residual, Eigen::VectorXd& result) const {

@@ -77,6 +77,29 @@ TEST(AdditiveSchwarz, MatchesEquation13WithOverlappingBlocksAndDiagonalRest) {
   EXPECT_LT((dense(preconditioner, 12) - expected_schwarz(C, blocks, 1e-13)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
+// The structural bound a multigrid's Chebyshev smoother takes: DOF 3 lies in three blocks,
+// so e_3's Rayleigh quotient of S C (in C's inner product) is at least 3, and so is the
+// largest eigenvalue of S C. On one process the shares are the whole, and
+// compute_from_shares is compute.
+TEST(AdditiveSchwarz, LargestEigenvalueReachesTheMostBlocksHoldingOneDof) {
+  const Eigen::MatrixXd C = with_spectrum(Eigen::VectorXd::LinSpaced(12, 1.0, 30.0), 7);
+  const std::vector<std::vector<int>> blocks{{0, 1, 2, 3}, {3, 4, 5}, {2, 3, 6, 7}, {9, 8}};
+  AdditiveSchwarzPreconditioner preconditioner(blocks), from_shares(blocks);
+  preconditioner.compute(sparse(C));
+  from_shares.compute_from_shares(sparse(C));
+  EXPECT_EQ(preconditioner.largest_eigenvalue_at_least(), 3);
+  const Eigen::MatrixXd S = dense(preconditioner, 12);
+  EXPECT_EQ((dense(from_shares, 12) - S).cwiseAbs().maxCoeff(), 0.0);
+  const Eigen::VectorXd e = Eigen::VectorXd::Unit(12, 3);
+  EXPECT_GE((C * e).dot(S * C * e) / e.dot(C * e), 3 * (1 - 1e-12));
+  // S C is similar to the symmetric C^½ S C^½: its largest eigenvalue is real.
+  const Eigen::VectorXcd eigenvalues = Eigen::EigenSolver<Eigen::MatrixXd>(S * C).eigenvalues();
+  EXPECT_GE(eigenvalues.real().maxCoeff(), 3 * (1 - 1e-12));
+  AdditiveSchwarzPreconditioner disjoint({{0, 1}, {2, 3}});
+  disjoint.compute(sparse(C));
+  EXPECT_EQ(disjoint.largest_eigenvalue_at_least(), 1);
+}
+
 TEST(AdditiveSchwarz, DisjointBlocksCoveringEveryDofInvertABlockDiagonalMatrix) {
   // Block Jacobi (DG, one block per element): exact for a block-diagonal matrix.
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(7, 7);

@@ -65,7 +65,9 @@ StaticAnswer solve_static(const std::filesystem::path& file, const std::string& 
       EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
       // Every cut opens the surface the methods deform (a sweep's cuts too: each cuts the
       // surface from before the sweep, not the notch its last cut left).
-      if (record.facts.contains("surface")) EXPECT_EQ(record.facts["surface"]["pieces_left_whole"], 0) << next;
+      if (record.facts.contains("surface")) {
+        EXPECT_EQ(record.facts["surface"]["pieces_left_whole"], 0) << next;
+      }
     }
     simulation.integrator().step(simulation.state());
   }
