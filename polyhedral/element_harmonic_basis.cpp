@@ -279,6 +279,15 @@ ElementHarmonicBasis::ElementHarmonicBasis(const Polyhedron& element, std::span<
   fill_system();
   boundary_residual_ = solve_mfs_least_squares(augmented, c + 4, fill_system, coefficients_);
   restore_linear_precision((element.vertices.rowwise() - origin_.transpose()) / scale_);
+  key_contents();
+}
+
+void ElementHarmonicBasis::key_contents() {
+  BinaryWriter data("");
+  write(data);
+  CacheKeyHasher hasher;
+  hasher.bytes(data.bytes().data(), data.bytes().size());
+  content_key_ = hasher.value();
 }
 
 void ElementHarmonicBasis::restore_linear_precision(const Eigen::MatrixX3d& nodes) {
@@ -366,6 +375,7 @@ ElementHarmonicBasis ElementHarmonicBasis::reordered(const std::vector<int>& ord
   ElementHarmonicBasis result = *this;
   result.coefficients_ = coefficients_(Eigen::all, order);
   result.boundary_integrals_ = boundary_integrals_(order, Eigen::all);
+  result.key_contents();
   return result;
 }
 
@@ -376,6 +386,7 @@ ElementHarmonicBasis ElementHarmonicBasis::moved(const Eigen::Vector3d& from, co
   result.origin_ = to + factor * (origin_ - from);
   result.scale_ = factor * scale_;
   if (factor != 1) result.boundary_integrals_ *= factor * factor;
+  result.key_contents();
   return result;
 }
 
@@ -401,6 +412,7 @@ std::optional<ElementHarmonicBasis> ElementHarmonicBasis::read(BinaryReader& in)
   if (basis.coefficients_.rows() != basis.centres_.rows() + 4 || basis.boundary_integrals_.rows() != nodes ||
       basis.boundary_integrals_.cols() != 3)
     return std::nullopt;
+  basis.key_contents();
   return basis;
 }
 

@@ -61,11 +61,7 @@ std::uint64_t HarmonicBasisEvaluator::element_key(int cell) const {
   for (const int node : bases_.nodes(cell)) hasher.matrix(mesh_.nodes.row(node).eval());
   const std::optional<ElementType> plain = bases_.plain_type(cell);
   hasher.scalar<std::int32_t>(plain ? static_cast<std::int32_t>(*plain) : -1);
-  if (const ElementHarmonicBasis* mfs = bases_.mfs_basis(cell)) {
-    BinaryWriter data("");
-    mfs->write(data);
-    hasher.bytes(data.bytes().data(), data.bytes().size());
-  }
+  if (const ElementHarmonicBasis* mfs = bases_.mfs_basis(cell)) hasher.scalar(mfs->content_key());
   return hasher.value();
 }
 

@@ -20,6 +20,7 @@
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/structured_grid.hpp"
 #include "shared/scene/scene_geometry.hpp"
+#include "tests/unit/polyhedra.hpp"
 
 namespace altfem::harmonic {
 namespace {
@@ -52,6 +53,7 @@ void expect_identical(const HarmonicElementBases& a, const HarmonicElementBases&
     ASSERT_EQ(a.mfs_basis(cell) != nullptr, b.mfs_basis(cell) != nullptr);
     if (!a.mfs_basis(cell)) continue;
     const ElementHarmonicBasis &left = *a.mfs_basis(cell), &right = *b.mfs_basis(cell);
+    if (tolerance == 0) EXPECT_EQ(left.content_key(), right.content_key());
     expect_equal(left.centres(), right.centres());
     expect_equal(left.boundary_integrals(), right.boundary_integrals());
     EXPECT_NEAR(left.boundary_residual(), right.boundary_residual(), tolerance);
@@ -259,6 +261,33 @@ TEST(HarmonicElementBases, ScaledCopiesOfACellShareItsFitScaled) {
     EXPECT_EQ(bases.moved_bases(), factor == 3.0 ? 0 : cut.mesh.cell_count()) << "factor " << factor;
     expect_every_basis_its_own_fit(mesh, bases, options);
   }
+}
+
+// What an embedded point's holder is keyed by (HarmonicBasisEvaluator::element_key): the
+// hash of the basis's bytes, made once for a fitted, moved, reordered or read-back basis.
+TEST(ElementHarmonicBasis, ContentKeyIsTheHashOfItsBytes) {
+  const ElementHarmonicBasis fitted(test::box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), MfsOptions{});
+  std::vector<int> order(static_cast<size_t>(fitted.node_count()));
+  std::iota(order.rbegin(), order.rend(), 0);
+  const ElementHarmonicBasis moved = fitted.moved(Eigen::Vector3d::Zero(), Eigen::Vector3d(3, 0, 0), 2.0);
+  const ElementHarmonicBasis reordered = fitted.reordered(order);
+  BinaryWriter bytes("basis");
+  fitted.write(bytes);
+  BinaryReader reader(bytes.bytes(), "basis");
+  const std::optional<ElementHarmonicBasis> read = ElementHarmonicBasis::read(reader);
+  ASSERT_TRUE(read);
+  const auto hash_of_bytes = [](const ElementHarmonicBasis& basis) {
+    BinaryWriter data("");
+    basis.write(data);
+    CacheKeyHasher hasher;
+    hasher.bytes(data.bytes().data(), data.bytes().size());
+    return hasher.value();
+  };
+  for (const ElementHarmonicBasis* basis : {&fitted, &moved, &reordered, &*read})
+    EXPECT_EQ(basis->content_key(), hash_of_bytes(*basis));
+  EXPECT_EQ(read->content_key(), fitted.content_key());
+  EXPECT_NE(moved.content_key(), fitted.content_key());
+  EXPECT_NE(reordered.content_key(), fitted.content_key());
 }
 
 }  // namespace
