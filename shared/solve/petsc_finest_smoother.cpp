@@ -120,7 +120,8 @@ FinestLevelSmoother::FinestLevelSmoother(PreconditionerFactory factory, bool ove
   factory_ = nullptr;
 }
 
-PetscErrorCode FinestLevelSmoother::configure(PC pc, const std::string& petsc_options) const {
+PetscErrorCode FinestLevelSmoother::configure(PC pc, const std::string& petsc_options) {
+  bounds_chosen_ = petsc_options.find("ksp_chebyshev_e") != std::string::npos;
   if (!factory_ || petsc_options.find("pc_gamg_use_sa_esteig") != std::string::npos) return 0;
   PetscBool gamg = PETSC_FALSE;
   PetscCall(PetscObjectTypeCompare(reinterpret_cast<PetscObject>(pc), PCGAMG, &gamg));
@@ -157,7 +158,7 @@ PetscErrorCode FinestLevelSmoother::install(PC pc, const Eigen::SparseMatrix<dou
     context.residual.setZero(size);
     context.correction.setZero(size);
     if (over_ranks_) PetscCall(gather_to_all(smoother, context));
-    return set_chebyshev_bounds(smoother, shell, preconditioner_->largest_eigenvalue_at_least());
+    return bounds_chosen_ ? 0 : set_chebyshev_bounds(smoother, shell, preconditioner_->largest_eigenvalue_at_least());
   }
   auto* context = new ShellContext{preconditioner_.get(), &method_of_row_, Eigen::VectorXd::Zero(size),
                                    Eigen::VectorXd::Zero(size)};
@@ -167,7 +168,7 @@ PetscErrorCode FinestLevelSmoother::install(PC pc, const Eigen::SparseMatrix<dou
   PetscCall(PCShellSetApply(shell, apply_shell));
   PetscCall(PCShellSetDestroy(shell, destroy_shell));
   PetscCall(PCShellSetName(shell, "altfem's preconditioner of the method"));
-  return set_chebyshev_bounds(smoother, shell, preconditioner_->largest_eigenvalue_at_least());
+  return bounds_chosen_ ? 0 : set_chebyshev_bounds(smoother, shell, preconditioner_->largest_eigenvalue_at_least());
 }
 
 }  // namespace altfem

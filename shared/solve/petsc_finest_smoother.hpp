@@ -37,8 +37,10 @@ public:
   /// level's Chebyshev iteration estimates its own eigenvalue bounds, since the finest one
   /// must bound the spectrum the method's preconditioner leaves, not the Jacobi-smoothed
   /// one GAMG's aggregation estimates (97 iterations on the half-ball with those, 89 with
-  /// its own) — unless `petsc_options` choose (-pc_gamg_use_sa_esteig).
-  PetscErrorCode configure(PC pc, const std::string& petsc_options) const;
+  /// its own) — unless `petsc_options` choose (-pc_gamg_use_sa_esteig). install() then
+  /// bounds the finest level's Chebyshev iteration itself, unless the options choose its
+  /// bounds (-…ksp_chebyshev_esteig or -…ksp_chebyshev_eigenvalues).
+  PetscErrorCode configure(PC pc, const std::string& petsc_options);
 
   /// After every set-up of `pc` (a PCMG or PCGAMG; any other is left alone) on `matrix`
   /// (the method's numbering; over several ranks this rank's share when `matrix_is_share`,
@@ -51,6 +53,7 @@ public:
 
 private:
   bool over_ranks_ = false;
+  bool bounds_chosen_ = false;  // the options choose the Chebyshev bounds
   PreconditionerFactory factory_;
   std::unique_ptr<Preconditioner> preconditioner_;
   std::vector<Eigen::Index> method_of_row_;
