@@ -76,7 +76,7 @@ public:
   void write(BinaryWriter& out) const;
   /// What write wrote, or nullopt when it does not read back whole and consistent.
   static std::optional<ElementHarmonicBasis> read(BinaryReader& in);
-  /// A hash of what write writes, made once per basis: what an embedded point's holder is
+  /// A hash of what write writes (without its magic), made once per basis: what an embedded point's holder is
   /// keyed by (HarmonicBasisEvaluator::element_key) at every rebuild, which hashing the
   /// bases' bytes anew took 5% of a run of cuts.
   std::uint64_t content_key() const { return content_key_; }
