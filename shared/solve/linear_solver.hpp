@@ -73,8 +73,9 @@ struct LinearSolverOptions {
   /// conditions (#dofs × 6: the rigid-body modes, DOF 3b + i being component i of basis
   /// function b), which smoothed-aggregation AMG builds its coarse spaces from; empty for none.
   Eigen::MatrixXd near_null_space;
-  /// `petsc` on one process: `custom_preconditioner` (a method's own: FCM's Additive
-  /// Schwarz, dg's) as the smoother of multigrid's finest level (petsc_finest_smoother.hpp).
+  /// `petsc`: `custom_preconditioner` (a method's own: FCM's Additive Schwarz, dg's) as the
+  /// smoother of multigrid's finest level (petsc_finest_smoother.hpp); over several ranks
+  /// only one that can be set up from the ranks' shares (Preconditioner::compute_from_shares).
   bool method_smoother = true;
   /// `petsc`, when its preconditioner is GAMG: a coarser space of the
   /// method (Discretization::coarse_space) on which GAMG works as the coarse level of a
