@@ -16,6 +16,22 @@ namespace {
 
 #ifdef ALTFEM_HAVE_METIS
 
+// Whether every vertex is reached from the first through the graph's edges.
+bool connected(const PartitionGraph& graph, idx_t vertices) {
+  if (vertices == 0) return true;
+  std::vector<char> reached(static_cast<size_t>(vertices), 0);
+  std::vector<int> stack{0};
+  reached[0] = 1;
+  idx_t count = 1;
+  while (!stack.empty()) {
+    const int vertex = stack.back();
+    stack.pop_back();
+    for (long long k = graph.offsets[vertex]; k < graph.offsets[vertex + 1]; ++k)
+      if (const int next = graph.neighbours[k]; !reached[next]) reached[next] = 1, ++count, stack.push_back(next);
+  }
+  return count == vertices;
+}
+
 std::vector<int> metis_parts(const PartitionGraph& graph, const std::vector<double>& work, int parts) {
   idx_t vertices = static_cast<idx_t>(work.size()), constraints = 1, part_count = parts, cut = 0;
   std::vector<idx_t> offsets(graph.offsets.begin(), graph.offsets.end());
@@ -30,15 +46,11 @@ std::vector<int> metis_parts(const PartitionGraph& graph, const std::vector<doub
   idx_t options[METIS_NOPTIONS];
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_SEED] = 1;
-  options[METIS_OPTION_CONTIG] = 1;
-  int status = METIS_PartGraphKway(&vertices, &constraints, offsets.data(), neighbours.data(), weights.data(), nullptr,
-                                   nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
-  if (status != METIS_OK) {
-    // Contiguous parts need a connected graph: a body a cut has separated is not one.
-    options[METIS_OPTION_CONTIG] = 0;
-    status = METIS_PartGraphKway(&vertices, &constraints, offsets.data(), neighbours.data(), weights.data(), nullptr,
-                                 nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
-  }
+  // Contiguous parts need a connected graph: a body a cut has separated is not one (METIS
+  // would refuse it, printing an error).
+  options[METIS_OPTION_CONTIG] = connected(graph, vertices) ? 1 : 0;
+  const int status = METIS_PartGraphKway(&vertices, &constraints, offsets.data(), neighbours.data(), weights.data(),
+                                         nullptr, nullptr, &part_count, nullptr, nullptr, options, &cut, part.data());
   if (status != METIS_OK)
     throw std::runtime_error("METIS could not partition " + std::to_string(vertices) + " vertices into " +
                              std::to_string(parts) + " parts (status " + std::to_string(status) + ")");
