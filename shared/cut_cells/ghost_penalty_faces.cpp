@@ -71,34 +71,36 @@ FacePoint face_point(const std::vector<Eigen::Vector3d>& corners, double s, doub
 //   ∇_ξφ_a = Jᵀ g_a,   ∇_ξ²φ_a = Jᵀ Hₓφ_a J + Σ_m g_am ∇_ξ²x_m,
 // hence Hₓφ_a = J^{-T} (∇_ξ²φ_a − Σ_m g_am ∇_ξ²x_m) J^{-1} (the last term vanishes for
 // the affine maps of structured grids).
+// One side's basis at a point, with the work arrays it is computed in: made once per face,
+// so that its points allocate nothing.
 struct SideDerivatives {
+  explicit SideDerivatives(int n)
+      : values(n), gradients(n, 3), hessians(n, 9), reference_gradients(n, 3), reference_hessians(n, 9) {}
   Eigen::VectorXd values;
   Eigen::MatrixXd gradients, hessians;
+  Eigen::MatrixXd reference_gradients, reference_hessians;
 };
-SideDerivatives side_derivatives(const ReferenceElement& element, const Eigen::MatrixXd& nodes,
-                                 const Eigen::Vector3d& xi) {
+void side_derivatives(const ReferenceElement& element, const Eigen::MatrixXd& nodes, const Eigen::Vector3d& xi,
+                      SideDerivatives& side) {
   const int n = element.node_count();
-  SideDerivatives side{Eigen::VectorXd(n), Eigen::MatrixXd(n, 3), Eigen::MatrixXd(n, 9)};
-  Eigen::MatrixXd reference_gradients(n, 3), reference_hessians(n, 9);
   element.evaluate(xi, side.values);
-  element.evaluate_gradients(xi, reference_gradients);
-  element.evaluate_hessians(xi, reference_hessians);
-  const Eigen::Matrix3d jacobian = nodes.transpose() * reference_gradients;
+  element.evaluate_gradients(xi, side.reference_gradients);
+  element.evaluate_hessians(xi, side.reference_hessians);
+  const Eigen::Matrix3d jacobian = nodes.transpose() * side.reference_gradients;
   const Eigen::Matrix3d inverse = jacobian.inverse();
-  side.gradients = reference_gradients * inverse;
+  side.gradients.noalias() = side.reference_gradients * inverse;
   std::array<Eigen::Matrix3d, 3> map_hessians;  // ∇_ξ²x_m
   for (int m = 0; m < 3; ++m) {
-    const Eigen::Matrix<double, 1, 9> flat = nodes.col(m).transpose() * reference_hessians;
+    const Eigen::Matrix<double, 1, 9> flat = nodes.col(m).transpose() * side.reference_hessians;
     for (int c = 0; c < 9; ++c) map_hessians[m](c / 3, c % 3) = flat[c];
   }
   for (int a = 0; a < n; ++a) {
     Eigen::Matrix3d reference;
-    for (int c = 0; c < 9; ++c) reference(c / 3, c % 3) = reference_hessians(a, c);
+    for (int c = 0; c < 9; ++c) reference(c / 3, c % 3) = side.reference_hessians(a, c);
     for (int m = 0; m < 3; ++m) reference -= side.gradients(a, m) * map_hessians[m];
     const Eigen::Matrix3d physical = inverse.transpose() * reference * inverse;
     for (int c = 0; c < 9; ++c) side.hessians(a, c) = physical(c / 3, c % 3);
   }
-  return side;
 }
 
 Eigen::MatrixXd cell_nodes(const VolumeMesh& mesh, int cell) {
@@ -171,6 +173,7 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
     face.gradients_minus = Eigen::MatrixXd::Zero(points * n, 3), face.gradients_plus = face.gradients_minus;
     face.hessians_minus = Eigen::MatrixXd::Zero(degree < 2 ? 0 : points * n, 9),
     face.hessians_plus = face.hessians_minus;
+    SideDerivatives from_minus(n_cell), from_plus(n_cell);
     for (int q = 0; q < points; ++q) {
       const FacePoint point = face_point(corners, rule.points(q, 0), rule.points(q, 1));
       const Eigen::Vector3d x = map_to_physical(element, minus_nodes, point.xi);
@@ -185,8 +188,8 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
         failure.record(f);
         break;
       }
-      const SideDerivatives from_minus = side_derivatives(element, minus_nodes, point.xi);
-      const SideDerivatives from_plus = side_derivatives(element, plus_nodes, located.xi);
+      side_derivatives(element, minus_nodes, point.xi, from_minus);
+      side_derivatives(element, plus_nodes, located.xi, from_plus);
       for (int a = 0; a < n_cell; ++a) {
         const int b = plus_local[a];
         face.values_minus(q, a) = from_minus.values[a];
