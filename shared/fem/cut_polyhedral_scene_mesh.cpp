@@ -22,7 +22,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   }
   const MergedPieces merged = merge_small_pieces(pieces, minimum_volume);
   std::vector<NodeSource> node_sources = std::move(result_of_cut.node_sources);
-  if (!merged.kept_nodes.empty()) {
+  if (!merged.kept_nodes.empty() && !node_sources.empty()) {  // a surface blade's cut has none
     std::vector<NodeSource> kept;
     for (const int node : merged.kept_nodes) kept.push_back(node_sources[node]);
     node_sources = std::move(kept);

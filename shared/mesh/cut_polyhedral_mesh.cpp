@@ -9,6 +9,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/mesh/convex_cell.hpp"
+#include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/planar_loops.hpp"
@@ -22,8 +23,8 @@ constexpr double snap_fraction = 1e-13;
 
 class CutBuilder {
 public:
-  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry)
-      : mesh_(mesh), blade_(plane), piece_at_(plane.piece_at), compute_geometry_(compute_geometry) {
+  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry, const CutScope& scope)
+      : mesh_(mesh), blade_(plane), piece_at_(plane.piece_at), scope_(scope), compute_geometry_(compute_geometry) {
     nodes_.reserve(mesh.nodes.rows());
     for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
       nodes_.push_back(mesh.nodes.row(n));
@@ -48,6 +49,7 @@ public:
   PolyhedralCut build() {
     classify_cells();
     for (int face = 0; face < mesh_.face_count(); ++face) split_face(face);
+    if (scope_.action == CutAction::split) add_crossings_to_whole_faces();
     for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
       if (!crossed_[cell]) continue;
       if (!cap_covered_[cell]) {
@@ -89,6 +91,37 @@ private:
       }
     }
     return true;
+  }
+
+  // Whether the scope lets the blade split `cell`: a split step only splits the cells in its
+  // region, a separate step none.
+  bool in_scope(int cell) const {
+    if (!scope_.region) return true;
+    Eigen::AlignedBox3d box;
+    for (const int node : nodes_of(cell)) box.extend(nodes_[node]);
+    return box.intersects(*scope_.region);
+  }
+
+  // A split step's crossing nodes on the edges of faces it left whole (those of cells out
+  // of its region next to split ones), so that each such cell's faces still meet edge to
+  // edge; the cell keeps its volume and becomes of kind split.
+  void add_crossings_to_whole_faces() {
+    if (crossings_.empty()) return;
+    for (CutFace& face : faces_) {
+      if (!has_both_sides(face.loop)) continue;
+      std::vector<int> augmented;
+      for (std::size_t k = 0; k < face.loop.size(); ++k) {
+        const int u = face.loop[k], v = face.loop[(k + 1) % face.loop.size()];
+        augmented.push_back(u);
+        if (side_[u] * side_[v] >= 0) continue;
+        const auto found = crossings_.find(std::minmax(u, v));
+        if (found != crossings_.end()) augmented.push_back(found->second);
+      }
+      if (augmented.size() == face.loop.size()) continue;
+      face.loop = std::move(augmented);
+      for (const int piece_index : {face.first, face.second})
+        if (piece_index >= 0) touched_[parent_[piece_index]] = true;
+    }
   }
 
   // Per cell, whether the blade may cut it: every cell, or with `piece_at` the cells
@@ -136,10 +169,18 @@ private:
         positive |= side_[node] > 0;
         negative |= side_[node] < 0;
       }
-      reached[cell] = positive && negative && in_piece_[cell];
+      reached[cell] = positive && negative && in_piece_[cell] && scope_.action != CutAction::separate;
       cell_sigma_[cell] = negative && !positive ? -1 : +1;
-      if (reached[cell]) cap_covered_[cell] = covers_section(cell);
+      if (reached[cell] && scope_.action == CutAction::cut) cap_covered_[cell] = covers_section(cell);
+      // A split step's region is where it starts: it spreads to every cell joined to one
+      // there through faces the plane crosses with `spread`, else it splits only those.
+      if (reached[cell] && scope_.action == CutAction::split) {
+        const bool starts_here = in_scope(cell);
+        cap_covered_[cell] = scope_.spread && starts_here;
+        reached[cell] = scope_.spread || starts_here;
+      }
     }
+    touched_.assign(cells, false);
     for (int face = 0; face < mesh_.face_count(); ++face)
       if (mesh_.face_cells(face, 1) >= 0 && has_both_sides(mesh_.faces[face]))
         joined.join(mesh_.face_cells(face, 0), mesh_.face_cells(face, 1));
@@ -149,11 +190,15 @@ private:
     for (int cell = 0; cell < cells; ++cell) {
       first_piece_[cell] = static_cast<int>(parent_.size());
       parent_.push_back(cell);
-      crossed_[cell] = reached[cell] && covered_group[joined.find(cell)];
+      // A split step that does not spread splits every cell it reaches
+      // (add_crossings_to_whole_faces keeps the mesh conforming), its pieces joined.
+      crossed_[cell] =
+          reached[cell] && ((scope_.action == CutAction::split && !scope_.spread) || covered_group[joined.find(cell)]);
       if (!crossed_[cell]) continue;
       convex_[cell] = is_convex_cell(mesh_, cell, nodes_of(cell));
       parent_.push_back(cell);
       ++crossed_count_;
+      if (scope_.action == CutAction::split) cap_covered_[cell] = false;  // its pieces stay joined
       if (!cap_covered_[cell]) ++joined_count_;
     }
     cap_edges_.resize(parent_.size());
@@ -202,7 +247,15 @@ private:
     return loop_area_vector(loop, nodes_).dot(blade_.normal) > 0 ? -1 : +1;
   }
 
+  // Whether the blade separates a face in its plane: all its nodes covered, or for a
+  // separate step (whose faces lie inside the blade or outside it, split by its edges'
+  // planes before) its centroid, which rounding does not put on the blade's edge.
   bool covers_face(const std::vector<int>& loop) const {
+    if (scope_.action == CutAction::separate) {
+      Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+      for (const int node : loop) centroid += nodes_[node];
+      return blade_.covers(centroid / static_cast<double>(loop.size()));
+    }
     return std::all_of(loop.begin(), loop.end(), [&](int node) { return blade_.covers(nodes_[node]); });
   }
 
@@ -226,7 +279,7 @@ private:
     if (!positive && !negative) {  // in the plane: an interior face the blade covers separates
       const std::vector<int> reversed(loop.rbegin(), loop.rend());
       const int sigma0 = in_plane_sigma(cell0, loop), sigma1 = in_plane_sigma(cell1, reversed);
-      if (cell1 >= 0 && in_piece_[cell0] && covers_face(loop)) {
+      if (cell1 >= 0 && in_piece_[cell0] && scope_.action != CutAction::split && covers_face(loop)) {
         ++separated_;
         add_face(loop, cell0, -1, sigma0, sigma0, true);
         add_face(reversed, cell1, -1, sigma1, sigma1, true);
@@ -235,7 +288,7 @@ private:
       }
       return;
     }
-    if (!(positive && negative) || !crossed_[cell0]) {
+    if (!(positive && negative) || !(crossed_[cell0] || (cell1 >= 0 && crossed_[cell1]))) {
       const int sigma = negative && !positive ? -1 : +1;
       add_face(loop, cell0, cell1, sigma, sigma);
       return;
@@ -326,6 +379,7 @@ private:
   // the plane (an earlier cut's slivers left out make such meshes).
   std::vector<bool> opened_nodes() const {
     std::vector<bool> opened_node(nodes_.size(), false);
+    if (scope_.action == CutAction::split) return opened_node;
     std::vector<int> sides_using(nodes_.size(), 0);  // bit 1: positive, bit 2: negative
     for (const CutFace& face : faces_)
       for (const int node : face.loop) {
@@ -368,7 +422,9 @@ private:
     }
     for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index) {
       const int cell = parent_[piece_index];
-      result.cell_kinds.push_back(!crossed_[cell] ? mesh_.cell_kinds[cell]
+      const PolyhedralCellKind kind = mesh_.cell_kinds[cell];
+      result.cell_kinds.push_back(!crossed_[cell]
+                                      ? (touched_[cell] && convex_kind(kind) ? PolyhedralCellKind::split : kind)
                                   : convex_[cell] ? PolyhedralCellKind::split
                                                   : PolyhedralCellKind::cut);
     }
@@ -398,6 +454,8 @@ private:
   const PolyhedralMesh& mesh_;
   const ExactBlade blade_;
   const std::optional<Eigen::Vector3d> piece_at_;
+  const CutScope scope_;
+  std::vector<bool> touched_;           ///< per input cell left whole: a split step added crossing nodes to its faces
   std::vector<bool> in_piece_;          ///< per input cell: the blade may cut it (piece_at)
   std::vector<Eigen::Vector3d> nodes_;  ///< the input's, then the crossing nodes, then the copies
   std::vector<NodeSource> sources_;     ///< per node of nodes_
@@ -418,8 +476,10 @@ private:
 
 }  // namespace
 
-PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry) {
-  return CutBuilder(mesh, plane, compute_geometry).build();
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry,
+                                  const CutScope& scope) {
+  if (plane.surface) return cut_polyhedral_mesh_by_surface(mesh, *plane.surface, compute_geometry);
+  return CutBuilder(mesh, plane, compute_geometry, scope).build();
 }
 
 }  // namespace altfem

@@ -13,6 +13,8 @@
 // nodes, along edges or in faces is an ordinary case; a node a few hundred ulps off the
 // blade is taken on it, so that no piece is thinner than that.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <optional>
 #include <vector>
 
 #include "shared/mesh/cutting_plane.hpp"
@@ -42,6 +44,26 @@ struct PolyhedralCut {
   int merged_pieces = 0;                 ///< pieces without a positive rounded volume, merged into a neighbour
 };
 
+/// What a cut does. A surface blade (cut_by_surface.hpp) is the steps `split` and `separate`
+/// per triangle, so that what it separates is exactly its triangles.
+enum class CutAction {
+  cut,       ///< split the cells the plane crosses, separate what the blade covers (above)
+  split,     ///< split the crossed cells in `region` into pieces that stay joined; separate nothing
+  separate,  ///< split nothing; separate the interior faces in the plane whose centroid the blade covers
+};
+
+struct CutScope {
+  CutAction action = CutAction::cut;
+  /// split: only the cells whose bounding box meets this box (unset: every cell). A face of
+  /// a cell left whole gets the crossing nodes of its edges (kind split), so the mesh stays
+  /// conforming.
+  std::optional<Eigen::AlignedBox3d> region;
+  /// split: also every cell joined to one in `region` through faces the plane crosses, so
+  /// that no cell left whole has a face split (a convex fragment's tetrahedra need that:
+  /// cut_tetrahedral_mesh).
+  bool spread = false;
+};
+
 /// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);
 /// a crossed non-convex one becomes the connected parts of each side (kind cut): a face
 /// falls into as many polygons as the plane leaves of it, a section into as many caps.
@@ -53,6 +75,8 @@ struct PolyhedralCut {
 /// Without `compute_geometry` the cut mesh's geometry arrays stay empty, and a piece too thin for its rounded volume to
 /// be positive is the caller's to handle (cut_tetrahedral_mesh); with it, such a piece is merged into the cell across
 /// its largest interior face (merge_pieces_without_volume; NumericalError when it has none).
-PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true);
+/// A blade with a `surface` is cut_polyhedral_mesh_by_surface's (`scope` is for planes only).
+PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry = true,
+                                  const CutScope& scope = {});
 
 }  // namespace altfem

@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/cut_surface_pieces.hpp"
 #include "shared/mesh/mesh_components.hpp"
@@ -91,6 +92,16 @@ bool clearly_separates(const SurfaceMesh& surface, const std::vector<int>& trian
   return below < -snapped && above > snapped;
 }
 
+// Whether the bounding boxes of the piece made of `triangles` and of the blade meet: only
+// then may the blade cross the piece (corefinement finds whether it does).
+bool meets_bounds(const SurfaceMesh& surface, const std::vector<int>& triangles, const SurfaceBlade& blade) {
+  Eigen::AlignedBox3d piece_bounds, blade_bounds;
+  for (const int t : triangles)
+    for (int k = 0; k < 3; ++k) piece_bounds.extend(Eigen::Vector3d(surface.vertices.row(surface.triangles(t, k))));
+  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v) blade_bounds.extend(Eigen::Vector3d(blade.vertices.row(v)));
+  return piece_bounds.intersects(blade_bounds);
+}
+
 // What corefinement cannot cut: a piece whose earlier caps lie on one another (a notch) or
 // cross its sides. It stays so, since no later cut changes a piece it leaves whole.
 struct SelfIntersectingPiece : std::runtime_error {
@@ -139,6 +150,11 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
   // included (and no test of them, a third of the pencil's cut surface, is made). A
   // polygon over the whole section is split alike: corefinement left the two sides of a
   // box cut through by a square joined, neither closed.
+  // A surface blade goes through corefinement, whose precondition is below.
+  if (blades.front()->surface) {
+    if (marked_intersecting || PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
+    return surface_cut::cut_piece_by_surface_blade(piece, *blades.front()->surface, edge_length, out);
+  }
   for (std::size_t b = 0; b < blades.size(); ++b)
     if (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b])) {
       if (blades.size() > 1) throw NotAtOnce();
@@ -158,7 +174,8 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
 SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingPlane>& blades,
                           bool spanning_only = false) {
   std::vector<ExactBlade> exact;
-  for (const CuttingPlane& blade : blades) exact.emplace_back(blade);
+  // A surface blade (only ever cut on its own) decides no side itself: corefinement does.
+  for (const CuttingPlane& blade : blades) exact.emplace_back(blade.surface ? CuttingPlane() : blade);
   const std::vector<int> piece_of = surface_vertex_pieces(surface);
   std::map<int, std::vector<int>> triangles_of;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t)
@@ -183,10 +200,15 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
     std::vector<const CuttingPlane*> crossing;
     std::vector<const ExactBlade*> crossing_exact;
     for (std::size_t b = 0; b < blades.size(); ++b)
-      if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b]) &&
-          (blades.size() == 1 || clearly_separates(surface, triangles, blades[b])) &&
-          (!spanning_only ||
-           (crossing.empty() && (blades[b].polygon.empty() || covers_section(surface, triangles, exact[b]))))) {
+      if (blades[b].surface) {
+        if (meets_bounds(surface, triangles, *blades[b].surface)) {
+          crossing.push_back(&blades[b]);
+          crossing_exact.push_back(&exact[b]);
+        }
+      } else if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b]) &&
+                 (blades.size() == 1 || clearly_separates(surface, triangles, blades[b])) &&
+                 (!spanning_only ||
+                  (crossing.empty() && (blades[b].polygon.empty() || covers_section(surface, triangles, exact[b]))))) {
         crossing.push_back(&blades[b]);
         crossing_exact.push_back(&exact[b]);
       }
@@ -297,6 +319,12 @@ SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>&
 
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   SurfaceCut result = cut_surface_by(surface, {blade});
+  // A surface blade is not cut again with later blades: a piece it notched and a later
+  // blade meets stays whole (counted).
+  if (blade.surface) {
+    result.surface.cut_record.reset();
+    return result;
+  }
   // A blade that changes nothing (one that misses the body) keeps the record as it is.
   if (result.facts["cap_triangles"].get<int>() == 0 && result.facts["pieces_left_whole"].get<int>() == 0) return result;
   // A piece an earlier finite blade notched has its caps on one another, where

@@ -5,9 +5,11 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
+#include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_surface_pieces.hpp"
 
 namespace altfem::surface_cut {
@@ -77,24 +79,21 @@ void renumber_by_position(Mesh& mesh) {
   mesh = std::move(sorted);
 }
 
-}  // namespace
+// The plane a cap's face lies in: a polygon blade's, or (a surface blade's cap, whose faces
+// are parts of its triangles) the face's own.
+using CapPlane = std::function<CuttingPlane(std::size_t cap, const Mesh& mesh, Mesh::Face_index face)>;
 
-void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
-                           CutPieces& out) {
-  // The piece split along the curves where the blades cross it (its vertices there
-  // duplicated, one copy per side), and each blade clipped to the body: its cap.
-  Mesh splitter;
-  std::vector<Mesh> caps;
-  for (const CuttingPlane* blade : blades) {
-    caps.push_back(blade_triangles(*blade));
-    CGAL::copy_face_graph(caps.back(), splitter);
-  }
-  // Blades that meet one another (inside the body or beyond it) would make the splitter
-  // intersect itself, which corefinement does not take.
-  if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
+// `piece` split by `splitter` (its vertices on the cut curves duplicated, one copy per
+// side) and each of `caps` clipped to the body, appended to `out` with a copy of each cap
+// per side. A bent cap (a surface blade's) keeps its triangles and may miss the piece:
+// then this returns false, appending nothing.
+bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const CapPlane& plane_of, bool planar_caps,
+                       double edge_length, CutPieces& out) {
   Mesh clipper = piece;  // the body before the split, for the caps (clip leaves it as it is)
+  const std::size_t vertices_before = piece.number_of_vertices();
   PMP::split(piece, splitter);
   piece.collect_garbage();
+  if (!planar_caps && piece.number_of_vertices() == vertices_before) return false;
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
   renumber_by_position(piece);
@@ -103,8 +102,10 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
     cap.collect_garbage();
     PMP::triangulate_faces(cap);
     renumber_by_position(cap);
-    cut_curve::remesh_cap(
-        cap, [](Mesh::Face_index) { return true; }, edge_length);
+    // A planar cap is remeshed in its plane; a bent one keeps the blade's triangles.
+    if (planar_caps)
+      cut_curve::remesh_cap(
+          cap, [](Mesh::Face_index) { return true; }, edge_length);
   }
 
   // The piece's vertices: the input's, then its new ones (the curve's copies).
@@ -156,13 +157,13 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
         return curve;
     return copies_at.end();
   };
-  const auto cap_vertex = [&](const Mesh& cap, Mesh::Vertex_index v, const CuttingPlane& blade, int side) {
+  const auto cap_vertex = [&](const Mesh& cap, Mesh::Vertex_index v, const CuttingPlane& plane, int side) {
     const Point& p = cap.point(v);
     const bool on_border = cap.is_border(v);
     if (const auto found = copies_of(p, on_border); found != copies_at.end()) {
       const auto& copies = found->second;
       const auto best = std::max_element(copies.begin(), copies.end(), [&](const auto& a, const auto& b) {
-        return side * farthest(a.second, blade) < side * farthest(b.second, blade);
+        return side * farthest(a.second, plane) < side * farthest(b.second, plane);
       });
       out.cut_vertices.push_back(best->first);
       return best->first;
@@ -186,17 +187,58 @@ void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& 
   }
   // A cap per side, facing away from its side's material: the blade's fan turns about its
   // normal, so the positive side's cap is turned over.
-  for (std::size_t b = 0; b < blades.size(); ++b)
+  for (std::size_t b = 0; b < caps.size(); ++b)
     for (const int side : {+1, -1})
       for (const Mesh::Face_index f : caps[b].faces()) {
+        const CuttingPlane plane = plane_of(b, caps[b], f);
         std::array<int, 3> triangle;
         int k = 0;
         for (const Mesh::Vertex_index v : CGAL::vertices_around_face(caps[b].halfedge(f), caps[b]))
-          triangle[k++] = cap_vertex(caps[b], v, *blades[b], side);
+          triangle[k++] = cap_vertex(caps[b], v, plane, side);
         if (side > 0) std::swap(triangle[1], triangle[2]);
         out.triangles.push_back(triangle);
         ++out.cap_triangles;
       }
+  return true;
+}
+
+}  // namespace
+
+void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
+                           CutPieces& out) {
+  // Each blade's polygon, clipped to the body, is its cap.
+  Mesh splitter;
+  std::vector<Mesh> caps;
+  for (const CuttingPlane* blade : blades) {
+    caps.push_back(blade_triangles(*blade));
+    CGAL::copy_face_graph(caps.back(), splitter);
+  }
+  // Blades that meet one another (inside the body or beyond it) would make the splitter
+  // intersect itself, which corefinement does not take.
+  if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
+  cut_piece_by_caps(
+      piece, splitter, std::move(caps), [&](std::size_t cap, const Mesh&, Mesh::Face_index) { return *blades[cap]; },
+      true, edge_length, out);
+}
+
+bool cut_piece_by_surface_blade(Mesh& piece, const SurfaceBlade& blade, double edge_length, CutPieces& out) {
+  // The blade, one mesh (it does not intersect itself: its reader checked), is the
+  // splitter and, clipped to the body, the cap.
+  Mesh splitter;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v)
+    vertices.push_back(splitter.add_vertex(point_of(blade.vertices.row(v).transpose())));
+  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t)
+    splitter.add_face(vertices[blade.triangles(t, 0)], vertices[blade.triangles(t, 1)],
+                      vertices[blade.triangles(t, 2)]);
+  const auto face_plane = [](std::size_t, const Mesh& cap, Mesh::Face_index face) {
+    std::array<Eigen::Vector3d, 3> corners;
+    int k = 0;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(cap.halfedge(face), cap))
+      corners[k++] = vector_of(cap.point(v));
+    return CuttingPlane(corners[0], (corners[1] - corners[0]).cross(corners[2] - corners[0]));
+  };
+  return cut_piece_by_caps(piece, splitter, {splitter}, face_plane, false, edge_length, out);
 }
 
 }  // namespace altfem::surface_cut

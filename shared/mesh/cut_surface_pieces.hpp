@@ -37,4 +37,10 @@ bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_
 void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
                            CutPieces& out);
 
+/// The closed, self-intersection-free `piece` cut by the triangulated `blade` (one
+/// corefinement; its caps keep the blade's triangles clipped to the body, a vertex where
+/// the blade bends one copy per side), appended to `out`; false, appending nothing, when
+/// the blade does not cross the piece. `piece` is split in the process.
+bool cut_piece_by_surface_blade(Mesh& piece, const SurfaceBlade& blade, double edge_length, CutPieces& out);
+
 }  // namespace altfem::surface_cut

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "shared/geometry/exact_orientation.hpp"
+#include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 
 namespace altfem {
@@ -216,12 +217,14 @@ int FragmentedTetrahedra::fragment_count() const {
   return fragments.cell_count() > 0 ? fragments.cell_count() : static_cast<int>(mesh.cells.rows());
 }
 
-TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane) {
+TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane,
+                                    const CutScope& scope) {
   if (input.mesh.element_type != ElementType::tet4)
     throw std::invalid_argument("cut_tetrahedral_mesh: the mesh must be of Tet4 cells");
+  if (plane.surface) return cut_tetrahedral_mesh_by_surface(input, *plane.surface);
   TetrahedralCut result;
   const CutInput fragments = cut_input(input, result.flat_tetrahedra);
-  PolyhedralCut cut = cut_polyhedral_mesh(fragments.mesh(), plane, false);
+  PolyhedralCut cut = cut_polyhedral_mesh(fragments.mesh(), plane, false, scope);
   result.crossed_fragments = cut.crossed_cells;
   result.joined_fragments = cut.joined_cells;
   result.separated_faces = cut.separated_faces;
@@ -248,6 +251,34 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
   }
   output.mesh = tetrahedra_of_rows(cut.mesh.nodes, rows);
   output.fragments = std::move(cut.mesh);
+  return result;
+}
+
+TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input, const SurfaceBlade& blade) {
+  TetrahedralCut result;
+  result.result = input;
+  result.parent_fragment.resize(static_cast<std::size_t>(input.fragment_count()));
+  std::iota(result.parent_fragment.begin(), result.parent_fragment.end(), 0);
+  Eigen::AlignedBox3d bounds;
+  for (Eigen::Index node = 0; node < input.mesh.nodes.rows(); ++node)
+    bounds.extend(input.mesh.nodes.row(node).transpose());
+  for (auto& [plane, scope] : surface_blade_steps(blade)) {
+    if (scope.region && !scope.region->intersects(bounds)) continue;
+    // A fragment left whole keeps its faces: a face split for one side only would hold a
+    // node in the middle of an edge of the other's, which no fan of its faces conforms to.
+    scope.spread = true;
+    TetrahedralCut step = cut_tetrahedral_mesh(result.result, plane, scope);
+    for (int& parent : step.parent_fragment) parent = result.parent_fragment[parent];
+    result.result = std::move(step.result);
+    result.parent_fragment = std::move(step.parent_fragment);
+    result.separated_faces += step.separated_faces;
+    result.duplicated_nodes += step.duplicated_nodes;
+    result.snapped_nodes += step.snapped_nodes;
+    result.flat_tetrahedra += step.flat_tetrahedra;
+  }
+  std::vector<int> pieces_of(static_cast<std::size_t>(input.fragment_count()), 0);
+  for (const int parent : result.parent_fragment) ++pieces_of[parent];
+  for (const int pieces : pieces_of) result.crossed_fragments += pieces > 1 ? 1 : 0;
   return result;
 }
 

@@ -59,10 +59,18 @@ struct TetrahedralCut {
 /// lies on, so every face is fanned from its first node). Its slivers are left out.
 FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells);
 
-/// Cuts `input` by `plane`. A fragment the plane does not cross keeps its tetrahedra (each
-/// corner taken as the copy this fragment holds, for a node on the blade); a crossed one
-/// becomes the tetrahedra of its two pieces. Throws std::invalid_argument for another
-/// element type or a zero normal.
-TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane);
+/// Cuts `input` by `plane` (with `scope`, one step of a surface blade's: CutScope). A
+/// fragment the plane does not cross keeps its tetrahedra (each corner taken as the copy
+/// this fragment holds, for a node on the blade); a crossed one becomes the tetrahedra of
+/// its two pieces. A split step must spread (CutScope::spread). Throws
+/// std::invalid_argument for another element type or a zero normal. A blade with a
+/// `surface` is cut_tetrahedral_mesh_by_surface's.
+TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane,
+                                    const CutScope& scope = {});
+
+/// `input` cut by every step of `blade` (cut_by_surface.hpp): its parent fragments are
+/// `input`'s, its node sources empty, its counts the steps' summed (crossed_fragments:
+/// fragments of `input` now in several).
+TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input, const SurfaceBlade& blade);
 
 }  // namespace altfem

@@ -1,13 +1,17 @@
 #pragma once
-// A planar blade: what a scene's `cut` event holds and what the meshes are cut by — the
-// whole plane, or a convex polygon in it (a finite blade: partial cuts and notches).
+// A blade: what a scene's `cut` event holds and what the meshes are cut by — the whole
+// plane, a convex polygon in it (a finite blade: partial cuts and notches), or a
+// triangulated surface (cut_by_surface.hpp).
 #include <Eigen/Core>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace altfem {
+
+struct SurfaceBlade;
 
 /// The plane through `point` with normal `normal` (not necessarily unit, non-zero). Its
 /// positive side is where `normal` points. With `polygon` non-empty the blade is that
@@ -29,6 +33,9 @@ struct CuttingPlane {
   /// not sweep. A sweep's later blades cover its earlier ones (swept_blade), so cut_surface
   /// cuts the surface from before the sweep again rather than the one it notched.
   std::string sweep;
+  /// When set, the blade is this triangulated surface (a cut event's `surface` file), not
+  /// the plane: the cuts take it triangle by triangle (cut_by_surface.hpp).
+  std::shared_ptr<const SurfaceBlade> surface;
 };
 
 /// The blade of the polygon `corners`: its plane through the first corner with the

@@ -46,8 +46,10 @@ inline Eigen::MatrixXd embedding_points(const SurfaceMesh& surface) {
 /// fixed with a warning) or a non-manifold error; closed; polygons triangulated; no
 /// degenerate faces; no self-intersections; outward orientation (an inward surface is
 /// flipped with a warning). Warnings ("path: what", one line each) are appended to
-/// `warnings` if given. Throws InputError "path: what".
-SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr);
+/// `warnings` if given. Throws InputError "path: what". Without `closed` (a blade's surface)
+/// the surface may have boundary edges, and its orientation is the file's.
+SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings = nullptr,
+                         bool closed = true);
 
 /// Enclosed volume by the divergence theorem (positive for outward orientation).
 double surface_volume(const SurfaceMesh& surface);

@@ -36,8 +36,8 @@ using Polygon = std::vector<std::size_t>;
 
 class SurfaceReader {
 public:
-  SurfaceReader(const std::filesystem::path& path, std::vector<std::string>* warnings)
-      : path_(path), name_(path.string()), warnings_(warnings) {}
+  SurfaceReader(const std::filesystem::path& path, std::vector<std::string>* warnings, bool closed)
+      : path_(path), name_(path.string()), warnings_(warnings), closed_(closed) {}
 
   SurfaceMesh read() {
     const std::string extension = lowercase_extension(path_);
@@ -97,7 +97,7 @@ private:
     std::size_t border_edges = 0;
     for (const auto halfedge : mesh.halfedges())
       if (mesh.is_border(halfedge)) ++border_edges;
-    if (border_edges > 0 || !CGAL::is_closed(mesh))
+    if (closed_ && (border_edges > 0 || !CGAL::is_closed(mesh)))
       fail("the surface is not closed (" + std::to_string(border_edges) + " boundary edges)");
     if (!PMP::triangulate_faces(mesh)) fail("a polygonal face could not be triangulated");
     for (const auto face : mesh.faces())
@@ -109,7 +109,7 @@ private:
       fail("the surface intersects itself (" + std::to_string(pairs.size()) + " pairs of faces, e.g. faces " +
            std::to_string(pairs.front().first.idx()) + " and " + std::to_string(pairs.front().second.idx()) + ")");
     }
-    if (!PMP::is_outward_oriented(mesh)) {
+    if (closed_ && !PMP::is_outward_oriented(mesh)) {
       PMP::reverse_face_orientations(mesh);
       warn("the surface was oriented inward; its faces have been flipped");
     }
@@ -134,15 +134,16 @@ private:
   std::filesystem::path path_;
   std::string name_;
   std::vector<std::string>* warnings_;
+  bool closed_;  ///< a body's surface (closed, outward), not a blade's (open or closed)
   std::vector<Point> points_;
   std::vector<Polygon> polygons_;
 };
 
 }  // namespace
 
-SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings) {
+SurfaceMesh read_surface(const std::filesystem::path& path, std::vector<std::string>* warnings, bool closed) {
   try {
-    return SurfaceReader(path, warnings).read();
+    return SurfaceReader(path, warnings, closed).read();
   } catch (const CGAL::Failure_exception& failure) {
     // CGAL's messages span several lines; the first names the violated condition.
     std::string what = failure.what();

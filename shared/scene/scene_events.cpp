@@ -5,6 +5,9 @@
 #include <map>
 #include <string>
 
+#include "shared/common/error.hpp"
+#include "shared/mesh/cut_by_surface.hpp"
+#include "shared/mesh/surface_mesh.hpp"
 #include "shared/scene/scene_shape.hpp"
 
 namespace altfem {
@@ -18,10 +21,18 @@ int condition_named(const nlohmann::json& conditions, const std::string& name) {
   return -1;
 }
 
-// A cut event's blade: its plane, or its polygon (already checked by check_cut_blade).
+// A blade surface file's triangles (an open surface, or a closed one).
+std::shared_ptr<const SurfaceBlade> read_blade_surface(const std::string& path) {
+  SurfaceMesh surface = read_surface(path, nullptr, false);
+  return std::make_shared<const SurfaceBlade>(SurfaceBlade{std::move(surface.vertices), std::move(surface.triangles)});
+}
+
+// A cut event's blade: its plane, its polygon or its surface (already checked by check_cut_blade).
 CuttingPlane blade_from_json(const nlohmann::json& cut) {
   CuttingPlane blade;
-  if (cut.contains("plane")) {
+  if (cut.contains("surface")) {
+    blade.surface = read_blade_surface(cut["surface"].get<std::string>());
+  } else if (cut.contains("plane")) {
     blade.point = vector3_from_json(cut["plane"]["point"]);
     blade.normal = vector3_from_json(cut["plane"]["normal"]);
   } else {
@@ -101,6 +112,20 @@ namespace scene_schema {
 using nlohmann::json;
 
 void check_cut_blade(const Validator& validator, const json&, json& resolved, const std::string& pointer) {
+  if (resolved.contains("surface")) {
+    for (const char* key : {"sweep", "piece_at"})
+      if (resolved.contains(key))
+        validator.fail(pointer + "/" + key,
+                       "a surface blade cuts where its triangles are: give a plane or a polygon "
+                       "for a " +
+                           std::string(key));
+    try {
+      read_blade_surface(resolved["surface"].get<std::string>());
+    } catch (const InputError& error) {
+      validator.fail(pointer + "/surface", "expected a triangulated blade surface: " + std::string(error.what()));
+    }
+    return;
+  }
   if (!resolved.contains("polygon")) {
     if (resolved.contains("sweep"))
       validator.fail(pointer + "/sweep", "a sweep moves a finite blade: give a polygon, not a plane");

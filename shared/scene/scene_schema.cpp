@@ -327,6 +327,7 @@ const ObjectRule cut_sweep{{{.key = "to_time", .type = ValueType::number, .requi
                             {.key = "substeps", .type = ValueType::integer, .lower = at_least_one}}};
 const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object = &region_half_space},
                             {.key = "polygon", .type = ValueType::any},
+                            {.key = "surface", .type = ValueType::path, .choices = {".off", ".obj", ".stl", ".ply"}},
                             {.key = "sweep", .type = ValueType::object, .object = &cut_sweep},
                             {.key = "piece_at", .type = ValueType::vector3},
                             {.key = "merge_fraction",
@@ -334,7 +335,7 @@ const ObjectRule cut_event{{{.key = "plane", .type = ValueType::object, .object 
                              .default_value = 1e-3,
                              .lower = non_negative,
                              .upper = Bound{1.0, false}}},
-                           {{"plane", "polygon"}},
+                           {{"plane", "polygon", "surface"}},
                            {},
                            {},
                            false,

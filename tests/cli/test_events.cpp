@@ -138,5 +138,33 @@ TEST(Events, ACutIsSummarisedAndAMethodThatCannotCutRefusesIt) {
   }
 }
 
+// A blade read from a surface file cuts as the scene says; a file that is not there, or a
+// sweep of it, is one line of bad input naming the key, before anything is written.
+TEST(Events, ASurfaceBladeCutsAndABadOneIsRefusedBeforeTheRun) {
+  const std::string scene = source_path("tests/verify/events/scenes/cantilever_cut.json").string();
+  const auto out = fresh_directory("events-cut-surface") / "run";
+  const auto cut = run_altfem({"run", scene, "--method", "dg", "--out", out.string(), "--set",
+                               R"(events=[{"time": 0.02, "cut": {"surface": "v_blade.obj"}}])"});
+  ASSERT_EQ(cut.exit_code, 0) << cut.err;
+  const nlohmann::json event = read_summary(out)["events"][0];
+  EXPECT_EQ(event["kind"], "cut");
+  EXPECT_EQ(event["facts"]["crossed_cells"], 2);  // the V crosses dg's cells [0.6, 0.7] and [0.7, 0.8]
+  EXPECT_GT(event["facts"]["duplicated_nodes"].get<int>(), 0);
+  const std::vector<std::pair<std::string, std::string>> refusals = {
+      {R"({"surface": "no_such_blade.obj"})", "/events/0/cut/surface: expected a triangulated blade surface"},
+      {R"({"surface": "v_blade.obj", "sweep": {"to_time": 0.04, "translation": [0, 0, 0.1]}})",
+       "/events/0/cut/sweep: a surface blade"}};
+  for (const auto& [blade, message] : refusals) {
+    const auto refused_out = fresh_directory("events-cut-surface-refused") / "run";
+    const auto refused = run_altfem({"run", scene, "--method", "dg", "--out", refused_out.string(), "--set",
+                                     R"(events=[{"time": 0.02, "cut": )" + blade + "}]"});
+    EXPECT_EQ(refused.exit_code, 2) << refused.err;
+    const auto lines = lines_of(refused.err);
+    ASSERT_EQ(lines.size(), 1u) << refused.err;
+    EXPECT_NE(lines[0].find(message), std::string::npos) << lines[0];
+    EXPECT_FALSE(std::filesystem::exists(refused_out)) << "bad input wrote output";
+  }
+}
+
 }  // namespace
 }  // namespace altfem::test

@@ -1,7 +1,7 @@
 #pragma once
 // The mass and vertical momentum of what lies beyond a blade, by the method's volume
 // rule: a piece's interior points lie strictly on its side, so the points beyond the
-// plane are the cut-off piece's. What the free-fall checks of the cut tests compare.
+// plane (or within a bent blade's wedge) are the cut-off piece's. What the free-fall checks of the cut tests compare.
 #include <Eigen/Core>
 #include <optional>
 
@@ -14,9 +14,9 @@ struct PieceMomentum {
   double momentum_z = 0;  ///< ∫ρ v_z dV beyond the blade [kg m/s]
 };
 
-/// Over the volume rule's points on the side of the plane (point, normal) that `normal` points to.
-inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::Vector3d& point,
-                                     const Eigen::Vector3d& normal, double density) {
+/// Over the volume rule's points where `inside` holds.
+template <typename Inside>
+PieceMomentum momentum_where(const Simulation& simulation, const Inside& inside, double density) {
   const std::optional<FieldQuadrature> quadrature = simulation.method().field_quadrature(0);
   const TabulatedElements& elements = *quadrature->elements;
   const Eigen::VectorXd& velocity = simulation.state().velocity;
@@ -25,7 +25,7 @@ inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::
   for (int e = 0; e < elements.size(); ++e) {
     const ElementView element = elements[e];
     for (int q = 0; q < element.point_count(); ++q, ++row) {
-      if ((quadrature->points.row(row).transpose() - point).dot(normal) <= 0) continue;
+      if (!inside(Eigen::Vector3d(quadrature->points.row(row).transpose()))) continue;
       double v_z = 0;
       for (int a = 0; a < element.basis_count(); ++a)
         v_z += element.values(q, a) * velocity[3 * static_cast<Eigen::Index>(element.basis[a]) + 2];
@@ -34,6 +34,13 @@ inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::
     }
   }
   return piece;
+}
+
+/// Over the volume rule's points on the side of the plane (point, normal) that `normal` points to.
+inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::Vector3d& point,
+                                     const Eigen::Vector3d& normal, double density) {
+  return momentum_where(
+      simulation, [&](const Eigen::Vector3d& x) { return (x - point).dot(normal) > 0; }, density);
 }
 
 }  // namespace altfem

@@ -1,0 +1,107 @@
+#include "shared/mesh/cut_by_surface.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+#include "shared/common/error.hpp"
+#include "shared/geometry/exact_orientation.hpp"
+#include "shared/mesh/cut_polyhedral_pieces.hpp"
+
+namespace altfem {
+
+namespace {
+
+// Per triangle and edge k (from corner k to k + 1), whether the blade goes on across it
+// in the triangle's plane: the edge is another triangle's too, whose third corner lies in
+// this one's plane (an exact predicate). Then both sides of the edge separate, and
+// splitting the cells by the plane through it would only add pieces.
+std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade) {
+  std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> holders;  // edge → (triangle, its corner k)
+  for (int triangle = 0; triangle < static_cast<int>(blade.triangles.rows()); ++triangle)
+    for (int k = 0; k < 3; ++k)
+      holders[std::minmax(blade.triangles(triangle, k), blade.triangles(triangle, (k + 1) % 3))].push_back(
+          {triangle, k});
+  const auto corner = [&](int triangle, int k) -> Eigen::Vector3d {
+    return blade.vertices.row(blade.triangles(triangle, k % 3)).transpose();
+  };
+  std::vector<std::array<bool, 3>> within(static_cast<std::size_t>(blade.triangles.rows()), {false, false, false});
+  for (const auto& [edge, sharing] : holders) {
+    if (sharing.size() != 2) continue;
+    const auto [first, k] = sharing[0];
+    const auto [second, j] = sharing[1];
+    if (orientation_sign(corner(first, 0), corner(first, 1), corner(first, 2), corner(second, j + 2)) != 0) continue;
+    within[first][k] = within[second][j] = true;
+  }
+  return within;
+}
+
+}  // namespace
+
+std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade) {
+  std::vector<std::pair<CuttingPlane, CutScope>> steps;
+  const std::vector<std::array<bool, 3>> within = edges_within_a_plane(blade);
+  for (Eigen::Index triangle = 0; triangle < blade.triangles.rows(); ++triangle) {
+    std::vector<Eigen::Vector3d> corners;
+    Eigen::AlignedBox3d box;
+    for (int k = 0; k < 3; ++k) {
+      corners.push_back(blade.vertices.row(blade.triangles(triangle, k)).transpose());
+      box.extend(corners.back());
+    }
+    const CuttingPlane plane = polygon_blade(corners);
+    if (const std::string problem = blade_polygon_problem(plane); !problem.empty())
+      throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
+    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}});
+    for (int k = 0; k < 3; ++k) {
+      if (within[triangle][k]) continue;
+      const Eigen::Vector3d& from = corners[k];
+      const Eigen::Vector3d& to = corners[(k + 1) % 3];
+      Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
+      steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}});
+    }
+    steps.push_back({plane, {CutAction::separate, std::nullopt}});
+  }
+  return steps;
+}
+
+PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
+                                             bool compute_geometry) {
+  PolyhedralCut result;
+  result.mesh = mesh;
+  result.parent_cell.resize(static_cast<std::size_t>(mesh.cell_count()));
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) result.parent_cell[cell] = cell;
+  Eigen::AlignedBox3d bounds;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
+  for (const auto& [plane, scope] : surface_blade_steps(blade)) {
+    // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
+    if (scope.region && !scope.region->intersects(bounds)) continue;
+    PolyhedralCut step = cut_polyhedral_mesh(result.mesh, plane, false, scope);
+    for (int& parent : step.parent_cell) parent = result.parent_cell[parent];
+    result.mesh = std::move(step.mesh);
+    result.parent_cell = std::move(step.parent_cell);
+    result.separated_faces += step.separated_faces;
+    result.duplicated_nodes += step.duplicated_nodes;
+    result.snapped_nodes += step.snapped_nodes;
+  }
+  std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);
+  for (const int parent : result.parent_cell) ++pieces_of[parent];
+  for (const int pieces : pieces_of) result.crossed_cells += pieces > 1 ? 1 : 0;
+  if (!compute_geometry) return result;
+  try {
+    compute_polyhedral_geometry(result.mesh);
+  } catch (const NumericalError&) {
+    // As a planar cut: pieces a few 1e-12 thin, merged into a neighbour.
+    std::vector<bool> is_piece(result.parent_cell.size());
+    for (std::size_t piece = 0; piece < is_piece.size(); ++piece)
+      is_piece[piece] = pieces_of[result.parent_cell[piece]] > 1;
+    std::vector<NodeSource> sources(static_cast<std::size_t>(result.mesh.nodes.rows()));
+    result.merged_pieces = merge_pieces_without_volume(result.mesh, result.parent_cell, sources, is_piece);
+    if (result.merged_pieces == 0) throw;
+    compute_polyhedral_geometry(result.mesh);
+  }
+  return result;
+}
+
+}  // namespace altfem

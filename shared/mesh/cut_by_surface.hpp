@@ -1,0 +1,42 @@
+#pragma once
+// A cut by a triangulated surface: a cut event's blade read from a surface file (issue
+// #33), which may bend, end inside the body (a notch) or run through it. Each triangle T
+// of the blade, in turn, is three kinds of planar step of cut_polyhedral_mesh:
+//   1. split the cells near T (whose bounding boxes meet T's) by T's plane, the pieces
+//      left joined;
+//   2. split the cells near each edge of T by the plane through that edge perpendicular
+//      to T, so that every face now in T's plane lies inside T or outside it (not at an
+//      edge where the blade goes on in T's plane: both sides of it separate);
+//   3. separate the faces in T's plane whose centroid T covers.
+// So what separates is the blade's triangles themselves, not the sections of whole cells
+// a polygon blade covers, and every side decision is the planar cut's exact predicate.
+// Where the blade ends inside the body its pieces stay joined around the blade's edge.
+// The price is pieces: a cell near the blade falls into up to five per triangle that
+// crosses it (the cells out of reach of the steps keep their nodes, faces and kind).
+#include <Eigen/Core>
+#include <utility>
+#include <vector>
+
+#include "shared/mesh/cut_polyhedral_mesh.hpp"
+
+namespace altfem {
+
+struct SurfaceBlade {
+  Eigen::MatrixXd vertices;  ///< #vertices × 3
+  Eigen::MatrixXi
+      triangles;  ///< #triangles × 3; a triangle's positive side is where its corners turn counter-clockwise
+};
+
+/// The planar steps `blade` is cut by, in order: per triangle up to five (its plane's
+/// split, its edges' splits, its separation). Throws std::invalid_argument for a
+/// triangle without area.
+std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade);
+
+/// `mesh` cut by every step of `blade`. The result's parent cells are `mesh`'s; its node
+/// sources are empty (a node made by a later step lies on an earlier step's face, not on
+/// an edge of `mesh`: a field is carried to it by evaluating the field before the cut).
+/// The counts add up the steps' (crossed_cells: cells of `mesh` now in several pieces).
+PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
+                                             bool compute_geometry);
+
+}  // namespace altfem

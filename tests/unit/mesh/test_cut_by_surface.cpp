@@ -1,0 +1,213 @@
+// Surface blades (issue #33): a triangulated blade separates exactly its triangles. Two
+// triangles spanning a section cut as the plane does; a V of four triangles whose fold
+// lies on a grid plane cuts out the wedge between them, of the exact volume, from
+// polyhedral cells and from tetrahedra (which stay conforming: their boundary's area is
+// the body's plus twice the blade's inside it); a blade ending inside leaves one piece;
+// seeded bent blades give closed cells of positive volume and keep the volume.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <random>
+
+#include "shared/mesh/cut_by_surface.hpp"
+#include "shared/mesh/cut_tetrahedral_mesh.hpp"
+#include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/polyhedral_from_volume_mesh.hpp"
+#include "shared/mesh/structured_grid.hpp"
+#include "tests/unit/mesh/every_cell_closed.hpp"
+
+namespace altfem {
+namespace {
+
+VolumeMesh unit_cube_grid(ElementType type, int cells_per_axis) {
+  const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  return structured_grid(box, Eigen::Vector3i::Constant(cells_per_axis), type);
+}
+
+// A blade of quadrilaterals, each corners (a, b, c, d) as the triangles (a, b, c), (a, c, d).
+SurfaceBlade blade_of_quadrilaterals(const std::vector<std::array<Eigen::Vector3d, 4>>& quadrilaterals) {
+  SurfaceBlade blade;
+  blade.vertices.resize(4 * static_cast<Eigen::Index>(quadrilaterals.size()), 3);
+  blade.triangles.resize(2 * static_cast<Eigen::Index>(quadrilaterals.size()), 3);
+  for (std::size_t q = 0; q < quadrilaterals.size(); ++q) {
+    const int first = 4 * static_cast<int>(q);
+    for (int k = 0; k < 4; ++k) blade.vertices.row(first + k) = quadrilaterals[q][k];
+    blade.triangles.row(2 * static_cast<Eigen::Index>(q)) << first, first + 1, first + 2;
+    blade.triangles.row(2 * static_cast<Eigen::Index>(q) + 1) << first, first + 2, first + 3;
+  }
+  return blade;
+}
+
+// The V whose fold runs along x at (y, z) = (0.5, 0.3), its arms rising to z = 1.2 at y =
+// 0.1 and y = 0.9, over x ∈ [−1, 2]. It cuts from the unit cube the wedge of the triangle
+// (0.5, 0.3), (0.5 ∓ 0.4 · 7/9, 1) in (y, z), of volume ½ · 0.8 · 7/9 · 0.7.
+SurfaceBlade v_blade() {
+  const auto at = [](double x, double y, double z) { return Eigen::Vector3d(x, y, z); };
+  return blade_of_quadrilaterals({{at(-1, 0.5, 0.3), at(2, 0.5, 0.3), at(2, 0.1, 1.2), at(-1, 0.1, 1.2)},
+                                  {at(2, 0.5, 0.3), at(-1, 0.5, 0.3), at(-1, 0.9, 1.2), at(2, 0.9, 1.2)}});
+}
+constexpr double wedge_volume = 0.5 * 0.8 * 7.0 / 9.0 * 0.7;
+
+// Per connected piece of `mesh` (cells joined through interior faces), its volume, smallest first.
+std::vector<double> piece_volumes(const PolyhedralMesh& mesh) {
+  DisjointSets pieces(mesh.cell_count());
+  for (int face = 0; face < mesh.face_count(); ++face)
+    if (mesh.face_cells(face, 1) >= 0) pieces.join(mesh.face_cells(face, 0), mesh.face_cells(face, 1));
+  std::map<int, double> volume_of;
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) volume_of[pieces.find(cell)] += mesh.cell_volumes(cell);
+  std::vector<double> volumes;
+  for (const auto& [root, volume] : volume_of) volumes.push_back(volume);
+  std::sort(volumes.begin(), volumes.end());
+  return volumes;
+}
+
+double tetrahedron_volume(const Eigen::MatrixXd& nodes, const Eigen::MatrixXi& cells, Eigen::Index cell) {
+  const Eigen::Vector3d a = nodes.row(cells(cell, 0)), b = nodes.row(cells(cell, 1)), c = nodes.row(cells(cell, 2)),
+                        d = nodes.row(cells(cell, 3));
+  return (b - a).cross(c - a).dot(d - a) / 6;
+}
+
+// The tetrahedra's pieces (joined through shared faces) by volume, smallest first, and
+// the area of the faces only one tetrahedron holds.
+struct TetrahedralPieces {
+  std::vector<double> volumes;
+  double boundary_area = 0;
+};
+
+TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh) {
+  std::map<std::array<int, 3>, std::vector<int>> holders;
+  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)
+    for (int skipped = 0; skipped < 4; ++skipped) {
+      std::array<int, 3> face;
+      for (int k = 0, j = 0; k < 4; ++k)
+        if (k != skipped) face[j++] = mesh.cells(cell, k);
+      std::sort(face.begin(), face.end());
+      holders[face].push_back(static_cast<int>(cell));
+    }
+  DisjointSets pieces(static_cast<int>(mesh.cells.rows()));
+  TetrahedralPieces result;
+  for (const auto& [face, cells] : holders) {
+    if (cells.size() == 2) pieces.join(cells[0], cells[1]);
+    if (cells.size() != 1) continue;
+    const Eigen::Vector3d a = mesh.nodes.row(face[0]), b = mesh.nodes.row(face[1]), c = mesh.nodes.row(face[2]);
+    result.boundary_area += (b - a).cross(c - a).norm() / 2;
+  }
+  std::map<int, double> volume_of;
+  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)
+    volume_of[pieces.find(static_cast<int>(cell))] += tetrahedron_volume(mesh.nodes, mesh.cells, cell);
+  for (const auto& [root, volume] : volume_of) result.volumes.push_back(volume);
+  std::sort(result.volumes.begin(), result.volumes.end());
+  return result;
+}
+
+TEST(CutBySurface, TwoTrianglesSpanningTheSectionCutAsThePlane) {
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 3));
+  const auto at = [](double y, double z) { return Eigen::Vector3d(0.4, y, z); };
+  const PolyhedralCut cut = cut_polyhedral_mesh_by_surface(
+      mesh, blade_of_quadrilaterals({{at(-1, -1), at(2, -1), at(2, 2), at(-1, 2)}}), true);
+  EXPECT_TRUE(every_cell_closed(cut.mesh));
+  EXPECT_EQ(cut.crossed_cells, 9);
+  const std::vector<double> volumes = piece_volumes(cut.mesh);
+  ASSERT_EQ(volumes.size(), 2u);
+  EXPECT_NEAR(volumes[0], 0.4, 1e-14);
+  EXPECT_NEAR(volumes[1], 0.6, 1e-14);
+  EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0);
+}
+
+TEST(CutBySurface, AVCutsItsWedgeOutOfPolyhedralCells) {
+  for (const ElementType type : {ElementType::hex8, ElementType::tet4}) {
+    const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(type, 4));
+    const PolyhedralCut cut = cut_polyhedral_mesh_by_surface(mesh, v_blade(), true);
+    EXPECT_TRUE(every_cell_closed(cut.mesh));
+    EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0);
+    EXPECT_GT(cut.duplicated_nodes, 0);
+    EXPECT_TRUE(cut.node_sources.empty());
+    const std::vector<double> volumes = piece_volumes(cut.mesh);
+    ASSERT_EQ(volumes.size(), 2u) << element_name(type);
+    EXPECT_NEAR(volumes[0], wedge_volume, 1e-13);
+    EXPECT_NEAR(volumes[0] + volumes[1], 1.0, 1e-13);
+    // The cells the blade stays away from keep their kind and volume.
+    int untouched = 0;
+    for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
+      const int parent = cut.parent_cell[piece];
+      if (cut.mesh.cell_kinds[piece] != mesh.cell_kinds[parent]) continue;
+      ++untouched;
+      EXPECT_DOUBLE_EQ(cut.mesh.cell_volumes(piece), mesh.cell_volumes(parent));
+    }
+    EXPECT_GT(untouched, 0);
+  }
+}
+
+TEST(CutBySurface, AVCutsItsWedgeOutOfTetrahedraThatStayConforming) {
+  const auto at = [](double y, double z) { return std::hypot(y, z); };
+  const double arm = at(0.4 * 7.0 / 9.0, 0.7);  // each arm's length in the cube (y, z)
+  for (const bool hexahedral_fragments : {false, true}) {
+    const FragmentedTetrahedra input =
+        hexahedral_fragments
+            ? convex_cells_as_fragments(polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 3)))
+            : FragmentedTetrahedra{unit_cube_grid(ElementType::tet4, 3)};
+    const TetrahedralCut cut = cut_tetrahedral_mesh_by_surface(input, v_blade());
+    const TetrahedralPieces pieces = tetrahedral_pieces(cut.result.mesh);
+    ASSERT_EQ(pieces.volumes.size(), 2u) << hexahedral_fragments;
+    EXPECT_NEAR(pieces.volumes[0], wedge_volume, 1e-13);
+    EXPECT_NEAR(pieces.volumes[0] + pieces.volumes[1], 1.0, 1e-13);
+    // A face held once that is not the cube's or the blade's (a hanging one) adds area.
+    EXPECT_NEAR(pieces.boundary_area, 6 + 4 * arm, 1e-12);
+    EXPECT_EQ(static_cast<int>(cut.parent_fragment.size()), cut.result.fragment_count());
+  }
+}
+
+TEST(CutBySurface, ABladeEndingInsideLeavesOnePiece) {
+  const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 4));
+  // Half the V's left arm: from the top down to z = 0.75, so it ends between grid planes.
+  const auto at = [](double x, double y, double z) { return Eigen::Vector3d(x, y, z); };
+  const double y_top = 0.5 - 0.4 * (1.2 - 0.75) / 0.9;
+  const SurfaceBlade notch =
+      blade_of_quadrilaterals({{at(-1, y_top, 0.75), at(2, y_top, 0.75), at(2, 0.1, 1.2), at(-1, 0.1, 1.2)}});
+  const PolyhedralCut cut = cut_polyhedral_mesh_by_surface(mesh, notch, true);
+  EXPECT_TRUE(every_cell_closed(cut.mesh));
+  EXPECT_GT(cut.separated_faces, 0);
+  EXPECT_GT(cut.duplicated_nodes, 0);
+  const std::vector<double> volumes = piece_volumes(cut.mesh);
+  ASSERT_EQ(volumes.size(), 1u);
+  EXPECT_NEAR(volumes[0], 1.0, 1e-13);
+}
+
+// Seeded bent blades: a 3 × 3 grid of points over the cube, each displaced at random,
+// through tetrahedral and hexahedral grids, once by polyhedral cells and once by tetrahedra.
+TEST(CutBySurface, SeededBentBladesGiveClosedCellsAndKeepTheVolume) {
+  std::mt19937 random(20261205);
+  std::uniform_real_distribution<double> offset(-0.3, 0.3);
+  for (int seed = 0; seed < 12; ++seed) {
+    SurfaceBlade blade;
+    blade.vertices.resize(9, 3);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) blade.vertices.row(3 * i + j) << -0.2 + 0.7 * i, -0.2 + 0.7 * j, 0.5 + offset(random);
+    blade.triangles.resize(8, 3);
+    for (int i = 0, t = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        const int corner = 3 * i + j;
+        blade.triangles.row(t++) << corner, corner + 3, corner + 4;
+        blade.triangles.row(t++) << corner, corner + 4, corner + 1;
+      }
+    const ElementType type = seed % 2 == 0 ? ElementType::tet4 : ElementType::hex8;
+    const PolyhedralMesh mesh = polyhedral_mesh_from_volume_mesh(unit_cube_grid(type, 3));
+    const PolyhedralCut cut = cut_polyhedral_mesh_by_surface(mesh, blade, true);
+    EXPECT_TRUE(every_cell_closed(cut.mesh)) << seed;
+    EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0) << seed;
+    EXPECT_NEAR(cut.mesh.cell_volumes.sum(), 1.0, 1e-13) << seed;
+    EXPECT_EQ(piece_volumes(cut.mesh).size(), 2u) << seed;
+    const TetrahedralCut tetrahedra =
+        cut_tetrahedral_mesh_by_surface(FragmentedTetrahedra{unit_cube_grid(ElementType::tet4, 3)}, blade);
+    const TetrahedralPieces pieces = tetrahedral_pieces(tetrahedra.result.mesh);
+    EXPECT_EQ(pieces.volumes.size(), 2u) << seed;
+    EXPECT_NEAR(pieces.volumes.front() + pieces.volumes.back(), 1.0, 1e-13) << seed;
+  }
+}
+
+}  // namespace
+}  // namespace altfem
