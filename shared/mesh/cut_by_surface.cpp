@@ -3,12 +3,15 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/exact_orientation.hpp"
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
+#include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/merge_slivers.hpp"
 
 namespace altfem {
 
@@ -36,6 +39,54 @@ std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade)
     within[first][k] = within[second][j] = true;
   }
   return within;
+}
+
+// Joins again the pieces of each cell that the blade did not part: pieces of one parent
+// next to one another through an interior face become one cell (kind cut; faces between
+// them dropped), face by face, but never two that hold the two sides of a slit (boundary
+// faces at the same positions: where the blade ends inside the cell, its pieces meet
+// around the blade's edge, and one cell could not open there). Returns the number of
+// pieces joined away.
+int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
+  const int cells = mesh.cell_count();
+  // The slits: per parent, the pairs of pieces whose boundary faces coincide.
+  using FaceKey = std::vector<std::array<double, 3>>;
+  std::map<std::pair<int, FaceKey>, int> holder;  // (parent, the face's sorted node positions) → piece
+  std::map<int, std::vector<std::pair<int, int>>> slits_of;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    if (mesh.face_cells(face, 1) >= 0) continue;
+    const int piece = mesh.face_cells(face, 0);
+    FaceKey key;
+    for (const int node : mesh.faces[face])
+      key.push_back({mesh.nodes(node, 0), mesh.nodes(node, 1), mesh.nodes(node, 2)});
+    std::sort(key.begin(), key.end());
+    const auto [found, inserted] = holder.try_emplace({parent_cell[piece], std::move(key)}, piece);
+    if (!inserted) slits_of[parent_cell[piece]].push_back({found->second, piece});
+  }
+  DisjointSets joined(cells);
+  int joined_away = 0;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    if (second < 0 || parent_cell[first] != parent_cell[second]) continue;
+    const int a = joined.find(first), b = joined.find(second);
+    if (a == b) continue;
+    const auto slits = slits_of.find(parent_cell[first]);
+    const bool across_a_slit =
+        slits != slits_of.end() && std::any_of(slits->second.begin(), slits->second.end(), [&](const auto& pair) {
+          const int p = joined.find(pair.first), q = joined.find(pair.second);
+          return (p == a && q == b) || (p == b && q == a);
+        });
+    if (across_a_slit) continue;
+    joined.join(a, b);
+    ++joined_away;
+  }
+  if (joined_away == 0) return 0;
+  std::vector<int> new_cell;
+  merge_cell_groups(mesh, joined, PolyhedralCellKind::cut, &new_cell);
+  std::vector<int> parents(static_cast<std::size_t>(mesh.cell_count()));
+  for (int cell = 0; cell < cells; ++cell) parents[new_cell[cell]] = parent_cell[cell];
+  parent_cell = std::move(parents);
+  return joined_away;
 }
 
 }  // namespace
@@ -85,6 +136,7 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     result.duplicated_nodes += step.duplicated_nodes;
     result.snapped_nodes += step.snapped_nodes;
   }
+  join_unparted_pieces(result.mesh, result.parent_cell);
   std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);
   for (const int parent : result.parent_cell) ++pieces_of[parent];
   for (const int pieces : pieces_of) result.crossed_cells += pieces > 1 ? 1 : 0;

@@ -11,8 +11,11 @@
 // So what separates is the blade's triangles themselves, not the sections of whole cells
 // a polygon blade covers, and every side decision is the planar cut's exact predicate.
 // Where the blade ends inside the body its pieces stay joined around the blade's edge.
-// The price is pieces: a cell near the blade falls into up to five per triangle that
-// crosses it (the cells out of reach of the steps keep their nodes, faces and kind).
+// The steps leave a cell near the blade in up to five pieces per triangle that reaches
+// it; the polyhedral cut then joins again the pieces of a cell that the blade did not part
+// (one non-convex cell per side), but where the blade ends inside a cell, whose pieces
+// meet around the blade's edge and across none of its faces. The cells out of reach of
+// the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
 #include <utility>
 #include <vector>

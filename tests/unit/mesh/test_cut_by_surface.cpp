@@ -130,6 +130,11 @@ TEST(CutBySurface, AVCutsItsWedgeOutOfPolyhedralCells) {
     ASSERT_EQ(volumes.size(), 2u) << element_name(type);
     EXPECT_NEAR(volumes[0], wedge_volume, 1e-13);
     EXPECT_NEAR(volumes[0] + volumes[1], 1.0, 1e-13);
+    // The pieces of a cell that the V does not part are joined again: a cell the V
+    // crosses is its wedge's part and the rest.
+    std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);
+    for (const int parent : cut.parent_cell) ++pieces_of[parent];
+    EXPECT_EQ(*std::max_element(pieces_of.begin(), pieces_of.end()), 2);
     // The cells the blade stays away from keep their kind and volume.
     int untouched = 0;
     for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
