@@ -41,12 +41,8 @@ std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade)
   return within;
 }
 
-// Joins again the pieces of each cell that the blade did not part: pieces of one parent
-// next to one another through an interior face become one cell (kind cut; faces between
-// them dropped), face by face, but never two that hold the two sides of a slit (boundary
-// faces at the same positions: where the blade ends inside the cell, its pieces meet
-// around the blade's edge, and one cell could not open there). Returns the number of
-// pieces joined away.
+}  // namespace
+
 int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
   const int cells = mesh.cell_count();
   // The slits: per parent, the pairs of pieces whose boundary faces coincide.
@@ -89,8 +85,6 @@ int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
   return joined_away;
 }
 
-}  // namespace
-
 std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade) {
   std::vector<std::pair<CuttingPlane, CutScope>> steps;
   const std::vector<std::array<bool, 3>> within = edges_within_a_plane(blade);
@@ -112,7 +106,7 @@ std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const Surface
       Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
       steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}});
     }
-    steps.push_back({plane, {CutAction::separate, std::nullopt}});
+    steps.push_back({plane, {CutAction::separate, box}});
   }
   return steps;
 }

@@ -35,6 +35,15 @@ struct SurfaceBlade {
 /// triangle without area.
 std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade);
 
+/// Joins again the pieces of each cell that a blade did not part (`parent_cell`: per cell
+/// of `mesh`, the cell it is a piece of; updated): pieces of one parent next to one another
+/// through an interior face become one cell (kind cut; faces between them dropped), face
+/// by face, but never two that hold the two sides of a slit (boundary faces at the same
+/// positions: where the blade ends inside the cell, its pieces meet around the blade's
+/// edge, and one cell could not open there). Geometry left stale. Returns the number of
+/// pieces joined away.
+int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
+
 /// `mesh` cut by every step of `blade`. The result's parent cells are `mesh`'s; its node
 /// sources are empty (a node made by a later step lies on an earlier step's face, not on
 /// an edge of `mesh`: a field is carried to it by evaluating the field before the cut).

@@ -56,7 +56,7 @@ struct CutScope {
   CutAction action = CutAction::cut;
   /// split: only the cells whose bounding box meets this box (unset: every cell). A face of
   /// a cell left whole gets the crossing nodes of its edges (kind split), so the mesh stays
-  /// conforming.
+  /// conforming. separate: where the blade is (a caller skips a step whose box misses the mesh).
   std::optional<Eigen::AlignedBox3d> region;
   /// split: also every cell joined to one in `region` through faces the plane crosses, so
   /// that no cell left whole has a face split (a convex fragment's tetrahedra need that:

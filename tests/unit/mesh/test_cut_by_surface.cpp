@@ -3,7 +3,8 @@
 // lies on a grid plane cuts out the wedge between them, of the exact volume, from
 // polyhedral cells and from tetrahedra (which stay conforming: their boundary's area is
 // the body's plus twice the blade's inside it); a blade ending inside leaves one piece;
-// seeded bent blades give closed cells of positive volume and keep the volume.
+// seeded bent blades give closed cells of positive volume and keep the volume, and a
+// plane cuts the cells they leave again.
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -206,6 +207,11 @@ TEST(CutBySurface, SeededBentBladesGiveClosedCellsAndKeepTheVolume) {
     EXPECT_GT(cut.mesh.cell_volumes.minCoeff(), 0) << seed;
     EXPECT_NEAR(cut.mesh.cell_volumes.sum(), 1.0, 1e-13) << seed;
     EXPECT_EQ(piece_volumes(cut.mesh).size(), 2u) << seed;
+    // A plane through the cells it joined again cuts them as any non-convex cells.
+    const PolyhedralCut again =
+        cut_polyhedral_mesh(cut.mesh, CuttingPlane(Eigen::Vector3d(0.5, 0.5, 0.45), Eigen::Vector3d(0.3, 0.1, 1)));
+    EXPECT_TRUE(every_cell_closed(again.mesh)) << seed;
+    EXPECT_NEAR(again.mesh.cell_volumes.sum(), 1.0, 1e-13) << seed;
     const TetrahedralCut tetrahedra =
         cut_tetrahedral_mesh_by_surface(FragmentedTetrahedra{unit_cube_grid(ElementType::tet4, 3)}, blade);
     const TetrahedralPieces pieces = tetrahedral_pieces(tetrahedra.result.mesh);
