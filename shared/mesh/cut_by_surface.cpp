@@ -85,8 +85,8 @@ int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
   return joined_away;
 }
 
-std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade) {
-  std::vector<std::pair<CuttingPlane, CutScope>> steps;
+std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
+  std::vector<SurfaceBladeStep> steps;
   const std::vector<std::array<bool, 3>> within = edges_within_a_plane(blade);
   for (Eigen::Index triangle = 0; triangle < blade.triangles.rows(); ++triangle) {
     std::vector<Eigen::Vector3d> corners;
@@ -98,17 +98,48 @@ std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const Surface
     const CuttingPlane plane = polygon_blade(corners);
     if (const std::string problem = blade_polygon_problem(plane); !problem.empty())
       throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
-    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}});
+    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true});
     for (int k = 0; k < 3; ++k) {
       if (within[triangle][k]) continue;
       const Eigen::Vector3d& from = corners[k];
       const Eigen::Vector3d& to = corners[(k + 1) % 3];
       Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
-      steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}});
+      steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}, false});
     }
-    steps.push_back({plane, {CutAction::separate, box}});
+    steps.push_back({plane, {CutAction::separate, box}, true});
   }
   return steps;
+}
+
+CutScope TrianglePlaneNodes::scope_for(const SurfaceBladeStep& step) {
+  CutScope scope = step.scope;
+  if (step.scope.action == CutAction::split && step.triangle_plane) {
+    on_plane_.clear();
+    is_on_plane_.clear();
+  }
+  scope.on_plane = step.triangle_plane ? &on_plane_ : &none_;
+  return scope;
+}
+
+void TrianglePlaneNodes::after(const SurfaceBladeStep& step, const Eigen::MatrixXd& nodes,
+                               const std::vector<NodeSource>& sources, Eigen::Index nodes_before) {
+  if (step.scope.action == CutAction::separate) return;
+  is_on_plane_.resize(static_cast<std::size_t>(nodes.rows()), false);
+  if (step.triangle_plane) {
+    // The split's crossing nodes; and the nodes exactly on the plane, which its edges'
+    // splits may join.
+    const ExactBlade plane(step.plane);
+    for (Eigen::Index node = 0; node < nodes.rows(); ++node)
+      if (node >= nodes_before || plane.side(nodes.row(node).transpose()) == 0) is_on_plane_[node] = true;
+  } else {
+    for (Eigen::Index node = nodes_before; node < nodes.rows(); ++node) {
+      const NodeSource& source = sources[node];
+      is_on_plane_[node] = is_on_plane_[source.first] && is_on_plane_[source.second];
+    }
+  }
+  on_plane_.clear();
+  for (std::size_t node = 0; node < is_on_plane_.size(); ++node)
+    if (is_on_plane_[node]) on_plane_.push_back(static_cast<int>(node));
 }
 
 PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
@@ -119,10 +150,15 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
   for (int cell = 0; cell < mesh.cell_count(); ++cell) result.parent_cell[cell] = cell;
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
-  for (const auto& [plane, scope] : surface_blade_steps(blade)) {
+  TrianglePlaneNodes on_plane;
+  for (const SurfaceBladeStep& blade_step : surface_blade_steps(blade)) {
     // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
-    if (scope.region && !scope.region->intersects(bounds)) continue;
-    PolyhedralCut step = cut_polyhedral_mesh(result.mesh, plane, false, scope);
+    if (!blade_step.scope.region->intersects(bounds)) continue;
+    const Eigen::Index nodes_before = result.mesh.nodes.rows();
+    const CutScope scope = on_plane.scope_for(blade_step);
+    PolyhedralCut step = cut_with_snapping_or_without(
+        [&](const CutScope& tried) { return cut_polyhedral_mesh(result.mesh, blade_step.plane, false, tried); }, scope);
+    on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
     for (int& parent : step.parent_cell) parent = result.parent_cell[parent];
     result.mesh = std::move(step.mesh);
     result.parent_cell = std::move(step.parent_cell);
@@ -143,10 +179,33 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     for (std::size_t piece = 0; piece < is_piece.size(); ++piece)
       is_piece[piece] = pieces_of[result.parent_cell[piece]] > 1;
     std::vector<NodeSource> sources(static_cast<std::size_t>(result.mesh.nodes.rows()));
-    result.merged_pieces = merge_pieces_without_volume(result.mesh, result.parent_cell, sources, is_piece);
+    try {
+      result.merged_pieces = merge_pieces_without_volume(result.mesh, result.parent_cell, sources, is_piece);
+    } catch (const std::invalid_argument&) {  // a piece whose nodes coincide (below)
+      throw NumericalError(
+          "cut: the surface blade left pieces of no size, where its triangles' planes cut the "
+          "cells into pieces of rounding size (a blade with fewer triangles meeting there cuts)");
+    }
     if (result.merged_pieces == 0) throw;
     compute_polyhedral_geometry(result.mesh);
   }
+  // Where many of the blade's triangles meet at a vertex, their planes cut the cells there
+  // into pieces a few ulps across, whose rounded nodes can coincide: a face of no area, or
+  // with an edge of none, is refused here rather than handed to a method.
+  const auto has_no_size = [&](int face) {
+    const std::vector<int>& loop = result.mesh.faces[face];
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      if (result.mesh.nodes.row(loop[k]) == result.mesh.nodes.row(loop[(k + 1) % loop.size()])) return true;
+    return !(result.mesh.face_areas(face) > 0);
+  };
+  for (int face = 0; face < result.mesh.face_count(); ++face)
+    if (has_no_size(face)) {
+      const Eigen::Vector3d at = result.mesh.face_centroids.row(face);
+      throw NumericalError("cut: the surface blade left a face of no size at (" + std::to_string(at.x()) + ", " +
+                           std::to_string(at.y()) + ", " + std::to_string(at.z()) +
+                           "), where its triangles' planes cut the cells into pieces of rounding size (a blade "
+                           "with fewer triangles meeting there cuts)");
+    }
   return result;
 }
 

@@ -17,9 +17,9 @@
 // meet around the blade's edge and across none of its faces. The cells out of reach of
 // the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
-#include <utility>
 #include <vector>
 
+#include "shared/common/error.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 
 namespace altfem {
@@ -30,10 +30,34 @@ struct SurfaceBlade {
       triangles;  ///< #triangles × 3; a triangle's positive side is where its corners turn counter-clockwise
 };
 
+/// One planar step of a surface blade's cut.
+struct SurfaceBladeStep {
+  CuttingPlane plane;
+  CutScope scope;
+  bool triangle_plane = false;  ///< the triangle's own plane (its split or separation), not an edge's
+};
+
 /// The planar steps `blade` is cut by, in order: per triangle up to five (its plane's
 /// split, its edges' splits, its separation). Throws std::invalid_argument for a
 /// triangle without area.
-std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const SurfaceBlade& blade);
+std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade);
+
+/// The nodes on the current triangle's plane as the steps go: those its split made (a
+/// rounding off the plane) and those its edges' splits made between two nodes on it. Its
+/// separation takes them on the plane (CutScope::on_plane).
+class TrianglePlaneNodes {
+public:
+  /// The scope to cut `step` with (it refers to this object).
+  CutScope scope_for(const SurfaceBladeStep& step);
+  /// After `step`: the cut's nodes and their sources; nodes from `nodes_before` on are new.
+  void after(const SurfaceBladeStep& step, const Eigen::MatrixXd& nodes, const std::vector<NodeSource>& sources,
+             Eigen::Index nodes_before);
+
+private:
+  std::vector<int> on_plane_;
+  std::vector<int> none_;
+  std::vector<bool> is_on_plane_;  ///< per node, while the triangle's steps go
+};
 
 /// Joins again the pieces of each cell that a blade did not part (`parent_cell`: per cell
 /// of `mesh`, the cell it is a piece of; updated): pieces of one parent next to one another
@@ -43,6 +67,19 @@ std::vector<std::pair<CuttingPlane, CutScope>> surface_blade_steps(const Surface
 /// edge, and one cell could not open there). Geometry left stale. Returns the number of
 /// pieces joined away.
 int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
+
+/// `cut(scope)`, and for a split step that throws NumericalError `cut` again without
+/// snapping (CutScope::snap).
+template <typename Cut>
+auto cut_with_snapping_or_without(const Cut& cut, CutScope scope) {
+  if (scope.action != CutAction::split) return cut(scope);
+  try {
+    return cut(scope);
+  } catch (const NumericalError&) {
+    scope.snap = false;
+    return cut(scope);
+  }
+}
 
 /// `mesh` cut by every step of `blade`. The result's parent cells are `mesh`'s; its node
 /// sources are empty (a node made by a later step lies on an earlier step's face, not on

@@ -1,6 +1,7 @@
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -21,10 +22,25 @@ namespace {
 // Of the mesh's bounding-box diagonal: a few hundred ulps, far below any element.
 constexpr double snap_fraction = 1e-13;
 
+// A face a split step cannot split (a cluster of nodes a few ulps apart whose rounded
+// positions cross the plane more than twice): its cells are kept whole and the step is
+// made again.
+struct UnsplittableFace : NumericalError {
+  UnsplittableFace(const std::string& what, int cell0, int cell1) : NumericalError(what), cells{cell0, cell1} {}
+  std::array<int, 2> cells;
+};
+
 class CutBuilder {
 public:
-  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry, const CutScope& scope)
-      : mesh_(mesh), blade_(plane), piece_at_(plane.piece_at), scope_(scope), compute_geometry_(compute_geometry) {
+  /// `whole`: per cell, kept whole by a split step (empty: none).
+  CutBuilder(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry, const CutScope& scope,
+             std::vector<bool> whole = {})
+      : mesh_(mesh),
+        blade_(plane),
+        piece_at_(plane.piece_at),
+        scope_(scope),
+        whole_(std::move(whole)),
+        compute_geometry_(compute_geometry) {
     nodes_.reserve(mesh.nodes.rows());
     for (Eigen::Index n = 0; n < mesh.nodes.rows(); ++n) {
       nodes_.push_back(mesh.nodes.row(n));
@@ -34,7 +50,7 @@ public:
     // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
     // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
     const double snap_distance =
-        snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+        scope.snap ? snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm() : 0.0;
     const Eigen::Vector3d unit_normal = blade_.normal.normalized();
     side_.resize(nodes_.size());
     for (std::size_t n = 0; n < nodes_.size(); ++n) {
@@ -44,20 +60,36 @@ public:
         ++snapped_;
       }
     }
+    // A surface blade's step names nodes an earlier step made on its plane.
+    if (scope.on_plane)
+      for (const int node : *scope.on_plane)
+        if (side_[node] != 0) {
+          side_[node] = 0;
+          ++snapped_;
+        }
   }
 
   PolyhedralCut build() {
     classify_cells();
     for (int face = 0; face < mesh_.face_count(); ++face) split_face(face);
     if (scope_.action == CutAction::split) add_crossings_to_whole_faces();
+    std::vector<int> without_section;
     for (int cell = 0; cell < mesh_.cell_count(); ++cell) {
       if (!crossed_[cell]) continue;
       if (!cap_covered_[cell]) {
-        close_caps(cell, +1, true);
+        try {
+          close_caps(cell, +1, true);
+        } catch (const NumericalError&) {
+          // A sliver a split step reaches can have nodes strictly on both sides and no
+          // section that closes (its rounded nodes do not make it convex): it stays whole.
+          if (scope_.action != CutAction::split) throw;
+          without_section.push_back(cell);
+        }
         continue;
       }
       for (const int sigma : {+1, -1}) close_caps(cell, sigma, false);
     }
+    if (!without_section.empty()) rejoin_halves(without_section);
     return assemble();
   }
 
@@ -175,7 +207,7 @@ private:
       // A split step's region is where it starts: it spreads to every cell joined to one
       // there through faces the plane crosses with `spread`, else it splits only those.
       if (reached[cell] && scope_.action == CutAction::split) {
-        const bool starts_here = in_scope(cell);
+        const bool starts_here = in_scope(cell) && (whole_.empty() || !whole_[cell]);
         cap_covered_[cell] = scope_.spread && starts_here;
         reached[cell] = scope_.spread || starts_here;
       }
@@ -187,6 +219,10 @@ private:
     std::vector<bool> covered_group(cells, false);
     for (int cell = 0; cell < cells; ++cell)
       if (cap_covered_[cell]) covered_group[joined.find(cell)] = true;
+    // A spreading split keeps whole every cell joined to one it must keep whole.
+    if (!whole_.empty() && scope_.spread)
+      for (int cell = 0; cell < cells; ++cell)
+        if (whole_[cell]) covered_group[joined.find(cell)] = false;
     for (int cell = 0; cell < cells; ++cell) {
       first_piece_[cell] = static_cast<int>(parent_.size());
       parent_.push_back(cell);
@@ -318,8 +354,10 @@ private:
       try {
         pieces = split_polygon_by_plane(augmented, nodes_, side_, blade_.normal);
       } catch (const NumericalError& error) {
-        throw NumericalError("cut: face " + std::to_string(face) + " of cell " + std::to_string(cell0) +
-                             " crossed by the blade: " + error.what());
+        const std::string what = "cut: face " + std::to_string(face) + " of cell " + std::to_string(cell0) +
+                                 " crossed by the blade: " + error.what();
+        if (scope_.action == CutAction::split) throw UnsplittableFace(what, cell0, cell1);
+        throw NumericalError(what);
       }
     }
     for (PolygonPiece& piece : pieces) add_face(std::move(piece.loop), cell0, cell1, piece.side, piece.side);
@@ -372,6 +410,32 @@ private:
                           where + " has holes that cannot be bridged");
     const int other_piece = joined ? piece(cell, -sigma) : -1;
     for (std::vector<int>& loop : outer) faces_.push_back({std::move(loop), piece_index, other_piece, sigma, !joined});
+  }
+
+  // The split cells without a section stay whole: each one's negative half's faces go to
+  // its positive half, and the pieces after it move down.
+  void rejoin_halves(const std::vector<int>& cells) {
+    std::vector<bool> dropped(parent_.size(), false);
+    for (const int cell : cells) {
+      dropped[first_piece_[cell] + 1] = true;
+      crossed_[cell] = false;
+      touched_[cell] = true;
+      --crossed_count_;
+      --joined_count_;
+    }
+    std::vector<int> new_index(parent_.size());
+    int next = 0;
+    for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index)
+      new_index[piece_index] = dropped[piece_index] ? next - 1 : next++;  // a dropped half: its positive half's
+    for (CutFace& face : faces_) {
+      face.first = new_index[face.first];
+      if (face.second >= 0) face.second = new_index[face.second];
+    }
+    std::vector<int> parents;
+    for (std::size_t piece_index = 0; piece_index < parent_.size(); ++piece_index)
+      if (!dropped[piece_index]) parents.push_back(parent_[piece_index]);
+    parent_ = std::move(parents);
+    for (int& first : first_piece_) first = new_index[first];
   }
 
   // The nodes a copy of which each group of pieces apart around it needs: those of faces
@@ -455,6 +519,7 @@ private:
   const ExactBlade blade_;
   const std::optional<Eigen::Vector3d> piece_at_;
   const CutScope scope_;
+  const std::vector<bool> whole_;       ///< per input cell a split step keeps whole (empty: none)
   std::vector<bool> touched_;           ///< per input cell left whole: a split step added crossing nodes to its faces
   std::vector<bool> in_piece_;          ///< per input cell: the blade may cut it (piece_at)
   std::vector<Eigen::Vector3d> nodes_;  ///< the input's, then the crossing nodes, then the copies
@@ -479,7 +544,19 @@ private:
 PolyhedralCut cut_polyhedral_mesh(const PolyhedralMesh& mesh, const CuttingPlane& plane, bool compute_geometry,
                                   const CutScope& scope) {
   if (plane.surface) return cut_polyhedral_mesh_by_surface(mesh, *plane.surface, compute_geometry);
-  return CutBuilder(mesh, plane, compute_geometry, scope).build();
+  if (scope.action != CutAction::split) return CutBuilder(mesh, plane, compute_geometry, scope).build();
+  std::vector<bool> whole(static_cast<std::size_t>(mesh.cell_count()), false);
+  for (;;) {
+    try {
+      return CutBuilder(mesh, plane, compute_geometry, scope, whole).build();
+    } catch (const UnsplittableFace& face) {
+      for (const int cell : face.cells)
+        if (cell >= 0) {
+          if (whole[cell]) throw;
+          whole[cell] = true;
+        }
+    }
+  }
 }
 
 }  // namespace altfem

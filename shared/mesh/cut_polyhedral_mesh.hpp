@@ -62,6 +62,15 @@ struct CutScope {
   /// that no cell left whole has a face split (a convex fragment's tetrahedra need that:
   /// cut_tetrahedral_mesh).
   bool spread = false;
+  /// When set, nodes taken on the plane besides those on it or within the snapping
+  /// distance (a surface blade's step knows which nodes an earlier step made on its
+  /// triangle's plane, a rounding off it).
+  const std::vector<int>* on_plane = nullptr;
+  /// Whether nodes within the snapping distance are taken on the plane (above). A surface
+  /// blade's split step that snapping leaves with a face it cannot split (nodes of a tiny
+  /// face where several of its triangles meet, some snapped, some not) is made again
+  /// without: every side then exact, at the price of a sliver.
+  bool snap = true;
 };
 
 /// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);

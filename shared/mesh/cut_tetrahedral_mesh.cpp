@@ -262,12 +262,17 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < input.mesh.nodes.rows(); ++node)
     bounds.extend(input.mesh.nodes.row(node).transpose());
-  for (auto& [plane, scope] : surface_blade_steps(blade)) {
-    if (scope.region && !scope.region->intersects(bounds)) continue;
+  TrianglePlaneNodes on_plane;
+  for (const SurfaceBladeStep& blade_step : surface_blade_steps(blade)) {
+    if (!blade_step.scope.region->intersects(bounds)) continue;
+    CutScope scope = on_plane.scope_for(blade_step);
     // A fragment left whole keeps its faces: a face split for one side only would hold a
     // node in the middle of an edge of the other's, which no fan of its faces conforms to.
     scope.spread = true;
-    TetrahedralCut step = cut_tetrahedral_mesh(result.result, plane, scope);
+    const Eigen::Index nodes_before = result.result.mesh.nodes.rows();
+    TetrahedralCut step = cut_with_snapping_or_without(
+        [&](const CutScope& tried) { return cut_tetrahedral_mesh(result.result, blade_step.plane, tried); }, scope);
+    on_plane.after(blade_step, step.result.mesh.nodes, step.node_sources, nodes_before);
     for (int& parent : step.parent_fragment) parent = result.parent_fragment[parent];
     result.result = std::move(step.result);
     result.parent_fragment = std::move(step.parent_fragment);

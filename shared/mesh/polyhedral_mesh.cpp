@@ -65,11 +65,18 @@ void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
     const Eigen::MatrixXd polygon = face_polygon(mesh, face);
     const Eigen::Vector3d area_vector = polygon_area_vector(polygon);
     const double area = area_vector.norm();
-    const Eigen::VectorXd moments = planar_polygon_moments(polygon, 1);
     mesh.face_areas(face) = area;
     mesh.face_normals.row(face) = area > 0 ? Eigen::Vector3d(area_vector / area) : Eigen::Vector3d::Zero();
-    mesh.face_centroids.row(face) = area > 0 ? Eigen::Vector3d(moments(x), moments(y), moments(z)) / moments(0)
-                                             : Eigen::Vector3d(polygon.colwise().mean());
+    mesh.face_centroids.row(face) = polygon.colwise().mean();
+    // A face of no area (its nodes coincide to rounding: a cut's sliver, merged next) has
+    // no moments; its centroid is its nodes' mean.
+    if (!(area > 0)) continue;
+    try {
+      const Eigen::VectorXd moments = planar_polygon_moments(polygon, 1);
+      if (moments(0) > 0)
+        mesh.face_centroids.row(face) = Eigen::Vector3d(moments(x), moments(y), moments(z)) / moments(0);
+    } catch (const std::invalid_argument&) {
+    }
   }
 
   const int cell_count = mesh.cell_count();
@@ -80,7 +87,12 @@ void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
 #pragma omp parallel for schedule(dynamic, 64)
   for (int cell = 0; cell < cell_count; ++cell) {
     const Polyhedron polyhedron = cell_polyhedron(mesh, cell);
-    const Eigen::VectorXd moments = polyhedron_moments(polyhedron, 1);
+    Eigen::VectorXd moments;
+    try {
+      moments = polyhedron_moments(polyhedron, 1);
+    } catch (const std::invalid_argument&) {
+      moments = Eigen::VectorXd::Zero(1);  // its nodes coincide: no volume, reported below
+    }
     const double volume = moments(0);
     if (!(volume > 0)) {
 #pragma omp critical(altfem_polyhedral_bad_cell)

@@ -1,5 +1,9 @@
 #include "shared/simulation/event_schedule.hpp"
 
+#include <sstream>
+
+#include "shared/common/error.hpp"
+
 namespace altfem {
 
 EventSchedule::EventSchedule(const Scene& scene, Simulation& simulation, std::ostringstream& log)
@@ -11,7 +15,15 @@ EventSchedule::EventSchedule(const Scene& scene, Simulation& simulation, std::os
 void EventSchedule::apply_due(double now) {
   while (next_ < events_.size() && events_[next_].time <= now + tolerance_) {
     const MethodInstance* before = &simulation_.method();
-    const EventRecord record = simulation_.apply(events_[next_++]);
+    const SceneEvent& event = events_[next_++];
+    EventRecord record;
+    try {
+      record = simulation_.apply(event);
+    } catch (const NumericalError& error) {  // where: the event, then what failed in it
+      std::ostringstream where;
+      where << event.pointer << " (t = " << event.time << "): " << error.what();
+      throw NumericalError(where.str());
+    }
     log_ << record.log_line() << '\n';
     records_.push_back(record.json());
     if (&simulation_.method() != before) unembedded_ = records_.size() - 1;
