@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "shared/common/error.hpp"
 #include "shared/geometry/exact_orientation.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
@@ -263,6 +264,7 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
   for (Eigen::Index node = 0; node < input.mesh.nodes.rows(); ++node)
     bounds.extend(input.mesh.nodes.row(node).transpose());
   TrianglePlaneNodes on_plane;
+  const int fragment_limit = 50 * input.fragment_count() + 100000;
   for (const SurfaceBladeStep& blade_step : surface_blade_steps(blade)) {
     if (!blade_step.scope.region->intersects(bounds)) continue;
     CutScope scope = on_plane.scope_for(blade_step);
@@ -280,6 +282,15 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
     result.duplicated_nodes += step.duplicated_nodes;
     result.snapped_nodes += step.snapped_nodes;
     result.flat_tetrahedra += step.flat_tetrahedra;
+    // Each split spreads through the body, so a blade whose triangles lie in many planes
+    // (a closed or finely curved one) multiplies the fragments: stop before that runs for
+    // hours or fills the memory.
+    if (result.result.fragment_count() > fragment_limit)
+      throw NumericalError("cut: the surface blade's " + std::to_string(blade.triangles.rows()) +
+                           " triangles split the embedded tetrahedra into more than " + std::to_string(fragment_limit) +
+                           " fragments (from " + std::to_string(input.fragment_count()) +
+                           "): each triangle's planes cut them through the body; a blade of fewer planes, or the "
+                           "dg and harmonic methods, which split only the cells near each triangle");
   }
   std::vector<int> pieces_of(static_cast<std::size_t>(input.fragment_count()), 0);
   for (const int parent : result.parent_fragment) ++pieces_of[parent];

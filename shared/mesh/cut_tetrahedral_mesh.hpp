@@ -70,7 +70,9 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
 
 /// `input` cut by every step of `blade` (cut_by_surface.hpp): its parent fragments are
 /// `input`'s, its node sources empty, its counts the steps' summed (crossed_fragments:
-/// fragments of `input` now in several).
+/// fragments of `input` now in several). Each split spreads through the body (the
+/// fragments stay conforming), so a blade whose triangles lie in many planes multiplies
+/// the fragments: NumericalError past 50 × the input's fragments + 100,000.
 TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input, const SurfaceBlade& blade);
 
 }  // namespace altfem
