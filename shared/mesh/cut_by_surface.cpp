@@ -159,12 +159,8 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     PolyhedralCut step = cut_with_snapping_or_without(
         [&](const CutScope& tried) { return cut_polyhedral_mesh(result.mesh, blade_step.plane, false, tried); }, scope);
     on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
-    for (int& parent : step.parent_cell) parent = result.parent_cell[parent];
+    fold_step_counts(result, step, result.parent_cell, step.parent_cell);
     result.mesh = std::move(step.mesh);
-    result.parent_cell = std::move(step.parent_cell);
-    result.separated_faces += step.separated_faces;
-    result.duplicated_nodes += step.duplicated_nodes;
-    result.snapped_nodes += step.snapped_nodes;
   }
   join_unparted_pieces(result.mesh, result.parent_cell);
   std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);

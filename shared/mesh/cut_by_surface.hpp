@@ -17,6 +17,7 @@
 // meet around the blade's edge and across none of its faces. The cells out of reach of
 // the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
+#include <utility>
 #include <vector>
 
 #include "shared/common/error.hpp"
@@ -79,6 +80,18 @@ auto cut_with_snapping_or_without(const Cut& cut, CutScope scope) {
     scope.snap = false;
     return cut(scope);
   }
+}
+
+/// Folds a step into the cut so far (PolyhedralCut or TetrahedralCut, `parents` their
+/// parent cells or fragments): the step's parents become the cut's input's, its counts
+/// add up.
+template <typename Cut>
+void fold_step_counts(Cut& cut, Cut& step, std::vector<int>& parents, std::vector<int>& step_parents) {
+  for (int& parent : step_parents) parent = parents[parent];
+  parents = std::move(step_parents);
+  cut.separated_faces += step.separated_faces;
+  cut.duplicated_nodes += step.duplicated_nodes;
+  cut.snapped_nodes += step.snapped_nodes;
 }
 
 /// `mesh` cut by every step of `blade`. The result's parent cells are `mesh`'s; its node

@@ -275,12 +275,8 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
     TetrahedralCut step = cut_with_snapping_or_without(
         [&](const CutScope& tried) { return cut_tetrahedral_mesh(result.result, blade_step.plane, tried); }, scope);
     on_plane.after(blade_step, step.result.mesh.nodes, step.node_sources, nodes_before);
-    for (int& parent : step.parent_fragment) parent = result.parent_fragment[parent];
+    fold_step_counts(result, step, result.parent_fragment, step.parent_fragment);
     result.result = std::move(step.result);
-    result.parent_fragment = std::move(step.parent_fragment);
-    result.separated_faces += step.separated_faces;
-    result.duplicated_nodes += step.duplicated_nodes;
-    result.snapped_nodes += step.snapped_nodes;
     result.flat_tetrahedra += step.flat_tetrahedra;
     // Each split spreads through the body, so a blade whose triangles lie in many planes
     // (a closed or finely curved one) multiplies the fragments: stop before that runs for

@@ -17,33 +17,12 @@
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/simulation.hpp"
 #include "tests/verify/events/piece_momentum.hpp"
+#include "tests/verify/events/static_answer.hpp"
 
 namespace altfem {
 namespace {
 
 const std::filesystem::path scenes = std::filesystem::path(ALTFEM_SOURCE_DIR) / "tests/verify/events/scenes";
-
-struct StaticAnswer {
-  double energy = 0;         ///< the method's elastic energy of the solution [J]
-  double vertical_mass = 0;  ///< ∫ρ u_z dV [kg m]
-};
-
-// The static solution of a scene (one load step), its event applied before the step.
-StaticAnswer solve_static(const std::filesystem::path& file, const std::string& method_name,
-                          const std::vector<SceneOverride>& overrides = {}) {
-  const Scene scene = load_scene(file, overrides);
-  const SceneGeometry geometry = load_scene_geometry(scene);
-  const MethodDescription& method = cli::find_method(method_name);
-  Simulation simulation(scene, geometry, method_name, method.factory, method.rebuild);
-  for (const SceneEvent& event : scene.events) {
-    const EventRecord record = simulation.apply(event);
-    EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12);
-  }
-  simulation.integrator().step(simulation.state());
-  const Discretization& discretization = simulation.method().discretization();
-  const Eigen::VectorXd& u = simulation.state().displacement;
-  return {discretization.energy(u), discretization.body_force(Eigen::Vector3d::UnitZ()).dot(u)};
-}
 
 class CutBySurface : public ::testing::TestWithParam<std::string> {};
 
