@@ -69,15 +69,15 @@ private:
 /// pieces joined away.
 int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
 
-/// `cut(scope)`, and for a split step that throws NumericalError `cut` again without
-/// snapping (CutScope::snap).
+/// `cut(scope)`, and for a split step that throws NumericalError `cut` again snapping only
+/// nodes a few ulps off the plane (CutScope::snap_fraction).
 template <typename Cut>
-auto cut_with_snapping_or_without(const Cut& cut, CutScope scope) {
+auto cut_snapping_less_if_need_be(const Cut& cut, CutScope scope) {
   if (scope.action != CutAction::split) return cut(scope);
   try {
     return cut(scope);
   } catch (const NumericalError&) {
-    scope.snap = false;
+    scope.snap_fraction = 1e-15;
     return cut(scope);
   }
 }

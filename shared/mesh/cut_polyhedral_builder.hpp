@@ -18,9 +18,6 @@
 
 namespace altfem::polyhedral_cut {
 
-// Of the mesh's bounding-box diagonal: a few hundred ulps, far below any element.
-constexpr double snap_fraction = 1e-13;
-
 // A face a split step cannot split (a cluster of nodes a few ulps apart whose rounded
 // positions cross the plane more than twice): its cells are kept whole and the step is
 // made again.
@@ -49,7 +46,7 @@ public:
     // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
     // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
     const double snap_distance =
-        scope.snap ? snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm() : 0.0;
+        scope.snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
     const Eigen::Vector3d unit_normal = blade_.normal.normalized();
     side_.resize(nodes_.size());
     for (std::size_t n = 0; n < nodes_.size(); ++n) {

@@ -66,11 +66,11 @@ struct CutScope {
   /// distance (a surface blade's step knows which nodes an earlier step made on its
   /// triangle's plane, a rounding off it).
   const std::vector<int>* on_plane = nullptr;
-  /// Whether nodes within the snapping distance are taken on the plane (above). A surface
-  /// blade's split step that snapping leaves with a face it cannot split (nodes of a tiny
-  /// face where several of its triangles meet, some snapped, some not) is made again
-  /// without: every side then exact, at the price of a sliver.
-  bool snap = true;
+  /// The snapping distance (above) as a fraction of the mesh's bounding-box diagonal. A
+  /// surface blade's split step that 1e-13 leaves with a face it cannot split (nodes of a
+  /// tiny face where several of its triangles meet, some snapped, some not) is made again
+  /// with 1e-15: a few ulps, so that no crossing node rounds onto an end of its edge.
+  double snap_fraction = 1e-13;
 };
 
 /// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);

@@ -63,39 +63,6 @@ std::vector<std::vector<int>> outward_loops(const PolyhedralMesh& mesh, int cell
   return loops;
 }
 
-// The mesh without the cells `keep` drops (their faces with a kept cell become that
-// cell's boundary faces); nodes keep their numbers. `kept` receives each kept cell's index.
-PolyhedralMesh with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep, std::vector<int>& kept) {
-  std::vector<int> new_index(keep.size(), -1);
-  for (std::size_t cell = 0; cell < keep.size(); ++cell)
-    if (keep[cell]) {
-      new_index[cell] = static_cast<int>(kept.size());
-      kept.push_back(static_cast<int>(cell));
-    }
-  PolyhedralMesh result;
-  result.nodes = mesh.nodes;
-  result.cell_faces.resize(kept.size());
-  for (const int cell : kept) result.cell_kinds.push_back(mesh.cell_kinds[cell]);
-  std::vector<std::array<int, 2>> face_cells;
-  for (int face = 0; face < mesh.face_count(); ++face) {
-    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
-    const int kept_first = first >= 0 ? new_index[first] : -1, kept_second = second >= 0 ? new_index[second] : -1;
-    if (kept_first < 0 && kept_second < 0) continue;
-    std::vector<int> loop = mesh.faces[face];
-    if (kept_first < 0) std::reverse(loop.begin(), loop.end());  // now oriented for the second
-    const int index = static_cast<int>(result.faces.size());
-    result.faces.push_back(std::move(loop));
-    face_cells.push_back(kept_first >= 0 ? std::array<int, 2>{kept_first, kept_second}
-                                         : std::array<int, 2>{kept_second, -1});
-    for (const int cell : {kept_first, kept_second})
-      if (cell >= 0) result.cell_faces[cell].push_back(index);
-  }
-  result.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  for (std::size_t face = 0; face < face_cells.size(); ++face)
-    result.face_cells.row(static_cast<Eigen::Index>(face)) << face_cells[face][0], face_cells[face][1];
-  return result;
-}
-
 // The input's fragments that hold a tetrahedron that is not flat, as the polyhedral mesh
 // the blade cuts: per kept fragment its input index and non-flat tetrahedra, and per
 // node of that mesh its input node.
@@ -127,7 +94,7 @@ CutInput cut_input(const FragmentedTetrahedra& input, int& flat) {
       result.fragment.resize(keep.size());
       std::iota(result.fragment.begin(), result.fragment.end(), 0);
     } else {
-      result.built = with_cells(input.fragments, keep, result.fragment);
+      result.built = polyhedral_mesh_with_cells(input.fragments, keep, result.fragment);
     }
   } else {
     // Each tetrahedron its own fragment: polyhedral_mesh_from_volume_mesh keeps the used
@@ -272,7 +239,7 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
     // node in the middle of an edge of the other's, which no fan of its faces conforms to.
     scope.spread = true;
     const Eigen::Index nodes_before = result.result.mesh.nodes.rows();
-    TetrahedralCut step = cut_with_snapping_or_without(
+    TetrahedralCut step = cut_snapping_less_if_need_be(
         [&](const CutScope& tried) { return cut_tetrahedral_mesh(result.result, blade_step.plane, tried); }, scope);
     on_plane.after(blade_step, step.result.mesh.nodes, step.node_sources, nodes_before);
     fold_step_counts(result, step, result.parent_fragment, step.parent_fragment);

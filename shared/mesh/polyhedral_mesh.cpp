@@ -113,4 +113,36 @@ void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
                          " has a non-positive volume (inverted or open faces)");
 }
 
+PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep,
+                                          std::vector<int>& kept) {
+  std::vector<int> new_index(keep.size(), -1);
+  for (std::size_t cell = 0; cell < keep.size(); ++cell)
+    if (keep[cell]) {
+      new_index[cell] = static_cast<int>(kept.size());
+      kept.push_back(static_cast<int>(cell));
+    }
+  PolyhedralMesh result;
+  result.nodes = mesh.nodes;
+  result.cell_faces.resize(kept.size());
+  for (const int cell : kept) result.cell_kinds.push_back(mesh.cell_kinds[cell]);
+  std::vector<std::array<int, 2>> face_cells;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    const int kept_first = first >= 0 ? new_index[first] : -1, kept_second = second >= 0 ? new_index[second] : -1;
+    if (kept_first < 0 && kept_second < 0) continue;
+    std::vector<int> loop = mesh.faces[face];
+    if (kept_first < 0) std::reverse(loop.begin(), loop.end());  // now oriented for the second
+    const int index = static_cast<int>(result.faces.size());
+    result.faces.push_back(std::move(loop));
+    face_cells.push_back(kept_first >= 0 ? std::array<int, 2>{kept_first, kept_second}
+                                         : std::array<int, 2>{kept_second, -1});
+    for (const int cell : {kept_first, kept_second})
+      if (cell >= 0) result.cell_faces[cell].push_back(index);
+  }
+  result.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
+  for (std::size_t face = 0; face < face_cells.size(); ++face)
+    result.face_cells.row(static_cast<Eigen::Index>(face)) << face_cells[face][0], face_cells[face][1];
+  return result;
+}
+
 }  // namespace altfem

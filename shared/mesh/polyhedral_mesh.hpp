@@ -64,4 +64,10 @@ Polyhedron cell_polyhedron(const PolyhedralMesh& mesh, int cell);
 /// NumericalError naming the cell when a cell's volume is not positive.
 void compute_polyhedral_geometry(PolyhedralMesh& mesh);
 
+/// The mesh without the cells `keep` drops (their faces with a kept cell become that
+/// cell's boundary faces); nodes keep their numbers, geometry arrays are left empty.
+/// `kept` receives each kept cell's index.
+PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep,
+                                          std::vector<int>& kept);
+
 }  // namespace altfem
