@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -41,10 +40,6 @@ std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade)
   }
   return within;
 }
-
-}  // namespace
-
-namespace {
 
 // Nodes at one position that follow one another along a face — a crossing that rounded
 // onto an end of its edge, where several of the blade's planes meet — become one node;
