@@ -13,9 +13,8 @@
 // Where the blade ends inside the body its pieces stay joined around the blade's edge.
 // The steps leave a cell near the blade in up to five pieces per triangle that reaches
 // it; the polyhedral cut then joins again the pieces of a cell that the blade did not part
-// (one non-convex cell per side), but where the blade ends inside a cell, whose pieces
-// meet around the blade's edge and across none of its faces. The cells out of reach of
-// the steps keep their nodes, faces and kind.
+// (one non-convex cell per side), never two across a slit where the blade ends inside the
+// cell. The cells out of reach of the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
 #include <utility>
 #include <vector>
@@ -27,8 +26,8 @@ namespace altfem {
 
 struct SurfaceBlade {
   Eigen::MatrixXd vertices;  ///< #vertices × 3
-  Eigen::MatrixXi
-      triangles;  ///< #triangles × 3; a triangle's positive side is where its corners turn counter-clockwise
+  /// #triangles × 3; a triangle's positive side is the one its corners turn counter-clockwise seen from
+  Eigen::MatrixXi triangles;
 };
 
 /// One planar step of a surface blade's cut.
