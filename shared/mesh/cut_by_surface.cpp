@@ -12,6 +12,7 @@
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/surface_cut_debris.hpp"
 
 namespace altfem {
 
@@ -39,69 +40,6 @@ std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade)
     within[first][k] = within[second][j] = true;
   }
   return within;
-}
-
-// Nodes at one position that follow one another along a face — a crossing that rounded
-// onto an end of its edge, where several of the blade's planes meet — become one node;
-// a face left with fewer than 3 nodes (no area) is dropped. Nodes no face uses stay
-// (geometry ignores them). The copies of a node on an opened face never follow one
-// another along a face: they lie on either side of it.
-void weld_coincident_neighbours(PolyhedralMesh& mesh) {
-  DisjointSets same(static_cast<int>(mesh.nodes.rows()));
-  bool any = false;
-  for (const std::vector<int>& loop : mesh.faces)
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const int u = loop[k], v = loop[(k + 1) % loop.size()];
-      if (u != v && mesh.nodes.row(u) == mesh.nodes.row(v)) {
-        same.join(std::min(u, v), std::max(u, v));
-        any = true;
-      }
-    }
-  if (!any) return;
-  std::vector<std::vector<int>> faces;
-  std::vector<std::array<int, 2>> face_cells;
-  for (int face = 0; face < mesh.face_count(); ++face) {
-    std::vector<int> loop;
-    for (const int node : mesh.faces[face]) {
-      const int kept = same.find(node);
-      if (loop.empty() || loop.back() != kept) loop.push_back(kept);
-    }
-    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
-    if (loop.size() < 3) continue;
-    faces.push_back(std::move(loop));
-    face_cells.push_back({mesh.face_cells(face, 0), mesh.face_cells(face, 1)});
-  }
-  mesh.faces = std::move(faces);
-  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  for (auto& list : mesh.cell_faces) list.clear();
-  for (std::size_t face = 0; face < face_cells.size(); ++face) {
-    const Eigen::Index row = static_cast<Eigen::Index>(face);
-    mesh.face_cells.row(row) << face_cells[face][0], face_cells[face][1];
-    for (const int cell : face_cells[face])
-      if (cell >= 0) mesh.cell_faces[cell].push_back(static_cast<int>(face));
-  }
-}
-
-// Drops the cells whose rounded volume is not positive and that have no interior face:
-// slivers of rounding size the blade cut off whole, which no neighbour can take in.
-// Returns how many.
-int drop_pieces_without_volume(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
-  std::vector<bool> keep(static_cast<std::size_t>(mesh.cell_count()), true);
-  int dropped = 0;
-  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
-    const bool alone = std::all_of(mesh.cell_faces[cell].begin(), mesh.cell_faces[cell].end(),
-                                   [&](int face) { return mesh.face_cells(face, 1) < 0; });
-    if (!alone || polyhedron_moments(cell_polyhedron(mesh, cell), 0)(0) > 0) continue;
-    keep[cell] = false;
-    ++dropped;
-  }
-  if (dropped == 0) return 0;
-  std::vector<int> kept;
-  mesh = polyhedral_mesh_with_cells(mesh, keep, kept);
-  std::vector<int> parents;
-  for (const int cell : kept) parents.push_back(parent_cell[cell]);
-  parent_cell = std::move(parents);
-  return dropped;
 }
 
 }  // namespace
@@ -161,15 +99,17 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
     const CuttingPlane plane = polygon_blade(corners);
     if (const std::string problem = blade_polygon_problem(plane); !problem.empty())
       throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
-    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true});
+    const std::array<Eigen::Vector3d, 3> triangle_corners{corners[0], corners[1], corners[2]};
+    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners});
     for (int k = 0; k < 3; ++k) {
       if (within[triangle][k]) continue;
       const Eigen::Vector3d& from = corners[k];
       const Eigen::Vector3d& to = corners[(k + 1) % 3];
       Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
-      steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}, false});
+      steps.push_back(
+          {CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}, false, triangle_corners});
     }
-    steps.push_back({plane, {CutAction::separate, box}, true});
+    steps.push_back({plane, {CutAction::separate, box}, true, triangle_corners});
   }
   return steps;
 }
@@ -224,9 +164,15 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
     fold_step_counts(result, step, result.parent_cell, step.parent_cell);
     result.mesh = std::move(step.mesh);
+    snap_new_nodes_to_corners(result.mesh, nodes_before, blade_step.corners, 1e-9 * bounds.diagonal().norm());
+    weld_coincident_neighbours(result.mesh);
   }
+  const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh);
+  result.separated_faces += rounding.faces;
+  result.duplicated_nodes += rounding.duplicated_nodes;
   join_unparted_pieces(result.mesh, result.parent_cell);
   weld_coincident_neighbours(result.mesh);
+  result.dropped_pieces = drop_isolated_slivers(result.mesh, result.parent_cell, mesh);
   std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);
   for (const int parent : result.parent_cell) ++pieces_of[parent];
   for (const int pieces : pieces_of) result.crossed_cells += pieces > 1 ? 1 : 0;
@@ -234,15 +180,13 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
   try {
     compute_polyhedral_geometry(result.mesh);
   } catch (const NumericalError&) {
-    // As a planar cut: pieces a few 1e-12 thin, merged into a neighbour; those the blade
-    // cut off whole (no interior face) are dropped, losing their rounding of volume.
+    // As a planar cut: pieces a few 1e-12 thin, merged into a neighbour.
     std::vector<bool> is_piece(result.parent_cell.size());
     for (std::size_t piece = 0; piece < is_piece.size(); ++piece)
       is_piece[piece] = pieces_of[result.parent_cell[piece]] > 1;
     std::vector<NodeSource> sources(static_cast<std::size_t>(result.mesh.nodes.rows()));
     try {
       result.merged_pieces = merge_pieces_without_volume(result.mesh, result.parent_cell, sources, is_piece);
-      result.merged_pieces += drop_pieces_without_volume(result.mesh, result.parent_cell);
     } catch (const std::invalid_argument&) {  // a piece whose nodes coincide (below)
       throw NumericalError(
           "cut: the surface blade left pieces of no size, where its triangles' planes cut the "

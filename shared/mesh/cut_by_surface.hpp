@@ -16,6 +16,7 @@
 // (one non-convex cell per side), never two across a slit where the blade ends inside the
 // cell. The cells out of reach of the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -34,7 +35,8 @@ struct SurfaceBlade {
 struct SurfaceBladeStep {
   CuttingPlane plane;
   CutScope scope;
-  bool triangle_plane = false;  ///< the triangle's own plane (its split or separation), not an edge's
+  bool triangle_plane = false;             ///< the triangle's own plane (its split or separation), not an edge's
+  std::array<Eigen::Vector3d, 3> corners;  ///< the triangle's
 };
 
 /// The planar steps `blade` is cut by, in order: per triangle up to five (its plane's

@@ -85,15 +85,16 @@ using CapPlane = std::function<CuttingPlane(std::size_t cap, const Mesh& mesh, M
 
 // `piece` split by `splitter` (its vertices on the cut curves duplicated, one copy per
 // side) and each of `caps` clipped to the body, appended to `out` with a copy of each cap
-// per side. A bent cap (a surface blade's) keeps its triangles and may miss the piece:
-// then this returns false, appending nothing.
+// per side. A bent cap (a surface blade's) keeps its triangles and may miss the piece: then
+// this returns false, appending nothing. One wholly inside the piece leaves the piece's
+// triangles as they are and adds its two sides (its border, a crack's rim, one vertex).
 bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const CapPlane& plane_of, bool planar_caps,
                        double edge_length, CutPieces& out) {
   Mesh clipper = piece;  // the body before the split, for the caps (clip leaves it as it is)
   const std::size_t vertices_before = piece.number_of_vertices();
   PMP::split(piece, splitter);
   piece.collect_garbage();
-  if (!planar_caps && piece.number_of_vertices() == vertices_before) return false;
+  const bool split_any = piece.number_of_vertices() != vertices_before;
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
   renumber_by_position(piece);
@@ -107,6 +108,11 @@ bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const
       cut_curve::remesh_cap(
           cap, [](Mesh::Face_index) { return true; }, edge_length);
   }
+  // A bent cap that does not cross the surface may still lie inside the body (a closed
+  // blade, a crack wholly inside): the surface is left as it is, and gains the cap's two sides.
+  if (!planar_caps && !split_any &&
+      std::all_of(caps.begin(), caps.end(), [](const Mesh& cap) { return cap.number_of_faces() == 0; }))
+    return false;
 
   // The piece's vertices: the input's, then its new ones (the curve's copies).
   std::vector<int> output_vertex(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);

@@ -1,0 +1,139 @@
+#include "shared/mesh/surface_cut_debris.hpp"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+
+#include "shared/geometry/polygon_moments.hpp"
+#include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/mesh/cut_polyhedral_pieces.hpp"
+#include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/merge_slivers.hpp"
+
+namespace altfem {
+
+void weld_coincident_neighbours(PolyhedralMesh& mesh, double tolerance) {
+  DisjointSets same(static_cast<int>(mesh.nodes.rows()));
+  bool any = false;
+  for (const std::vector<int>& loop : mesh.faces)
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const int u = loop[k], v = loop[(k + 1) % loop.size()];
+      if (u != v && (mesh.nodes.row(u) - mesh.nodes.row(v)).norm() <= tolerance) {
+        same.join(std::min(u, v), std::max(u, v));
+        any = true;
+      }
+    }
+  if (!any) return;
+  std::vector<std::vector<int>> faces;
+  std::vector<std::array<int, 2>> face_cells;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    std::vector<int> loop;
+    for (const int node : mesh.faces[face]) {
+      const int kept = same.find(node);
+      if (loop.empty() || loop.back() != kept) loop.push_back(kept);
+    }
+    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+    if (loop.size() < 3) continue;
+    faces.push_back(std::move(loop));
+    face_cells.push_back({mesh.face_cells(face, 0), mesh.face_cells(face, 1)});
+  }
+  mesh.faces = std::move(faces);
+  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
+  for (auto& list : mesh.cell_faces) list.clear();
+  for (std::size_t face = 0; face < face_cells.size(); ++face) {
+    const Eigen::Index row = static_cast<Eigen::Index>(face);
+    mesh.face_cells.row(row) << face_cells[face][0], face_cells[face][1];
+    for (const int cell : face_cells[face])
+      if (cell >= 0) mesh.cell_faces[cell].push_back(static_cast<int>(face));
+  }
+}
+
+void snap_new_nodes_to_corners(PolyhedralMesh& mesh, Eigen::Index first_new,
+                               const std::array<Eigen::Vector3d, 3>& corners, double tolerance) {
+  for (Eigen::Index node = first_new; node < mesh.nodes.rows(); ++node)
+    for (const Eigen::Vector3d& corner : corners)
+      if ((mesh.nodes.row(node).transpose() - corner).norm() <= tolerance) mesh.nodes.row(node) = corner.transpose();
+}
+
+FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh) {
+  Eigen::AlignedBox3d bounds;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
+  const double rounding_width = 1e-12 * bounds.diagonal().norm(), rounding_length = 1e-9 * bounds.diagonal().norm();
+  std::vector<CutFace> faces;
+  std::vector<bool> opened_node(static_cast<std::size_t>(mesh.nodes.rows()), false);
+  FacesSeparated result;
+  Eigen::MatrixXd polygon;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const std::vector<int>& loop = mesh.faces[face];
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    bool separate = false;
+    if (second >= 0) {
+      polygon.resize(static_cast<Eigen::Index>(loop.size()), 3);
+      // About its first node: Newell's sum about the origin rounds to 1e-17 for a face a
+      // few ulps across.
+      for (std::size_t k = 0; k < loop.size(); ++k)
+        polygon.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[0]);
+      double longest = 0;
+      for (std::size_t k = 0; k < loop.size(); ++k)
+        longest = std::max(longest, (mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[(k + 1) % loop.size()])).norm());
+      separate = longest <= rounding_length || polygon_area_vector(polygon).norm() <= rounding_width * longest;
+    }
+    if (!separate) {
+      faces.push_back({loop, first, second, +1, false});
+      continue;
+    }
+    ++result.faces;
+    for (const int node : loop) opened_node[node] = true;
+    faces.push_back({loop, first, -1, +1, true});
+    faces.push_back({std::vector<int>(loop.rbegin(), loop.rend()), second, -1, +1, true});
+  }
+  if (result.faces == 0) return result;
+  std::vector<Eigen::Vector3d> nodes;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) nodes.push_back(mesh.nodes.row(node).transpose());
+  std::vector<NodeSource> sources(nodes.size());  // not carried: a surface blade's cut has none
+  result.duplicated_nodes = duplicate_separated_nodes(
+      faces, opened_node, std::vector<int>(static_cast<std::size_t>(mesh.cell_count()), +1), nodes, sources);
+  mesh.nodes.resize(static_cast<Eigen::Index>(nodes.size()), 3);
+  for (std::size_t node = 0; node < nodes.size(); ++node)
+    mesh.nodes.row(static_cast<Eigen::Index>(node)) = nodes[node].transpose();
+  mesh.faces.clear();
+  mesh.face_cells.resize(static_cast<Eigen::Index>(faces.size()), 2);
+  for (auto& list : mesh.cell_faces) list.clear();
+  for (std::size_t face = 0; face < faces.size(); ++face) {
+    mesh.faces.push_back(std::move(faces[face].loop));
+    mesh.face_cells.row(static_cast<Eigen::Index>(face)) << faces[face].first, faces[face].second;
+    mesh.cell_faces[faces[face].first].push_back(static_cast<int>(face));
+    if (faces[face].second >= 0) mesh.cell_faces[faces[face].second].push_back(static_cast<int>(face));
+  }
+  return result;
+}
+
+int drop_isolated_slivers(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const PolyhedralMesh& parents) {
+  constexpr double rounding_fraction = 1e-13;
+  std::vector<bool> keep(static_cast<std::size_t>(mesh.cell_count()), true);
+  int dropped = 0;
+  for (int cell = 0; cell < mesh.cell_count(); ++cell) {
+    const bool alone = std::all_of(mesh.cell_faces[cell].begin(), mesh.cell_faces[cell].end(),
+                                   [&](int face) { return mesh.face_cells(face, 1) < 0; });
+    if (!alone) continue;
+    if (mesh.cell_faces[cell].empty()) {  // welded to nothing
+      keep[cell] = false;
+      ++dropped;
+      continue;
+    }
+    const double parent_volume = polyhedron_moments(cell_polyhedron(parents, parent_cell[cell]), 0)(0);
+    if (polyhedron_moments(cell_polyhedron(mesh, cell), 0)(0) > rounding_fraction * parent_volume) continue;
+    keep[cell] = false;
+    ++dropped;
+  }
+  if (dropped == 0) return 0;
+  std::vector<int> kept;
+  mesh = polyhedral_mesh_with_cells(mesh, keep, kept);
+  drop_unused_nodes(mesh);
+  std::vector<int> parents_kept;
+  for (const int cell : kept) parents_kept.push_back(parent_cell[cell]);
+  parent_cell = std::move(parents_kept);
+  return dropped;
+}
+
+}  // namespace altfem
