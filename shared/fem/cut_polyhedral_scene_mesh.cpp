@@ -34,6 +34,8 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
            {"snapped_nodes", result_of_cut.snapped_nodes},
            {"merged_pieces", merged.merged + result_of_cut.merged_pieces},
            {"dropped_pieces", result_of_cut.dropped_pieces},
+           {"merged_faces", result_of_cut.merged_faces},
+           {"dropped_nodes", result_of_cut.dropped_nodes},
            {"cells", pieces.cell_count()}};
   // Per cell of the result: its parent, the cell before that held it whole (-1: pieces of
   // several merged), and its level, its parent's (merged pieces: the most refined one's).

@@ -12,6 +12,7 @@
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/simplify_cut_faces.hpp"
 #include "shared/mesh/surface_cut_debris.hpp"
 
 namespace altfem {
@@ -173,6 +174,10 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
   join_unparted_pieces(result.mesh, result.parent_cell);
   weld_coincident_neighbours(result.mesh);
   result.dropped_pieces = drop_isolated_slivers(result.mesh, result.parent_cell, mesh);
+  const double straight = 1e-12 * bounds.diagonal().norm();
+  result.merged_faces = merge_coplanar_faces(result.mesh, straight);
+  result.dropped_nodes = drop_straight_run_nodes(result.mesh, straight);
+  drop_unused_nodes(result.mesh);
   std::vector<int> pieces_of(static_cast<std::size_t>(mesh.cell_count()), 0);
   for (const int parent : result.parent_cell) ++pieces_of[parent];
   for (const int pieces : pieces_of) result.crossed_cells += pieces > 1 ? 1 : 0;

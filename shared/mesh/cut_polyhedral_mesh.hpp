@@ -42,6 +42,9 @@ struct PolyhedralCut {
   int duplicated_nodes = 0;              ///< copies of nodes on the opened faces
   int snapped_nodes = 0;                 ///< nodes off the plane by less than 1e-13 of the mesh's diagonal, taken on it
   int merged_pieces = 0;                 ///< pieces without a positive rounded volume, merged into a neighbour
+  int merged_faces =
+      0;  ///< surface blades: faces in one plane between the same cells, made one (simplify_cut_faces.hpp)
+  int dropped_nodes = 0;   ///< surface blades: nodes in the middle of a straight edge, removed
   int dropped_pieces = 0;  ///< surface blades: slivers of rounding volume cut off whole, dropped (cut_by_surface.hpp)
 };
 
