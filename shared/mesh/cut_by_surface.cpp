@@ -168,7 +168,7 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     snap_new_nodes_to_corners(result.mesh, nodes_before, blade_step.corners, 1e-9 * bounds.diagonal().norm());
     weld_coincident_neighbours(result.mesh);
   }
-  const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh);
+  const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh, blade);
   result.separated_faces += rounding.faces;
   result.duplicated_nodes += rounding.duplicated_nodes;
   join_unparted_pieces(result.mesh, result.parent_cell);

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
+#include <limits>
 
 #include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
@@ -55,7 +56,35 @@ void snap_new_nodes_to_corners(PolyhedralMesh& mesh, Eigen::Index first_new,
       if ((mesh.nodes.row(node).transpose() - corner).norm() <= tolerance) mesh.nodes.row(node) = corner.transpose();
 }
 
-FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh) {
+namespace {
+
+double distance_to_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double along = std::clamp((point - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+  return (point - a - along * (b - a)).norm();
+}
+
+// The distance from `point` to the blade's nearest triangle.
+double distance_to_blade(const Eigen::Vector3d& point, const SurfaceBlade& blade) {
+  double nearest = std::numeric_limits<double>::infinity();
+  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = blade.vertices.row(blade.triangles(t, 0)), b = blade.vertices.row(blade.triangles(t, 1)),
+                          c = blade.vertices.row(blade.triangles(t, 2));
+    const Eigen::Vector3d normal = (b - a).cross(c - a).normalized();
+    const double height = normal.dot(point - a);
+    const Eigen::Vector3d foot = point - height * normal;
+    // Inside when the foot is on the inner side of each edge.
+    const bool inside = (b - a).cross(foot - a).dot(normal) >= 0 && (c - b).cross(foot - b).dot(normal) >= 0 &&
+                        (a - c).cross(foot - c).dot(normal) >= 0;
+    nearest = std::min(nearest, inside ? std::abs(height)
+                                       : std::min({distance_to_segment(point, a, b), distance_to_segment(point, b, c),
+                                                   distance_to_segment(point, c, a)}));
+  }
+  return nearest;
+}
+
+}  // namespace
+
+FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const SurfaceBlade& blade) {
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
   const double rounding_width = 1e-12 * bounds.diagonal().norm(), rounding_length = 1e-9 * bounds.diagonal().norm();
@@ -76,7 +105,8 @@ FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh) {
       double longest = 0;
       for (std::size_t k = 0; k < loop.size(); ++k)
         longest = std::max(longest, (mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[(k + 1) % loop.size()])).norm());
-      separate = longest <= rounding_length || polygon_area_vector(polygon).norm() <= rounding_width * longest;
+      separate = (longest <= rounding_length || polygon_area_vector(polygon).norm() <= rounding_width * longest) &&
+                 distance_to_blade(mesh.nodes.row(loop[0]).transpose(), blade) <= rounding_length;
     }
     if (!separate) {
       faces.push_back({loop, first, second, +1, false});

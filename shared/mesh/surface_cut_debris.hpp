@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 namespace altfem {
@@ -35,14 +36,15 @@ struct FacesSeparated {
   int duplicated_nodes = 0;  ///< copies of their nodes for the pieces that no longer meet there
 };
 
-/// Every interior face of rounding width (its area at most its longest edge × 1e-12 of the
-/// mesh's bounding-box diagonal, ten times the cut's snapping distance) becomes a boundary
+/// Every interior face on `blade` (a node within 1e-9 of the mesh's bounding-box diagonal of
+/// it) of rounding width (its area at most its longest edge × 1e-12 of the diagonal, ten
+/// times the cut's snapping distance) or size (no edge longer than 1e-9 of it) becomes a boundary
 /// face of each of its two cells, and each node of those faces gets a copy for each group
 /// of cells that no longer meet around it (duplicate_separated_nodes). Such a face is where
 /// pieces of rounding size at a blade vertex, or along an edge between two of its
 /// triangles, touch the cells on both sides of the blade: a contact of no area, through
 /// which the two sides of a closed blade stayed one body. Geometry left stale.
-FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh);
+FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const SurfaceBlade& blade);
 
 /// Drops the cells that no interior face joins to a neighbour and whose volume is at most
 /// 1e-13 of their parent cell's (`parent_cell`: per cell, its cell of `parents`; updated),
