@@ -2,7 +2,10 @@
 // The mass and vertical momentum of what lies beyond a blade, by the method's volume
 // rule: a piece's interior points lie strictly on its side, so the points beyond the
 // plane (or within a bent blade's wedge) are the cut-off piece's. What the free-fall checks of the cut tests compare.
+#include <gtest/gtest.h>
+
 #include <Eigen/Core>
+#include <cmath>
 #include <optional>
 
 #include "shared/simulation/simulation.hpp"
@@ -41,6 +44,22 @@ inline PieceMomentum momentum_beyond(const Simulation& simulation, const Eigen::
                                      const Eigen::Vector3d& normal, double density) {
   return momentum_where(
       simulation, [&](const Eigen::Vector3d& x) { return (x - point).dot(normal) > 0; }, density);
+}
+
+/// Steps `simulation` `steps` times, expecting each backward-Euler step of `dt` to add
+/// m g dt to the vertical momentum of what `inside` holds (g = −9.81 m/s² along z), to
+/// 1e-6 of it: a piece that nothing holds falls freely.
+template <typename Inside>
+void expect_free_fall(Simulation& simulation, const Inside& inside, double density, double dt, int steps) {
+  const double g = -9.81;
+  PieceMomentum before = momentum_where(simulation, inside, density);
+  for (int step = 0; step < steps; ++step) {
+    simulation.integrator().step(simulation.state());
+    const PieceMomentum after = momentum_where(simulation, inside, density);
+    EXPECT_NEAR(after.momentum_z - before.momentum_z, before.mass * g * dt, 1e-6 * before.mass * std::abs(g) * dt)
+        << "step " << step;
+    before = after;
+  }
 }
 
 }  // namespace altfem
