@@ -111,7 +111,16 @@ protected:
       cholmod_factorize(&view, factor_, &common_);
     }
     if (common_.status == CHOLMOD_NOT_POSDEF) {
-      const std::string where = "CHOLMOD status " + status() + ", column " + std::to_string(factor_->minor) + ")";
+      std::string where = "CHOLMOD status " + status() + ", column " + std::to_string(factor_->minor);
+      // The column in the fill-reducing order; the unknown it is, in the caller's numbering
+      // (three per basis function, x y z).
+      if (factor_->minor < factor_->n && factor_->Perm != nullptr) {
+        const long unknown = wide_ ? static_cast<const SuiteSparse_long*>(factor_->Perm)[factor_->minor]
+                                   : static_cast<const int*>(factor_->Perm)[factor_->minor];
+        where += ": unknown " + std::to_string(unknown) + ", basis function " + std::to_string(unknown / 3) +
+                 " component " + "xyz"[unknown % 3];
+      }
+      where += ")";
       if (factorisation_ == CholmodFactorisation::simplicial_ldlt)
         throw NumericalError("matrix has a zero pivot, it is not quasi-definite (" + where);
       throw NumericalError("matrix is not positive definite (" + where);

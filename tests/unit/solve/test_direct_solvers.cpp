@@ -102,6 +102,20 @@ TEST(DirectSolvers, ChangedPatternIsAnalysedAgain) {
   }
 }
 
+TEST(DirectSolvers, CholmodNamesTheUnknownWhereTheMatrixIsNotDefinite) {
+  // Definite but for unknown 7 (basis function 2, y), wherever the ordering puts it.
+  Eigen::SparseMatrix<double> matrix = testing::elasticity_like_laplacian(6);
+  matrix.coeffRef(7, 7) = -matrix.coeff(7, 7);
+  auto solver = direct_solver(LinearSolverKind::cholmod);
+  try {
+    solver->factorize(matrix);
+    FAIL() << "CHOLMOD factorised an indefinite matrix";
+  } catch (const NumericalError& error) {
+    EXPECT_NE(std::string(error.what()).find(": unknown 7, basis function 2 component y)"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(DirectSolvers, CholmodRejectsIndefiniteMatrix) {
   const Eigen::SparseMatrix<double> matrix = testing::shifted(testing::elasticity_like_laplacian(6), 2.7);
   auto solver = direct_solver(LinearSolverKind::cholmod);
