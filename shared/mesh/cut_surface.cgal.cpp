@@ -281,19 +281,24 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
   return result;
 }
 
-// `before` cut again by `blades`: the whole planes one after the other, then the polygons
-// that span a piece's section, a piece at a time, then the others at once (the pieces the
-// same, cuts being sets: what splits a piece as a plane does first, since a notch leaves a
-// slit no plane's section can close). Throws NotAtOnce.
+// `before` cut again by `blades`: the whole planes one after the other, then the surface
+// blades, then the polygons that span a piece's section, a piece at a time, then the
+// others at once (the pieces the same, cuts being sets: what splits a piece as a plane does
+// first, since a notch leaves a slit no plane's section can close). Throws NotAtOnce.
 SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>& blades) {
   SurfaceCut result{before, {}};
   int cap_triangles = 0;
-  std::vector<CuttingPlane> polygons;
+  std::vector<CuttingPlane> surfaces, polygons;
+  for (const CuttingPlane& blade : blades)
+    if (blade.surface) surfaces.push_back(blade);
+    else if (!blade.polygon.empty()) polygons.push_back(blade);
   for (const CuttingPlane& blade : blades) {
-    if (!blade.polygon.empty()) {
-      polygons.push_back(blade);
-      continue;
-    }
+    if (blade.surface || !blade.polygon.empty()) continue;
+    result = cut_surface_by(result.surface, {blade});
+    if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
+    cap_triangles += result.facts["cap_triangles"].get<int>();
+  }
+  for (const CuttingPlane& blade : surfaces) {
     result = cut_surface_by(result.surface, {blade});
     if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
     cap_triangles += result.facts["cap_triangles"].get<int>();
@@ -319,15 +324,9 @@ SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>&
 
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   SurfaceCut result = cut_surface_by(surface, {blade});
-  // A surface blade is not cut again with later blades: a piece it notched and a later
-  // blade meets stays whole (counted).
-  if (blade.surface) {
-    result.surface.cut_record.reset();
-    return result;
-  }
   // A blade that changes nothing (one that misses the body) keeps the record as it is.
   if (result.facts["cap_triangles"].get<int>() == 0 && result.facts["pieces_left_whole"].get<int>() == 0) return result;
-  // A piece an earlier finite blade notched has its caps on one another, where
+  // A piece an earlier finite or surface blade notched has its caps on one another, where
   // corefinement cannot cut and no plane's section closes: the surface before that blade
   // is cut again, with the blades since and this one (a sweep's earlier blades left out:
   // this one covers them).

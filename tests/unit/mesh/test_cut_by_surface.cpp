@@ -350,5 +350,33 @@ TEST(CutBySurface, AClosedBladeInsideOpensTheSurfaceTwice) {
   EXPECT_NEAR(volumes[2], 1.0, 1e-15);
 }
 
+TEST(CutBySurface, APlaneAcrossASurfaceBladesNotchCutsTheSurface) {
+  // A blade of two triangles notches the box from z = 0 up to z = 0.5 at x = 0.3, leaving
+  // its caps on one another; a plane across the notch (z = 0.25) left that piece whole.
+  // Now the box before the notch is cut again, the plane first: the slab below it, which
+  // the notch cuts through, and the notched rest, three closed pieces of exact volumes.
+  const auto at = [](double y, double z) { return Eigen::Vector3d(0.3, y, z); };
+  CuttingPlane notch;
+  notch.surface =
+      std::make_shared<const SurfaceBlade>(blade_of_quadrilaterals({{at(-1, -1), at(2, -1), at(2, 0.5), at(-1, 0.5)}}));
+  const SurfaceMesh box = test::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceCut notched = cut_surface(box, notch);
+  ASSERT_EQ(test::pieces_of(notched.surface).size(), 1u);
+  const SurfaceCut across =
+      cut_surface(notched.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.25), Eigen::Vector3d::UnitZ()));
+  EXPECT_EQ(across.facts["pieces_left_whole"], 0);
+  EXPECT_EQ(across.facts["blades_cut_again"], 1);
+  std::vector<double> volumes;
+  for (const SurfaceMesh& piece : test::pieces_of(across.surface)) {
+    EXPECT_TRUE(test::closed_and_oriented(piece));
+    volumes.push_back(surface_volume(piece));
+  }
+  std::sort(volumes.begin(), volumes.end());
+  ASSERT_EQ(volumes.size(), 3u);
+  EXPECT_NEAR(volumes[0], 0.3 * 0.25, 1e-15);
+  EXPECT_NEAR(volumes[1], 0.7 * 0.25, 1e-15);
+  EXPECT_NEAR(volumes[2], 0.75, 1e-15);
+}
+
 }  // namespace
 }  // namespace altfem
