@@ -2,6 +2,7 @@
 // A cut surface's pieces and the checks every cut_surface test makes of them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -36,6 +37,17 @@ inline bool closed_and_oriented(const SurfaceMesh& surface) {
   for (const auto& [edge, count] : uses)
     if (count != 1 || uses.count({edge.second, edge.first}) == 0) return false;
   return true;
+}
+
+// The volumes of the surface's pieces, smallest first, each checked closed and consistently oriented.
+inline std::vector<double> closed_piece_volumes(const SurfaceMesh& surface) {
+  std::vector<double> volumes;
+  for (const SurfaceMesh& piece : pieces_of(surface)) {
+    EXPECT_TRUE(closed_and_oriented(piece));
+    volumes.push_back(surface_volume(piece));
+  }
+  std::sort(volumes.begin(), volumes.end());
+  return volumes;
 }
 
 // The summed volume of the surface's pieces, each checked closed, and their count.

@@ -338,12 +338,7 @@ TEST(CutBySurface, AClosedBladeInsideOpensTheSurfaceTwice) {
   const SurfaceCut cut = cut_surface(box, cutting);
   EXPECT_EQ(cut.surface.vertices.rows(), box.vertices.rows() + 2 * blade.vertices.rows());
   EXPECT_EQ(cut.facts["cap_triangles"].get<int>(), 2 * blade.triangles.rows());
-  std::vector<double> volumes;
-  for (const SurfaceMesh& piece : test::pieces_of(cut.surface)) {
-    EXPECT_TRUE(test::closed_and_oriented(piece));
-    volumes.push_back(surface_volume(piece));
-  }
-  std::sort(volumes.begin(), volumes.end());
+  const std::vector<double> volumes = test::closed_piece_volumes(cut.surface);
   ASSERT_EQ(volumes.size(), 3u);
   EXPECT_NEAR(volumes[0], -inside_volume, 1e-15);
   EXPECT_NEAR(volumes[1], inside_volume, 1e-15);
@@ -366,12 +361,7 @@ TEST(CutBySurface, APlaneAcrossASurfaceBladesNotchCutsTheSurface) {
       cut_surface(notched.surface, CuttingPlane(Eigen::Vector3d(0, 0, 0.25), Eigen::Vector3d::UnitZ()));
   EXPECT_EQ(across.facts["pieces_left_whole"], 0);
   EXPECT_EQ(across.facts["blades_cut_again"], 1);
-  std::vector<double> volumes;
-  for (const SurfaceMesh& piece : test::pieces_of(across.surface)) {
-    EXPECT_TRUE(test::closed_and_oriented(piece));
-    volumes.push_back(surface_volume(piece));
-  }
-  std::sort(volumes.begin(), volumes.end());
+  const std::vector<double> volumes = test::closed_piece_volumes(across.surface);
   ASSERT_EQ(volumes.size(), 3u);
   EXPECT_NEAR(volumes[0], 0.3 * 0.25, 1e-15);
   EXPECT_NEAR(volumes[1], 0.7 * 0.25, 1e-15);
