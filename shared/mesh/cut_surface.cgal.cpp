@@ -288,17 +288,13 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
 SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>& blades) {
   SurfaceCut result{before, {}};
   int cap_triangles = 0;
-  std::vector<CuttingPlane> surfaces, polygons;
+  std::vector<CuttingPlane> one_by_one, polygons;  // the whole planes, then the surface blades
   for (const CuttingPlane& blade : blades)
-    if (blade.surface) surfaces.push_back(blade);
+    if (!blade.surface && blade.polygon.empty()) one_by_one.push_back(blade);
+  for (const CuttingPlane& blade : blades)
+    if (blade.surface) one_by_one.push_back(blade);
     else if (!blade.polygon.empty()) polygons.push_back(blade);
-  for (const CuttingPlane& blade : blades) {
-    if (blade.surface || !blade.polygon.empty()) continue;
-    result = cut_surface_by(result.surface, {blade});
-    if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
-    cap_triangles += result.facts["cap_triangles"].get<int>();
-  }
-  for (const CuttingPlane& blade : surfaces) {
+  for (const CuttingPlane& blade : one_by_one) {
     result = cut_surface_by(result.surface, {blade});
     if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
     cap_triangles += result.facts["cap_triangles"].get<int>();

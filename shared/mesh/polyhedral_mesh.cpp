@@ -113,6 +113,25 @@ void compute_polyhedral_geometry(PolyhedralMesh& mesh) {
                          " has a non-positive volume (inverted or open faces)");
 }
 
+Eigen::Vector3d face_area_vector(const PolyhedralMesh& mesh, const std::vector<int>& loop) {
+  Eigen::MatrixXd polygon(static_cast<Eigen::Index>(loop.size()), 3);
+  for (std::size_t k = 0; k < loop.size(); ++k)
+    polygon.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[0]);
+  return polygon_area_vector(polygon);
+}
+
+void set_faces(PolyhedralMesh& mesh, std::vector<std::vector<int>> loops,
+               const std::vector<std::array<int, 2>>& cells) {
+  mesh.faces = std::move(loops);
+  mesh.face_cells.resize(static_cast<Eigen::Index>(cells.size()), 2);
+  for (auto& list : mesh.cell_faces) list.clear();
+  for (std::size_t face = 0; face < cells.size(); ++face) {
+    mesh.face_cells.row(static_cast<Eigen::Index>(face)) << cells[face][0], cells[face][1];
+    for (const int cell : cells[face])
+      if (cell >= 0) mesh.cell_faces[cell].push_back(static_cast<int>(face));
+  }
+}
+
 PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep,
                                           std::vector<int>& kept) {
   std::vector<int> new_index(keep.size(), -1);

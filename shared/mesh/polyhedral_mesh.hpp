@@ -5,6 +5,7 @@
 // SAME polygon seen from both of its cells, so DG face couplings and conforming
 // (node-sharing) harmonic bases both read it directly.
 #include <Eigen/Core>
+#include <array>
 #include <vector>
 
 #include "shared/geometry/polyhedron.hpp"
@@ -63,6 +64,16 @@ Polyhedron cell_polyhedron(const PolyhedralMesh& mesh, int cell);
 /// with < 3 nodes, a node index out of range or face_cells not #faces × 2, and
 /// NumericalError naming the cell when a cell's volume is not positive.
 void compute_polyhedral_geometry(PolyhedralMesh& mesh);
+
+/// Newell's area vector of the polygon of `loop`'s nodes, summed about its first node: its
+/// area times its unit normal. About the origin the sum rounds to 1e-17, which hides a
+/// face a few ulps across.
+Eigen::Vector3d face_area_vector(const PolyhedralMesh& mesh, const std::vector<int>& loop);
+
+/// Sets the mesh's faces to `loops` (each oriented for the first cell of its `cells` entry,
+/// the second −1 on the boundary) and rebuilds `face_cells` and `cell_faces` (cells keep their
+/// count). Geometry left stale.
+void set_faces(PolyhedralMesh& mesh, std::vector<std::vector<int>> loops, const std::vector<std::array<int, 2>>& cells);
 
 /// The mesh without the cells `keep` drops (their faces with a kept cell become that
 /// cell's boundary faces); nodes keep their numbers, geometry arrays are left empty.

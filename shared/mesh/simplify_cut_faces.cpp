@@ -5,31 +5,17 @@
 #include <map>
 #include <numeric>
 
-#include "shared/geometry/polygon_moments.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 
 namespace altfem {
 
 namespace {
 
-// The area vector of the polygon of `loop`'s nodes: Newell's sum about its first node
-// (about the origin it rounds to 1e-17 for a face a few ulps across).
-Eigen::Vector3d loop_area_vector(const PolyhedralMesh& mesh, const std::vector<int>& loop) {
-  Eigen::MatrixXd polygon(static_cast<Eigen::Index>(loop.size()), 3);
-  for (std::size_t k = 0; k < loop.size(); ++k)
-    polygon.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[0]);
-  return polygon_area_vector(polygon);
-}
-
 // A face's unit normal and area.
 std::pair<Eigen::Vector3d, double> face_plane(const PolyhedralMesh& mesh, int face) {
-  const Eigen::Vector3d area = loop_area_vector(mesh, mesh.faces[face]);
+  const Eigen::Vector3d area = face_area_vector(mesh, mesh.faces[face]);
   const double norm = area.norm();
   return {norm > 0 ? Eigen::Vector3d(area / norm) : Eigen::Vector3d::Zero(), norm};
-}
-
-double loop_area(const PolyhedralMesh& mesh, const std::vector<int>& loop) {
-  return loop_area_vector(mesh, loop).norm();
 }
 
 // The single loop that the directed edges form, or empty when they form none or several.
@@ -141,14 +127,7 @@ int merge_coplanar_faces(PolyhedralMesh& mesh, double tolerance) {
     }
   }
   if (merged_away == 0) return 0;
-  mesh.faces = std::move(loops);
-  mesh.face_cells.resize(static_cast<Eigen::Index>(cells.size()), 2);
-  for (auto& list : mesh.cell_faces) list.clear();
-  for (std::size_t face = 0; face < cells.size(); ++face) {
-    mesh.face_cells.row(static_cast<Eigen::Index>(face)) << cells[face][0], cells[face][1];
-    for (const int cell : cells[face])
-      if (cell >= 0) mesh.cell_faces[cell].push_back(static_cast<int>(face));
-  }
+  set_faces(mesh, std::move(loops), cells);
   return merged_away;
 }
 
@@ -176,7 +155,7 @@ int drop_straight_run_nodes(PolyhedralMesh& mesh, double tolerance) {
     for (std::size_t j = 0; j < without.size(); ++j)
       longest =
           std::max(longest, (mesh.nodes.row(without[j]) - mesh.nodes.row(without[(j + 1) % without.size()])).norm());
-    return loop_area(mesh, without) > tolerance * longest;
+    return face_area_vector(mesh, without).norm() > tolerance * longest;
   };
   int removed = 0;
   for (std::size_t node = 0; node < faces_of.size(); ++node) {

@@ -5,7 +5,6 @@
 #include <array>
 #include <limits>
 
-#include "shared/geometry/polygon_moments.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
@@ -38,15 +37,7 @@ void weld_coincident_neighbours(PolyhedralMesh& mesh, double tolerance) {
     faces.push_back(std::move(loop));
     face_cells.push_back({mesh.face_cells(face, 0), mesh.face_cells(face, 1)});
   }
-  mesh.faces = std::move(faces);
-  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  for (auto& list : mesh.cell_faces) list.clear();
-  for (std::size_t face = 0; face < face_cells.size(); ++face) {
-    const Eigen::Index row = static_cast<Eigen::Index>(face);
-    mesh.face_cells.row(row) << face_cells[face][0], face_cells[face][1];
-    for (const int cell : face_cells[face])
-      if (cell >= 0) mesh.cell_faces[cell].push_back(static_cast<int>(face));
-  }
+  set_faces(mesh, std::move(faces), face_cells);
 }
 
 void snap_new_nodes_to_corners(PolyhedralMesh& mesh, Eigen::Index first_new,
@@ -91,21 +82,15 @@ FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const Surfa
   std::vector<CutFace> faces;
   std::vector<bool> opened_node(static_cast<std::size_t>(mesh.nodes.rows()), false);
   FacesSeparated result;
-  Eigen::MatrixXd polygon;
   for (int face = 0; face < mesh.face_count(); ++face) {
     const std::vector<int>& loop = mesh.faces[face];
     const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
     bool separate = false;
     if (second >= 0) {
-      polygon.resize(static_cast<Eigen::Index>(loop.size()), 3);
-      // About its first node: Newell's sum about the origin rounds to 1e-17 for a face a
-      // few ulps across.
-      for (std::size_t k = 0; k < loop.size(); ++k)
-        polygon.row(static_cast<Eigen::Index>(k)) = mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[0]);
       double longest = 0;
       for (std::size_t k = 0; k < loop.size(); ++k)
         longest = std::max(longest, (mesh.nodes.row(loop[k]) - mesh.nodes.row(loop[(k + 1) % loop.size()])).norm());
-      separate = (longest <= rounding_length || polygon_area_vector(polygon).norm() <= rounding_width * longest) &&
+      separate = (longest <= rounding_length || face_area_vector(mesh, loop).norm() <= rounding_width * longest) &&
                  distance_to_blade(mesh.nodes.row(loop[0]).transpose(), blade) <= rounding_length;
     }
     if (!separate) {
@@ -126,15 +111,13 @@ FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const Surfa
   mesh.nodes.resize(static_cast<Eigen::Index>(nodes.size()), 3);
   for (std::size_t node = 0; node < nodes.size(); ++node)
     mesh.nodes.row(static_cast<Eigen::Index>(node)) = nodes[node].transpose();
-  mesh.faces.clear();
-  mesh.face_cells.resize(static_cast<Eigen::Index>(faces.size()), 2);
-  for (auto& list : mesh.cell_faces) list.clear();
-  for (std::size_t face = 0; face < faces.size(); ++face) {
-    mesh.faces.push_back(std::move(faces[face].loop));
-    mesh.face_cells.row(static_cast<Eigen::Index>(face)) << faces[face].first, faces[face].second;
-    mesh.cell_faces[faces[face].first].push_back(static_cast<int>(face));
-    if (faces[face].second >= 0) mesh.cell_faces[faces[face].second].push_back(static_cast<int>(face));
+  std::vector<std::vector<int>> loops;
+  std::vector<std::array<int, 2>> cells;
+  for (CutFace& face : faces) {
+    loops.push_back(std::move(face.loop));
+    cells.push_back({face.first, face.second});
   }
+  set_faces(mesh, std::move(loops), cells);
   return result;
 }
 
