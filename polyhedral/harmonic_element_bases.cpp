@@ -7,6 +7,7 @@
 #include <string>
 #include <unordered_map>
 
+#include "polyhedral/earlier_tabulation.hpp"
 #include "polyhedral/harmonic_tabulation.hpp"
 #include "polyhedral/mesh_face_coordinates.hpp"
 #include "shared/assembly/tabulated_here.hpp"
@@ -81,7 +82,9 @@ HarmonicElementBases::HarmonicElementBases(const PolyhedralMesh& mesh, HarmonicB
   // A cell whose basis fails is recorded and its basis left empty.
   std::atomic<int> failed_cell{cells};
   const auto count = static_cast<int>(fit_here.size());
-#pragma omp parallel for schedule(dynamic, 4)
+  // One cell at a time: a fit takes milliseconds, and an event fits a few cells (the
+  // pencil's cut two), which chunks of four left to one thread.
+#pragma omp parallel for schedule(dynamic, 1)
   for (int k = 0; k < count; ++k) {
     const int cell = fit_here[k];
     Cell& entry = cells_[cell];
@@ -119,11 +122,30 @@ double HarmonicElementBases::max_boundary_residual() const {
   return largest;
 }
 
+std::vector<EarlierCell> HarmonicElementBases::cells_tabulated_earlier(const EarlierTabulation* earlier, int strength,
+                                                                       const std::vector<char>& held) const {
+  if (!earlier || earlier->strength != strength) return std::vector<EarlierCell>(static_cast<size_t>(cell_count()));
+  const HarmonicElementBases& before = *earlier->bases;
+  std::vector<const ElementHarmonicBasis*> bases, earlier_bases;
+  std::vector<char> earlier_held;
+  for (int cell = 0; cell < cell_count(); ++cell) bases.push_back(mfs_basis(cell));
+  for (int cell = 0; cell < before.cell_count(); ++cell) {
+    earlier_bases.push_back(before.mfs_basis(cell));
+    earlier_held.push_back(earlier->elements->holds(cell) ? 1 : 0);
+  }
+  return match_earlier_cells(mesh_, bases, held, before.mesh_, earlier_bases, earlier_held);
+}
+
 TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQuadrature& quadrature,
                                                  const std::vector<int>& materials, const TabulatedHere& here,
-                                                 const TabulatedElements* listed) const {
+                                                 const TabulatedElements* listed, const EarlierTabulation* earlier,
+                                                 int* copied) const {
   const int cells = cell_count();
   const std::vector<char> held = tabulated_here(here, cells);
+  const std::vector<EarlierCell> copy_from = cells_tabulated_earlier(earlier, strength, held);
+  if (copied)
+    *copied = static_cast<int>(
+        std::count_if(copy_from.begin(), copy_from.end(), [](const EarlierCell& from) { return from.cell >= 0; }));
   // Plain cells: fem's Lagrange tabulation (tet_rule / hex_rule of `strength`) of the
   // cells of each type as one Lagrange mesh on all the mesh's nodes; plain_row[cell] is
   // the cell's element in its type's table.
@@ -154,13 +176,15 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
   std::vector<HarmonicTabulation> mfs_tables(cells);
   std::vector<int> elsewhere_points(static_cast<size_t>(cells), 0);  // a cell another rank tabulates
   std::atomic<int> empty_cell{cells};
-#pragma omp parallel for schedule(dynamic, 4)
+  // One cell at a time, as the fits: after an event only its new cells are tabulated.
+#pragma omp parallel for schedule(dynamic, 1)
   for (int cell = 0; cell < cells; ++cell) {
     if (!cells_[cell].mfs) continue;
     if (!held[cell] && listed) {
       elsewhere_points[cell] = listed->whole_point_count(cell);
       continue;
     }
+    if (copy_from[cell].cell >= 0) continue;
     const PolyhedronRule rule = harmonic_cell_rule(cell_polyhedron(mesh_, cell), strength, quadrature, cell);
     if (rule.weights.size() == 0) {
       record_first(empty_cell, cell);
@@ -194,13 +218,26 @@ TabulatedElements HarmonicElementBases::tabulate(int strength, const HarmonicQua
       return ElementLayout{view.basis, table.whole_point_count(plain_row[cell]), material, held[cell] != 0,
                            same_as[cell]};
     }
-    const int points = held[cell] ? static_cast<int>(mfs_tables[cell].weights.size()) : elsewhere_points[cell];
+    const int points = copy_from[cell].cell >= 0 ? earlier->elements->whole_point_count(copy_from[cell].cell)
+                       : held[cell]              ? static_cast<int>(mfs_tables[cell].weights.size())
+                                                 : elsewhere_points[cell];
     return ElementLayout{cells_[cell].nodes, points, material, held[cell] != 0};
   });
 #pragma omp parallel for schedule(dynamic, 16)
   for (int cell = 0; cell < cells; ++cell) {
     if (!held[cell] || same_as[cell] >= 0) continue;
     ElementSlots slots = elements.slots(cell);
+    if (copy_from[cell].cell >= 0) {
+      // The earlier cell's points, its nodes taken in this cell's order.
+      const ElementView view = (*earlier->elements)[copy_from[cell].cell];
+      const std::vector<int>& order = copy_from[cell].order;
+      const auto nodes = static_cast<Eigen::Index>(order.size());
+      std::copy(view.weights.begin(), view.weights.end(), slots.weights.begin());
+      slots.values = view.values(Eigen::all, order);
+      for (int point = 0; point < view.point_count(); ++point)
+        slots.gradients.middleRows(point * nodes, nodes) = view.gradients_at(point)(order, Eigen::all);
+      continue;
+    }
     if (cells_[cell].plain) {
       const ElementView view = plain_table(cell)[plain_row[cell]];
       std::copy(view.weights.begin(), view.weights.end(), slots.weights.begin());

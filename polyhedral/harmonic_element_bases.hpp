@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "polyhedral/earlier_tabulation.hpp"
 #include "polyhedral/element_harmonic_basis.hpp"
 #include "polyhedral/harmonic_basis_memory.hpp"
 #include "polyhedral/harmonic_cell_rule.hpp"
@@ -17,6 +18,19 @@
 #include "shared/mesh/polyhedral_mesh.hpp"
 
 namespace altfem::harmonic {
+
+class HarmonicElementBases;
+
+/// A build's stiffness tabulation, for the build an event makes next to copy from: an MFS
+/// cell the event left alone keeps its basis (harmonic_basis_memory.hpp) and so its points
+/// (Martin et al. 2008 §8: only cut elements are new), copied, not evaluated again, its
+/// nodes in the new mesh's order (earlier_tabulation.hpp). Valid while that build lives
+/// (Simulation::rebuild_on builds the next one before it lets the old one go).
+struct EarlierTabulation {
+  const HarmonicElementBases* bases = nullptr;
+  const TabulatedElements* elements = nullptr;  ///< tabulated by bases->tabulate(strength, …)
+  int strength = 0;
+};
 
 class HarmonicElementBases {
 public:
@@ -51,9 +65,13 @@ public:
   /// first MFS cell whose rule has no point (a cell thinner than a subdivision box). A cell
   /// `here` does not hold is added with its nodes and its rule's point count only
   /// (TabulatedElements::add_held_elsewhere): its basis is not evaluated, and its MFS rule is
-  /// made only when `listed` (every cell's count, ElementTabulator) is not given.
+  /// made only when `listed` (every cell's count, ElementTabulator) is not given. An MFS
+  /// cell whose polyhedron and basis `earlier` holds (match_earlier_cells; tabulated at the
+  /// same strength, with the same quadrature) takes its points from there; `copied`, when
+  /// given, counts those cells.
   TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature, const std::vector<int>& materials = {},
-                             const TabulatedHere& here = nullptr, const TabulatedElements* listed = nullptr) const;
+                             const TabulatedHere& here = nullptr, const TabulatedElements* listed = nullptr,
+                             const EarlierTabulation* earlier = nullptr, int* copied = nullptr) const;
 
   /// The cell's basis values at x (#nodes of the cell, in the order of nodes(cell)),
   /// extrapolated when x is outside: a plain cell through its inverse map (Newton), an
@@ -74,6 +92,9 @@ private:
     std::optional<ElementHarmonicBasis> mfs;
   };
   HarmonicElementBases(const PolyhedralMesh& mesh, std::vector<Cell> cells) : mesh_(mesh), cells_(std::move(cells)) {}
+  /// Per cell, the cell of `earlier` whose tabulation it may copy (tabulate), and how.
+  std::vector<EarlierCell> cells_tabulated_earlier(const EarlierTabulation* earlier, int strength,
+                                                   const std::vector<char>& held) const;
 
   const PolyhedralMesh& mesh_;
   std::vector<Cell> cells_;

@@ -25,11 +25,13 @@ namespace altfem::harmonic {
 
 namespace {
 
-// What an event hands the rebuild: the mesh, and the MFS bases of the build it replaces,
-// which the cells it left alone keep (harmonic_basis_memory.hpp).
+// What an event hands the rebuild: the mesh, and the MFS bases and stiffness tabulation of
+// the build it replaces, which the cells it left alone keep (harmonic_basis_memory.hpp,
+// EarlierTabulation: valid while that build lives, as it does through the rebuild).
 struct HarmonicMesh {
   PolyhedralSceneMesh mesh;
   std::shared_ptr<const HarmonicBasisMemory> bases;
+  EarlierTabulation tabulation{};
 };
 
 class HarmonicMethod final : public EmbeddedSurfaceMethod {
@@ -76,11 +78,13 @@ public:
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Over several ranks each tabulates only its cells (TabulatedDiscretization calls this
     // while it is built, below); the tabulation's seconds count with the bases'.
-    parts.tabulate = [this, order = spec.quadrature_order, quadrature = spec.quadrature,
+    const EarlierTabulation earlier = handed ? handed->tabulation : EarlierTabulation{};
+    parts.tabulate = [this, order = spec.quadrature_order, quadrature = spec.quadrature, earlier,
                       materials = materials_.ids_of(mesh_.cell_centroids)](const TabulatedHere& here,
                                                                            const TabulatedElements* listed) {
       const auto begin = std::chrono::steady_clock::now();
-      TabulatedElements elements = bases_->tabulate(order, quadrature, materials, here, listed);
+      TabulatedElements elements = bases_->tabulate(order, quadrature, materials, here, listed,
+                                                    earlier.bases ? &earlier : nullptr, &copied_tabulations_);
       quadrature_seconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
       return elements;
     };
@@ -183,6 +187,8 @@ public:
     facts["remembered_mfs_bases"] = bases_->remembered_bases();
     // MFS cells that took the fit of a translate or scaled copy of theirs (one fit per shape).
     facts["moved_mfs_bases"] = bases_->moved_bases();
+    // After an event, the MFS cells it left alone whose points were copied, not evaluated again.
+    facts["copied_mfs_tabulations"] = copied_tabulations_;
     return facts;
   }
 
@@ -193,7 +199,8 @@ private:
                                         mesh_facts_, cell_levels_);
   }
   std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh) const {
-    return std::make_shared<MeshOf<HarmonicMesh>>(HarmonicMesh{std::move(mesh), basis_memory_});
+    return std::make_shared<MeshOf<HarmonicMesh>>(
+        HarmonicMesh{std::move(mesh), basis_memory_, {bases_.get(), elements_, quadrature_order_}});
   }
 
   // Martin et al. 2008 §6 warp the linear stiffness; the nonlinear models are already
@@ -220,6 +227,7 @@ private:
   std::string basis_cache_;  // "reused" or "written" with /discretization/harmonic/cache, else empty
   int quadrature_order_ = 0;
   long long mfs_quadrature_points_ = 0;  // the stiffness rule's points on MFS cells
+  int copied_tabulations_ = 0;           // MFS cells whose points came from the build before
   std::vector<std::string> warnings_;
 };
 

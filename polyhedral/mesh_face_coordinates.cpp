@@ -18,7 +18,8 @@ std::vector<std::optional<FaceHarmonicCoordinates>> mesh_face_coordinates(const 
       if (!listed[face]) listed[face] = 1, needed.push_back(face);
   std::vector<std::optional<FaceHarmonicCoordinates>> faces(static_cast<size_t>(mesh.face_count()));
   const auto count = static_cast<int>(needed.size());
-#pragma omp parallel for schedule(dynamic, 16)
+  // Chunks of four: an event's few new cells have a few dozen faces.
+#pragma omp parallel for schedule(dynamic, 4)
   for (int k = 0; k < count; ++k) {
     const std::vector<int>& loop = mesh.faces[needed[k]];
     try {

@@ -3,7 +3,8 @@
 // corrupted file is ignored, recomputed and rewritten; the harmonic method reports
 // whether it wrote or reused its cache (facts: harmonic_basis_cache). The in-memory
 // counterpart for events (polyhedral/harmonic_basis_memory.hpp): a rebuild after a cut
-// fits only the cells the cut changed and keeps the others' bases bit for bit; and cells
+// fits only the cells the cut changed and keeps the others' bases and stiffness points bit
+// for bit; and cells
 // that are translates of one another share one fit.
 #include <gtest/gtest.h>
 
@@ -178,6 +179,48 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
   MfsOptions denser = options;
   ++denser.edge_samples;
   EXPECT_EQ(HarmonicElementBases(cut.mesh, HarmonicBasisKind::mfs, denser, &memory).remembered_bases(), 0);
+
+  // The kept cells' stiffness points are copied from the build before (EarlierTabulation),
+  // their nodes in the cut mesh's order, which lists them otherwise (faces, loops, node
+  // numbers): the same values node by node, and integrals those of a tabulation afresh.
+  const HarmonicQuadrature quadrature;
+  const int strength = 4;
+  const TabulatedElements table_before = before.tabulate(strength, quadrature);
+  const EarlierTabulation earlier{&before, &table_before, strength};
+  int copied = -1;
+  const TabulatedElements taken = after.tabulate(strength, quadrature, {}, nullptr, nullptr, &earlier, &copied);
+  const TabulatedElements again = after.tabulate(strength, quadrature);
+  EXPECT_EQ(copied, 2);
+  // Σ_q w_q ∇N_a(x_q) · ∇N_b(x_q): #nodes × #nodes.
+  const auto gradient_products = [](const ElementView& view) {
+    Eigen::MatrixXd products = Eigen::MatrixXd::Zero(view.basis_count(), view.basis_count());
+    for (int q = 0; q < view.point_count(); ++q)
+      products += view.weights[q] * view.gradients_at(q) * view.gradients_at(q).transpose();
+    return products;
+  };
+  for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
+    const ElementView copy = taken[cell], fresh_view = again[cell];
+    const Eigen::MatrixXd products = gradient_products(copy);
+    EXPECT_LE((products - gradient_products(fresh_view)).norm(), 1e-12 * products.norm()) << "cell " << cell;
+    const int parent = cut.parent_cell[cell];
+    if (mesh.cell_centroids(parent, 0) < 1) continue;
+    const ElementView kept_view = table_before[parent];
+    ASSERT_EQ(copy.point_count(), kept_view.point_count());
+    EXPECT_TRUE(std::equal(copy.weights.begin(), copy.weights.end(), kept_view.weights.begin()));
+    for (size_t i = 0; i < after.nodes(cell).size(); ++i) {
+      const Eigen::RowVector3d x = cut.mesh.nodes.row(after.nodes(cell)[i]);
+      int same = -1;
+      for (size_t j = 0; j < before.nodes(parent).size(); ++j)
+        if (mesh.nodes.row(before.nodes(parent)[j]) == x) same = static_cast<int>(j);
+      ASSERT_GE(same, 0);
+      EXPECT_EQ(copy.values.col(static_cast<Eigen::Index>(i)), kept_view.values.col(same));
+      for (int q = 0; q < copy.point_count(); ++q)
+        EXPECT_EQ(copy.gradients_at(q).row(static_cast<Eigen::Index>(i)), kept_view.gradients_at(q).row(same));
+    }
+  }
+  // At another strength nothing is copied.
+  after.tabulate(strength + 1, quadrature, {}, nullptr, nullptr, &earlier, &copied);
+  EXPECT_EQ(copied, 0);
 }
 
 // A mesh of `mesh` and its copy scaled by `factor` about the origin and moved by `offset`,
