@@ -44,6 +44,14 @@ public:
   bool holds_alone(int cell, const Eigen::Vector3d& x) const override {
     return split_cell_[cell] < 0 || distance_to(piece_trees_[cell], x, std::numeric_limits<double>::denorm_min()) == 0;
   }
+  /// A piece of the holder's background cell rejects x where its tetrahedra lie off x: the
+  /// holder, on or around x, is nearer (a search of this piece's tetrahedra alone, not of
+  /// the cell's: after a cut near a pencil's tip its chips' vertices ask this of the tip).
+  bool rejects(int cell, int holder, const Eigen::Vector3d& x) const override {
+    if (split_cell_[cell] < 0 || split_cell_[cell] != split_cell_[holder])
+      return ElementBasisEvaluator::rejects(cell, holder, x);
+    return distance_to(piece_trees_[cell], x, std::numeric_limits<double>::denorm_min()) > 0;
+  }
 
 private:
   /// Distance from x to the nearest tetrahedron of `tree` where it is below `bound`, else

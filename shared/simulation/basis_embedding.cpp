@@ -128,11 +128,7 @@ BasisEmbedding::BasisEmbedding(const ElementBasisEvaluator& evaluator, const Eig
     const Eigen::Vector3d x = points.row(point).transpose();
     locator.candidates(x, slack, candidates);
     holders.clear();
-    if (previous && keep(evaluator, *previous, point, x, candidates, keys, known)) {
-      const Memory& before = *previous->memory_;
-      holders.assign(before.holders.begin() + before.holder_offsets[point],
-                     before.holders.begin() + before.holder_offsets[point + 1]);
-    } else {
+    if (!previous || !keep(evaluator, *previous, point, x, candidates, keys, known, holders)) {
       locate(evaluator, x, candidates, holders);
       ++relocated_count_;
     }
@@ -160,41 +156,67 @@ void BasisEmbedding::append_nearest(const ElementBasisEvaluator& evaluator, cons
   weights_.insert(weights_.end(), values.begin(), values.end());
 }
 
+template <typename KeyOf>
+std::vector<int> BasisEmbedding::kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous,
+                                              Eigen::Index point, const Eigen::Vector3d& x,
+                                              const std::vector<int>& candidates, const KeyOf& key_of) const {
+  const Memory& before = *previous.memory_;
+  const long long holders_begin = before.holder_offsets[point], holders_end = before.holder_offsets[point + 1];
+  const long long first = before.candidate_offsets[point];
+  const auto before_count = static_cast<size_t>(before.candidate_offsets[point + 1] - first);
+  const auto key_before = [&](size_t place) { return before.candidate_keys[first + static_cast<long long>(place)]; };
+  if (evaluator.boundary_rule() == BoundaryPointRule::average) {
+    // It averages every holder: every candidate must be as it was, in its place.
+    if (candidates.size() != before_count) return {};
+    for (size_t place = 0; place < before_count; ++place)
+      if (key_of(candidates[place]) == 0 || key_of(candidates[place]) != key_before(place)) return {};
+    return {before.holders.begin() + holders_begin, before.holders.begin() + holders_end};
+  }
+  // The first candidate that holds it: its holder, now wherever an element of its key is.
+  const auto holder_before = static_cast<size_t>(before.holders[holders_begin]);
+  const std::uint64_t holder_key = key_before(holder_before);
+  if (holder_key == 0) return {};
+  size_t holder = 0;
+  while (holder < candidates.size() && key_of(candidates[holder]) != holder_key) ++holder;
+  if (holder == candidates.size() || !evaluator.holds_alone(candidates[holder], x)) return {};
+  // Each candidate before it is one that rejected the point there (a key before the
+  // holder's: it rejects it as it did, holds_alone) or one the event made that rejects it.
+  for (size_t place = 0; place < holder; ++place) {
+    const std::uint64_t key = key_of(candidates[place]);
+    bool rejected = false;
+    for (size_t earlier = 0; earlier < holder_before && !rejected; ++earlier)
+      rejected = key != 0 && key == key_before(earlier);
+    if (!rejected && !evaluator.rejects(candidates[place], candidates[holder], x)) return {};
+  }
+  return {static_cast<int>(holder)};
+}
+
 bool BasisEmbedding::keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
                           const Eigen::Vector3d& x, const std::vector<int>& candidates,
-                          std::vector<std::uint64_t>& keys, std::vector<char>& known) {
+                          std::vector<std::uint64_t>& keys, std::vector<char>& known, std::vector<int>& holders) {
   const Memory& before = *previous.memory_;
   if (point >= before.points.rows() || before.points.row(point) != x.transpose()) return false;
   // Extrapolated points (no holder) are located again: the nearest element may be a new one.
-  const long long holders_begin = before.holder_offsets[point], holders_end = before.holder_offsets[point + 1];
-  if (holders_begin == holders_end) return false;
-  // The candidates that decided the point: up to its (last) holder, since a point goes to
-  // the first element that holds it; all of them when it averages every holder.
-  const long long first = before.candidate_offsets[point];
-  const auto before_count = static_cast<size_t>(before.candidate_offsets[point + 1] - first);
-  const bool average = evaluator.boundary_rule() == BoundaryPointRule::average;
-  const size_t deciding = average ? before_count : static_cast<size_t>(before.holders[holders_end - 1]) + 1;
-  if (candidates.size() < deciding || (average && candidates.size() != before_count)) return false;
-  for (size_t place = 0; place < deciding; ++place) {
-    const int element = candidates[place];
+  if (before.holder_offsets[point] == before.holder_offsets[point + 1]) return false;
+  const auto key_of = [&](int element) {
     if (!known[element]) keys[element] = evaluator.element_key(element), known[element] = 1;
-    const std::uint64_t key = keys[element];
-    if (key == 0 || key != before.candidate_keys[first + static_cast<long long>(place)]) return false;
-  }
-  for (long long holder = holders_begin; holder < holders_end; ++holder)
-    if (!evaluator.holds_alone(candidates[before.holders[holder]], x)) return false;
-  // The same evaluations in the same order: the entries of the elements in the holders'
-  // places, one after the other, each on the functions its element lists now.
+    return keys[element];
+  };
+  holders = kept_holders(evaluator, previous, point, x, candidates, key_of);
+  if (holders.empty()) return false;
+  // The same evaluations in the same order: the entries of the holders, one after the
+  // other, each on the functions its element lists now.
   thread_local std::vector<int> functions;
   const size_t begin = basis_.size();
   long long entry = previous.offsets_[point];
-  for (long long holder = holders_begin; holder < holders_end; ++holder) {
-    evaluator.element_functions(candidates[before.holders[holder]], functions);
+  for (const int holder : holders) {
+    evaluator.element_functions(candidates[holder], functions);
     basis_.insert(basis_.end(), functions.begin(), functions.end());
     entry += static_cast<long long>(functions.size());
   }
   if (entry != previous.offsets_[point + 1]) {  // a key that did not say what it should: locate it
     basis_.resize(begin);
+    holders.clear();
     return false;
   }
   weights_.insert(weights_.end(), previous.weights_.begin() + previous.offsets_[point],

@@ -56,6 +56,14 @@ public:
   /// elements overlap and share out the points among themselves (fcm's pieces of one
   /// background cell: the nearest holds a point).
   virtual bool holds_alone(int /*element*/, const Eigen::Vector3d& /*x*/) const { return true; }
+  /// For x that `holder` holds alone (holds_alone): whether `element`, before it among the
+  /// candidates, rejects x (evaluate_inside false). An evaluator whose elements share out
+  /// the points among themselves may tell it without the whole evaluation.
+  virtual bool rejects(int element, int /*holder*/, const Eigen::Vector3d& x) const {
+    thread_local std::vector<int> basis;
+    thread_local std::vector<double> values;
+    return !evaluate_inside(element, x, basis, values);
+  }
 };
 
 class BasisEmbedding final : public PointEmbedding {
@@ -70,11 +78,13 @@ public:
                  const std::vector<std::vector<int>>& point_elements = {});
   /// The embedding of `points` after an event, from `previous`, the embedding of the points
   /// before it (built by this constructor; null: none): a point at the same index and
-  /// position whose candidate elements (those whose box holds it, in index order) up to
-  /// the one that held it there (all of them, with BoundaryPointRule::average) have the
-  /// keys they had there (ElementBasisEvaluator::element_key), and that its holder there
-  /// holds alone (holds_alone), keeps its weights on the functions its holder now lists;
-  /// every other point is located anew. The result is what the first constructor gives,
+  /// position keeps its weights, on the functions its holder now lists, where its holder
+  /// there is a candidate here (an element of its key; candidates: the elements whose box
+  /// holds it, in index order), holds it alone (holds_alone), and every candidate before
+  /// it either had the key of one that came before the holder there or rejects the point
+  /// (ElementBasisEvaluator::rejects: a piece the event cut or added); with
+  /// BoundaryPointRule::average, where every candidate has the key it had there. Every
+  /// other point is located anew. The result is what the first constructor gives,
   /// bit for bit, and remembers what the embedding after the next event needs. A cut
   /// appends the surface's new vertices, so the vertices of the elements it left alone
   /// keep their index.
@@ -128,13 +138,19 @@ private:
   /// `basis` and `values` are scratch.
   void append_nearest(const ElementBasisEvaluator& evaluator, const Eigen::Vector3d& x, std::vector<int>& basis,
                       std::vector<double>& values);
-  /// Appends the entries `previous` holds for `point` on the functions of the elements in
-  /// the same places of `candidates`, when those have the keys `previous` recorded
-  /// (`keys`: the evaluator's, per element, computed on first need); false, appending
-  /// nothing, else.
+  /// Appends the entries `previous` holds for `point` on the functions of its holders,
+  /// found among `candidates` by their keys as the constructor says (`keys`: the
+  /// evaluator's, per element, computed on first need), and sets `holders` to their places;
+  /// false, appending nothing, else.
   bool keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
             const Eigen::Vector3d& x, const std::vector<int>& candidates, std::vector<std::uint64_t>& keys,
-            std::vector<char>& known);
+            std::vector<char>& known, std::vector<int>& holders);
+  /// The places in `candidates` of `point`'s holders in `previous`, or empty where the
+  /// rules of keep do not find them; `key_of` gives an element's key.
+  template <typename KeyOf>
+  std::vector<int> kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous,
+                                Eigen::Index point, const Eigen::Vector3d& x, const std::vector<int>& candidates,
+                                const KeyOf& key_of) const;
 
   std::vector<long long> offsets_{0};  // #points + 1
   std::vector<int> basis_;

@@ -10,7 +10,9 @@
 //     the split half; harmonic keeps fewer: the cut polyhedral mesh lists the faces of some
 //     cells it did not cross in another order, which orders their closed-form hexahedra's
 //     nodes otherwise (plain_cells.hpp), and the refined mesh every cell's;
-//   - a rebuild on the same mesh locates none.
+//   - a rebuild on the same mesh locates none;
+//   - fcm, a second cut in the background cell of the first: the vertices of the piece it
+//     left alone stay, though a piece before theirs among their candidates changed.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -90,6 +92,39 @@ TEST_P(IncrementalEmbedding, AfterARefinementIsTheEmbeddingFromScratch) {
   EXPECT_GT(relocated(simulation->method()), 0);
   // The unsplit half keeps the vertices of its cells that hold no hanging node.
   if (GetParam() != "harmonic") EXPECT_LT(relocated(simulation->method()), vertices * 3 / 4);
+}
+
+// A second cut in the background cell of the first (x = 0.52, then 0.55, both in fcm's
+// cell [0.5, 0.6]) changes one of the cell's pieces: the vertices of the other, the far
+// side of the first cut included, stay (ElementBasisEvaluator::rejects), as after each
+// cut of a pencil's tip, whose cell holds the chips cut off before.
+TEST(IncrementalEmbeddingFcm, ASecondCutInTheCellOfTheFirstKeepsTheVerticesOfItsOtherPiece) {
+  const Scene scene = load_scene(
+      cantilever_cut, {parse_scene_override("events=[{\"time\": 0.02, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], "
+                                            "\"normal\": [1, 0, 0]}}}, {\"time\": 0.03, \"cut\": {\"plane\": "
+                                            "{\"point\": [0.52, 0, 0], \"normal\": [1, 0, 0]}}}]")});
+  const SceneGeometry geometry = load_scene_geometry(scene);
+  const auto simulation = simulate(scene, geometry, "fcm");
+  simulation->method().embedded_displacement(simulation->state().displacement);
+  simulation->apply(scene.events.at(0));
+  const SurfaceMesh first = simulation->method().embedded_surface();
+  simulation->method().embedded_displacement(simulation->state().displacement);
+  simulation->apply(scene.events.at(1));
+  const MethodInstance& method = simulation->method();
+  expect_embedding_as_from_scratch(method);
+  // Located again: the vertices the second cut added and those of the piece it cut,
+  // x in [0.5, 0.55] (at 0.55 the first cut's cap on the near side, read a hair inside
+  // it: embedding_offsets); not those of the other piece, the far side of that cap and on.
+  const Eigen::Index added = method.embedded_surface().vertices.rows() - first.vertices.rows();
+  int in_cut_piece = 0, on_the_far_piece = 0;
+  for (Eigen::Index v = 0; v < first.vertices.rows(); ++v) {
+    const double x = first.vertices(v, 0), inward = first.embedding_offsets(v, 0);
+    const bool near = x < 0.55 - 1e-9 || (x < 0.55 + 1e-9 && inward < 0);
+    in_cut_piece += x >= 0.5 - 1e-9 && near;
+    on_the_far_piece += x <= 0.6 + 1e-9 && !near;
+  }
+  ASSERT_GT(on_the_far_piece, 0);
+  EXPECT_LE(relocated(method), added + in_cut_piece) << on_the_far_piece << " on the far piece";
 }
 
 INSTANTIATE_TEST_SUITE_P(BasisEmbeddings, IncrementalEmbedding, ::testing::Values("fem", "fcm", "harmonic"),
