@@ -91,7 +91,9 @@ TEST_P(IncrementalEmbedding, AfterARefinementIsTheEmbeddingFromScratch) {
   expect_embedding_as_from_scratch(simulation->method());
   EXPECT_GT(relocated(simulation->method()), 0);
   // The unsplit half keeps the vertices of its cells that hold no hanging node.
-  if (GetParam() != "harmonic") EXPECT_LT(relocated(simulation->method()), vertices * 3 / 4);
+  if (GetParam() != "harmonic") {
+    EXPECT_LT(relocated(simulation->method()), vertices * 3 / 4);
+  }
 }
 
 // A second cut in the background cell of the first (x = 0.52, then 0.55, both in fcm's
