@@ -93,8 +93,11 @@ public:
     }
     // The surface every method deforms: the scene's own, else the boundary of the
     // embedded mesh. Points in discarded cells take the nearest kept cell's basis (§5.3).
-    // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's.
-    surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
+    // Surface loads act on the boundary of the domain integrated: the embedded tetrahedra's,
+    // made only where a traction or the surface needs it (after each cut of a pencil's tip,
+    // a sixth of its rebuild).
+    if (!scene.tractions.empty() || !geometry.common_surface())
+      surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
     surface_.evaluator = cells_->basis_evaluator();
   }

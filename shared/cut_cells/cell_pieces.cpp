@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <exception>
-#include <map>
+#include <tuple>
 #include <type_traits>
 
 #include "shared/cut_cells/cell_rules.hpp"
@@ -52,17 +52,35 @@ std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) 
   const int corners = face_corner_count(shape);
   std::vector<std::vector<FaceNeighbour>> neighbours(static_cast<std::size_t>(mesh.cells.rows()),
                                                      std::vector<FaceNeighbour>(faces.size()));
-  std::map<std::array<int, 4>, FaceNeighbour> first_side;
+  // Every cell's faces by their sorted corner nodes, sorted: the sides of one face are a
+  // run, the first of them the first in cell order. A sort, not a map: a pencil's tip cell
+  // holds thousands of tetrahedra, and the map was most of finding its pieces at each cut.
+  struct Side {
+    std::array<int, 4> key;
+    int cell, face;
+    bool operator<(const Side& other) const {
+      return std::tie(key, cell, face) < std::tie(other.key, other.cell, other.face);
+    }
+  };
+  std::vector<Side> sides;
+  sides.reserve(static_cast<std::size_t>(mesh.cells.rows()) * faces.size());
   for (int cell = 0; cell < mesh.cells.rows(); ++cell)
     for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-      std::array<int, 4> key{-1, -1, -1, -1};
-      for (int c = 0; c < corners; ++c) key[c] = mesh.cells(cell, faces[f][c]);
-      std::sort(key.begin(), key.begin() + corners);
-      const auto [entry, added] = first_side.emplace(key, FaceNeighbour{cell, f});
-      if (added) continue;
-      neighbours[cell][f] = entry->second;
-      neighbours[entry->second.cell][entry->second.face] = {cell, f};
+      Side side{{-1, -1, -1, -1}, cell, f};
+      for (int c = 0; c < corners; ++c) side.key[c] = mesh.cells(cell, faces[f][c]);
+      std::sort(side.key.begin(), side.key.begin() + corners);
+      sides.push_back(side);
     }
+  std::sort(sides.begin(), sides.end());
+  for (std::size_t first = 0; first < sides.size();) {
+    std::size_t end = first + 1;
+    // Each later side of the face meets the first (a face of more than two sides: the last).
+    for (; end < sides.size() && sides[end].key == sides[first].key; ++end) {
+      neighbours[sides[end].cell][sides[end].face] = {sides[first].cell, sides[first].face};
+      neighbours[sides[first].cell][sides[first].face] = {sides[end].cell, sides[end].face};
+    }
+    first = end;
+  }
   return neighbours;
 }
 
