@@ -63,6 +63,7 @@ public:
     mesh_facts_ = std::move(built.facts);
     cell_levels_ = std::move(built.cell_levels);
     parent_cells_ = std::move(built.parent_cells);
+    merged_parts_ = std::move(built.merged_parts);
     // Stitching interpolates with the converted mesh's basis (the block refuses it with a slice).
     if (built.converted) volume_mesh_ = std::move(*built.converted);
     std::vector<DgFace> faces = faces_with_conditions(mesh_, scene);
@@ -208,7 +209,7 @@ public:
   }
   Eigen::MatrixXd transfer(const MethodInstance& previous, const Eigen::MatrixXd& fields) const override {
     const auto& before = dynamic_cast<const DgMethod&>(previous);
-    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), fields, parent_cells_);
+    return transfer_dg_field(*system_, *before.system_, before.basis_evaluator(), fields, parent_cells_, merged_parts_);
   }
   nlohmann::json facts() const override {
     nlohmann::json facts = mesh_facts_;
@@ -399,8 +400,9 @@ private:
   nlohmann::json mesh_facts_;      // its source (build_polyhedral_scene_mesh)
   std::vector<int> cell_levels_;   // per cell, the refinements it came through (empty: none)
   std::vector<int> parent_cells_;  // per cell, the cell of the build before holding it (empty: not an event's)
-  bool own_surface_ = false;       // the mesh's surface; false: the geometry's common one (deformed_surface)
-  std::vector<Motion> motions_;    // per Dirichlet condition
+  std::vector<std::vector<ParentPart>> merged_parts_;  // per cell merged from pieces of several, those pieces
+  bool own_surface_ = false;     // the mesh's surface; false: the geometry's common one (deformed_surface)
+  std::vector<Motion> motions_;  // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not

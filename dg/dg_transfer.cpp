@@ -2,9 +2,11 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
+#include <Eigen/SVD>
 #include <vector>
 
 #include "dg/face_polynomials.hpp"
+#include "shared/quadrature/polyhedron_rule.hpp"
 
 namespace altfem::dg {
 
@@ -34,11 +36,66 @@ Eigen::MatrixXd parent_in_child(const MonomialBasis& parent, const MonomialBasis
   return child.combination().partialPivLu().solve(monomials);
 }
 
+// Whether the polyhedron's vertices lie in one plane, to 1e-8 of its extent: a flat piece
+// that a surface blade's steps left on one of its planes (nodes snapped within 1e-9 of the
+// body's diagonal, surface_cut_debris.hpp), with a face or two that do not close. It holds
+// no volume, and a cone rule over open faces is no integral (on the ball of
+// bench/make_surface_blades.py such pieces lie below 1e-10, every other above 0.1).
+bool flat(const Polyhedron& polyhedron) {
+  const Eigen::MatrixXd centred = polyhedron.vertices.rowwise() - polyhedron.vertices.colwise().mean();
+  const Eigen::VectorXd extents = Eigen::JacobiSVD<Eigen::MatrixXd>(centred).singularValues();
+  return extents.size() < 3 || extents[2] <= 1e-8 * extents[0];
+}
+
+// The field's coefficients on `cell` (written into `result`): the L2 projection M c = r,
+// M_ab = ∫ φ_a φ_b by the cell's rule, r_a = Σ_parts ∫_part φ_a u_parent by a rule on
+// each part, u_parent its parent's polynomial: both integrands polynomials of degree 2k,
+// so both integrals are exact (polyhedron_rule), and with the constants among the φ_a
+// the projection keeps ∫ u over the cell, the sum of the parts'.
+void project_parts(const DgLinearSystem& system, const DgLinearSystem& previous, const Eigen::MatrixXd& fields,
+                   int cell, const std::vector<ParentPart>& parts, int strength, Eigen::MatrixXd& result) {
+  const Eigen::Index field_count = fields.cols();
+  const MonomialBasis& basis = system.basis(cell);
+  Eigen::VectorXd phi, parent_phi;
+  Eigen::MatrixXd gradients;
+  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(basis.size(), basis.size());
+  // The cone rule, exact on any polyhedron (its weights may be negative), as the body's
+  // loads and so its momentum are integrated (not cell_rule's positive simplification).
+  const PolyhedronRule rule = polyhedron_rule(system.cell(cell), strength);
+  for (Eigen::Index q = 0; q < rule.points.rows(); ++q) {
+    basis.evaluate(rule.points.row(q).transpose(), phi, gradients);
+    mass.noalias() += rule.weights[q] * phi * phi.transpose();
+  }
+  Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(basis.size(), 3 * field_count);
+  Eigen::RowVectorXd value(3 * field_count);
+  for (const ParentPart& part : parts) {
+    if (flat(part.piece)) continue;
+    const MonomialBasis& parent = previous.basis(part.parent);
+    const PolyhedronRule part_rule = polyhedron_rule(part.piece, strength);
+    for (Eigen::Index q = 0; q < part_rule.points.rows(); ++q) {
+      const Eigen::Vector3d x = part_rule.points.row(q).transpose();
+      basis.evaluate(x, phi, gradients);
+      parent.evaluate(x, parent_phi, gradients);
+      for (Eigen::Index field = 0; field < field_count; ++field)
+        value.segment<3>(3 * field) =
+            Eigen::Map<const Eigen::MatrixXd>(fields.col(field).data() + 3 * previous.offset(part.parent), 3,
+                                              parent.size()) *
+            parent_phi;
+      moments.noalias() += part_rule.weights[q] * phi * value;
+    }
+  }
+  const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3·#fields
+  for (int a = 0; a < basis.size(); ++a)
+    for (Eigen::Index field = 0; field < field_count; ++field)
+      result.block<3, 1>(3 * (system.offset(cell) + a), field) = coefficients.block<1, 3>(a, 3 * field).transpose();
+}
+
 }  // namespace
 
 Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSystem& previous,
                                   const ElementBasisEvaluator& previous_basis, const Eigen::MatrixXd& fields,
-                                  const std::vector<int>& parent_cells) {
+                                  const std::vector<int>& parent_cells,
+                                  const std::vector<std::vector<ParentPart>>& merged_parts) {
   const Eigen::Index field_count = fields.cols();
   Eigen::MatrixXd result = Eigen::MatrixXd::Zero(system.dof_count(), field_count);
   // The cells to project, their rules, and all their points for one embedding.
@@ -63,6 +120,10 @@ Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
         Eigen::Map<Eigen::MatrixXd>(result.col(field).data() + 3 * system.offset(cell), 3, restriction.rows()) =
             coefficients * restriction.transpose();
       }
+      continue;
+    }
+    if (!merged_parts.empty() && !merged_parts[cell].empty()) {
+      project_parts(system, previous, fields, cell, merged_parts[cell], strength, result);
       continue;
     }
     projected.push_back(cell);

@@ -1,6 +1,7 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 
 #include <algorithm>
+#include <optional>
 
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/cut_surface.hpp"
@@ -20,6 +21,11 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
     const int cell = result_of_cut.parent_cell[piece];
     if (pieces_of_cell[cell] > 1) minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(cell);
   }
+  // Pieces that merge keep their polyhedra until it is known which merged with pieces of
+  // another cell: dg projects its field on those piece by piece (dg_transfer.hpp).
+  std::optional<PolyhedralMesh> before_merge;
+  for (int piece = 0; piece < pieces.cell_count() && !before_merge; ++piece)
+    if (pieces.cell_volumes(piece) < minimum_volume[piece]) before_merge = pieces;
   const MergedPieces merged = merge_small_pieces(pieces, minimum_volume);
   std::vector<NodeSource> node_sources = std::move(result_of_cut.node_sources);
   if (!merged.kept_nodes.empty() && !node_sources.empty()) {  // a surface blade's cut has none
@@ -47,6 +53,15 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
     parents[cell] = parents[cell] == -2 || parents[cell] == parent ? parent : -1;
     if (!levels.empty()) levels[cell] = std::max(levels[cell], mesh.cell_levels[parent]);
   }
+  std::vector<std::vector<ParentPart>> merged_parts;
+  if (before_merge && std::find(parents.begin(), parents.end(), -1) != parents.end()) {
+    merged_parts.resize(parents.size());
+    for (int piece = 0; piece < before_merge->cell_count(); ++piece) {
+      const int cell = merged.new_cell[piece];
+      if (parents[cell] == -1)
+        merged_parts[cell].push_back({result_of_cut.parent_cell[piece], cell_polyhedron(*before_merge, piece)});
+    }
+  }
   PolyhedralSceneMesh result = mesh;
   // The surface it deforms when it is its own (the geometry has none in common), cut by
   // the same blade, as Simulation cuts the common one every method deforms.
@@ -56,6 +71,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   result.converted.reset();
   result.node_sources = std::move(node_sources);
   result.parent_cells = std::move(parents);
+  result.merged_parts = std::move(merged_parts);
   return result;
 }
 

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "shared/fem/fem_scene_block.hpp"
+#include "shared/geometry/polyhedron.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/surface_mesh.hpp"
@@ -17,6 +18,12 @@ namespace altfem {
 struct PolyhedralMeshSource {
   std::optional<SlicingOptions> slicing;  ///< set: hexahedral slicing; unset: conversion of `convert`
   FemSpec convert;                        ///< the volume mesh converted (resolved fem rules)
+};
+
+/// A piece of a cell before a cut, merged with pieces of other cells into one cell.
+struct ParentPart {
+  int parent = -1;  ///< the cell before that holds it
+  Polyhedron piece;
 };
 
 struct PolyhedralSceneMesh {
@@ -43,6 +50,10 @@ struct PolyhedralSceneMesh {
   /// (-1 for a cell merged from pieces of several); empty otherwise. Methods whose basis is
   /// per cell carry a field through these exactly (dg re-expands the parent's polynomial).
   std::vector<int> parent_cells;
+  /// After a cut that merged pieces of several cells into one (parent_cells −1): per cell,
+  /// those pieces, for such a cell; empty for every other (empty altogether when none).
+  /// dg projects its field on such a cell piece by piece, each with its parent's polynomial.
+  std::vector<std::vector<ParentPart>> merged_parts;
   /// Per cell, how many refinements split the cells it lies in (refine events' max_level);
   /// empty: none.
   std::vector<int> cell_levels;
