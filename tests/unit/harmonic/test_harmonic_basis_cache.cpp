@@ -153,8 +153,15 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
     const Eigen::MatrixXd difference = after.mfs_basis(cell)->values(samples) - fresh.mfs_basis(cell)->values(samples);
     EXPECT_LE(difference.cwiseAbs().maxCoeff(), 1e-10) << "cell " << cell;
   }
-  // The kept bases are the build before's, bit for bit, node by node (the cut mesh
-  // numbers the nodes otherwise: matched by position).
+  // The local node of `parent` before the cut at the position of local node i of `cell`
+  // after it (−1: none): the cut mesh numbers the nodes otherwise.
+  const auto same_node_before = [&](int cell, int parent, size_t i) {
+    const Eigen::RowVector3d x = cut.mesh.nodes.row(after.nodes(cell)[i]);
+    for (size_t j = 0; j < before.nodes(parent).size(); ++j)
+      if (mesh.nodes.row(before.nodes(parent)[j]) == x) return static_cast<int>(j);
+    return -1;
+  };
+  // The kept bases are the build before's, bit for bit, node by node (matched by position).
   int kept = 0;
   const Eigen::MatrixXd points = Eigen::MatrixXd::Random(5, 3);
   for (int cell = 0; cell < cut.mesh.cell_count(); ++cell) {
@@ -164,10 +171,7 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
     const Eigen::MatrixXd values = after.mfs_basis(cell)->values(points);
     const Eigen::MatrixXd values_before = before.mfs_basis(parent)->values(points);
     for (size_t i = 0; i < after.nodes(cell).size(); ++i) {
-      const Eigen::RowVector3d x = cut.mesh.nodes.row(after.nodes(cell)[i]);
-      int same = -1;
-      for (size_t j = 0; j < before.nodes(parent).size(); ++j)
-        if (mesh.nodes.row(before.nodes(parent)[j]) == x) same = static_cast<int>(j);
+      const int same = same_node_before(cell, parent, i);
       ASSERT_GE(same, 0);
       EXPECT_EQ(values.col(static_cast<Eigen::Index>(i)), values_before.col(same));
       EXPECT_EQ(after.mfs_basis(cell)->boundary_integrals().row(static_cast<Eigen::Index>(i)),
@@ -208,10 +212,7 @@ TEST(HarmonicBasisMemory, ARebuildAfterACutFitsOnlyTheCellsItChanged) {
     ASSERT_EQ(copy.point_count(), kept_view.point_count());
     EXPECT_TRUE(std::equal(copy.weights.begin(), copy.weights.end(), kept_view.weights.begin()));
     for (size_t i = 0; i < after.nodes(cell).size(); ++i) {
-      const Eigen::RowVector3d x = cut.mesh.nodes.row(after.nodes(cell)[i]);
-      int same = -1;
-      for (size_t j = 0; j < before.nodes(parent).size(); ++j)
-        if (mesh.nodes.row(before.nodes(parent)[j]) == x) same = static_cast<int>(j);
+      const int same = same_node_before(cell, parent, i);
       ASSERT_GE(same, 0);
       EXPECT_EQ(copy.values.col(static_cast<Eigen::Index>(i)), kept_view.values.col(same));
       for (int q = 0; q < copy.point_count(); ++q)
