@@ -104,13 +104,7 @@ SlicedMesh GridSlicer::assemble(const SurfacePieces& pieces) {
   }
 
   mesh.cell_faces.assign(cell_count, {});
-  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  for (std::size_t f = 0; f < face_cells.size(); ++f) {
-    mesh.face_cells(f, 0) = face_cells[f][0];
-    mesh.face_cells(f, 1) = face_cells[f][1];
-    for (int side : face_cells[f])
-      if (side >= 0) mesh.cell_faces[side].push_back(static_cast<int>(f));
-  }
+  set_faces(mesh, std::move(mesh.faces), face_cells);
   const auto& points = nodes_.points();
   mesh.nodes.resize(static_cast<Eigen::Index>(points.size()), 3);
   for (std::size_t n = 0; n < points.size(); ++n) mesh.nodes.row(n) = points[n];

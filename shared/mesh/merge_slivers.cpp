@@ -32,16 +32,9 @@ std::vector<int> merge_cell_groups(PolyhedralMesh& mesh, DisjointSets& groups, P
     faces.push_back(mesh.faces[face]);
     face_cells.push_back({owner, neighbour});
   }
-  mesh.faces = std::move(faces);
   mesh.cell_kinds = std::move(kinds);
-  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
   mesh.cell_faces.assign(new_count, {});
-  for (std::size_t f = 0; f < face_cells.size(); ++f) {
-    mesh.face_cells(f, 0) = face_cells[f][0];
-    mesh.face_cells(f, 1) = face_cells[f][1];
-    for (int side : face_cells[f])
-      if (side >= 0) mesh.cell_faces[side].push_back(static_cast<int>(f));
-  }
+  set_faces(mesh, std::move(faces), face_cells);
   return drop_unused_nodes(mesh);
 }
 

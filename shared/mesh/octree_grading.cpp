@@ -142,15 +142,7 @@ void join_coplanar_faces(PolyhedralMesh& mesh) {
                               [&](int node) { return outline_nodes.count(node) && !corners.count(node); }),
                loop.end());
 
-  mesh.faces = std::move(faces);
-  mesh.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  mesh.cell_faces.assign(mesh.cell_count(), {});
-  for (std::size_t f = 0; f < face_cells.size(); ++f) {
-    mesh.face_cells(f, 0) = face_cells[f][0];
-    mesh.face_cells(f, 1) = face_cells[f][1];
-    for (int side : face_cells[f])
-      if (side >= 0) mesh.cell_faces[side].push_back(static_cast<int>(f));
-  }
+  set_faces(mesh, std::move(faces), face_cells);
 }
 
 }  // namespace

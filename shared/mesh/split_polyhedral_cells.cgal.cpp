@@ -315,15 +315,13 @@ private:
     PolyhedralMesh& mesh = result.mesh;
     const int cell_count = static_cast<int>(result.parent_cell.size());
     mesh.cell_faces.resize(static_cast<std::size_t>(cell_count));
-    mesh.face_cells.resize(static_cast<Eigen::Index>(faces.size()), 2);
-    for (std::size_t index = 0; index < faces.size(); ++index) {
-      const int owner = cell_of_key.at(faces[index].owner);
-      const int neighbour = faces[index].neighbour < 0 ? -1 : cell_of_key.at(faces[index].neighbour);
-      mesh.face_cells.row(static_cast<Eigen::Index>(index)) << owner, neighbour;
-      mesh.cell_faces[owner].push_back(static_cast<int>(index));
-      if (neighbour >= 0) mesh.cell_faces[neighbour].push_back(static_cast<int>(index));
-      mesh.faces.push_back(std::move(faces[index].loop));
+    std::vector<std::vector<int>> loops;
+    std::vector<std::array<int, 2>> face_cells;
+    for (auto& face : faces) {
+      face_cells.push_back({cell_of_key.at(face.owner), face.neighbour < 0 ? -1 : cell_of_key.at(face.neighbour)});
+      loops.push_back(std::move(face.loop));
     }
+    set_faces(mesh, std::move(loops), face_cells);
     mesh.nodes.resize(static_cast<Eigen::Index>(points_.size()), 3);
     mesh.nodes.topRows(mesh_.nodes.rows()) = mesh_.nodes;
     for (std::size_t node = static_cast<std::size_t>(mesh_.nodes.rows()); node < points_.size(); ++node)
