@@ -90,8 +90,7 @@ public:
     // run, and the faces the event left alone keep their matrices.
     if (handed) double_penalty(handed->doublings);
     // Kept only where an event can rebuild on them (they hold every class's matrices).
-    IntegralReuse reuse{handed ? handed->integrals : nullptr, false};
-    for (const SceneEvent& event : scene.events) reuse.remember |= event.kind != EventKind::release;
+    IntegralReuse reuse{handed ? handed->integrals : nullptr, events_rebuild(scene)};
     const std::vector<Polyhedron> cells = mesh_cells(mesh_);
     system_ = std::make_unique<DgLinearSystem>(cells, faces, settings_, cell_materials_, reuse);
     // The functions of a cell are contiguous and do not depend on the penalty.

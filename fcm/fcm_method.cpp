@@ -34,6 +34,8 @@ struct FcmMesh {
   HangingNodeSources hanging;
   /// The cell rules of the build an event started from, for the cells it left alone.
   std::shared_ptr<const CellRuleMemory> rules;
+  /// Its tetrahedra's clips by its cells, for the tetrahedra and cells it left alone.
+  std::shared_ptr<const ClippedTetrahedronMemory> clips;
 };
 
 // The stress per leaf of `forest` that marks it: of its kept cells (pieces) the one whose
@@ -84,9 +86,10 @@ public:
     if (!meshes.hanging.empty())
       refined = RefinedBackground{meshes.free_nodes, std::move(meshes.hanging),
                                   forest_face_contacts(forest_interior_faces(*forest_))};
-    cells_ = std::make_unique<EmbeddedCutCells>(meshes.background, std::move(meshes.embedded), cut_cell_settings(spec),
-                                                materials_, scene.dirichlet, scene.file.string(),
-                                                CutCellRebuild{refined ? &*refined : nullptr, meshes.rules});
+    cells_ = std::make_unique<EmbeddedCutCells>(
+        meshes.background, std::move(meshes.embedded), cut_cell_settings(spec), materials_, scene.dirichlet,
+        scene.file.string(),
+        CutCellRebuild{refined ? &*refined : nullptr, meshes.rules, meshes.clips, events_rebuild(scene)});
     if (refined) {
       grid_free_nodes_ = refined->free_nodes;
       grid_hanging_ = std::move(refined->sources);
@@ -130,7 +133,8 @@ public:
                                                      forest_,
                                                      grid_free_nodes_,
                                                      grid_hanging_,
-                                                     cells_->rule_memory()});
+                                                     cells_->rule_memory(),
+                                                     cells_->clip_memory()});
   }
   std::string refine_refusal(const RefineSpec& refine) const override {
     if (!forest_)
@@ -157,14 +161,16 @@ public:
                                                      std::move(refined->forest),
                                                      refined->mesh.constraints.free_nodes,
                                                      std::move(refined->mesh.sources),
-                                                     cells_->rule_memory()});
+                                                     cells_->rule_memory(),
+                                                     cells_->clip_memory()});
   }
   /// The material's volume Σ vol(K ∩ Ω) over the kept cells (EmbeddedCutCells).
   std::optional<double> volume() const override { return cells_->material_volume(); }
   std::string cut_refusal() const override { return cells_->cut_refusal(); }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
     return std::make_shared<MeshOf<FcmMesh>>(FcmMesh{cells_->background(), resolution_, cells_->cut(cut.blade, facts),
-                                                     forest_, grid_free_nodes_, grid_hanging_, cells_->rule_memory()});
+                                                     forest_, grid_free_nodes_, grid_hanging_, cells_->rule_memory(),
+                                                     cells_->clip_memory()});
   }
   /// Nodal values at the nodes (transfer_to_nodes); after a cut a node copy takes the
   /// values of the copy its material came from, which a position cannot tell apart.

@@ -52,11 +52,9 @@ public:
     cell_levels_ = std::move(built.cell_levels);
     const auto start = std::chrono::steady_clock::now();
     if (spec.cache.empty()) {
-      // Kept only where an event can rebuild on them.
-      bool events_rebuild = false;
-      for (const SceneEvent& event : scene.events) events_rebuild |= event.kind != EventKind::release;
-      // Every shape the run has met: the memory of the build before, and this one's.
-      if (events_rebuild)
+      // Kept only where an event can rebuild on them. Every shape the run has met: the
+      // memory of the build before, and this one's.
+      if (events_rebuild(scene))
         basis_memory_ = handed && handed->bases ? std::make_shared<HarmonicBasisMemory>(*handed->bases)
                                                 : std::make_shared<HarmonicBasisMemory>(spec.mfs);
       bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs,

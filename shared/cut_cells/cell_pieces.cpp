@@ -10,6 +10,7 @@
 #include "shared/cut_cells/cut_cell_rule.hpp"
 #include "shared/cut_cells/tetrahedron_buckets.hpp"
 #include "shared/element/element_faces.hpp"
+#include "shared/io/binary_cache.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/solve/rank_exchange.hpp"
 
@@ -62,14 +63,13 @@ std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) 
       return std::tie(key, cell, face) < std::tie(other.key, other.cell, other.face);
     }
   };
-  std::vector<Side> sides;
-  sides.reserve(static_cast<std::size_t>(mesh.cells.rows()) * faces.size());
+  std::vector<Side> sides(static_cast<std::size_t>(mesh.cells.rows()) * faces.size());
   for (int cell = 0; cell < mesh.cells.rows(); ++cell)
     for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-      Side side{{-1, -1, -1, -1}, cell, f};
+      Side& side = sides[static_cast<std::size_t>(cell) * faces.size() + static_cast<std::size_t>(f)];
+      side = {{-1, -1, -1, -1}, cell, f};
       for (int c = 0; c < corners; ++c) side.key[c] = mesh.cells(cell, faces[f][c]);
       std::sort(side.key.begin(), side.key.begin() + corners);
-      sides.push_back(side);
     }
   std::sort(sides.begin(), sides.end());
   for (std::size_t first = 0; first < sides.size();) {
@@ -126,7 +126,7 @@ void add_contact_areas(const std::vector<TetrahedronCorners>& clipped, const std
     for (const auto& triangle : tetrahedron_triangles) {
       const Eigen::Vector3d a = piece.row(triangle[0]).transpose(), b = piece.row(triangle[1]).transpose(),
                             c = piece.row(triangle[2]).transpose();
-      for (int k = 0; k < plane_count; ++k) {
+      for (int k = 0; k < plane_count && k < static_cast<int>(N); ++k) {
         const Plane& plane = planes[k];
         if (plane.distance(a) <= distance_threshold && plane.distance(b) <= distance_threshold &&
             plane.distance(c) <= distance_threshold)
@@ -165,7 +165,8 @@ bool separated_by_a_face(const TetrahedronCorners& tetrahedron, const Eigen::Mat
 /// contacts of positive area inside the cell.
 CellFragments cell_fragments(const VolumeMesh& background, int cell, const TetrahedronBuckets& buckets,
                              const std::vector<std::array<int, 4>>& tetrahedron_neighbours,
-                             std::vector<int>& candidates) {
+                             std::vector<int>& candidates, const ClippedTetrahedronMemory* previous,
+                             std::vector<std::pair<std::uint64_t, ClippedTetrahedron>>* clips) {
   const ElementType type = background.element_type;
   const ElementShape shape = element_shape(type);
   const int corner_count = element_corner_count(type);
@@ -182,22 +183,39 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   const auto cell_faces = element_faces(shape);
   std::array<Plane, 6> cell_planes;
   for (std::size_t f = 0; f < cell_faces.size(); ++f) cell_planes[f] = face_plane(corners, cell_faces[f]);
+  CacheKeyHasher cell_key;
+  cell_key.matrix(corners);
+  const auto clip = [&](const TetrahedronCorners& tetrahedron) {
+    ClippedTetrahedron result_of_clip;
+    const double extent = diagonal + (tetrahedron.colwise().maxCoeff() - tetrahedron.colwise().minCoeff()).norm();
+    if (separated_by_a_face(tetrahedron, corners, extent)) return result_of_clip;
+    const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, geometry.planes());
+    if (clipped.empty()) return result_of_clip;
+    result_of_clip.touches = true;
+    for (const TetrahedronCorners& piece : clipped) result_of_clip.volume += tetrahedron_jacobian(piece) / 6.0;
+    add_contact_areas(clipped, cell_planes, static_cast<int>(cell_faces.size()), result.distance_threshold,
+                      result_of_clip.cell_face_area);
+    std::array<Plane, 4> tetrahedron_planes;
+    for (int f = 0; f < 4; ++f) tetrahedron_planes[f] = face_plane(tetrahedron, tetrahedron_faces[f]);
+    add_contact_areas(clipped, tetrahedron_planes, 4, result.distance_threshold, result_of_clip.tetrahedron_face_area);
+    return result_of_clip;
+  };
   double clipped_volume = 0;
   for (const int t : candidates) {
     const TetrahedronCorners& tetrahedron = buckets.corners(t);
-    const double extent = diagonal + (tetrahedron.colwise().maxCoeff() - tetrahedron.colwise().minCoeff()).norm();
-    if (separated_by_a_face(tetrahedron, corners, extent)) continue;
-    const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, geometry.planes());
-    if (clipped.empty()) continue;
-    for (const TetrahedronCorners& piece : clipped) clipped_volume += tetrahedron_jacobian(piece) / 6.0;
-    Fragment fragment;
-    fragment.tetrahedron = t;
-    add_contact_areas(clipped, cell_planes, static_cast<int>(cell_faces.size()), result.distance_threshold,
-                      fragment.cell_face_area);
-    std::array<Plane, 4> tetrahedron_planes;
-    for (int f = 0; f < 4; ++f) tetrahedron_planes[f] = face_plane(buckets.corners(t), tetrahedron_faces[f]);
-    add_contact_areas(clipped, tetrahedron_planes, 4, result.distance_threshold, fragment.tetrahedron_face_area);
-    result.fragments.push_back(fragment);
+    ClippedTetrahedron clipped;
+    if (previous || clips) {
+      CacheKeyHasher key = cell_key;
+      key.matrix(tetrahedron);
+      const auto known = previous ? previous->find(key.value()) : ClippedTetrahedronMemory::const_iterator{};
+      clipped = previous && known != previous->end() ? known->second : clip(tetrahedron);
+      if (clips) clips->emplace_back(key.value(), clipped);
+    } else {
+      clipped = clip(tetrahedron);
+    }
+    if (!clipped.touches) continue;
+    clipped_volume += clipped.volume;
+    result.fragments.push_back({t, clipped.cell_face_area, clipped.tetrahedron_face_area});
   }
 
   const int count = static_cast<int>(result.fragments.size());
@@ -287,7 +305,8 @@ void gather_cell_fragments(std::vector<CellFragments>& cells) {
 }
 
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
-                            const std::vector<CellFaceContact>* contacts) {
+                            const std::vector<CellFaceContact>* contacts, const ClippedTetrahedronMemory* previous,
+                            ClippedTetrahedronMemory* remember) {
   const TetrahedronBuckets buckets(embedded);
   const std::vector<std::vector<FaceNeighbour>> tetrahedron_adjacency = face_neighbours(embedded);
   std::vector<std::array<int, 4>> tetrahedron_neighbours(tetrahedron_adjacency.size());
@@ -300,16 +319,21 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
 #pragma omp parallel
   {
     std::vector<int> candidates;
+    std::vector<std::pair<std::uint64_t, ClippedTetrahedron>> clips;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cell_count; ++cell) {
       if (!ranks::computes_item(static_cast<std::size_t>(cell))) continue;  // another rank's (gathered below)
       try {
-        cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates);
+        cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates, previous,
+                                     remember ? &clips : nullptr);
       } catch (...) {
 #pragma omp critical(altfem_fcm_cell_pieces_failure)
         if (!failure) failure = std::current_exception();
       }
     }
+    if (remember)
+#pragma omp critical(altfem_fcm_cell_pieces_memory)
+      remember->insert(clips.begin(), clips.end());
   }
   // Over several ranks every rank throws the first failing rank's exception; each found
   // the fragments of every count()-th cell, most of the pieces' time, and all are gathered.

@@ -4,6 +4,9 @@
 // Longva et al. 2020 (§7, conclusion) name the limitation this removes: a cell holding
 // two disconnected parts of the object (a thin slot, two fingers) ties them together
 // through its shared DOFs. With one DOF copy per piece (piece_mesh.hpp) they move apart.
+#include <array>
+#include <cstdint>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -34,6 +37,20 @@ struct CellPieces {
   int piece_count() const;
 };
 
+/// What clipping one embedded tetrahedron by one cell gave (find_cell_pieces), kept for the
+/// rebuild an event makes: a cut leaves most tetrahedra as they were, and a pencil's tip
+/// cell holds thousands of them, clipped again at every cut before.
+struct ClippedTetrahedron {
+  bool touches = false;  ///< the clip has volume
+  double volume = 0;
+  std::array<double, 6> cell_face_area{};
+  std::array<double, 4> tetrahedron_face_area{};
+};
+
+/// Clips by the hash of the cell's corners and the tetrahedron's (their positions, bit for
+/// bit, in order).
+using ClippedTetrahedronMemory = std::unordered_map<std::uint64_t, ClippedTetrahedron>;
+
 /// The pieces of every cell of `background` (tetrahedra or hexahedra with planar faces,
 /// conforming) over the Tet4 mesh `embedded` of the object (conforming: faces are
 /// matched by their corner nodes, so a soup must be welded first (weld_coincident_nodes)
@@ -57,9 +74,14 @@ struct CellPieces {
 /// is not conforming (a refined grid's: forest_face_contacts); by default faces are matched
 /// by their corner nodes.
 ///
+/// `previous` (optional): clips of a build before, taken where the cell and the tetrahedron
+/// are the same; `remember` (optional) receives this build's clips.
+///
 /// Over several ranks every rank calls it alike: each clips every count()-th cell and the
 /// fragments are gathered (docs/scaling.md).
 CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embedded,
-                            const std::vector<CellFaceContact>* contacts = nullptr);
+                            const std::vector<CellFaceContact>* contacts = nullptr,
+                            const ClippedTetrahedronMemory* previous = nullptr,
+                            ClippedTetrahedronMemory* remember = nullptr);
 
 }  // namespace altfem

@@ -49,7 +49,9 @@ EmbeddedCutCells::EmbeddedCutCells(const VolumeMesh& background, EmbeddedTetrahe
   std::vector<std::vector<int>> cell_tetrahedra;
   std::vector<char> filled_cells;
   if (settings.topology_aware) {
-    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh(), refined ? &refined->contacts : nullptr);
+    if (rebuild.remember_clips) clip_memory_ = std::make_shared<ClippedTetrahedronMemory>();
+    const CellPieces pieces = find_cell_pieces(background, embedded_.mesh(), refined ? &refined->contacts : nullptr,
+                                               rebuild.clips.get(), clip_memory_.get());
     split_cells_ = pieces.split_cells();
     pieces_ = piece_mesh(background, pieces);
     cells = pieces_->mesh;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "shared/cut_cells/cell_pieces.hpp"
 #include "shared/cut_cells/fcm_discretization.hpp"
 #include "shared/cut_cells/intersection_cell_quadrature.hpp"
 #include "shared/cut_cells/piece_mesh.hpp"
@@ -62,6 +63,11 @@ struct CutCellRebuild {
   /// The cell rules built before (rule_memory()): a cell the event left alone (the same
   /// corners, the same tetrahedra) takes its rules from there instead of being integrated again.
   std::shared_ptr<const CellRuleMemory> rules;
+  /// The tetrahedra's clips by the cells built before (clip_memory()): one the event left
+  /// alone in a cell the same is not clipped again (find_cell_pieces).
+  std::shared_ptr<const ClippedTetrahedronMemory> clips;
+  /// Whether to keep this build's clips for the next (a scene whose events rebuild).
+  bool remember_clips = false;
 };
 
 class EmbeddedCutCells {
@@ -93,6 +99,8 @@ public:
 
   /// Every cell's rules of this build, by key, for the next rebuild (CutCellRebuild::rules).
   std::shared_ptr<const CellRuleMemory> rule_memory() const { return rule_memory_; }
+  /// This build's clips of the tetrahedra by the cells (null unless remember_clips).
+  std::shared_ptr<const ClippedTetrahedronMemory> clip_memory() const { return clip_memory_; }
   /// Per kept cell, the background cell it is (or is a piece of).
   std::vector<int> background_cell_of_kept() const;
 
@@ -129,6 +137,7 @@ private:
   double topology_seconds_ = 0, seconds_ = 0, material_volume_ = 0;
   std::shared_ptr<IntersectionStatistics> statistics_;
   std::shared_ptr<CellRuleMemory> rule_memory_;
+  std::shared_ptr<ClippedTetrahedronMemory> clip_memory_;
   FcmDiscretization fcm_;
   std::vector<std::string> warnings_;
 };

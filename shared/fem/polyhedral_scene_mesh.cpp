@@ -70,6 +70,7 @@ PolyhedralSceneMesh handed_polyhedral_scene_mesh(const PolyhedralMesh& mesh, con
           .converted = std::nullopt,
           .node_sources = {},
           .parent_cells = {},
+          .merged_parts = {},
           .cell_levels = cell_levels};
 }
 

@@ -235,6 +235,10 @@ struct Scene {
   nlohmann::json resolved;
 };
 
+/// Whether an event of `scene` rebuilds the method (a cut or a refinement, not a release):
+/// then each build keeps what the next can take from it.
+bool events_rebuild(const Scene& scene);
+
 /// Reads, validates and resolves a scene file, and checks that the files it names
 /// exist. Throws InputError with a one-line message naming the file and the JSON
 /// pointer or line/column.

@@ -272,4 +272,9 @@ std::vector<SceneEvent> events_from_json(const nlohmann::json& resolved) {
   return events;
 }
 
+bool events_rebuild(const Scene& scene) {
+  return std::any_of(scene.events.begin(), scene.events.end(),
+                     [](const SceneEvent& event) { return event.kind != EventKind::release; });
+}
+
 }  // namespace altfem

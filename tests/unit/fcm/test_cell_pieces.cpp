@@ -178,6 +178,31 @@ TEST(CellPieces, UShapeJoinsThroughTheNeighbouringCell) {
   EXPECT_EQ(shared_nodes(mesh, 1, 2), 4);
 }
 
+// A rebuild after an event takes the clips of the tetrahedra it left alone from the build
+// before (ClippedTetrahedronMemory): the pieces are those found from scratch, whether the
+// event removed material (the U's right leg shortened) or left it all.
+TEST(CellPieces, ClipsKeptFromTheBuildBeforeGiveThePiecesFoundFromScratch) {
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(1, 2, 1)),
+                                                Eigen::Vector3i(1, 2, 1), ElementType::hex8);
+  const VolumeMesh u_shape =
+      without_cells(box_tetrahedra({0, 0, 0}, {1, 1.5, 1}, Eigen::Vector3i(10, 15, 1)),
+                    [](const Eigen::Vector3d& x) { return x.x() > 0.3 && x.x() < 0.7 && x.y() < 1.2; });
+  ClippedTetrahedronMemory before;
+  find_cell_pieces(background, u_shape, nullptr, nullptr, &before);
+  EXPECT_GT(before.size(), 0u);
+  const VolumeMesh shorter =
+      without_cells(u_shape, [](const Eigen::Vector3d& x) { return x.x() > 0.7 && x.y() < 0.4; });
+  for (const VolumeMesh* embedded : {&u_shape, &shorter}) {
+    const CellPieces fresh = find_cell_pieces(background, *embedded);
+    ClippedTetrahedronMemory after;
+    const CellPieces kept = find_cell_pieces(background, *embedded, nullptr, &before, &after);
+    EXPECT_EQ(kept.tetrahedra, fresh.tetrahedra);
+    EXPECT_EQ(kept.neighbours, fresh.neighbours);
+    EXPECT_EQ(kept.filled, fresh.filled);
+    EXPECT_LE(after.size(), before.size());  // this build's clips only
+  }
+}
+
 // The same two bars in a tetrahedral background (each grid cube split into 6).
 TEST(CellPieces, TetrahedralCellsSplitToo) {
   const VolumeMesh embedded = concatenate(box_tetrahedra({0, 0, 0}, {1, 0.4, 1}, Eigen::Vector3i(2, 1, 2)),
