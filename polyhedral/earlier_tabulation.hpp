@@ -3,7 +3,8 @@
 // points are copied, not evaluated again (Martin et al. 2008 §8: only cut elements get new
 // bases; the rest keep theirs, and so their tabulation). The event's mesh may list a kept
 // cell otherwise (other node numbers, faces in another order, loops from another node):
-// it is matched by its vertices' positions, exactly, and its faces' loops through them.
+// it is matched in its canonical listing (canonical_cell): its vertices' positions, exactly,
+// and its faces' loops through them.
 #include <vector>
 
 #include "polyhedral/element_harmonic_basis.hpp"

@@ -66,9 +66,9 @@ public:
   /// `here` does not hold is added with its nodes and its rule's point count only
   /// (TabulatedElements::add_held_elsewhere): its basis is not evaluated, and its MFS rule is
   /// made only when `listed` (every cell's count, ElementTabulator) is not given. An MFS
-  /// cell whose polyhedron and basis `earlier` holds (match_earlier_cells; tabulated at the
-  /// same strength, with the same quadrature) takes its points from there; `copied`, when
-  /// given, counts those cells.
+  /// cell whose polyhedron and basis `earlier` holds (match_earlier_cells) takes its points
+  /// from there when `earlier` was tabulated at this strength (its quadrature must be this
+  /// one: the same scene's); `copied`, when given, counts those cells.
   TabulatedElements tabulate(int strength, const HarmonicQuadrature& quadrature, const std::vector<int>& materials = {},
                              const TabulatedHere& here = nullptr, const TabulatedElements* listed = nullptr,
                              const EarlierTabulation* earlier = nullptr, int* copied = nullptr) const;
