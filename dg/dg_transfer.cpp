@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
-#include <Eigen/SVD>
 #include <vector>
 
 #include "dg/face_polynomials.hpp"
@@ -36,19 +35,18 @@ Eigen::MatrixXd parent_in_child(const MonomialBasis& parent, const MonomialBasis
   return child.combination().partialPivLu().solve(monomials);
 }
 
-// Whether the polyhedron's vertices lie in one plane, to 1e-8 of its extent: a flat piece
-// that a surface blade's steps left on one of its planes (nodes snapped within 1e-9 of the
-// body's diagonal, surface_cut_debris.hpp), with a face or two that do not close. It holds
-// no volume, and a cone rule over open faces is no integral (on the ball of
-// bench/make_surface_blades.py such pieces lie below 1e-10, every other above 0.1).
-bool flat(const Polyhedron& polyhedron) {
-  const Eigen::MatrixXd centred = polyhedron.vertices.rowwise() - polyhedron.vertices.colwise().mean();
-  const Eigen::VectorXd extents = Eigen::JacobiSVD<Eigen::MatrixXd>(centred).singularValues();
-  return extents.size() < 3 || extents[2] <= 1e-8 * extents[0];
+// The L2 projection's solution M c = r on `cell` (r: a column per component of each
+// field) into the cell's rows of `result`.
+void write_projection(const DgLinearSystem& system, int cell, const Eigen::MatrixXd& mass,
+                      const Eigen::MatrixXd& moments, Eigen::MatrixXd& result) {
+  const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3·#fields
+  for (Eigen::Index a = 0; a < coefficients.rows(); ++a)
+    for (Eigen::Index field = 0; field < result.cols(); ++field)
+      result.block<3, 1>(3 * (system.offset(cell) + a), field) = coefficients.block<1, 3>(a, 3 * field).transpose();
 }
 
 // The field's coefficients on `cell` (written into `result`): the L2 projection M c = r,
-// M_ab = ∫ φ_a φ_b by the cell's rule, r_a = Σ_parts ∫_part φ_a u_parent by a rule on
+// M_ab = ∫ φ_a φ_b by the cone rule on the cell, r_a = Σ_parts ∫_part φ_a u_parent by a rule on
 // each part, u_parent its parent's polynomial: both integrands polynomials of degree 2k,
 // so both integrals are exact (polyhedron_rule), and with the constants among the φ_a
 // the projection keeps ∫ u over the cell, the sum of the parts'.
@@ -69,7 +67,6 @@ void project_parts(const DgLinearSystem& system, const DgLinearSystem& previous,
   Eigen::MatrixXd moments = Eigen::MatrixXd::Zero(basis.size(), 3 * field_count);
   Eigen::RowVectorXd value(3 * field_count);
   for (const ParentPart& part : parts) {
-    if (flat(part.piece)) continue;
     const MonomialBasis& parent = previous.basis(part.parent);
     const PolyhedronRule part_rule = polyhedron_rule(part.piece, strength);
     for (Eigen::Index q = 0; q < part_rule.points.rows(); ++q) {
@@ -84,10 +81,7 @@ void project_parts(const DgLinearSystem& system, const DgLinearSystem& previous,
       moments.noalias() += part_rule.weights[q] * phi * value;
     }
   }
-  const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3·#fields
-  for (int a = 0; a < basis.size(); ++a)
-    for (Eigen::Index field = 0; field < field_count; ++field)
-      result.block<3, 1>(3 * (system.offset(cell) + a), field) = coefficients.block<1, 3>(a, 3 * field).transpose();
+  write_projection(system, cell, mass, moments, result);
 }
 
 }  // namespace
@@ -157,10 +151,7 @@ Eigen::MatrixXd transfer_dg_field(const DgLinearSystem& system, const DgLinearSy
       mass.noalias() += rule.weights[q] * phi * phi.transpose();
       moments.noalias() += rule.weights[q] * phi * old_values.row(row);
     }
-    const Eigen::MatrixXd coefficients = mass.ldlt().solve(moments);  // #functions × 3·#fields
-    for (int a = 0; a < basis.size(); ++a)
-      for (Eigen::Index field = 0; field < field_count; ++field)
-        result.block<3, 1>(3 * (system.offset(cell) + a), field) = coefficients.block<1, 3>(a, 3 * field).transpose();
+    write_projection(system, cell, mass, moments, result);
   }
   return result;
 }

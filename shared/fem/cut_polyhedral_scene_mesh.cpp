@@ -1,5 +1,6 @@
 #include "shared/fem/cut_polyhedral_scene_mesh.hpp"
 
+#include <Eigen/SVD>
 #include <algorithm>
 #include <optional>
 
@@ -8,6 +9,21 @@
 #include "shared/mesh/merge_slivers.hpp"
 
 namespace altfem {
+
+namespace {
+
+// Whether the polyhedron's vertices lie in one plane, to 1e-8 of its extent: a flat piece
+// that a surface blade's steps left on one of its planes (nodes snapped within 1e-9 of the
+// body's diagonal, surface_cut_debris.hpp), with a face or two that do not close. It holds
+// no volume, and a rule over open faces integrates nothing meaningful (on the ball of
+// bench/make_surface_blades.py such pieces lie below 1e-10, every other above 0.1).
+bool flat(const Polyhedron& polyhedron) {
+  const Eigen::MatrixXd centred = polyhedron.vertices.rowwise() - polyhedron.vertices.colwise().mean();
+  const Eigen::VectorXd extents = Eigen::JacobiSVD<Eigen::MatrixXd>(centred).singularValues();
+  return extents.size() < 3 || extents[2] <= 1e-8 * extents[0];
+}
+
+}  // namespace
 
 PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const SceneEvent& cut,
                                               nlohmann::json& facts) {
@@ -58,8 +74,9 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
     merged_parts.resize(parents.size());
     for (int piece = 0; piece < before_merge->cell_count(); ++piece) {
       const int cell = merged.new_cell[piece];
-      if (parents[cell] == -1)
-        merged_parts[cell].push_back({result_of_cut.parent_cell[piece], cell_polyhedron(*before_merge, piece)});
+      Polyhedron polyhedron = cell_polyhedron(*before_merge, piece);
+      if (parents[cell] == -1 && !flat(polyhedron))
+        merged_parts[cell].push_back({result_of_cut.parent_cell[piece], std::move(polyhedron)});
     }
   }
   PolyhedralSceneMesh result = mesh;

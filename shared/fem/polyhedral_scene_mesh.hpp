@@ -51,7 +51,8 @@ struct PolyhedralSceneMesh {
   /// per cell carry a field through these exactly (dg re-expands the parent's polynomial).
   std::vector<int> parent_cells;
   /// After a cut that merged pieces of several cells into one (parent_cells −1): per cell,
-  /// those pieces, for such a cell; empty for every other (empty altogether when none).
+  /// those pieces, for such a cell, but for flat pieces of rounding size (no volume, faces
+  /// that may not close); empty for every other cell (empty altogether when none).
   /// dg projects its field on such a cell piece by piece, each with its parent's polynomial.
   std::vector<std::vector<ParentPart>> merged_parts;
   /// Per cell, how many refinements split the cells it lies in (refine events' max_level);
