@@ -157,9 +157,9 @@ void BasisEmbedding::append_nearest(const ElementBasisEvaluator& evaluator, cons
 }
 
 template <typename KeyOf>
-std::vector<int> BasisEmbedding::kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous,
-                                              Eigen::Index point, const Eigen::Vector3d& x,
-                                              const std::vector<int>& candidates, const KeyOf& key_of) const {
+bool BasisEmbedding::kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous,
+                                  Eigen::Index point, const Eigen::Vector3d& x, const std::vector<int>& candidates,
+                                  const KeyOf& key_of, std::vector<int>& holders) const {
   const Memory& before = *previous.memory_;
   const long long holders_begin = before.holder_offsets[point], holders_end = before.holder_offsets[point + 1];
   const long long first = before.candidate_offsets[point];
@@ -167,18 +167,19 @@ std::vector<int> BasisEmbedding::kept_holders(const ElementBasisEvaluator& evalu
   const auto key_before = [&](size_t place) { return before.candidate_keys[first + static_cast<long long>(place)]; };
   if (evaluator.boundary_rule() == BoundaryPointRule::average) {
     // It averages every holder: every candidate must be as it was, in its place.
-    if (candidates.size() != before_count) return {};
+    if (candidates.size() != before_count) return false;
     for (size_t place = 0; place < before_count; ++place)
-      if (key_of(candidates[place]) == 0 || key_of(candidates[place]) != key_before(place)) return {};
-    return {before.holders.begin() + holders_begin, before.holders.begin() + holders_end};
+      if (key_of(candidates[place]) == 0 || key_of(candidates[place]) != key_before(place)) return false;
+    holders.assign(before.holders.begin() + holders_begin, before.holders.begin() + holders_end);
+    return true;
   }
   // The first candidate that holds it: its holder, now wherever an element of its key is.
   const auto holder_before = static_cast<size_t>(before.holders[holders_begin]);
   const std::uint64_t holder_key = key_before(holder_before);
-  if (holder_key == 0) return {};
+  if (holder_key == 0) return false;
   size_t holder = 0;
   while (holder < candidates.size() && key_of(candidates[holder]) != holder_key) ++holder;
-  if (holder == candidates.size() || !evaluator.holds_alone(candidates[holder], x)) return {};
+  if (holder == candidates.size() || !evaluator.holds_alone(candidates[holder], x)) return false;
   // Each candidate before it is one that rejected the point there (a key before the
   // holder's: it rejects it as it did, holds_alone) or one the event made that rejects it.
   for (size_t place = 0; place < holder; ++place) {
@@ -186,9 +187,10 @@ std::vector<int> BasisEmbedding::kept_holders(const ElementBasisEvaluator& evalu
     bool rejected = false;
     for (size_t earlier = 0; earlier < holder_before && !rejected; ++earlier)
       rejected = key != 0 && key == key_before(earlier);
-    if (!rejected && !evaluator.rejects(candidates[place], candidates[holder], x)) return {};
+    if (!rejected && !evaluator.rejects(candidates[place], candidates[holder], x)) return false;
   }
-  return {static_cast<int>(holder)};
+  holders.assign(1, static_cast<int>(holder));
+  return true;
 }
 
 bool BasisEmbedding::keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
@@ -202,8 +204,7 @@ bool BasisEmbedding::keep(const ElementBasisEvaluator& evaluator, const BasisEmb
     if (!known[element]) keys[element] = evaluator.element_key(element), known[element] = 1;
     return keys[element];
   };
-  holders = kept_holders(evaluator, previous, point, x, candidates, key_of);
-  if (holders.empty()) return false;
+  if (!kept_holders(evaluator, previous, point, x, candidates, key_of, holders)) return false;
   // The same evaluations in the same order: the entries of the holders, one after the
   // other, each on the functions its element lists now.
   thread_local std::vector<int> functions;

@@ -145,12 +145,13 @@ private:
   bool keep(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
             const Eigen::Vector3d& x, const std::vector<int>& candidates, std::vector<std::uint64_t>& keys,
             std::vector<char>& known, std::vector<int>& holders);
-  /// The places in `candidates` of `point`'s holders in `previous`, or empty where the
-  /// rules of keep do not find them; `key_of` gives an element's key.
+  /// Sets `holders` to the places in `candidates` of `point`'s holders in `previous`; false,
+  /// leaving it alone, where the rules of keep do not find them. `key_of` gives an
+  /// element's key.
   template <typename KeyOf>
-  std::vector<int> kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous,
-                                Eigen::Index point, const Eigen::Vector3d& x, const std::vector<int>& candidates,
-                                const KeyOf& key_of) const;
+  bool kept_holders(const ElementBasisEvaluator& evaluator, const BasisEmbedding& previous, Eigen::Index point,
+                    const Eigen::Vector3d& x, const std::vector<int>& candidates, const KeyOf& key_of,
+                    std::vector<int>& holders) const;
 
   std::vector<long long> offsets_{0};  // #points + 1
   std::vector<int> basis_;

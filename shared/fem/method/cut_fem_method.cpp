@@ -32,9 +32,9 @@ public:
       : materials_(scene),
         elements_(mesh.elements),
         failure_hint_(fem_cut_failure_hint(fem_spec(scene).cut_stabilization)) {
-    cells_ =
-        std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
-                                           scene.dirichlet, scene.file.string(), CutCellRebuild{nullptr, mesh.rules});
+    cells_ = std::make_unique<EmbeddedCutCells>(mesh.elements, *mesh.material, fem_cut_cell_settings(scene), materials_,
+                                                scene.dirichlet, scene.file.string(),
+                                                CutCellRebuild{nullptr, mesh.rules, nullptr, false});
     // The surface every method deforms, else (a volume mesh file) the material's own
     // boundary, open along the cut. Surface loads act on the boundary of the material, the
     // cut tetrahedra's (the blade's faces included, unloaded by tractions given on the
