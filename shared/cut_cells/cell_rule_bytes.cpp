@@ -2,7 +2,7 @@
 
 namespace altfem {
 
-void write_cell_rule(BinaryWriter& out, const CellRule& cell, bool with_reduction) {
+void write_cell_rule(BinaryWriter& out, const CellRule& cell) {
   out.put<std::int32_t>(static_cast<std::int32_t>(cell.kind));
   out.put<std::int64_t>(cell.initial_points);
   out.put<double>(cell.clipped_volume);
@@ -11,7 +11,6 @@ void write_cell_rule(BinaryWriter& out, const CellRule& cell, bool with_reductio
   out.put<std::int32_t>(cell.rule.strength);
   out.matrix(cell.rule.points);
   out.matrix(cell.rule.weights);
-  if (!with_reduction) return;
   out.put<std::int32_t>(cell.reduced.has_value());
   if (!cell.reduced) return;
   out.matrix(cell.reduced->products);
@@ -19,7 +18,7 @@ void write_cell_rule(BinaryWriter& out, const CellRule& cell, bool with_reductio
   out.put<double>(cell.reduced->weight_sum);
 }
 
-bool read_cell_rule(BinaryReader& in, CellRule& cell, bool with_reduction) {
+bool read_cell_rule(BinaryReader& in, CellRule& cell) {
   const auto kind = in.get<std::int32_t>();
   const auto initial = in.get<std::int64_t>();
   const auto volume = in.get<double>(), residual = in.get<double>();
@@ -37,7 +36,6 @@ bool read_cell_rule(BinaryReader& in, CellRule& cell, bool with_reduction) {
       cell.rule.weights.size() != cell.rule.points.rows())
     return false;
   cell.reduced.reset();
-  if (!with_reduction) return true;
   const auto reduced = in.get<std::int32_t>();
   if (!reduced) return false;
   if (*reduced == 0) return true;

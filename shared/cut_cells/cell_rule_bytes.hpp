@@ -7,12 +7,11 @@
 
 namespace altfem {
 
-/// Appends `cell` to `out`; with `with_reduction` its reduced rule too (the cache leaves
-/// it out: a rebuild reduces again).
-void write_cell_rule(BinaryWriter& out, const CellRule& cell, bool with_reduction);
+/// Appends `cell` to `out`, its reduced rule included.
+void write_cell_rule(BinaryWriter& out, const CellRule& cell);
 
 /// Reads what write_cell_rule wrote into `cell`; false where it does not read back whole
 /// and consistent.
-bool read_cell_rule(BinaryReader& in, CellRule& cell, bool with_reduction);
+bool read_cell_rule(BinaryReader& in, CellRule& cell);
 
 }  // namespace altfem

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "shared/cut_cells/tetrahedron_reductions.hpp"
 #include "shared/fem/lagrange_element_masses.hpp"
 #include "shared/geometry/clip_convex.hpp"
 #include "shared/mesh/volume_mesh.hpp"
@@ -41,7 +42,9 @@ struct CellRuleOptions {
   /// instead of 81). 0: `order` everywhere.
   int exact_degree = 0;
   /// Also reduce each cut cell's rule (CellRule::reduced): for mass rules, which serve
-  /// only the masses and are never simplified.
+  /// only the masses and are never simplified. An affine cut cell then gets its
+  /// reduction alone, summed over its tetrahedra (tetrahedron_reductions.hpp), and no
+  /// points: its masses are the reduction times det J.
   bool reduce = false;
 };
 
@@ -52,8 +55,9 @@ struct CellRule {
   double clipped_volume = 0.0;         ///< physical volume of cell ∩ geometry
   double residual = 0.0;               ///< simplification residual (SimplificationResult)
   bool simplification_failed = false;  ///< the original rule was kept
-  /// With CellRuleOptions::reduce, a cut cell's rule reduced on its reference element: a
-  /// remembered rule (CellRuleMemory) keeps it, so a rebuild reads the rule's points never.
+  /// With CellRuleOptions::reduce, a cut cell's rule reduced on its reference element
+  /// (an affine cell's `rule` is then empty): a remembered rule (CellRuleMemory) keeps it,
+  /// so a rebuild reads the rule's points never.
   std::optional<ReferenceProducts> reduced;
 };
 
@@ -64,21 +68,31 @@ struct CellRules {
   double max_residual = 0.0;
 };
 
-/// Rules of cells computed before, by a key of everything a cell's rule depends on (the
-/// options, its corners, the corners of the tetrahedra it clips, in order; a 64-bit FNV-1a
-/// hash): a rebuild after an event takes the rules of the cells the event left alone from
-/// here, bit for bit, instead of computing them again.
-using CellRuleMemory = std::unordered_map<std::uint64_t, CellRule>;
+/// Rules computed before: a rebuild after an event takes from here, bit for bit, what
+/// the event left alone instead of computing it again.
+struct CellRuleMemory {
+  /// Whole cells' rules by a key of everything a cell's rule depends on (the options, its
+  /// corners, the corners of the tetrahedra it clips, in order; a 64-bit FNV-1a hash).
+  std::unordered_map<std::uint64_t, CellRule> cells;
+  /// The shares of single tetrahedra in the mass reductions of the affine cells a rebuild
+  /// computed (tetrahedron_reductions.hpp): the cells an event cut, which a later event
+  /// may cut again, most of their tetrahedra unchanged. A set-up keeps none (they would
+  /// cost a reduction per tetrahedron and cell of the whole body).
+  TetrahedronReductionMemory tetrahedra;
+};
 
 /// What compute_cell_rules reuses and remembers (each optional).
 struct CellRuleReuse {
-  const CellRuleMemory* previous = nullptr;  ///< rules taken by key
-  CellRuleMemory* computed = nullptr;        ///< receives the rule of every cell with tetrahedra, by key
+  const CellRuleMemory* previous = nullptr;  ///< rules and shares taken by key
+  /// Receives the rule of every cell with tetrahedra, by key, and, with `previous` (a
+  /// rebuild), the shares of the tetrahedra of every affine cell whose mass reduction it computed.
+  CellRuleMemory* computed = nullptr;
   /// Per cell, 1 where the material is already known to fill it (find_cell_pieces clipped
   /// it): the standard rule, without clipping its tetrahedra again.
   const std::vector<char>* filled = nullptr;
-  int reused = 0;      ///< out: cells whose rule came from `previous`
-  int integrated = 0;  ///< out: cells with tetrahedra whose rule was computed
+  int reused = 0;             ///< out: cells whose rule came from `previous`
+  int integrated = 0;         ///< out: cells with tetrahedra whose rule was computed
+  int reused_tetrahedra = 0;  ///< out: tetrahedra whose share of a reduction came from `previous`
 };
 
 /// background: the FCM mesh (hexahedra need planar faces); embedded: a tetrahedral

@@ -115,6 +115,7 @@ nlohmann::json EmbeddedCutCells::facts() const {
           {"rule_generation_s", statistics_->seconds},
           {"reused_cell_rules", statistics_->reused_cells},
           {"integrated_cell_rules", statistics_->integrated_cells},
+          {"reused_mass_tetrahedra", statistics_->reused_mass_tetrahedra},
           {"piece_finding_s", topology_seconds_},
           {"split_nodes", pieces_ ? pieces_->split_nodes() : 0},
           {"schwarz_blocks", fcm_.schwarz_blocks},

@@ -80,6 +80,8 @@ CellQuadratureSource intersection_cell_quadrature(
         statistics->failed_simplifications = rules.failed_simplifications;
         statistics->reused_cells = reuse.reused;
         statistics->integrated_cells = reuse.integrated;
+      } else {
+        statistics->reused_mass_tetrahedra = reuse.reused_tetrahedra;
       }
     }
     std::vector<CellQuadrature> cells(rules.cells.size());

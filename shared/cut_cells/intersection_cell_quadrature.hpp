@@ -21,6 +21,8 @@ struct IntersectionStatistics {
   double seconds = 0.0;      ///< generation and simplification, stiffness and mass
   int reused_cells = 0;      ///< cells whose stiffness rule came from the previous rules
   int integrated_cells = 0;  ///< cells whose stiffness rule was computed (when rules are remembered)
+  /// Tetrahedra whose share of an affine cell's mass reduction came from the previous rules.
+  int reused_mass_tetrahedra = 0;
 };
 
 /// background: the FCM mesh (hexahedra with planar faces, or tetrahedra); embedded: a

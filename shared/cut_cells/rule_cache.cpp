@@ -9,12 +9,14 @@
 namespace altfem {
 namespace {
 
-constexpr char magic[] = "altfem-cell-rules-v2";  // v2: points and weights as BinaryWriter matrices
+// v2: points and weights as BinaryWriter matrices; v3: with reductions (an affine cell's
+// mass rule is its reduction alone).
+constexpr char magic[] = "altfem-cell-rules-v3";
 
 std::string serialise(const CellRules& rules) {
   BinaryWriter out(magic);
   out.put<std::int64_t>(static_cast<std::int64_t>(rules.cells.size()));
-  for (const CellRule& cell : rules.cells) write_cell_rule(out, cell, false);
+  for (const CellRule& cell : rules.cells) write_cell_rule(out, cell);
   return out.bytes();
 }
 
@@ -25,7 +27,7 @@ std::optional<CellRules> deserialise(const std::string& text, Eigen::Index cell_
   CellRules rules;
   rules.cells.resize(cell_count);
   for (CellRule& cell : rules.cells)
-    if (!read_cell_rule(reader, cell, false)) return std::nullopt;
+    if (!read_cell_rule(reader, cell)) return std::nullopt;
   if (!reader.at_end()) return std::nullopt;
   return rules;
 }
@@ -47,6 +49,7 @@ std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& emb
   hasher.scalar<double>(options.tolerance);
   hasher.scalar<std::int32_t>(static_cast<std::int32_t>(options.fan));
   hasher.scalar<std::int32_t>(options.exact_degree);
+  hasher.scalar<std::int32_t>(options.reduce);
   if (cell_tetrahedra)
     for (const std::vector<int>& tetrahedra : *cell_tetrahedra) {
       hasher.scalar<std::int64_t>(static_cast<std::int64_t>(tetrahedra.size()));

@@ -75,11 +75,11 @@ TEST(CellRuleBytes, ACutCellsReducedRuleReadsBackBitForBitAndATruncatedOneFails)
   const CellRules rules = compute_cell_rules(background, embedded, options);
   ASSERT_GT(rules.cut_cells, 0);
   BinaryWriter out("test");
-  for (const CellRule& cell : rules.cells) write_cell_rule(out, cell, true);
+  for (const CellRule& cell : rules.cells) write_cell_rule(out, cell);
   BinaryReader in(out.bytes(), "test");
   for (const CellRule& cell : rules.cells) {
     CellRule back;
-    ASSERT_TRUE(read_cell_rule(in, back, true));
+    ASSERT_TRUE(read_cell_rule(in, back));
     EXPECT_EQ(back.kind, cell.kind);
     EXPECT_EQ(back.clipped_volume, cell.clipped_volume);
     EXPECT_EQ(back.rule.points, cell.rule.points);
@@ -96,7 +96,7 @@ TEST(CellRuleBytes, ACutCellsReducedRuleReadsBackBitForBitAndATruncatedOneFails)
   bool whole = true;
   for (std::size_t c = 0; c < rules.cells.size() && whole; ++c) {
     CellRule back;
-    whole = read_cell_rule(truncated, back, true);
+    whole = read_cell_rule(truncated, back);
   }
   EXPECT_FALSE(whole);
 }
