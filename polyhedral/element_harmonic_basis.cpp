@@ -302,7 +302,6 @@ void ElementHarmonicBasis::restore_linear_precision(const Eigen::MatrixX3d& node
   // kernel weights amplify (1e-10 on a bunny's cut cell). The smallest change of the
   // coefficients that restores them, C ← C − (C M − E)(MᵀM)⁻¹Mᵀ with M = [Y | 1] (the
   // nodes' local coordinates, #nodes × 4) and E the polynomial rows' identity.
-  const Eigen::Index c = coefficients_.rows() - 4;
   Eigen::MatrixXd basis(nodes.rows(), 4);
   basis << nodes, Eigen::VectorXd::Ones(nodes.rows());
   Eigen::MatrixXd defect = coefficients_ * basis;  // (#centres + 4) × 4

@@ -3,7 +3,7 @@
 // like the FCM's rules", shared/cut_cells/rule_cache.hpp), so a second run of a scene skips the MFS
 // fits. What is stored is everything the method assembles and embeds the surface with:
 // each cell's nodes, its closed-form type or its MFS kernel centres, coefficients, fit
-// misfit and boundary integrals. The key is a 64-bit FNV-1a hash of the mesh (nodes,
+// misfit and boundary integrals. The key is a 64-bit hash (CacheKeyHasher) of the mesh (nodes,
 // face loops, face cells, cell faces, cell kinds), the basis kind, the MFS options and
 // the format version; the file is written atomically and read back whole or ignored.
 #include <cstdint>

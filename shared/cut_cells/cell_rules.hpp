@@ -72,7 +72,7 @@ struct CellRules {
 /// the event left alone instead of computing it again.
 struct CellRuleMemory {
   /// Whole cells' rules by a key of everything a cell's rule depends on (the options, its
-  /// corners, the corners of the tetrahedra it clips, in order; a 64-bit FNV-1a hash).
+  /// corners, the corners of the tetrahedra it clips, in order; a 64-bit hash, CacheKeyHasher).
   std::unordered_map<std::uint64_t, CellRule> cells;
   /// The shares of single tetrahedra in the mass reductions of the affine cells a rebuild
   /// computed (tetrahedron_reductions.hpp): the cells an event cut, which a later event

@@ -12,7 +12,7 @@
 
 namespace altfem {
 
-/// 64-bit FNV-1a hash of the inputs of compute_cell_rules (bit patterns of the doubles).
+/// A 64-bit hash (CacheKeyHasher) of the inputs of compute_cell_rules (bit patterns of the doubles).
 std::uint64_t cell_rules_key(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
                              const std::vector<std::vector<int>>* cell_tetrahedra = nullptr);
 

@@ -29,7 +29,7 @@ struct TetrahedronReduction {
 };
 
 /// Shares by a key of everything one reads: the rule's options, the cell's corners, the
-/// tetrahedron's corners (a 64-bit FNV-1a hash).
+/// tetrahedron's corners (a 64-bit hash, CacheKeyHasher).
 using TetrahedronReductionMemory = std::unordered_map<std::uint64_t, TetrahedronReduction>;
 
 /// A cell's tetrahedra are summed in blocks of this many, in order, and the blocks'

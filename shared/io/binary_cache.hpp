@@ -1,6 +1,6 @@
 #pragma once
 // The generic parts of an on-disk cache of computed data (the FCM's cell rules, the
-// harmonic method's bases): a 64-bit FNV-1a key over the bit patterns of the inputs, a
+// harmonic method's bases): a 64-bit key hashed from the bit patterns of the inputs, a
 // flat binary format opened by a versioned magic string, whole-file reads, and atomic
 // writes (write_file_atomically), so an interrupted run leaves the old file or none. A
 // file that does not read back completely (truncated, another version, another size) is
@@ -15,12 +15,24 @@
 
 namespace altfem {
 
-/// 64-bit FNV-1a over raw bytes; matrices hash their shape and then their entries.
+/// A 64-bit hash over raw bytes; matrices hash their shape and then their entries. Eight
+/// bytes at a time, each word FNV-1a's xor and multiply followed by a shift and xor (a
+/// remainder of fewer bytes byte by byte, as FNV-1a): a rebuild keys every embedded
+/// tetrahedron of a cut cell several times, and FNV-1a's byte at a time was about a tenth
+/// of a pencil's cut. Each step is a bijection of the running value, so inputs of one
+/// length that differ in a single word never share a key.
 class CacheKeyHasher {
 public:
   void bytes(const void* data, std::size_t size) {
     const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) value_ = (value_ ^ p[i]) * 1099511628211ull;
+    std::size_t i = 0;
+    for (; i + sizeof(std::uint64_t) <= size; i += sizeof(std::uint64_t)) {
+      std::uint64_t word;
+      std::memcpy(&word, p + i, sizeof word);
+      value_ = (value_ ^ word) * prime;
+      value_ ^= value_ >> 29;
+    }
+    for (; i < size; ++i) value_ = (value_ ^ p[i]) * prime;
   }
   template <typename T>
   void scalar(T x) {
@@ -35,6 +47,7 @@ public:
   std::uint64_t value() const { return value_; }
 
 private:
+  static constexpr std::uint64_t prime = 1099511628211ull;  // FNV-1a's 64-bit prime and offset basis
   std::uint64_t value_ = 1469598103934665603ull;
 };
 

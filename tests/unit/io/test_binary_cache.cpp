@@ -63,7 +63,18 @@ TEST(BinaryCache, KeyFollowsEveryInputAndFilesRoundTrip) {
   const std::uint64_t first = key();
   EXPECT_EQ(key(), first);
   matrix(3, 2) = std::nextafter(matrix(3, 2), 2.0);
-  EXPECT_NE(key(), first);
+  const std::uint64_t last_bit = key();
+  EXPECT_NE(last_bit, first);
+  // A word's highest bit (a double's sign) and a trailing byte change the key too.
+  matrix(0, 0) = -matrix(0, 0);
+  EXPECT_NE(key(), last_bit);
+  const auto with_byte = [&](unsigned char byte) {
+    CacheKeyHasher hasher;
+    hasher.matrix(matrix);
+    hasher.scalar(byte);
+    return hasher.value();
+  };
+  EXPECT_NE(with_byte(1), with_byte(2));
 
   const auto folder = test::fresh_output_directory() / "nested";
   const auto path = cache_file_path(folder, 0x1234abcdull, ".test");
