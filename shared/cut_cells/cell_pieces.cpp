@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <exception>
-#include <tuple>
 #include <type_traits>
 
 #include "shared/cut_cells/cell_rules.hpp"
@@ -12,6 +11,7 @@
 #include "shared/element/element_faces.hpp"
 #include "shared/io/binary_cache.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/face_neighbours.hpp"
 #include "shared/solve/rank_exchange.hpp"
 
 namespace altfem {
@@ -24,10 +24,6 @@ constexpr double plane_tolerance = 1e-9;
 
 /// The triangles of a tetrahedron (corner indices).
 constexpr std::array<std::array<int, 3>, 4> tetrahedron_triangles{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
-
-struct FaceNeighbour {
-  int cell = -1, face = -1;  ///< the cell across a face and that face's local index; −1: none
-};
 
 struct Plane {
   Eigen::Vector3d normal;  ///< unit
@@ -44,53 +40,14 @@ Plane face_plane(const Corners& corners, const std::array<int, 4>& face) {
   return {normal, normal.dot(a)};
 }
 
-/// Per cell and local face (element_faces order), the cell across it in a conforming
-/// mesh (faces matched by their corner nodes, so that the copies a cut made of the nodes
-/// on its blade separate the two sides).
-std::vector<std::vector<FaceNeighbour>> face_neighbours(const VolumeMesh& mesh) {
-  const ElementShape shape = element_shape(mesh.element_type);
-  const auto faces = element_faces(shape);
-  const int corners = face_corner_count(shape);
-  std::vector<std::vector<FaceNeighbour>> neighbours(static_cast<std::size_t>(mesh.cells.rows()),
-                                                     std::vector<FaceNeighbour>(faces.size()));
-  // Every cell's faces by their sorted corner nodes, sorted: the sides of one face are a
-  // run, the first of them the first in cell order. A sort, not a map: a pencil's tip cell
-  // holds thousands of tetrahedra, and the map was most of finding its pieces at each cut.
-  struct Side {
-    std::array<int, 4> key;
-    int cell, face;
-    bool operator<(const Side& other) const {
-      return std::tie(key, cell, face) < std::tie(other.key, other.cell, other.face);
-    }
-  };
-  std::vector<Side> sides(static_cast<std::size_t>(mesh.cells.rows()) * faces.size());
-  for (int cell = 0; cell < mesh.cells.rows(); ++cell)
-    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-      Side& side = sides[static_cast<std::size_t>(cell) * faces.size() + static_cast<std::size_t>(f)];
-      side = {{-1, -1, -1, -1}, cell, f};
-      for (int c = 0; c < corners; ++c) side.key[c] = mesh.cells(cell, faces[f][c]);
-      std::sort(side.key.begin(), side.key.begin() + corners);
-    }
-  std::sort(sides.begin(), sides.end());
-  for (std::size_t first = 0; first < sides.size();) {
-    std::size_t end = first + 1;
-    // Each later side of the face meets the first (a face of more than two sides: the last).
-    for (; end < sides.size() && sides[end].key == sides[first].key; ++end) {
-      neighbours[sides[end].cell][sides[end].face] = {sides[first].cell, sides[first].face};
-      neighbours[sides[first].cell][sides[first].face] = {sides[end].cell, sides[end].face};
-    }
-    first = end;
-  }
-  return neighbours;
-}
-
 /// The contacts of a conforming mesh's cells: their faces matched by corner nodes.
 std::vector<CellFaceContact> conforming_contacts(const VolumeMesh& mesh) {
-  const std::vector<std::vector<FaceNeighbour>> adjacency = face_neighbours(mesh);
+  const std::vector<FaceNeighbour> adjacency = face_neighbours(mesh);
+  const auto face_count = static_cast<int>(element_faces(element_shape(mesh.element_type)).size());
   std::vector<CellFaceContact> contacts;
-  for (int cell = 0; cell < static_cast<int>(adjacency.size()); ++cell)
-    for (int f = 0; f < static_cast<int>(adjacency[cell].size()); ++f) {
-      const FaceNeighbour across = adjacency[cell][f];
+  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
+    for (int f = 0; f < face_count; ++f) {
+      const FaceNeighbour across = adjacency[static_cast<std::size_t>(cell) * face_count + f];
       if (across.cell > cell) contacts.push_back({cell, f, across.cell, across.face});
     }
   return contacts;
@@ -308,10 +265,10 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
                             const std::vector<CellFaceContact>* contacts, const ClippedTetrahedronMemory* previous,
                             ClippedTetrahedronMemory* remember) {
   const TetrahedronBuckets buckets(embedded);
-  const std::vector<std::vector<FaceNeighbour>> tetrahedron_adjacency = face_neighbours(embedded);
-  std::vector<std::array<int, 4>> tetrahedron_neighbours(tetrahedron_adjacency.size());
-  for (std::size_t t = 0; t < tetrahedron_adjacency.size(); ++t)
-    for (int f = 0; f < 4; ++f) tetrahedron_neighbours[t][f] = tetrahedron_adjacency[t][f].cell;
+  const std::vector<FaceNeighbour> tetrahedron_adjacency = face_neighbours(embedded);
+  std::vector<std::array<int, 4>> tetrahedron_neighbours(static_cast<std::size_t>(embedded.cells.rows()));
+  for (std::size_t t = 0; t < tetrahedron_neighbours.size(); ++t)
+    for (int f = 0; f < 4; ++f) tetrahedron_neighbours[t][f] = tetrahedron_adjacency[4 * t + f].cell;
 
   const int cell_count = static_cast<int>(background.cells.rows());
   std::vector<CellFragments> cells(static_cast<std::size_t>(cell_count));
