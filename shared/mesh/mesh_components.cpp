@@ -8,6 +8,7 @@
 #include <unordered_map>
 
 #include "shared/mesh/disjoint_sets.hpp"
+#include "shared/mesh/face_neighbours.hpp"
 
 namespace altfem {
 
@@ -25,15 +26,10 @@ int count_roots(DisjointSets& sets, int count, const std::vector<char>& member) 
 int volume_mesh_components(const VolumeMesh& mesh) {
   const int cells = static_cast<int>(mesh.cells.rows());
   DisjointSets sets(cells);
-  std::map<std::array<int, 3>, int> first_cell_of_face;
-  constexpr std::array<std::array<int, 3>, 4> faces{{{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}}};
-  for (int cell = 0; cell < cells; ++cell)
-    for (const auto& face : faces) {
-      std::array<int, 3> key{mesh.cells(cell, face[0]), mesh.cells(cell, face[1]), mesh.cells(cell, face[2])};
-      std::sort(key.begin(), key.end());
-      const auto [entry, inserted] = first_cell_of_face.try_emplace(key, cell);
-      if (!inserted) sets.join(entry->second, cell);
-    }
+  const std::vector<FaceNeighbour> neighbours = face_neighbours(mesh);
+  const std::size_t face_count = neighbours.size() / std::max<std::size_t>(cells, 1);
+  for (std::size_t side = 0; side < neighbours.size(); ++side)
+    if (neighbours[side].cell >= 0) sets.join(static_cast<int>(side / face_count), neighbours[side].cell);
   return count_roots(sets, cells, {});
 }
 
