@@ -119,10 +119,12 @@ bool separated_by_a_face(const TetrahedronCorners& tetrahedron, const Eigen::Mat
 }
 
 /// The fragments of one cell and their pieces: components of face adjacency through
-/// contacts of positive area inside the cell.
+/// contacts of positive area inside the cell. `fragment_of` (scratch, one entry per
+/// embedded tetrahedron, −1) is −1 again on return.
 CellFragments cell_fragments(const VolumeMesh& background, int cell, const TetrahedronBuckets& buckets,
                              const std::vector<std::array<int, 4>>& tetrahedron_neighbours,
-                             std::vector<int>& candidates, const ClippedTetrahedronMemory* previous,
+                             std::vector<int>& candidates, std::vector<int>& fragment_of,
+                             const ClippedTetrahedronMemory* previous,
                              std::vector<std::pair<std::uint64_t, ClippedTetrahedron>>* clips) {
   const ElementType type = background.element_type;
   const ElementShape shape = element_shape(type);
@@ -176,12 +178,15 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
   }
 
   const int count = static_cast<int>(result.fragments.size());
+  for (int i = 0; i < count; ++i) fragment_of[result.fragments[i].tetrahedron] = i;
   DisjointSets components(count);
   for (int i = 0; i < count; ++i)
     for (int f = 0; f < 4; ++f) {
-      const int other = result.find(tetrahedron_neighbours[result.fragments[i].tetrahedron][f]);
+      const int neighbour = tetrahedron_neighbours[result.fragments[i].tetrahedron][f];
+      const int other = neighbour >= 0 ? fragment_of[neighbour] : -1;
       if (other >= 0 && result.fragments[i].tetrahedron_face_area[f] > 0) components.join(i, other);
     }
+  for (const Fragment& fragment : result.fragments) fragment_of[fragment.tetrahedron] = -1;
   // Pieces numbered in order of their first (smallest) tetrahedron.
   std::vector<int> piece_of_root(static_cast<std::size_t>(count), -1);
   int pieces = 0;
@@ -275,14 +280,14 @@ CellPieces find_cell_pieces(const VolumeMesh& background, const VolumeMesh& embe
   std::exception_ptr failure;
 #pragma omp parallel
   {
-    std::vector<int> candidates;
+    std::vector<int> candidates, fragment_of(static_cast<std::size_t>(embedded.cells.rows()), -1);
     std::vector<std::pair<std::uint64_t, ClippedTetrahedron>> clips;
 #pragma omp for schedule(dynamic, 4)
     for (int cell = 0; cell < cell_count; ++cell) {
       if (!ranks::computes_item(static_cast<std::size_t>(cell))) continue;  // another rank's (gathered below)
       try {
-        cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates, previous,
-                                     remember ? &clips : nullptr);
+        cells[cell] = cell_fragments(background, cell, buckets, tetrahedron_neighbours, candidates, fragment_of,
+                                     previous, remember ? &clips : nullptr);
       } catch (...) {
 #pragma omp critical(altfem_fcm_cell_pieces_failure)
         if (!failure) failure = std::current_exception();
