@@ -19,6 +19,15 @@ namespace altfem {
 
 namespace {
 
+// A node within this fraction of the mesh's diagonal of a blade step's plane is on it (a
+// new node as near a corner of its triangle is that corner). The planes of the triangles
+// around a blade's vertex, and of their edges, all pass through it and through the lines
+// of its edges, and cross a cell's edge near one of those lines within 1e-13 to 1e-10 of
+// one another as rounded (the finer the blade, the flatter its dihedral angles and the
+// farther apart): at the default snapping distance each crossing was a node of its own,
+// and harmonic's bases, fitted through nodes a rounding apart, gave a singular stiffness.
+constexpr double blade_snap_fraction = 1e-9;
+
 // Per triangle and edge k (from corner k to k + 1), whether the blade goes on across it
 // in the triangle's plane: the edge is another triangle's too, whose third corner lies in
 // this one's plane (an exact predicate). Then both sides of the edge separate, and
@@ -117,6 +126,7 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
 
 CutScope TrianglePlaneNodes::scope_for(const SurfaceBladeStep& step) {
   CutScope scope = step.scope;
+  scope.snap_fraction = blade_snap_fraction;
   if (step.scope.action == CutAction::split && step.triangle_plane) {
     on_plane_.clear();
     is_on_plane_.clear();
@@ -165,7 +175,8 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
     on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
     fold_step_counts(result, step, result.parent_cell, step.parent_cell);
     result.mesh = std::move(step.mesh);
-    snap_new_nodes_to_corners(result.mesh, nodes_before, blade_step.corners, 1e-9 * bounds.diagonal().norm());
+    snap_new_nodes_to_corners(result.mesh, nodes_before, blade_step.corners,
+                              blade_snap_fraction * bounds.diagonal().norm());
     weld_coincident_neighbours(result.mesh);
   }
   const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh, blade);

@@ -71,9 +71,10 @@ struct CutScope {
   /// triangle's plane, a rounding off it).
   const std::vector<int>* on_plane = nullptr;
   /// The snapping distance (above) as a fraction of the mesh's bounding-box diagonal. A
-  /// surface blade's split step that 1e-13 leaves with a face it cannot split (nodes of a
-  /// tiny face where several of its triangles meet, some snapped, some not) is made again
-  /// with 1e-15: a few ulps, so that no crossing node rounds onto an end of its edge.
+  /// surface blade's steps take 1e-9 (cut_by_surface.cpp says why); a split step that it
+  /// leaves with a face it cannot split (nodes of a tiny face where several of its
+  /// triangles meet, some snapped, some not) is made again with 1e-15: a few ulps, so that
+  /// no crossing node rounds onto an end of its edge.
   double snap_fraction = 1e-13;
 };
 

@@ -233,7 +233,9 @@ TEST(CutNonConvexCells, SeededPlanesThroughASlicedTorusGiveClosedPiecesEachOnOne
       if (piece_positive > piece / 2) positive += piece;
       nonconvex_crossed += split && cut.mesh.cell_kinds[cell] == PolyhedralCellKind::cut;
     }
-    if (whole_plane) EXPECT_NEAR(positive, expected_positive, 1e-12 * volume);
+    if (whole_plane) {
+      EXPECT_NEAR(positive, expected_positive, 1e-12 * volume);
+    }
   }
   EXPECT_GT(nonconvex_crossed, 50);
 }
