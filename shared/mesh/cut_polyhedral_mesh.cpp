@@ -62,11 +62,14 @@ void CutBuilder::classify_cells() {
   DisjointSets joined(cells);
   in_piece_ = cells_of_piece_at();
   for (int cell = 0; cell < cells; ++cell) {
+    // Through its faces' loops, a node once per face it is on: every step classifies
+    // every cell, and a set of its nodes each time was most of a surface blade's cut.
     bool positive = false, negative = false;
-    for (const int node : nodes_of(cell)) {
-      positive |= side_[node] > 0;
-      negative |= side_[node] < 0;
-    }
+    for (const int face : mesh_.cell_faces[cell])
+      for (const int node : mesh_.faces[face]) {
+        positive |= side_[node] > 0;
+        negative |= side_[node] < 0;
+      }
     reached[cell] = positive && negative && in_piece_[cell] && scope_.action != CutAction::separate;
     cell_sigma_[cell] = negative && !positive ? -1 : +1;
     if (reached[cell] && scope_.action == CutAction::cut) cap_covered_[cell] = covers_section(cell);
