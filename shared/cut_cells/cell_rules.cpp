@@ -76,7 +76,9 @@ void gather_cell_rules(CellRules& rules, std::vector<std::uint64_t>& keys, std::
 
 CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& embedded, const CellRuleOptions& options,
                              const std::vector<std::vector<int>>* cell_tetrahedra, CellRuleReuse* reuse) {
-  const TetrahedronBuckets buckets(embedded);
+  // Listed tetrahedra need no search for them (a rebuild lists them for every piece).
+  const std::optional<TetrahedronBuckets> buckets =
+      cell_tetrahedra ? std::nullopt : std::optional<TetrahedronBuckets>(std::in_place, embedded);
   const ElementType type = background.element_type;
   const int corner_count = element_corner_count(type);
   const QuadratureRule standard = reference_rule(
@@ -93,7 +95,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   // A rebuild remembers the shares of the tetrahedra of the reductions it computes, per
   // cell (moved into the memory in cell order after the parallel loops).
   const bool remember_tetrahedra = reuse && reuse->previous && reuse->computed;
-  std::vector<std::vector<std::pair<std::uint64_t, TetrahedronReduction>>> shares(remember_tetrahedra ? cell_count : 0);
+  std::vector<RememberedShares> shares(remember_tetrahedra ? cell_count : 0);
   const TetrahedronReductionMemory* previous_shares = reuse && reuse->previous ? &reuse->previous->tetrahedra : nullptr;
   // Affine cells whose reduction sums more than one block of tetrahedra: summed after the
   // cells, block by block by all threads.
@@ -104,9 +106,12 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     for (int i = 0; i < corner_count; ++i) corners.row(i) = background.nodes.row(background.cells(c, i));
     candidates.clear();
     if (cell_tetrahedra) {
-      for (const int t : (*cell_tetrahedra)[c]) candidates.push_back(buckets.corners(t));
+      for (const int t : (*cell_tetrahedra)[c]) {
+        TetrahedronCorners& tetrahedron = candidates.emplace_back();
+        for (int k = 0; k < 4; ++k) tetrahedron.row(k) = embedded.nodes.row(embedded.cells(t, k));
+      }
     } else {
-      buckets.candidates(
+      buckets->candidates(
           Eigen::AlignedBox3d(corners.colwise().minCoeff().transpose(), corners.colwise().maxCoeff().transpose()),
           candidates);
     }
@@ -229,8 +234,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
     const TetrahedronReductionRule rule = reduction_rule(geometry, corners);
     const std::size_t blocks = (candidates.size() + reduction_block - 1) / reduction_block;
     std::vector<TetrahedronReduction> block_sums(blocks);
-    std::vector<std::vector<std::pair<std::uint64_t, TetrahedronReduction>>> block_shares(remember_tetrahedra ? blocks
-                                                                                                              : 0);
+    std::vector<RememberedShares> block_shares(remember_tetrahedra ? blocks : 0);
 #pragma omp parallel for schedule(dynamic, 1)
     for (std::size_t b = 0; b < blocks; ++b) {
       try {

@@ -18,32 +18,30 @@ void add_reduction(TetrahedronReduction& sum, const TetrahedronReduction& addend
 
 TetrahedronReduction reduce_tetrahedra(const TetrahedronReductionRule& rule,
                                        std::span<const TetrahedronCorners> tetrahedra,
-                                       const TetrahedronReductionMemory* previous,
-                                       std::vector<std::pair<std::uint64_t, TetrahedronReduction>>* remembered) {
+                                       const TetrahedronReductionMemory* previous, RememberedShares* remembered) {
   TetrahedronReduction sum;
   std::vector<TetrahedronCorners> one(1);
   for (const TetrahedronCorners& tetrahedron : tetrahedra) {
     CacheKeyHasher hasher = rule.cell_key;
     hasher.matrix(tetrahedron);
     const std::uint64_t key = hasher.value();
-    const TetrahedronReduction* share = nullptr;
-    TetrahedronReduction computed;
+    std::shared_ptr<const TetrahedronReduction> share;
     if (previous)
-      if (const auto found = previous->find(key); found != previous->end()) share = &found->second;
-    if (!share) {
+      if (const auto found = previous->find(key); found != previous->end()) share = found->second;
+    if (share) {
+      add_reduction(sum, *share);
+      ++sum.taken;
+    } else {
       one[0] = tetrahedron;
       const IntersectionRule clip = intersection_rule(rule.cell, one, rule.order, rule.fan);
-      computed.clipped_volume = clip.clipped_volume;
-      computed.points = clip.rule.points.rows();
-      if (computed.points > 0) computed.products = reference_products(rule.cell.type(), clip.rule);
-      share = &computed;
+      auto computed = std::make_shared<TetrahedronReduction>();
+      computed->clipped_volume = clip.clipped_volume;
+      computed->points = clip.rule.points.rows();
+      if (computed->points > 0) computed->products = reference_products(rule.cell.type(), clip.rule);
+      add_reduction(sum, *computed);
+      share = std::move(computed);
     }
-    add_reduction(sum, *share);
-    if (share != &computed) ++sum.taken;
-    if (remembered) {
-      remembered->emplace_back(key, *share);
-      remembered->back().second.taken = 0;
-    }
+    if (remembered) remembered->emplace_back(key, std::move(share));
   }
   return sum;
 }

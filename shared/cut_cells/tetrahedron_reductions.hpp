@@ -9,6 +9,7 @@
 // integrating them again (the sharpened pencil's tip cell holds thousands of them).
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <unordered_map>
 #include <utility>
@@ -29,8 +30,11 @@ struct TetrahedronReduction {
 };
 
 /// Shares by a key of everything one reads: the rule's options, the cell's corners, the
-/// tetrahedron's corners (a 64-bit hash, CacheKeyHasher).
-using TetrahedronReductionMemory = std::unordered_map<std::uint64_t, TetrahedronReduction>;
+/// tetrahedron's corners (a 64-bit hash, CacheKeyHasher). Held by pointer: a rebuild hands
+/// the shares it takes on to the next one, about a reduction's 3.4 KB each (Hex20).
+using TetrahedronReductionMemory = std::unordered_map<std::uint64_t, std::shared_ptr<const TetrahedronReduction>>;
+/// (key, share) of each tetrahedron summed, in order.
+using RememberedShares = std::vector<std::pair<std::uint64_t, std::shared_ptr<const TetrahedronReduction>>>;
 
 /// A cell's tetrahedra are summed in blocks of this many, in order, and the blocks'
 /// sums in order: a fixed grouping, so that a cell of many tetrahedra is summed block by
@@ -49,8 +53,7 @@ struct TetrahedronReductionRule {
 /// it is there; with `remembered`, each tetrahedron's key and share are appended to it.
 TetrahedronReduction reduce_tetrahedra(const TetrahedronReductionRule& rule,
                                        std::span<const TetrahedronCorners> tetrahedra,
-                                       const TetrahedronReductionMemory* previous,
-                                       std::vector<std::pair<std::uint64_t, TetrahedronReduction>>* remembered);
+                                       const TetrahedronReductionMemory* previous, RememberedShares* remembered);
 
 /// sum += addend (an empty `products` is zero).
 void add_reduction(TetrahedronReduction& sum, const TetrahedronReduction& addend);
