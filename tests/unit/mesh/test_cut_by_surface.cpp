@@ -16,6 +16,7 @@
 #include <map>
 #include <random>
 
+#include "shared/mesh/convex_cell.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/cut_tetrahedral_mesh.hpp"
@@ -309,11 +310,7 @@ SurfaceBlade ball_blade() {
 double closest_nodes_of_a_cell(const PolyhedralMesh& mesh) {
   double closest = 1;
   for (int cell = 0; cell < mesh.cell_count(); ++cell) {
-    std::vector<int> nodes;
-    for (const int face : mesh.cell_faces[cell])
-      nodes.insert(nodes.end(), mesh.faces[face].begin(), mesh.faces[face].end());
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    const std::vector<int> nodes = cell_node_set(mesh, cell);
     double diameter = 0, nearest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < nodes.size(); ++i)
       for (std::size_t j = i + 1; j < nodes.size(); ++j) {

@@ -10,6 +10,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/clip_convex.hpp"
+#include "shared/mesh/convex_cell.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
 #include "tests/unit/mesh/every_cell_closed.hpp"
 #include "tests/unit/mesh/seeded_cut_planes.hpp"
@@ -100,11 +101,7 @@ double clipped_cube_volume(const CuttingPlane& plane) {
   const ClipPlane clip{plane.point, plane.point + plane.normal.cross(first), plane.point + first};
   double volume = 0;
   for (int cell = 0; cell < tetrahedra.cell_count(); ++cell) {
-    std::vector<int> corners;
-    for (const int face : tetrahedra.cell_faces[cell])
-      corners.insert(corners.end(), tetrahedra.faces[face].begin(), tetrahedra.faces[face].end());
-    std::sort(corners.begin(), corners.end());
-    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    const std::vector<int> corners = cell_node_set(tetrahedra, cell);
     TetrahedronCorners tetrahedron;
     for (int k = 0; k < 4; ++k) tetrahedron.row(k) = tetrahedra.nodes.row(corners[k]);
     for (const TetrahedronCorners& piece : clip_tetrahedron(tetrahedron, {clip}))
