@@ -92,8 +92,11 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
   std::vector<std::uint64_t> keys(reuse ? cell_count : 0, 0);
   std::vector<char> reused(reuse ? cell_count : 0, 0);
   std::vector<int> taken_tetrahedra(cell_count, 0);  // per cell, shares taken from the memory
-  // A rebuild remembers the shares of the tetrahedra of the reductions it computes, per
-  // cell (moved into the memory in cell order after the parallel loops).
+  // A rebuild remembers the shares of the tetrahedra of the large cells' reductions it
+  // computes, per cell (moved into the memory in cell order after the parallel loops): a
+  // cut cell of more tetrahedra than a block (the tip of a sharpened pencil, cut again at
+  // every cut) is what re-integrating costs, while the thousands of small cut cells a
+  // refinement makes would hold a reduction's worth of memory per tetrahedron for nothing.
   const bool remember_tetrahedra = reuse && reuse->previous && reuse->computed;
   std::vector<RememberedShares> shares(remember_tetrahedra ? cell_count : 0);
   const TetrahedronReductionMemory* previous_shares = reuse && reuse->previous ? &reuse->previous->tetrahedra : nullptr;
@@ -193,9 +196,7 @@ CellRules compute_cell_rules(const VolumeMesh& background, const VolumeMesh& emb
             large_cells.push_back(c);
             continue;
           }
-          reduced(c,
-                  reduce_tetrahedra(reduction_rule(geometry, corners), candidates, previous_shares,
-                                    remember_tetrahedra ? &shares[c] : nullptr),
+          reduced(c, reduce_tetrahedra(reduction_rule(geometry, corners), candidates, previous_shares, nullptr),
                   volume);
           continue;
         }

@@ -74,10 +74,11 @@ struct CellRuleMemory {
   /// Whole cells' rules by a key of everything a cell's rule depends on (the options, its
   /// corners, the corners of the tetrahedra it clips, in order; a 64-bit hash, CacheKeyHasher).
   std::unordered_map<std::uint64_t, CellRule> cells;
-  /// The shares of single tetrahedra in the mass reductions of the affine cells a rebuild
-  /// computed (tetrahedron_reductions.hpp): the cells an event cut, which a later event
-  /// may cut again, most of their tetrahedra unchanged. A set-up keeps none (they would
-  /// cost a reduction per tetrahedron and cell of the whole body).
+  /// The shares of single tetrahedra in the mass reductions of the affine cells of more
+  /// than a block of tetrahedra (reduction_block) a rebuild computed
+  /// (tetrahedron_reductions.hpp): a pencil's tip cell, which the next cut cuts again, most
+  /// of its tetrahedra unchanged. A set-up keeps none, nor a cell of fewer tetrahedra (a
+  /// refinement's thousands of cut cells would each hold a reduction per tetrahedron).
   TetrahedronReductionMemory tetrahedra;
 };
 
@@ -85,7 +86,8 @@ struct CellRuleMemory {
 struct CellRuleReuse {
   const CellRuleMemory* previous = nullptr;  ///< rules and shares taken by key
   /// Receives the rule of every cell with tetrahedra, by key, and, with `previous` (a
-  /// rebuild), the shares of the tetrahedra of every affine cell whose mass reduction it computed.
+  /// rebuild), the shares of the tetrahedra of every large affine cell whose mass
+  /// reduction it computed (CellRuleMemory::tetrahedra).
   CellRuleMemory* computed = nullptr;
   /// Per cell, 1 where the material is already known to fill it (find_cell_pieces clipped
   /// it): the standard rule, without clipping its tetrahedra again.
