@@ -4,8 +4,8 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
-#include <map>
 #include <string>
+#include <utility>
 
 #include "shared/assembly/face_assembler.hpp"
 #include "shared/assembly/ghost_penalty_kernel.hpp"
@@ -14,31 +14,28 @@
 #include "shared/common/error.hpp"
 #include "shared/element/element_faces.hpp"
 #include "shared/element/geometry_map.hpp"
+#include "shared/mesh/face_neighbours.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
 namespace altfem {
 
 namespace {
 
-using FaceKey = std::array<int, 4>;  // corner nodes, -1 padded, sorted
 struct CellFace {
   int cell, face;
 };
 
-// The interior faces of the mesh: both (cell, local face) pairs of each shared face.
+// The interior faces of the mesh: both (cell, local face) pairs of each shared face, in
+// the order of their second sides.
 std::vector<std::array<CellFace, 2>> interior_faces(const VolumeMesh& mesh) {
-  const ElementShape shape = element_shape(mesh.element_type);
-  const auto faces = element_faces(shape);
-  const int corners = face_corner_count(shape);
-  std::map<FaceKey, CellFace> first_seen;
+  const auto face_count = static_cast<int>(element_faces(element_shape(mesh.element_type)).size());
+  const std::vector<FaceNeighbour> neighbours = face_neighbours(mesh);
   std::vector<std::array<CellFace, 2>> pairs;
   for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
-    for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
-      FaceKey key{-1, -1, -1, -1};
-      for (int c = 0; c < corners; ++c) key[c] = mesh.cells(cell, faces[f][c]);
-      std::sort(key.begin(), key.end());  // a triangle's -1 pad sorts first
-      const auto [entry, added] = first_seen.try_emplace(key, CellFace{cell, f});
-      if (!added) pairs.push_back({entry->second, CellFace{cell, f}});
+    for (int f = 0; f < face_count; ++f) {
+      const FaceNeighbour across = neighbours[static_cast<std::size_t>(cell) * face_count + f];
+      if (across.cell >= 0 && std::pair(across.cell, across.face) < std::pair(cell, f))
+        pairs.push_back({CellFace{across.cell, across.face}, CellFace{cell, f}});
     }
   return pairs;
 }

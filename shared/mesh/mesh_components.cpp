@@ -7,6 +7,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "shared/element/element_faces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/face_neighbours.hpp"
 
@@ -27,7 +28,7 @@ int volume_mesh_components(const VolumeMesh& mesh) {
   const int cells = static_cast<int>(mesh.cells.rows());
   DisjointSets sets(cells);
   const std::vector<FaceNeighbour> neighbours = face_neighbours(mesh);
-  const std::size_t face_count = neighbours.size() / std::max<std::size_t>(cells, 1);
+  const std::size_t face_count = element_faces(element_shape(mesh.element_type)).size();
   for (std::size_t side = 0; side < neighbours.size(); ++side)
     if (neighbours[side].cell >= 0) sets.join(static_cast<int>(side / face_count), neighbours[side].cell);
   return count_roots(sets, cells, {});
