@@ -12,6 +12,7 @@
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/merge_slivers.hpp"
+#include "shared/mesh/polyhedral_mesh_window.hpp"
 #include "shared/mesh/simplify_cut_faces.hpp"
 #include "shared/mesh/surface_cut_debris.hpp"
 
@@ -110,16 +111,20 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
     if (const std::string problem = blade_polygon_problem(plane); !problem.empty())
       throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
     const std::array<Eigen::Vector3d, 3> triangle_corners{corners[0], corners[1], corners[2]};
-    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners});
+    const int index = static_cast<int>(triangle);
+    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners, index});
     for (int k = 0; k < 3; ++k) {
       if (within[triangle][k]) continue;
       const Eigen::Vector3d& from = corners[k];
       const Eigen::Vector3d& to = corners[(k + 1) % 3];
       Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
-      steps.push_back(
-          {CuttingPlane(from, (to - from).cross(plane.normal)), {CutAction::split, edge_box}, false, triangle_corners});
+      steps.push_back({CuttingPlane(from, (to - from).cross(plane.normal)),
+                       {CutAction::split, edge_box},
+                       false,
+                       triangle_corners,
+                       index});
     }
-    steps.push_back({plane, {CutAction::separate, box}, true, triangle_corners});
+    steps.push_back({plane, {CutAction::separate, box}, true, triangle_corners, index});
   }
   return steps;
 }
@@ -156,6 +161,44 @@ void TrianglePlaneNodes::after(const SurfaceBladeStep& step, const Eigen::Matrix
     if (is_on_plane_[node]) on_plane_.push_back(static_cast<int>(node));
 }
 
+namespace {
+
+// The steps of one triangle (`steps`) on the window of `result`'s mesh about them, put
+// back. `cell_boxes` per cell of that mesh; `bounds` the input mesh's bounding box, whose
+// diagonal every step's snapping is a fraction of.
+void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox3d>& cell_boxes,
+                            const SurfaceBladeStep* steps, std::size_t count, const Eigen::AlignedBox3d& bounds) {
+  Eigen::AlignedBox3d reach;
+  for (std::size_t k = 0; k < count; ++k)
+    // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
+    if (steps[k].scope.region->intersects(bounds)) reach.extend(*steps[k].scope.region);
+  if (reach.isEmpty()) return;
+  const PolyhedralMeshWindow window = polyhedral_mesh_window(result.mesh, cell_boxes, reach);
+  if (window.cells.empty()) return;
+  PolyhedralMesh cut = window.mesh;
+  std::vector<int> parents(window.cells.size());
+  for (std::size_t cell = 0; cell < parents.size(); ++cell) parents[cell] = static_cast<int>(cell);
+  const double diagonal = bounds.diagonal().norm();
+  TrianglePlaneNodes on_plane;
+  for (std::size_t k = 0; k < count; ++k) {
+    const SurfaceBladeStep& blade_step = steps[k];
+    if (!blade_step.scope.region->intersects(bounds)) continue;
+    const Eigen::Index nodes_before = cut.nodes.rows();
+    CutScope scope = on_plane.scope_for(blade_step);
+    scope.snap_length = diagonal;
+    PolyhedralCut step = cut_snapping_less_if_need_be(
+        [&](const CutScope& tried) { return cut_polyhedral_mesh(cut, blade_step.plane, false, tried); }, scope);
+    on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
+    fold_step_counts(result, step, parents, step.parent_cell);
+    cut = std::move(step.mesh);
+    snap_new_nodes_to_corners(cut, nodes_before, blade_step.corners, blade_snap_fraction * diagonal);
+    weld_coincident_neighbours(cut);
+  }
+  splice_polyhedral_mesh_window(result.mesh, cell_boxes, result.parent_cell, window, std::move(cut), parents);
+}
+
+}  // namespace
+
 PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
                                              bool compute_geometry) {
   PolyhedralCut result;
@@ -164,20 +207,11 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
   for (int cell = 0; cell < mesh.cell_count(); ++cell) result.parent_cell[cell] = cell;
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
-  TrianglePlaneNodes on_plane;
-  for (const SurfaceBladeStep& blade_step : surface_blade_steps(blade)) {
-    // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
-    if (!blade_step.scope.region->intersects(bounds)) continue;
-    const Eigen::Index nodes_before = result.mesh.nodes.rows();
-    const CutScope scope = on_plane.scope_for(blade_step);
-    PolyhedralCut step = cut_snapping_less_if_need_be(
-        [&](const CutScope& tried) { return cut_polyhedral_mesh(result.mesh, blade_step.plane, false, tried); }, scope);
-    on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
-    fold_step_counts(result, step, result.parent_cell, step.parent_cell);
-    result.mesh = std::move(step.mesh);
-    snap_new_nodes_to_corners(result.mesh, nodes_before, blade_step.corners,
-                              blade_snap_fraction * bounds.diagonal().norm());
-    weld_coincident_neighbours(result.mesh);
+  std::vector<Eigen::AlignedBox3d> cell_boxes = polyhedral_cell_boxes(result.mesh);
+  const std::vector<SurfaceBladeStep> steps = surface_blade_steps(blade);
+  for (std::size_t first = 0, last = 0; first < steps.size(); first = last) {
+    while (last < steps.size() && steps[last].triangle == steps[first].triangle) ++last;
+    cut_window_by_triangle(result, cell_boxes, &steps[first], last - first, bounds);
   }
   const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh, blade);
   result.separated_faces += rounding.faces;

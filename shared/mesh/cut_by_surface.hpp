@@ -37,6 +37,7 @@ struct SurfaceBladeStep {
   CutScope scope;
   bool triangle_plane = false;             ///< the triangle's own plane (its split or separation), not an edge's
   std::array<Eigen::Vector3d, 3> corners;  ///< the triangle's
+  int triangle = 0;                        ///< the blade's triangle whose step this is
 };
 
 /// The planar steps `blade` is cut by, in order: per triangle up to five (its plane's
@@ -95,7 +96,8 @@ void fold_step_counts(Cut& cut, Cut& step, std::vector<int>& parents, std::vecto
   cut.snapped_nodes += step.snapped_nodes;
 }
 
-/// `mesh` cut by every step of `blade`. The result's parent cells are `mesh`'s; its node
+/// `mesh` cut by every step of `blade`, triangle by triangle on the window of the mesh
+/// about each (polyhedral_mesh_window.hpp). The result's parent cells are `mesh`'s; its node
 /// sources are empty (a node made by a later step lies on an earlier step's face, not on
 /// an edge of `mesh`: a field is carried to it by evaluating the field before the cut).
 /// The counts add up the steps' (crossed_cells: cells of `mesh` now in several pieces).

@@ -46,7 +46,9 @@ public:
     // (Kaufmann et al. 2009 §9.4 merge negligible pieces; these would have faces of no
     // area once their crossing nodes are rounded). Nodes do not move: the volume stays.
     const double snap_distance =
-        scope.snap_fraction * (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm();
+        scope.snap_fraction * (scope.snap_length > 0
+                                   ? scope.snap_length
+                                   : (mesh.nodes.colwise().maxCoeff() - mesh.nodes.colwise().minCoeff()).norm());
     const Eigen::Vector3d unit_normal = blade_.normal.normalized();
     side_.resize(nodes_.size());
     for (std::size_t n = 0; n < nodes_.size(); ++n) {

@@ -76,6 +76,10 @@ struct CutScope {
   /// triangles meet, some snapped, some not) is made again with 1e-15: a few ulps, so that
   /// no crossing node rounds onto an end of its edge.
   double snap_fraction = 1e-13;
+  /// The length `snap_fraction` is a fraction of; 0: the mesh's bounding-box diagonal. A
+  /// surface blade cuts a window of the mesh at a time (polyhedral_mesh_window.hpp) and
+  /// snaps as the whole mesh would.
+  double snap_length = 0;
 };
 
 /// Cuts `mesh` by `plane`. A crossed convex cell becomes two convex pieces (kind split);

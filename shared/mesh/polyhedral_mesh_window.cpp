@@ -1,0 +1,197 @@
+#include "shared/mesh/polyhedral_mesh_window.hpp"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <stdexcept>
+
+namespace altfem {
+
+std::vector<Eigen::AlignedBox3d> polyhedral_cell_boxes(const PolyhedralMesh& mesh) {
+  std::vector<Eigen::AlignedBox3d> boxes(static_cast<std::size_t>(mesh.cell_count()));
+  for (int cell = 0; cell < mesh.cell_count(); ++cell)
+    for (const int face : mesh.cell_faces[cell])
+      for (const int node : mesh.faces[face]) boxes[cell].extend(mesh.nodes.row(node).transpose());
+  return boxes;
+}
+
+PolyhedralMeshWindow polyhedral_mesh_window(const PolyhedralMesh& mesh,
+                                            const std::vector<Eigen::AlignedBox3d>& cell_boxes,
+                                            const Eigen::AlignedBox3d& box) {
+  PolyhedralMeshWindow window;
+  const int cells = mesh.cell_count();
+  // A cell sharing a node with one the box meets has a box that touches theirs (boxes
+  // are closed).
+  Eigen::AlignedBox3d reach;
+  for (int cell = 0; cell < cells; ++cell)
+    if (cell_boxes[cell].intersects(box)) reach.extend(cell_boxes[cell]);
+  if (reach.isEmpty()) return window;
+  std::vector<int> window_cell(static_cast<std::size_t>(cells), -1);
+  for (int cell = 0; cell < cells; ++cell)
+    if (cell_boxes[cell].intersects(reach)) {
+      window_cell[cell] = static_cast<int>(window.cells.size());
+      window.cells.push_back(cell);
+    }
+  std::vector<int> window_node(static_cast<std::size_t>(mesh.nodes.rows()), -1);
+  for (const int cell : window.cells)
+    for (const int face : mesh.cell_faces[cell])
+      for (const int node : mesh.faces[face]) window_node[node] = 0;
+  for (std::size_t node = 0; node < window_node.size(); ++node)
+    if (window_node[node] == 0) {
+      window_node[node] = static_cast<int>(window.nodes.size());
+      window.nodes.push_back(static_cast<int>(node));
+    }
+  PolyhedralMesh& local = window.mesh;
+  local.nodes.resize(static_cast<Eigen::Index>(window.nodes.size()), 3);
+  for (std::size_t node = 0; node < window.nodes.size(); ++node)
+    local.nodes.row(static_cast<Eigen::Index>(node)) = mesh.nodes.row(window.nodes[node]);
+  local.cell_faces.resize(window.cells.size());
+  std::vector<int> window_face(static_cast<std::size_t>(mesh.face_count()), -1);
+  std::vector<std::array<int, 2>> face_cells;
+  for (std::size_t inside = 0; inside < window.cells.size(); ++inside) {
+    const int cell = window.cells[inside];
+    local.cell_kinds.push_back(mesh.cell_kinds[cell]);
+    for (const int face : mesh.cell_faces[cell]) {
+      if (window_face[face] < 0) {
+        const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+        const int window_first = window_cell[first], window_second = second >= 0 ? window_cell[second] : -1;
+        std::vector<int> loop;
+        for (const int node : mesh.faces[face]) loop.push_back(window_node[node]);
+        if (window_first < 0) std::reverse(loop.begin(), loop.end());  // oriented for the second
+        window_face[face] = static_cast<int>(local.faces.size());
+        if (window_first < 0 || (second >= 0 && window_second < 0)) {
+          window.shell_faces.push_back(face);
+          window.shell_window_faces.push_back(window_face[face]);
+        }
+        local.faces.push_back(std::move(loop));
+        face_cells.push_back(window_first >= 0 ? std::array<int, 2>{window_first, window_second}
+                                               : std::array<int, 2>{window_second, -1});
+      }
+      local.cell_faces[inside].push_back(window_face[face]);
+    }
+  }
+  local.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
+  for (std::size_t face = 0; face < face_cells.size(); ++face)
+    local.face_cells.row(static_cast<Eigen::Index>(face)) << face_cells[face][0], face_cells[face][1];
+  return window;
+}
+
+void splice_polyhedral_mesh_window(PolyhedralMesh& mesh, std::vector<Eigen::AlignedBox3d>& cell_boxes,
+                                   std::vector<int>& parent_cell, const PolyhedralMeshWindow& window,
+                                   PolyhedralMesh&& cut, const std::vector<int>& cut_parent) {
+  const int cells = mesh.cell_count(), faces = mesh.face_count();
+  const auto window_nodes = static_cast<Eigen::Index>(window.nodes.size());
+  const Eigen::Index nodes = mesh.nodes.rows();
+  // The cut's nodes: the window's, then its new ones appended to the mesh's.
+  std::vector<int> mesh_node(static_cast<std::size_t>(cut.nodes.rows()));
+  for (Eigen::Index node = 0; node < cut.nodes.rows(); ++node)
+    mesh_node[node] = node < window_nodes ? window.nodes[node] : static_cast<int>(nodes + node - window_nodes);
+  mesh.nodes.conservativeResize(nodes + cut.nodes.rows() - window_nodes, 3);
+  mesh.nodes.bottomRows(cut.nodes.rows() - window_nodes) = cut.nodes.bottomRows(cut.nodes.rows() - window_nodes);
+
+  // Cells: each window cell's pieces where it was.
+  std::vector<int> window_of(static_cast<std::size_t>(cells), -1);
+  for (std::size_t inside = 0; inside < window.cells.size(); ++inside)
+    window_of[window.cells[inside]] = static_cast<int>(inside);
+  std::vector<std::vector<int>> pieces_of(window.cells.size());
+  for (std::size_t piece = 0; piece < cut_parent.size(); ++piece)
+    pieces_of[cut_parent[piece]].push_back(static_cast<int>(piece));
+  std::vector<int> new_cell(static_cast<std::size_t>(cells), -1), piece_cell(cut_parent.size());
+  int next_cell = 0;
+  for (int cell = 0; cell < cells; ++cell)
+    if (window_of[cell] < 0) {
+      new_cell[cell] = next_cell++;
+    } else {
+      for (const int piece : pieces_of[window_of[cell]]) piece_cell[piece] = next_cell++;
+      if (pieces_of[window_of[cell]].size() == 1) new_cell[cell] = piece_cell[pieces_of[window_of[cell]][0]];
+    }
+
+  // Faces: those outside the window and its shell as they were, then the cut's others.
+  std::vector<bool> is_shell(static_cast<std::size_t>(faces), false);
+  for (const int face : window.shell_faces) is_shell[face] = true;
+  std::vector<int> new_face(static_cast<std::size_t>(faces), -1);
+  int next_face = 0;
+  for (int face = 0; face < faces; ++face) {
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    if (is_shell[face] || (window_of[first] < 0 && (second < 0 || window_of[second] < 0))) new_face[face] = next_face++;
+  }
+  std::map<std::vector<int>, int> shell_of;  // window loop → shell face
+  for (std::size_t k = 0; k < window.shell_faces.size(); ++k)
+    shell_of.emplace(window.mesh.faces[window.shell_window_faces[k]], window.shell_faces[k]);
+  std::vector<int> cut_face(cut.faces.size());
+  std::size_t shells_found = 0;
+  for (std::size_t face = 0; face < cut.faces.size(); ++face) {
+    if (cut.face_cells(static_cast<Eigen::Index>(face), 1) < 0) {
+      const auto shell = shell_of.find(cut.faces[face]);
+      if (shell != shell_of.end()) {
+        cut_face[face] = new_face[shell->second];
+        ++shells_found;
+        continue;
+      }
+    }
+    cut_face[face] = next_face++;
+  }
+  if (shells_found != window.shell_faces.size())
+    throw std::logic_error("cut window: a cut changed a face between the window and the rest of the mesh");
+
+  std::vector<std::vector<int>> new_faces(static_cast<std::size_t>(next_face));
+  Eigen::MatrixXi new_face_cells(next_face, 2);
+  for (int face = 0; face < faces; ++face) {
+    if (new_face[face] < 0) continue;
+    for (const int side : {0, 1}) {
+      const int cell = mesh.face_cells(face, side);
+      if (cell >= 0 && new_cell[cell] < 0)
+        throw std::logic_error("cut window: a cut split a cell next to the rest of the mesh");
+      new_face_cells(new_face[face], side) = cell >= 0 ? new_cell[cell] : -1;
+    }
+    new_faces[new_face[face]] = std::move(mesh.faces[face]);
+  }
+  for (std::size_t face = 0; face < cut.faces.size(); ++face) {
+    const int index = cut_face[face];
+    if (!new_faces[index].empty()) continue;  // a shell face, kept as it was
+    for (int& node : cut.faces[face]) node = mesh_node[node];
+    new_faces[index] = std::move(cut.faces[face]);
+    for (const int side : {0, 1}) {
+      const int piece = cut.face_cells(static_cast<Eigen::Index>(face), side);
+      new_face_cells(index, side) = piece >= 0 ? piece_cell[piece] : -1;
+    }
+  }
+
+  std::vector<std::vector<int>> cell_faces(static_cast<std::size_t>(next_cell));
+  std::vector<PolyhedralCellKind> kinds(static_cast<std::size_t>(next_cell));
+  std::vector<int> parents(static_cast<std::size_t>(next_cell));
+  std::vector<Eigen::AlignedBox3d> boxes(static_cast<std::size_t>(next_cell));
+  for (int cell = 0; cell < cells; ++cell) {
+    if (window_of[cell] >= 0) continue;
+    const int index = new_cell[cell];
+    cell_faces[index] = std::move(mesh.cell_faces[cell]);
+    for (int& face : cell_faces[index]) face = new_face[face];
+    kinds[index] = mesh.cell_kinds[cell];
+    parents[index] = parent_cell[cell];
+    boxes[index] = cell_boxes[cell];
+  }
+  for (std::size_t piece = 0; piece < cut_parent.size(); ++piece) {
+    const int index = piece_cell[piece];
+    cell_faces[index] = std::move(cut.cell_faces[piece]);
+    for (int& face : cell_faces[index]) {
+      face = cut_face[face];
+      for (const int node : new_faces[face]) boxes[index].extend(mesh.nodes.row(node).transpose());
+    }
+    kinds[index] = cut.cell_kinds[piece];
+    parents[index] = parent_cell[window.cells[cut_parent[piece]]];
+  }
+  mesh.faces = std::move(new_faces);
+  mesh.face_cells = std::move(new_face_cells);
+  mesh.cell_faces = std::move(cell_faces);
+  mesh.cell_kinds = std::move(kinds);
+  parent_cell = std::move(parents);
+  cell_boxes = std::move(boxes);
+  mesh.cell_volumes.resize(0);
+  mesh.cell_centroids.resize(0, 3);
+  mesh.cell_diameters.resize(0);
+  mesh.face_areas.resize(0);
+  mesh.face_normals.resize(0, 3);
+  mesh.face_centroids.resize(0, 3);
+}
+
+}  // namespace altfem
