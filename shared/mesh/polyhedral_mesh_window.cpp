@@ -20,19 +20,29 @@ PolyhedralMeshWindow polyhedral_mesh_window(const PolyhedralMesh& mesh,
                                             const Eigen::AlignedBox3d& box) {
   PolyhedralMeshWindow window;
   const int cells = mesh.cell_count();
-  // A cell sharing a node with one the box meets has a box that touches theirs (boxes
-  // are closed).
+  // The cells the box meets, their nodes marked; then every cell holding one of those,
+  // whose box touches theirs (boxes are closed).
+  std::vector<int> window_node(static_cast<std::size_t>(mesh.nodes.rows()), -1);
   Eigen::AlignedBox3d reach;
   for (int cell = 0; cell < cells; ++cell)
-    if (cell_boxes[cell].intersects(box)) reach.extend(cell_boxes[cell]);
+    if (cell_boxes[cell].intersects(box)) {
+      reach.extend(cell_boxes[cell]);
+      for (const int face : mesh.cell_faces[cell])
+        for (const int node : mesh.faces[face]) window_node[node] = 0;
+    }
   if (reach.isEmpty()) return window;
+  const auto holds_a_marked_node = [&](int cell) {
+    for (const int face : mesh.cell_faces[cell])
+      for (const int node : mesh.faces[face])
+        if (window_node[node] == 0) return true;
+    return false;
+  };
   std::vector<int> window_cell(static_cast<std::size_t>(cells), -1);
   for (int cell = 0; cell < cells; ++cell)
-    if (cell_boxes[cell].intersects(reach)) {
+    if (cell_boxes[cell].intersects(reach) && holds_a_marked_node(cell)) {
       window_cell[cell] = static_cast<int>(window.cells.size());
       window.cells.push_back(cell);
     }
-  std::vector<int> window_node(static_cast<std::size_t>(mesh.nodes.rows()), -1);
   for (const int cell : window.cells)
     for (const int face : mesh.cell_faces[cell])
       for (const int node : mesh.faces[face]) window_node[node] = 0;

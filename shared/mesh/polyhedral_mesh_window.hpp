@@ -6,9 +6,9 @@
 // mesh that grows with n (the 320-triangle ball cut out of a 4³ grid: 50,000 pieces by
 // its last triangles, two minutes). Its steps split only the cells whose bounding box
 // meets the triangle's, and put crossing nodes on the faces of the cells that share those
-// cells' edges; the window holds both — every cell whose box meets the boxes of the cells
-// the triangle's box meets, a superset of the cells sharing a node with them — so its
-// steps on the window make the same pieces, nodes and faces as on the whole mesh.
+// cells' edges; the window holds both — the cells the triangle's box meets and every cell
+// sharing a node with one of them — so its steps on the window make the same pieces, nodes
+// and faces as on the whole mesh.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <vector>
