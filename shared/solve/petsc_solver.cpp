@@ -179,7 +179,6 @@ protected:
       check(finest_smoother_.install(preconditioner, matrix, columns_in_petsc_order(rows), !share_row_owners_.empty()),
             "the finest level's smoother");
     }
-    if (!reported_unused_options_) report_unused_options();
   }
 
   long solve_system(const Eigen::VectorXd& rhs, Eigen::VectorXd& solution) override {
@@ -188,6 +187,7 @@ protected:
     for (PetscInt row = first_row_; row < last_row_; ++row) values[row - first_row_] = rhs[method_index(row)];
     check(VecRestoreArray(rhs_, &values), "VecRestoreArray");
     check(KSPSolve(ksp_, rhs_, solution_), "KSPSolve");
+    if (!reported_unused_options_) report_unused_options();
     KSPConvergedReason reason;
     PetscInt iterations;
     check(KSPGetConvergedReason(ksp_, &reason), "KSPGetConvergedReason");
@@ -370,7 +370,8 @@ private:
   }
 
   // PETSc ignores an option nobody asked for (a misspelling, or one of a type not
-  // chosen); the first set-up has asked for all of them, so say which it did not use.
+  // chosen); the first set-up and solve have asked for all of them (a solve reads its
+  // monitors and -ksp_converged_reason), so say which they did not use.
   void report_unused_options() {
     reported_unused_options_ = true;
     const std::string unused = petsc::unused_options(prefix_);

@@ -123,7 +123,8 @@ TEST(Run, PetscOutOfIterationsExitsThreeWithPetscsReason) {
 
 // The warning about options PETSc did not use names the scene's own, not the gentler
 // coarsening altfem sets for the first-order level's GAMG where one set-up serves several
-// solves (here two load steps), which a coarse level of another type leaves unread.
+// solves (here two load steps), which a coarse level of another type leaves unread, nor
+// one that only a solve reads (-ksp_converged_reason).
 TEST(Run, PetscsUnusedOptionsWarningNamesOnlyTheScenesOptions) {
   SKIP_WITHOUT_PETSC();
   const auto out = fresh_directory("petsc-unused-options") / "run";
@@ -141,7 +142,8 @@ TEST(Run, PetscsUnusedOptionsWarningNamesOnlyTheScenesOptions) {
        "--set",
        "time/load_steps=2",
        "--set",
-       "solver/petsc_options=-ksp_type cg -pc_type gamg -mg_coarse_pc_type cholesky -pc_gamg_no_such_option 1",
+       "solver/petsc_options=-ksp_type cg -pc_type gamg -mg_coarse_pc_type cholesky -pc_gamg_no_such_option 1 "
+       "-ksp_converged_reason",
        "--set",
        "output/volume=false",
        "--set",
@@ -153,6 +155,7 @@ TEST(Run, PetscsUnusedOptionsWarningNamesOnlyTheScenesOptions) {
   ASSERT_EQ(lines.size(), 1u) << result.err;
   EXPECT_NE(lines[0].find("did not use -pc_gamg_no_such_option"), std::string::npos) << lines[0];
   EXPECT_EQ(lines[0].find("aggressive_coarsening"), std::string::npos) << lines[0];
+  EXPECT_EQ(lines[0].find("converged_reason"), std::string::npos) << lines[0];
 }
 
 TEST(Check, JsonOutputIsTheResolvedSceneAndGeometryFacts) {
