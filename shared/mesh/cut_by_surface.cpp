@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -166,8 +167,11 @@ namespace {
 // The steps of one triangle (`steps`) on the window of `result`'s mesh about them, put
 // back. `cell_boxes` per cell of that mesh; `bounds` the input mesh's bounding box, whose
 // diagonal every step's snapping is a fraction of.
+// `origin`: per node of `result`'s mesh, the input node it is or is a copy of (−1: made by
+// a step); extended by the new nodes.
 void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox3d>& cell_boxes,
-                            const SurfaceBladeStep* steps, std::size_t count, const Eigen::AlignedBox3d& bounds) {
+                            std::vector<int>& origin, const SurfaceBladeStep* steps, std::size_t count,
+                            const Eigen::AlignedBox3d& bounds) {
   Eigen::AlignedBox3d reach;
   for (std::size_t k = 0; k < count; ++k)
     // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
@@ -179,6 +183,8 @@ void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox
   std::vector<int> parents(window.cells.size());
   for (std::size_t cell = 0; cell < parents.size(); ++cell) parents[cell] = static_cast<int>(cell);
   const double diagonal = bounds.diagonal().norm();
+  std::vector<int> window_origin(window.nodes.size());
+  for (std::size_t node = 0; node < window.nodes.size(); ++node) window_origin[node] = origin[window.nodes[node]];
   TrianglePlaneNodes on_plane;
   for (std::size_t k = 0; k < count; ++k) {
     const SurfaceBladeStep& blade_step = steps[k];
@@ -189,18 +195,23 @@ void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox
     PolyhedralCut step = cut_snapping_less_if_need_be(
         [&](const CutScope& tried) { return cut_polyhedral_mesh(cut, blade_step.plane, false, tried); }, scope);
     on_plane.after(blade_step, step.mesh.nodes, step.node_sources, nodes_before);
+    for (Eigen::Index node = nodes_before; node < step.mesh.nodes.rows(); ++node) {
+      const NodeSource& source = step.node_sources[node];
+      window_origin.push_back(source.weight == 0 ? window_origin[source.first] : -1);  // a copy, or a crossing
+    }
     fold_step_counts(result, step, parents, step.parent_cell);
     cut = std::move(step.mesh);
     snap_new_nodes_to_corners(cut, nodes_before, blade_step.corners, blade_snap_fraction * diagonal);
     weld_coincident_neighbours(cut);
   }
+  origin.insert(origin.end(), window_origin.begin() + static_cast<std::ptrdiff_t>(window.nodes.size()),
+                window_origin.end());
   splice_polyhedral_mesh_window(result.mesh, cell_boxes, result.parent_cell, window, std::move(cut), parents);
 }
 
 }  // namespace
 
-PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
-                                             bool compute_geometry) {
+PolyhedralCut cut_by_surface_steps(const PolyhedralMesh& mesh, const SurfaceBlade& blade, std::vector<int>* origin) {
   PolyhedralCut result;
   result.mesh = mesh;
   result.parent_cell.resize(static_cast<std::size_t>(mesh.cell_count()));
@@ -208,11 +219,22 @@ PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const S
   Eigen::AlignedBox3d bounds;
   for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
   std::vector<Eigen::AlignedBox3d> cell_boxes = polyhedral_cell_boxes(result.mesh);
+  std::vector<int> origins(static_cast<std::size_t>(mesh.nodes.rows()));
+  std::iota(origins.begin(), origins.end(), 0);
   const std::vector<SurfaceBladeStep> steps = surface_blade_steps(blade);
   for (std::size_t first = 0, last = 0; first < steps.size(); first = last) {
     while (last < steps.size() && steps[last].triangle == steps[first].triangle) ++last;
-    cut_window_by_triangle(result, cell_boxes, &steps[first], last - first, bounds);
+    cut_window_by_triangle(result, cell_boxes, origins, &steps[first], last - first, bounds);
   }
+  if (origin) *origin = std::move(origins);
+  return result;
+}
+
+PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
+                                             bool compute_geometry) {
+  PolyhedralCut result = cut_by_surface_steps(mesh, blade);
+  Eigen::AlignedBox3d bounds;
+  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
   const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh, blade);
   result.separated_faces += rounding.faces;
   result.duplicated_nodes += rounding.duplicated_nodes;

@@ -97,9 +97,18 @@ void fold_step_counts(Cut& cut, Cut& step, std::vector<int>& parents, std::vecto
 }
 
 /// `mesh` cut by every step of `blade`, triangle by triangle on the window of the mesh
-/// about each (polyhedral_mesh_window.hpp). The result's parent cells are `mesh`'s; its node
-/// sources are empty (a node made by a later step lies on an earlier step's face, not on
-/// an edge of `mesh`: a field is carried to it by evaluating the field before the cut).
+/// about each (polyhedral_mesh_window.hpp), and nothing more: the pieces of a cell stay
+/// apart, the debris stays (cut_polyhedral_mesh_by_surface clears both). Its parent cells
+/// are `mesh`'s, its node sources empty, its counts the steps' summed. `origin` (optional):
+/// per node of the result, the node of `mesh` it is or is a copy of, −1 for a node the
+/// steps made.
+PolyhedralCut cut_by_surface_steps(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
+                                   std::vector<int>* origin = nullptr);
+
+/// `cut_by_surface_steps`, then the pieces of a cell the blade did not part joined, the
+/// debris cleared and the faces simplified. The result's parent cells are `mesh`'s; its
+/// node sources are empty (a node made by a later step lies on an earlier step's face, not
+/// on an edge of `mesh`: a field is carried to it by evaluating the field before the cut).
 /// The counts add up the steps' (crossed_cells: cells of `mesh` now in several pieces).
 PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
                                              bool compute_geometry);
