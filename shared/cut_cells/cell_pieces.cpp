@@ -21,6 +21,8 @@ namespace {
 /// A corner within this fraction of a cell's diagonal of a plane lies on it: the
 /// clip computes its new vertices in double precision.
 constexpr double plane_tolerance = 1e-9;
+// Of a tetrahedron's volume, the largest part in a cell that is rounding, not material.
+constexpr double rounding_fraction = 1e-12;
 
 /// The triangles of a tetrahedron (corner indices).
 constexpr std::array<std::array<int, 3>, 4> tetrahedron_triangles{{{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}}};
@@ -150,8 +152,12 @@ CellFragments cell_fragments(const VolumeMesh& background, int cell, const Tetra
     if (separated_by_a_face(tetrahedron, corners, extent)) return result_of_clip;
     const std::vector<TetrahedronCorners> clipped = clip_tetrahedron(tetrahedron, geometry.planes());
     if (clipped.empty()) return result_of_clip;
-    result_of_clip.touches = true;
     for (const TetrahedronCorners& piece : clipped) result_of_clip.volume += tetrahedron_jacobian(piece) / 6.0;
+    // A part of rounding volume is a tetrahedron whose nodes on the cell's face were
+    // rounded off it (a cut's new nodes): in the cell it would be a piece of no mass.
+    if (result_of_clip.volume <= rounding_fraction * tetrahedron_jacobian(tetrahedron) / 6.0)
+      return ClippedTetrahedron{};
+    result_of_clip.touches = true;
     add_contact_areas(clipped, cell_planes, static_cast<int>(cell_faces.size()), result.distance_threshold,
                       result_of_clip.cell_face_area);
     std::array<Plane, 4> tetrahedron_planes;

@@ -145,7 +145,8 @@ EmbeddedTetrahedra cut_embedded_tetrahedra(const FragmentedTetrahedra& material,
   facts = {{"crossed_fragments", cut.crossed_fragments}, {"joined_fragments", cut.joined_fragments},
            {"separated_faces", cut.separated_faces},     {"duplicated_nodes", cut.duplicated_nodes},
            {"snapped_nodes", cut.snapped_nodes},         {"flat_tetrahedra", cut.flat_tetrahedra},
-           {"fragments", cut.result.fragment_count()},   {"tetrahedra", cut.result.mesh.cells.rows()}};
+           {"dropped_fragments", cut.dropped_fragments}, {"fragments", cut.result.fragment_count()},
+           {"tetrahedra", cut.result.mesh.cells.rows()}};
   return {std::move(cut.result), std::move(cut.parent_fragment)};
 }
 

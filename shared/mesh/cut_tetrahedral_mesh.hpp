@@ -42,14 +42,17 @@ struct FragmentedTetrahedra {
 
 struct TetrahedralCut {
   FragmentedTetrahedra result;
-  std::vector<int> parent_fragment;      ///< #fragments of `result`: the input's fragment it lies in
-  std::vector<NodeSource> node_sources;  ///< #nodes of `result.mesh`, in the input's numbering
-  int crossed_fragments = 0;             ///< input fragments split into two pieces
-  int joined_fragments = 0;              ///< of those, the ones whose pieces stay joined (finite blades)
-  int separated_faces = 0;               ///< interior fragment faces in the plane, now two boundary faces
-  int duplicated_nodes = 0;              ///< copies of nodes on the opened faces
-  int snapped_nodes = 0;                 ///< nodes within 1e-13 of the diagonal of the plane, taken on it
-  int flat_tetrahedra = 0;               ///< slivers of the input or of the pieces' cones, left out
+  std::vector<int> parent_fragment;  ///< #fragments of `result`: the input's fragment it lies in
+  /// Per node of `result.mesh` but the cones' apexes appended after them (split_into_tetrahedra
+  /// in cut_tetrahedral_parts.hpp), in the input's numbering; empty for a surface blade's cut.
+  std::vector<NodeSource> node_sources;
+  int crossed_fragments = 0;  ///< input fragments split into two pieces
+  int joined_fragments = 0;   ///< of those, the ones whose pieces stay joined (finite blades)
+  int separated_faces = 0;    ///< interior fragment faces in the plane, now two boundary faces
+  int duplicated_nodes = 0;   ///< copies of nodes on the opened faces
+  int snapped_nodes = 0;      ///< nodes within 1e-13 of the diagonal of the plane, taken on it
+  int flat_tetrahedra = 0;    ///< slivers of the input or of the pieces' cones, left out
+  int dropped_fragments = 0;  ///< surface blades: fragments of rounding volume cut off whole, left without tetrahedra
 };
 
 /// The cells of `cells` (convex, with planar faces: a grid's hexahedra) as fragments, each
@@ -68,11 +71,12 @@ FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells);
 TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const CuttingPlane& plane,
                                     const CutScope& scope = {});
 
-/// `input` cut by every step of `blade` (cut_by_surface.hpp): its parent fragments are
-/// `input`'s, its node sources empty, its counts the steps' summed (crossed_fragments:
-/// fragments of `input` now in several). Each split spreads through the body (the
-/// fragments stay conforming), so a blade whose triangles lie in many planes multiplies
-/// the fragments: NumericalError past 50 × the input's fragments + 100,000.
+/// `input` cut by every step of `blade` (cut_by_surface_steps: the steps split only the
+/// fragments near each triangle), each fragment the steps changed split into tetrahedra
+/// afresh by a cone from its centroid, a face the steps changed into triangles about its
+/// centroid (cut_tetrahedral_mesh_by_surface.cpp says why); the others keep their
+/// tetrahedra. Its parent fragments are `input`'s, its node sources empty, its counts the
+/// steps' summed (crossed_fragments: fragments of `input` now in several).
 TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input, const SurfaceBlade& blade);
 
 }  // namespace altfem

@@ -121,24 +121,28 @@ FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const Surfa
   return result;
 }
 
-int drop_isolated_slivers(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const PolyhedralMesh& parents) {
+std::vector<bool> isolated_slivers(const PolyhedralMesh& mesh, const std::vector<int>& parent_cell,
+                                   const PolyhedralMesh& parents) {
   constexpr double rounding_fraction = 1e-13;
-  std::vector<bool> keep(static_cast<std::size_t>(mesh.cell_count()), true);
-  int dropped = 0;
+  std::vector<bool> sliver(static_cast<std::size_t>(mesh.cell_count()), false);
   for (int cell = 0; cell < mesh.cell_count(); ++cell) {
     const bool alone = std::all_of(mesh.cell_faces[cell].begin(), mesh.cell_faces[cell].end(),
                                    [&](int face) { return mesh.face_cells(face, 1) < 0; });
     if (!alone) continue;
     if (mesh.cell_faces[cell].empty()) {  // welded to nothing
-      keep[cell] = false;
-      ++dropped;
+      sliver[cell] = true;
       continue;
     }
     const double parent_volume = polyhedron_moments(cell_polyhedron(parents, parent_cell[cell]), 0)(0);
-    if (polyhedron_moments(cell_polyhedron(mesh, cell), 0)(0) > rounding_fraction * parent_volume) continue;
-    keep[cell] = false;
-    ++dropped;
+    sliver[cell] = polyhedron_moments(cell_polyhedron(mesh, cell), 0)(0) <= rounding_fraction * parent_volume;
   }
+  return sliver;
+}
+
+int drop_isolated_slivers(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const PolyhedralMesh& parents) {
+  std::vector<bool> keep = isolated_slivers(mesh, parent_cell, parents);
+  keep.flip();
+  const auto dropped = static_cast<int>(std::count(keep.begin(), keep.end(), false));
   if (dropped == 0) return 0;
   std::vector<int> kept;
   mesh = polyhedral_mesh_with_cells(mesh, keep, kept);

@@ -52,5 +52,8 @@ FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const Surfa
 /// neighbour can take in and whose element matrices would be singular. Their volume, a
 /// rounding of the body's, is lost (an event's volume_change shows it). Returns how many.
 int drop_isolated_slivers(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const PolyhedralMesh& parents);
+/// Per cell of `mesh`, whether drop_isolated_slivers drops it.
+std::vector<bool> isolated_slivers(const PolyhedralMesh& mesh, const std::vector<int>& parent_cell,
+                                   const PolyhedralMesh& parents);
 
 }  // namespace altfem

@@ -347,6 +347,35 @@ TEST(CutBySurface, AClosedBladeInsideCutsItsVolumeOutOfHexahedraAndTetrahedra) {
   }
 }
 
+// The embedded tetrahedra of fcm and fem: the steps split only the fragments near each
+// triangle (spreading each through the body multiplied them past any limit), and the
+// tetrahedra stay conforming: a face held once is the cube's or the ball's, so the
+// boundary's area is the cube's and twice the ball's.
+TEST(CutBySurface, AClosedBladeInsideCutsItsVolumeOutOfConformingTetrahedra) {
+  const SurfaceBlade blade = ball_blade();
+  const double inside_volume = enclosed_volume(blade);
+  double ball_area = 0;
+  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t) {
+    const Eigen::Vector3d a = blade.vertices.row(blade.triangles(t, 0)), b = blade.vertices.row(blade.triangles(t, 1)),
+                          c = blade.vertices.row(blade.triangles(t, 2));
+    ball_area += (b - a).cross(c - a).norm() / 2;
+  }
+  for (const bool hexahedral_fragments : {false, true}) {
+    const FragmentedTetrahedra input =
+        hexahedral_fragments
+            ? convex_cells_as_fragments(polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 2)))
+            : FragmentedTetrahedra{unit_cube_grid(ElementType::tet4, 3)};
+    const TetrahedralCut cut = cut_tetrahedral_mesh_by_surface(input, blade);
+    EXPECT_EQ(cut.flat_tetrahedra, 0) << hexahedral_fragments;
+    const TetrahedralPieces pieces = tetrahedral_pieces(cut.result.mesh);
+    ASSERT_EQ(pieces.volumes.size(), 2u) << hexahedral_fragments;
+    EXPECT_NEAR(pieces.volumes[0], inside_volume, 1e-13) << hexahedral_fragments;
+    EXPECT_NEAR(pieces.volumes[1], 1 - inside_volume, 1e-13) << hexahedral_fragments;
+    EXPECT_NEAR(pieces.boundary_area, 6 + 2 * ball_area, 1e-12) << hexahedral_fragments;
+    EXPECT_EQ(static_cast<int>(cut.parent_fragment.size()), cut.result.fragment_count());
+  }
+}
+
 TEST(CutBySurface, AClosedBladeInsideOpensTheSurfaceTwice) {
   // The surface the methods deform gains the blade twice: the inner body's, facing out,
   // and the cavity's, facing in, each its own vertices.

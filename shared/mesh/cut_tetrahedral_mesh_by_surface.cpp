@@ -1,0 +1,187 @@
+// A surface blade's cut of the embedded tetrahedra (cut_tetrahedral_mesh.hpp). The
+// fragments are cut as dg's and harmonic's cells are (cut_by_surface_steps: each triangle's
+// planar steps on the window of the fragments about it, the pieces left apart), so a step
+// splits only the fragments near its triangle and puts its crossing nodes on the faces of
+// those it leaves whole. Such a face holds nodes in the middle of its edges, which a fan
+// from one of its corners would join by triangles of no area, and the two fragments that
+// share it must split it alike: it becomes triangles about its centroid, a new node, as a
+// face of the fragments too, so any later cut fans it as itself. Every fragment the steps
+// changed is split into tetrahedra afresh by a cone from its centroid (a point strictly
+// inside a convex fragment, so no tetrahedron is flat) over its faces' triangles: those
+// about a centroid, and a face as it was before the cut fanned from its lowest node, as the
+// fragment across it that keeps its tetrahedra fans it. Spreading each step through the
+// body instead (the planar cut's way of keeping faces whole) multiplied the fragments by
+// every plane of a closed or finely curved blade.
+#include <algorithm>
+#include <map>
+
+#include "shared/mesh/cut_by_surface.hpp"
+#include "shared/mesh/cut_tetrahedral_mesh.hpp"
+#include "shared/mesh/cut_tetrahedral_parts.hpp"
+#include "shared/mesh/surface_cut_debris.hpp"
+
+namespace altfem {
+namespace {
+
+using namespace tetrahedral_cut;
+
+// Per face of `cut`, whether it is a face of `before` as it was: each node one of
+// `before`'s or a copy of one (`origin`), and the set of them one of `before`'s faces'.
+std::vector<bool> faces_as_before(const PolyhedralMesh& before, const PolyhedralMesh& cut,
+                                  const std::vector<int>& origin) {
+  std::map<std::vector<int>, int> faces;
+  for (const std::vector<int>& loop : before.faces) {
+    std::vector<int> key = loop;
+    std::sort(key.begin(), key.end());
+    faces.emplace(std::move(key), 0);
+  }
+  std::vector<bool> kept(static_cast<std::size_t>(cut.face_count()), false);
+  std::vector<int> key;
+  for (int face = 0; face < cut.face_count(); ++face) {
+    key.clear();
+    for (const int node : cut.faces[face]) key.push_back(origin[node]);
+    if (std::find(key.begin(), key.end(), -1) != key.end()) continue;
+    std::sort(key.begin(), key.end());
+    kept[face] = faces.count(key) > 0;
+  }
+  return kept;
+}
+
+// The tetrahedra of a piece the steps changed, as the file's comment says: a cone from its
+// centroid (appended to `added`, node #nodes + its place there) over the triangles of its
+// faces, a face not `as_before` with more than three nodes fanned from its centroid
+// (`centre`: per face, that node once made, else −1).
+class CentredCones {
+public:
+  CentredCones(const PolyhedralMesh& pieces, const std::vector<bool>& as_before)
+      : pieces_(pieces), as_before_(as_before), centre_(static_cast<std::size_t>(pieces.face_count()), -1) {}
+
+  void split(int piece, std::vector<TetrahedronRow>& rows, int& flat) {
+    const int apex = add_centroid(all_nodes_of(piece));
+    for (const int face : pieces_.cell_faces[piece]) {
+      std::vector<int> loop = pieces_.faces[face];
+      if (pieces_.face_cells(face, 0) != piece) std::reverse(loop.begin(), loop.end());
+      const auto add = [&](int a, int b, int c) {
+        const TetrahedronRow row{apex, a, b, c};
+        Eigen::MatrixXd corners(4, 3);
+        for (int k = 0; k < 4; ++k) corners.row(k) = position(row[k]).transpose();
+        if (is_flat(corners, {0, 1, 2, 3})) ++flat;
+        else rows.push_back(row);
+      };
+      if (as_before_[face] || loop.size() == 3) {
+        std::rotate(
+            loop.begin(),
+            std::min_element(loop.begin(), loop.end(), [&](int a, int b) { return comes_before(pieces_.nodes, a, b); }),
+            loop.end());
+        for (std::size_t k = 1; k + 1 < loop.size(); ++k) add(loop[0], loop[k], loop[k + 1]);
+        continue;
+      }
+      if (centre_[face] < 0) centre_[face] = add_centroid(pieces_.faces[face]);
+      for (std::size_t k = 0; k < loop.size(); ++k) add(centre_[face], loop[k], loop[(k + 1) % loop.size()]);
+    }
+  }
+
+  /// The pieces' faces with each centred face as its triangles about the centre.
+  void set_faces_of(PolyhedralMesh& pieces) const {
+    std::vector<std::vector<int>> loops;
+    std::vector<std::array<int, 2>> cells;
+    for (int face = 0; face < pieces.face_count(); ++face) {
+      const std::array<int, 2> sides{pieces.face_cells(face, 0), pieces.face_cells(face, 1)};
+      const std::vector<int>& loop = pieces.faces[face];
+      if (centre_[face] < 0) {
+        loops.push_back(loop);
+        cells.push_back(sides);
+        continue;
+      }
+      for (std::size_t k = 0; k < loop.size(); ++k) {
+        loops.push_back({centre_[face], loop[k], loop[(k + 1) % loop.size()]});
+        cells.push_back(sides);
+      }
+    }
+    set_faces(pieces, std::move(loops), cells);
+  }
+
+  const std::vector<Eigen::Vector3d>& added() const { return added_; }
+
+private:
+  std::vector<int> all_nodes_of(int piece) const {
+    std::vector<int> nodes;
+    for (const int face : pieces_.cell_faces[piece])
+      nodes.insert(nodes.end(), pieces_.faces[face].begin(), pieces_.faces[face].end());
+    std::sort(nodes.begin(), nodes.end());
+    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+    return nodes;
+  }
+  // The mean of `nodes`' positions as a new node: inside their convex hull, strictly where
+  // they span it.
+  int add_centroid(const std::vector<int>& nodes) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (const int node : nodes) sum += pieces_.nodes.row(node).transpose();
+    added_.push_back(sum / static_cast<double>(nodes.size()));
+    return static_cast<int>(pieces_.nodes.rows() + static_cast<Eigen::Index>(added_.size()) - 1);
+  }
+  Eigen::Vector3d position(int node) const {
+    return node < pieces_.nodes.rows() ? Eigen::Vector3d(pieces_.nodes.row(node).transpose())
+                                       : added_[static_cast<std::size_t>(node - pieces_.nodes.rows())];
+  }
+
+  const PolyhedralMesh& pieces_;
+  const std::vector<bool>& as_before_;
+  std::vector<int> centre_;
+  std::vector<Eigen::Vector3d> added_;
+};
+
+}  // namespace
+
+TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input, const SurfaceBlade& blade) {
+  TetrahedralCut result;
+  const CutInput fragments = cut_input(input, result.flat_tetrahedra);
+  std::vector<int> origin;
+  PolyhedralCut cut = cut_by_surface_steps(fragments.mesh(), blade, &origin);
+  // Faces of rounding area where the blade's triangles meet would hold its two sides
+  // together at a point: opened, as dg's and harmonic's (surface_cut_debris.hpp). Their
+  // nodes' copies are new nodes here.
+  const FacesSeparated rounding = separate_faces_of_rounding_area(cut.mesh, blade);
+  origin.resize(static_cast<std::size_t>(cut.mesh.nodes.rows()), -1);
+  result.joined_fragments = cut.joined_cells;
+  result.separated_faces = cut.separated_faces + rounding.faces;
+  result.duplicated_nodes = cut.duplicated_nodes + rounding.duplicated_nodes;
+  result.snapped_nodes = cut.snapped_nodes;
+
+  // Pieces of rounding volume that nothing joins (surface_cut_debris.hpp): their
+  // functions would hold no mass. Left without tetrahedra, their rounding of volume lost.
+  const std::vector<bool> sliver = isolated_slivers(cut.mesh, cut.parent_cell, fragments.mesh());
+  result.dropped_fragments = static_cast<int>(std::count(sliver.begin(), sliver.end(), true));
+  const std::vector<bool> as_before = faces_as_before(fragments.mesh(), cut.mesh, origin);
+  std::vector<int> copied(origin.size());
+  for (std::size_t node = 0; node < origin.size(); ++node)
+    copied[node] = origin[node] >= 0 ? fragments.input_node_of(origin[node]) : -1;
+  const std::vector<bool> inside = inside_fragments(input, fragments);
+  std::vector<int> pieces_of(fragments.tetrahedra.size(), 0);
+  for (const int parent : cut.parent_cell) ++pieces_of[parent];
+  const auto unchanged = [&](int piece, int parent) {
+    const std::vector<int>& faces = cut.mesh.cell_faces[piece];
+    return pieces_of[parent] == 1 && faces.size() == fragments.mesh().cell_faces[parent].size() &&
+           std::all_of(faces.begin(), faces.end(), [&](int face) { return as_before[face]; });
+  };
+  std::vector<TetrahedronRow> rows;
+  std::vector<std::pair<int, int>> copy_of;
+  CentredCones cones(cut.mesh, as_before);
+  FragmentedTetrahedra& output = result.result;
+  for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
+    const int parent = cut.parent_cell[piece];
+    const std::size_t first_row = rows.size();
+    const bool carried =
+        sliver[piece] || (unchanged(piece, parent) && carry_tetrahedra(cut.mesh, piece, copied, inside, input.mesh,
+                                                                       fragments.tetrahedra[parent], rows, copy_of));
+    if (!carried) cones.split(piece, rows, result.flat_tetrahedra);
+    output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
+    result.parent_fragment.push_back(fragments.fragment[parent]);
+  }
+  for (const int pieces : pieces_of) result.crossed_fragments += pieces > 1 ? 1 : 0;
+  cones.set_faces_of(cut.mesh);
+  set_result(output, std::move(cut.mesh), cones.added(), rows);
+  return result;
+}
+
+}  // namespace altfem
