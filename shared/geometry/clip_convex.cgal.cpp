@@ -41,7 +41,6 @@ struct ClipWorkspace {
   std::vector<char> in_cap;
   std::vector<std::array<int, 3>> edge_vertex;  ///< (u, v, new vertex) per cut edge, u < v
   std::vector<std::pair<double, int>> angles;
-  std::vector<int> cap_next, chain;  ///< the cap's loop (chain_cap)
 };
 
 /// -1 kept side (inside), 0 on the plane, +1 outside: one exact predicate.
@@ -56,40 +55,6 @@ enum class ClipOutcome { unchanged, cut, empty };
 /// Of a polytope's diagonal, the distance from a plane within which a vertex is a rounding
 /// of one on it.
 constexpr double rounding_fraction = 1e-14;
-
-/// The cap as the kept faces bound it: each kept face's edge in the plane (both ends on
-/// it) is an edge of the cap traversed the other way, so the cap's loop follows those
-/// edges from `first`. Around the cap's centroid by angle is the same loop where the
-/// rounded vertices leave the piece convex; where several planes pass within a rounding
-/// of the tetrahedron's corners they may not, the angles then disagree with the faces,
-/// and the pieces overlapped (a clip of 1.04 times its tetrahedron's volume). False,
-/// `workspace.chain` empty, where the edges do not make one loop (a face in the plane).
-bool chain_cap(ClipWorkspace& workspace, int first) {
-  const ConvexPolytope& kept = workspace.clipped;
-  std::vector<int>& next = workspace.cap_next;
-  next.assign(workspace.in_cap.size(), -1);
-  std::vector<int>& chain = workspace.chain;
-  chain.clear();
-  for (int f = 0; f < kept.face_count(); ++f) {
-    const int begin = kept.start[f], n = kept.start[f + 1] - begin;
-    int on_plane = 0;
-    for (int i = 0; i < n; ++i) {
-      const int a = kept.indices[begin + i], b = kept.indices[begin + (i + 1) % n];
-      if (!workspace.in_cap[a]) continue;
-      ++on_plane;
-      if (!workspace.in_cap[b]) continue;
-      if (next[b] >= 0) return false;
-      next[b] = a;
-    }
-    if (on_plane == n) return false;
-  }
-  for (int v = first; next[v] >= 0 && chain.size() <= workspace.cap.size(); v = next[v]) {
-    chain.push_back(v);
-    if (next[v] == first) return chain.size() >= 3;
-  }
-  chain.clear();
-  return false;
-}
 
 /// Cuts `workspace.polytope` by one plane in place.
 ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
@@ -197,9 +162,7 @@ ClipOutcome clip_by_plane(ClipWorkspace& workspace, const ClipPlane& plane) {
       angles.emplace_back(std::atan2(d.dot(second), d.dot(first)), v);
     }
     std::sort(angles.begin(), angles.end());
-    if (!chain_cap(workspace, angles.front().second))
-      for (const auto& [angle, v] : angles) workspace.chain.push_back(v);
-    kept.indices.insert(kept.indices.end(), workspace.chain.begin(), workspace.chain.end());
+    for (const auto& [angle, v] : angles) kept.indices.push_back(v);
     kept.close_face();
   }
   std::swap(polytope.indices, kept.indices);
@@ -226,7 +189,6 @@ std::vector<TetrahedronCorners> clip_tetrahedron(const TetrahedronCorners& tetra
   bool cut = false;
   for (const ClipPlane& plane : planes) {
     const ClipOutcome outcome = clip_by_plane(workspace, plane);
-
     if (outcome == ClipOutcome::empty) return {};
     cut |= outcome == ClipOutcome::cut;
   }

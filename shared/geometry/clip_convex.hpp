@@ -5,7 +5,10 @@
 // centroid. Every in/out/on decision is an exact orientation predicate (CGAL's
 // Epick kernel) on the points' double coordinates, so a face of the tetrahedron
 // that lies in a clipping plane, or a vertex on it, is classified "on" exactly:
-// two cells sharing that plane neither both keep nor both drop the volume.
+// two cells sharing that plane neither both keep nor both drop the volume. A plane with
+// every vertex of one side within 1e-14 of the piece's diagonal of it (a corner rounded a
+// few ulps off a cell's face or edge) leaves the piece to the other side whole: cutting
+// there made vertices a few ulps apart, through which the next plane folded the piece.
 #include <Eigen/Core>
 #include <array>
 #include <vector>

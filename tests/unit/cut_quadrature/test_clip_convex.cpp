@@ -136,6 +136,29 @@ TEST(ClipConvex, PiecesOfTwoNeighbouringCellsTileRandomTetrahedra) {
   }
 }
 
+// A corner a cut constructed on an edge of a grid's tetrahedral cell, rounded a few ulps
+// off both planes through that edge (the ball cut out of fem's Tet10 cube: the cells'
+// clipped volumes exceeded their own). The first plane used to cut a sliver of vertices
+// a few ulps apart off that corner, the second to fold the piece through them: 1.04 times
+// the tetrahedron's volume. Every other corner lies inside the cell, so the clip is the
+// tetrahedron to a rounding.
+TEST(ClipConvex, ACornerARoundingOffACellsEdgeClipsToTheTetrahedron) {
+  const TetrahedronCorners inside = tetrahedron({0.51937231488346924, 0.40248513644275896, 0.097917172526512303},
+                                                {0.51784785340480088, 0.35530135428012632, 0.10530135428012635},
+                                                {0.5, 0.43015988766662938, 0.18015988766662935},
+                                                {0.52167010733352459, 0.27167010733352454, 0.021670107333524567});
+  Eigen::MatrixXd cell(4, 3);  // a cell of the 4³ grid split into six tetrahedra per cube
+  cell << 0.5, 0.25, 0, 0.5, 0.5, 0, 0.5, 0.5, 0.25, 0.75, 0.5, 0.25;
+  const Eigen::Matrix3d edges = (inside.bottomRows<3>().rowwise() - inside.row(0)).transpose();
+  EXPECT_NEAR(volume(clip_tetrahedron(inside, tetrahedron_clip_planes(cell))), std::abs(edges.determinant()) / 6,
+              1e-14 * std::abs(edges.determinant()));
+  TetrahedronCorners moved = inside;
+  moved(2, 2) = 0.18015988766662938;
+  const Eigen::Matrix3d moved_edges = (moved.bottomRows<3>().rowwise() - moved.row(0)).transpose();
+  EXPECT_NEAR(volume(clip_tetrahedron(moved, tetrahedron_clip_planes(cell))), std::abs(moved_edges.determinant()) / 6,
+              1e-14 * std::abs(moved_edges.determinant()));
+}
+
 TEST(ClipConvex, PlanarityOfHexahedronFaces) {
   Eigen::MatrixXd corners = box_corners({0, 0, 0}, {1, 2, 3});
   EXPECT_TRUE(hexahedron_faces_planar(corners));
