@@ -150,6 +150,22 @@ TEST(CellPieces, PieceTouchingAFaceLeavesTheNeighbourEmpty) {
   EXPECT_TRUE(mesh.tetrahedra[1].empty());
 }
 
+// The same block with its face nodes on x = 1 moved 1e-13 past it (a cut's new nodes,
+// rounded off the cell's face): the neighbour's clips of rounding volume (a few 1e-13 of
+// their tetrahedra's) make it no piece, whose functions would hold no mass; what is past
+// the face, 1e-13 of the block's volume, is lost.
+TEST(CellPieces, APieceRoundedPastAFaceLeavesTheNeighbourEmpty) {
+  VolumeMesh embedded = box_tetrahedra({0.2, 0.2, 0.2}, {1, 0.8, 0.8}, Eigen::Vector3i(2, 2, 2));
+  for (Eigen::Index node = 0; node < embedded.nodes.rows(); ++node)
+    if (embedded.nodes(node, 0) == 1) embedded.nodes(node, 0) = 1 + 1e-13;
+  const VolumeMesh background = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d(2, 1, 1)),
+                                                Eigen::Vector3i(2, 1, 1), ElementType::hex8);
+  const CellPieces pieces = find_cell_pieces(background, embedded);
+  ASSERT_EQ(pieces.tetrahedra[0].size(), 1u);
+  EXPECT_TRUE(pieces.tetrahedra[1].empty());
+  EXPECT_NEAR(piece_volume(background, 0, pieces.tetrahedra[0][0], embedded), 0.8 * 0.6 * 0.6, 1e-13);
+}
+
 // A U: two legs x in [0, 0.3] and [0.7, 1] rising from y = 0 to y = 1.5, joined by a bar
 // y in [1.2, 1.5]. The lower cell (y in [0, 1]) holds the legs apart; the upper cell
 // holds the bend. The legs' pieces share the nodes of the face y = 1 (the material joins
