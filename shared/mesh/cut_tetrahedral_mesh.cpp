@@ -8,6 +8,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/geometry/exact_orientation.hpp"
+#include "shared/mesh/cone_tetrahedra.hpp"
 #include "shared/mesh/cut_tetrahedral_parts.hpp"
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 
@@ -103,50 +104,6 @@ std::vector<bool> on_a_face(const PolyhedralMesh& mesh) {
   return held;
 }
 
-void split_into_tetrahedra(const PolyhedralMesh& pieces, int piece, std::vector<TetrahedronRow>& rows, int& flat,
-                           std::vector<Eigen::Vector3d>& added) {
-  const Eigen::MatrixXd& nodes = pieces.nodes;
-  const auto before = [&](int a, int b) { return comes_before(nodes, a, b); };
-  const auto at = [&](int node) -> Eigen::Vector3d { return nodes.row(node).transpose(); };
-  const std::vector<std::vector<int>> loops = outward_loops(pieces, piece);
-  int apex = loops[0][0];
-  for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
-  // A face in a plane through the apex that does not hold it (every tetrahedron of its
-  // cone flat, exactly): the apex would fan it anew.
-  const bool apex_in_a_plane = std::any_of(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
-    if (std::find(loop.begin(), loop.end(), apex) != loop.end()) return false;
-    for (std::size_t k = 1; k + 1 < loop.size(); ++k)
-      if (orientation_sign(at(loop[0]), at(loop[k]), at(loop[k + 1]), at(apex)) != 0) return false;
-    return true;
-  });
-  bool centred = false;
-  if (apex_in_a_plane) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    int count = 0;
-    for (const auto& loop : loops)
-      for (const int node : loop) sum += at(node), ++count;
-    apex = static_cast<int>(nodes.rows() + static_cast<Eigen::Index>(added.size()));
-    added.push_back(sum / count);
-    centred = true;
-  }
-  const auto flat_with = [&](const TetrahedronRow& row) {
-    if (!centred) return is_flat(nodes, row);
-    Eigen::MatrixXd corners(4, 3);
-    corners.row(0) = added.back().transpose();
-    for (int k = 1; k < 4; ++k) corners.row(k) = nodes.row(row[k]);
-    return is_flat(corners, {0, 1, 2, 3});
-  };
-  for (std::vector<int> loop : loops) {
-    if (std::find(loop.begin(), loop.end(), apex) != loop.end()) continue;
-    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
-    for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
-      const TetrahedronRow row{apex, loop[0], loop[k], loop[k + 1]};
-      if (flat_with(row)) ++flat;
-      else rows.push_back(row);
-    }
-  }
-}
-
 void set_result(FragmentedTetrahedra& output, PolyhedralMesh fragments, const std::vector<Eigen::Vector3d>& added,
                 const std::vector<TetrahedronRow>& rows) {
   const Eigen::Index first = fragments.nodes.rows();
@@ -200,15 +157,16 @@ using namespace tetrahedral_cut;
 
 FragmentedTetrahedra convex_cells_as_fragments(PolyhedralMesh cells) {
   std::vector<TetrahedronRow> rows;
-  std::vector<Eigen::Vector3d> added;
   FragmentedTetrahedra result;
   int flat = 0;
+  ConeTetrahedra cones(cells);
   for (int cell = 0; cell < cells.cell_count(); ++cell) {
     const std::size_t first_row = rows.size();
-    split_into_tetrahedra(cells, cell, rows, flat, added);
+    cones.split(cell, false, rows, flat);
     result.fragment.insert(result.fragment.end(), rows.size() - first_row, cell);
   }
-  set_result(result, std::move(cells), added, rows);
+  cones.set_faces_of(cells);
+  set_result(result, std::move(cells), cones.added(), rows);
   return result;
 }
 
@@ -240,7 +198,7 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
   std::vector<int> pieces_of(fragments.tetrahedra.size(), 0);
   for (const int parent : cut.parent_cell) ++pieces_of[parent];
   std::vector<TetrahedronRow> rows;
-  std::vector<Eigen::Vector3d> added;
+  ConeTetrahedra cones(cut.mesh);
   std::vector<std::pair<int, int>> copy_of;
   rows.reserve(static_cast<std::size_t>(input.mesh.cells.rows()) + 4 * static_cast<std::size_t>(cut.crossed_cells));
   FragmentedTetrahedra& output = result.result;
@@ -249,11 +207,12 @@ TetrahedralCut cut_tetrahedral_mesh(const FragmentedTetrahedra& input, const Cut
     const std::size_t first_row = rows.size();
     if (pieces_of[parent] > 1 ||
         !carry_tetrahedra(cut.mesh, piece, copied, inside, input.mesh, fragments.tetrahedra[parent], rows, copy_of))
-      split_into_tetrahedra(cut.mesh, piece, rows, result.flat_tetrahedra, added);
+      cones.split(piece, false, rows, result.flat_tetrahedra);
     output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
     result.parent_fragment.push_back(fragments.fragment[parent]);
   }
-  set_result(output, std::move(cut.mesh), added, rows);
+  cones.set_faces_of(cut.mesh);
+  set_result(output, std::move(cut.mesh), cones.added(), rows);
   return result;
 }
 

@@ -43,7 +43,7 @@ struct FragmentedTetrahedra {
 struct TetrahedralCut {
   FragmentedTetrahedra result;
   std::vector<int> parent_fragment;  ///< #fragments of `result`: the input's fragment it lies in
-  /// Per node of `result.mesh` but the cones' apexes appended after them (split_into_tetrahedra
+  /// Per node of `result.mesh` but the cones' centroids appended after them (cone_tetrahedra.hpp
   /// in cut_tetrahedral_parts.hpp), in the input's numbering; empty for a surface blade's cut.
   std::vector<NodeSource> node_sources;
   int crossed_fragments = 0;  ///< input fragments split into two pieces

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <map>
 
+#include "shared/mesh/cone_tetrahedra.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_tetrahedral_mesh.hpp"
 #include "shared/mesh/cut_tetrahedral_parts.hpp"
@@ -46,90 +47,6 @@ std::vector<bool> faces_as_before(const PolyhedralMesh& before, const Polyhedral
   }
   return kept;
 }
-
-// The tetrahedra of a piece the steps changed, as the file's comment says: a cone from its
-// centroid (appended to `added`, node #nodes + its place there) over the triangles of its
-// faces, a face not `as_before` with more than three nodes fanned from its centroid
-// (`centre`: per face, that node once made, else −1).
-class CentredCones {
-public:
-  CentredCones(const PolyhedralMesh& pieces, const std::vector<bool>& as_before)
-      : pieces_(pieces), as_before_(as_before), centre_(static_cast<std::size_t>(pieces.face_count()), -1) {}
-
-  void split(int piece, std::vector<TetrahedronRow>& rows, int& flat) {
-    const int apex = add_centroid(all_nodes_of(piece));
-    for (const int face : pieces_.cell_faces[piece]) {
-      std::vector<int> loop = pieces_.faces[face];
-      if (pieces_.face_cells(face, 0) != piece) std::reverse(loop.begin(), loop.end());
-      const auto add = [&](int a, int b, int c) {
-        const TetrahedronRow row{apex, a, b, c};
-        Eigen::MatrixXd corners(4, 3);
-        for (int k = 0; k < 4; ++k) corners.row(k) = position(row[k]).transpose();
-        if (is_flat(corners, {0, 1, 2, 3})) ++flat;
-        else rows.push_back(row);
-      };
-      if (as_before_[face] || loop.size() == 3) {
-        std::rotate(
-            loop.begin(),
-            std::min_element(loop.begin(), loop.end(), [&](int a, int b) { return comes_before(pieces_.nodes, a, b); }),
-            loop.end());
-        for (std::size_t k = 1; k + 1 < loop.size(); ++k) add(loop[0], loop[k], loop[k + 1]);
-        continue;
-      }
-      if (centre_[face] < 0) centre_[face] = add_centroid(pieces_.faces[face]);
-      for (std::size_t k = 0; k < loop.size(); ++k) add(centre_[face], loop[k], loop[(k + 1) % loop.size()]);
-    }
-  }
-
-  /// The pieces' faces with each centred face as its triangles about the centre.
-  void set_faces_of(PolyhedralMesh& pieces) const {
-    std::vector<std::vector<int>> loops;
-    std::vector<std::array<int, 2>> cells;
-    for (int face = 0; face < pieces.face_count(); ++face) {
-      const std::array<int, 2> sides{pieces.face_cells(face, 0), pieces.face_cells(face, 1)};
-      const std::vector<int>& loop = pieces.faces[face];
-      if (centre_[face] < 0) {
-        loops.push_back(loop);
-        cells.push_back(sides);
-        continue;
-      }
-      for (std::size_t k = 0; k < loop.size(); ++k) {
-        loops.push_back({centre_[face], loop[k], loop[(k + 1) % loop.size()]});
-        cells.push_back(sides);
-      }
-    }
-    set_faces(pieces, std::move(loops), cells);
-  }
-
-  const std::vector<Eigen::Vector3d>& added() const { return added_; }
-
-private:
-  std::vector<int> all_nodes_of(int piece) const {
-    std::vector<int> nodes;
-    for (const int face : pieces_.cell_faces[piece])
-      nodes.insert(nodes.end(), pieces_.faces[face].begin(), pieces_.faces[face].end());
-    std::sort(nodes.begin(), nodes.end());
-    nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-    return nodes;
-  }
-  // The mean of `nodes`' positions as a new node: inside their convex hull, strictly where
-  // they span it.
-  int add_centroid(const std::vector<int>& nodes) {
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    for (const int node : nodes) sum += pieces_.nodes.row(node).transpose();
-    added_.push_back(sum / static_cast<double>(nodes.size()));
-    return static_cast<int>(pieces_.nodes.rows() + static_cast<Eigen::Index>(added_.size()) - 1);
-  }
-  Eigen::Vector3d position(int node) const {
-    return node < pieces_.nodes.rows() ? Eigen::Vector3d(pieces_.nodes.row(node).transpose())
-                                       : added_[static_cast<std::size_t>(node - pieces_.nodes.rows())];
-  }
-
-  const PolyhedralMesh& pieces_;
-  const std::vector<bool>& as_before_;
-  std::vector<int> centre_;
-  std::vector<Eigen::Vector3d> added_;
-};
 
 }  // namespace
 
@@ -166,7 +83,9 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
   };
   std::vector<TetrahedronRow> rows;
   std::vector<std::pair<int, int>> copy_of;
-  CentredCones cones(cut.mesh, as_before);
+  std::vector<bool> changed = as_before;
+  changed.flip();
+  ConeTetrahedra cones(cut.mesh, changed);
   FragmentedTetrahedra& output = result.result;
   for (int piece = 0; piece < cut.mesh.cell_count(); ++piece) {
     const int parent = cut.parent_cell[piece];
@@ -174,7 +93,7 @@ TetrahedralCut cut_tetrahedral_mesh_by_surface(const FragmentedTetrahedra& input
     const bool carried =
         sliver[piece] || (unchanged(piece, parent) && carry_tetrahedra(cut.mesh, piece, copied, inside, input.mesh,
                                                                        fragments.tetrahedra[parent], rows, copy_of));
-    if (!carried) cones.split(piece, rows, result.flat_tetrahedra);
+    if (!carried) cones.split(piece, true, rows, result.flat_tetrahedra);
     output.fragment.insert(output.fragment.end(), rows.size() - first_row, piece);
     result.parent_fragment.push_back(fragments.fragment[parent]);
   }

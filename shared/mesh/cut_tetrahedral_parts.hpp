@@ -1,6 +1,7 @@
 #pragma once
-// The parts of cut_tetrahedral_mesh that its planar cut (cut_tetrahedral_mesh.cpp) and a
-// surface blade's (cut_tetrahedral_mesh_by_surface.cpp) share. Only those include it.
+// The parts of cut_tetrahedral_mesh that its planar cut (cut_tetrahedral_mesh.cpp), a
+// surface blade's (cut_tetrahedral_mesh_by_surface.cpp) and the pieces' cones
+// (cone_tetrahedra.cpp) share. Only those include it.
 #include <Eigen/Core>
 #include <array>
 #include <optional>
@@ -44,17 +45,8 @@ struct CutInput {
 CutInput cut_input(const FragmentedTetrahedra& input, int& flat);
 
 /// Per node of `mesh`, whether a face holds it: a node none holds lies inside a fragment,
-/// a cone's apex (split_into_tetrahedra), which no cut duplicates.
+/// a cone's apex (cone_tetrahedra.hpp), which no cut duplicates.
 std::vector<bool> on_a_face(const PolyhedralMesh& mesh);
-
-/// The tetrahedra of a convex piece: a cone from its first node (by position) over the
-/// faces that do not hold it, each fanned from its own first node; flat ones left out.
-/// Where a face that does not hold that node lies in a plane through it (a face a surface
-/// blade's cut split into triangles, coplanar with its neighbours), the cone is from the
-/// piece's centroid instead, a node appended to `added` (its index #nodes + its place
-/// there), so that every face keeps its own triangulation.
-void split_into_tetrahedra(const PolyhedralMesh& pieces, int piece, std::vector<TetrahedronRow>& rows, int& flat,
-                           std::vector<Eigen::Vector3d>& added);
 
 /// The input tetrahedra of a piece the blade did not cross, each corner taken as the copy
 /// of its node that the piece holds (`copied`: per node of `pieces`, the input node it is

@@ -373,6 +373,16 @@ TEST(CutBySurface, AClosedBladeInsideCutsItsVolumeOutOfConformingTetrahedra) {
     EXPECT_NEAR(pieces.volumes[1], 1 - inside_volume, 1e-13) << hexahedral_fragments;
     EXPECT_NEAR(pieces.boundary_area, 6 + 2 * ball_area, 1e-12) << hexahedral_fragments;
     EXPECT_EQ(static_cast<int>(cut.parent_fragment.size()), cut.result.fragment_count());
+    // A plane cut after it, through fragments the ball's steps split into cones from
+    // their centroids (whose faces are triangles about theirs, some in one plane): a slab
+    // z < 0.1 comes off, the tetrahedra still conforming.
+    const TetrahedralCut again =
+        cut_tetrahedral_mesh(cut.result, CuttingPlane(Eigen::Vector3d(0.5, 0.5, 0.1), Eigen::Vector3d::UnitZ()));
+    const TetrahedralPieces three = tetrahedral_pieces(again.result.mesh);
+    ASSERT_EQ(three.volumes.size(), 3u) << hexahedral_fragments;
+    EXPECT_NEAR(three.volumes[0], inside_volume, 1e-13) << hexahedral_fragments;
+    EXPECT_NEAR(three.volumes[1], 0.1, 1e-13) << hexahedral_fragments;
+    EXPECT_NEAR(three.boundary_area, 6 + 2 * ball_area + 2, 1e-12) << hexahedral_fragments;
   }
 }
 

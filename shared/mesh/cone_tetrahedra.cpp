@@ -1,0 +1,133 @@
+#include "shared/mesh/cone_tetrahedra.hpp"
+
+#include <algorithm>
+
+#include "shared/geometry/exact_orientation.hpp"
+#include "shared/mesh/cut_tetrahedral_parts.hpp"
+
+namespace altfem {
+
+namespace {
+
+// A fan triangle with twice its area, along the face's normal, under this fraction of the
+// face's longest edge squared has none to a rounding: its nodes lie on one line.
+constexpr double flat_triangle_fraction = 1e-6;
+
+}  // namespace
+
+ConeTetrahedra::ConeTetrahedra(const PolyhedralMesh& pieces, const std::vector<bool>& centred)
+    : pieces_(pieces), fan_(static_cast<std::size_t>(pieces.face_count()), -1) {
+  for (std::size_t face = 0; face < centred.size(); ++face)
+    if (centred[face] && pieces.faces[face].size() > 3) fan_[face] = add_centroid(pieces.faces[face]) + 1;
+}
+
+int ConeTetrahedra::centre_of(int face) {
+  if (fan_[face] < 0) {
+    std::vector<int> loop = pieces_.faces[face];
+    std::rotate(loop.begin(),
+                std::min_element(loop.begin(), loop.end(),
+                                 [&](int a, int b) { return tetrahedral_cut::comes_before(pieces_.nodes, a, b); }),
+                loop.end());
+    const auto at = [&](int node) -> Eigen::Vector3d { return pieces_.nodes.row(node).transpose(); };
+    double longest = 0;
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      longest = std::max(longest, (at(loop[(k + 1) % loop.size()]) - at(loop[k])).squaredNorm());
+    // Signed against the face's own normal (Newell's, of the whole loop): a triangle of a
+    // face a rounding from convex (nodes a step took on its plane within 1e-9) may turn
+    // the other way, and its tetrahedron then is flat.
+    const Eigen::Vector3d normal = face_area_vector(pieces_, loop).normalized();
+    bool degenerate = false;
+    for (std::size_t k = 1; k + 1 < loop.size() && !degenerate; ++k)
+      degenerate = (at(loop[k]) - at(loop[0])).cross(at(loop[k + 1]) - at(loop[0])).dot(normal) <=
+                   flat_triangle_fraction * longest;
+    fan_[face] = degenerate ? add_centroid(pieces_.faces[face]) + 1 : 0;
+  }
+  return fan_[face] - 1;
+}
+
+int ConeTetrahedra::add_centroid(const std::vector<int>& nodes) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const int node : nodes) sum += pieces_.nodes.row(node).transpose();
+  added_.push_back(sum / static_cast<double>(nodes.size()));
+  return static_cast<int>(pieces_.nodes.rows() + static_cast<Eigen::Index>(added_.size()) - 1);
+}
+
+Eigen::Vector3d ConeTetrahedra::position(int node) const {
+  return node < pieces_.nodes.rows() ? Eigen::Vector3d(pieces_.nodes.row(node).transpose())
+                                     : added_[static_cast<std::size_t>(node - pieces_.nodes.rows())];
+}
+
+void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows, int& flat) {
+  const Eigen::MatrixXd& nodes = pieces_.nodes;
+  const auto before = [&](int a, int b) { return tetrahedral_cut::comes_before(nodes, a, b); };
+  const auto at = [&](int node) -> Eigen::Vector3d { return nodes.row(node).transpose(); };
+  const std::vector<int>& faces = pieces_.cell_faces[piece];
+  const std::vector<std::vector<int>> loops = tetrahedral_cut::outward_loops(pieces_, piece);
+  int apex = loops[0][0];
+  for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
+  bool centred = false;
+  for (const int face : faces) centred |= centre_of(face) >= 0;
+  // A face in a plane through the apex that does not hold it (every tetrahedron of its
+  // cone flat, exactly): the apex would fan it anew.
+  const bool apex_in_a_plane = std::any_of(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
+    if (std::find(loop.begin(), loop.end(), apex) != loop.end()) return false;
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k)
+      if (orientation_sign(at(loop[0]), at(loop[k]), at(loop[k + 1]), at(apex)) != 0) return false;
+    return true;
+  });
+  if (!from_centroid && !centred && !apex_in_a_plane) {
+    for (std::vector<int> loop : loops) {
+      if (std::find(loop.begin(), loop.end(), apex) != loop.end()) continue;
+      std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
+      for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+        const Row row{apex, loop[0], loop[k], loop[k + 1]};
+        if (tetrahedral_cut::is_flat(nodes, row)) ++flat;
+        else rows.push_back(row);
+      }
+    }
+    return;
+  }
+  std::vector<int> all;
+  for (const auto& loop : loops) all.insert(all.end(), loop.begin(), loop.end());
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  const int centroid = add_centroid(all);
+  const auto add = [&](int a, int b, int c) {
+    const Row row{centroid, a, b, c};
+    Eigen::MatrixXd corners(4, 3);
+    for (int k = 0; k < 4; ++k) corners.row(k) = position(row[k]).transpose();
+    if (tetrahedral_cut::is_flat(corners, {0, 1, 2, 3})) ++flat;
+    else rows.push_back(row);
+  };
+  for (std::size_t index = 0; index < faces.size(); ++index) {
+    std::vector<int> loop = loops[index];
+    if (const int centre = centre_of(faces[index]); centre >= 0) {
+      for (std::size_t k = 0; k < loop.size(); ++k) add(centre, loop[k], loop[(k + 1) % loop.size()]);
+      continue;
+    }
+    std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
+    for (std::size_t k = 1; k + 1 < loop.size(); ++k) add(loop[0], loop[k], loop[k + 1]);
+  }
+}
+
+void ConeTetrahedra::set_faces_of(PolyhedralMesh& pieces) const {
+  if (std::none_of(fan_.begin(), fan_.end(), [](int fan) { return fan > 0; })) return;
+  std::vector<std::vector<int>> loops;
+  std::vector<std::array<int, 2>> cells;
+  for (int face = 0; face < pieces.face_count(); ++face) {
+    const std::array<int, 2> sides{pieces.face_cells(face, 0), pieces.face_cells(face, 1)};
+    const std::vector<int>& loop = pieces.faces[face];
+    if (fan_[face] <= 0) {
+      loops.push_back(loop);
+      cells.push_back(sides);
+      continue;
+    }
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      loops.push_back({fan_[face] - 1, loop[k], loop[(k + 1) % loop.size()]});
+      cells.push_back(sides);
+    }
+  }
+  set_faces(pieces, std::move(loops), cells);
+}
+
+}  // namespace altfem

@@ -1,0 +1,54 @@
+#pragma once
+// The tetrahedra of the convex pieces of a cut (cut_tetrahedral_mesh.hpp): a cone from one
+// point of a piece over the triangles of its faces. Two pieces that share a face must
+// split it alike, so how a face is split depends on the face alone:
+//   - fanned from its lowest node (by position: an order no cut changes), as every face
+//     was before — unless a triangle of that fan has no area to a rounding, or turns
+//     against the face (nodes in the middle of an edge: a plane crossing faces that lie in
+//     one plane puts them along their common line; a surface blade's steps on the faces of
+//     the fragments they leave whole, or take nodes on their planes within 1e-9);
+//   - then about its centroid, a new node that the face's pieces share, and the face
+//     becomes those triangles in the fragments (a later cut fans each as itself).
+// The cone is from the piece's lowest node over the faces that do not hold it, as before,
+// unless a face was split about its centroid or lies in a plane through that node; then
+// from the piece's centroid, a new node strictly inside it.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "shared/mesh/polyhedral_mesh.hpp"
+
+namespace altfem {
+
+class ConeTetrahedra {
+public:
+  using Row = std::array<int, 4>;
+
+  /// `centred` (optional, per face): faces of more than three nodes to split about their
+  /// centroid whatever their fan (a surface blade's changed faces, whose nodes a step took
+  /// on its plane within 1e-9 fan into slivers of thin triangles).
+  explicit ConeTetrahedra(const PolyhedralMesh& pieces, const std::vector<bool>& centred = {});
+
+  /// Appends the tetrahedra of `piece` to `rows` (each positively oriented; flat ones left
+  /// out and counted in `flat`); from its centroid with `from_centroid`.
+  void split(int piece, bool from_centroid, std::vector<Row>& rows, int& flat);
+
+  /// The new nodes (#nodes of the pieces + their place here): centroids of faces and pieces.
+  const std::vector<Eigen::Vector3d>& added() const { return added_; }
+
+  /// `pieces` (the mesh given, now to be changed) with each face split about its centroid
+  /// as those triangles.
+  void set_faces_of(PolyhedralMesh& pieces) const;
+
+private:
+  // Per face: −1 undecided, 0 fanned from its lowest node, else its centroid's node + 1.
+  int centre_of(int face);
+  int add_centroid(const std::vector<int>& nodes);
+  Eigen::Vector3d position(int node) const;
+
+  const PolyhedralMesh& pieces_;
+  std::vector<int> fan_;
+  std::vector<Eigen::Vector3d> added_;
+};
+
+}  // namespace altfem
