@@ -67,25 +67,24 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
   for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
   bool centred = false;
   for (const int face : faces) centred |= centre_of(face) >= 0;
-  // A face in a plane through the apex that does not hold it (every tetrahedron of its
-  // cone flat, exactly): the apex would fan it anew.
-  const bool apex_in_a_plane = std::any_of(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
-    if (std::find(loop.begin(), loop.end(), apex) != loop.end()) return false;
-    for (std::size_t k = 1; k + 1 < loop.size(); ++k)
-      if (orientation_sign(at(loop[0]), at(loop[k]), at(loop[k + 1]), at(apex)) != 0) return false;
-    return true;
-  });
-  if (!from_centroid && !centred && !apex_in_a_plane) {
-    for (std::vector<int> loop : loops) {
+  if (!from_centroid && !centred) {
+    // A face in a plane through the apex that does not hold it, exactly or to a rounding
+    // (a face's triangles about its rounded centroid, the apex a node of that face), makes
+    // the cone's tetrahedra over it flat: then the cone is from the centroid instead.
+    const std::size_t first_row = rows.size();
+    bool any_flat = false;
+    for (std::size_t index = 0; index < loops.size() && !any_flat; ++index) {
+      std::vector<int> loop = loops[index];
       if (std::find(loop.begin(), loop.end(), apex) != loop.end()) continue;
       std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
-      for (std::size_t k = 1; k + 1 < loop.size(); ++k) {
+      for (std::size_t k = 1; k + 1 < loop.size() && !any_flat; ++k) {
         const Row row{apex, loop[0], loop[k], loop[k + 1]};
-        if (tetrahedral_cut::is_flat(nodes, row)) ++flat;
-        else rows.push_back(row);
+        any_flat = tetrahedral_cut::is_flat(nodes, row);
+        rows.push_back(row);
       }
     }
-    return;
+    if (!any_flat) return;
+    rows.resize(first_row);
   }
   std::vector<int> all;
   for (const auto& loop : loops) all.insert(all.end(), loop.begin(), loop.end());

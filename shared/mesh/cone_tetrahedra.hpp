@@ -10,8 +10,10 @@
 //   - then about its centroid, a new node that the face's pieces share, and the face
 //     becomes those triangles in the fragments (a later cut fans each as itself).
 // The cone is from the piece's lowest node over the faces that do not hold it, as before,
-// unless a face was split about its centroid or lies in a plane through that node; then
-// from the piece's centroid, a new node strictly inside it.
+// unless a face was split about its centroid or a tetrahedron of that cone is flat (a face
+// in a plane through that node, exactly or to a rounding: a face's triangles about its
+// rounded centroid, the node on that face); then from the piece's centroid, a new node
+// strictly inside it. Either way each face is split as itself alone decides.
 #include <Eigen/Core>
 #include <array>
 #include <vector>

@@ -26,10 +26,14 @@
 #include "tests/unit/mesh/ball_blade.hpp"
 #include "tests/unit/mesh/every_cell_closed.hpp"
 #include "tests/unit/mesh/surface_pieces.hpp"
+#include "tests/unit/mesh/tetrahedral_pieces.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem {
 namespace {
+
+using test::tetrahedral_pieces;
+using test::TetrahedralPieces;
 
 VolumeMesh unit_cube_grid(ElementType type, int cells_per_axis) {
   const Eigen::AlignedBox3d box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
@@ -71,45 +75,6 @@ std::vector<double> piece_volumes(const PolyhedralMesh& mesh) {
   for (const auto& [root, volume] : volume_of) volumes.push_back(volume);
   std::sort(volumes.begin(), volumes.end());
   return volumes;
-}
-
-double tetrahedron_volume(const Eigen::MatrixXd& nodes, const Eigen::MatrixXi& cells, Eigen::Index cell) {
-  const Eigen::Vector3d a = nodes.row(cells(cell, 0)), b = nodes.row(cells(cell, 1)), c = nodes.row(cells(cell, 2)),
-                        d = nodes.row(cells(cell, 3));
-  return (b - a).cross(c - a).dot(d - a) / 6;
-}
-
-// The tetrahedra's pieces (joined through shared faces) by volume, smallest first, and
-// the area of the faces only one tetrahedron holds.
-struct TetrahedralPieces {
-  std::vector<double> volumes;
-  double boundary_area = 0;
-};
-
-TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh) {
-  std::map<std::array<int, 3>, std::vector<int>> holders;
-  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)
-    for (int skipped = 0; skipped < 4; ++skipped) {
-      std::array<int, 3> face;
-      for (int k = 0, j = 0; k < 4; ++k)
-        if (k != skipped) face[j++] = mesh.cells(cell, k);
-      std::sort(face.begin(), face.end());
-      holders[face].push_back(static_cast<int>(cell));
-    }
-  DisjointSets pieces(static_cast<int>(mesh.cells.rows()));
-  TetrahedralPieces result;
-  for (const auto& [face, cells] : holders) {
-    if (cells.size() == 2) pieces.join(cells[0], cells[1]);
-    if (cells.size() != 1) continue;
-    const Eigen::Vector3d a = mesh.nodes.row(face[0]), b = mesh.nodes.row(face[1]), c = mesh.nodes.row(face[2]);
-    result.boundary_area += (b - a).cross(c - a).norm() / 2;
-  }
-  std::map<int, double> volume_of;
-  for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)
-    volume_of[pieces.find(static_cast<int>(cell))] += tetrahedron_volume(mesh.nodes, mesh.cells, cell);
-  for (const auto& [root, volume] : volume_of) result.volumes.push_back(volume);
-  std::sort(result.volumes.begin(), result.volumes.end());
-  return result;
 }
 
 TEST(CutBySurface, TwoTrianglesSpanningTheSectionCutAsThePlane) {
@@ -275,41 +240,6 @@ TEST(CutBySurface, AClosedBladeInsideCutsItsVolumeOutOfHexahedraAndTetrahedra) {
 // triangle (spreading each through the body multiplied them past any limit), and the
 // tetrahedra stay conforming: a face held once is the cube's or the ball's, so the
 // boundary's area is the cube's and twice the ball's.
-TEST(CutBySurface, AClosedBladeInsideCutsItsVolumeOutOfConformingTetrahedra) {
-  const SurfaceBlade blade = ball_blade();
-  const double inside_volume = enclosed_volume(blade);
-  double ball_area = 0;
-  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t) {
-    const Eigen::Vector3d a = blade.vertices.row(blade.triangles(t, 0)), b = blade.vertices.row(blade.triangles(t, 1)),
-                          c = blade.vertices.row(blade.triangles(t, 2));
-    ball_area += (b - a).cross(c - a).norm() / 2;
-  }
-  for (const bool hexahedral_fragments : {false, true}) {
-    const FragmentedTetrahedra input =
-        hexahedral_fragments
-            ? convex_cells_as_fragments(polyhedral_mesh_from_volume_mesh(unit_cube_grid(ElementType::hex8, 2)))
-            : FragmentedTetrahedra{unit_cube_grid(ElementType::tet4, 3)};
-    const TetrahedralCut cut = cut_tetrahedral_mesh_by_surface(input, blade);
-    EXPECT_EQ(cut.flat_tetrahedra, 0) << hexahedral_fragments;
-    const TetrahedralPieces pieces = tetrahedral_pieces(cut.result.mesh);
-    ASSERT_EQ(pieces.volumes.size(), 2u) << hexahedral_fragments;
-    EXPECT_NEAR(pieces.volumes[0], inside_volume, 1e-13) << hexahedral_fragments;
-    EXPECT_NEAR(pieces.volumes[1], 1 - inside_volume, 1e-13) << hexahedral_fragments;
-    EXPECT_NEAR(pieces.boundary_area, 6 + 2 * ball_area, 1e-12) << hexahedral_fragments;
-    EXPECT_EQ(static_cast<int>(cut.parent_fragment.size()), cut.result.fragment_count());
-    // A plane cut after it, through fragments the ball's steps split into cones from
-    // their centroids (whose faces are triangles about theirs, some in one plane): a slab
-    // z < 0.1 comes off, the tetrahedra still conforming.
-    const TetrahedralCut again =
-        cut_tetrahedral_mesh(cut.result, CuttingPlane(Eigen::Vector3d(0.5, 0.5, 0.1), Eigen::Vector3d::UnitZ()));
-    const TetrahedralPieces three = tetrahedral_pieces(again.result.mesh);
-    ASSERT_EQ(three.volumes.size(), 3u) << hexahedral_fragments;
-    EXPECT_NEAR(three.volumes[0], inside_volume, 1e-13) << hexahedral_fragments;
-    EXPECT_NEAR(three.volumes[1], 0.1, 1e-13) << hexahedral_fragments;
-    EXPECT_NEAR(three.boundary_area, 6 + 2 * ball_area + 2, 1e-12) << hexahedral_fragments;
-  }
-}
-
 TEST(CutBySurface, AClosedBladeInsideOpensTheSurfaceTwice) {
   // The surface the methods deform gains the blade twice: the inner body's, facing out,
   // and the cavity's, facing in, each its own vertices.
