@@ -133,7 +133,7 @@ void set_faces(PolyhedralMesh& mesh, std::vector<std::vector<int>> loops,
 }
 
 PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep,
-                                          std::vector<int>& kept) {
+                                          std::vector<int>& kept, std::vector<int>* kept_faces) {
   std::vector<int> new_index(keep.size(), -1);
   for (std::size_t cell = 0; cell < keep.size(); ++cell)
     if (keep[cell]) {
@@ -153,6 +153,7 @@ PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std:
     if (kept_first < 0) std::reverse(loop.begin(), loop.end());  // now oriented for the second
     const int index = static_cast<int>(result.faces.size());
     result.faces.push_back(std::move(loop));
+    if (kept_faces) kept_faces->push_back(face);
     face_cells.push_back(kept_first >= 0 ? std::array<int, 2>{kept_first, kept_second}
                                          : std::array<int, 2>{kept_second, -1});
     for (const int cell : {kept_first, kept_second})

@@ -77,8 +77,8 @@ void set_faces(PolyhedralMesh& mesh, std::vector<std::vector<int>> loops, const 
 
 /// The mesh without the cells `keep` drops (their faces with a kept cell become that
 /// cell's boundary faces); nodes keep their numbers, geometry arrays are left empty.
-/// `kept` receives each kept cell's index.
+/// `kept` receives each kept cell's index; `kept_faces`, when given, each kept face's.
 PolyhedralMesh polyhedral_mesh_with_cells(const PolyhedralMesh& mesh, const std::vector<bool>& keep,
-                                          std::vector<int>& kept);
+                                          std::vector<int>& kept, std::vector<int>* kept_faces = nullptr);
 
 }  // namespace altfem

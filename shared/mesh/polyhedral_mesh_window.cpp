@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "shared/mesh/merge_slivers.hpp"
+
 namespace altfem {
 
 std::vector<Eigen::AlignedBox3d> polyhedral_cell_boxes(const PolyhedralMesh& mesh) {
@@ -22,67 +24,35 @@ PolyhedralMeshWindow polyhedral_mesh_window(const PolyhedralMesh& mesh,
   const int cells = mesh.cell_count();
   // The cells the box meets, their nodes marked; then every cell holding one of those,
   // whose box touches theirs (boxes are closed).
-  std::vector<int> window_node(static_cast<std::size_t>(mesh.nodes.rows()), -1);
+  std::vector<bool> marked(static_cast<std::size_t>(mesh.nodes.rows()), false);
   Eigen::AlignedBox3d reach;
   for (int cell = 0; cell < cells; ++cell)
     if (cell_boxes[cell].intersects(box)) {
       reach.extend(cell_boxes[cell]);
       for (const int face : mesh.cell_faces[cell])
-        for (const int node : mesh.faces[face]) window_node[node] = 0;
+        for (const int node : mesh.faces[face]) marked[node] = true;
     }
   if (reach.isEmpty()) return window;
   const auto holds_a_marked_node = [&](int cell) {
     for (const int face : mesh.cell_faces[cell])
       for (const int node : mesh.faces[face])
-        if (window_node[node] == 0) return true;
+        if (marked[node]) return true;
     return false;
   };
-  std::vector<int> window_cell(static_cast<std::size_t>(cells), -1);
   for (int cell = 0; cell < cells; ++cell)
-    if (cell_boxes[cell].intersects(reach) && holds_a_marked_node(cell)) {
-      window_cell[cell] = static_cast<int>(window.cells.size());
-      window.cells.push_back(cell);
-    }
-  for (const int cell : window.cells)
-    for (const int face : mesh.cell_faces[cell])
-      for (const int node : mesh.faces[face]) window_node[node] = 0;
-  for (std::size_t node = 0; node < window_node.size(); ++node)
-    if (window_node[node] == 0) {
-      window_node[node] = static_cast<int>(window.nodes.size());
-      window.nodes.push_back(static_cast<int>(node));
-    }
-  PolyhedralMesh& local = window.mesh;
-  local.nodes.resize(static_cast<Eigen::Index>(window.nodes.size()), 3);
-  for (std::size_t node = 0; node < window.nodes.size(); ++node)
-    local.nodes.row(static_cast<Eigen::Index>(node)) = mesh.nodes.row(window.nodes[node]);
-  local.cell_faces.resize(window.cells.size());
-  std::vector<int> window_face(static_cast<std::size_t>(mesh.face_count()), -1);
-  std::vector<std::array<int, 2>> face_cells;
-  for (std::size_t inside = 0; inside < window.cells.size(); ++inside) {
-    const int cell = window.cells[inside];
-    local.cell_kinds.push_back(mesh.cell_kinds[cell]);
-    for (const int face : mesh.cell_faces[cell]) {
-      if (window_face[face] < 0) {
-        const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
-        const int window_first = window_cell[first], window_second = second >= 0 ? window_cell[second] : -1;
-        std::vector<int> loop;
-        for (const int node : mesh.faces[face]) loop.push_back(window_node[node]);
-        if (window_first < 0) std::reverse(loop.begin(), loop.end());  // oriented for the second
-        window_face[face] = static_cast<int>(local.faces.size());
-        if (window_first < 0 || (second >= 0 && window_second < 0)) {
-          window.shell_faces.push_back(face);
-          window.shell_window_faces.push_back(window_face[face]);
-        }
-        local.faces.push_back(std::move(loop));
-        face_cells.push_back(window_first >= 0 ? std::array<int, 2>{window_first, window_second}
-                                               : std::array<int, 2>{window_second, -1});
-      }
-      local.cell_faces[inside].push_back(window_face[face]);
+    if (cell_boxes[cell].intersects(reach) && holds_a_marked_node(cell)) window.cells.push_back(cell);
+  std::vector<bool> keep(static_cast<std::size_t>(cells), false);
+  for (const int cell : window.cells) keep[cell] = true;
+  std::vector<int> kept, kept_faces;
+  window.mesh = polyhedral_mesh_with_cells(mesh, keep, kept, &kept_faces);
+  window.nodes = drop_unused_nodes(window.mesh);
+  for (std::size_t face = 0; face < kept_faces.size(); ++face) {
+    const int whole = kept_faces[face], second = mesh.face_cells(whole, 1);
+    if (second >= 0 && !(keep[mesh.face_cells(whole, 0)] && keep[second])) {
+      window.shell_faces.push_back(whole);
+      window.shell_window_faces.push_back(static_cast<int>(face));
     }
   }
-  local.face_cells.resize(static_cast<Eigen::Index>(face_cells.size()), 2);
-  for (std::size_t face = 0; face < face_cells.size(); ++face)
-    local.face_cells.row(static_cast<Eigen::Index>(face)) << face_cells[face][0], face_cells[face][1];
   return window;
 }
 
@@ -167,6 +137,8 @@ void splice_polyhedral_mesh_window(PolyhedralMesh& mesh, std::vector<Eigen::Alig
     }
   }
 
+  // The cells outside the window keep their face lists, renumbered (set_faces would build
+  // every cell's anew, at every window: the whole mesh for each triangle of a blade).
   std::vector<std::vector<int>> cell_faces(static_cast<std::size_t>(next_cell));
   std::vector<PolyhedralCellKind> kinds(static_cast<std::size_t>(next_cell));
   std::vector<int> parents(static_cast<std::size_t>(next_cell));
