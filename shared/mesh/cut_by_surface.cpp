@@ -10,6 +10,7 @@
 #include "shared/common/error.hpp"
 #include "shared/geometry/exact_orientation.hpp"
 #include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/mesh/bounding_box.hpp"
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/merge_slivers.hpp"
@@ -133,10 +134,6 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
 CutScope TrianglePlaneNodes::scope_for(const SurfaceBladeStep& step) {
   CutScope scope = step.scope;
   scope.snap_fraction = blade_snap_fraction;
-  if (step.scope.action == CutAction::split && step.triangle_plane) {
-    on_plane_.clear();
-    is_on_plane_.clear();
-  }
   scope.on_plane = step.triangle_plane ? &on_plane_ : &none_;
   return scope;
 }
@@ -233,15 +230,13 @@ PolyhedralCut cut_by_surface_steps(const PolyhedralMesh& mesh, const SurfaceBlad
 PolyhedralCut cut_polyhedral_mesh_by_surface(const PolyhedralMesh& mesh, const SurfaceBlade& blade,
                                              bool compute_geometry) {
   PolyhedralCut result = cut_by_surface_steps(mesh, blade);
-  Eigen::AlignedBox3d bounds;
-  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
   const FacesSeparated rounding = separate_faces_of_rounding_area(result.mesh, blade);
   result.separated_faces += rounding.faces;
   result.duplicated_nodes += rounding.duplicated_nodes;
   join_unparted_pieces(result.mesh, result.parent_cell);
   weld_coincident_neighbours(result.mesh);
   result.dropped_pieces = drop_isolated_slivers(result.mesh, result.parent_cell, mesh);
-  const double straight = 1e-12 * bounds.diagonal().norm();
+  const double straight = 1e-12 * bounding_box(mesh.nodes).diagonal();
   result.merged_faces = merge_coplanar_faces(result.mesh, straight);
   result.dropped_nodes = drop_straight_run_nodes(result.mesh, straight);
   drop_unused_nodes(result.mesh);

@@ -45,9 +45,9 @@ struct SurfaceBladeStep {
 /// triangle without area.
 std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade);
 
-/// The nodes on the current triangle's plane as the steps go: those its split made (a
-/// rounding off the plane) and those its edges' splits made between two nodes on it. Its
-/// separation takes them on the plane (CutScope::on_plane).
+/// The nodes on one triangle's plane as its steps go: those its split made (a rounding off
+/// the plane) and those its edges' splits made between two nodes on it. Its separation
+/// takes them on the plane (CutScope::on_plane). One per triangle, made before its split.
 class TrianglePlaneNodes {
 public:
   /// The scope to cut `step` with (it refers to this object).

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "shared/geometry/polyhedron_moments.hpp"
+#include "shared/mesh/bounding_box.hpp"
 #include "shared/mesh/cut_polyhedral_pieces.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 #include "shared/mesh/merge_slivers.hpp"
@@ -76,9 +77,8 @@ double distance_to_blade(const Eigen::Vector3d& point, const SurfaceBlade& blade
 }  // namespace
 
 FacesSeparated separate_faces_of_rounding_area(PolyhedralMesh& mesh, const SurfaceBlade& blade) {
-  Eigen::AlignedBox3d bounds;
-  for (Eigen::Index node = 0; node < mesh.nodes.rows(); ++node) bounds.extend(mesh.nodes.row(node).transpose());
-  const double rounding_width = 1e-12 * bounds.diagonal().norm(), rounding_length = 1e-9 * bounds.diagonal().norm();
+  const double diagonal = bounding_box(mesh.nodes).diagonal();
+  const double rounding_width = 1e-12 * diagonal, rounding_length = 1e-9 * diagonal;
   std::vector<CutFace> faces;
   std::vector<bool> opened_node(static_cast<std::size_t>(mesh.nodes.rows()), false);
   FacesSeparated result;
