@@ -153,7 +153,8 @@ public:
       case Embedding::mls:
         surface_.make_embedding = [this](const EmbeddedSurface& surface) -> std::unique_ptr<PointEmbedding> {
           return std::make_unique<MlsEmbedding>(*surface.evaluator, mesh_.nodes, longest_edge_at_nodes(mesh_),
-                                                embedding_points(surface.surface), MlsOptions{}, cells_at_nodes(mesh_));
+                                                embedding_points(surface.surface), MlsOptions{}, cells_at_nodes(mesh_),
+                                                dynamic_cast<const MlsEmbedding*>(surface.embedding_before()));
         };
         break;
     }

@@ -39,6 +39,10 @@ struct EmbeddedSurface {
   /// embedded, the one it had taken) for embed_in_basis to keep what the event left alone.
   void continue_from(const EmbeddedSurface& before);
 
+  /// The embedding continue_from took (null: none, or already embedded): a method's own
+  /// make_embedding may keep from it what the event left alone.
+  const PointEmbedding* embedding_before() const { return before_.get(); }
+
   /// Each vertex in the basis of the element holding it; a vertex the embedding
   /// continue_from took holds in elements the event left alone keeps its weights
   /// (BasisEmbedding's constructor with `previous`).

@@ -2,7 +2,10 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <exception>
 #include <map>
 #include <span>
@@ -59,11 +62,12 @@ struct PieceSamples {
   CubeBuckets cubes;
 };
 
+// Samples of piece −1 (none asked for) are left out, here and in SupportCubes.
 std::unordered_map<int, PieceSamples> piece_samples(const Eigen::MatrixXd& samples, const Eigen::VectorXd& radii,
                                                     const std::vector<int>& sample_piece) {
   std::map<int, double> largest;
   for (Eigen::Index i = 0; i < samples.rows(); ++i)
-    largest[sample_piece[i]] = std::max(largest[sample_piece[i]], radii[i]);
+    if (sample_piece[i] >= 0) largest[sample_piece[i]] = std::max(largest[sample_piece[i]], radii[i]);
   const Eigen::RowVector3d origin = samples.colwise().minCoeff();
   std::unordered_map<int, PieceSamples> pieces;
   for (const auto& [piece, radius] : largest) {
@@ -71,7 +75,8 @@ std::unordered_map<int, PieceSamples> piece_samples(const Eigen::MatrixXd& sampl
     pieces.emplace(piece, PieceSamples{side, CubeBuckets(side, origin)});
   }
   for (Eigen::Index i = 0; i < samples.rows(); ++i)
-    pieces.at(sample_piece[i]).cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
+    if (sample_piece[i] >= 0)
+      pieces.at(sample_piece[i]).cubes.insert(static_cast<int>(i), samples.row(i), samples.row(i));
   return pieces;
 }
 
@@ -89,6 +94,7 @@ public:
     const Eigen::RowVector3d origin = samples.colwise().minCoeff();
     const double smallest = std::max(radii.minCoeff(), 1e-12 * radii.maxCoeff());
     for (Eigen::Index i = 0; i < samples.rows(); ++i) {
+      if (sample_piece[i] < 0) continue;
       const int level = std::max(0, static_cast<int>(std::floor(std::log2(radii[i] / smallest))));
       const std::pair<int, int> key(sample_piece[i], level);
       auto slot = grids_.find(key);
@@ -121,41 +127,86 @@ struct PointWeights {
   std::vector<double> weights;
 };
 
+// A hash of a piece's sample coordinates (their bits): pieces of equal coordinates meet
+// under one hash, and are then compared exactly.
+std::uint64_t hash_of(const std::vector<double>& coordinates) {
+  std::uint64_t hash = 1469598103934665603ull;
+  for (const double value : coordinates) {
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    hash = (hash ^ bits) * 1099511628211ull;
+  }
+  return hash;
+}
+
 }  // namespace
 
 MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples,
                            const Eigen::VectorXd& spacing, const Eigen::MatrixXd& points, const MlsOptions& options,
-                           const std::vector<std::vector<int>>& sample_elements)
-    : stitched_(basis, samples, sample_elements) {
+                           const std::vector<std::vector<int>>& sample_elements, const MlsEmbedding* previous)
+    : sample_count_(samples.rows()),
+      points_(points),
+      point_piece_(static_cast<size_t>(points.rows()), -1),
+      stitched_(basis, samples, sample_elements) {
   // Elements joined through the samples they share (a sample evaluates every element
-  // holding it, or containing it), as sets of basis functions; a point's piece is its element's.
-  const BasisEmbedding located(basis, points);
-  DisjointSets pieces(
-      std::max(basis_function_bound(stitched_, samples.rows()), basis_function_bound(located, points.rows())));
+  // holding it, or containing it), as sets of basis functions.
+  const int functions = basis_function_bound(stitched_, samples.rows());
+  DisjointSets pieces(functions);
   for (Eigen::Index sample = 0; sample < samples.rows(); ++sample)
     for (int function : stitched_.basis_of(sample)) pieces.join(stitched_.basis_of(sample).front(), function);
-  const auto piece_of = [&pieces](std::span<const int> functions) {
-    return functions.empty() ? -1 : pieces.find(functions.front());
+  const auto piece_of = [&](std::span<const int> basis_functions) {
+    return basis_functions.empty() || basis_functions.front() >= functions ? -1 : pieces.find(basis_functions.front());
   };
-  std::vector<int> sample_piece(static_cast<size_t>(samples.rows())), point_piece(static_cast<size_t>(points.rows()));
+  std::vector<int> sample_piece(static_cast<size_t>(samples.rows()));
   for (Eigen::Index sample = 0; sample < samples.rows(); ++sample)
     sample_piece[sample] = piece_of(stitched_.basis_of(sample));
-  for (Eigen::Index point = 0; point < points.rows(); ++point) point_piece[point] = piece_of(located.basis_of(point));
+  const std::unordered_map<int, int> place = list_pieces(samples, spacing, sample_piece);
+  // A point's piece is its element's: a point kept from `previous` lies in its piece's twin
+  // (pieces do not overlap at rest), the others are located.
+  std::vector<int> sample_after;
+  const std::vector<char> kept = keep_points(previous, points, sample_after);
+  std::vector<Eigen::Index> moved;
+  for (Eigen::Index point = 0; point < points.rows(); ++point)
+    if (!kept[point]) moved.push_back(point);
+  computed_count_ = static_cast<int>(moved.size());
+  Eigen::MatrixXd moved_points(static_cast<Eigen::Index>(moved.size()), 3);
+  for (size_t k = 0; k < moved.size(); ++k) moved_points.row(static_cast<Eigen::Index>(k)) = points.row(moved[k]);
+  const BasisEmbedding located(basis, moved_points);
+  std::vector<int> point_root(static_cast<size_t>(points.rows()), -1);  // the DisjointSets root of a moved point
+  for (size_t k = 0; k < moved.size(); ++k) {
+    point_root[moved[k]] = piece_of(located.basis_of(static_cast<Eigen::Index>(k)));
+    if (const auto slot = place.find(point_root[moved[k]]); slot != place.end()) point_piece_[moved[k]] = slot->second;
+  }
   const Eigen::VectorXd radii = options.support * spacing;
-  const SupportCubes supports(samples, radii, sample_piece);
-  const std::unordered_map<int, PieceSamples> reachable = piece_samples(samples, radii, sample_piece);
+  // Only the pieces of the points located: those kept need no samples.
+  std::vector<char> asked(static_cast<size_t>(functions), 0);
+  for (const Eigen::Index point : moved)
+    if (point_root[point] >= 0) asked[point_root[point]] = 1;
+  std::vector<int> asked_piece(sample_piece);
+  for (int& piece : asked_piece)
+    if (piece >= 0 && !asked[piece]) piece = -1;
+  const SupportCubes supports(samples, radii, asked_piece);
+  const std::unordered_map<int, PieceSamples> reachable = piece_samples(samples, radii, asked_piece);
   std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel for schedule(dynamic, 256)
   for (Eigen::Index point = 0; point < points.rows(); ++point) {
     try {
+      if (kept[point]) {
+        PointWeights& result = found[static_cast<size_t>(point)];
+        for (long long entry = previous->offsets_[point]; entry < previous->offsets_[point + 1]; ++entry) {
+          result.samples.push_back(sample_after[previous->samples_[entry]]);
+          result.weights.push_back(previous->weights_[entry]);
+        }
+        continue;
+      }
       const Eigen::Vector3d x = points.row(point).transpose();
       std::vector<int> near;
       std::vector<double> theta;
       // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
       // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
       // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)); ℓ's scale cancels there.
-      const auto own = reachable.find(point_piece[point]);
+      const auto own = reachable.find(point_root[point]);
       bool solved = false;
       // A point whose piece has no samples has nothing to be embedded by (the error below).
       for (double enlarge = 1.0; own != reachable.end() && enlarge <= 8.0 && !solved; enlarge *= 1.5) {
@@ -176,7 +227,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           near.push_back(sample);
           theta.push_back(weight);
         };
-        if (enlarge == 1.0) supports.for_each_at(point_piece[point], x.transpose(), add);
+        if (enlarge == 1.0) supports.for_each_at(point_root[point], x.transpose(), add);
         else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
         const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
         if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
@@ -207,6 +258,56 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
     max_samples_per_point_ = std::max(max_samples_per_point_, static_cast<int>(point.samples.size()));
     offsets_.push_back(static_cast<long long>(samples_.size()));
   }
+}
+
+std::unordered_map<int, int> MlsEmbedding::list_pieces(const Eigen::MatrixXd& samples, const Eigen::VectorXd& spacing,
+                                                       const std::vector<int>& sample_piece) {
+  std::unordered_map<int, int> place;
+  for (Eigen::Index sample = 0; sample < samples.rows(); ++sample) {
+    const auto [slot, added] = place.try_emplace(sample_piece[sample], static_cast<int>(pieces_.size()));
+    if (added) pieces_.emplace_back();
+    pieces_[slot->second].samples.push_back(static_cast<int>(sample));
+  }
+  const auto coordinates_of = [&](int sample) {
+    return std::array<double, 4>{samples(sample, 0), samples(sample, 1), samples(sample, 2), spacing[sample]};
+  };
+  for (PieceOrder& piece : pieces_) {
+    std::sort(piece.samples.begin(), piece.samples.end(),
+              [&](int a, int b) { return coordinates_of(a) < coordinates_of(b); });
+    for (const int sample : piece.samples)
+      for (const double value : coordinates_of(sample)) piece.coordinates.push_back(value);
+  }
+  return place;
+}
+
+std::vector<char> MlsEmbedding::keep_points(const MlsEmbedding* previous, const Eigen::MatrixXd& points,
+                                            std::vector<int>& sample_after) {
+  std::vector<char> kept(static_cast<size_t>(points.rows()), 0);
+  if (!previous) return kept;
+  // Each piece of `previous` with the same samples' coordinates as one here: its twin.
+  std::unordered_multimap<std::uint64_t, int> before;
+  for (size_t piece = 0; piece < previous->pieces_.size(); ++piece)
+    before.emplace(hash_of(previous->pieces_[piece].coordinates), static_cast<int>(piece));
+  std::vector<int> twin(previous->pieces_.size(), -1);
+  sample_after.assign(static_cast<size_t>(previous->sample_count_), -1);
+  for (size_t piece = 0; piece < pieces_.size(); ++piece) {
+    const auto [first, last] = before.equal_range(hash_of(pieces_[piece].coordinates));
+    for (auto match = first; match != last; ++match) {
+      const PieceOrder& old = previous->pieces_[match->second];
+      if (twin[match->second] >= 0 || old.coordinates != pieces_[piece].coordinates) continue;
+      twin[match->second] = static_cast<int>(piece);
+      // Samples of one position and spacing have one weight: their order does not matter.
+      for (size_t k = 0; k < old.samples.size(); ++k) sample_after[old.samples[k]] = pieces_[piece].samples[k];
+      break;
+    }
+  }
+  for (Eigen::Index point = 0; point < std::min(points.rows(), previous->points_.rows()); ++point) {
+    const int old_piece = previous->point_piece_[point];
+    if (old_piece < 0 || twin[old_piece] < 0 || points.row(point) != previous->points_.row(point)) continue;
+    kept[point] = 1;
+    point_piece_[point] = twin[old_piece];
+  }
+  return kept;
 }
 
 Eigen::VectorXd longest_edge_at_nodes(const PolyhedralMesh& mesh) {

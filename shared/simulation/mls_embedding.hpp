@@ -17,6 +17,7 @@
 // edge or node evaluates every element containing it), a point's piece that of the
 // element containing it (or the nearest one).
 #include <Eigen/Core>
+#include <unordered_map>
 #include <vector>
 
 #include "shared/mesh/polyhedral_mesh.hpp"
@@ -42,25 +43,55 @@ public:
   /// (cells_at_nodes), which the stitching averages and the pieces are joined through,
   /// instead of every element containing the sample's position: after a cut, the copies
   /// of a node on the blade share a position but not a side.
+  /// previous (optional): the embedding before an event. A point at the same index and
+  /// position whose piece holds the same samples (positions and spacings) as its piece
+  /// there keeps its weights, on those samples' new indices: the weights depend on nothing
+  /// else, so they are what this constructor computes, to the rounding of the order the
+  /// samples are summed in. A cut appends the surface's new vertices, so the chips and
+  /// bodies a cut left alone keep their points' weights.
   MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::MatrixXd& samples, const Eigen::VectorXd& spacing,
                const Eigen::MatrixXd& points, const MlsOptions& options = {},
-               const std::vector<std::vector<int>>& sample_elements = {});
+               const std::vector<std::vector<int>>& sample_elements = {}, const MlsEmbedding* previous = nullptr);
 
   /// Displacement at every embedded point (#points × 3) from the coefficients u.
   Eigen::MatrixXd displacement(const Eigen::VectorXd& u) const override;
-  /// {"mls_max_samples_per_vertex"}.
-  nlohmann::json facts() const override { return {{"mls_max_samples_per_vertex", max_samples_per_point_}}; }
+  /// {"mls_max_samples_per_vertex", "surface_vertices_relocated": the points whose weights
+  /// were computed (all but those kept from `previous`)}.
+  nlohmann::json facts() const override {
+    return {{"mls_max_samples_per_vertex", max_samples_per_point_}, {"surface_vertices_relocated", computed_count_}};
+  }
   /// The stitched sample displacements ũ_i of eq. (30) (#samples × 3).
   Eigen::MatrixXd stitched(const Eigen::VectorXd& u) const { return stitched_.displacement(u); }
   /// The largest number of samples one point's weights use.
   int max_samples_per_point() const { return max_samples_per_point_; }
 
 private:
+  // What the embedding after an event compares with: the points, and per point its piece's
+  // samples in the order of their positions and spacings (pieces_[point_piece_[point]]).
+  struct PieceOrder {
+    std::vector<int> samples;         // sorted by (position, spacing)
+    std::vector<double> coordinates;  // x, y, z, spacing of each, in that order
+  };
+  /// Fills pieces_ from the samples' pieces (DisjointSets roots); returns each root's place.
+  std::unordered_map<int, int> list_pieces(const Eigen::MatrixXd& samples, const Eigen::VectorXd& spacing,
+                                           const std::vector<int>& sample_piece);
+  /// Per point, whether it keeps its weights from `previous` (the constructor's comment
+  /// says when), setting point_piece_ of those; `sample_after`: per sample of `previous`
+  /// in a piece with a twin here, its index here (else −1).
+  std::vector<char> keep_points(const MlsEmbedding* previous, const Eigen::MatrixXd& points,
+                                std::vector<int>& sample_after);
+
+  Eigen::Index sample_count_ = 0;
+  Eigen::MatrixXd points_;
+  std::vector<int> point_piece_;  // per point: its place in pieces_, −1 for none
+  std::vector<PieceOrder> pieces_;
+
   BasisEmbedding stitched_;
   std::vector<long long> offsets_{0};  // #points + 1
   std::vector<int> samples_;
   std::vector<double> weights_;
   int max_samples_per_point_ = 0;
+  int computed_count_ = 0;
 };
 
 /// Per node of a polyhedral mesh the longest mesh edge at it (#nodes): the MLS sample

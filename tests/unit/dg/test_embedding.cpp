@@ -139,5 +139,38 @@ TEST(DgEmbedding, MlsKeepsTheSidesOfACutApart) {
   EXPECT_GT(checked, 390);
 }
 
+// After a second cut (x = 0.8) that leaves the slab x < 1/3 alone, the MLS embedding built
+// from the one before keeps the weights of the slab's points, on its samples' new indices,
+// and computes only the others': its displacement of a field discontinuous across every
+// face is the embedding's built afresh, to rounding.
+TEST(DgEmbedding, MlsAfterACutKeepsTheWeightsOfThePiecesItLeftAlone) {
+  const VolumeMesh volume = structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()),
+                                            {3, 3, 3}, ElementType::hex8);
+  const PolyhedralMesh before = cut_polyhedral_mesh(polyhedral_mesh_from_volume_mesh(volume),
+                                                    {Eigen::Vector3d(1.0 / 3.0, 0, 0), Eigen::Vector3d::UnitX()})
+                                    .mesh;
+  const PolyhedralMesh after = cut_polyhedral_mesh(before, {Eigen::Vector3d(0.8, 0, 0), Eigen::Vector3d::UnitX()}).mesh;
+  const Eigen::MatrixXd points = random_points(400);
+  const DgLinearSystem system_before(mesh_cells(before), mesh_faces(before), DgSettings{});
+  const MonomialBasisEvaluator evaluator_before(before, system_before);
+  const MlsEmbedding first(evaluator_before, before.nodes, longest_edge_at_nodes(before), points, MlsOptions{},
+                           cells_at_nodes(before));
+  const DgLinearSystem system(mesh_cells(after), mesh_faces(after), DgSettings{});
+  const MonomialBasisEvaluator evaluator(after, system);
+  const MlsEmbedding fresh(evaluator, after.nodes, longest_edge_at_nodes(after), points, MlsOptions{},
+                           cells_at_nodes(after));
+  const MlsEmbedding kept(evaluator, after.nodes, longest_edge_at_nodes(after), points, MlsOptions{},
+                          cells_at_nodes(after), &first);
+  int beyond = 0;
+  for (Eigen::Index p = 0; p < points.rows(); ++p) beyond += points(p, 0) > 1.0 / 3.0;
+  EXPECT_EQ(fresh.facts()["surface_vertices_relocated"], points.rows());
+  EXPECT_EQ(kept.facts()["surface_vertices_relocated"], beyond);
+  EXPECT_LT(beyond, points.rows() - 100);
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> coefficient(-1.0, 1.0);
+  const Eigen::VectorXd u = Eigen::VectorXd::NullaryExpr(system.dof_count(), [&] { return coefficient(random); });
+  EXPECT_LE((kept.displacement(u) - fresh.displacement(u)).cwiseAbs().maxCoeff(), 1e-13);
+}
+
 }  // namespace
 }  // namespace altfem::dg
