@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 
+#include "shared/mesh/bounding_box.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/cut_surface_pieces.hpp"
@@ -30,6 +31,8 @@ Eigen::MatrixXd vertex_normals(const SurfaceMesh& surface, const std::vector<cha
     const Eigen::Vector3d p[3] = {surface.vertices.row(surface.triangles(t, 0)),
                                   surface.vertices.row(surface.triangles(t, 1)),
                                   surface.vertices.row(surface.triangles(t, 2))};
+    if (!marked[surface.triangles(t, 0)] && !marked[surface.triangles(t, 1)] && !marked[surface.triangles(t, 2)])
+      continue;
     const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
     if (normal.norm() == 0) continue;
     for (int k = 0; k < 3; ++k) {
@@ -194,6 +197,7 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
   std::vector<char> self_intersecting;  // per output triangle
   std::vector<int> pieces_intersecting_themselves;
   int left_whole = 0;
+  std::vector<char> in_opened_piece(static_cast<std::size_t>(surface.vertices.rows()), 0);
   for (const auto& [piece, triangles] : triangles_of) {
     bool opened = false, grazed = false,
          intersects_itself = marks_apply && surface.self_intersecting[triangles.front()];
@@ -233,6 +237,9 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
     if (!opened)
       for (const int t : triangles)
         cut.triangles.push_back({surface.triangles(t, 0), surface.triangles(t, 1), surface.triangles(t, 2)});
+    else
+      for (const int t : triangles)
+        for (int k = 0; k < 3; ++k) in_opened_piece[surface.triangles(t, k)] = 1;
     self_intersecting.resize(cut.triangles.size(), intersects_itself);
     if (intersects_itself) pieces_intersecting_themselves.push_back(piece);
   }
@@ -264,16 +271,19 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
 
   // The vertices of this cut and of earlier ones read their field a hair inside the
   // material they bound: against their angle-weighted normal, by 1e-7 of the body's size.
+  // Those of earlier cuts in pieces this one left whole keep theirs: their triangles are
+  // as they were, in the same order (and cut points lie inside the body's bounds).
   std::vector<char> on_cut(static_cast<std::size_t>(out.vertices.rows()), 0);
   for (const int vertex : cut.cut_vertices) on_cut[vertex] = 1;
-  if (surface.embedding_offsets.size() != 0)
-    for (Eigen::Index v = 0; v < cut.input_count; ++v)
-      if (!surface.embedding_offsets.row(v).isZero()) on_cut[v] = 1;
-  const Eigen::MatrixXd normals = vertex_normals(out, on_cut);
-  Eigen::AlignedBox3d bounds;
-  for (Eigen::Index v = 0; v < out.vertices.rows(); ++v) bounds.extend(Eigen::Vector3d(out.vertices.row(v)));
-  const double hair = 1e-7 * bounds.diagonal().norm();
   out.embedding_offsets = Eigen::MatrixXd::Zero(out.vertices.rows(), 3);
+  if (surface.embedding_offsets.size() != 0)
+    for (Eigen::Index v = 0; v < cut.input_count; ++v) {
+      if (surface.embedding_offsets.row(v).isZero()) continue;
+      if (in_opened_piece[v]) on_cut[v] = 1;
+      else out.embedding_offsets.row(v) = surface.embedding_offsets.row(v);
+    }
+  const Eigen::MatrixXd normals = vertex_normals(out, on_cut);
+  const double hair = 1e-7 * bounding_box(out.vertices).diagonal();
   for (Eigen::Index v = 0; v < out.vertices.rows(); ++v) {
     const double length = normals.row(v).norm();
     if (on_cut[v] && length > 1e-6) out.embedding_offsets.row(v) = -hair / length * normals.row(v);

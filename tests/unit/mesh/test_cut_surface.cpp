@@ -55,37 +55,6 @@ TEST(CutSurface, APlaneSplitsABoxIntoTwoClosedPiecesWithTheirExactVolumes) {
   EXPECT_GT(cut.facts["cap_triangles"].get<int>(), 0);
 }
 
-TEST(CutSurface, EachCopyOfACutPointReadsItsFieldInsideItsOwnSide) {
-  const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
-  const SurfaceCut cut = cut_surface(box, CuttingPlane(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX()));
-  const Eigen::MatrixXd points = embedding_points(cut.surface);
-  const double hair = 1e-7 * std::sqrt(3.0);
-  // Which side a vertex bounds: where its piece's vertices lie on average.
-  const std::vector<int> piece_of = surface_vertex_pieces(cut.surface);
-  std::map<int, double> x_sum_of;
-  for (Eigen::Index v = 0; v < cut.surface.vertices.rows(); ++v)
-    x_sum_of[piece_of[v]] += cut.surface.vertices(v, 0) - 0.5;
-  int on_cut = 0;
-  for (Eigen::Index v = 0; v < cut.surface.vertices.rows(); ++v) {
-    if (std::abs(cut.surface.vertices(v, 0) - 0.5) > 1e-12) {
-      EXPECT_EQ(points.row(v), cut.surface.vertices.row(v)) << "vertex " << v;
-      continue;
-    }
-    ++on_cut;
-    const double side = x_sum_of[piece_of[v]];
-    ASSERT_NE(side, 0) << "vertex " << v;
-    const Eigen::Vector3d offset = points.row(v) - cut.surface.vertices.row(v);
-    EXPECT_NEAR(offset.norm(), hair, 1e-8 * hair);
-    EXPECT_GT(offset.x() * side, 0) << "vertex " << v;
-    // Into the box, not out of it.
-    for (int axis = 0; axis < 3; ++axis) {
-      EXPECT_GE(points(v, axis), 0.0);
-      EXPECT_LE(points(v, axis), 1.0);
-    }
-  }
-  EXPECT_GE(on_cut, 8);  // the four corners of the section, each twice, at least
-}
-
 TEST(CutSurface, ABladeThroughVerticesAndAlongEdgesIsAnOrdinaryCut) {
   // The plane x + y = 1 holds the box edges (1, 0, z) and (0, 1, z) and its faces' diagonals.
   const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
