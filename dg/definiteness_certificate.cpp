@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "dg/dg_integral_memory.hpp"
 #include "dg/face_polynomials.hpp"
 #include "shared/solve/process_ranks.hpp"
 
@@ -85,6 +86,28 @@ double relative_eigenvalue(const Eigen::MatrixXd& stiffness, const Eigen::Matrix
   return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(relative, Eigen::EigenvaluesOnly).eigenvalues().tail(1)[0];
 }
 
+// The ratio the build before computed for the combination `key` (this build's classes) as
+// its classes there; false when a class was integrated here or the combination is new.
+bool ratio_before(const DgLinearSystem& system, const std::vector<int>& key, double& ratio) {
+  const std::map<std::vector<int>, double>& before = system.previous_certificate_ratios();
+  if (before.empty()) return false;
+  std::vector<int> there;
+  there.reserve(key.size());
+  for (std::size_t k = 0; k + 1 < key.size(); ++k) {
+    const int face_class = system.previous_face_class(key[k] / 2);
+    if (face_class < 0) return false;
+    there.push_back(2 * face_class + key[k] % 2);
+  }
+  std::sort(there.begin(), there.end());
+  const int cell_class = system.previous_cell_class(key.back());
+  if (cell_class < 0) return false;
+  there.push_back(cell_class);
+  const auto found = before.find(there);
+  if (found == before.end()) return false;
+  ratio = found->second;
+  return true;
+}
+
 }  // namespace
 
 DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
@@ -117,12 +140,22 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
       combination_cell.push_back(cell);
   }
 
+  // A combination of classes the build before had (matrices taken bit for bit) keeps its
+  // ratio; only the others' sides' traces and eigenproblems are computed.
+  std::vector<double> ratios(combination_cell.size(), 0);
+  std::vector<char> known(combination_cell.size(), 0);
+  for (const auto& [key, index] : combination_index) known[index] = ratio_before(system, key, ratios[index]);
+  std::vector<char> side_needed(side_representative.size(), 0);
+  for (std::size_t k = 0; k < combination_cell.size(); ++k)
+    if (!known[k])
+      for (const int side : cell_sides[combination_cell[k]]) side_needed[side] = 1;
+
   std::vector<Eigen::MatrixXd> side_traces(side_representative.size());
   std::vector<char> side_bounded(side_representative.size(), 1);
 #pragma omp parallel for schedule(dynamic, 8)
   for (int s = 0; s < static_cast<int>(side_representative.size()); ++s) {
     const int f = side_representative[s];
-    if (f < 0) continue;
+    if (f < 0 || !side_needed[s]) continue;
     const DgFace& face = faces[f];
     const int cell = s % 2 == 0 ? face.minus : face.plus;
     bool bounded = true;
@@ -131,9 +164,9 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
     if (bounded) side_traces[s] = trace_matrix(face, system.basis(cell), system.material(cell), weight);
   }
 
-  std::vector<double> ratios(combination_cell.size());
 #pragma omp parallel for schedule(dynamic, 4)
   for (int k = 0; k < static_cast<int>(combination_cell.size()); ++k) {
+    if (known[k]) continue;
     const int cell = combination_cell[k];
     const Eigen::MatrixXd& stiffness = system.class_stiffness(system.cell_class(cell));
     Eigen::MatrixXd traces = Eigen::MatrixXd::Zero(stiffness.rows(), stiffness.cols());
@@ -144,8 +177,10 @@ DefinitenessCertificate certify_definiteness(const DgLinearSystem& system) {
     }
     ratios[k] = bounded ? relative_eigenvalue(stiffness, traces) : std::numeric_limits<double>::infinity();
   }
+  if (const std::shared_ptr<DgIntegralMemory> memory = system.integral_memory())
+    for (const auto& [key, index] : combination_index) memory->certificate_ratios[key] = ratios[index];
   DefinitenessCertificate certificate;
-  certificate.cells_checked = static_cast<int>(ratios.size());
+  certificate.cells_checked = static_cast<int>(std::count(known.begin(), known.end(), 0));
   certificate.largest_ratio = ratios.empty() ? 0 : *std::max_element(ratios.begin(), ratios.end());
   if (ranks::distributed()) {  // each rank checked its own cells
     certificate.cells_checked = static_cast<int>(ranks::sum(static_cast<double>(certificate.cells_checked)));

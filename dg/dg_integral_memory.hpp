@@ -11,6 +11,7 @@
 // the settings and the materials, the penalty among them — must be the same, else nothing
 // is taken (integrates_as).
 #include <Eigen/Core>
+#include <map>
 #include <vector>
 
 #include "dg/cell_similarity.hpp"
@@ -35,6 +36,11 @@ struct DgIntegralMemory {
   std::vector<DgCellIntegrals> cells;
   SimilarityClasses face_classes;      ///< of faces, their structure holding the cell classes above
   std::vector<Eigen::MatrixXd> faces;  ///< per face class, (3n⁻ + 3n⁺) square
+  /// The penalty's definiteness certificate (definiteness_certificate.hpp) per combination
+  /// of a cell class and its faces' (2 · face class + side), those sorted, the cell class
+  /// last: the largest eigenvalue it computed there. A combination of classes taken from
+  /// here has the same matrices, so the same eigenvalue.
+  std::map<std::vector<int>, double> certificate_ratios;
 
   /// True when a system with these settings and materials integrates every class as this
   /// one did (everything the matrices read besides the geometry is equal).

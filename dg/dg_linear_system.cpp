@@ -128,6 +128,10 @@ DgLinearSystem::DgLinearSystem(std::vector<Polyhedron> cells, std::vector<DgFace
                                                                   .faces = {}});
   const std::vector<int> previous_cell_classes = add_element_matrices(pattern, previous);
   add_face_matrices(pattern, previous, previous_cell_classes);
+  if (previous) {
+    previous_cell_classes_ = previous_cell_classes;
+    previous_certificates_ = std::move(previous->certificate_ratios);
+  }
   if (!cell_parts_.empty()) {
     if (!settings_.share_stiffness)
       ranks::sum(std::span<double>(stiffness_.valuePtr(), static_cast<std::size_t>(stiffness_.nonZeros())));
@@ -289,6 +293,7 @@ void DgLinearSystem::add_face_matrices(const CellBlockPattern& pattern, DgIntegr
   similarity_.remembered_face_classes =
       static_cast<int>(std::count_if(previous_classes.begin(), previous_classes.end(), [](int p) { return p >= 0; }));
   if (memory_) memory_->face_classes = std::move(face_similarity);
+  if (previous) previous_face_classes_ = std::move(previous_classes);
 }
 
 DgLinearSystem::~DgLinearSystem() = default;

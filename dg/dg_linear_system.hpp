@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -193,6 +194,12 @@ public:
   /// This build's matrices by class, for the system an event rebuilds, which moves what it
   /// takes out of them (null unless IntegralReuse::remember).
   std::shared_ptr<DgIntegralMemory> integral_memory() const { return memory_; }
+  /// Per class of cells, or of faces, the class of the build before whose matrices it took
+  /// (−1: integrated here); and that build's certificate ratios (DgIntegralMemory), in its
+  /// classes. Empty without such a build.
+  int previous_cell_class(int k) const { return previous_cell_classes_.empty() ? -1 : previous_cell_classes_[k]; }
+  int previous_face_class(int k) const { return previous_face_classes_.empty() ? -1 : previous_face_classes_[k]; }
+  const std::map<std::vector<int>, double>& previous_certificate_ratios() const { return previous_certificates_; }
 
   /// ∫ f·v for a force density f, by a rule of strength 2k + 2 on each cell (exact for
   /// polynomial f of degree ≤ k + 2).
@@ -249,6 +256,8 @@ private:
   Eigen::SparseMatrix<double> stiffness_;
   SimilarityStatistics similarity_;
   std::shared_ptr<DgIntegralMemory> memory_;
+  std::vector<int> previous_cell_classes_, previous_face_classes_;  // per class (empty: no build before)
+  std::map<std::vector<int>, double> previous_certificates_;
 };
 
 }  // namespace altfem::dg

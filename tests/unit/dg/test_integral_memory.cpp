@@ -3,11 +3,13 @@
 // matrices from the build before (dg/dg_integral_memory.hpp). The rebuilt K must be the
 // one a fresh build gives (≤ 1e-12 relative, the tolerance within which translates share
 // matrices), the counts must name only what the cut changed, and a build with another
-// penalty, or after the matrices were taken, must take nothing.
+// penalty, or after the matrices were taken, must take nothing. The penalty's certificate
+// is computed only for the combinations of classes the rebuild integrated.
 #include <gtest/gtest.h>
 
 #include <set>
 
+#include "dg/definiteness_certificate.hpp"
 #include "dg/dg_integral_memory.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
@@ -79,6 +81,34 @@ TEST(IntegralMemory, ARebuildAfterACutIntegratesOnlyThePiecesAndTheirFaces) {
   // And none of those the uncut grid had: its faces' classes are all still present
   // (interior and boundary faces between cubes away from the slab) and all taken.
   EXPECT_EQ(counts.remembered_face_classes, before.similarity().face_classes);
+}
+
+TEST(IntegralMemory, ARebuildCertifiesOnlyTheCombinationsOfClassesItIntegrated) {
+  // The penalty's certificate per combination of a cell's class and its faces' is that of
+  // the build before wherever those classes were taken from it; the others are computed.
+  // Every combination's ratio is a fresh build's (the same classes, in the same order).
+  const PolyhedralMesh grid = unit_cube_mesh(ElementType::hex8, 4);
+  const PolyhedralMesh cut =
+      cut_polyhedral_mesh(grid, CuttingPlane(Eigen::Vector3d(0.6, 0, 0), Eigen::Vector3d::UnitX())).mesh;
+  const DgLinearSystem before = system_of(grid, 20);
+  const DefinitenessCertificate first = certify_definiteness(before);
+  const DgLinearSystem rebuilt = system_of(cut, 20, before.integral_memory());
+  const DgLinearSystem fresh = system_of(cut, 20);
+  const DefinitenessCertificate kept = certify_definiteness(rebuilt), computed = certify_definiteness(fresh);
+  const auto& ratios = rebuilt.integral_memory()->certificate_ratios;
+  const auto& fresh_ratios = fresh.integral_memory()->certificate_ratios;
+  ASSERT_EQ(ratios.size(), fresh_ratios.size());
+  for (auto it = ratios.begin(), other = fresh_ratios.begin(); it != ratios.end(); ++it, ++other) {
+    ASSERT_EQ(it->first, other->first);
+    EXPECT_NEAR(it->second, other->second, 1e-10 * other->second);
+  }
+  EXPECT_EQ(kept.certified, computed.certified);
+  EXPECT_NEAR(kept.largest_ratio, computed.largest_ratio, 1e-10 * computed.largest_ratio);
+  EXPECT_EQ(computed.cells_checked, static_cast<int>(fresh_ratios.size()));
+  EXPECT_GT(first.cells_checked, 0);
+  // The combinations away from the slab's pieces keep theirs.
+  EXPECT_GE(kept.cells_checked, 1);
+  EXPECT_LT(kept.cells_checked, computed.cells_checked);
 }
 
 TEST(IntegralMemory, ABuildWithAnotherPenaltyTakesNothing) {
