@@ -189,66 +189,69 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
   const std::unordered_map<int, PieceSamples> reachable = piece_samples(samples, radii, asked_piece);
   std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
-#pragma omp parallel for schedule(dynamic, 256)
-  for (Eigen::Index point = 0; point < points.rows(); ++point) {
-    try {
-      if (kept[point]) {
-        PointWeights& result = found[static_cast<size_t>(point)];
-        for (long long entry = previous->offsets_[point]; entry < previous->offsets_[point + 1]; ++entry) {
-          result.samples.push_back(sample_after[previous->samples_[entry]]);
-          result.weights.push_back(previous->weights_[entry]);
+#pragma omp parallel
+  {
+    std::vector<int> near;  // per thread: no allocation per point
+    std::vector<double> theta;
+#pragma omp for schedule(dynamic, 32)
+    for (Eigen::Index point = 0; point < points.rows(); ++point) {
+      try {
+        if (kept[point]) {
+          PointWeights& result = found[static_cast<size_t>(point)];
+          for (long long entry = previous->offsets_[point]; entry < previous->offsets_[point + 1]; ++entry) {
+            result.samples.push_back(sample_after[previous->samples_[entry]]);
+            result.weights.push_back(previous->weights_[entry]);
+          }
+          continue;
         }
-        continue;
-      }
-      const Eigen::Vector3d x = points.row(point).transpose();
-      std::vector<int> near;
-      std::vector<double> theta;
-      // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
-      // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
-      // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)); ℓ's scale cancels there.
-      const auto own = reachable.find(point_root[point]);
-      bool solved = false;
-      // A point whose piece has no samples has nothing to be embedded by (the error below).
-      for (double enlarge = 1.0; own != reachable.end() && enlarge <= 8.0 && !solved; enlarge *= 1.5) {
-        near.clear();
-        theta.clear();
-        Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
-        const double reach = enlarge * own->second.largest_radius;
-        // Both grids hold the point's own piece's samples alone.
-        const auto add = [&](int sample) {
-          const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
-          const double distance = (samples.row(sample).transpose() - x).norm();
-          if (distance >= radius) return;
-          const double weight =
-              std::exp(-distance * distance / (sigma * sigma)) - std::exp(-radius * radius / (sigma * sigma));
-          Eigen::Vector4d p;
-          p << 1.0, (samples.row(sample).transpose() - x) / reach;
-          moments += weight * p * p.transpose();
-          near.push_back(sample);
-          theta.push_back(weight);
-        };
-        if (enlarge == 1.0) supports.for_each_at(point_root[point], x.transpose(), add);
-        else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
-        const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
-        if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
-        const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
-                                    eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
-        PointWeights& result = found[static_cast<size_t>(point)];
-        for (size_t n = 0; n < near.size(); ++n) {
-          Eigen::Vector4d p;
-          p << 1.0, (samples.row(near[n]).transpose() - x) / reach;
-          result.samples.push_back(near[n]);
-          result.weights.push_back(theta[n] * row.dot(p));
+        const Eigen::Vector3d x = points.row(point).transpose();
+        // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
+        // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
+        // w_i(x) = θ_i e₀ᵀ A⁻¹ p_i (eq. (32)); ℓ's scale cancels there.
+        const auto own = reachable.find(point_root[point]);
+        bool solved = false;
+        // A point whose piece has no samples has nothing to be embedded by (the error below).
+        for (double enlarge = 1.0; own != reachable.end() && enlarge <= 8.0 && !solved; enlarge *= 1.5) {
+          near.clear();
+          theta.clear();
+          Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
+          const double reach = enlarge * own->second.largest_radius;
+          // Both grids hold the point's own piece's samples alone.
+          const auto add = [&](int sample) {
+            const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
+            const double distance = (samples.row(sample).transpose() - x).norm();
+            if (distance >= radius) return;
+            const double weight =
+                std::exp(-distance * distance / (sigma * sigma)) - std::exp(-radius * radius / (sigma * sigma));
+            Eigen::Vector4d p;
+            p << 1.0, (samples.row(sample).transpose() - x) / reach;
+            moments += weight * p * p.transpose();
+            near.push_back(sample);
+            theta.push_back(weight);
+          };
+          if (enlarge == 1.0) supports.for_each_at(point_root[point], x.transpose(), add);
+          else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
+          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
+          if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
+          const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                                      eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
+          PointWeights& result = found[static_cast<size_t>(point)];
+          for (size_t n = 0; n < near.size(); ++n) {
+            Eigen::Vector4d p;
+            p << 1.0, (samples.row(near[n]).transpose() - x) / reach;
+            result.samples.push_back(near[n]);
+            result.weights.push_back(theta[n] * row.dot(p));
+          }
+          solved = true;
         }
-        solved = true;
-      }
-      if (!solved)
-        throw NumericalError(
-            "MLS embedding: embedded point " + std::to_string(point) +
-            " has fewer than four non-coplanar mesh nodes of its own piece within 8 times its support");
-    } catch (...) {
+        if (!solved)
+          throw NumericalError(
+              "MLS embedding: embedded point " + std::to_string(point) +
+              " has fewer than four non-coplanar mesh nodes of its own piece within 8 times its support");
+      } catch (...) {
 #pragma omp critical(mls_embedding_failure)
-      if (!failure) failure = std::current_exception();
+        if (!failure) failure = std::current_exception();
+      }
     }
   }
   if (failure) std::rethrow_exception(failure);
