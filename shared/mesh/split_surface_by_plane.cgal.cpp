@@ -135,12 +135,17 @@ bool mark_nesting(Triangulation& triangulation, const std::set<Edge>& borders, c
 // A face's edge from its corner `corner` (point `from`) to the next (point `to`).
 struct DirectedEdge {
   int from, to, face, corner;
+  int low() const { return std::min(from, to); }
+  int high() const { return std::max(from, to); }
+  // By the edge its points make, then its direction: the uses of one edge either way are
+  // one run, those from its lower point first.
   bool operator<(const DirectedEdge& other) const {
-    return std::tie(from, to, face, corner) < std::tie(other.from, other.to, other.face, other.corner);
+    return std::make_tuple(low(), high(), from, face, corner) <
+           std::make_tuple(other.low(), other.high(), other.from, other.face, other.corner);
   }
 };
 
-// Every face's edges, sorted: the uses of one directed edge are a run.
+// Every face's edges, sorted as above.
 std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& faces) {
   std::vector<DirectedEdge> edges;
   edges.reserve(3 * faces.size());
@@ -150,21 +155,18 @@ std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& 
   return edges;
 }
 
-// The run of `edges` from p to q.
-std::pair<std::vector<DirectedEdge>::const_iterator, std::vector<DirectedEdge>::const_iterator> uses_of(
-    const std::vector<DirectedEdge>& edges, int p, int q) {
-  return std::equal_range(
-      edges.begin(), edges.end(), DirectedEdge{p, q, 0, 0},
-      [](const DirectedEdge& a, const DirectedEdge& b) { return std::tie(a.from, a.to) < std::tie(b.from, b.to); });
-}
-
-// Calls visit(first, last) for each run of uses of one directed edge.
+// Calls visit(a, b, forward, backward) for each edge of points a < b: its uses from a to b
+// and from b to a, each a pair of iterators.
 template <class Visit>
-bool for_each_run(const std::vector<DirectedEdge>& edges, const Visit& visit) {
+bool for_each_edge(const std::vector<DirectedEdge>& edges, const Visit& visit) {
+  using Uses = std::pair<std::vector<DirectedEdge>::const_iterator, std::vector<DirectedEdge>::const_iterator>;
   for (auto first = edges.begin(); first != edges.end();) {
-    auto last = first;
-    while (last != edges.end() && last->from == first->from && last->to == first->to) ++last;
-    if (!visit(first, last)) return false;
+    const int a = first->low(), b = first->high();
+    auto middle = first;
+    while (middle != edges.end() && middle->low() == a && middle->high() == b && middle->from == a) ++middle;
+    auto last = middle;
+    while (last != edges.end() && last->low() == a && last->high() == b) ++last;
+    if (!visit(a, b, Uses{first, middle}, Uses{middle, last})) return false;
     first = last;
   }
   return true;
@@ -210,13 +212,12 @@ std::optional<std::vector<std::array<int, 3>>> cap_of(const std::vector<std::arr
                                                       const SplitPoints& split, const Eigen::Vector3d& facing) {
   const std::vector<DirectedEdge> edges = directed_edges(faces);
   std::set<Edge> borders, seams;
-  const bool single = for_each_run(edges, [&](auto first, auto last) {
-    if (last - first != 1) return false;  // a face twice, or a split face over another
-    const int p = first->from, q = first->to;
-    const auto reversed = uses_of(edges, q, p);
-    if (reversed.first == reversed.second) borders.insert(std::minmax(p, q));
-    else if (p < q && split.side[p] == 0 && split.side[q] == 0)
-      seams.insert({p, q});  // the cap must hold it, e.g. a valley's edge with both sides in the section
+  const bool single = for_each_edge(edges, [&](int a, int b, auto forward, auto backward) {
+    const auto count = [](auto uses) { return uses.second - uses.first; };
+    if (count(forward) > 1 || count(backward) > 1) return false;  // a face twice, or a split face over another
+    if (count(forward) + count(backward) == 1) borders.insert({a, b});
+    else if (split.side[a] == 0 && split.side[b] == 0)
+      seams.insert({a, b});  // the cap must hold it, e.g. a valley's edge with both sides in the section
     return true;
   });
   if (!single) return std::nullopt;
@@ -251,9 +252,10 @@ std::optional<std::vector<std::array<std::pair<int, int>, 3>>> pair_faces(const 
   const auto in_plane = [&](int f) {
     return split.side[faces[f][0]] == 0 && split.side[faces[f][1]] == 0 && split.side[faces[f][2]] == 0;
   };
-  const bool paired = for_each_run(edges, [&](auto first, auto last) {
-    if (first->from > first->to) return true;
-    const auto [reverse_first, reverse_last] = uses_of(edges, first->to, first->from);
+  const bool paired = for_each_edge(edges, [&](int, int, auto forward_uses, auto backward_uses) {
+    const auto [first, last] = forward_uses;
+    const auto [reverse_first, reverse_last] = backward_uses;
+    if (first == last) return true;
     if (reverse_last - reverse_first != last - first) return false;
     if (last - first == 1) {
       join(*first, *reverse_first);
