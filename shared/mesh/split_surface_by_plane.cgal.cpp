@@ -12,9 +12,9 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <set>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -135,13 +135,21 @@ bool mark_nesting(Triangulation& triangulation, const std::set<Edge>& borders, c
 // A face's edge from its corner `corner` (point `from`) to the next (point `to`).
 struct DirectedEdge {
   int from, to, face, corner;
+  // By the edge its points make, then its direction, then the face: the uses of one edge
+  // either way are one run, those from its lower point first. As two keys, for the sort.
+  std::uint64_t edge, order;
+  DirectedEdge(int from_point, int to_point, int face_index, int corner_index)
+      : from(from_point),
+        to(to_point),
+        face(face_index),
+        corner(corner_index),
+        edge(static_cast<std::uint64_t>(std::min(from, to)) << 32 | static_cast<std::uint32_t>(std::max(from, to))),
+        order(static_cast<std::uint64_t>(from > to) << 62 | static_cast<std::uint64_t>(face) << 2 |
+              static_cast<std::uint64_t>(corner)) {}
   int low() const { return std::min(from, to); }
   int high() const { return std::max(from, to); }
-  // By the edge its points make, then its direction: the uses of one edge either way are
-  // one run, those from its lower point first.
   bool operator<(const DirectedEdge& other) const {
-    return std::make_tuple(low(), high(), from, face, corner) <
-           std::make_tuple(other.low(), other.high(), other.from, other.face, other.corner);
+    return edge != other.edge ? edge < other.edge : order < other.order;
   }
 };
 
@@ -150,7 +158,7 @@ std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& 
   std::vector<DirectedEdge> edges;
   edges.reserve(3 * faces.size());
   for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-    for (int k = 0; k < 3; ++k) edges.push_back({faces[f][k], faces[f][(k + 1) % 3], f, k});
+    for (int k = 0; k < 3; ++k) edges.emplace_back(faces[f][k], faces[f][(k + 1) % 3], f, k);
   std::sort(edges.begin(), edges.end());
   return edges;
 }
@@ -163,9 +171,9 @@ bool for_each_edge(const std::vector<DirectedEdge>& edges, const Visit& visit) {
   for (auto first = edges.begin(); first != edges.end();) {
     const int a = first->low(), b = first->high();
     auto middle = first;
-    while (middle != edges.end() && middle->low() == a && middle->high() == b && middle->from == a) ++middle;
+    while (middle != edges.end() && middle->edge == first->edge && middle->from == a) ++middle;
     auto last = middle;
-    while (last != edges.end() && last->low() == a && last->high() == b) ++last;
+    while (last != edges.end() && last->edge == first->edge) ++last;
     if (!visit(a, b, Uses{first, middle}, Uses{middle, last})) return false;
     first = last;
   }
