@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "shared/geometry/exact_orientation.hpp"
 #include "shared/mesh/cut_tetrahedral_parts.hpp"
 
 namespace altfem {
@@ -60,7 +59,6 @@ Eigen::Vector3d ConeTetrahedra::position(int node) const {
 void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows, int& flat) {
   const Eigen::MatrixXd& nodes = pieces_.nodes;
   const auto before = [&](int a, int b) { return tetrahedral_cut::comes_before(nodes, a, b); };
-  const auto at = [&](int node) -> Eigen::Vector3d { return nodes.row(node).transpose(); };
   const std::vector<int>& faces = pieces_.cell_faces[piece];
   const std::vector<std::vector<int>> loops = tetrahedral_cut::outward_loops(pieces_, piece);
   int apex = loops[0][0];
