@@ -90,11 +90,8 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
   all.erase(std::unique(all.begin(), all.end()), all.end());
   const int centroid = add_centroid(all);
   const auto add = [&](int a, int b, int c) {
-    const Row row{centroid, a, b, c};
-    Eigen::MatrixXd corners(4, 3);
-    for (int k = 0; k < 4; ++k) corners.row(k) = position(row[k]).transpose();
-    if (tetrahedral_cut::is_flat(corners, {0, 1, 2, 3})) ++flat;
-    else rows.push_back(row);
+    if (tetrahedral_cut::is_flat(position(centroid), position(a), position(b), position(c))) ++flat;
+    else rows.push_back({centroid, a, b, c});
   };
   for (std::size_t index = 0; index < faces.size(); ++index) {
     std::vector<int> loop = loops[index];

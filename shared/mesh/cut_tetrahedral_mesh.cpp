@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <optional>
 #include <stdexcept>
 #include <utility>
 
@@ -32,12 +31,17 @@ VolumeMesh tetrahedra_of_rows(const Eigen::MatrixXd& nodes, const std::vector<Te
 // its pieces have positive volumes in floating point too and can be cut again.
 constexpr double flat_fraction = 1e-14;
 
-bool is_flat(const Eigen::MatrixXd& nodes, const TetrahedronRow& row) {
-  const Eigen::Vector3d origin = nodes.row(row[0]), a = nodes.row(row[1]), b = nodes.row(row[2]), c = nodes.row(row[3]);
+bool is_flat(const Eigen::Vector3d& origin, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+             const Eigen::Vector3d& c) {
   if (orientation_sign(a, b, c, origin) >= 0) return true;
   const double longest = std::max(
       {(a - origin).norm(), (b - origin).norm(), (c - origin).norm(), (b - a).norm(), (c - a).norm(), (c - b).norm()});
   return (a - origin).cross(b - origin).dot(c - origin) / 6 <= flat_fraction * longest * longest * longest;
+}
+
+bool is_flat(const Eigen::MatrixXd& nodes, const TetrahedronRow& row) {
+  return is_flat(nodes.row(row[0]).transpose(), nodes.row(row[1]).transpose(), nodes.row(row[2]).transpose(),
+                 nodes.row(row[3]).transpose());
 }
 
 bool comes_before(const Eigen::MatrixXd& nodes, int a, int b) {

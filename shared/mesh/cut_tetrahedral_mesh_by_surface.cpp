@@ -13,7 +13,7 @@
 // body instead (the planar cut's way of keeping faces whole) multiplied the fragments by
 // every plane of a closed or finely curved blade.
 #include <algorithm>
-#include <map>
+#include <set>
 
 #include "shared/mesh/cone_tetrahedra.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
@@ -30,11 +30,11 @@ using namespace tetrahedral_cut;
 // `before`'s or a copy of one (`origin`), and the set of them one of `before`'s faces'.
 std::vector<bool> faces_as_before(const PolyhedralMesh& before, const PolyhedralMesh& cut,
                                   const std::vector<int>& origin) {
-  std::map<std::vector<int>, int> faces;
+  std::set<std::vector<int>> faces;
   for (const std::vector<int>& loop : before.faces) {
     std::vector<int> key = loop;
     std::sort(key.begin(), key.end());
-    faces.emplace(std::move(key), 0);
+    faces.insert(std::move(key));
   }
   std::vector<bool> kept(static_cast<std::size_t>(cut.face_count()), false);
   std::vector<int> key;

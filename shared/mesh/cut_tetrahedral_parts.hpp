@@ -20,6 +20,9 @@ VolumeMesh tetrahedra_of_rows(const Eigen::MatrixXd& nodes, const std::vector<Te
 /// Not positively oriented (exact predicate), or a sliver by its rounded volume (under
 /// 1e-14 of its longest edge cubed).
 bool is_flat(const Eigen::MatrixXd& nodes, const TetrahedronRow& row);
+/// The same for the tetrahedron of these corners.
+bool is_flat(const Eigen::Vector3d& origin, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+             const Eigen::Vector3d& c);
 
 /// Node a before node b by position (lexicographic coordinates; equal positions by index):
 /// an order no cut changes, since nodes never move and a copy sits where its node does, so

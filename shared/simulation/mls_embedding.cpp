@@ -196,14 +196,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
 #pragma omp for schedule(dynamic, 32)
     for (Eigen::Index point = 0; point < points.rows(); ++point) {
       try {
-        if (kept[point]) {
-          PointWeights& result = found[static_cast<size_t>(point)];
-          for (long long entry = previous->offsets_[point]; entry < previous->offsets_[point + 1]; ++entry) {
-            result.samples.push_back(sample_after[previous->samples_[entry]]);
-            result.weights.push_back(previous->weights_[entry]);
-          }
-          continue;
-        }
+        if (kept[point]) continue;  // taken from `previous` below
         const Eigen::Vector3d x = points.row(point).transpose();
         // Eq. (31) around x: p_i = (1, (x_i − x)/ℓ) with ℓ the reach, so the 4 × 4 moment
         // matrix A = Σ θ_i p_i p_iᵀ is O(1); ũ(x) = e₀ᵀ A⁻¹ Σ θ_i p_i ũ_iᵀ, i.e.
@@ -255,10 +248,19 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
     }
   }
   if (failure) std::rethrow_exception(failure);
-  for (const PointWeights& point : found) {
-    samples_.insert(samples_.end(), point.samples.begin(), point.samples.end());
-    weights_.insert(weights_.end(), point.weights.begin(), point.weights.end());
-    max_samples_per_point_ = std::max(max_samples_per_point_, static_cast<int>(point.samples.size()));
+  for (Eigen::Index point = 0; point < points.rows(); ++point) {
+    const std::size_t start = samples_.size();
+    if (kept[point]) {
+      for (long long entry = previous->offsets_[point]; entry < previous->offsets_[point + 1]; ++entry)
+        samples_.push_back(sample_after[previous->samples_[entry]]);
+      weights_.insert(weights_.end(), previous->weights_.begin() + previous->offsets_[point],
+                      previous->weights_.begin() + previous->offsets_[point + 1]);
+    } else {
+      const PointWeights& weighed = found[static_cast<size_t>(point)];
+      samples_.insert(samples_.end(), weighed.samples.begin(), weighed.samples.end());
+      weights_.insert(weights_.end(), weighed.weights.begin(), weighed.weights.end());
+    }
+    max_samples_per_point_ = std::max(max_samples_per_point_, static_cast<int>(samples_.size() - start));
     offsets_.push_back(static_cast<long long>(samples_.size()));
   }
 }
