@@ -60,7 +60,6 @@ public:
   // On the meshes of the scene, or on meshes an event hands it.
   FcmMethod(const Scene& scene, const SceneGeometry& geometry, const FcmMesh* handed) : materials_(scene) {
     const FcmSpec spec = fcm_spec(scene);
-    ghost_penalty_ = spec.options.ghost_penalty > 0;
     for (const SceneEvent& event : scene.events) scene_cuts_ = scene_cuts_ || event.kind == EventKind::cut;
     FcmMesh meshes;
     if (handed) {
@@ -140,7 +139,6 @@ public:
     if (!forest_)
       return "it refines generated hexahedral grids only (discretization.fcm: a hex8, hex20 or hex27 `cell`, no "
              "`background` file)";
-    if (ghost_penalty_) return "its ghost penalty's face terms do not take hanging nodes yet";
     return grid_refine_refusal(refine, scene_cuts_);
   }
   /// The grid's leaves whose stress the event marks split 1→8, the forest balanced 2:1
@@ -206,7 +204,7 @@ private:
   std::optional<HexahedralForest> forest_;     ///< a generated hexahedral grid, refined or not
   int grid_free_nodes_ = 0;                    ///< its nodes from here on hang,
   HangingNodeSources grid_hanging_;            ///< from these
-  bool scene_cuts_ = false, ghost_penalty_ = false;
+  bool scene_cuts_ = false;
   std::unique_ptr<EmbeddedCutCells> cells_;
 };
 

@@ -1,6 +1,5 @@
 #include "shared/cut_cells/fcm_discretization.hpp"
 
-#include <stdexcept>
 #include <utility>
 
 #include "shared/common/error.hpp"
@@ -144,8 +143,6 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
     }
   fcm.constraints.free_nodes = static_cast<int>(used_nodes.size());
   if (hanging.sources && !hanging.sources->empty()) {
-    if (options.ghost_penalty > 0)
-      throw std::invalid_argument("build_fcm_discretization: the ghost penalty does not take hanging nodes");
     std::vector<int> grid_node(used_nodes.size());
     for (size_t i = 0; i < used_nodes.size(); ++i)
       grid_node[i] = hanging.grid_node.empty() ? used_nodes[i] : hanging.grid_node[used_nodes[i]];
@@ -191,13 +188,14 @@ FcmDiscretization build_fcm_discretization(const VolumeMesh& background, const C
   if (options.ghost_penalty > 0) {
     // Listed here, tabulated by the term once it knows its faces: over several ranks the
     // faces this rank owns (during the discretization's construction, below).
-    fcm.ghost = std::make_unique<GhostPenaltyFaces>(
-        ghost_penalty_faces(fcm.mesh, fcm.volume_fractions, [](int) { return false; }));
-    parts.terms.push_back(
-        ghost_penalty_term(*fcm.ghost, fcm.mesh.element_type, kept_materials, materials, options.ghost_penalty,
-                           [&mesh = fcm.mesh, &fractions = fcm.volume_fractions](const TabulatedHere& here) {
-                             return std::move(ghost_penalty_faces(mesh, fractions, here).faces);
-                           }));
+    const NodeConstraints* hanging_nodes = constrained ? &fcm.constraints : nullptr;
+    fcm.ghost = std::make_unique<GhostPenaltyFaces>(ghost_penalty_faces(
+        fcm.mesh, fcm.volume_fractions, [](int) { return false; }, hanging_nodes));
+    parts.terms.push_back(ghost_penalty_term(
+        *fcm.ghost, fcm.mesh.element_type, kept_materials, materials, options.ghost_penalty,
+        [&mesh = fcm.mesh, &fractions = fcm.volume_fractions, hanging_nodes](const TabulatedHere& here) {
+          return std::move(ghost_penalty_faces(mesh, fractions, here, hanging_nodes).faces);
+        }));
   }
   parts.materials = std::move(materials);
   NodeRegionFilter kept_dirichlet_nodes;

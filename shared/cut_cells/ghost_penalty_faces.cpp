@@ -25,21 +25,6 @@ struct CellFace {
   int cell, face;
 };
 
-// The interior faces of the mesh: both (cell, local face) pairs of each shared face, in
-// the order of their second sides.
-std::vector<std::array<CellFace, 2>> interior_faces(const VolumeMesh& mesh) {
-  const auto face_count = static_cast<int>(element_faces(element_shape(mesh.element_type)).size());
-  const std::vector<FaceNeighbour> neighbours = face_neighbours(mesh);
-  std::vector<std::array<CellFace, 2>> pairs;
-  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
-    for (int f = 0; f < face_count; ++f) {
-      const FaceNeighbour across = neighbours[static_cast<std::size_t>(cell) * face_count + f];
-      if (across.cell >= 0 && std::pair(across.cell, across.face) < std::pair(cell, f))
-        pairs.push_back({CellFace{across.cell, across.face}, CellFace{cell, f}});
-    }
-  return pairs;
-}
-
 // A point of the face rule in the minus cell's reference coordinates with the
 // derivatives of that parametrisation: triangles affinely from the unit triangle,
 // quadrilaterals bilinearly from [-1, 1]² (corners in cyclic order).
@@ -61,6 +46,89 @@ FacePoint face_point(const std::vector<Eigen::Vector3d>& corners, double s, doub
     point.d_xi_dt += d_t[c] * corners[c];
   }
   return point;
+}
+
+Eigen::MatrixXd cell_nodes(const VolumeMesh& mesh, int cell) {
+  Eigen::MatrixXd nodes(mesh.cells.cols(), 3);
+  for (Eigen::Index a = 0; a < mesh.cells.cols(); ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
+  return nodes;
+}
+
+// The corners of a cell's local face in its reference coordinates, in cyclic order.
+std::vector<Eigen::Vector3d> reference_face_corners(const ReferenceElement& element, int face) {
+  std::vector<Eigen::Vector3d> corners;
+  const ElementShape shape = element.shape();
+  for (int c = 0; c < face_corner_count(shape); ++c)
+    corners.push_back(element.nodes().row(element_faces(shape)[face][c]).transpose());
+  return corners;
+}
+
+// The coarser cell whose face holds all of `cell`'s face `face`, or −1: on a refined grid
+// a finer cell's face lies within a coarser neighbour's, which no matching of corner nodes
+// finds. A finer face shares a corner (a node) with the coarser face it lies on, so the
+// candidates are the cells holding one of its nodes; the one found holds a point just
+// across the face's centre and every corner of the face. A coarser face has no such cell
+// (its corners lie in several finer cells), so each pair is found once, from its finer side.
+int coarser_cell_across(const VolumeMesh& mesh, const ReferenceElement& element,
+                        const std::vector<std::vector<int>>& cells_of_node, int cell, int face) {
+  const Eigen::MatrixXd nodes = cell_nodes(mesh, cell);
+  const std::vector<Eigen::Vector3d> corners = reference_face_corners(element, face);
+  const FacePoint centre =
+      face_point(corners, corners.size() == 3 ? 1.0 / 3 : 0.0, corners.size() == 3 ? 1.0 / 3 : 0.0);
+  const Eigen::Matrix3d jacobian = map_jacobian(element, nodes, centre.xi);
+  Eigen::Vector3d normal = (jacobian * centre.d_xi_ds).cross(jacobian * centre.d_xi_dt).normalized();
+  const Eigen::Vector3d x = map_to_physical(element, nodes, centre.xi);
+  const Eigen::Vector3d cell_centre = nodes.colwise().mean().transpose();
+  if (normal.dot(x - cell_centre) < 0) normal = -normal;
+  const Eigen::Vector3d probe = x + 1e-6 * (x - cell_centre).norm() * normal;
+
+  std::vector<int> candidates;
+  for (const int local : element_faces(element.shape())[face])
+    for (const int other : cells_of_node[mesh.cells(cell, local)])
+      if (other != cell) candidates.push_back(other);
+  std::sort(candidates.begin(), candidates.end());
+  candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+  for (const int other : candidates) {
+    const Eigen::MatrixXd other_nodes = cell_nodes(mesh, other);
+    const InverseMapResult across = map_to_reference(element, other_nodes, probe);
+    if (!across.converged || !element.contains(across.xi, 0)) continue;
+    const bool holds_face = std::all_of(corners.begin(), corners.end(), [&](const Eigen::Vector3d& corner) {
+      const InverseMapResult located = map_to_reference(element, other_nodes, map_to_physical(element, nodes, corner));
+      return located.converged && element.contains(located.xi, 1e-8);
+    });
+    if (holds_face) return other;
+  }
+  return -1;
+}
+
+// The interior faces of the mesh: both (cell, local face) pairs of each shared face, in
+// the order of their second sides; with `hanging` nodes (a refined grid), then each finer
+// face on a coarser cell's face as (finer cell and face, coarser cell), in cell order.
+std::vector<std::array<CellFace, 2>> interior_faces(const VolumeMesh& mesh, bool hanging) {
+  const auto face_count = static_cast<int>(element_faces(element_shape(mesh.element_type)).size());
+  const std::vector<FaceNeighbour> neighbours = face_neighbours(mesh);
+  std::vector<std::array<CellFace, 2>> pairs;
+  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
+    for (int f = 0; f < face_count; ++f) {
+      const FaceNeighbour across = neighbours[static_cast<std::size_t>(cell) * face_count + f];
+      if (across.cell >= 0 && std::pair(across.cell, across.face) < std::pair(cell, f))
+        pairs.push_back({CellFace{across.cell, across.face}, CellFace{cell, f}});
+    }
+  if (!hanging) return pairs;
+
+  std::vector<std::vector<int>> cells_of_node(static_cast<size_t>(mesh.nodes.rows()));
+  for (int cell = 0; cell < static_cast<int>(mesh.cells.rows()); ++cell)
+    for (Eigen::Index a = 0; a < mesh.cells.cols(); ++a) cells_of_node[mesh.cells(cell, a)].push_back(cell);
+  const ReferenceElement& element = reference_element(mesh.element_type);
+  std::vector<int> coarser(neighbours.size(), -1);
+#pragma omp parallel for schedule(dynamic, 64)
+  for (int entry = 0; entry < static_cast<int>(neighbours.size()); ++entry)
+    if (neighbours[entry].cell < 0)
+      coarser[entry] = coarser_cell_across(mesh, element, cells_of_node, entry / face_count, entry % face_count);
+  for (int entry = 0; entry < static_cast<int>(neighbours.size()); ++entry)
+    if (coarser[entry] >= 0)
+      pairs.push_back({CellFace{entry / face_count, entry % face_count}, CellFace{coarser[entry], -1}});
+  return pairs;
 }
 
 // Physical values, gradients (#nodes × 3) and Hessians (#nodes × 9) of one cell's
@@ -100,12 +168,6 @@ void side_derivatives(const ReferenceElement& element, const Eigen::MatrixXd& no
   }
 }
 
-Eigen::MatrixXd cell_nodes(const VolumeMesh& mesh, int cell) {
-  Eigen::MatrixXd nodes(mesh.cells.cols(), 3);
-  for (Eigen::Index a = 0; a < mesh.cells.cols(); ++a) nodes.row(a) = mesh.nodes.row(mesh.cells(cell, a));
-  return nodes;
-}
-
 // One face's tabulation, as TabulatedFaces::add takes it.
 struct FaceTabulation {
   std::vector<int> basis;
@@ -113,10 +175,57 @@ struct FaceTabulation {
   Eigen::MatrixXd normals, values_minus, values_plus, gradients_minus, gradients_plus, hessians_minus, hessians_plus;
 };
 
+// A face's functions with every hanging node replaced by its masters (NodeConstraints): a
+// hanging node's columns of values, gradients and Hessians added, weighted, to its masters'
+// — the traces of the constrained space's basis functions. A face listed only (held
+// elsewhere) has its basis list substituted alone.
+void substitute_hanging_nodes(FaceTabulation& face, const NodeConstraints& constraints) {
+  const auto n = static_cast<Eigen::Index>(face.basis.size());
+  std::vector<int> basis;
+  const auto local = [&basis](int node) {
+    const auto index = static_cast<Eigen::Index>(std::find(basis.begin(), basis.end(), node) - basis.begin());
+    if (index == static_cast<Eigen::Index>(basis.size())) basis.push_back(node);
+    return index;
+  };
+  std::vector<std::vector<std::pair<Eigen::Index, double>>> into(static_cast<size_t>(n));
+  for (Eigen::Index a = 0; a < n; ++a) {
+    const int node = face.basis[a];
+    if (node < constraints.free_nodes) {
+      into[a].emplace_back(local(node), 1.0);
+      continue;
+    }
+    const int hanging = node - constraints.free_nodes;
+    for (size_t k = 0; k < constraints.masters[hanging].size(); ++k)
+      into[a].emplace_back(local(constraints.masters[hanging][k]), constraints.weights[hanging][k]);
+  }
+  const auto m = static_cast<Eigen::Index>(basis.size());
+  face.basis = std::move(basis);
+  if (face.weights.empty()) return;
+  const Eigen::Index points = face.values_minus.rows();
+  const auto combine_columns = [&](Eigen::MatrixXd& values) {  // #points × n → #points × m
+    Eigen::MatrixXd combined = Eigen::MatrixXd::Zero(points, m);
+    for (Eigen::Index a = 0; a < n; ++a)
+      for (const auto& [b, weight] : into[a]) combined.col(b) += weight * values.col(a);
+    values = std::move(combined);
+  };
+  const auto combine_rows = [&](Eigen::MatrixXd& rows) {  // (#points·n) × c → (#points·m) × c, point-major
+    if (rows.rows() == 0) return;
+    Eigen::MatrixXd combined = Eigen::MatrixXd::Zero(points * m, rows.cols());
+    for (Eigen::Index q = 0; q < points; ++q)
+      for (Eigen::Index a = 0; a < n; ++a)
+        for (const auto& [b, weight] : into[a]) combined.row(q * m + b) += weight * rows.row(q * n + a);
+    rows = std::move(combined);
+  };
+  combine_columns(face.values_minus), combine_columns(face.values_plus);
+  combine_rows(face.gradients_minus), combine_rows(face.gradients_plus);
+  combine_rows(face.hessians_minus), combine_rows(face.hessians_plus);
+}
+
 }  // namespace
 
 GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions,
-                                      const TabulatedHere& here) {
+                                      const TabulatedHere& here, const NodeConstraints* constraints) {
+  const bool hanging = constraints && !constraints->empty();
   const ReferenceElement& element = reference_element(mesh.element_type);
   const ElementShape shape = element.shape();
   const int degree = element.degree();
@@ -125,7 +234,7 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
   const int n_cell = element.node_count();
   const int corner_count = face_corner_count(shape);
 
-  std::vector<std::array<CellFace, 2>> pairs = interior_faces(mesh);
+  std::vector<std::array<CellFace, 2>> pairs = interior_faces(mesh, hanging);
   std::erase_if(pairs, [&](const std::array<CellFace, 2>& pair) {
     return volume_fractions[pair[0].cell] >= 1 && volume_fractions[pair[1].cell] >= 1;
   });
@@ -209,6 +318,7 @@ GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<
   result.sizes = std::move(sizes);
   for (int f = 0; f < face_count; ++f) {
     FaceTabulation& face = tabulations[f];
+    if (hanging) substitute_hanging_nodes(face, *constraints);
     if (!held[f]) result.faces.add_held_elsewhere(face.basis, pairs[f][0].cell, pairs[f][1].cell);
     else
       result.faces.add(face.basis, face.weights, face.normals, face.values_minus, face.values_plus,

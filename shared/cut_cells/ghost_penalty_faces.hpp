@@ -10,6 +10,7 @@
 #include "shared/assembly/energy_term.hpp"
 #include "shared/assembly/tabulated_faces.hpp"
 #include "shared/material/material.hpp"
+#include "shared/mesh/node_constraints.hpp"
 #include "shared/mesh/volume_mesh.hpp"
 
 namespace altfem {
@@ -26,8 +27,14 @@ struct GhostPenaltyFaces {
 /// faces f with here(f), every face when `here` is empty, and lists the others
 /// (TabulatedFaces::add_held_elsewhere); `sizes` are every face's. Throws NumericalError when
 /// a face point cannot be located in the neighbour across it.
+///
+/// With hanging nodes (`constraints`, a refined grid's: nodes past free_nodes), a finer
+/// cell's face on a coarser cell's face is a face too — its rule on the finer face, h_F its
+/// longest edge, the finer cell its minus side — and the faces' functions are the free
+/// nodes', each hanging node's traces added to its masters' with the constraint's weights.
 GhostPenaltyFaces ghost_penalty_faces(const VolumeMesh& mesh, const std::vector<double>& volume_fractions,
-                                      const TabulatedHere& here = nullptr);
+                                      const TabulatedHere& here = nullptr,
+                                      const NodeConstraints* constraints = nullptr);
 
 /// The penalty's energy term over `faces` on cells of `type`: γ_F = γ × the mean P-wave
 /// modulus λ + 2μ of the face's two cells, so that the penalty scales like the elastic

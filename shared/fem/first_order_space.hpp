@@ -16,9 +16,14 @@ namespace altfem {
 /// The first-order space on `mesh`'s corner nodes: row a of the prolongation is the
 /// first-order basis of a cell holding node a at its reference position (the same in
 /// every cell holding it: the first-order space is conforming). Empty for a first-order
-/// mesh. Basis function a is mesh node a (tabulate_lagrange). Empty too where
-/// `constraints` (may be null) hang nodes on others: a hanging node's function belongs to
-/// its masters, so a coarse function would have to follow the constraints.
+/// mesh. Basis function a is mesh node a (tabulate_lagrange).
+///
+/// With hanging nodes (`constraints`, may be null: a refined grid's), the first-order space
+/// with its own hanging nodes, as a first-order refined grid has them: its functions are
+/// the free nodes that every cell holds as a corner; a free node some coarser cell holds
+/// otherwise (its mid-edge node where finer cells have a corner) takes that cell's
+/// first-order values, and a hanging node its masters'. Rows: the free nodes only, the
+/// fine space's functions; every coarse function is first order on every cell.
 CoarseSpace first_order_space(const VolumeMesh& mesh, const NodeConstraints* constraints = nullptr);
 
 }  // namespace altfem
