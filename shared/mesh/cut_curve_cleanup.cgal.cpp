@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace altfem::cut_curve {
@@ -80,6 +81,40 @@ bool collapse_flat_curve_point(Mesh& mesh, Mesh::Vertex_index v,
   return false;
 }
 
+// One sweep of tangential relaxation over the cap's inner vertices, as CGAL's isotropic
+// remeshing relaxes (each to the mean of its neighbours, all moves computed first, a move
+// undone where a face around it would turn over), without its vertex normals: CGAL 5.5's
+// PMP::tangential_relaxation computes those of the whole mesh at every sweep, a whole side
+// of the pencil for a cap of a few dozen faces. The cap is planar, so the mean of its
+// neighbours stays in its plane.
+template <typename CapMap, typename BorderMap>
+void relax_cap(Mesh& mesh, const CapMap& cap, const BorderMap& border) {
+  std::vector<std::pair<Mesh::Vertex_index, Point>> moves;
+  std::vector<char> seen(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), 0);
+  for (const Mesh::Face_index f : mesh.faces()) {
+    if (!cap[f]) continue;
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      if (std::exchange(seen[v.idx()], 1)) continue;
+      bool inner = true;
+      Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+      int neighbours = 0;
+      for (const Mesh::Halfedge_index h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh)) {
+        inner = inner && !mesh.is_border(h) && !mesh.is_border(mesh.opposite(h)) && !border[mesh.edge(h)] &&
+                cap[mesh.face(h)];
+        sum += vector_of(mesh.point(mesh.source(h)));
+        ++neighbours;
+      }
+      if (inner) moves.emplace_back(v, point_of(sum / neighbours));
+    }
+  }
+  for (const auto& [v, place] : moves) {
+    bool turns = false;
+    for (const Mesh::Face_index f : CGAL::faces_around_target(mesh.halfedge(v), mesh))
+      turns = turns || face_normal(mesh, f, v, place).dot(face_normal(mesh, f, v, mesh.point(v))) <= 0;
+    if (!turns) mesh.point(v) = place;
+  }
+}
+
 }  // namespace
 
 void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, double longest) {
@@ -96,18 +131,34 @@ void clean(Mesh& mesh, const std::function<bool(Mesh::Vertex_index)>& on_plane, 
 }
 
 void remesh_cap(Mesh& mesh, const std::function<bool(Mesh::Face_index)>& in_cap, double length) {
-  std::vector<Mesh::Face_index> cap_faces;
-  for (const Mesh::Face_index f : mesh.faces())
-    if (in_cap(f)) cap_faces.push_back(f);
-  if (cap_faces.empty()) return;
-  auto border = mesh.add_property_map<Mesh::Edge_index, bool>("e:cap_border", false).first;
-  const auto capped = [&](Mesh::Halfedge_index h) { return !mesh.is_border(h) && in_cap(mesh.face(h)); };
-  for (const Mesh::Edge_index e : mesh.edges())
-    border[e] = capped(mesh.halfedge(e)) != capped(mesh.opposite(mesh.halfedge(e)));
-  CGAL::Polygon_mesh_processing::isotropic_remeshing(
-      cap_faces, length, mesh,
-      CGAL::parameters::edge_is_constrained_map(border).protect_constraints(true).number_of_iterations(3));
-  mesh.remove_property_map(border);
+  // The cap's faces carry 1: the remeshing hands the mark on to the faces it makes.
+  auto cap = mesh.add_property_map<Mesh::Face_index, int>("f:cap", 0).first;
+  bool any = false;
+  for (const Mesh::Face_index f : mesh.faces()) {
+    cap[f] = in_cap(f) ? 1 : 0;
+    any = any || cap[f];
+  }
+  if (any) {
+    auto border = mesh.add_property_map<Mesh::Edge_index, bool>("e:cap_border", false).first;
+    const auto capped = [&](Mesh::Halfedge_index h) { return !mesh.is_border(h) && cap[mesh.face(h)]; };
+    for (const Mesh::Edge_index e : mesh.edges())
+      border[e] = capped(mesh.halfedge(e)) != capped(mesh.opposite(mesh.halfedge(e)));
+    // CGAL's iterations, each relaxed by relax_cap instead of CGAL's relaxation.
+    for (int iteration = 0; iteration < 3; ++iteration) {
+      std::vector<Mesh::Face_index> cap_faces;
+      for (const Mesh::Face_index f : mesh.faces())
+        if (cap[f]) cap_faces.push_back(f);
+      CGAL::Polygon_mesh_processing::isotropic_remeshing(cap_faces, length, mesh,
+                                                         CGAL::parameters::edge_is_constrained_map(border)
+                                                             .protect_constraints(true)
+                                                             .number_of_iterations(1)
+                                                             .number_of_relaxation_steps(0)
+                                                             .face_patch_map(cap));
+      relax_cap(mesh, cap, border);
+    }
+    mesh.remove_property_map(border);
+  }
+  mesh.remove_property_map(cap);
   mesh.collect_garbage();
 }
 
