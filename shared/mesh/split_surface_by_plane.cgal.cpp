@@ -153,13 +153,24 @@ struct DirectedEdge {
   }
 };
 
-// Every face's edges, sorted as above.
+// Every face's edges, sorted as above: placed by their lower point (a counting sort, linear
+// in the edges), then each point's few sorted in place.
 std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& faces) {
-  std::vector<DirectedEdge> edges;
-  edges.reserve(3 * faces.size());
+  int points = 0;
+  for (const std::array<int, 3>& face : faces) points = std::max({points, face[0] + 1, face[1] + 1, face[2] + 1});
+  std::vector<int> start(static_cast<std::size_t>(points) + 1, 0);
+  for (const std::array<int, 3>& face : faces)
+    for (int k = 0; k < 3; ++k) ++start[std::min(face[k], face[(k + 1) % 3]) + 1];
+  for (int point = 0; point < points; ++point) start[point + 1] += start[point];
+  std::vector<DirectedEdge> edges(3 * faces.size(), DirectedEdge(0, 0, 0, 0));
+  std::vector<int> next(start.begin(), start.end() - 1);
   for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-    for (int k = 0; k < 3; ++k) edges.emplace_back(faces[f][k], faces[f][(k + 1) % 3], f, k);
-  std::sort(edges.begin(), edges.end());
+    for (int k = 0; k < 3; ++k) {
+      const DirectedEdge edge(faces[f][k], faces[f][(k + 1) % 3], f, k);
+      edges[next[edge.low()]++] = edge;
+    }
+  for (int point = 0; point < points; ++point)
+    std::sort(edges.begin() + start[point], edges.begin() + start[point + 1]);
   return edges;
 }
 
@@ -322,17 +333,26 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
   // cap's remeshing remove and add vertices): new vertices go at the end.
   mesh.set_recycle_garbage(false);
   auto input_of = mesh.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
-  // The vertices by point, then by fan, so that the mesh does not depend on face order.
-  std::vector<std::pair<int, int>> point_and_fan;
+  // The vertices by point, then by fan, so that the mesh does not depend on face order:
+  // the corners placed by their point (a counting sort), each point's few fans sorted there.
+  std::vector<int> start(split.points.size() + 1, 0);
+  for (const std::array<int, 3>& face : faces)
+    for (const int point : face) ++start[point + 1];
+  for (std::size_t point = 0; point + 1 < start.size(); ++point) start[point + 1] += start[point];
+  std::vector<int> fan_at(3 * faces.size());
+  std::vector<int> next(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < faces.size(); ++f)
-    for (int k = 0; k < 3; ++k) point_and_fan.push_back({faces[f][k], fans.find(3 * static_cast<int>(f) + k)});
-  std::sort(point_and_fan.begin(), point_and_fan.end());
-  point_and_fan.erase(std::unique(point_and_fan.begin(), point_and_fan.end()), point_and_fan.end());
+    for (int k = 0; k < 3; ++k) fan_at[next[faces[f][k]]++] = fans.find(3 * static_cast<int>(f) + k);
   std::vector<Mesh::Vertex_index> vertex_of_fan(3 * faces.size());
-  for (const auto& [point, fan] : point_and_fan) {
-    const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
-    input_of[v] = split.input[point];
-    vertex_of_fan[fan] = v;
+  for (std::size_t point = 0; point + 1 < start.size(); ++point) {
+    const auto first = fan_at.begin() + start[point], last = fan_at.begin() + start[point + 1];
+    std::sort(first, last);
+    const auto distinct = std::unique(first, last);
+    for (auto fan = first; fan != distinct; ++fan) {
+      const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
+      input_of[v] = split.input[point];
+      vertex_of_fan[*fan] = v;
+    }
   }
   for (std::size_t f = 0; f < faces.size(); ++f) {
     std::array<Mesh::Vertex_index, 3> corners;
