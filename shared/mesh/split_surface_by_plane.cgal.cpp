@@ -1,5 +1,6 @@
 #include "shared/mesh/split_surface_by_plane.hpp"
 
+#include "shared/mesh/directed_edges.hpp"
 #include "shared/mesh/disjoint_sets.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -12,7 +13,6 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
-#include <cstdint>
 #include <map>
 #include <set>
 #include <utility>
@@ -130,65 +130,6 @@ bool mark_nesting(Triangulation& triangulation, const std::set<Edge>& borders, c
     if (neighbour->info() == -1) flood(neighbour, edge.first->info() + 1);
   }
   return known;
-}
-
-// A face's edge from its corner `corner` (point `from`) to the next (point `to`).
-struct DirectedEdge {
-  int from, to, face, corner;
-  // By the edge its points make, then its direction, then the face: the uses of one edge
-  // either way are one run, those from its lower point first. As two keys, for the sort.
-  std::uint64_t edge, order;
-  DirectedEdge(int from_point, int to_point, int face_index, int corner_index)
-      : from(from_point),
-        to(to_point),
-        face(face_index),
-        corner(corner_index),
-        edge(static_cast<std::uint64_t>(std::min(from, to)) << 32 | static_cast<std::uint32_t>(std::max(from, to))),
-        order(static_cast<std::uint64_t>(from > to) << 62 | static_cast<std::uint64_t>(face) << 2 |
-              static_cast<std::uint64_t>(corner)) {}
-  int low() const { return std::min(from, to); }
-  int high() const { return std::max(from, to); }
-  bool operator<(const DirectedEdge& other) const {
-    return edge != other.edge ? edge < other.edge : order < other.order;
-  }
-};
-
-// Every face's edges, sorted as above: placed by their lower point (a counting sort, linear
-// in the edges), then each point's few sorted in place.
-std::vector<DirectedEdge> directed_edges(const std::vector<std::array<int, 3>>& faces) {
-  int points = 0;
-  for (const std::array<int, 3>& face : faces) points = std::max({points, face[0] + 1, face[1] + 1, face[2] + 1});
-  std::vector<int> start(static_cast<std::size_t>(points) + 1, 0);
-  for (const std::array<int, 3>& face : faces)
-    for (int k = 0; k < 3; ++k) ++start[std::min(face[k], face[(k + 1) % 3]) + 1];
-  for (int point = 0; point < points; ++point) start[point + 1] += start[point];
-  std::vector<DirectedEdge> edges(3 * faces.size(), DirectedEdge(0, 0, 0, 0));
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (int f = 0; f < static_cast<int>(faces.size()); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const DirectedEdge edge(faces[f][k], faces[f][(k + 1) % 3], f, k);
-      edges[next[edge.low()]++] = edge;
-    }
-  for (int point = 0; point < points; ++point)
-    std::sort(edges.begin() + start[point], edges.begin() + start[point + 1]);
-  return edges;
-}
-
-// Calls visit(a, b, forward, backward) for each edge of points a < b: its uses from a to b
-// and from b to a, each a pair of iterators.
-template <class Visit>
-bool for_each_edge(const std::vector<DirectedEdge>& edges, const Visit& visit) {
-  using Uses = std::pair<std::vector<DirectedEdge>::const_iterator, std::vector<DirectedEdge>::const_iterator>;
-  for (auto first = edges.begin(); first != edges.end();) {
-    const int a = first->low(), b = first->high();
-    auto middle = first;
-    while (middle != edges.end() && middle->edge == first->edge && middle->from == a) ++middle;
-    auto last = middle;
-    while (last != edges.end() && last->edge == first->edge) ++last;
-    if (!visit(a, b, Uses{first, middle}, Uses{middle, last})) return false;
-    first = last;
-  }
-  return true;
 }
 
 // The cap closing the triangles `faces` (indices into the split's points) of one side: the
