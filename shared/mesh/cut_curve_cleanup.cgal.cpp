@@ -86,13 +86,12 @@ bool collapse_flat_curve_point(Mesh& mesh, Mesh::Vertex_index v,
 // undone where a face around it would turn over), without its vertex normals: CGAL 5.5's
 // PMP::tangential_relaxation computes those of the whole mesh at every sweep, a whole side
 // of the pencil for a cap of a few dozen faces. The cap is planar, so the mean of its
-// neighbours stays in its plane.
+// neighbours stays in its plane. cap_faces: the faces `cap` marks.
 template <typename CapMap, typename BorderMap>
-void relax_cap(Mesh& mesh, const CapMap& cap, const BorderMap& border) {
+void relax_cap(Mesh& mesh, const std::vector<Mesh::Face_index>& cap_faces, const CapMap& cap, const BorderMap& border) {
   std::vector<std::pair<Mesh::Vertex_index, Point>> moves;
   std::vector<char> seen(mesh.number_of_vertices() + mesh.number_of_removed_vertices(), 0);
-  for (const Mesh::Face_index f : mesh.faces()) {
-    if (!cap[f]) continue;
+  for (const Mesh::Face_index f : cap_faces) {
     for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
       if (std::exchange(seen[v.idx()], 1)) continue;
       bool inner = true;
@@ -143,19 +142,21 @@ void remesh_cap(Mesh& mesh, const std::function<bool(Mesh::Face_index)>& in_cap,
     const auto capped = [&](Mesh::Halfedge_index h) { return !mesh.is_border(h) && cap[mesh.face(h)]; };
     for (const Mesh::Edge_index e : mesh.edges())
       border[e] = capped(mesh.halfedge(e)) != capped(mesh.opposite(mesh.halfedge(e)));
-    // CGAL's iterations, each relaxed by relax_cap instead of CGAL's relaxation.
-    for (int iteration = 0; iteration < 3; ++iteration) {
-      std::vector<Mesh::Face_index> cap_faces;
-      for (const Mesh::Face_index f : mesh.faces())
-        if (cap[f]) cap_faces.push_back(f);
-      CGAL::Polygon_mesh_processing::isotropic_remeshing(cap_faces, length, mesh,
-                                                         CGAL::parameters::edge_is_constrained_map(border)
-                                                             .protect_constraints(true)
-                                                             .number_of_iterations(1)
-                                                             .number_of_relaxation_steps(0)
-                                                             .face_patch_map(cap));
-      relax_cap(mesh, cap, border);
-    }
+    // CGAL's three iterations without its relaxation (a remesher's set-up touches every
+    // halfedge of the mesh: once), then three sweeps of relax_cap.
+    std::vector<Mesh::Face_index> cap_faces;
+    for (const Mesh::Face_index f : mesh.faces())
+      if (cap[f]) cap_faces.push_back(f);
+    CGAL::Polygon_mesh_processing::isotropic_remeshing(cap_faces, length, mesh,
+                                                       CGAL::parameters::edge_is_constrained_map(border)
+                                                           .protect_constraints(true)
+                                                           .number_of_iterations(3)
+                                                           .number_of_relaxation_steps(0)
+                                                           .face_patch_map(cap));
+    cap_faces.clear();
+    for (const Mesh::Face_index f : mesh.faces())
+      if (cap[f]) cap_faces.push_back(f);
+    for (int sweep = 0; sweep < 3; ++sweep) relax_cap(mesh, cap_faces, cap, border);
     mesh.remove_property_map(border);
   }
   mesh.remove_property_map(cap);

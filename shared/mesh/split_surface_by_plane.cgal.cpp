@@ -295,12 +295,31 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
       vertex_of_fan[*fan] = v;
     }
   }
+  // The connectivity set directly from the pairing (Euler::add_face would search each
+  // vertex's faces for it): halfedge (f, k) runs from corner k to k + 1 and is the opposite
+  // of its partner's (g, corner at f[k + 1]). Every edge is paired and each fan is one cycle
+  // of corners around its vertex, so the mesh is a closed manifold.
+  std::vector<Mesh::Halfedge_index> halfedge_of(3 * faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto [g, at_next] = (*across)[f][k];
+      const std::size_t here = 3 * f + k, there = 3 * static_cast<std::size_t>(g) + at_next;
+      if (here > there) continue;
+      halfedge_of[here] = mesh.add_edge();
+      halfedge_of[there] = mesh.opposite(halfedge_of[here]);
+    }
   for (std::size_t f = 0; f < faces.size(); ++f) {
-    std::array<Mesh::Vertex_index, 3> corners;
-    for (int k = 0; k < 3; ++k) corners[k] = vertex_of_fan[fans.find(3 * static_cast<int>(f) + k)];
-    if (mesh.add_face(corners[0], corners[1], corners[2]) == Mesh::null_face()) return std::nullopt;
+    const Mesh::Face_index face = mesh.add_face();
+    for (int k = 0; k < 3; ++k) {
+      const Mesh::Halfedge_index h = halfedge_of[3 * f + k];
+      const Mesh::Vertex_index target = vertex_of_fan[fans.find(3 * static_cast<int>(f) + (k + 1) % 3)];
+      mesh.set_target(h, target);
+      mesh.set_halfedge(target, h);
+      mesh.set_next(h, halfedge_of[3 * f + (k + 1) % 3]);
+      mesh.set_face(h, face);
+    }
+    mesh.set_halfedge(face, halfedge_of[3 * f]);
   }
-  if (!CGAL::is_closed(mesh)) return std::nullopt;
   return mesh;
 }
 

@@ -188,6 +188,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
   const SupportCubes supports(samples, radii, asked_piece);
   const std::unordered_map<int, PieceSamples> reachable = piece_samples(samples, radii, asked_piece);
   std::vector<PointWeights> found(static_cast<size_t>(points.rows()));
+  const double truncation = std::exp(-options.support * options.support);
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel
   {
@@ -212,12 +213,13 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           // Both grids hold the point's own piece's samples alone.
           const auto add = [&](int sample) {
             const double sigma = enlarge * spacing[sample], radius = options.support * sigma;
-            const double distance = (samples.row(sample).transpose() - x).norm();
-            if (distance >= radius) return;
-            const double weight =
-                std::exp(-distance * distance / (sigma * sigma)) - std::exp(-radius * radius / (sigma * sigma));
+            const Eigen::Vector3d offset = samples.row(sample).transpose() - x;
+            const double squared_distance = offset.squaredNorm();
+            if (squared_distance >= radius * radius) return;
+            // exp(−ρ²/σ²) = exp(−support²): the same for every sample.
+            const double weight = std::exp(-squared_distance / (sigma * sigma)) - truncation;
             Eigen::Vector4d p;
-            p << 1.0, (samples.row(sample).transpose() - x) / reach;
+            p << 1.0, offset / reach;
             moments += weight * p * p.transpose();
             near.push_back(sample);
             theta.push_back(weight);
@@ -229,6 +231,8 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
                                       eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
           PointWeights& result = found[static_cast<size_t>(point)];
+          result.samples.reserve(near.size());
+          result.weights.reserve(near.size());
           for (size_t n = 0; n < near.size(); ++n) {
             Eigen::Vector4d p;
             p << 1.0, (samples.row(near[n]).transpose() - x) / reach;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <limits>
 
 #include "shared/common/error.hpp"
@@ -264,11 +265,16 @@ EventRecord Simulation::cut(const SceneEvent& event) {
   EventRecord record = start_record("cut", "", event.pointer, event.time);
   const BodyMeasures before = measure();
   const auto start = std::chrono::steady_clock::now();
-  const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
   // The surface every method deforms is cut by the same blade, so the frames show the body
-  // open and `compare` still measures the same vertices.
-  if (const SurfaceMesh* surface = geometry_->common_surface()) {
-    SurfaceCut cut = cut_surface(*surface, event.blade);
+  // open and `compare` still measures the same vertices. Neither cut reads the other's
+  // result: the surface's (serial CGAL work) runs on a thread of its own beside the
+  // method's (whose loops are parallel).
+  std::future<SurfaceCut> surface_cut;
+  if (const SurfaceMesh* surface = geometry_->common_surface())
+    surface_cut = std::async(std::launch::async, [surface, &event] { return cut_surface(*surface, event.blade); });
+  const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
+  if (surface_cut.valid()) {
+    SurfaceCut cut = surface_cut.get();
     record.facts["surface"] = std::move(cut.facts);
     SceneGeometry cut_geometry = *geometry_;
     (cut_geometry.surface ? cut_geometry.surface : cut_geometry.shape_surface) = std::move(cut.surface);
