@@ -8,6 +8,7 @@
 #include <numeric>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 #include "shared/mesh/bounding_box.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
@@ -124,49 +125,54 @@ struct NotAtOnce : std::runtime_error {
 bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
                const std::vector<const CuttingPlane*>& blades, const std::vector<const ExactBlade*>& exact,
                bool marked_intersecting, CutPieces& out) {
-  // The piece as a CGAL mesh, each vertex with its index in the input ("v:input", −1 for
-  // the vertices a cut adds), which CGAL carries through its operations.
-  Mesh piece;
-  const auto input_of = piece.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
-  // A recycled slot would keep the removed vertex's "v:input": new vertices go at the end.
-  piece.set_recycle_garbage(false);
-  std::map<int, int> piece_vertex;
+  // The piece's points in order of first use, each with its index in the input
+  // ("v:input"), and its triangles.
+  TrianglePiece arrays;
+  std::unordered_map<int, int> piece_vertex;
   Eigen::AlignedBox3d bounds;
   for (const int t : triangles) {
-    std::array<Mesh::Vertex_index, 3> corners;
+    std::array<int, 3> corners{};
     for (int k = 0; k < 3; ++k) {
       const int v = surface.triangles(t, k);
-      const auto [slot, inserted] = piece_vertex.try_emplace(v, static_cast<int>(piece.number_of_vertices()));
+      const auto [slot, inserted] = piece_vertex.try_emplace(v, static_cast<int>(arrays.points.size()));
       if (inserted) {
-        input_of[piece.add_vertex(point_of(surface.vertices.row(v)))] = v;
+        arrays.points.push_back(point_of(surface.vertices.row(v)));
+        arrays.input.push_back(v);
         bounds.extend(Eigen::Vector3d(surface.vertices.row(v)));
       }
-      corners[k] = Mesh::Vertex_index(static_cast<Mesh::size_type>(slot->second));
+      corners[k] = slot->second;
     }
-    piece.add_face(corners[0], corners[1], corners[2]);
+    arrays.triangles.push_back(corners);
   }
   // The caps' edges: a 40th of the piece's diagonal, as a shape's surface is tessellated
   // (SceneGeometry::shape_surface). Not the piece's own edges: those a cut leaves short
   // would shrink the caps of every cut after it.
   const double edge_length = bounds.diagonal().norm() / 40;
   // The split needs no more than a closed surface: it keeps what it is given, crossings
-  // included (and no test of them, a third of the pencil's cut surface, is made). A
-  // polygon over the whole section is split alike: corefinement left the two sides of a
-  // box cut through by a square joined, neither closed.
-  // A surface blade goes through corefinement, whose precondition is below.
-  if (blades.front()->surface) {
-    if (marked_intersecting || PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
-    return surface_cut::cut_piece_by_surface_blade(piece, *blades.front()->surface, edge_length, out);
-  }
-  for (std::size_t b = 0; b < blades.size(); ++b)
+  // included (and no test of them, a third of the pencil's cut surface, is made), and no
+  // CGAL mesh of it. A polygon over the whole section is split alike: corefinement left the
+  // two sides of a box cut through by a square joined, neither closed.
+  const bool surface_blade = blades.front()->surface != nullptr;
+  for (std::size_t b = 0; !surface_blade && b < blades.size(); ++b)
     if (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b])) {
       if (blades.size() > 1) throw NotAtOnce();
-      return surface_cut::cut_piece_by_plane(piece, *exact[b], edge_length, out);
+      return surface_cut::cut_piece_by_plane(arrays, *exact[b], edge_length, out);
     }
-  // Corefinement's precondition: a piece that intersects itself (or was found to, `marked_intersecting`) is left
-  // whole rather than cut into garbage.
+  // Corefinement takes the piece as a CGAL mesh, each vertex with "v:input" (−1 for the
+  // vertices a cut adds), which CGAL carries through its operations. Its precondition: a
+  // piece that intersects itself (or was found to, `marked_intersecting`) is left whole
+  // rather than cut into garbage.
+  Mesh piece;
+  const auto input_of = piece.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
+  // A recycled slot would keep the removed vertex's "v:input": new vertices go at the end.
+  piece.set_recycle_garbage(false);
+  for (std::size_t v = 0; v < arrays.points.size(); ++v) input_of[piece.add_vertex(arrays.points[v])] = arrays.input[v];
+  for (const std::array<int, 3>& corners : arrays.triangles)
+    piece.add_face(Mesh::Vertex_index(static_cast<Mesh::size_type>(corners[0])),
+                   Mesh::Vertex_index(static_cast<Mesh::size_type>(corners[1])),
+                   Mesh::Vertex_index(static_cast<Mesh::size_type>(corners[2])));
   if (marked_intersecting || PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
-
+  if (surface_blade) return surface_cut::cut_piece_by_surface_blade(piece, *blades.front()->surface, edge_length, out);
   surface_cut::cut_piece_by_polygons(piece, blades, edge_length, out);
   return true;
 }

@@ -38,7 +38,7 @@ struct UnsplitPiece : std::runtime_error {
 // exact predicates, each crossing point rounded once for both sides), each side's cut
 // curve cleaned and its cap remeshed. A vertex of the input that both sides keep (on the
 // plane) gets a copy for the positive side. Appends both sides to `out`.
-bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
+bool cut_piece_by_plane(const TrianglePiece& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
   auto split = split_surface_by_plane(piece, exact, 1e-9 * edge_length);
   if (!split) throw UnsplitPiece();
   if (split->grazes) return false;

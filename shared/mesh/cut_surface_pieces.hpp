@@ -8,6 +8,7 @@
 
 #include "shared/mesh/cut_curve_cleanup.hpp"
 #include "shared/mesh/cutting_plane.hpp"
+#include "shared/mesh/split_surface_by_plane.hpp"
 
 namespace altfem::surface_cut {
 
@@ -26,10 +27,10 @@ struct CutPieces {
   int cap_triangles = 0;
 };
 
-/// The closed `piece` (each vertex with "v:input") cut by the whole plane of `exact`, both
-/// sides appended to `out`; false, appending nothing, when the plane only grazes it (a
-/// side of no volume). Throws when a side does not close. `edge_length`: the caps' edges.
-bool cut_piece_by_plane(const Mesh& piece, const ExactBlade& exact, double edge_length, CutPieces& out);
+/// The closed `piece` cut by the whole plane of `exact`, both sides appended to `out`;
+/// false, appending nothing, when the plane only grazes it (a side of no volume). Throws
+/// when a side does not close. `edge_length`: the caps' edges.
+bool cut_piece_by_plane(const TrianglePiece& piece, const ExactBlade& exact, double edge_length, CutPieces& out);
 
 /// The closed, self-intersection-free `piece` cut by the polygons of `blades` at once
 /// (CGAL's corefinement), appended to `out`; `piece` is split in the process. Throws

@@ -327,22 +327,29 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
 
 std::optional<PlaneSplit> split_surface_by_plane(const Mesh& piece, const ExactBlade& blade, double snap) {
   const auto piece_input = piece.property_map<Mesh::Vertex_index, int>("v:input").first;
-  SplitPoints split;
+  TrianglePiece arrays;
   std::vector<int> point_of(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);
   for (const Mesh::Vertex_index v : piece.vertices()) {
-    point_of[v.idx()] = static_cast<int>(split.points.size());
-    split.points.push_back(piece.point(v));
-    split.input.push_back(piece_input[v]);
-    split.side.push_back(blade.side(vector_of(piece.point(v))));
+    point_of[v.idx()] = static_cast<int>(arrays.points.size());
+    arrays.points.push_back(piece.point(v));
+    arrays.input.push_back(piece_input[v]);
   }
-  std::vector<std::array<int, 3>> triangles;
   for (const Mesh::Face_index f : piece.faces()) {
     std::array<int, 3> point{};
     int k = 0;
     for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece))
       point[k++] = point_of[v.idx()];
-    triangles.push_back(point);
+    arrays.triangles.push_back(point);
   }
+  return split_surface_by_plane(arrays, blade, snap);
+}
+
+std::optional<PlaneSplit> split_surface_by_plane(const TrianglePiece& piece, const ExactBlade& blade, double snap) {
+  SplitPoints split;
+  split.points = piece.points;
+  split.input = piece.input;
+  for (const Point& point : piece.points) split.side.push_back(blade.side(vector_of(point)));
+  std::vector<std::array<int, 3>> triangles = piece.triangles;
   snap_to_plane(triangles, split, blade, snap);
   PlaneSplit result;
   for (std::size_t point = 0; point < split.points.size(); ++point)

@@ -10,13 +10,21 @@
 
 namespace altfem {
 
+/// A closed piece of a surface as arrays: its points with their "v:input" and its
+/// triangles (indices into points), consistently oriented.
+struct TrianglePiece {
+  std::vector<cut_curve::Point> points;
+  std::vector<int> input;
+  std::vector<std::array<int, 3>> triangles;
+};
+
 struct PlaneSplit {
   std::array<cut_curve::Mesh, 2> sides;
   std::vector<int> inputs_on_plane;  ///< sorted "v:input" of the piece's vertices taken on the plane
   bool grazes = false;               ///< the vertices taken on it leave none on one side: no sides
 };
 
-/// The sides of the closed, consistently oriented `piece` (each vertex with "v:input")
+/// The sides of the closed, consistently oriented `piece`
 /// below and above the plane of `blade`: [0] the negative side, [1] the positive one, each
 /// closed and outward.
 /// - Which side a vertex lies on is `blade.side`, an exact predicate, so a plane through
@@ -42,6 +50,8 @@ struct PlaneSplit {
 /// corefines the surface with a box through exact constructions, several times the cost of
 /// this for the pencil's every cut (docs/performance.md, "Cuts"), and it closed a prism
 /// cut along a valley's edge into one piece of the wrong volume (test_split_surface_by_plane.cpp).
+std::optional<PlaneSplit> split_surface_by_plane(const TrianglePiece& piece, const ExactBlade& blade, double snap);
+/// The same for a piece as a CGAL mesh (each vertex with "v:input").
 std::optional<PlaneSplit> split_surface_by_plane(const cut_curve::Mesh& piece, const ExactBlade& blade, double snap);
 
 }  // namespace altfem
