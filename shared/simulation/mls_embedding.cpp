@@ -1,6 +1,7 @@
 #include "shared/simulation/mls_embedding.hpp"
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -226,10 +227,19 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           };
           if (enlarge == 1.0) supports.for_each_at(point_root[point], x.transpose(), add);
           else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
-          const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
-          if (near.size() < 4 || !(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
-          const Eigen::Vector4d row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
-                                      eigen.eigenvectors().row(0).transpose();  // A⁻¹ e₀
+          if (near.size() < 4) continue;
+          // A⁻¹ e₀, where λ_min/λ_max of A exceeds 1e-10. λ_min ≥ 1/‖A⁻¹‖_F and λ_max ≤ tr A
+          // bound the ratio from below, and a 4 × 4 inverse costs a fraction of the
+          // eigenvalues (which were most of a point's time on the pencil): only where the
+          // bound does not decide do they.
+          const Eigen::Matrix4d inverse = moments.inverse();
+          Eigen::Vector4d row = inverse.col(0);  // A is symmetric
+          if (!(1.0 > 1e-10 * inverse.norm() * moments.trace())) {
+            const Eigen::SelfAdjointEigenSolver<Eigen::Matrix4d> eigen(moments);
+            if (!(eigen.eigenvalues()[0] > 1e-10 * eigen.eigenvalues()[3])) continue;
+            row = eigen.eigenvectors() * eigen.eigenvalues().cwiseInverse().asDiagonal() *
+                  eigen.eigenvectors().row(0).transpose();
+          }
           PointWeights& result = found[static_cast<size_t>(point)];
           result.samples.reserve(near.size());
           result.weights.reserve(near.size());
