@@ -14,6 +14,7 @@
 #include "shared/common/error.hpp"
 #include "shared/element/element_faces.hpp"
 #include "shared/element/geometry_map.hpp"
+#include "shared/fem/constrain_lagrange_elements.hpp"
 #include "shared/mesh/face_neighbours.hpp"
 #include "shared/quadrature/reference_rules.hpp"
 
@@ -175,50 +176,29 @@ struct FaceTabulation {
   Eigen::MatrixXd normals, values_minus, values_plus, gradients_minus, gradients_plus, hessians_minus, hessians_plus;
 };
 
-// A face's functions with every hanging node replaced by its masters (NodeConstraints): a
-// hanging node's columns of values, gradients and Hessians added, weighted, to its masters'
-// — the traces of the constrained space's basis functions. A face listed only (held
+// A face's functions with every hanging node replaced by its masters (substitute_hanging,
+// as a cell's tabulation does): values N S and each point's gradients and Hessians Sᵀ G —
+// the traces of the constrained space's basis functions. A face listed only (held
 // elsewhere) has its basis list substituted alone.
 void substitute_hanging_nodes(FaceTabulation& face, const NodeConstraints& constraints) {
-  const auto n = static_cast<Eigen::Index>(face.basis.size());
+  if (!any_hanging(face.basis, constraints)) return;
   std::vector<int> basis;
-  const auto local = [&basis](int node) {
-    const auto index = static_cast<Eigen::Index>(std::find(basis.begin(), basis.end(), node) - basis.begin());
-    if (index == static_cast<Eigen::Index>(basis.size())) basis.push_back(node);
-    return index;
-  };
-  std::vector<std::vector<std::pair<Eigen::Index, double>>> into(static_cast<size_t>(n));
-  for (Eigen::Index a = 0; a < n; ++a) {
-    const int node = face.basis[a];
-    if (node < constraints.free_nodes) {
-      into[a].emplace_back(local(node), 1.0);
-      continue;
-    }
-    const int hanging = node - constraints.free_nodes;
-    for (size_t k = 0; k < constraints.masters[hanging].size(); ++k)
-      into[a].emplace_back(local(constraints.masters[hanging][k]), constraints.weights[hanging][k]);
-  }
-  const auto m = static_cast<Eigen::Index>(basis.size());
+  Eigen::MatrixXd substitution;  // #nodes × #basis
+  substitute_hanging(face.basis, constraints, basis, substitution);
   face.basis = std::move(basis);
   if (face.weights.empty()) return;
-  const Eigen::Index points = face.values_minus.rows();
-  const auto combine_columns = [&](Eigen::MatrixXd& values) {  // #points × n → #points × m
-    Eigen::MatrixXd combined = Eigen::MatrixXd::Zero(points, m);
-    for (Eigen::Index a = 0; a < n; ++a)
-      for (const auto& [b, weight] : into[a]) combined.col(b) += weight * values.col(a);
-    values = std::move(combined);
-  };
-  const auto combine_rows = [&](Eigen::MatrixXd& rows) {  // (#points·n) × c → (#points·m) × c, point-major
+  const Eigen::Index n = substitution.rows(), m = substitution.cols(), points = face.values_minus.rows();
+  face.values_minus = face.values_minus * substitution;
+  face.values_plus = face.values_plus * substitution;
+  const auto per_point = [&](Eigen::MatrixXd& rows) {  // (#points·n) × c → (#points·m) × c, point-major
     if (rows.rows() == 0) return;
-    Eigen::MatrixXd combined = Eigen::MatrixXd::Zero(points * m, rows.cols());
+    Eigen::MatrixXd combined(points * m, rows.cols());
     for (Eigen::Index q = 0; q < points; ++q)
-      for (Eigen::Index a = 0; a < n; ++a)
-        for (const auto& [b, weight] : into[a]) combined.row(q * m + b) += weight * rows.row(q * n + a);
+      combined.middleRows(q * m, m) = substitution.transpose() * rows.middleRows(q * n, n);
     rows = std::move(combined);
   };
-  combine_columns(face.values_minus), combine_columns(face.values_plus);
-  combine_rows(face.gradients_minus), combine_rows(face.gradients_plus);
-  combine_rows(face.hessians_minus), combine_rows(face.hessians_plus);
+  per_point(face.gradients_minus), per_point(face.gradients_plus);
+  per_point(face.hessians_minus), per_point(face.hessians_plus);
 }
 
 }  // namespace

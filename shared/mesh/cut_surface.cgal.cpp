@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <unordered_map>
+#include <utility>
 
 #include "shared/mesh/bounding_box.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
@@ -156,7 +157,7 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
   for (std::size_t b = 0; !surface_blade && b < blades.size(); ++b)
     if (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b])) {
       if (blades.size() > 1) throw NotAtOnce();
-      return surface_cut::cut_piece_by_plane(arrays, *exact[b], edge_length, out);
+      return surface_cut::cut_piece_by_plane(std::move(arrays), *exact[b], edge_length, out);
     }
   // Corefinement takes the piece as a CGAL mesh, each vertex with "v:input" (−1 for the
   // vertices a cut adds), which CGAL carries through its operations. Its precondition: a

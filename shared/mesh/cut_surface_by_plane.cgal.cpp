@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "shared/mesh/cut_surface_pieces.hpp"
 #include "shared/mesh/split_surface_by_plane.hpp"
@@ -38,8 +39,8 @@ struct UnsplitPiece : std::runtime_error {
 // exact predicates, each crossing point rounded once for both sides), each side's cut
 // curve cleaned and its cap remeshed. A vertex of the input that both sides keep (on the
 // plane) gets a copy for the positive side. Appends both sides to `out`.
-bool cut_piece_by_plane(const TrianglePiece& piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
-  auto split = split_surface_by_plane(piece, exact, 1e-9 * edge_length);
+bool cut_piece_by_plane(TrianglePiece piece, const ExactBlade& exact, double edge_length, CutPieces& out) {
+  auto split = split_surface_by_plane(std::move(piece), exact, 1e-9 * edge_length);
   if (!split) throw UnsplitPiece();
   if (split->grazes) return false;
   // New points (input −1) and the input's on the plane: the cut curve and the cap.

@@ -30,7 +30,7 @@ struct CutPieces {
 /// The closed `piece` cut by the whole plane of `exact`, both sides appended to `out`;
 /// false, appending nothing, when the plane only grazes it (a side of no volume). Throws
 /// when a side does not close. `edge_length`: the caps' edges.
-bool cut_piece_by_plane(const TrianglePiece& piece, const ExactBlade& exact, double edge_length, CutPieces& out);
+bool cut_piece_by_plane(TrianglePiece piece, const ExactBlade& exact, double edge_length, CutPieces& out);
 
 /// The closed, self-intersection-free `piece` cut by the polygons of `blades` at once
 /// (CGAL's corefinement), appended to `out`; `piece` is split in the process. Throws

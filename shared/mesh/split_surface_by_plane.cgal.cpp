@@ -9,8 +9,6 @@
 #include <CGAL/Projection_traits_yz_3.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <map>
@@ -274,26 +272,17 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
   // cap's remeshing remove and add vertices): new vertices go at the end.
   mesh.set_recycle_garbage(false);
   auto input_of = mesh.add_property_map<Mesh::Vertex_index, int>("v:input", -1).first;
-  // The vertices by point, then by fan, so that the mesh does not depend on face order:
-  // the corners placed by their point (a counting sort), each point's few fans sorted there.
-  std::vector<int> start(split.points.size() + 1, 0);
-  for (const std::array<int, 3>& face : faces)
-    for (const int point : face) ++start[point + 1];
-  for (std::size_t point = 0; point + 1 < start.size(); ++point) start[point + 1] += start[point];
-  std::vector<int> fan_at(3 * faces.size());
-  std::vector<int> next(start.begin(), start.end() - 1);
+  // The vertices by point, then by fan, so that the mesh does not depend on face order.
+  std::vector<std::pair<int, int>> point_and_fan;
   for (std::size_t f = 0; f < faces.size(); ++f)
-    for (int k = 0; k < 3; ++k) fan_at[next[faces[f][k]]++] = fans.find(3 * static_cast<int>(f) + k);
+    for (int k = 0; k < 3; ++k) point_and_fan.push_back({faces[f][k], fans.find(3 * static_cast<int>(f) + k)});
+  std::sort(point_and_fan.begin(), point_and_fan.end());
+  point_and_fan.erase(std::unique(point_and_fan.begin(), point_and_fan.end()), point_and_fan.end());
   std::vector<Mesh::Vertex_index> vertex_of_fan(3 * faces.size());
-  for (std::size_t point = 0; point + 1 < start.size(); ++point) {
-    const auto first = fan_at.begin() + start[point], last = fan_at.begin() + start[point + 1];
-    std::sort(first, last);
-    const auto distinct = std::unique(first, last);
-    for (auto fan = first; fan != distinct; ++fan) {
-      const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
-      input_of[v] = split.input[point];
-      vertex_of_fan[*fan] = v;
-    }
+  for (const auto& [point, fan] : point_and_fan) {
+    const Mesh::Vertex_index v = mesh.add_vertex(split.points[point]);
+    input_of[v] = split.input[point];
+    vertex_of_fan[fan] = v;
   }
   // The connectivity set directly from the pairing (Euler::add_face would search each
   // vertex's faces for it): halfedge (f, k) runs from corner k to k + 1 and is the opposite
@@ -325,31 +314,12 @@ std::optional<Mesh> side_mesh(const std::vector<std::array<int, 3>>& faces, cons
 
 }  // namespace
 
-std::optional<PlaneSplit> split_surface_by_plane(const Mesh& piece, const ExactBlade& blade, double snap) {
-  const auto piece_input = piece.property_map<Mesh::Vertex_index, int>("v:input").first;
-  TrianglePiece arrays;
-  std::vector<int> point_of(piece.number_of_vertices() + piece.number_of_removed_vertices(), -1);
-  for (const Mesh::Vertex_index v : piece.vertices()) {
-    point_of[v.idx()] = static_cast<int>(arrays.points.size());
-    arrays.points.push_back(piece.point(v));
-    arrays.input.push_back(piece_input[v]);
-  }
-  for (const Mesh::Face_index f : piece.faces()) {
-    std::array<int, 3> point{};
-    int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(piece.halfedge(f), piece))
-      point[k++] = point_of[v.idx()];
-    arrays.triangles.push_back(point);
-  }
-  return split_surface_by_plane(arrays, blade, snap);
-}
-
-std::optional<PlaneSplit> split_surface_by_plane(const TrianglePiece& piece, const ExactBlade& blade, double snap) {
+std::optional<PlaneSplit> split_surface_by_plane(TrianglePiece piece, const ExactBlade& blade, double snap) {
   SplitPoints split;
-  split.points = piece.points;
-  split.input = piece.input;
-  for (const Point& point : piece.points) split.side.push_back(blade.side(vector_of(point)));
-  std::vector<std::array<int, 3>> triangles = piece.triangles;
+  split.points = std::move(piece.points);
+  split.input = std::move(piece.input);
+  for (const Point& point : split.points) split.side.push_back(blade.side(vector_of(point)));
+  std::vector<std::array<int, 3>> triangles = std::move(piece.triangles);
   snap_to_plane(triangles, split, blade, snap);
   PlaneSplit result;
   for (std::size_t point = 0; point < split.points.size(); ++point)

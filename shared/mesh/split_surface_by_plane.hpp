@@ -50,8 +50,6 @@ struct PlaneSplit {
 /// corefines the surface with a box through exact constructions, several times the cost of
 /// this for the pencil's every cut (docs/performance.md, "Cuts"), and it closed a prism
 /// cut along a valley's edge into one piece of the wrong volume (test_split_surface_by_plane.cpp).
-std::optional<PlaneSplit> split_surface_by_plane(const TrianglePiece& piece, const ExactBlade& blade, double snap);
-/// The same for a piece as a CGAL mesh (each vertex with "v:input").
-std::optional<PlaneSplit> split_surface_by_plane(const cut_curve::Mesh& piece, const ExactBlade& blade, double snap);
+std::optional<PlaneSplit> split_surface_by_plane(TrianglePiece piece, const ExactBlade& blade, double snap);
 
 }  // namespace altfem

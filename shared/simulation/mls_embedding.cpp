@@ -229,9 +229,8 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
           else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
           if (near.size() < 4) continue;
           // A⁻¹ e₀, where λ_min/λ_max of A exceeds 1e-10. λ_min ≥ 1/‖A⁻¹‖_F and λ_max ≤ tr A
-          // bound the ratio from below, and a 4 × 4 inverse costs a fraction of the
-          // eigenvalues (which were most of a point's time on the pencil): only where the
-          // bound does not decide do they.
+          // bound the ratio from below, and a 4 × 4 inverse costs less than the eigenvalues:
+          // only where the bound does not decide do they.
           const Eigen::Matrix4d inverse = moments.inverse();
           Eigen::Vector4d row = inverse.col(0);  // A is symmetric
           if (!(1.0 > 1e-10 * inverse.norm() * moments.trace())) {
