@@ -4,7 +4,6 @@
 #include <chrono>
 #include <limits>
 
-#include "dg/affine_coarse_space.hpp"
 #include "dg/definiteness_certificate.hpp"
 #include "dg/dg_boundary_faces.hpp"
 #include "dg/dg_discretization.hpp"
@@ -15,6 +14,7 @@
 #include "dg/dg_volume_grid.hpp"
 #include "dg/grid_coarse_levels.hpp"
 #include "dg/monomial_basis_evaluator.hpp"
+#include "dg/multigrid_coarse_space.hpp"
 #include "dg/penalty_definiteness.hpp"
 #include "dg/polyhedral_mesh_faces.hpp"
 #include "dg/tabulated_dg.hpp"
@@ -128,7 +128,8 @@ public:
     }
     if (linear_) {
       linear_->use_preconditioner(std::move(preconditioner));
-      linear_->use_coarse_space(affine_coarse_space(*system_));
+      if (scene.solver.linear == LinearSolverKind::petsc && scene.solver.p_multigrid)
+        linear_->use_coarse_space(multigrid_coarse_space(mesh_, *system_));
       discretization_ = linear_.get();
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.

@@ -14,10 +14,13 @@ FirstOrderCoarseLevel::FirstOrderCoarseLevel(CoarseSpace space, const Eigen::Mat
     : space_(std::move(space)) {
   if (space_.empty() || near_null_space.cols() == 0) return;
   const auto coarse_dofs = static_cast<Eigen::Index>(3 * space_.fine_function.size());
-  Eigen::MatrixXd restricted(coarse_dofs, near_null_space.cols());
-  for (size_t function = 0; function < space_.fine_function.size(); ++function)
-    restricted.middleRows(static_cast<Eigen::Index>(3 * function), 3) =
-        near_null_space.middleRows(3 * space_.fine_function[function], 3);
+  Eigen::MatrixXd restricted = space_.near_null_space;
+  if (restricted.cols() == 0) {
+    restricted.resize(coarse_dofs, near_null_space.cols());
+    for (size_t function = 0; function < space_.fine_function.size(); ++function)
+      restricted.middleRows(static_cast<Eigen::Index>(3 * function), 3) =
+          near_null_space.middleRows(3 * space_.fine_function[function], 3);
+  }
   // MatNullSpaceCreate wants orthonormal vectors; orthonormal over all coarse rows, so
   // over several ranks too, whichever rank holds which.
   const Eigen::HouseholderQR<Eigen::MatrixXd> qr(restricted);

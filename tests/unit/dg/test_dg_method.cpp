@@ -370,32 +370,25 @@ TEST(DgMethod, MaterialRegionsGiveEachCellItsMaterial) {
   }
 }
 
-// The affine functions inside degree 2 (affine_coarse_space.hpp), the coarse level of
-// PETSc's p-multigrid: each cell's first four functions, injected, so every affine field
-// (the rigid-body modes GAMG builds its coarse spaces from among them) is a coarse field;
-// none for degree 1, nor where strong conditions recombine a cell's functions.
-TEST(DgMethod, DegreeTwoOffersItsAffineFunctionsAsACoarseSpace) {
-  const Built two =
-      build(write_bar_scene("coarse_space_2", linear_no_contraction, R"({ "degree": 2, "resolution": [2, 1, 1] })"));
-  const CoarseSpace& space = two.method->discretization().coarse_space();
-  ASSERT_EQ(space.fine_function.size(), 8u);  // 4 per cell
-  const Eigen::VectorXd affine = two.method->interpolate(
-      [](const Eigen::Vector3d& x) { return Eigen::Vector3d(0.3 + x.y(), 2 * x.z() - x.x(), 1 - 0.5 * x.x()); });
-  Eigen::VectorXd coarse(3 * static_cast<Eigen::Index>(space.fine_function.size()));
-  for (size_t j = 0; j < space.fine_function.size(); ++j)
-    coarse.segment<3>(3 * static_cast<Eigen::Index>(j)) = affine.segment<3>(3 * space.fine_function[j]);
-  Eigen::VectorXd prolonged = Eigen::VectorXd::Zero(affine.size());
-  for (Eigen::Index column = 0; column < space.prolongation.outerSize(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(space.prolongation, column); entry; ++entry)
-      prolonged.segment<3>(3 * entry.row()) += entry.value() * coarse.segment<3>(3 * entry.col());
-  EXPECT_LT((prolonged - affine).cwiseAbs().maxCoeff(), 1e-12 * affine.cwiseAbs().maxCoeff());
-
-  const Built one =
-      build(write_bar_scene("coarse_space_1", linear_no_contraction, R"({ "degree": 1, "resolution": [2, 1, 1] })"));
-  EXPECT_TRUE(one.method->discretization().coarse_space().empty());
-  const Built strong = build(write_bar_scene("coarse_space_strong", linear_no_contraction,
-                                             R"({ "degree": 2, "resolution": [2, 1, 1], "conditions": "strong" })"));
-  EXPECT_TRUE(strong.method->discretization().coarse_space().empty());
+// PETSc's coarse level (multigrid_coarse_space.hpp, tested there) is offered under linear
+// solver petsc with p_multigrid, the one solver that uses it: one function per vertex of
+// the 2 × 1 × 1 bar for degree 2 (36 coarse unknowns against 60); none for degree 1 (36
+// against 24) or under strong conditions, nor for the direct solver.
+TEST(DgMethod, OffersPetscsCoarseLevelOnlyToPetsc) {
+  const std::string petsc = R"({ "linear": "petsc" })";
+  const auto coarse_functions = [&](const std::string& name, const std::string& dg, const std::string& solver) {
+    const Built built = build(write_bar_scene(name, linear_no_contraction, dg, solver));
+    return built.method->discretization().coarse_space().fine_function.size();
+  };
+  EXPECT_EQ(coarse_functions("coarse_space_2", R"({ "degree": 2, "resolution": [2, 1, 1] })", petsc), 12u);
+  EXPECT_EQ(coarse_functions("coarse_space_direct", R"({ "degree": 2, "resolution": [2, 1, 1] })", ""), 0u);
+  EXPECT_EQ(coarse_functions("coarse_space_whole", R"({ "degree": 2, "resolution": [2, 1, 1] })",
+                             R"({ "linear": "petsc", "p_multigrid": false })"),
+            0u);
+  EXPECT_EQ(coarse_functions("coarse_space_1", R"({ "degree": 1, "resolution": [2, 1, 1] })", petsc), 0u);
+  EXPECT_EQ(coarse_functions("coarse_space_strong",
+                             R"({ "degree": 2, "resolution": [2, 1, 1], "conditions": "strong" })", petsc),
+            0u);
 }
 
 }  // namespace
