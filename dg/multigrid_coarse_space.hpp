@@ -5,8 +5,9 @@
 // (affine_coarse_space.hpp). On the vertex space GAMG sees a first-order operator — on
 // simplices exactly the continuous P1 stiffness, whose fits are conforming there (Dobrev,
 // Lazarov, Vassilevski & Zikatanov 2006, §3) — where on the whole k = 1 space it
-// aggregates monomial blocks: CG took 35-39 iterations on the cantilever and 31 a solve
-// on the tetrahedralized ball, against 18-29 and 20 (docs/performance.md).
+// aggregates monomial blocks: CG took 35-39 iterations on the k = 1 cantilever and 31 a
+// solve on the tetrahedralized ball, against 18-29 and 20, and 71-87 on k = 2 against 21-34
+// (docs/performance.md).
 #include "dg/dg_linear_system.hpp"
 #include "shared/mesh/polyhedral_mesh.hpp"
 #include "shared/solve/coarse_space.hpp"

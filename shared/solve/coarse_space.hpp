@@ -23,6 +23,10 @@ struct CoarseSpace {
   /// nodes (the rigid-body motions there), for a space whose coarse values are not fine
   /// ones (dg's vertex space). Empty: the fine near-null space's rows at fine_function.
   Eigen::MatrixXd near_null_space;
+  /// Whether GAMG coarsens this level without MIS-2 on the squared graph even for one
+  /// solve per set-up (the method's measured choice, where the fewer iterations outweigh
+  /// the dearer set-up of a level this small; else only where one set-up serves several).
+  bool coarsen_gently = false;
 
   bool empty() const { return fine_function.empty(); }
 };

@@ -56,7 +56,7 @@ PetscErrorCode FirstOrderCoarseLevel::configure(PC pc, bool aggressive_coarsenin
   // resets the count whenever it reads the level's options, which PCMG does again at set-up.
   const char* prefix = nullptr;
   PetscCall(PCGetOptionsPrefix(coarse_pc, &prefix));
-  if (!aggressive_coarsening && !petsc::coarsening_chosen(prefix ? prefix : "")) {
+  if ((!aggressive_coarsening || space_.coarsen_gently) && !petsc::coarsening_chosen(prefix ? prefix : "")) {
     gentle_option_ = std::string("-") + (prefix ? prefix : "") + "pc_gamg_aggressive_coarsening";
     PetscCall(PetscOptionsSetValue(nullptr, gentle_option_.c_str(), "0"));
   }

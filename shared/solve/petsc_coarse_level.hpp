@@ -33,7 +33,8 @@ public:
   /// After the options are read: when `pc` is GAMG, makes it a two-level PCMG (levels'
   /// options under the prefix "mg_levels_", the coarse level's, a GAMG, under
   /// "mg_coarse_", which coarsens its finest level aggressively only with
-  /// `aggressive_coarsening` or where the options choose); any other preconditioner is left
+  /// `aggressive_coarsening` and not the space's coarsen_gently, or where the options
+  /// choose); any other preconditioner is left
   /// alone. Returns PETSc's error code.
   PetscErrorCode configure(PC pc, bool aggressive_coarsening = true);
   /// Where the fine operator's rows are: PETSc's row of each DOF (empty: the DOF's own

@@ -1,7 +1,7 @@
 // The coarse level of PETSc's multigrid for DG (dg/multigrid_coarse_space.hpp): one scalar
 // function per mesh vertex whose near-null space, the rigid motions at the vertices, P maps
 // to the rigid motions in every cell's monomials exactly; each placed with a cell's
-// constant function; degree 2's affine functions where the vertex space would not be
+// constant function; coarsened gently beyond degree 1; degree 2's affine functions where the vertex space would not be
 // coarser; nothing for degree 1 then, nor under strong conditions.
 #include <gtest/gtest.h>
 
@@ -70,6 +70,7 @@ TEST(MultigridCoarseSpace, IsOneFunctionPerVertexWhoseRigidMotionsAreTheFineOnes
     ASSERT_EQ(space.fine_function.size(), 4u * 5u * 3u) << "k = " << degree;
     ASSERT_EQ(space.near_null_space.rows(), 3 * 60);
     ASSERT_EQ(space.near_null_space.cols(), 6);
+    EXPECT_EQ(space.coarsen_gently, degree == 2);
     for (int function : space.fine_function) {  // a cell's constant function
       int cell = 0;
       while (system.offset(cell + 1) <= function) ++cell;
