@@ -2,7 +2,7 @@
 """PETSc's preconditioners against altfem's own and CHOLMOD (issue #37, step 1): CG
 iterations to a relative residual of 1e-8 and seconds per method and size, for GAMG with
 the rigid-body modes as its near-null space (solver.rigid_body_modes, the default), on
-higher-order fem and fcm elements working on the first-order space inside
+higher-order fem and fcm elements and on dg working on a first-order space inside
 (solver.p_multigrid, the default) and with the method's preconditioner smoothing its
 finest level (solver.method_smoother, the default), GAMG on the whole space, GAMG with its
 own smoother, GAMG without the rotations, hypre's BoomerAMG with nodal
@@ -31,7 +31,7 @@ SOLVERS = {
     # with the method's preconditioner (fcm's Additive Schwarz, dg's; solver.method_smoother).
     # GAMG on the whole higher-order space, where the row above works on the first-order
     # space inside as a two-level p-multigrid's coarse level (solver.p_multigrid: fem and
-    # fcm on quadratic elements; dg and harmonic have no such space, so the rows agree).
+    # fcm on quadratic elements, dg's vertex space; harmonic and Hex8 have none, so their rows agree).
     "GAMG on the whole space": ["solver/linear=petsc", "solver/p_multigrid=false"],
     "GAMG, its own smoother": ["solver/linear=petsc", "solver/method_smoother=false"],
     "GAMG, translations only": ["solver/linear=petsc", "solver/rigid_body_modes=false"],
