@@ -1,8 +1,10 @@
 // The loads, interpolation and errors of a DgLinearSystem: rules on its cells and faces
 // (dg/dg_linear_system.hpp); the matrices are integrated in dg_linear_system.cpp.
 #include <cmath>
+#include <map>
 
 #include "dg/dg_linear_system.hpp"
+
 #include "dg/strong_conditions.hpp"
 #include "shared/quadrature/polyhedron_rule.hpp"
 
@@ -64,25 +66,41 @@ double DgLinearSystem::l2_error(const Eigen::VectorXd& coefficients, const Vecto
 
 Eigen::VectorXd DgLinearSystem::interpolate(const VectorField& field) const {
   Eigen::VectorXd coefficients(dof_count());
+  // Collocation on a (k+2)³ grid of the frame's [-¼, ¼]³: exact for fields in P_k. In its
+  // frame a cell's monomials are those of every cell of its degree, so their collocation
+  // matrix is factorised once per degree (a recombined cell's, strong conditions, its own):
+  // an event measures the body in the new basis by this, and a QR per cell was most of it.
+  std::map<int, Eigen::ColPivHouseholderQR<Eigen::MatrixXd>> monomials_by_degree;
+  Eigen::VectorXd phi;
+  Eigen::MatrixXd unused;
   for (size_t c = 0; c < cells_.size(); ++c) {
     const MonomialBasis& basis = bases_[c];
-    // Collocation on a (k+2)³ grid of the frame's [-¼, ¼]³: exact for fields in P_k.
     const int per_axis = basis.degree() + 2;
     const int points = per_axis * per_axis * per_axis;
-    Eigen::MatrixXd system(points, basis.size()), values(points, 3);
-    Eigen::VectorXd phi;
-    Eigen::MatrixXd unused;
-    int row = 0;
-    for (int i = 0; i < per_axis; ++i)
-      for (int j = 0; j < per_axis; ++j)
-        for (int k = 0; k < per_axis; ++k, ++row) {
-          const Eigen::Vector3d xi = (Eigen::Vector3d(i, j, k) / (per_axis - 1)).array() * 0.5 - 0.25;
-          const Eigen::Vector3d x = basis.centre() + basis.scale() * xi;
-          basis.evaluate(x, phi, unused);
-          system.row(row) = phi.transpose();
-          values.row(row) = field(x).transpose();
-        }
-    const Eigen::MatrixXd solution = system.colPivHouseholderQr().solve(values);  // #functions × 3
+    const auto grid_point = [&](int row) {
+      const Eigen::Vector3d ijk(row / (per_axis * per_axis), row / per_axis % per_axis, row % per_axis);
+      const Eigen::Vector3d xi = (ijk / (per_axis - 1)).array() * 0.5 - 0.25;
+      return (basis.centre() + basis.scale() * xi).eval();
+    };
+    const auto collocation = [&] {
+      Eigen::MatrixXd system(points, basis.size());
+      for (int row = 0; row < points; ++row) {
+        basis.evaluate(grid_point(row), phi, unused);
+        system.row(row) = phi.transpose();
+      }
+      return system.colPivHouseholderQr();
+    };
+    Eigen::MatrixXd values(points, 3);
+    for (int row = 0; row < points; ++row) values.row(row) = field(grid_point(row)).transpose();
+    Eigen::MatrixXd solution;  // #functions × 3
+    if (basis.combination().size() > 0) {
+      solution = collocation().solve(values);
+    } else {
+      auto factor = monomials_by_degree.find(basis.degree());
+      if (factor == monomials_by_degree.end())
+        factor = monomials_by_degree.emplace(basis.degree(), collocation()).first;
+      solution = factor->second.solve(values);
+    }
     for (int a = 0; a < basis.size(); ++a) coefficients.segment<3>(3 * (offsets_[c] + a)) = solution.row(a).transpose();
   }
   return coefficients;

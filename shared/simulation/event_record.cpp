@@ -19,7 +19,8 @@ nlohmann::json EventRecord::json() const {
         {"integration", seconds.integration},
         {"pattern", seconds.pattern},
         {"transfer", seconds.transfer},
-        {"embedding", seconds.embedding}}},
+        {"embedding", seconds.embedding},
+        {"measures", seconds.measures}}},
       {"conserved", conserved}};
   if (!pointer.empty()) result["pointer"] = pointer;
   if (!facts.is_null()) result["facts"] = facts;

@@ -11,13 +11,15 @@ namespace altfem {
 /// transferring the state, and embedding the surface in the new basis: keying the old
 /// embedding for the new one here, and the new one built on first use, by the first
 /// surface frame after the event, which the run adds to the event's `seconds` in
-/// summary.json then.
+/// summary.json then; and measuring the body before and after for what the event
+/// conserved (after it, in the new basis: its mass and momentum functionals).
 struct EventPhases {
   double geometry = 0;
   double integration = 0;
   double pattern = 0;
   double transfer = 0;
   double embedding = 0;
+  double measures = 0;
 };
 
 struct EventRecord {

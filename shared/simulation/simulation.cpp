@@ -205,9 +205,12 @@ void Simulation::check_events() const {
   }
 }
 
-BodyMeasures Simulation::measure() {
+BodyMeasures Simulation::measure(EventRecord& record) {
+  const auto start = std::chrono::steady_clock::now();
   if (!measure_basis_) measure_basis_ = body_measure_basis(*method_, *timed_);
-  return measure_body(*measure_basis_, *timed_, *integrator_, state_);
+  BodyMeasures measures = measure_body(*measure_basis_, *timed_, *integrator_, state_);
+  record.seconds.measures += seconds_since(start);
+  return measures;
 }
 
 EventRecord Simulation::start_record(std::string kind, std::string target, std::string pointer,
@@ -229,7 +232,7 @@ void Simulation::finish_record(EventRecord& record, const BodyMeasures& before) 
   record.dofs_after = timed_->dof_count();
   record.constrained_after = static_cast<long long>(timed_->constrained_dofs().size());
   record.quadrature_points_after = method_->quadrature_points();
-  record.conserved = conservation_json(before, measure());
+  record.conserved = conservation_json(before, measure(record));
 }
 
 EventRecord Simulation::apply(const SceneEvent& event) {
@@ -237,7 +240,7 @@ EventRecord Simulation::apply(const SceneEvent& event) {
   if (event.kind == EventKind::refine) return refine(event);
   const DirichletCondition& condition = scene_.dirichlet[event.condition];
   EventRecord record = start_record("release", condition.name, event.pointer, event.time);
-  const BodyMeasures before = measure();
+  const BodyMeasures before = measure(record);
   // A release changes no basis and no integral: only the constrained set (the identity
   // transfer), so the only phase is the new elimination and Newton's set-up.
   const auto start = std::chrono::steady_clock::now();
@@ -253,7 +256,7 @@ EventRecord Simulation::rebuild() {
   const std::shared_ptr<const MethodMesh> mesh = method_->mesh();
   if (!rebuild_ || !mesh) throw std::logic_error("Simulation::rebuild: the method has no rebuild");
   EventRecord record = start_record("rebuild", "", "", state_.time);
-  const BodyMeasures before = measure();
+  const BodyMeasures before = measure(record);
   rebuild_on(*mesh, record);
   finish_record(record, before);
   return record;
@@ -263,7 +266,7 @@ EventRecord Simulation::rebuild() {
 // §8): the method's mesh cut, the method rebuilt on it, the state transferred.
 EventRecord Simulation::cut(const SceneEvent& event) {
   EventRecord record = start_record("cut", "", event.pointer, event.time);
-  const BodyMeasures before = measure();
+  const BodyMeasures before = measure(record);
   const auto start = std::chrono::steady_clock::now();
   // The surface every method deforms is cut by the same blade, so the frames show the body
   // open and `compare` still measures the same vertices. Neither cut reads the other's
@@ -292,7 +295,7 @@ EventRecord Simulation::cut(const SceneEvent& event) {
 // the state transferred. Nothing marked, nothing rebuilt.
 EventRecord Simulation::refine(const SceneEvent& event) {
   EventRecord record = start_record("refine", "", event.pointer, event.time);
-  const BodyMeasures before = measure();
+  const BodyMeasures before = measure(record);
   const auto start = std::chrono::steady_clock::now();
   const PrescribedTraction boundary(scene_, state_.time, region_tolerance(geometry_->bounds), released_);
   const std::shared_ptr<const MethodMesh> mesh =

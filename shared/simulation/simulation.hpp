@@ -66,8 +66,9 @@ private:
   // method brings its own preconditioner).
   void layer_discretization(std::unique_ptr<LinearSolver> solver = nullptr);
   EventRecord start_record(std::string kind, std::string target, std::string pointer, double scheduled_time) const;
-  // The body's measures now; the basis of them is measured once per method.
-  BodyMeasures measure();
+  // The body's measures now, their seconds added to `record`'s; the basis of them is
+  // measured once per method.
+  BodyMeasures measure(EventRecord& record);
   void finish_record(EventRecord& record, const BodyMeasures& before);
 
   const Scene& scene_;
