@@ -58,6 +58,7 @@ public:
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
     own_surface_ = built.surface.triangles.rows() > 0;
+    surface_.common = !own_surface_;
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);

@@ -101,6 +101,7 @@ public:
     if (!scene.tractions.empty() || !geometry.common_surface())
       surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
+    surface_.common = geometry.common_surface() != nullptr;
     surface_.evaluator = cells_->basis_evaluator();
   }
 

@@ -18,6 +18,7 @@ namespace altfem {
 
 struct EmbeddedSurface {
   SurfaceMesh surface;       ///< what the method deforms (the scene's common surface, else its own boundary)
+  bool common = false;       ///< whether `surface` is the scene's common surface
   SurfaceMesh load_surface;  ///< what surface loads act on: the boundary of the domain integrated
   SurfaceLift lift;          ///< the curved faces load_surface stands for; empty when it is exact
   std::unique_ptr<ElementBasisEvaluator> evaluator;
@@ -72,6 +73,9 @@ public:
   void continue_embedding(const MethodInstance& previous) override {
     if (const auto* before = dynamic_cast<const EmbeddedSurfaceMethod*>(&previous))
       surface_.continue_from(before->surface_);
+  }
+  void adopt_cut_surface(const SurfaceMesh& surface) override {
+    if (surface_.common) surface_.surface = surface;
   }
 
 protected:

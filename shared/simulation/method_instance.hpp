@@ -61,6 +61,11 @@ public:
   /// Called on the instance an event rebuilt, with the one before it (alive until this
   /// returns): lets the embedding of the surface keep what the event left alone.
   virtual void continue_embedding(const MethodInstance& /*previous*/) {}
+  /// Called on the instance a cut rebuilt, before its surface is embedded, with the
+  /// scene's common surface cut by the same blade: a method that deforms the common
+  /// surface (not its mesh's own) deforms this one. The rebuild runs beside the surface's
+  /// cut (Simulation::cut), so it was built with the surface from before.
+  virtual void adopt_cut_surface(const SurfaceMesh& /*surface*/) {}
   /// The coefficients (#dofs) of a vector field in the method's basis: exact for affine
   /// fields, which every method's basis reproduces (initial velocities, the patch and
   /// rigid-motion tests of the conformance suite).

@@ -41,6 +41,7 @@ public:
     // original boundary's regions).
     surface_.load_surface = boundary_surface(cells_->embedded().mesh()).surface;
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : surface_.load_surface;
+    surface_.common = geometry.common_surface() != nullptr;
     surface_.evaluator = cells_->basis_evaluator();
   }
 

@@ -60,6 +60,7 @@ public:
     surface_.load_surface = boundary.surface;
     surface_.lift = lagrange_surface_lift(mesh_, boundary);
     surface_.surface = geometry.common_surface() ? *geometry.common_surface() : boundary.surface;
+    surface_.common = geometry.common_surface() != nullptr;
     surface_.evaluator = std::make_unique<LagrangeBasisEvaluator>(mesh_, &constraints_);
   }
 
