@@ -57,8 +57,7 @@ public:
     PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
-    own_surface_ = built.surface.triangles.rows() > 0;
-    surface_.common = !own_surface_;
+    surface_.common = built.surface.triangles.rows() == 0;  // else the mesh's own (deformed_surface)
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
@@ -248,7 +247,7 @@ public:
 private:
   // The mesh as built (for an event to change).
   PolyhedralSceneMesh polyhedral_mesh() const {
-    PolyhedralSceneMesh mesh = handed_polyhedral_scene_mesh(mesh_, own_surface_ ? &surface_.surface : nullptr,
+    PolyhedralSceneMesh mesh = handed_polyhedral_scene_mesh(mesh_, surface_.common ? nullptr : &surface_.surface,
                                                             surface_.load_surface, mesh_facts_, cell_levels_);
     if (volume_mesh_.nodes.rows() > 0) mesh.converted = volume_mesh_;
     return mesh;
@@ -403,8 +402,7 @@ private:
   std::vector<int> cell_levels_;   // per cell, the refinements it came through (empty: none)
   std::vector<int> parent_cells_;  // per cell, the cell of the build before holding it (empty: not an event's)
   std::vector<std::vector<ParentPart>> merged_parts_;  // per cell merged from pieces of several, those pieces
-  bool own_surface_ = false;     // the mesh's surface; false: the geometry's common one (deformed_surface)
-  std::vector<Motion> motions_;  // per Dirichlet condition
+  std::vector<Motion> motions_;                        // per Dirichlet condition
   std::unique_ptr<DgLinearSystem> system_;
   SceneMaterials materials_;
   std::unique_ptr<LinearDgDiscretization> linear_;  // the linear material, warped or not

@@ -44,8 +44,7 @@ public:
     PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
-    own_surface_ = built.surface.triangles.rows() > 0;
-    surface_.common = !own_surface_;
+    surface_.common = built.surface.triangles.rows() == 0;  // else the mesh's own (deformed_surface)
     // Surface loads act on the boundary of the domain integrated: the mesh's.
     surface_.load_surface = std::move(built.load_surface);
     mesh_facts_ = std::move(built.facts);
@@ -194,7 +193,7 @@ public:
 private:
   // The mesh as built (for an event to change).
   PolyhedralSceneMesh polyhedral_mesh() const {
-    return handed_polyhedral_scene_mesh(mesh_, own_surface_ ? &surface_.surface : nullptr, surface_.load_surface,
+    return handed_polyhedral_scene_mesh(mesh_, surface_.common ? nullptr : &surface_.surface, surface_.load_surface,
                                         mesh_facts_, cell_levels_);
   }
   std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh) const {
@@ -217,7 +216,6 @@ private:
   nlohmann::json mesh_facts_;             // its source (build_polyhedral_scene_mesh)
   std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)
   std::vector<int> cell_levels_;          // per cell, the refinements it came through (empty: none)
-  bool own_surface_ = false;              // the mesh's surface; false: the geometry's common one (deformed_surface)
   std::unique_ptr<HarmonicElementBases> bases_;
   std::shared_ptr<HarmonicBasisMemory> basis_memory_;  // every MFS shape met, where events rebuild
   std::unique_ptr<Discretization> discretization_;     // linear, or warped (§6)

@@ -12,6 +12,7 @@
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "tests/unit/dg/field_error_at_cell_points.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem::dg {
@@ -39,29 +40,6 @@ Eigen::VectorXd prolong(const CoarseSpace& space, const Eigen::VectorXd& coarse)
   return fine;
 }
 
-// The largest |u_h(x) − motion(x)| over every cell's vertices and centroid.
-template <typename Motion>
-double error_against(const PolyhedralMesh& mesh, const DgLinearSystem& system, const Eigen::VectorXd& coefficients,
-                     const Motion& motion) {
-  double error = 0;
-  Eigen::VectorXd values;
-  Eigen::MatrixXd gradients;
-  for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const Polyhedron& polyhedron = system.cell(cell);
-    Eigen::MatrixXd points(polyhedron.vertices.rows() + 1, 3);
-    points << polyhedron.vertices, mesh.cell_centroids.row(cell);
-    for (Eigen::Index p = 0; p < points.rows(); ++p) {
-      const Eigen::Vector3d x = points.row(p);
-      system.basis(cell).evaluate(x, values, gradients);
-      Eigen::Vector3d u = Eigen::Vector3d::Zero();
-      for (Eigen::Index a = 0; a < values.size(); ++a)
-        u += values[a] * coefficients.segment<3>(3 * (system.offset(cell) + a));
-      error = std::max(error, (u - motion(x)).norm());
-    }
-  }
-  return error;
-}
-
 TEST(MultigridCoarseSpace, IsOneFunctionPerVertexWhoseRigidMotionsAreTheFineOnes) {
   const PolyhedralMesh mesh = grid(Eigen::Vector3i(3, 4, 2));
   for (int degree : {1, 2}) {
@@ -80,8 +58,11 @@ TEST(MultigridCoarseSpace, IsOneFunctionPerVertexWhoseRigidMotionsAreTheFineOnes
       const Eigen::Vector3d direction = Eigen::Vector3d::Unit(axis);
       const Eigen::VectorXd translation = prolong(space, space.near_null_space.col(axis));
       const Eigen::VectorXd rotation = prolong(space, space.near_null_space.col(3 + axis));
-      EXPECT_LT(error_against(mesh, system, translation, [&](const Eigen::Vector3d&) { return direction; }), 1e-12);
-      EXPECT_LT(error_against(mesh, system, rotation, [&](const Eigen::Vector3d& x) { return direction.cross(x); }),
+      EXPECT_LT(
+          field_error_at_cell_points(mesh, system, translation, [&](const Eigen::Vector3d&) { return direction; }),
+          1e-12);
+      EXPECT_LT(field_error_at_cell_points(mesh, system, rotation,
+                                           [&](const Eigen::Vector3d& x) { return direction.cross(x); }),
                 1e-12)
           << "k = " << degree << ", axis " << axis;
     }

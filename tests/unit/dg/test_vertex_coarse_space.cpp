@@ -10,6 +10,7 @@
 #include "shared/mesh/polyhedral_from_volume_mesh.hpp"
 #include "shared/mesh/slice_into_polyhedra.hpp"
 #include "shared/mesh/structured_grid.hpp"
+#include "tests/unit/dg/field_error_at_cell_points.hpp"
 #include "tests/unit/surfaces.hpp"
 
 namespace altfem::dg {
@@ -34,23 +35,7 @@ double affine_reproduction_error(const PolyhedralMesh& mesh, int degree, bool st
   for (size_t v = 0; v < space.nodes.size(); ++v) values.segment<3>(3 * v) = field(mesh.nodes.row(space.nodes[v]));
   const Eigen::VectorXd coefficients = space.prolongation * values;
 
-  double error = 0;
-  Eigen::VectorXd basis_values;
-  Eigen::MatrixXd basis_gradients;
-  for (int cell = 0; cell < system.cell_count(); ++cell) {
-    const Polyhedron& polyhedron = system.cell(cell);
-    Eigen::MatrixXd points(polyhedron.vertices.rows() + 1, 3);
-    points << polyhedron.vertices, mesh.cell_centroids.row(cell);
-    for (Eigen::Index p = 0; p < points.rows(); ++p) {
-      const Eigen::Vector3d x = points.row(p);
-      system.basis(cell).evaluate(x, basis_values, basis_gradients);
-      Eigen::Vector3d u = Eigen::Vector3d::Zero();
-      for (Eigen::Index a = 0; a < basis_values.size(); ++a)
-        u += basis_values[a] * coefficients.segment<3>(3 * (system.offset(cell) + a));
-      error = std::max(error, (u - field(x)).norm());
-    }
-  }
-  return error;
+  return field_error_at_cell_points(mesh, system, coefficients, field);
 }
 
 TEST(VertexCoarseSpace, ReproducesAffineFieldsOnAHexahedralGrid) {
