@@ -38,6 +38,7 @@ TEST(Events, ReleaseIsLoggedSummarisedAndTheFramesGoOn) {
   EXPECT_GT(event["constrained_dofs"]["before"].get<int>(), event["constrained_dofs"]["after"].get<int>());
   for (const char* phase : {"geometry", "integration", "pattern", "transfer"})
     EXPECT_GE(event["seconds"][phase].get<double>(), 0.0) << phase;
+  EXPECT_GT(event["seconds"]["measures"].get<double>(), 0.0);  // the body measured before and after
   for (const char* measure : {"mass_change", "volume_change", "momentum_change", "energy_before_j", "energy_jump_j"})
     EXPECT_TRUE(event["conserved"].contains(measure)) << measure;
   // Counted honestly across the release: the pattern is the same (no second analysis),
