@@ -126,17 +126,21 @@ public:
                                                          density_integrals(), std::move(element_dofs), external_force,
                                                          strong_dofs(), system_->share_row_owners());
     }
+    // PETSc's coarse level, for the one solver that uses it.
+    CoarseSpace coarse_space = scene.solver.linear == LinearSolverKind::petsc && scene.solver.p_multigrid
+                                   ? multigrid_coarse_space(mesh_, *system_)
+                                   : CoarseSpace{};
     if (linear_) {
       linear_->use_preconditioner(std::move(preconditioner));
-      if (scene.solver.linear == LinearSolverKind::petsc && scene.solver.p_multigrid)
-        linear_->use_coarse_space(multigrid_coarse_space(mesh_, *system_));
+      linear_->use_coarse_space(std::move(coarse_space));
       discretization_ = linear_.get();
     } else {
       // Interior penalty lifts the data into F (dg/lifted_gradients.hpp); its load keeps the penalty's part.
       const bool lifted = spec_.flux == Flux::interior_penalty;
       tabulated_ = make_tabulated_dg(
           *system_, materials_.pointers(), [this, lifted](double time) { return weak_condition_load(time, lifted); },
-          std::move(preconditioner), lifted ? moving_data() : ConditionTrajectory{}, strong_dofs());
+          std::move(preconditioner), lifted ? moving_data() : ConditionTrajectory{}, strong_dofs(),
+          std::move(coarse_space));
       discretization_ = tabulated_.discretization.get();
     }
     integration_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -159,7 +159,8 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
-                              PreconditionerFactory preconditioner, ConditionTrajectory data, DirichletDofs strong) {
+                              PreconditionerFactory preconditioner, ConditionTrajectory data, DirichletDofs strong,
+                              CoarseSpace coarse_space) {
   const int strength = 2 * system.basis(0).degree();
   DiscretizationParts parts;
   TabulatedDg result;
@@ -203,6 +204,7 @@ TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Ma
     }
   parts.external_force = std::move(external_force);
   parts.preconditioner = std::move(preconditioner);
+  parts.coarse_space = std::move(coarse_space);
   result.discretization = std::make_unique<TabulatedDiscretization>(std::move(parts));
   return result;
 }

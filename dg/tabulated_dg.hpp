@@ -40,10 +40,11 @@ TabulatedElements tabulate_dg_cells(const DgLinearSystem& system, int strength, 
 /// interior-penalty flux, the Dirichlet data the lifting shifts F by at each set_time
 /// (empty: g = 0); preconditioner: block Jacobi; strong: the coefficients the strongly
 /// imposed conditions fix (dg/strong_conditions.hpp; their faces carry no term), empty
-/// when every condition is weak.
+/// when every condition is weak; coarse_space: PETSc's coarse level
+/// (multigrid_coarse_space.hpp), empty for none.
 TabulatedDg make_tabulated_dg(const DgLinearSystem& system, std::vector<const Material*> materials,
                               std::function<Eigen::VectorXd(double)> external_force,
                               PreconditionerFactory preconditioner, ConditionTrajectory data = {},
-                              DirichletDofs strong = {});
+                              DirichletDofs strong = {}, CoarseSpace coarse_space = {});
 
 }  // namespace altfem::dg

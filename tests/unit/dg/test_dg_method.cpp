@@ -372,15 +372,20 @@ TEST(DgMethod, MaterialRegionsGiveEachCellItsMaterial) {
 
 // PETSc's coarse level (multigrid_coarse_space.hpp, tested there) is offered under linear
 // solver petsc with p_multigrid, the one solver that uses it: one function per vertex of
-// the 2 × 1 × 1 bar for degree 2 (36 coarse unknowns against 60); none for degree 1 (36
-// against 24) or under strong conditions, nor for the direct solver.
+// the 2 × 1 × 1 bar for degree 2 (36 coarse unknowns against 60), with the linear material
+// and a nonlinear one (the tabulated path); none for degree 1 (36 against 24) or under
+// strong conditions, nor for the direct solver.
 TEST(DgMethod, OffersPetscsCoarseLevelOnlyToPetsc) {
   const std::string petsc = R"({ "linear": "petsc" })";
-  const auto coarse_functions = [&](const std::string& name, const std::string& dg, const std::string& solver) {
-    const Built built = build(write_bar_scene(name, linear_no_contraction, dg, solver));
+  const auto coarse_functions = [&](const std::string& name, const std::string& dg, const std::string& solver,
+                                    const std::string& material = linear_no_contraction) {
+    const Built built = build(write_bar_scene(name, material, dg, solver));
     return built.method->discretization().coarse_space().fine_function.size();
   };
   EXPECT_EQ(coarse_functions("coarse_space_2", R"({ "degree": 2, "resolution": [2, 1, 1] })", petsc), 12u);
+  EXPECT_EQ(coarse_functions("coarse_space_nonlinear", R"({ "degree": 2, "resolution": [2, 1, 1] })", petsc,
+                             R"({ "model": "neo_hookean", "youngs_modulus": 1e6, "poisson_ratio": 0.3 })"),
+            12u);
   EXPECT_EQ(coarse_functions("coarse_space_direct", R"({ "degree": 2, "resolution": [2, 1, 1] })", ""), 0u);
   EXPECT_EQ(coarse_functions("coarse_space_whole", R"({ "degree": 2, "resolution": [2, 1, 1] })",
                              R"({ "linear": "petsc", "p_multigrid": false })"),
