@@ -193,8 +193,8 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
   std::exception_ptr failure;  // an exception must not leave the OpenMP region
 #pragma omp parallel
   {
-    std::vector<int> near;  // per thread: no allocation per point
-    std::vector<double> theta;
+    std::vector<int> near;                  // per thread: no allocation per point
+    std::vector<Eigen::Vector4d> weighted;  // θ_i p_i of each near sample
 #pragma omp for schedule(dynamic, 32)
     for (Eigen::Index point = 0; point < points.rows(); ++point) {
       try {
@@ -208,7 +208,7 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
         // A point whose piece has no samples has nothing to be embedded by (the error below).
         for (double enlarge = 1.0; own != reachable.end() && enlarge <= 8.0 && !solved; enlarge *= 1.5) {
           near.clear();
-          theta.clear();
+          weighted.clear();
           Eigen::Matrix4d moments = Eigen::Matrix4d::Zero();
           const double reach = enlarge * own->second.largest_radius;
           // Both grids hold the point's own piece's samples alone.
@@ -221,9 +221,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
             const double weight = std::exp(-squared_distance / (sigma * sigma)) - truncation;
             Eigen::Vector4d p;
             p << 1.0, offset / reach;
-            moments += weight * p * p.transpose();
+            weighted.push_back(weight * p);
+            moments += weighted.back() * p.transpose();
             near.push_back(sample);
-            theta.push_back(weight);
           };
           if (enlarge == 1.0) supports.for_each_at(point_root[point], x.transpose(), add);
           else own->second.cubes.for_each_in((x.array() - reach).transpose(), (x.array() + reach).transpose(), add);
@@ -240,14 +240,9 @@ MlsEmbedding::MlsEmbedding(const ElementBasisEvaluator& basis, const Eigen::Matr
                   eigen.eigenvectors().row(0).transpose();
           }
           PointWeights& result = found[static_cast<size_t>(point)];
-          result.samples.reserve(near.size());
           result.weights.reserve(near.size());
-          for (size_t n = 0; n < near.size(); ++n) {
-            Eigen::Vector4d p;
-            p << 1.0, (samples.row(near[n]).transpose() - x) / reach;
-            result.samples.push_back(near[n]);
-            result.weights.push_back(theta[n] * row.dot(p));
-          }
+          result.samples = near;
+          for (const Eigen::Vector4d& theta_p : weighted) result.weights.push_back(row.dot(theta_p));
           solved = true;
         }
         if (!solved)
