@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <numeric>
+#include <set>
 #include <stdexcept>
 #include <string>
 
@@ -57,9 +58,12 @@ std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade)
 
 }  // namespace
 
-int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
-  const int cells = mesh.cell_count();
-  // The slits: per parent, the pairs of pieces whose boundary faces coincide.
+namespace {
+
+// Per parent, the pairs of its pieces that hold the two sides of a slit: boundary faces at
+// the same positions (the blade's separation opened the face between them).
+std::map<int, std::vector<std::pair<int, int>>> slits_by_parent(const PolyhedralMesh& mesh,
+                                                                const std::vector<int>& parent_cell) {
   using FaceKey = std::vector<std::array<double, 3>>;
   std::map<std::pair<int, FaceKey>, int> holder;  // (parent, the face's sorted node positions) → piece
   std::map<int, std::vector<std::pair<int, int>>> slits_of;
@@ -73,6 +77,25 @@ int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
     const auto [found, inserted] = holder.try_emplace({parent_cell[piece], std::move(key)}, piece);
     if (!inserted) slits_of[parent_cell[piece]].push_back({found->second, piece});
   }
+  return slits_of;
+}
+
+// `mesh` with each group of `joined` as one cell (kind cut), `parent_cell` renumbered with it.
+// Returns, per node of the result, its index before.
+std::vector<int> merge_joined_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell, DisjointSets& joined) {
+  std::vector<int> new_cell;
+  std::vector<int> kept_nodes = merge_cell_groups(mesh, joined, PolyhedralCellKind::cut, &new_cell);
+  std::vector<int> parents(static_cast<std::size_t>(mesh.cell_count()));
+  for (std::size_t cell = 0; cell < new_cell.size(); ++cell) parents[new_cell[cell]] = parent_cell[cell];
+  parent_cell = std::move(parents);
+  return kept_nodes;
+}
+
+}  // namespace
+
+int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
+  const int cells = mesh.cell_count();
+  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
   DisjointSets joined(cells);
   int joined_away = 0;
   for (int face = 0; face < mesh.face_count(); ++face) {
@@ -91,11 +114,48 @@ int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
     ++joined_away;
   }
   if (joined_away == 0) return 0;
-  std::vector<int> new_cell;
-  merge_cell_groups(mesh, joined, PolyhedralCellKind::cut, &new_cell);
-  std::vector<int> parents(static_cast<std::size_t>(mesh.cell_count()));
-  for (int cell = 0; cell < cells; ++cell) parents[new_cell[cell]] = parent_cell[cell];
-  parent_cell = std::move(parents);
+  merge_joined_pieces(mesh, parent_cell, joined);
+  return joined_away;
+}
+
+int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const CuttingPlane& plane,
+                        std::vector<int>* kept_nodes) {
+  const int cells = mesh.cell_count();
+  // A piece's side: its node farthest from the plane's (the nodes a step took on the plane
+  // may round to either side of it).
+  const ExactBlade exact(plane);
+  std::vector<int> side(static_cast<std::size_t>(cells), 0);
+  for (int piece = 0; piece < cells; ++piece) {
+    double farthest = -1;
+    int node_farthest = -1;
+    for (const int face : mesh.cell_faces[piece])
+      for (const int node : mesh.faces[face]) {
+        const double distance = std::abs((mesh.nodes.row(node).transpose() - plane.point).dot(plane.normal));
+        if (distance > farthest) farthest = distance, node_farthest = node;
+      }
+    side[piece] = exact.side(mesh.nodes.row(node_farthest).transpose());
+  }
+  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
+  DisjointSets joined(cells);
+  int joined_away = 0;
+  for (int face = 0; face < mesh.face_count(); ++face) {
+    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
+    if (second < 0 || parent_cell[first] != parent_cell[second]) continue;
+    if (side[first] != side[second] && slits_of.count(parent_cell[first]) > 0) continue;
+    const int a = joined.find(first), b = joined.find(second);
+    if (a == b) continue;
+    joined.join(a, b);
+    ++joined_away;
+  }
+  if (joined_away == 0) {
+    if (kept_nodes) {
+      kept_nodes->resize(static_cast<std::size_t>(mesh.nodes.rows()));
+      std::iota(kept_nodes->begin(), kept_nodes->end(), 0);
+    }
+    return 0;
+  }
+  std::vector<int> kept = merge_joined_pieces(mesh, parent_cell, joined);
+  if (kept_nodes) *kept_nodes = std::move(kept);
   return joined_away;
 }
 
@@ -161,6 +221,30 @@ void TrianglePlaneNodes::after(const SurfaceBladeStep& step, const Eigen::Matrix
 
 namespace {
 
+// `origin` (per node) of the nodes `kept` (per node after, its index before).
+void keep_origins(std::vector<int>& origin, const std::vector<int>& kept) {
+  std::vector<int> kept_origin(kept.size());
+  for (std::size_t node = 0; node < kept.size(); ++node) kept_origin[node] = origin[kept[node]];
+  origin = std::move(kept_origin);
+}
+
+// The window's pieces once joined (join_pieces_by_side) keep every face piece and node the
+// steps put on their faces, which the next triangle's steps would cut again: the faces in
+// one plane between the same two cells merged and the steps' nodes in the middle of
+// straight edges dropped (simplify_cut_faces.hpp, `straight` its tolerance), as after the
+// whole cut, but no shell face nor a node of the window's (the cells outside hold them).
+// Returns, per node after, its index before.
+std::vector<int> simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMeshWindow& window, double straight) {
+  std::set<std::vector<int>> shell;
+  for (const int face : window.shell_window_faces) shell.insert(window.mesh.faces[face]);
+  std::vector<bool> fixed(static_cast<std::size_t>(cut.face_count()));
+  for (int face = 0; face < cut.face_count(); ++face)
+    fixed[face] = cut.face_cells(face, 1) < 0 && shell.count(cut.faces[face]) > 0;
+  merge_coplanar_faces(cut, straight, &fixed);
+  drop_straight_run_nodes(cut, straight, static_cast<Eigen::Index>(window.nodes.size()));
+  return drop_unused_nodes(cut);
+}
+
 // The steps of one triangle (`steps`) on the window of `result`'s mesh about them, put
 // back. `cell_boxes` per cell of that mesh; `bounds` the input mesh's bounding box, whose
 // diagonal every step's snapping is a fraction of.
@@ -200,6 +284,17 @@ void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox
     cut = std::move(step.mesh);
     snap_new_nodes_to_corners(cut, nodes_before, blade_step.corners, blade_snap_fraction * diagonal);
     weld_coincident_neighbours(cut);
+  }
+  // The pieces each side of the triangle, joined again: without, every plane of a finely
+  // curved blade multiplied the pieces near it (fcm's and fem's fragments, which stay
+  // convex, by about five a triangle).
+  const auto own_split = std::find_if(steps, steps + count, [](const SurfaceBladeStep& step) {
+    return step.triangle_plane && step.scope.action == CutAction::split;
+  });
+  std::vector<int> kept_nodes;
+  if (own_split != steps + count && join_pieces_by_side(cut, parents, own_split->plane, &kept_nodes) > 0) {
+    keep_origins(window_origin, kept_nodes);
+    keep_origins(window_origin, simplify_joined_window(cut, window, 1e-12 * diagonal));
   }
   origin.insert(origin.end(), window_origin.begin() + static_cast<std::ptrdiff_t>(window.nodes.size()),
                 window_origin.end());

@@ -71,6 +71,17 @@ private:
 /// pieces joined away.
 int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
 
+/// After one triangle's steps (`plane` its own): joins again the pieces of each cell (per
+/// `parent_cell`, updated) on each side of `plane`, and the two sides too where the
+/// triangle's separation opened no face between them. Each cell so made is its parent's
+/// part on one side of the plane, or the parent, so a convex parent stays convex: the
+/// edges' splits only bounded the faces the separation could open, and a cell the steps
+/// reached but did not part leaves them no pieces. Geometry left stale. `kept_nodes`
+/// (optional): per node of the result, its index before (the nodes inside a joined cell
+/// dropped). Returns the number of pieces joined away.
+int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const CuttingPlane& plane,
+                        std::vector<int>* kept_nodes = nullptr);
+
 /// `cut(scope)`, and for a split step that throws NumericalError `cut` again snapping only
 /// nodes a few ulps off the plane (CutScope::snap_fraction).
 template <typename Cut>

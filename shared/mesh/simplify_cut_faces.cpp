@@ -36,7 +36,7 @@ std::vector<int> single_loop(const std::vector<std::pair<int, int>>& edges) {
 
 }  // namespace
 
-int merge_coplanar_faces(PolyhedralMesh& mesh, double tolerance) {
+int merge_coplanar_faces(PolyhedralMesh& mesh, double tolerance, const std::vector<bool>* fixed) {
   const int faces = mesh.face_count();
   std::vector<Eigen::Vector3d> normal(static_cast<std::size_t>(faces));
   std::vector<double> area(static_cast<std::size_t>(faces));
@@ -75,6 +75,7 @@ int merge_coplanar_faces(PolyhedralMesh& mesh, double tolerance) {
     for (std::size_t k = 0; k < loop.size(); ++k)
       for (const int other : faces_on_edge[edge_key(loop[k], loop[(k + 1) % loop.size()])]) {
         if (other == face || !placed[other] || cells_of(other) != cells_of(face)) continue;
+        if (fixed && ((*fixed)[face] || (*fixed)[other])) continue;
         const int mine = groups.find(face), theirs = groups.find(other);
         if (mine == theirs) continue;
         const int reference = plane_of[theirs];
@@ -131,7 +132,7 @@ int merge_coplanar_faces(PolyhedralMesh& mesh, double tolerance) {
   return merged_away;
 }
 
-int drop_straight_run_nodes(PolyhedralMesh& mesh, double tolerance) {
+int drop_straight_run_nodes(PolyhedralMesh& mesh, double tolerance, Eigen::Index first_node) {
   std::vector<std::vector<int>> faces_of(static_cast<std::size_t>(mesh.nodes.rows()));
   for (int face = 0; face < mesh.face_count(); ++face)
     for (const int node : mesh.faces[face]) faces_of[node].push_back(face);
@@ -158,7 +159,7 @@ int drop_straight_run_nodes(PolyhedralMesh& mesh, double tolerance) {
     return face_area_vector(mesh, without).norm() > tolerance * longest;
   };
   int removed = 0;
-  for (std::size_t node = 0; node < faces_of.size(); ++node) {
+  for (std::size_t node = static_cast<std::size_t>(first_node); node < faces_of.size(); ++node) {
     const std::vector<int>& holders = faces_of[node];
     if (holders.empty() || !std::all_of(holders.begin(), holders.end(), [&](int face) {
           return between_neighbours(mesh.faces[face], static_cast<int>(node));
