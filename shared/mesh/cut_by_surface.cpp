@@ -35,25 +35,38 @@ constexpr double blade_snap_fraction = 1e-9;
 // Per triangle and edge k (from corner k to k + 1), whether the blade goes on across it
 // in the triangle's plane: the edge is another triangle's too, whose third corner lies in
 // this one's plane (an exact predicate). Then both sides of the edge separate, and
-// splitting the cells by the plane through it would only add pieces.
-std::vector<std::array<bool, 3>> edges_within_a_plane(const SurfaceBlade& blade) {
+// splitting the cells by the plane through it would only add pieces. And per triangle its
+// flat part of the blade: the triangles joined across such edges, all in one plane.
+struct BladeEdges {
+  std::vector<std::array<bool, 3>> within;
+  std::vector<int> flat_part;  ///< per triangle, the smallest triangle of its flat part
+};
+
+BladeEdges edges_within_a_plane(const SurfaceBlade& blade) {
+  const auto triangles = static_cast<int>(blade.triangles.rows());
   std::map<std::pair<int, int>, std::vector<std::pair<int, int>>> holders;  // edge → (triangle, its corner k)
-  for (int triangle = 0; triangle < static_cast<int>(blade.triangles.rows()); ++triangle)
+  for (int triangle = 0; triangle < triangles; ++triangle)
     for (int k = 0; k < 3; ++k)
       holders[std::minmax(blade.triangles(triangle, k), blade.triangles(triangle, (k + 1) % 3))].push_back(
           {triangle, k});
   const auto corner = [&](int triangle, int k) -> Eigen::Vector3d {
     return blade.vertices.row(blade.triangles(triangle, k % 3)).transpose();
   };
-  std::vector<std::array<bool, 3>> within(static_cast<std::size_t>(blade.triangles.rows()), {false, false, false});
+  BladeEdges edges{std::vector<std::array<bool, 3>>(static_cast<std::size_t>(triangles), {false, false, false}), {}};
+  DisjointSets flat(triangles);
   for (const auto& [edge, sharing] : holders) {
     if (sharing.size() != 2) continue;
     const auto [first, k] = sharing[0];
     const auto [second, j] = sharing[1];
     if (orientation_sign(corner(first, 0), corner(first, 1), corner(first, 2), corner(second, j + 2)) != 0) continue;
-    within[first][k] = within[second][j] = true;
+    edges.within[first][k] = edges.within[second][j] = true;
+    flat.join(flat.find(first), flat.find(second));
   }
-  return within;
+  std::vector<int> smallest(static_cast<std::size_t>(triangles), triangles);
+  for (int triangle = 0; triangle < triangles; ++triangle)
+    smallest[flat.find(triangle)] = std::min(smallest[flat.find(triangle)], triangle);
+  for (int triangle = 0; triangle < triangles; ++triangle) edges.flat_part.push_back(smallest[flat.find(triangle)]);
+  return edges;
 }
 
 }  // namespace
@@ -161,7 +174,7 @@ int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, con
 
 std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
   std::vector<SurfaceBladeStep> steps;
-  const std::vector<std::array<bool, 3>> within = edges_within_a_plane(blade);
+  const BladeEdges edges = edges_within_a_plane(blade);
   for (Eigen::Index triangle = 0; triangle < blade.triangles.rows(); ++triangle) {
     std::vector<Eigen::Vector3d> corners;
     Eigen::AlignedBox3d box;
@@ -174,9 +187,11 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
       throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
     const std::array<Eigen::Vector3d, 3> triangle_corners{corners[0], corners[1], corners[2]};
     const int index = static_cast<int>(triangle);
-    steps.push_back({CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners, index});
+    const int flat_part = edges.flat_part[triangle];
+    steps.push_back(
+        {CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners, index, flat_part});
     for (int k = 0; k < 3; ++k) {
-      if (within[triangle][k]) continue;
+      if (edges.within[triangle][k]) continue;
       const Eigen::Vector3d& from = corners[k];
       const Eigen::Vector3d& to = corners[(k + 1) % 3];
       Eigen::AlignedBox3d edge_box(from.cwiseMin(to), from.cwiseMax(to));
@@ -184,10 +199,15 @@ std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
                        {CutAction::split, edge_box},
                        false,
                        triangle_corners,
-                       index});
+                       index,
+                       flat_part});
     }
-    steps.push_back({plane, {CutAction::separate, box}, true, triangle_corners, index});
+    steps.push_back({plane, {CutAction::separate, box}, true, triangle_corners, index, flat_part});
   }
+  // A flat part's triangles one after another: their pieces are joined once all of them
+  // are cut (cut_window_by_flat_part).
+  std::stable_sort(steps.begin(), steps.end(),
+                   [](const SurfaceBladeStep& a, const SurfaceBladeStep& b) { return a.flat_part < b.flat_part; });
   return steps;
 }
 
@@ -245,14 +265,13 @@ std::vector<int> simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMes
   return drop_unused_nodes(cut);
 }
 
-// The steps of one triangle (`steps`) on the window of `result`'s mesh about them, put
-// back. `cell_boxes` per cell of that mesh; `bounds` the input mesh's bounding box, whose
-// diagonal every step's snapping is a fraction of.
-// `origin`: per node of `result`'s mesh, the input node it is or is a copy of (−1: made by
-// a step); extended by the new nodes.
-void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox3d>& cell_boxes,
-                            std::vector<int>& origin, const SurfaceBladeStep* steps, std::size_t count,
-                            const Eigen::AlignedBox3d& bounds) {
+// The steps of one flat part of the blade (`steps`: its triangles', one after another) on
+// the window of `result`'s mesh about them, put back. `cell_boxes` per cell of that mesh; `bounds` the input mesh's
+// bounding box, whose diagonal every step's snapping is a fraction of. `origin`: per node of `result`'s mesh, the input
+// node it is or is a copy of (−1: made by a step); extended by the new nodes.
+void cut_window_by_flat_part(PolyhedralCut& result, std::vector<Eigen::AlignedBox3d>& cell_boxes,
+                             std::vector<int>& origin, const SurfaceBladeStep* steps, std::size_t count,
+                             const Eigen::AlignedBox3d& bounds) {
   Eigen::AlignedBox3d reach;
   for (std::size_t k = 0; k < count; ++k)
     // A step away from the body (its region or, to separate, its triangle's box) changes nothing.
@@ -269,6 +288,7 @@ void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox
   TrianglePlaneNodes on_plane;
   for (std::size_t k = 0; k < count; ++k) {
     const SurfaceBladeStep& blade_step = steps[k];
+    if (k > 0 && blade_step.triangle != steps[k - 1].triangle) on_plane = {};
     if (!blade_step.scope.region->intersects(bounds)) continue;
     const Eigen::Index nodes_before = cut.nodes.rows();
     CutScope scope = on_plane.scope_for(blade_step);
@@ -285,9 +305,12 @@ void cut_window_by_triangle(PolyhedralCut& result, std::vector<Eigen::AlignedBox
     snap_new_nodes_to_corners(cut, nodes_before, blade_step.corners, blade_snap_fraction * diagonal);
     weld_coincident_neighbours(cut);
   }
-  // The pieces each side of the triangle, joined again: without, every plane of a finely
+  // The pieces each side of the flat part, joined again: without, every plane of a finely
   // curved blade multiplied the pieces near it (fcm's and fem's fragments, which stay
-  // convex, by about five a triangle).
+  // convex, by about five a triangle). Not before its last triangle: a triangle's
+  // separation opens the faces in its plane that it covers, split along its edges but not
+  // along those it shares with the flat part's other triangles, which their own edges'
+  // splits bound.
   const auto own_split = std::find_if(steps, steps + count, [](const SurfaceBladeStep& step) {
     return step.triangle_plane && step.scope.action == CutAction::split;
   });
@@ -315,8 +338,8 @@ PolyhedralCut cut_by_surface_steps(const PolyhedralMesh& mesh, const SurfaceBlad
   std::iota(origins.begin(), origins.end(), 0);
   const std::vector<SurfaceBladeStep> steps = surface_blade_steps(blade);
   for (std::size_t first = 0, last = 0; first < steps.size(); first = last) {
-    while (last < steps.size() && steps[last].triangle == steps[first].triangle) ++last;
-    cut_window_by_triangle(result, cell_boxes, origins, &steps[first], last - first, bounds);
+    while (last < steps.size() && steps[last].flat_part == steps[first].flat_part) ++last;
+    cut_window_by_flat_part(result, cell_boxes, origins, &steps[first], last - first, bounds);
   }
   if (origin) *origin = std::move(origins);
   return result;

@@ -12,8 +12,10 @@
 // a polygon blade covers, and every side decision is the planar cut's exact predicate.
 // Where the blade ends inside the body its pieces stay joined around the blade's edge.
 // The steps leave a cell near the blade in up to five pieces per triangle that reaches
-// it; the polyhedral cut then joins again the pieces of a cell that the blade did not part
-// (one non-convex cell per side), never two across a slit where the blade ends inside the
+// it; after each triangle they are joined again, one convex piece a side of its plane or
+// the cell whole where it opened nothing between them (join_pieces_by_side), and the
+// polyhedral cut at the end joins the pieces of a cell that the blade did not part (one
+// non-convex cell per side), never two across a slit where the blade ends inside the
 // cell. The cells out of reach of the steps keep their nodes, faces and kind.
 #include <Eigen/Core>
 #include <array>
@@ -38,11 +40,14 @@ struct SurfaceBladeStep {
   bool triangle_plane = false;             ///< the triangle's own plane (its split or separation), not an edge's
   std::array<Eigen::Vector3d, 3> corners;  ///< the triangle's
   int triangle = 0;                        ///< the blade's triangle whose step this is
+  /// the smallest triangle of its flat part: the blade's triangles joined across edges where
+  /// it goes on in their plane
+  int flat_part = 0;
 };
 
 /// The planar steps `blade` is cut by, in order: per triangle up to five (its plane's
-/// split, its edges' splits, its separation). Throws std::invalid_argument for a
-/// triangle without area.
+/// split, its edges' splits, its separation), a flat part's triangles one after another.
+/// Throws std::invalid_argument for a triangle without area.
 std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade);
 
 /// The nodes on one triangle's plane as its steps go: those its split made (a rounding off
@@ -71,11 +76,11 @@ private:
 /// pieces joined away.
 int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
 
-/// After one triangle's steps (`plane` its own): joins again the pieces of each cell (per
-/// `parent_cell`, updated) on each side of `plane`, and the two sides too where the
-/// triangle's separation opened no face between them. Each cell so made is its parent's
+/// After the steps of one flat part of a blade (`plane` its own): joins again the pieces of
+/// each cell (per `parent_cell`, updated) on each side of `plane`, and the two sides too
+/// where its separations opened no face between them. Each cell so made is its parent's
 /// part on one side of the plane, or the parent, so a convex parent stays convex: the
-/// edges' splits only bounded the faces the separation could open, and a cell the steps
+/// edges' splits only bounded the faces the separations could open, and a cell the steps
 /// reached but did not part leaves them no pieces. Geometry left stale. `kept_nodes`
 /// (optional): per node of the result, its index before (the nodes inside a joined cell
 /// dropped). Returns the number of pieces joined away.

@@ -1,6 +1,7 @@
 // A surface blade's cut of the embedded tetrahedra (cut_tetrahedral_mesh.hpp). The
 // fragments are cut as dg's and harmonic's cells are (cut_by_surface_steps: each triangle's
-// planar steps on the window of the fragments about it, the pieces left apart), so a step
+// planar steps on the window of the fragments about it, its pieces joined again a side of
+// its plane, so each stays convex), so a step
 // splits only the fragments near its triangle and puts its crossing nodes on the faces of
 // those it leaves whole. Such a face holds nodes in the middle of its edges, which a fan
 // from one of its corners would join by triangles of no area, and the two fragments that

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Core>
+#include <cmath>
+#include <map>
 #include <random>
 
 #include "shared/mesh/cut_by_surface.hpp"
@@ -97,6 +99,48 @@ TEST(CutBySurface, SeededPlanesAcrossTheBallsConesLeaveNoTetrahedronOut) {
       EXPECT_NEAR(pieces.boundary_area, boundary_area, 1e-12) << hexahedral_fragments << " " << point.transpose();
     }
   }
+}
+
+// A notch of two flat parts, each a quadrilateral of two triangles whose shared diagonal
+// runs through the body: from the cube's floor up to (0.6, 0.4) in (x, z), then bent up to
+// (0.7, 0.5), where it ends; across y beyond the body. The second part lies in one cell,
+// whose section by its plane its first triangle does not open (the section's centroid lies
+// in the second, which holds the fold): each flat part's pieces are joined once all its
+// triangles are cut. Joined after each triangle, the cell came back whole, and the second
+// triangle's section reached past the first's edge at the notch's end, its centroid
+// beyond the second: the notch did not open that cell.
+SurfaceBlade bent_notch() {
+  SurfaceBlade blade;
+  blade.vertices.resize(6, 3);
+  const double xs[3] = {0.3, 0.6, 0.7}, zs[3] = {-0.2, 0.4, 0.5};
+  for (int row = 0; row < 3; ++row) {
+    blade.vertices.row(2 * row) << xs[row], -0.8, zs[row];
+    blade.vertices.row(2 * row + 1) << xs[row], 1.2, zs[row];
+  }
+  blade.triangles.resize(4, 3);
+  blade.triangles << 0, 2, 3, 0, 3, 1, 2, 4, 5, 2, 5, 3;
+  return blade;
+}
+
+TEST(CutBySurface, ABentNotchPartsTheFragmentsItCrossesAndOpensWhereItReaches) {
+  const FragmentedTetrahedra bar = convex_cells_as_fragments(polyhedral_mesh_from_volume_mesh(
+      structured_grid(Eigen::AlignedBox3d(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones()), Eigen::Vector3i(4, 1, 1),
+                      ElementType::hex8)));
+  const TetrahedralCut cut = cut_tetrahedral_mesh_by_surface(bar, bent_notch());
+  EXPECT_EQ(cut.flat_tetrahedra, 0);
+  std::vector<int> input_fragment;
+  for (Eigen::Index tetrahedron = 0; tetrahedron < cut.result.mesh.cells.rows(); ++tetrahedron)
+    input_fragment.push_back(cut.parent_fragment[cut.result.fragment_of(static_cast<int>(tetrahedron))]);
+  // The notch crosses the cell x ∈ [0.25, 0.5] (from the floor at x = 0.4 to z = 0.2) and
+  // ends in [0.5, 0.75].
+  const TetrahedralPieces parts = tetrahedral_pieces(cut.result.mesh, input_fragment);
+  EXPECT_EQ(parts.pieces_of_group, (std::map<int, int>{{0, 1}, {1, 2}, {2, 1}, {3, 1}}));
+  // One body, its boundary the cube's and both sides of the notch inside it.
+  const TetrahedralPieces body = tetrahedral_pieces(cut.result.mesh);
+  ASSERT_EQ(body.volumes.size(), 1u);
+  EXPECT_NEAR(body.volumes[0], 1, 1e-13);
+  const double notch = std::hypot(0.2, 0.4) + std::hypot(0.1, 0.1);
+  EXPECT_NEAR(body.boundary_area, 6 + 2 * notch, 1e-12);
 }
 
 }  // namespace

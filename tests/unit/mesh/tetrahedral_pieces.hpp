@@ -20,14 +20,16 @@ inline double tetrahedron_volume(const Eigen::MatrixXd& nodes, const Eigen::Matr
   return (b - a).cross(c - a).dot(d - a) / 6;
 }
 
-// The tetrahedra's pieces (joined through shared faces) by volume, smallest first, and
-// the area of the faces only one tetrahedron holds.
+// The tetrahedra's pieces (joined through shared faces; with `group`, per tetrahedron,
+// only those of one group) by volume, smallest first, the area of the faces only one
+// tetrahedron holds, and per group its number of pieces.
 struct TetrahedralPieces {
   std::vector<double> volumes;
   double boundary_area = 0;
+  std::map<int, int> pieces_of_group;
 };
 
-inline TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh) {
+inline TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh, const std::vector<int>& group = {}) {
   // Every tetrahedron's four faces (sorted corners) with their holder, sorted: a face two
   // tetrahedra hold comes twice in a row.
   std::vector<std::pair<std::array<int, 3>, int>> holders;
@@ -45,7 +47,8 @@ inline TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh) {
   TetrahedralPieces result;
   for (std::size_t first = 0, last = 0; first < holders.size(); first = last) {
     while (last < holders.size() && holders[last].first == holders[first].first) ++last;
-    if (last - first == 2) pieces.join(holders[first].second, holders[first + 1].second);
+    const int one = holders[first].second, other = last - first == 2 ? holders[first + 1].second : -1;
+    if (other >= 0 && (group.empty() || group[one] == group[other])) pieces.join(pieces.find(one), pieces.find(other));
     if (last - first != 1) continue;
     const std::array<int, 3>& face = holders[first].first;
     const Eigen::Vector3d a = mesh.nodes.row(face[0]), b = mesh.nodes.row(face[1]), c = mesh.nodes.row(face[2]);
@@ -54,7 +57,10 @@ inline TetrahedralPieces tetrahedral_pieces(const VolumeMesh& mesh) {
   std::map<int, double> volume_of;
   for (Eigen::Index cell = 0; cell < mesh.cells.rows(); ++cell)
     volume_of[pieces.find(static_cast<int>(cell))] += tetrahedron_volume(mesh.nodes, mesh.cells, cell);
-  for (const auto& [root, volume] : volume_of) result.volumes.push_back(volume);
+  for (const auto& [root, volume] : volume_of) {
+    result.volumes.push_back(volume);
+    ++result.pieces_of_group[group.empty() ? 0 : group[root]];
+  }
   std::sort(result.volumes.begin(), result.volumes.end());
   return result;
 }
