@@ -24,6 +24,7 @@
 
 #include "shared/common/error.hpp"
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
+#include "shared/mesh/join_cut_pieces.hpp"
 
 namespace altfem {
 
@@ -66,26 +67,6 @@ private:
   std::vector<int> none_;
   std::vector<bool> is_on_plane_;  ///< per node, while the triangle's steps go
 };
-
-/// Joins again the pieces of each cell that a blade did not part (`parent_cell`: per cell
-/// of `mesh`, the cell it is a piece of; updated): pieces of one parent next to one another
-/// through an interior face become one cell (kind cut; faces between them dropped), face
-/// by face, but never two that hold the two sides of a slit (boundary faces at the same
-/// positions: where the blade ends inside the cell, its pieces meet around the blade's
-/// edge, and one cell could not open there). Geometry left stale. Returns the number of
-/// pieces joined away.
-int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell);
-
-/// After the steps of one flat part of a blade (`plane` its own): joins again the pieces of
-/// each cell (per `parent_cell`, updated) on each side of `plane`, and the two sides too
-/// where its separations opened no face between them. Each cell so made is its parent's
-/// part on one side of the plane, or the parent, so a convex parent stays convex: the
-/// edges' splits only bounded the faces the separations could open, and a cell the steps
-/// reached but did not part leaves them no pieces. Geometry left stale. `kept_nodes`
-/// (optional): per node of the result, its index before (the nodes inside a joined cell
-/// dropped). Returns the number of pieces joined away.
-int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const CuttingPlane& plane,
-                        std::vector<int>* kept_nodes = nullptr);
 
 /// `cut(scope)`, and for a split step that throws NumericalError `cut` again snapping only
 /// nodes a few ulps off the plane (CutScope::snap_fraction).

@@ -1,5 +1,5 @@
 // A surface blade's triangle leaves each cell it reaches whole or in one piece a side of
-// its plane (issue #33; cut_by_surface.hpp, join_pieces_by_side): its edges' splits only
+// its plane (issue #33; join_cut_pieces.hpp, join_pieces_by_side): its edges' splits only
 // bound the faces its separation may open, so the pieces they make are joined again, and
 // a cell stays convex for fcm's and fem's cones. One triangle in the plane z = 0.5 of the
 // unit cube: covering part of the section, two convex halves joined where it does not
