@@ -153,9 +153,8 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
   // included (and no test of them, a third of the pencil's cut surface, is made), and no
   // CGAL mesh of it. A polygon over the whole section is split alike: corefinement left the
   // two sides of a box cut through by a square joined, neither closed.
-  const bool surface_blade = blades.front()->surface != nullptr;
-  for (std::size_t b = 0; !surface_blade && b < blades.size(); ++b)
-    if (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b])) {
+  for (std::size_t b = 0; b < blades.size(); ++b)
+    if (!blades[b]->surface && (blades[b]->polygon.empty() || covers_section(surface, triangles, *exact[b]))) {
       if (blades.size() > 1) throw NotAtOnce();
       return surface_cut::cut_piece_by_plane(std::move(arrays), *exact[b], edge_length, out);
     }
@@ -173,9 +172,7 @@ bool cut_piece(const SurfaceMesh& surface, const std::vector<int>& triangles,
                    Mesh::Vertex_index(static_cast<Mesh::size_type>(corners[1])),
                    Mesh::Vertex_index(static_cast<Mesh::size_type>(corners[2])));
   if (marked_intersecting || PMP::does_self_intersect(piece)) throw SelfIntersectingPiece();
-  if (surface_blade) return surface_cut::cut_piece_by_surface_blade(piece, *blades.front()->surface, edge_length, out);
-  surface_cut::cut_piece_by_polygons(piece, blades, edge_length, out);
-  return true;
+  return surface_cut::cut_piece_by_blades(piece, blades, edge_length, out);
 }
 
 // `surface` cut by `blades` at once, each piece by those that cross it (a blade with
@@ -212,7 +209,7 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
     std::vector<const ExactBlade*> crossing_exact;
     for (std::size_t b = 0; b < blades.size(); ++b)
       if (blades[b].surface) {
-        if (meets_bounds(surface, triangles, *blades[b].surface)) {
+        if (!spanning_only && meets_bounds(surface, triangles, *blades[b].surface)) {
           crossing.push_back(&blades[b]);
           crossing_exact.push_back(&exact[b]);
         }
@@ -298,33 +295,32 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
   return result;
 }
 
-// `before` cut again by `blades`: the whole planes one after the other, then the surface
-// blades, then the polygons that span a piece's section, a piece at a time, then the
-// others at once (the pieces the same, cuts being sets: what splits a piece as a plane does
-// first, since a notch leaves a slit no plane's section can close). Throws NotAtOnce.
+// `before` cut again by `blades`: the whole planes one after the other, then the polygons
+// that span a piece's section, a piece at a time, then the other polygons and the surface
+// blades at once (the pieces the same, cuts being sets: what splits a piece as a plane does
+// first, since a notch leaves a slit no plane's section can close, and no corefinement
+// takes a piece whose caps lie on one another). Throws NotAtOnce.
 SurfaceCut cut_again(const SurfaceMesh& before, const std::vector<CuttingPlane>& blades) {
   SurfaceCut result{before, {}};
   int cap_triangles = 0;
-  std::vector<CuttingPlane> one_by_one, polygons;  // the whole planes, then the surface blades
+  std::vector<CuttingPlane> one_by_one, finite;  // the whole planes; the finite and surface blades
   for (const CuttingPlane& blade : blades)
     if (!blade.surface && blade.polygon.empty()) one_by_one.push_back(blade);
-  for (const CuttingPlane& blade : blades)
-    if (blade.surface) one_by_one.push_back(blade);
-    else if (!blade.polygon.empty()) polygons.push_back(blade);
+    else finite.push_back(blade);
   for (const CuttingPlane& blade : one_by_one) {
     result = cut_surface_by(result.surface, {blade});
     if (result.facts["pieces_left_whole"].get<int>() > 0) return result;
     cap_triangles += result.facts["cap_triangles"].get<int>();
   }
-  for (std::size_t pass = 0; pass < polygons.size(); ++pass) {
-    SurfaceCut spanned = cut_surface_by(result.surface, polygons, true);
+  for (std::size_t pass = 0; pass < finite.size(); ++pass) {
+    SurfaceCut spanned = cut_surface_by(result.surface, finite, true);
     if (spanned.facts["pieces_left_whole"].get<int>() > 0) return spanned;
     if (spanned.facts["cap_triangles"].get<int>() == 0) break;
     cap_triangles += spanned.facts["cap_triangles"].get<int>();
     result = std::move(spanned);
   }
-  if (!polygons.empty()) {
-    result = cut_surface_by(result.surface, polygons);
+  if (!finite.empty()) {
+    result = cut_surface_by(result.surface, finite);
     cap_triangles += result.facts["cap_triangles"].get<int>();
   }
   result.facts["added_triangles"] = result.surface.triangles.rows() - before.triangles.rows();

@@ -32,6 +32,17 @@ Mesh blade_triangles(const CuttingPlane& blade) {
   return mesh;
 }
 
+// A surface blade's triangles as a CGAL mesh.
+Mesh surface_blade_mesh(const SurfaceBlade& blade) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v)
+    vertices.push_back(mesh.add_vertex(point_of(blade.vertices.row(v).transpose())));
+  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t)
+    mesh.add_face(vertices[blade.triangles(t, 0)], vertices[blade.triangles(t, 1)], vertices[blade.triangles(t, 2)]);
+  return mesh;
+}
+
 // Bit patterns of a point, for finding the surface's copies of a cap vertex: both are
 // the same exact intersection of a surface edge with a blade triangle, rounded once.
 using PointKey = std::array<double, 3>;
@@ -88,8 +99,8 @@ using CapPlane = std::function<CuttingPlane(std::size_t cap, const Mesh& mesh, M
 // per side. A bent cap (a surface blade's) keeps its triangles and may miss the piece: then
 // this returns false, appending nothing. One wholly inside the piece leaves the piece's
 // triangles as they are and adds its two sides (its border, a crack's rim, one vertex).
-bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const CapPlane& plane_of, bool planar_caps,
-                       double edge_length, CutPieces& out) {
+bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const CapPlane& plane_of,
+                       const std::vector<bool>& planar, double edge_length, CutPieces& out) {
   Mesh clipper = piece;  // the body before the split, for the caps (clip leaves it as it is)
   const std::size_t vertices_before = piece.number_of_vertices();
   PMP::split(piece, splitter);
@@ -98,19 +109,20 @@ bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const
   // Coplanar pieces of the blade and the surface can leave polygons: triangles again.
   PMP::triangulate_faces(piece);
   renumber_by_position(piece);
-  for (Mesh& cap : caps) {
+  for (std::size_t b = 0; b < caps.size(); ++b) {
+    Mesh& cap = caps[b];
     PMP::clip(cap, clipper, CGAL::parameters::clip_volume(false), CGAL::parameters::do_not_modify(true));
     cap.collect_garbage();
     PMP::triangulate_faces(cap);
     renumber_by_position(cap);
     // A planar cap is remeshed in its plane; a bent one keeps the blade's triangles.
-    if (planar_caps)
+    if (planar[b])
       cut_curve::remesh_cap(
           cap, [](Mesh::Face_index) { return true; }, edge_length);
   }
   // A bent cap that does not cross the surface may still lie inside the body (a closed
   // blade, a crack wholly inside): the surface is left as it is, and gains the cap's two sides.
-  if (!planar_caps && !split_any &&
+  if (std::none_of(planar.begin(), planar.end(), [](bool flat) { return flat; }) && !split_any &&
       std::all_of(caps.begin(), caps.end(), [](const Mesh& cap) { return cap.number_of_faces() == 0; }))
     return false;
 
@@ -210,41 +222,30 @@ bool cut_piece_by_caps(Mesh& piece, Mesh splitter, std::vector<Mesh> caps, const
 
 }  // namespace
 
-void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
-                           CutPieces& out) {
-  // Each blade's polygon, clipped to the body, is its cap.
+bool cut_piece_by_blades(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
+                         CutPieces& out) {
+  // Each polygon, clipped to the body, is its cap, remeshed in its plane; a surface blade
+  // (one mesh: its reader checked it does not intersect itself) is its cap as it is.
   Mesh splitter;
   std::vector<Mesh> caps;
+  std::vector<bool> planar;
   for (const CuttingPlane* blade : blades) {
-    caps.push_back(blade_triangles(*blade));
+    planar.push_back(blade->surface == nullptr);
+    caps.push_back(planar.back() ? blade_triangles(*blade) : surface_blade_mesh(*blade->surface));
     CGAL::copy_face_graph(caps.back(), splitter);
   }
   // Blades that meet one another (inside the body or beyond it) would make the splitter
   // intersect itself, which corefinement does not take.
   if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
-  cut_piece_by_caps(
-      piece, splitter, std::move(caps), [&](std::size_t cap, const Mesh&, Mesh::Face_index) { return *blades[cap]; },
-      true, edge_length, out);
-}
-
-bool cut_piece_by_surface_blade(Mesh& piece, const SurfaceBlade& blade, double edge_length, CutPieces& out) {
-  // The blade, one mesh (it does not intersect itself: its reader checked), is the
-  // splitter and, clipped to the body, the cap.
-  Mesh splitter;
-  std::vector<Mesh::Vertex_index> vertices;
-  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v)
-    vertices.push_back(splitter.add_vertex(point_of(blade.vertices.row(v).transpose())));
-  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t)
-    splitter.add_face(vertices[blade.triangles(t, 0)], vertices[blade.triangles(t, 1)],
-                      vertices[blade.triangles(t, 2)]);
-  const auto face_plane = [](std::size_t, const Mesh& cap, Mesh::Face_index face) {
+  const auto plane_of = [&](std::size_t cap, const Mesh& mesh, Mesh::Face_index face) {
+    if (planar[cap]) return *blades[cap];
     std::array<Eigen::Vector3d, 3> corners;
     int k = 0;
-    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(cap.halfedge(face), cap))
-      corners[k++] = vector_of(cap.point(v));
+    for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(face), mesh))
+      corners[k++] = vector_of(mesh.point(v));
     return CuttingPlane(corners[0], (corners[1] - corners[0]).cross(corners[2] - corners[0]));
   };
-  return cut_piece_by_caps(piece, splitter, {splitter}, face_plane, false, edge_length, out);
+  return cut_piece_by_caps(piece, splitter, std::move(caps), plane_of, planar, edge_length, out);
 }
 
 }  // namespace altfem::surface_cut

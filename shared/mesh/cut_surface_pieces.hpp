@@ -32,16 +32,13 @@ struct CutPieces {
 /// when a side does not close. `edge_length`: the caps' edges.
 bool cut_piece_by_plane(TrianglePiece piece, const ExactBlade& exact, double edge_length, CutPieces& out);
 
-/// The closed, self-intersection-free `piece` cut by the polygons of `blades` at once
-/// (CGAL's corefinement), appended to `out`; `piece` is split in the process. Throws
+/// The closed, self-intersection-free `piece` cut by `blades` at once — polygons, whose
+/// caps are remeshed in their planes, and triangulated surfaces, whose caps keep their
+/// triangles clipped to the body (a vertex where one bends one copy per side) — with one
+/// corefinement, appended to `out`; false, appending nothing, when only surface blades
+/// are given and none crosses the piece. `piece` is split in the process. Throws
 /// std::runtime_error where blades meet one another.
-void cut_piece_by_polygons(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
-                           CutPieces& out);
-
-/// The closed, self-intersection-free `piece` cut by the triangulated `blade` (one
-/// corefinement; its caps keep the blade's triangles clipped to the body, a vertex where
-/// the blade bends one copy per side), appended to `out`; false, appending nothing, when
-/// the blade does not cross the piece. `piece` is split in the process.
-bool cut_piece_by_surface_blade(Mesh& piece, const SurfaceBlade& blade, double edge_length, CutPieces& out);
+bool cut_piece_by_blades(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
+                         CutPieces& out);
 
 }  // namespace altfem::surface_cut

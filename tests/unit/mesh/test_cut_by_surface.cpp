@@ -302,5 +302,35 @@ TEST(CutBySurface, APlaneAcrossASurfaceBladesNotchCutsTheSurface) {
   EXPECT_NEAR(volumes[2], 0.75, 1e-15);
 }
 
+TEST(CutBySurface, ANotchBesideASurfaceBladesNotchCutsTheSurface) {
+  // A blade of two triangles notches the box from z = 0 up to z = 0.5 at x = 0.3, leaving
+  // its caps on one another, where corefinement cannot cut: a second notch beside it, a
+  // polygon or another surface blade at x = 0.7, left that piece whole. Now the box before
+  // the first notch is cut by both blades at once: one closed piece of the box's volume,
+  // both notches open, each its section's area on each side.
+  const auto at = [](double x, double y, double z) { return Eigen::Vector3d(x, y, z); };
+  CuttingPlane notch;
+  notch.surface = std::make_shared<const SurfaceBlade>(
+      blade_of_quadrilaterals({{at(0.3, -1, -1), at(0.3, 2, -1), at(0.3, 2, 0.5), at(0.3, -1, 0.5)}}));
+  const SurfaceMesh box = test::box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
+  const SurfaceMesh notched = cut_surface(box, notch).surface;
+  CuttingPlane beside_surface;
+  beside_surface.surface = std::make_shared<const SurfaceBlade>(
+      blade_of_quadrilaterals({{at(0.7, -1, -1), at(0.7, 2, -1), at(0.7, 2, 0.5), at(0.7, -1, 0.5)}}));
+  const CuttingPlane beside_polygon =
+      polygon_blade({at(0.7, -1, -1), at(0.7, 2, -1), at(0.7, 2, 0.5), at(0.7, -1, 0.5)});
+  for (const CuttingPlane& second : {beside_surface, beside_polygon}) {
+    const SurfaceCut cut = cut_surface(notched, second);
+    EXPECT_EQ(cut.facts["pieces_left_whole"], 0) << !second.surface;
+    EXPECT_EQ(cut.facts["blades_cut_again"], 1) << !second.surface;
+    EXPECT_EQ(cut.surface.vertices.topRows(box.vertices.rows()), box.vertices) << !second.surface;
+    const std::vector<double> volumes = test::closed_piece_volumes(cut.surface);
+    ASSERT_EQ(volumes.size(), 1u) << !second.surface;
+    EXPECT_NEAR(volumes[0], 1.0, 1e-15) << !second.surface;
+    EXPECT_NEAR(test::area_in_plane(cut.surface, 0.3), 2 * 0.5, 1e-14) << !second.surface;
+    EXPECT_NEAR(test::area_in_plane(cut.surface, 0.7), 2 * 0.5, 1e-14) << !second.surface;
+  }
+}
+
 }  // namespace
 }  // namespace altfem

@@ -18,24 +18,12 @@
 namespace altfem {
 namespace {
 
+using test::area_in_plane;
 using test::closed_and_oriented;
 using test::pieces_of;
 using test::volume_of_closed_pieces;
 
 using test::box_surface;
-
-// Total area of the triangles lying in the plane x = `x`.
-double area_in_plane(const SurfaceMesh& surface, double x) {
-  double area = 0;
-  for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
-    const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)),
-                          b = surface.vertices.row(surface.triangles(t, 1)),
-                          c = surface.vertices.row(surface.triangles(t, 2));
-    if (std::abs(a.x() - x) < 1e-15 && std::abs(b.x() - x) < 1e-15 && std::abs(c.x() - x) < 1e-15)
-      area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return area;
-}
 
 TEST(CutSurface, APlaneSplitsABoxIntoTwoClosedPiecesWithTheirExactVolumes) {
   const SurfaceMesh box = box_surface(Eigen::Vector3d::Zero(), Eigen::Vector3d::Ones());
