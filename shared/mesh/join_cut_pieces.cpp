@@ -34,70 +34,20 @@ std::map<int, std::vector<std::pair<int, int>>> slits_by_parent(const Polyhedral
   return slits_of;
 }
 
-// `mesh` with each group of `joined` as one cell (kind cut), `parent_cell` renumbered with it.
-// Returns, per node of the result, its index before.
-std::vector<int> merge_joined_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell, DisjointSets& joined) {
-  std::vector<int> new_cell;
-  std::vector<int> kept_nodes = merge_cell_groups(mesh, joined, PolyhedralCellKind::cut, &new_cell);
-  std::vector<int> parents(static_cast<std::size_t>(mesh.cell_count()));
-  for (std::size_t cell = 0; cell < new_cell.size(); ++cell) parents[new_cell[cell]] = parent_cell[cell];
-  parent_cell = std::move(parents);
-  return kept_nodes;
-}
-
-}  // namespace
-
-int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
-  const int cells = mesh.cell_count();
-  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
-  DisjointSets joined(cells);
+// Joins the pieces of one parent next to one another through an interior face, face by
+// face, where `may_join(first, second, a, b, groups)` (the face's cells, their groups so
+// far, and the groups) allows, each group becoming one cell (kind cut) and `parent_cell` renumbered with them.
+// `kept_nodes` (optional): per node after, its index before. Returns the pieces joined away.
+template <typename MayJoin>
+int join_neighbouring_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const MayJoin& may_join,
+                             std::vector<int>* kept_nodes) {
+  DisjointSets joined(mesh.cell_count());
   int joined_away = 0;
   for (int face = 0; face < mesh.face_count(); ++face) {
     const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
     if (second < 0 || parent_cell[first] != parent_cell[second]) continue;
     const int a = joined.find(first), b = joined.find(second);
-    if (a == b) continue;
-    const auto slits = slits_of.find(parent_cell[first]);
-    const bool across_a_slit =
-        slits != slits_of.end() && std::any_of(slits->second.begin(), slits->second.end(), [&](const auto& pair) {
-          const int p = joined.find(pair.first), q = joined.find(pair.second);
-          return (p == a && q == b) || (p == b && q == a);
-        });
-    if (across_a_slit) continue;
-    joined.join(a, b);
-    ++joined_away;
-  }
-  if (joined_away == 0) return 0;
-  merge_joined_pieces(mesh, parent_cell, joined);
-  return joined_away;
-}
-
-int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const CuttingPlane& plane,
-                        std::vector<int>* kept_nodes) {
-  const int cells = mesh.cell_count();
-  // A piece's side: its node farthest from the plane's (the nodes a step took on the plane
-  // may round to either side of it).
-  const ExactBlade exact(plane);
-  std::vector<int> side(static_cast<std::size_t>(cells), 0);
-  for (int piece = 0; piece < cells; ++piece) {
-    double farthest = -1;
-    int node_farthest = -1;
-    for (const int face : mesh.cell_faces[piece])
-      for (const int node : mesh.faces[face]) {
-        const double distance = std::abs((mesh.nodes.row(node).transpose() - plane.point).dot(plane.normal));
-        if (distance > farthest) farthest = distance, node_farthest = node;
-      }
-    side[piece] = exact.side(mesh.nodes.row(node_farthest).transpose());
-  }
-  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
-  DisjointSets joined(cells);
-  int joined_away = 0;
-  for (int face = 0; face < mesh.face_count(); ++face) {
-    const int first = mesh.face_cells(face, 0), second = mesh.face_cells(face, 1);
-    if (second < 0 || parent_cell[first] != parent_cell[second]) continue;
-    if (side[first] != side[second] && slits_of.count(parent_cell[first]) > 0) continue;
-    const int a = joined.find(first), b = joined.find(second);
-    if (a == b) continue;
+    if (a == b || !may_join(first, second, a, b, joined)) continue;
     joined.join(a, b);
     ++joined_away;
   }
@@ -108,9 +58,50 @@ int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, con
     }
     return 0;
   }
-  std::vector<int> kept = merge_joined_pieces(mesh, parent_cell, joined);
+  std::vector<int> new_cell;
+  std::vector<int> kept = merge_cell_groups(mesh, joined, PolyhedralCellKind::cut, &new_cell);
+  std::vector<int> parents(static_cast<std::size_t>(mesh.cell_count()));
+  for (std::size_t cell = 0; cell < new_cell.size(); ++cell) parents[new_cell[cell]] = parent_cell[cell];
+  parent_cell = std::move(parents);
   if (kept_nodes) *kept_nodes = std::move(kept);
   return joined_away;
+}
+
+}  // namespace
+
+int join_unparted_pieces(PolyhedralMesh& mesh, std::vector<int>& parent_cell) {
+  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
+  const auto not_across_a_slit = [&](int first, int, int a, int b, DisjointSets& groups) {
+    const auto slits = slits_of.find(parent_cell[first]);
+    return slits == slits_of.end() || std::none_of(slits->second.begin(), slits->second.end(), [&](const auto& pair) {
+             const int p = groups.find(pair.first), q = groups.find(pair.second);
+             return (p == a && q == b) || (p == b && q == a);
+           });
+  };
+  return join_neighbouring_pieces(mesh, parent_cell, not_across_a_slit, nullptr);
+}
+
+int join_pieces_by_side(PolyhedralMesh& mesh, std::vector<int>& parent_cell, const CuttingPlane& plane,
+                        std::vector<int>* kept_nodes) {
+  // A piece's side: its node farthest from the plane's (the nodes a step took on the plane
+  // may round to either side of it).
+  const ExactBlade exact(plane);
+  std::vector<int> side(static_cast<std::size_t>(mesh.cell_count()), 0);
+  for (int piece = 0; piece < mesh.cell_count(); ++piece) {
+    double farthest = -1;
+    int node_farthest = -1;
+    for (const int face : mesh.cell_faces[piece])
+      for (const int node : mesh.faces[face]) {
+        const double distance = std::abs((mesh.nodes.row(node).transpose() - plane.point).dot(plane.normal));
+        if (distance > farthest) farthest = distance, node_farthest = node;
+      }
+    side[piece] = exact.side(mesh.nodes.row(node_farthest).transpose());
+  }
+  const std::map<int, std::vector<std::pair<int, int>>> slits_of = slits_by_parent(mesh, parent_cell);
+  const auto one_side_or_unparted = [&](int first, int second, int, int, DisjointSets&) {
+    return side[first] == side[second] || slits_of.count(parent_cell[first]) == 0;
+  };
+  return join_neighbouring_pieces(mesh, parent_cell, one_side_or_unparted, kept_nodes);
 }
 
 }  // namespace altfem
