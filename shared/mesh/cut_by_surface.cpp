@@ -148,7 +148,7 @@ void keep_origins(std::vector<int>& origin, const std::vector<int>& kept) {
 }
 
 // The window's pieces once joined (join_pieces_by_side) keep every face piece and node the
-// steps put on their faces, which the next triangle's steps would cut again: the faces in
+// steps put on their faces, which the next flat part's steps would cut again: the faces in
 // one plane between the same two cells merged and the steps' nodes in the middle of
 // straight edges dropped (simplify_cut_faces.hpp, `straight` its tolerance), as after the
 // whole cut, but no shell face nor a node of the window's (the cells outside hold them).
@@ -159,8 +159,21 @@ std::vector<int> simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMes
   std::vector<bool> fixed(static_cast<std::size_t>(cut.face_count()));
   for (int face = 0; face < cut.face_count(); ++face)
     fixed[face] = cut.face_cells(face, 1) < 0 && shell.count(cut.faces[face]) > 0;
-  merge_coplanar_faces(cut, straight, &fixed);
-  drop_straight_run_nodes(cut, straight, static_cast<Eigen::Index>(window.nodes.size()));
+  PolyhedralMesh simplified = cut;
+  merge_coplanar_faces(simplified, straight, &fixed);
+  drop_straight_run_nodes(simplified, straight, static_cast<Eigen::Index>(window.nodes.size()));
+  // A node of the window's inside faces it merged (one an earlier flat part left) would go,
+  // and with it the window's numbering that putting it back needs: then it stays as it was.
+  std::vector<bool> used(static_cast<std::size_t>(simplified.nodes.rows()), false);
+  for (const std::vector<int>& loop : simplified.faces)
+    for (const int node : loop) used[node] = true;
+  if (!std::all_of(used.begin(), used.begin() + static_cast<std::ptrdiff_t>(window.nodes.size()),
+                   [](bool kept) { return kept; })) {
+    std::vector<int> all(static_cast<std::size_t>(cut.nodes.rows()));
+    std::iota(all.begin(), all.end(), 0);
+    return all;
+  }
+  cut = std::move(simplified);
   return drop_unused_nodes(cut);
 }
 
