@@ -152,8 +152,9 @@ void keep_origins(std::vector<int>& origin, const std::vector<int>& kept) {
 // one plane between the same two cells merged and the steps' nodes in the middle of
 // straight edges dropped (simplify_cut_faces.hpp, `straight` its tolerance), as after the
 // whole cut, but no shell face nor a node of the window's (the cells outside hold them).
-// Returns, per node after, its index before.
-std::vector<int> simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMeshWindow& window, double straight) {
+// `origin` (per node) follows the nodes kept.
+void simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMeshWindow& window, double straight,
+                            std::vector<int>& origin) {
   std::set<std::vector<int>> shell;
   for (const int face : window.shell_window_faces) shell.insert(window.mesh.faces[face]);
   std::vector<bool> fixed(static_cast<std::size_t>(cut.face_count()));
@@ -161,20 +162,15 @@ std::vector<int> simplify_joined_window(PolyhedralMesh& cut, const PolyhedralMes
     fixed[face] = cut.face_cells(face, 1) < 0 && shell.count(cut.faces[face]) > 0;
   PolyhedralMesh simplified = cut;
   merge_coplanar_faces(simplified, straight, &fixed);
-  drop_straight_run_nodes(simplified, straight, static_cast<Eigen::Index>(window.nodes.size()));
-  // A node of the window's inside faces it merged (one an earlier flat part left) would go,
-  // and with it the window's numbering that putting it back needs: then it stays as it was.
-  std::vector<bool> used(static_cast<std::size_t>(simplified.nodes.rows()), false);
-  for (const std::vector<int>& loop : simplified.faces)
-    for (const int node : loop) used[node] = true;
-  if (!std::all_of(used.begin(), used.begin() + static_cast<std::ptrdiff_t>(window.nodes.size()),
-                   [](bool kept) { return kept; })) {
-    std::vector<int> all(static_cast<std::size_t>(cut.nodes.rows()));
-    std::iota(all.begin(), all.end(), 0);
-    return all;
-  }
+  const auto window_nodes = static_cast<int>(window.nodes.size());
+  drop_straight_run_nodes(simplified, straight, window_nodes);
+  const std::vector<int> kept = drop_unused_nodes(simplified);
+  // A node of the window's inside the faces it merged (one an earlier flat part left) would
+  // go, and with it the window's numbering that putting it back needs: then the window
+  // stays as it was. `kept` ascends, so the window's nodes all stay where its first ones do.
+  if (static_cast<int>(kept.size()) < window_nodes || kept[window_nodes - 1] != window_nodes - 1) return;
   cut = std::move(simplified);
-  return drop_unused_nodes(cut);
+  keep_origins(origin, kept);
 }
 
 // The steps of one flat part of the blade (`steps`: its triangles', one after another) on
@@ -229,7 +225,7 @@ void cut_window_by_flat_part(PolyhedralCut& result, std::vector<Eigen::AlignedBo
   std::vector<int> kept_nodes;
   if (own_split != steps + count && join_pieces_by_side(cut, parents, own_split->plane, &kept_nodes) > 0) {
     keep_origins(window_origin, kept_nodes);
-    keep_origins(window_origin, simplify_joined_window(cut, window, 1e-12 * diagonal));
+    simplify_joined_window(cut, window, 1e-12 * diagonal, window_origin);
   }
   origin.insert(origin.end(), window_origin.begin() + static_cast<std::ptrdiff_t>(window.nodes.size()),
                 window_origin.end());
