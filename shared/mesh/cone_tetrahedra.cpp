@@ -12,12 +12,79 @@ namespace {
 // face's longest edge squared has none to a rounding: its nodes lie on one line.
 constexpr double flat_triangle_fraction = 1e-6;
 
+// Twice the area of (a, b, c) along `normal`, against the flat threshold of a face whose
+// longest edge squared is `longest`: whether the triangle turns the face's way.
+bool turns_with(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
+                const Eigen::Vector3d& normal, double longest) {
+  return (b - a).cross(c - a).dot(normal) > flat_triangle_fraction * longest;
+}
+
+// Whether `point` of the face's plane lies in the triangle (a, b, c), which turns about
+// `normal`, or on its edges.
+bool in_triangle(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                 const Eigen::Vector3d& c, const Eigen::Vector3d& normal) {
+  return (b - a).cross(point - a).dot(normal) >= 0 && (c - b).cross(point - b).dot(normal) >= 0 &&
+         (a - c).cross(point - c).dot(normal) >= 0;
+}
+
 }  // namespace
 
 ConeTetrahedra::ConeTetrahedra(const PolyhedralMesh& pieces, const std::vector<bool>& centred)
     : pieces_(pieces), fan_(static_cast<std::size_t>(pieces.face_count()), -1) {
   for (std::size_t face = 0; face < centred.size(); ++face)
-    if (centred[face] && pieces.faces[face].size() > 3) fan_[face] = add_centroid(pieces.faces[face]) + 1;
+    if (centred[face] && pieces.faces[face].size() > 3) split_about_centroid(static_cast<int>(face));
+}
+
+Eigen::Vector3d ConeTetrahedra::at(int node) const { return pieces_.nodes.row(node).transpose(); }
+
+void ConeTetrahedra::split_about_centroid(int face) {
+  const std::vector<int>& loop = pieces_.faces[face];
+  const Eigen::Vector3d normal = face_area_vector(pieces_, loop).normalized();
+  double longest = 0;
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < loop.size(); ++k) {
+    longest = std::max(longest, (at(loop[(k + 1) % loop.size()]) - at(loop[k])).squaredNorm());
+    centroid += at(loop[k]) / static_cast<double>(loop.size());
+  }
+  bool sees_every_edge = true;
+  for (std::size_t k = 0; k < loop.size() && sees_every_edge; ++k)
+    sees_every_edge = turns_with(centroid, at(loop[k]), at(loop[(k + 1) % loop.size()]), normal, longest);
+  if (sees_every_edge) {
+    fan_[face] = add_centroid(loop) + 1;
+    return;
+  }
+  // A face the joins of a surface blade's pieces merged need not be convex (the L that a
+  // notch's corner leaves of a section has its centroid at the reflex corner, whose
+  // triangles about it are flat): its ears clipped instead, each a triangle that turns the
+  // face's way and holds no other node, the lowest node's first (an order no cut changes).
+  std::vector<int> left = loop;
+  std::rotate(left.begin(),
+              std::min_element(left.begin(), left.end(),
+                               [&](int a, int b) { return tetrahedral_cut::comes_before(pieces_.nodes, a, b); }),
+              left.end());
+  std::vector<std::array<int, 3>> triangles;
+  while (left.size() > 3) {
+    const std::size_t n = left.size();
+    std::size_t ear = n;
+    for (std::size_t k = 0; k < n && ear == n; ++k) {
+      const int a = left[(k + n - 1) % n], b = left[k], c = left[(k + 1) % n];
+      if (!turns_with(at(a), at(b), at(c), normal, longest)) continue;
+      bool empty = true;
+      for (const int other : left)
+        if (other != a && other != b && other != c && in_triangle(at(other), at(a), at(b), at(c), normal))
+          empty = false;
+      if (empty) ear = k;
+    }
+    if (ear == n) {  // no ear: a loop that is not a simple polygon to a rounding, about its centroid as before
+      fan_[face] = add_centroid(loop) + 1;
+      return;
+    }
+    triangles.push_back({left[(ear + n - 1) % n], left[ear], left[(ear + 1) % n]});
+    left.erase(left.begin() + static_cast<std::ptrdiff_t>(ear));
+  }
+  triangles.push_back({left[0], left[1], left[2]});
+  fan_[face] = clipped_;
+  ears_[face] = std::move(triangles);
 }
 
 int ConeTetrahedra::centre_of(int face) {
@@ -27,7 +94,6 @@ int ConeTetrahedra::centre_of(int face) {
                 std::min_element(loop.begin(), loop.end(),
                                  [&](int a, int b) { return tetrahedral_cut::comes_before(pieces_.nodes, a, b); }),
                 loop.end());
-    const auto at = [&](int node) -> Eigen::Vector3d { return pieces_.nodes.row(node).transpose(); };
     double longest = 0;
     for (std::size_t k = 0; k < loop.size(); ++k)
       longest = std::max(longest, (at(loop[(k + 1) % loop.size()]) - at(loop[k])).squaredNorm());
@@ -39,9 +105,10 @@ int ConeTetrahedra::centre_of(int face) {
     for (std::size_t k = 1; k + 1 < loop.size() && !degenerate; ++k)
       degenerate = (at(loop[k]) - at(loop[0])).cross(at(loop[k + 1]) - at(loop[0])).dot(normal) <=
                    flat_triangle_fraction * longest;
-    fan_[face] = degenerate ? add_centroid(pieces_.faces[face]) + 1 : 0;
+    if (degenerate) split_about_centroid(face);
+    else fan_[face] = 0;
   }
-  return fan_[face] - 1;
+  return fan_[face] == clipped_ ? -1 : fan_[face] - 1;
 }
 
 int ConeTetrahedra::add_centroid(const std::vector<int>& nodes) {
@@ -64,7 +131,7 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
   int apex = loops[0][0];
   for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
   bool centred = false;
-  for (const int face : faces) centred |= centre_of(face) >= 0;
+  for (const int face : faces) centred |= centre_of(face) >= 0 || fan_[face] == clipped_;
   if (!from_centroid && !centred) {
     // A face in a plane through the apex that does not hold it, exactly or to a rounding
     // (a face's triangles about its rounded centroid, the apex a node of that face), makes
@@ -99,18 +166,30 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
       for (std::size_t k = 0; k < loop.size(); ++k) add(centre, loop[k], loop[(k + 1) % loop.size()]);
       continue;
     }
+    if (fan_[faces[index]] == clipped_) {  // its ears, as the face runs, reversed where the piece's loop is
+      const bool reversed = pieces_.face_cells(faces[index], 0) != piece;
+      for (const auto& [a, b, c] : ears_.at(faces[index])) reversed ? add(a, c, b) : add(a, b, c);
+      continue;
+    }
     std::rotate(loop.begin(), std::min_element(loop.begin(), loop.end(), before), loop.end());
     for (std::size_t k = 1; k + 1 < loop.size(); ++k) add(loop[0], loop[k], loop[k + 1]);
   }
 }
 
 void ConeTetrahedra::set_faces_of(PolyhedralMesh& pieces) const {
-  if (std::none_of(fan_.begin(), fan_.end(), [](int fan) { return fan > 0; })) return;
+  if (std::none_of(fan_.begin(), fan_.end(), [](int fan) { return fan > 0 || fan == clipped_; })) return;
   std::vector<std::vector<int>> loops;
   std::vector<std::array<int, 2>> cells;
   for (int face = 0; face < pieces.face_count(); ++face) {
     const std::array<int, 2> sides{pieces.face_cells(face, 0), pieces.face_cells(face, 1)};
     const std::vector<int>& loop = pieces.faces[face];
+    if (fan_[face] == clipped_) {
+      for (const auto& [a, b, c] : ears_.at(face)) {
+        loops.push_back({a, b, c});
+        cells.push_back(sides);
+      }
+      continue;
+    }
     if (fan_[face] <= 0) {
       loops.push_back(loop);
       cells.push_back(sides);

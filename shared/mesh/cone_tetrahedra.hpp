@@ -8,7 +8,8 @@
 //     one plane puts them along their common line; a surface blade's steps on the faces of
 //     the fragments they leave whole, or take nodes on their planes within 1e-9);
 //   - then about its centroid, a new node that the face's pieces share, and the face
-//     becomes those triangles in the fragments (a later cut fans each as itself).
+//     becomes those triangles in the fragments (a later cut fans each as itself); or, for
+//     a face its centroid does not see every edge of (not convex), by clipping its ears.
 // The cone is from the piece's lowest node over the faces that do not hold it, as before,
 // unless a face was split about its centroid or a tetrahedron of that cone is flat (a face
 // in a plane through that node, exactly or to a rounding: a face's triangles about its
@@ -16,6 +17,7 @@
 // strictly inside it. Either way each face is split as itself alone decides.
 #include <Eigen/Core>
 #include <array>
+#include <map>
 #include <vector>
 
 #include "shared/mesh/polyhedral_mesh.hpp"
@@ -43,13 +45,20 @@ public:
   void set_faces_of(PolyhedralMesh& pieces) const;
 
 private:
-  // Per face: −1 undecided, 0 fanned from its lowest node, else its centroid's node + 1.
+  // Per face: −1 undecided, 0 fanned from its lowest node, clipped_ split into its ears
+  // (ears_), else its centroid's node + 1.
   int centre_of(int face);
+  // Decides `face`'s split about its centroid, or its ears where the centroid does not see
+  // every edge.
+  void split_about_centroid(int face);
+  Eigen::Vector3d at(int node) const;
   int add_centroid(const std::vector<int>& nodes);
   Eigen::Vector3d position(int node) const;
 
   const PolyhedralMesh& pieces_;
+  static constexpr int clipped_ = -2;
   std::vector<int> fan_;
+  std::map<int, std::vector<std::array<int, 3>>> ears_;  // per clipped face, its triangles as it runs
   std::vector<Eigen::Vector3d> added_;
 };
 

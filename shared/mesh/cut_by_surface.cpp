@@ -74,19 +74,27 @@ BladeEdges edges_within_a_plane(const SurfaceBlade& blade) {
 std::vector<SurfaceBladeStep> surface_blade_steps(const SurfaceBlade& blade) {
   std::vector<SurfaceBladeStep> steps;
   const BladeEdges edges = edges_within_a_plane(blade);
+  std::vector<CuttingPlane> planes;
   for (Eigen::Index triangle = 0; triangle < blade.triangles.rows(); ++triangle) {
     std::vector<Eigen::Vector3d> corners;
-    Eigen::AlignedBox3d box;
-    for (int k = 0; k < 3; ++k) {
-      corners.push_back(blade.vertices.row(blade.triangles(triangle, k)).transpose());
-      box.extend(corners.back());
-    }
-    const CuttingPlane plane = polygon_blade(corners);
-    if (const std::string problem = blade_polygon_problem(plane); !problem.empty())
+    for (int k = 0; k < 3; ++k) corners.push_back(blade.vertices.row(blade.triangles(triangle, k)).transpose());
+    planes.push_back(polygon_blade(corners));
+    if (const std::string problem = blade_polygon_problem(planes.back()); !problem.empty())
       throw std::invalid_argument("cut: triangle " + std::to_string(triangle) + " of the blade surface: " + problem);
-    const std::array<Eigen::Vector3d, 3> triangle_corners{corners[0], corners[1], corners[2]};
+  }
+  for (Eigen::Index triangle = 0; triangle < blade.triangles.rows(); ++triangle) {
     const int index = static_cast<int>(triangle);
     const int flat_part = edges.flat_part[triangle];
+    CuttingPlane plane = planes[triangle];
+    // A flat part's triangles on its first one's plane, point and normal (each its own
+    // sense): their side planes along the edges they share are then the same (ExactBlade).
+    const CuttingPlane& part_plane = planes[flat_part];
+    plane.point = part_plane.point;
+    plane.normal = plane.normal.dot(part_plane.normal) < 0 ? Eigen::Vector3d(-part_plane.normal) : part_plane.normal;
+    const std::vector<Eigen::Vector3d>& corners = plane.polygon;
+    Eigen::AlignedBox3d box;
+    for (const Eigen::Vector3d& corner : corners) box.extend(corner);
+    const std::array<Eigen::Vector3d, 3> triangle_corners{corners[0], corners[1], corners[2]};
     steps.push_back(
         {CuttingPlane(plane.point, plane.normal), {CutAction::split, box}, true, triangle_corners, index, flat_part});
     for (int k = 0; k < 3; ++k) {

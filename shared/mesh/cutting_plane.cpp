@@ -97,23 +97,35 @@ ExactBlade::ExactBlade(const CuttingPlane& blade) : a(blade.point) {
     throw std::invalid_argument("cut: the plane's normal must be finite and non-zero");
   if (const std::string problem = blade_polygon_problem(blade); !problem.empty())
     throw std::invalid_argument("cut: " + problem);
-  Eigen::Index smallest = 0;
+  // The plane's points and the side planes' raised points from the normal's line only, not
+  // its sense: two blades through the same point with opposite normals (the triangles of a
+  // flat part of a surface blade, which share them) then decide with the same points, each
+  // side exactly the other's negated, and where they share an edge a point covered by
+  // neither is impossible even off the plane by a rounding (a face whose centroid lay on
+  // such an edge was separated by neither, leaving a cell whole across the blade).
+  Eigen::Index largest = 0, smallest = 0;
+  blade.normal.cwiseAbs().maxCoeff(&largest);
   blade.normal.cwiseAbs().minCoeff(&smallest);
-  const Eigen::Vector3d first = blade.normal.cross(Eigen::Vector3d::Unit(smallest));
-  const Eigen::Vector3d second = blade.normal.cross(first);
+  const Eigen::Vector3d up = (blade.normal(largest) > 0 ? 1.0 : -1.0) * blade.normal.normalized();
+  const Eigen::Vector3d first = up.cross(Eigen::Vector3d::Unit(smallest));
+  const Eigen::Vector3d second = up.cross(first);
   b = a + first;
   c = a + second;
+  if (blade.normal(largest) < 0) std::swap(b, c);  // (b − a) × (c − a) along the blade's normal
   normal = (b - a).cross(c - a);
   if (blade.polygon.empty()) return;
   corners_ = blade.polygon;
-  double size = 0;
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& corner : corners_) {
-    size = std::max(size, (corner - corners_.front()).norm());
-    centroid += corner / static_cast<double>(corners_.size());
+  for (std::size_t k = 0; k < corners_.size(); ++k) {
+    centroid += corners_[k] / static_cast<double>(corners_.size());
+    // Edge k's side plane through it and its lesser end raised by its length (distinct
+    // points), whichever way round a polygon runs along it.
+    const auto [low, high] =
+        std::minmax(corners_[k], corners_[(k + 1) % corners_.size()], [](const auto& p, const auto& q) {
+          return std::lexicographical_compare(p.data(), p.data() + 3, q.data(), q.data() + 3);
+        });
+    raised_.push_back(low + (high - low).norm() * up);
   }
-  // Raised by the polygon's size, so that a corner and its raised copy are distinct points.
-  for (const Eigen::Vector3d& corner : corners_) raised_.push_back(corner + size * normal.normalized());
   inside_sign_ = orientation_sign(corners_[0], corners_[1], raised_[0], centroid);
   if (inside_sign_ == 0) throw std::invalid_argument("cut: the blade polygon has no area");
 }
