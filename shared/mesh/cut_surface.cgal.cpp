@@ -356,6 +356,18 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
       // Polygons over one piece, one of them over its whole section: it stays whole.
     }
   }
+  // Where a finite or surface blade since the record's surface may have notched a piece,
+  // the record goes on from that surface with this blade too: else a cut the notch did not
+  // stop (a plane beside it) made the notched surface the record's, and a later blade that
+  // met the notch found its caps on one another there again.
+  const SurfaceCutRecord* earlier = surface.cut_record.get();
+  const auto finite = [](const CuttingPlane& cut) { return cut.surface || !cut.polygon.empty(); };
+  if (earlier && std::any_of(earlier->blades.begin(), earlier->blades.end(), finite)) {
+    SurfaceCutRecord record = *earlier;
+    record.blades.push_back(blade);
+    result.surface.cut_record = std::make_shared<SurfaceCutRecord>(std::move(record));
+    return result;
+  }
   SurfaceMesh before = surface;
   before.cut_record.reset();
   result.surface.cut_record = std::make_shared<SurfaceCutRecord>(SurfaceCutRecord{std::move(before), {blade}});

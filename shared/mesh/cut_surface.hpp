@@ -37,11 +37,15 @@ struct SurfaceCut {
 /// (SurfaceMesh::cut_record) is cut again with the blades since and this one: the whole
 /// planes one after the other, then the polygons that span a piece's section, then the
 /// others at once, each piece by one corefinement with all those that cross it — a
-/// sweep's earlier blades left out, since its later ones cover them. So a second notch, a
-/// plane across notches, and each cut of a sweep open the surface. The output then keeps
-/// that surface's vertices at their indices and appends what its cut adds (what the cuts
-/// since added is gone). Not so where two polygons that cross a piece meet one another,
-/// even beyond it: the piece stays whole, counted.
+/// sweep's earlier blades left out, since its later ones cover them — or, where blades that
+/// cross it meet one another (an X, a T or a V of notches, inside the body or beyond it),
+/// refined along each and its caps joined to it by how they turn about each edge
+/// (cut_surface_pieces.hpp). So a second notch, a notch that meets the first, a plane across
+/// notches, and each cut of a sweep open the surface; the record goes on from the surface
+/// before the first finite blade for as long as one may have left a notch. The output then
+/// keeps that surface's vertices at their indices and appends what its cut adds (what the
+/// cuts since added is gone). Blades that overlap in one plane (two of one plane that are
+/// not one sweep's) leave the piece whole, counted.
 SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade);
 
 }  // namespace altfem

@@ -14,40 +14,6 @@
 
 namespace altfem::surface_cut {
 
-namespace {
-
-namespace PMP = CGAL::Polygon_mesh_processing;
-
-// A finite blade's polygon as triangles, a fan turning counter-clockwise about its normal.
-Mesh blade_triangles(const CuttingPlane& blade) {
-  const Eigen::Vector3d normal = blade.normal.normalized();
-  std::vector<Eigen::Vector3d> corners = blade.polygon;
-  Eigen::Vector3d newell = Eigen::Vector3d::Zero();
-  for (std::size_t k = 0; k < corners.size(); ++k) newell += corners[k].cross(corners[(k + 1) % corners.size()]);
-  if (newell.dot(normal) < 0) std::reverse(corners.begin(), corners.end());
-  Mesh mesh;
-  std::vector<Mesh::Vertex_index> vertices;
-  for (const Eigen::Vector3d& corner : corners) vertices.push_back(mesh.add_vertex(point_of(corner)));
-  for (std::size_t k = 1; k + 1 < vertices.size(); ++k) mesh.add_face(vertices[0], vertices[k], vertices[k + 1]);
-  return mesh;
-}
-
-// A surface blade's triangles as a CGAL mesh.
-Mesh surface_blade_mesh(const SurfaceBlade& blade) {
-  Mesh mesh;
-  std::vector<Mesh::Vertex_index> vertices;
-  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v)
-    vertices.push_back(mesh.add_vertex(point_of(blade.vertices.row(v).transpose())));
-  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t)
-    mesh.add_face(vertices[blade.triangles(t, 0)], vertices[blade.triangles(t, 1)], vertices[blade.triangles(t, 2)]);
-  return mesh;
-}
-
-// Bit patterns of a point, for finding the surface's copies of a cap vertex: both are
-// the same exact intersection of a surface edge with a blade triangle, rounded once.
-using PointKey = std::array<double, 3>;
-PointKey key_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
-
 // CGAL's corefinement numbers the vertices and faces it makes in an order that follows
 // heap addresses, which differ from run to run, and the cap's remeshing depends on that
 // order: the same cut gave surfaces that differed in a few vertices from run to run.
@@ -89,6 +55,40 @@ void renumber_by_position(Mesh& mesh) {
   if (!has_input) sorted.remove_property_map(sorted_input);
   mesh = std::move(sorted);
 }
+
+namespace {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// A finite blade's polygon as triangles, a fan turning counter-clockwise about its normal.
+Mesh blade_triangles(const CuttingPlane& blade) {
+  const Eigen::Vector3d normal = blade.normal.normalized();
+  std::vector<Eigen::Vector3d> corners = blade.polygon;
+  Eigen::Vector3d newell = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < corners.size(); ++k) newell += corners[k].cross(corners[(k + 1) % corners.size()]);
+  if (newell.dot(normal) < 0) std::reverse(corners.begin(), corners.end());
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (const Eigen::Vector3d& corner : corners) vertices.push_back(mesh.add_vertex(point_of(corner)));
+  for (std::size_t k = 1; k + 1 < vertices.size(); ++k) mesh.add_face(vertices[0], vertices[k], vertices[k + 1]);
+  return mesh;
+}
+
+// A surface blade's triangles as a CGAL mesh.
+Mesh surface_blade_mesh(const SurfaceBlade& blade) {
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (Eigen::Index v = 0; v < blade.vertices.rows(); ++v)
+    vertices.push_back(mesh.add_vertex(point_of(blade.vertices.row(v).transpose())));
+  for (Eigen::Index t = 0; t < blade.triangles.rows(); ++t)
+    mesh.add_face(vertices[blade.triangles(t, 0)], vertices[blade.triangles(t, 1)], vertices[blade.triangles(t, 2)]);
+  return mesh;
+}
+
+// Bit patterns of a point, for finding the surface's copies of a cap vertex: both are
+// the same exact intersection of a surface edge with a blade triangle, rounded once.
+using PointKey = std::array<double, 3>;
+PointKey key_of(const Point& p) { return {p.x(), p.y(), p.z()}; }
 
 // The plane a cap's face lies in: a polygon blade's, or (a surface blade's cap, whose faces
 // are parts of its triangles) the face's own.
@@ -234,9 +234,10 @@ bool cut_piece_by_blades(Mesh& piece, const std::vector<const CuttingPlane*>& bl
     caps.push_back(planar.back() ? blade_triangles(*blade) : surface_blade_mesh(*blade->surface));
     CGAL::copy_face_graph(caps.back(), splitter);
   }
-  // Blades that meet one another (inside the body or beyond it) would make the splitter
-  // intersect itself, which corefinement does not take.
-  if (blades.size() > 1 && PMP::does_self_intersect(splitter)) throw std::runtime_error("the blades meet one another");
+  // Blades that meet one another (inside the body or beyond it) make the splitter intersect
+  // itself, which corefinement does not take: their caps are joined by how they turn.
+  if (blades.size() > 1 && PMP::does_self_intersect(splitter))
+    return cut_piece_by_meeting_blades(piece, caps, planar, edge_length, out);
   const auto plane_of = [&](std::size_t cap, const Mesh& mesh, Mesh::Face_index face) {
     if (planar[cap]) return *blades[cap];
     std::array<Eigen::Vector3d, 3> corners;

@@ -32,12 +32,29 @@ struct CutPieces {
 /// when a side does not close. `edge_length`: the caps' edges.
 bool cut_piece_by_plane(TrianglePiece piece, const ExactBlade& exact, double edge_length, CutPieces& out);
 
+/// `mesh` renumbered by position (its vertices, then its faces by their vertices): CGAL's
+/// corefinement numbers what it makes in an order that follows heap addresses, which differ
+/// from run to run, and what is built from its order (a cap's remeshing, the cut's new
+/// vertices) with it.
+void renumber_by_position(Mesh& mesh);
+
+/// The closed `piece` cut by `blades` (each as triangles, not clipped; `planar` per blade:
+/// a polygon's, whose cap is remeshed in its plane) that meet one another, inside the body
+/// or beyond it, so that no one corefinement splits by them all: the piece refined along
+/// their curves, the caps along where they meet, each triangle joined to those that bound
+/// the same material across each edge (cut_surface_by_meeting_blades.cgal.cpp); appended to
+/// `out`, or false, appending nothing, where no blade reaches inside. Throws
+/// std::runtime_error where the triangles about an edge do not alternate between material
+/// and void (blades that overlap in one plane).
+bool cut_piece_by_meeting_blades(Mesh& piece, const std::vector<Mesh>& blades, const std::vector<bool>& planar,
+                                 double edge_length, CutPieces& out);
+
 /// The closed, self-intersection-free `piece` cut by `blades` at once — polygons, whose
 /// caps are remeshed in their planes, and triangulated surfaces, whose caps keep their
 /// triangles clipped to the body (a vertex where one bends one copy per side) — with one
 /// corefinement, appended to `out`; false, appending nothing, when only surface blades
-/// are given and none crosses the piece. `piece` is split in the process. Throws
-/// std::runtime_error where blades meet one another.
+/// are given and none crosses the piece. `piece` is split in the process. Blades that meet
+/// one another go to cut_piece_by_meeting_blades.
 bool cut_piece_by_blades(Mesh& piece, const std::vector<const CuttingPlane*>& blades, double edge_length,
                          CutPieces& out);
 

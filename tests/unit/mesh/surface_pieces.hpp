@@ -62,14 +62,15 @@ inline double volume_of_closed_pieces(const SurfaceMesh& surface, std::size_t co
   return total;
 }
 
-// The area of the surface's triangles that lie in the plane x = `x`.
-inline double area_in_plane(const SurfaceMesh& surface, double x) {
+// The area of the surface's triangles that lie in the plane x = `x` (or, with `axis`, the
+// plane where that coordinate is `x`).
+inline double area_in_plane(const SurfaceMesh& surface, double x, int axis = 0) {
   double area = 0;
   for (Eigen::Index t = 0; t < surface.triangles.rows(); ++t) {
     const Eigen::Vector3d a = surface.vertices.row(surface.triangles(t, 0)),
                           b = surface.vertices.row(surface.triangles(t, 1)),
                           c = surface.vertices.row(surface.triangles(t, 2));
-    if (std::abs(a.x() - x) < 1e-15 && std::abs(b.x() - x) < 1e-15 && std::abs(c.x() - x) < 1e-15)
+    if (std::abs(a(axis) - x) < 1e-15 && std::abs(b(axis) - x) < 1e-15 && std::abs(c(axis) - x) < 1e-15)
       area += 0.5 * (b - a).cross(c - a).norm();
   }
   return area;
