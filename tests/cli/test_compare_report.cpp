@@ -4,6 +4,7 @@
 // out from the table below by hand.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -21,6 +22,8 @@ struct Row {
   double total_s, field_l2_error, relative_rms_error;
   bool is_reference = false;
   int refinements = 0;
+  int events = 0;
+  std::array<double, 4> event_seconds{};  // geometry, integration, pattern, transfer
 };
 
 // A results.csv with the columns plot_report.py reads; `nan` fields are left empty, as
@@ -49,6 +52,11 @@ void write_table(const std::filesystem::path& file, const std::vector<Row>& rows
                                          "solve_s",
                                          "total_s",
                                          "refinements",
+                                         "events",
+                                         "event_geometry_s",
+                                         "event_integration_s",
+                                         "event_pattern_s",
+                                         "event_transfer_s",
                                          "wall_s",
                                          "peak_memory_mib",
                                          "rms_error",
@@ -80,6 +88,11 @@ void write_table(const std::filesystem::path& file, const std::vector<Row>& rows
                                              {"total_s", number(row.total_s)},
                                              {"wall_s", number(row.total_s)},
                                              {"refinements", std::to_string(row.refinements)},
+                                             {"events", std::to_string(row.events)},
+                                             {"event_geometry_s", number(row.event_seconds[0])},
+                                             {"event_integration_s", number(row.event_seconds[1])},
+                                             {"event_pattern_s", number(row.event_seconds[2])},
+                                             {"event_transfer_s", number(row.event_seconds[3])},
                                              {"field_l2_error", number(row.field_l2_error)},
                                              {"field_h1_error", number(row.field_l2_error)},
                                              {"relative_rms_error", number(row.relative_rms_error)},
@@ -185,6 +198,23 @@ TEST(CompareReport, AnAdaptiveSeriesKeepsTheElementOfItsMethodsUniformRuns) {
       << report;
   EXPECT_EQ(report.find("harmonic mfs_polyhedron adaptive"), std::string::npos) << report;
   EXPECT_NE(report.find("3 of 5 method–element series reach it"), std::string::npos) << report;
+}
+
+// A cut scene's runs (scenes/bar_cut.json's compare): each run's events, their seconds per
+// phase, their share of the run and the error it ends with, beside one another; a table
+// without events has no such section.
+TEST(CompareReport, ReportsEachRunsCutCostByPhaseBesideItsErrorAfterTheCut) {
+  std::vector<Row> cut = table;
+  cut[0].events = 1;
+  cut[0].event_seconds = {0.1, 0.2, 0.05, 0.05};  // 0.4 of fem coarse's 1 s
+  cut[1].events = 2;
+  cut[1].event_seconds = {0.25, 0.25, 0, 0.5};  // 1 of dg coarse's 2 s
+  const std::string report = report_of(cut, 0.02, "report-events");
+  EXPECT_NE(report.find("## Events"), std::string::npos) << report;
+  EXPECT_NE(report.find("| fem coarse | 1 | 0.1 | 0.2 | 0.05 | 0.05 | 40.0% | 0.05 |"), std::string::npos) << report;
+  EXPECT_NE(report.find("| dg coarse | 2 | 0.25 | 0.25 | 0 | 0.5 | 50.0% | 0.01 |"), std::string::npos) << report;
+  EXPECT_EQ(report.find("| fcm coarse | 0 |"), std::string::npos) << report;  // no events: no row
+  EXPECT_EQ(report_of(table, 0.02, "report-no-events").find("## Events"), std::string::npos);
 }
 
 }  // namespace
