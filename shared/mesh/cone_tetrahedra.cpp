@@ -12,11 +12,18 @@ namespace {
 // face's longest edge squared has none to a rounding: its nodes lie on one line.
 constexpr double flat_triangle_fraction = 1e-6;
 
-// Twice the area of (a, b, c) along `normal`, against the flat threshold of a face whose
-// longest edge squared is `longest`: whether the triangle turns the face's way.
+// A face's centroid sees an edge when their triangle turns the face's way by more than
+// this fraction of its longest edge squared: a face that is not convex (the L a notch's
+// corner leaves of a section has its centroid at its reflex corner) has one that turns back
+// or has no area. Not the fan's threshold: a convex face with a short edge has a thin
+// triangle there, whose tetrahedron about the centroid is sound.
+constexpr double reflex_fraction = 1e-12;
+
+// Whether (a, b, c) turns about `normal` by more than `fraction` of `longest`, a face's
+// longest edge squared.
 bool turns_with(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
-                const Eigen::Vector3d& normal, double longest) {
-  return (b - a).cross(c - a).dot(normal) > flat_triangle_fraction * longest;
+                const Eigen::Vector3d& normal, double longest, double fraction) {
+  return (b - a).cross(c - a).dot(normal) > fraction * longest;
 }
 
 // Whether `point` of the face's plane lies in the triangle (a, b, c), which turns about
@@ -48,7 +55,8 @@ void ConeTetrahedra::split_about_centroid(int face) {
   }
   bool sees_every_edge = true;
   for (std::size_t k = 0; k < loop.size() && sees_every_edge; ++k)
-    sees_every_edge = turns_with(centroid, at(loop[k]), at(loop[(k + 1) % loop.size()]), normal, longest);
+    sees_every_edge =
+        turns_with(centroid, at(loop[k]), at(loop[(k + 1) % loop.size()]), normal, longest, reflex_fraction);
   if (sees_every_edge) {
     fan_[face] = add_centroid(loop) + 1;
     return;
@@ -68,7 +76,7 @@ void ConeTetrahedra::split_about_centroid(int face) {
     std::size_t ear = n;
     for (std::size_t k = 0; k < n && ear == n; ++k) {
       const int a = left[(k + n - 1) % n], b = left[k], c = left[(k + 1) % n];
-      if (!turns_with(at(a), at(b), at(c), normal, longest)) continue;
+      if (!turns_with(at(a), at(b), at(c), normal, longest, flat_triangle_fraction)) continue;
       bool empty = true;
       for (const int other : left)
         if (other != a && other != b && other != c && in_triangle(at(other), at(a), at(b), at(c), normal))

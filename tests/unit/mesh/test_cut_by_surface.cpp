@@ -265,6 +265,22 @@ TEST(CutBySurface, AFlatPartsInnerEdgeThroughASectionsCentroidSeparatesIt) {
     expect_bent_blade_parts_the_cube(bent_blade(seeded[blade]), ElementType::hex8, "blade " + std::to_string(blade));
 }
 
+// The seeded bent blades 1547 (hexahedra) and 4364 (tetrahedra), their heights to the last
+// digit: each leaves fragments with a convex face one of whose edges is short beside its
+// longest. Split by clipping its ears, as a face its centroid does not see every edge of
+// is, such a face gave a sliver, and two flat tetrahedra left the fragment open; its
+// triangles about its centroid are thin there but sound.
+TEST(CutBySurface, AConvexFaceWithAShortEdgeIsSplitAboutItsCentroid) {
+  expect_bent_blade_parts_the_cube(
+      bent_blade({0.6556394338327185, 0.6556394338327185, 0.24583125648177817, 0.6556394338327185, 0.6556394338327185,
+                  0.6542552584432797, 0.26857484641976093, 0.32079851451251484, 0.2394068419770326}),
+      ElementType::hex8, "blade 1547");
+  expect_bent_blade_parts_the_cube(bent_blade({0.56157774180843845, 0.56157774180843845, 0.20007385433913805,
+                                               0.56157774180843845, 0.56157774180843845, 0.60024950759274343,
+                                               0.79055869818312718, 0.69146765203834804, 0.60025978342042918}),
+                                   ElementType::tet4, "blade 4364");
+}
+
 using test::ball_blade;
 using test::enclosed_volume;
 
