@@ -32,10 +32,13 @@
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
+#include "tests/unit/conformance/small_strain.hpp"
 #include "tests/unit/conformance/two_hex_monomial_method.hpp"
 
 namespace altfem {
 namespace {
+
+using test::small_strain;
 
 struct MethodCase {
   std::string name;
@@ -93,12 +96,6 @@ protected:
     return g;
   }
 };
-
-Eigen::Matrix3d small_strain() {
-  Eigen::Matrix3d A;
-  A << 0.02, 0.01, -0.005, 0.004, -0.01, 0.006, -0.003, 0.008, 0.015;
-  return A;
-}
 
 TEST_P(Conformance, VolumeIsTheGeometrysVolume) {
   const Built built = build("free_box.json");

@@ -17,9 +17,12 @@
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/simulation.hpp"
+#include "tests/unit/conformance/small_strain.hpp"
 
 namespace altfem {
 namespace {
+
+using test::small_strain;
 
 // The free box of the conformance suite cut by the plane through (0.9, 0.5, 0.5) normal
 // to (1, 0.3, 0.2), which crosses cells of every method's grid.
@@ -57,12 +60,6 @@ struct CutBox {
     return ones.dot(method().discretization().body_force(Eigen::Vector3d::UnitX())) / scene.material.density;
   }
 };
-
-Eigen::Matrix3d small_strain() {
-  Eigen::Matrix3d A;
-  A << 0.02, 0.01, -0.005, 0.004, -0.01, 0.006, -0.003, 0.008, 0.015;
-  return A;
-}
 
 class ConformanceAfterACut : public ::testing::TestWithParam<std::string> {};
 
