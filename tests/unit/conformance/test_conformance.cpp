@@ -32,12 +32,14 @@
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/run_simulation.hpp"
 #include "shared/simulation/simulation.hpp"
-#include "tests/unit/conformance/small_strain.hpp"
+#include "tests/unit/conformance/conformance_measures.hpp"
 #include "tests/unit/conformance/two_hex_monomial_method.hpp"
 
 namespace altfem {
 namespace {
 
+using test::integrated_volume;
+using test::internal_force;
 using test::small_strain;
 
 struct MethodCase {
@@ -84,16 +86,9 @@ protected:
         make_material(*material_model_from_name(spec.model), spec.youngs_modulus, spec.poisson_ratio, spec.density);
     return built;
   }
-  // The volume the method integrates: ∫ρ·1 / ρ through its load vector.
-  static double volume(const Built& built) {
-    const Eigen::VectorXd ones =
-        built.method->interpolate([](const Eigen::Vector3d&) { return Eigen::Vector3d::Ones().eval(); });
-    return ones.dot(built.method->discretization().body_force(Eigen::Vector3d::UnitX())) / built.scene.material.density;
-  }
+  static double volume(const Built& built) { return integrated_volume(*built.method, built.scene.material.density); }
   static Eigen::VectorXd gradient(const Built& built, const Eigen::VectorXd& u) {
-    Eigen::VectorXd g;
-    built.method->discretization().gradient(u, g);
-    return g;
+    return internal_force(*built.method, u);
   }
 };
 

@@ -17,7 +17,7 @@
 #include "shared/scene/scene_override.hpp"
 #include "shared/simulation/rigid_motion.hpp"
 #include "shared/simulation/simulation.hpp"
-#include "tests/unit/conformance/small_strain.hpp"
+#include "tests/unit/conformance/conformance_measures.hpp"
 
 namespace altfem {
 namespace {
@@ -49,16 +49,7 @@ struct CutBox {
   Eigen::VectorXd interpolate(const Eigen::Matrix3d& A, const Eigen::Vector3d& b = Eigen::Vector3d::Zero()) const {
     return method().interpolate([&](const Eigen::Vector3d& x) -> Eigen::Vector3d { return A * x + b; });
   }
-  Eigen::VectorXd gradient(const Eigen::VectorXd& u) const {
-    Eigen::VectorXd g;
-    method().discretization().gradient(u, g);
-    return g;
-  }
-  // The volume the method integrates: ∫ρ·1 / ρ through its load vector.
-  double integrated_volume() const {
-    const Eigen::VectorXd ones = interpolate(Eigen::Matrix3d::Zero(), Eigen::Vector3d::Ones());
-    return ones.dot(method().discretization().body_force(Eigen::Vector3d::UnitX())) / scene.material.density;
-  }
+  Eigen::VectorXd gradient(const Eigen::VectorXd& u) const { return test::internal_force(method(), u); }
 };
 
 class ConformanceAfterACut : public ::testing::TestWithParam<std::string> {};
@@ -98,7 +89,7 @@ TEST_P(ConformanceAfterACut, PatchTestGivesTheExactConstantStress) {
   B << 0.3, -0.1, 0.2, 0.05, 0.4, -0.3, 0.1, 0.2, -0.2;
   const Eigen::VectorXd u = box.interpolate(G - Eigen::Matrix3d::Identity(), {0.01, 0.02, 0.03});
   const Eigen::VectorXd v = box.interpolate(B);
-  const double V = box.integrated_volume();
+  const double V = test::integrated_volume(box.method(), box.scene.material.density);
   const double energy = V * box.material->energy(G);
   const double work = V * (box.material->pk1(G).array() * B.array()).sum();
   EXPECT_NEAR(box.method().discretization().energy(u), energy, 1e-10 * std::abs(energy));
