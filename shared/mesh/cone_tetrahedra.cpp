@@ -57,19 +57,27 @@ void ConeTetrahedra::split_about_centroid(int face) {
   for (std::size_t k = 0; k < loop.size() && sees_every_edge; ++k)
     sees_every_edge =
         turns_with(centroid, at(loop[k]), at(loop[(k + 1) % loop.size()]), normal, longest, reflex_fraction);
-  if (sees_every_edge) {
-    fan_[face] = add_centroid(loop) + 1;
-    return;
-  }
   // A face the joins of a surface blade's pieces merged need not be convex (the L that a
   // notch's corner leaves of a section has its centroid at the reflex corner, whose
-  // triangles about it are flat): its ears clipped instead, each a triangle that turns the
-  // face's way and holds no other node, the lowest node's first (an order no cut changes).
-  std::vector<int> left = loop;
-  std::rotate(left.begin(),
-              std::min_element(left.begin(), left.end(),
-                               [&](int a, int b) { return tetrahedral_cut::comes_before(pieces_.nodes, a, b); }),
-              left.end());
+  // triangles about it are flat): its ears clipped instead.
+  if (sees_every_edge || !clip_ears(face, true)) fan_[face] = add_centroid(loop) + 1;
+}
+
+bool ConeTetrahedra::clip_ears(int face, bool become_faces) {
+  // The loop in an order no cut changes: from its lowest node by position, towards the
+  // lesser of that node's two neighbours, so the fragments on either side of the face, and
+  // a fragment split again later, clip the same ears.
+  std::vector<int> left = pieces_.faces[face];
+  const auto before = [&](int a, int b) { return tetrahedral_cut::comes_before(pieces_.nodes, a, b); };
+  std::rotate(left.begin(), std::min_element(left.begin(), left.end(), before), left.end());
+  const bool reversed = before(left.back(), left[1]);
+  if (reversed) std::reverse(left.begin() + 1, left.end());
+  const Eigen::Vector3d normal = face_area_vector(pieces_, left).normalized();
+  double longest = 0;
+  for (std::size_t k = 0; k < left.size(); ++k)
+    longest = std::max(longest, (at(left[(k + 1) % left.size()]) - at(left[k])).squaredNorm());
+  // Each ear a triangle that turns the face's way and holds no other node, the first one
+  // found from the lowest node.
   std::vector<std::array<int, 3>> triangles;
   while (left.size() > 3) {
     const std::size_t n = left.size();
@@ -83,16 +91,17 @@ void ConeTetrahedra::split_about_centroid(int face) {
           empty = false;
       if (empty) ear = k;
     }
-    if (ear == n) {  // no ear: a loop that is not a simple polygon to a rounding, about its centroid as before
-      fan_[face] = add_centroid(loop) + 1;
-      return;
-    }
+    if (ear == n) return false;  // not a simple polygon to a rounding
     triangles.push_back({left[(ear + n - 1) % n], left[ear], left[(ear + 1) % n]});
     left.erase(left.begin() + static_cast<std::ptrdiff_t>(ear));
   }
+  if (!turns_with(at(left[0]), at(left[1]), at(left[2]), normal, longest, flat_triangle_fraction)) return false;
   triangles.push_back({left[0], left[1], left[2]});
-  fan_[face] = clipped_;
+  if (reversed)  // as the face runs
+    for (auto& triangle : triangles) std::swap(triangle[1], triangle[2]);
+  fan_[face] = become_faces ? clipped_ : kept_clipped_;
   ears_[face] = std::move(triangles);
+  return true;
 }
 
 int ConeTetrahedra::centre_of(int face) {
@@ -113,10 +122,10 @@ int ConeTetrahedra::centre_of(int face) {
     for (std::size_t k = 1; k + 1 < loop.size() && !degenerate; ++k)
       degenerate = (at(loop[k]) - at(loop[0])).cross(at(loop[k + 1]) - at(loop[0])).dot(normal) <=
                    flat_triangle_fraction * longest;
-    if (degenerate) split_about_centroid(face);
-    else fan_[face] = 0;
+    if (!degenerate) fan_[face] = 0;
+    else if (!clip_ears(face, false)) split_about_centroid(face);
   }
-  return fan_[face] == clipped_ ? -1 : fan_[face] - 1;
+  return is_clipped(face) ? -1 : fan_[face] - 1;
 }
 
 int ConeTetrahedra::add_centroid(const std::vector<int>& nodes) {
@@ -139,7 +148,7 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
   int apex = loops[0][0];
   for (const auto& loop : loops) apex = std::min(apex, *std::min_element(loop.begin(), loop.end(), before), before);
   bool centred = false;
-  for (const int face : faces) centred |= centre_of(face) >= 0 || fan_[face] == clipped_;
+  for (const int face : faces) centred |= centre_of(face) >= 0 || is_clipped(face);
   if (!from_centroid && !centred) {
     // A face in a plane through the apex that does not hold it, exactly or to a rounding
     // (a face's triangles about its rounded centroid, the apex a node of that face), makes
@@ -174,7 +183,7 @@ void ConeTetrahedra::split(int piece, bool from_centroid, std::vector<Row>& rows
       for (std::size_t k = 0; k < loop.size(); ++k) add(centre, loop[k], loop[(k + 1) % loop.size()]);
       continue;
     }
-    if (fan_[faces[index]] == clipped_) {  // its ears, as the face runs, reversed where the piece's loop is
+    if (is_clipped(faces[index])) {  // its ears, as the face runs, reversed where the piece's loop is
       const bool reversed = pieces_.face_cells(faces[index], 0) != piece;
       for (const auto& [a, b, c] : ears_.at(faces[index])) reversed ? add(a, c, b) : add(a, b, c);
       continue;
