@@ -64,6 +64,10 @@ std::optional<ElementHarmonicBasis> HarmonicBasisMemory::find(const CellShapeKey
   return moved_basis(held->basis, held->key, key);
 }
 
+bool HarmonicBasisMemory::holds(const CellShapeKey& key, const MfsOptions& options) const {
+  return same_options(options, options_) && entry(key) != nullptr;
+}
+
 void HarmonicBasisMemory::add(const CellShapeKey& key, const ElementHarmonicBasis& basis) {
   if (entry(key)) return;
   by_hash_.emplace(key.hash, std::make_shared<const Entry>(Entry{key, basis}));

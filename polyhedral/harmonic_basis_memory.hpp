@@ -55,6 +55,8 @@ public:
   /// The basis fitted for a cell of this shape with `options`, moved to the cell `key`
   /// (nullopt: none).
   std::optional<ElementHarmonicBasis> find(const CellShapeKey& key, const MfsOptions& options) const;
+  /// Whether it holds a fit for a cell of this shape with `options`.
+  bool holds(const CellShapeKey& key, const MfsOptions& options) const;
   /// Keeps the fit of the cell `key` unless its shape is held already.
   void add(const CellShapeKey& key, const ElementHarmonicBasis& basis);
   /// The shapes held.

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "polyhedral/cut_piece_fits.hpp"
 #include "polyhedral/harmonic_basis_cache.hpp"
 #include "polyhedral/harmonic_basis_evaluator.hpp"
 #include "polyhedral/harmonic_element_bases.hpp"
@@ -37,11 +38,11 @@ struct HarmonicMesh {
 class HarmonicMethod final : public EmbeddedSurfaceMethod {
 public:
   // On the mesh of the scene, or on a mesh an event hands it.
-  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry, const HarmonicMesh* handed) : materials_(scene) {
-    const HarmonicSpec spec = harmonic_spec(scene);
+  HarmonicMethod(const Scene& scene, const SceneGeometry& geometry, const HarmonicMesh* handed)
+      : materials_(scene), spec_(harmonic_spec(scene)) {
     // fem's tet or hex mesh cell by cell, or the geometry sliced: its grid's hexahedra
     // keep the trilinear basis with `basis: auto`, only cut cells pay for MFS.
-    PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec.mesh, geometry);
+    PolyhedralSceneMesh built = handed ? handed->mesh : build_polyhedral_scene_mesh(spec_.mesh, geometry);
     mesh_ = std::move(built.sliced.mesh);
     surface_.surface = deformed_surface(built, geometry);
     surface_.common = built.surface.triangles.rows() == 0;  // else the mesh's own (deformed_surface)
@@ -51,19 +52,19 @@ public:
     node_sources_ = std::move(built.node_sources);
     cell_levels_ = std::move(built.cell_levels);
     const auto start = std::chrono::steady_clock::now();
-    if (spec.cache.empty()) {
+    if (spec_.cache.empty()) {
       // Kept only where an event can rebuild on them. Every shape the run has met: the
       // memory of the build before, and this one's.
       if (events_rebuild(scene))
         basis_memory_ = handed && handed->bases ? std::make_shared<HarmonicBasisMemory>(*handed->bases)
-                                                : std::make_shared<HarmonicBasisMemory>(spec.mfs);
-      bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec.basis, spec.mfs,
+                                                : std::make_shared<HarmonicBasisMemory>(spec_.mfs);
+      bases_ = std::make_unique<HarmonicElementBases>(mesh_, spec_.basis, spec_.mfs,
                                                       handed ? handed->bases.get() : nullptr, basis_memory_.get());
     } else {
       bool reused = false;
       try {
         bases_ = std::make_unique<HarmonicElementBases>(
-            cached_harmonic_bases(mesh_, spec.basis, spec.mfs, spec.cache, &reused));
+            cached_harmonic_bases(mesh_, spec_.basis, spec_.mfs, spec_.cache, &reused));
       } catch (const NumericalError&) {
         throw;
       } catch (const std::runtime_error& error) {  // the cache file cannot be written
@@ -72,12 +73,12 @@ public:
       basis_cache_ = reused ? "reused" : "written";
     }
     DiscretizationParts parts;
-    quadrature_order_ = spec.quadrature_order;
+    quadrature_order_ = spec_.quadrature_order;
     quadrature_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // Over several ranks each tabulates only its cells (TabulatedDiscretization calls this
     // while it is built, below); the tabulation's seconds count with the bases'.
     const EarlierTabulation earlier = handed ? handed->tabulation : EarlierTabulation{};
-    parts.tabulate = [this, order = spec.quadrature_order, quadrature = spec.quadrature, earlier,
+    parts.tabulate = [this, order = spec_.quadrature_order, quadrature = spec_.quadrature, earlier,
                       materials = materials_.ids_of(mesh_.cell_centroids)](const TabulatedHere& here,
                                                                            const TabulatedElements* listed) {
       const auto begin = std::chrono::steady_clock::now();
@@ -91,7 +92,7 @@ public:
     // the nodes, as in fem; the lumped mass suits its partition of unity.
     parts.dirichlet = nodal_dirichlet(mesh_.nodes, scene.dirichlet, scene.file.string(), "the harmonic mesh");
     parts.explicit_mass = ExplicitMassKind::lumped;
-    if (spec.warping) {
+    if (spec_.warping) {
       check_warped_materials(scene);
       auto warped = std::make_unique<WarpedLinearDiscretization>(std::move(parts), mesh_.nodes);
       elements_ = &warped->elements();
@@ -149,7 +150,20 @@ public:
   std::shared_ptr<const MethodMesh> mesh() const override { return handed_mesh(polyhedral_mesh()); }
   std::string cut_refusal() const override { return ""; }
   std::shared_ptr<const MethodMesh> cut_mesh(const SceneEvent& cut, nlohmann::json& facts) const override {
-    return handed_mesh(cut_polyhedral_scene_mesh(polyhedral_mesh(), cut, facts));
+    // Each new cell's fit is checked before it becomes an element; the fits that pass go
+    // into the memory the build on the cut mesh reads (a fresh one without it: the cache).
+    HarmonicBasisMemory scratch(spec_.mfs);
+    HarmonicBasisMemory& memory = basis_memory_ ? *basis_memory_ : scratch;
+    double fitting_seconds = 0;
+    const RefusedCells refused = [&](const PolyhedralMesh& pieces, const std::vector<int>& candidates) {
+      const auto start = std::chrono::steady_clock::now();
+      std::vector<bool> fails =
+          cells_whose_fit_fails(pieces, candidates, spec_.basis, spec_.mfs, spec_.cut_piece_residual, memory);
+      fitting_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      return fails;
+    };
+    PolyhedralSceneMesh cut_mesh = cut_polyhedral_scene_mesh(polyhedral_mesh(), cut, facts, refused);
+    return handed_mesh(std::move(cut_mesh), fitting_seconds);
   }
   std::string refine_refusal(const RefineSpec& /*refine*/) const override { return ""; }
   std::shared_ptr<const MethodMesh> refine_mesh(const SceneEvent& refine, const Eigen::VectorXd& u,
@@ -196,9 +210,11 @@ private:
     return handed_polyhedral_scene_mesh(mesh_, surface_.common ? nullptr : &surface_.surface, surface_.load_surface,
                                         mesh_facts_, cell_levels_);
   }
-  std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh) const {
-    return std::make_shared<MeshOf<HarmonicMesh>>(
+  std::shared_ptr<const MethodMesh> handed_mesh(PolyhedralSceneMesh mesh, double integration_seconds = 0) const {
+    auto handed = std::make_shared<MeshOf<HarmonicMesh>>(
         HarmonicMesh{std::move(mesh), basis_memory_, {bases_.get(), elements_, quadrature_order_}});
+    handed->integration_seconds = integration_seconds;
+    return handed;
   }
 
   // Martin et al. 2008 §6 warp the linear stiffness; the nonlinear models are already
@@ -212,6 +228,7 @@ private:
   }
 
   SceneMaterials materials_;
+  HarmonicSpec spec_;  // the resolved block
   PolyhedralMesh mesh_;
   nlohmann::json mesh_facts_;             // its source (build_polyhedral_scene_mesh)
   std::vector<NodeSource> node_sources_;  // how mesh_ was cut from the previous instance's (empty: not cut)

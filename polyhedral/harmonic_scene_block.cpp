@@ -100,6 +100,10 @@ const scene_schema::ObjectRule& harmonic_rule() {
         .default_value = "auto",
         .choices = scene_schema::names(harmonic_basis_names)},
        {.key = "warping", .type = ValueType::boolean, .default_value = false},
+       {.key = "cut_piece_residual",
+        .type = ValueType::number,
+        .default_value = HarmonicSpec{}.cut_piece_residual,
+        .lower = scene_schema::positive},
        {.key = "cache", .type = ValueType::string}}};
   return rule;
 }
@@ -123,6 +127,7 @@ HarmonicSpec harmonic_spec(const Scene& scene) {
   spec.mfs.edge_samples = harmonic["samples_per_edge"].get<int>();
   spec.mfs.offset = harmonic["kernel_offset"].get<double>();
   spec.quadrature_order = harmonic["quadrature_order"].get<int>();
+  spec.cut_piece_residual = harmonic["cut_piece_residual"].get<double>();
   spec.basis = enum_from_name<HarmonicBasisKind>(harmonic_basis_names, harmonic["basis"]);
   spec.quadrature.kind = enum_from_name<HarmonicRuleKind>(harmonic_rule_names, harmonic["rule"]);
   if (harmonic.contains("simplifier"))

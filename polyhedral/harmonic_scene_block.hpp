@@ -32,6 +32,9 @@ struct HarmonicSpec {
   HarmonicBasisKind basis = HarmonicBasisKind::automatic;
   /// Corotated stiffness warping of the linear material by shape matching (§6).
   bool warping = false;
+  /// A cut's new cell whose MFS fit misses its boundary data by more than this RMS (or
+  /// fails) merges into a neighbour instead (cut_piece_fits.hpp).
+  double cut_piece_residual = 0.1;
   /// Folder of the on-disk basis cache (harmonic_basis_cache.hpp), absolute; empty: no cache.
   std::filesystem::path cache;
 };

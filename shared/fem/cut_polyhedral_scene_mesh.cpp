@@ -2,6 +2,7 @@
 
 #include <Eigen/SVD>
 #include <algorithm>
+#include <limits>
 #include <optional>
 
 #include "shared/mesh/cut_polyhedral_mesh.hpp"
@@ -26,7 +27,7 @@ bool flat(const Polyhedron& polyhedron) {
 }  // namespace
 
 PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, const SceneEvent& cut,
-                                              nlohmann::json& facts) {
+                                              nlohmann::json& facts, const RefusedCells& refused) {
   PolyhedralCut result_of_cut = cut_polyhedral_mesh(mesh.sliced.mesh, cut.blade);
   PolyhedralMesh& pieces = result_of_cut.mesh;
   // The pieces of crossed cells (convex or not) merge below their fraction of the cell.
@@ -36,6 +37,19 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
   for (int piece = 0; piece < pieces.cell_count(); ++piece) {
     const int cell = result_of_cut.parent_cell[piece];
     if (pieces_of_cell[cell] > 1) minimum_volume[piece] = cut.merge_fraction * mesh.sliced.mesh.cell_volumes(cell);
+  }
+  // A cell the method refuses merges whatever its volume: its threshold is above any.
+  int refused_cells = 0;
+  if (refused) {
+    std::vector<int> candidates;
+    for (int cell = 0; cell < pieces.cell_count(); ++cell)
+      if (pieces.cell_volumes(cell) >= minimum_volume[cell]) candidates.push_back(cell);
+    const std::vector<bool> refuses = refused(pieces, candidates);
+    for (std::size_t k = 0; k < candidates.size(); ++k)
+      if (refuses[k]) {
+        minimum_volume[candidates[k]] = std::numeric_limits<double>::infinity();
+        ++refused_cells;
+      }
   }
   // Pieces that merge keep their polyhedra until it is known which merged with pieces of
   // another cell: dg projects its field on those piece by piece (dg_transfer.hpp).
@@ -55,6 +69,7 @@ PolyhedralSceneMesh cut_polyhedral_scene_mesh(const PolyhedralSceneMesh& mesh, c
            {"duplicated_nodes", result_of_cut.duplicated_nodes},
            {"snapped_nodes", result_of_cut.snapped_nodes},
            {"merged_pieces", merged.merged + result_of_cut.merged_pieces},
+           {"refused_cells", refused_cells},
            {"dropped_pieces", result_of_cut.dropped_pieces},
            {"merged_faces", result_of_cut.merged_faces},
            {"dropped_nodes", result_of_cut.dropped_nodes},

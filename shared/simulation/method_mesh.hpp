@@ -14,6 +14,10 @@ namespace altfem {
 class MethodMesh {
 public:
   virtual ~MethodMesh() = default;
+  /// Of the time the event took to make it, what went into elements ahead of the rebuild
+  /// (harmonic fits a cut's new cells to check them, and the rebuild takes those fits): an
+  /// event record counts it as integration, not geometry.
+  double integration_seconds = 0;
 };
 
 /// A method's mesh of type T as a MethodMesh.

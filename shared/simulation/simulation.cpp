@@ -298,7 +298,7 @@ EventRecord Simulation::cut(const SceneEvent& event) {
   {
     const CoreLentOut lent(surface_cut.valid());
     const std::shared_ptr<const MethodMesh> mesh = method_->cut_mesh(event, record.facts);
-    record.seconds.geometry = seconds_since(start);
+    record.seconds.geometry = seconds_since(start) - mesh->integration_seconds;
     rebuild_on(*mesh, record);
   }
   if (surface_cut.valid()) {
@@ -326,7 +326,7 @@ EventRecord Simulation::refine(const SceneEvent& event) {
   const PrescribedTraction boundary(scene_, state_.time, region_tolerance(geometry_->bounds), released_);
   const std::shared_ptr<const MethodMesh> mesh =
       method_->refine_mesh(event, state_.displacement, boundary, record.facts);
-  record.seconds.geometry = seconds_since(start);
+  record.seconds.geometry = seconds_since(start) - (mesh ? mesh->integration_seconds : 0.0);
   if (mesh) rebuild_on(*mesh, record);
   finish_record(record, before);
   return record;
@@ -335,7 +335,7 @@ EventRecord Simulation::refine(const SceneEvent& event) {
 void Simulation::rebuild_on(const MethodMesh& mesh, EventRecord& record) {
   auto start = std::chrono::steady_clock::now();
   std::unique_ptr<MethodInstance> rebuilt = rebuild_(scene_, *geometry_, mesh);
-  record.seconds.integration = seconds_since(start);
+  record.seconds.integration = seconds_since(start) + mesh.integration_seconds;
   quadrature_seconds_ += rebuilt->quadrature_seconds();
 
   start = std::chrono::steady_clock::now();

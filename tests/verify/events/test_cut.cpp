@@ -31,6 +31,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <optional>
 
@@ -347,6 +348,49 @@ TEST(CutMerge, APieceOfABillionthOfItsCellIsMergedAndPcgConverges) {
     EXPECT_NEAR(merged.vertical_mass, along_faces.vertical_mass, tolerance * std::abs(along_faces.vertical_mass));
     EXPECT_NEAR(merged.energy, along_faces.energy, tolerance * along_faces.energy);
   }
+}
+
+// harmonic checks each new cell's MFS fit before it becomes an element
+// (polyhedral/cut_piece_fits.hpp): with `cut_piece_residual` below any fit's misfit, the
+// blade's 8 pieces (through the slab x in [0.5, 0.6] of the 10 × 2 × 2 grid) are each
+// refused and merged into a neighbour, counted, the volume kept; the merged cells lie on
+// their own side of the blade, so the bar is still the two cantilevers of the cut with
+// every piece kept, to the two meshes' difference (3e-5 of the energy; asserted to 1e-3),
+// where the uncut bar's energy is 2.3 times less.
+TEST(CutMerge, HarmonicMergesThePiecesWhoseFitItRefuses) {
+  const auto cut_with = [](const std::string& residual, nlohmann::json& facts) {
+    const Scene scene = load_scene(
+        scenes / "bar_held_at_both_ends.json",
+        {parse_scene_override("discretization/harmonic/cut_piece_residual=" + residual),
+         parse_scene_override(
+             "events=[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [0.55, 0, 0], \"normal\": [1, 0, 0]}}}]")});
+    const SceneGeometry geometry = load_scene_geometry(scene);
+    const MethodDescription& method = cli::find_method("harmonic");
+    Simulation simulation(scene, geometry, "harmonic", method.factory, method.rebuild);
+    const EventRecord record = simulation.apply(scene.events.at(0));
+    facts = record.facts;
+    EXPECT_LE(std::abs(record.conserved["volume_change"].get<double>()), 1e-12 * 0.01);
+  };
+  nlohmann::json refused, kept;
+  cut_with("1e-9", refused);
+  cut_with("1e-2", kept);
+  EXPECT_EQ(refused["refused_cells"], 8);
+  EXPECT_EQ(refused["merged_pieces"], 8);
+  EXPECT_EQ(refused["cells"], kept["cells"].get<int>() - 8);
+  EXPECT_EQ(kept["refused_cells"], 0);
+  const auto energy_of = [](const std::string& residual) {
+    return solve_static(scenes / "bar_held_at_both_ends.json", "harmonic",
+                        {parse_scene_override("discretization/harmonic/cut_piece_residual=" + residual),
+                         parse_scene_override("events=[{\"time\": 0, \"cut\": {\"plane\": {\"point\": [0.55, "
+                                              "0, 0], \"normal\": [1, 0, 0]}}}]")})
+        .energy;
+  };
+  const double merged = energy_of("1e-9"), with_pieces = energy_of("1e-2");
+  const double whole =
+      solve_static(scenes / "bar_held_at_both_ends.json", "harmonic", {parse_scene_override("events=[]")}).energy;
+  std::printf("energy: pieces merged %.6e J, kept %.6e J, the bar uncut %.6e J\n", merged, with_pieces, whole);
+  EXPECT_NEAR(merged, with_pieces, 1e-3 * with_pieces);
+  EXPECT_GT(merged, 2 * whole);
 }
 
 // A piece of a tenth of its cell (x in [0.59, 0.6]) merged with the cell beyond its other
