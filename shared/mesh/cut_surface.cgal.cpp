@@ -78,9 +78,11 @@ bool covers_section(const SurfaceMesh& surface, const std::vector<int>& triangle
 
 // Whether the plane of `blade` has vertices of the piece made of `triangles` on both sides
 // farther than split_surface_by_plane takes a vertex on it (1e-9 of the caps' edge, a
-// 40th of the piece's diagonal). Among several blades a piece's side that an earlier cut
-// by the same plane left has only the rounding of its cut's points off the plane: that
-// blade grazes it, and is not one of its blades.
+// 40th of the piece's diagonal). A piece's side that an earlier cut by the same plane left
+// has only the rounding of its cut's points off the plane: that blade grazes it, and is
+// not one of its blades — among several blades, and alone too (a notch's blade cut again
+// from before it, after a pass that split the pieces whose section it spans, found such a
+// half "crossed", and its whole-plane split could not close it).
 bool clearly_separates(const SurfaceMesh& surface, const std::vector<int>& triangles, const CuttingPlane& blade) {
   Eigen::AlignedBox3d bounds;
   double below = 0, above = 0;
@@ -214,7 +216,7 @@ SurfaceCut cut_surface_by(const SurfaceMesh& surface, const std::vector<CuttingP
           crossing_exact.push_back(&exact[b]);
         }
       } else if ((!only[b] || *only[b] == piece) && separates(surface, triangles, exact[b]) &&
-                 (blades.size() == 1 || clearly_separates(surface, triangles, blades[b])) &&
+                 clearly_separates(surface, triangles, blades[b]) &&
                  (!spanning_only ||
                   (crossing.empty() && (blades[b].polygon.empty() || covers_section(surface, triangles, exact[b]))))) {
         crossing.push_back(&blades[b]);
