@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "shared/mesh/bounding_box.hpp"
+#include "shared/mesh/coplanar_blades.hpp"
 #include "shared/mesh/cut_by_surface.hpp"
 #include "shared/mesh/cut_surface.hpp"
 #include "shared/mesh/cut_surface_pieces.hpp"
@@ -343,10 +344,16 @@ SurfaceCut cut_surface(const SurfaceMesh& surface, const CuttingPlane& blade) {
   // this one covers them).
   if (const SurfaceCutRecord* record = surface.cut_record.get();
       record && result.facts["pieces_left_whole"].get<int>() > 0) {
+    // An earlier polygon of this one's plane that it overlaps, their union convex, is cut
+    // with it as that union (coplanar_blades.hpp): their caps would lie on one another.
     std::vector<CuttingPlane> blades;
-    for (const CuttingPlane& earlier : record->blades)
-      if (blade.sweep.empty() || earlier.sweep != blade.sweep) blades.push_back(earlier);
-    blades.push_back(blade);
+    CuttingPlane last = blade;
+    for (const CuttingPlane& earlier : record->blades) {
+      if (!blade.sweep.empty() && earlier.sweep == blade.sweep) continue;
+      if (std::optional<CuttingPlane> joined = convex_union_blade(earlier, last)) last = std::move(*joined);
+      else blades.push_back(earlier);
+    }
+    blades.push_back(last);
     try {
       SurfaceCut again = cut_again(record->before, blades);
       if (again.facts["pieces_left_whole"].get<int>() == 0) {

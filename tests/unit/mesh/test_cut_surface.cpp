@@ -235,9 +235,20 @@ TEST(CutSurface, EachCutOfASweepOpensTheNotchFurtherUntilItSeparates) {
     if (cut == 1)
       surface = cut_surface(surface, CuttingPlane(Eigen::Vector3d(5, 0, 0), Eigen::Vector3d::UnitX())).surface;
   }
-  // Not of one sweep, the two overlapping blades meet: the notched box stays whole.
+  // Not of one sweep, two overlapping blades of one plane (the second covers the first): their
+  // caps would lie on one another, so the second cuts from before the first as their union,
+  // one convex polygon (coplanar_blades.hpp), and the notch opens to z = 0.5.
   const CuttingPlane first = start, second = swept_blade(start, Eigen::Vector3d(0, 0, 0.3));
-  EXPECT_EQ(cut_surface(cut_surface(box, first).surface, second).facts["pieces_left_whole"], 1);
+  const SurfaceCut both = cut_surface(cut_surface(box, first).surface, second);
+  EXPECT_EQ(both.facts["pieces_left_whole"], 0);
+  ASSERT_EQ(pieces_of(both.surface).size(), 1u);
+  EXPECT_TRUE(closed_and_oriented(both.surface));
+  EXPECT_NEAR(surface_volume(both.surface), 1.0, 1e-15);
+  EXPECT_NEAR(area_in_plane(both.surface, 0.5), 2 * 0.5, 1e-14);
+  // Two that overlap but whose union is not convex (a notch z < 0.2 and a strip y in [0.3,
+  // 0.6] up to z = 0.7 across it: a T) leave the notched box whole, counted.
+  const CuttingPlane strip = square_blade(Eigen::Vector3d(0.5, 0, 0), Eigen::Vector3d::UnitX(), 0.3, 0.6, -1, 0.7);
+  EXPECT_EQ(cut_surface(cut_surface(box, first).surface, strip).facts["pieces_left_whole"], 1);
 }
 
 TEST(CutSurface, ASecondNotchOrAPlaneAcrossTheNotchCutsANotchedBox) {
