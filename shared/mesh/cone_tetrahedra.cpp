@@ -122,8 +122,10 @@ int ConeTetrahedra::centre_of(int face) {
     for (std::size_t k = 1; k + 1 < loop.size() && !degenerate; ++k)
       degenerate = (at(loop[k]) - at(loop[0])).cross(at(loop[k + 1]) - at(loop[0])).dot(normal) <=
                    flat_triangle_fraction * longest;
+    // Ears that fail (not a simple polygon to a rounding) fail whoever clips them: the
+    // centroid at once.
     if (!degenerate) fan_[face] = 0;
-    else if (!clip_ears(face, false)) split_about_centroid(face);
+    else if (!clip_ears(face, false)) fan_[face] = add_centroid(pieces_.faces[face]) + 1;
   }
   return is_clipped(face) ? -1 : fan_[face] - 1;
 }
