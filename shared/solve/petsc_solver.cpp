@@ -46,6 +46,11 @@ public:
     PC preconditioner;
     check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
     check(PCSetType(preconditioner, PCGAMG), "PCSetType");
+    // Aggregation drops graph edges weaker than 0.05 unless the options choose, as on the
+    // first-order level (petsc_coarse_level.cpp): with PETSc's default, 0, the Hex8
+    // cantilever took 26 iterations at 139,587 DOFs and 39 at 1,048,707 (26 with 0.05).
+    PetscReal threshold = 0.05;
+    check(PCGAMGSetThreshold(preconditioner, &threshold, 1), "PCGAMGSetThreshold");
     check(KSPSetTolerances(ksp_, options.tolerance, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
     const std::string inserted = petsc::prefixed_options(options.petsc_options, prefix_, option_names_);
     const PetscErrorCode inserting = PetscOptionsInsertString(nullptr, inserted.c_str());
