@@ -14,13 +14,12 @@ grids of 0.5-2M DOFs (tens of minutes, up to 12 GB).
     /usr/bin/python3 bench/petsc_refinement.py [--altfem build/bin/altfem] [--out out/petsc_refinement]
         [--largest] [--problem TEXT]
 """
-import argparse
 import json
 import math
-import pathlib
-import subprocess
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import petsc_runs
+
+ROOT = petsc_runs.ROOT
 CANTILEVER = ROOT / "scenes/cantilever.json"
 CYLINDER = ROOT / "scenes/twisting_cylinder.json"
 
@@ -62,28 +61,8 @@ def problems(largest):
     return rows
 
 
-def run(altfem, scene, method, settings, out):
-    command = ["/usr/bin/time", "-f", "%M", "-o", str(out) + ".rss", str(altfem), "run", str(scene),
-               "--method", method, "--out", str(out), "--set", "solver/linear=petsc",
-               "--set", "solver/linear_tolerance=1e-8", "--set", "output/volume=false"]
-    for setting in settings:
-        command += ["--set", setting]
-    out.parent.mkdir(parents=True, exist_ok=True)
-    finished = subprocess.run(command, capture_output=True, text=True)
-    if finished.returncode != 0:
-        return None, finished.stderr.strip().splitlines()[-1]
-    summary = json.loads((out / "summary.json").read_text())
-    summary["peak_gb"] = int(pathlib.Path(str(out) + ".rss").read_text().split()[-1]) / 2**20
-    return summary, ""
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--altfem", default=ROOT / "build/bin/altfem")
-    parser.add_argument("--out", default=ROOT / "out/petsc_refinement", type=pathlib.Path)
-    parser.add_argument("--largest", action="store_true")
-    parser.add_argument("--problem", default="", help="only the problems whose label holds this text")
-    arguments = parser.parse_args()
+    arguments = petsc_runs.arguments(__doc__, "petsc_refinement")
 
     print("| problem | grid | DOFs | iterations a solve | growth per 8× | set-up s | solve s | peak GB |")
     print("|---|---|---:|---:|---:|---:|---:|---:|")
@@ -93,7 +72,8 @@ def main():
         previous = None
         for level, settings in enumerate(grids):
             grid = settings[0].split("=", 1)[1]
-            summary, error = run(arguments.altfem, scene, method, settings, arguments.out / f"{index}-{level}")
+            summary, error = petsc_runs.run(arguments.altfem, scene, method, ["solver/linear=petsc", *settings],
+                                            arguments.out / f"{index}-{level}")
             if summary is None:
                 print(f"| {label} | {grid} | | failed: {error} | | | | |", flush=True)
                 break

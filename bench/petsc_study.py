@@ -15,12 +15,11 @@ markdown table; `--largest` adds the biggest grids (minutes).
     /usr/bin/python3 bench/petsc_study.py [--altfem build/bin/altfem] [--out out/petsc_study] [--largest]
         [--solver SOLVER] [--problem TEXT]
 """
-import argparse
 import json
-import pathlib
-import subprocess
 
-ROOT = pathlib.Path(__file__).resolve().parent.parent
+import petsc_runs
+
+ROOT = petsc_runs.ROOT
 CANTILEVER = ROOT / "scenes/cantilever.json"
 HALF_BALL = ROOT / "scenes/manufactured_half_ball.json"
 
@@ -77,25 +76,9 @@ def problems(largest):
     return rows
 
 
-def run(altfem, scene, method, settings, out):
-    command = [str(altfem), "run", str(scene), "--method", method, "--out", str(out),
-               "--set", "solver/linear_tolerance=1e-8", "--set", "output/volume=false"]
-    for setting in settings:
-        command += ["--set", setting]
-    finished = subprocess.run(command, capture_output=True, text=True)
-    if finished.returncode != 0:
-        return None, finished.stderr.strip().splitlines()[-1]
-    return json.loads((out / "summary.json").read_text()), ""
-
-
 def main():
-    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--altfem", default=ROOT / "build/bin/altfem")
-    parser.add_argument("--out", default=ROOT / "out/petsc_study", type=pathlib.Path)
-    parser.add_argument("--largest", action="store_true")
-    parser.add_argument("--solver", choices=list(SOLVERS), help="only this row of each problem")
-    parser.add_argument("--problem", default="", help="only the problems whose label holds this text")
-    arguments = parser.parse_args()
+    arguments = petsc_runs.arguments(
+        __doc__, "petsc_study", (["--solver"], {"choices": list(SOLVERS), "help": "only this row of each problem"}))
 
     print("| problem | DOFs | solver | CG iterations | set-up s | solve s |")
     print("|---|---:|---|---:|---:|---:|")
@@ -107,7 +90,7 @@ def main():
                 continue
             extra = OWN_PRECONDITIONER.get(method, []) if solver == "altfem PCG" else []
             out = arguments.out / f"{index}-{solver_index}"
-            summary, error = run(arguments.altfem, scene, method, settings + solver_settings + extra, out)
+            summary, error = petsc_runs.run(arguments.altfem, scene, method, settings + solver_settings + extra, out)
             if summary is None:
                 print(f"| {label} | | {solver} | failed: {error} | | |", flush=True)
                 continue
