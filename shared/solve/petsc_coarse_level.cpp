@@ -47,11 +47,7 @@ PetscErrorCode FirstOrderCoarseLevel::configure(PC pc, bool aggressive_coarsenin
   PC coarse_pc;
   PetscCall(KSPGetPC(coarse, &coarse_pc));
   PetscCall(PCSetType(coarse_pc, PCGAMG));
-  // Aggregation drops graph edges weaker than 0.05 (PETSc's manual: 0.01-0.05 for
-  // elasticity; its default, 0, keeps them all): the cantilever's Hex20 20 × 2 × 2 took
-  // 32 iterations with 0, 29 with 0.05, and Tet10 40 × 4 × 4 33 against 30.
-  PetscReal threshold = 0.05;
-  PetscCall(PCGAMGSetThreshold(coarse_pc, &threshold, 1));
+  PetscCall(petsc::set_aggregation_threshold(coarse_pc));
   // Its coarsening as an option of this level, not PCGAMGSetAggressiveLevels: PETSc 3.18
   // resets the count whenever it reads the level's options, which PCMG does again at set-up.
   const char* prefix = nullptr;

@@ -5,7 +5,7 @@
 // PETSc (ALTFEM_HAVE_PETSC).
 #ifdef ALTFEM_HAVE_PETSC
 
-#include <petscsys.h>
+#include <petscksp.h>
 
 #include <string>
 #include <vector>
@@ -26,6 +26,11 @@ std::string prefixed_options(const std::string& options, const std::string& pref
 /// Whether the options database chooses how the GAMG under `prefix` coarsens its finest
 /// level (-pc_gamg_aggressive_coarsening, or its deprecated alias -pc_gamg_square_graph).
 bool coarsening_chosen(const std::string& prefix);
+/// Sets the GAMG `pc`'s aggregation to drop graph edges weaker than 0.05, altfem's default
+/// for every GAMG it sets up; options read after it (-pc_gamg_threshold) still choose.
+PetscErrorCode set_aggregation_threshold(PC pc);
+/// "cg + gamg": the Krylov method's and the preconditioner's types, for messages.
+std::string method_names(KSP ksp);
 /// The options under `prefix` that nobody has asked for ("-name, -name", without the
 /// prefix; empty: none).
 std::string unused_options(const std::string& prefix);

@@ -46,11 +46,7 @@ public:
     PC preconditioner;
     check(KSPGetPC(ksp_, &preconditioner), "KSPGetPC");
     check(PCSetType(preconditioner, PCGAMG), "PCSetType");
-    // Aggregation drops graph edges weaker than 0.05 unless the options choose, as on the
-    // first-order level (petsc_coarse_level.cpp): with PETSc's default, 0, the Hex8
-    // cantilever took 26 iterations at 139,587 DOFs and 39 at 1,048,707 (26 with 0.05).
-    PetscReal threshold = 0.05;
-    check(PCGAMGSetThreshold(preconditioner, &threshold, 1), "PCGAMGSetThreshold");
+    check(petsc::set_aggregation_threshold(preconditioner), "PCGAMGSetThreshold");
     check(KSPSetTolerances(ksp_, options.tolerance, 0.0, PETSC_DEFAULT, options.max_iterations), "KSPSetTolerances");
     const std::string inserted = petsc::prefixed_options(options.petsc_options, prefix_, option_names_);
     const PetscErrorCode inserting = PetscOptionsInsertString(nullptr, inserted.c_str());
@@ -201,8 +197,9 @@ protected:
       PetscReal residual = 0;
       KSPGetResidualNorm(ksp_, &residual);
       std::ostringstream message;
-      message << "PETSc " << method_names() << " did not converge: " << KSPConvergedReasons[reason] << " after "
-              << iterations << " iterations (residual norm " << residual << ", right-hand side " << rhs.norm() << ")";
+      message << "PETSc " << petsc::method_names(ksp_) << " did not converge: " << KSPConvergedReasons[reason]
+              << " after " << iterations << " iterations (residual norm " << residual << ", right-hand side "
+              << rhs.norm() << ")";
       throw NumericalError(message.str());
     }
     // Every rank gets the whole solution: the integrators run on every rank.
@@ -364,16 +361,6 @@ private:
     for (Vec& vector : vectors) VecDestroy(&vector);
   }
 
-  std::string method_names() const {
-    KSPType method;
-    PCType preconditioner_type;
-    PC preconditioner;
-    KSPGetType(ksp_, &method);
-    KSPGetPC(ksp_, &preconditioner);
-    PCGetType(preconditioner, &preconditioner_type);
-    return std::string(method) + " + " + preconditioner_type;
-  }
-
   // PETSc ignores an option nobody asked for (a misspelling, or one of a type not
   // chosen); the first set-up and solve have asked for all of them (a solve reads its
   // monitors and -ksp_converged_reason), so say which they did not use.
@@ -381,8 +368,8 @@ private:
     reported_unused_options_ = true;
     const std::string unused = petsc::unused_options(prefix_);
     if (!unused.empty())
-      std::cerr << "altfem: warning: solver.petsc_options: PETSc (" << method_names() << ") did not use " << unused
-                << "\n";
+      std::cerr << "altfem: warning: solver.petsc_options: PETSc (" << petsc::method_names(ksp_) << ") did not use "
+                << unused << "\n";
   }
 
   MPI_Comm communicator_ = PETSC_COMM_SELF;  // PETSC_COMM_WORLD over several ranks
